@@ -1,0 +1,23 @@
+#pragma once
+// Small helpers shared by the subcommands: output routing and number formatting.
+// The library never prints; only the app does.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace modaltyre::app {
+
+/// Prints JSON to stdout (pretty, 2-space indent). Non-finite numbers are refused: they would
+/// be written as null and silently corrupt a researcher's pipeline.
+void print_json(const nlohmann::json& j);
+
+/// Throws ComputationError if any number in the document is not finite.
+void check_finite(const nlohmann::json& j, const std::string& where = "output");
+
+/// Fixed-point formatting for tables.
+std::string fixed(double v, int decimals);
+
+/// Rounds to a number of significant digits for JSON (keeps output stable and readable).
+double round_sig(double v, int digits = 10);
+
+}  // namespace modaltyre::app

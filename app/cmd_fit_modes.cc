@@ -1,0 +1,148 @@
+// modaltyre fit-modes HAMMER.csv [--json] [--plot FILE]
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+#include "cli_support.h"
+#include "commands.h"
+#include "modaltyre/core/gnuplot.h"
+#include "modaltyre/modal/hammer_data.h"
+#include "modaltyre/modal/mode_identification.h"
+
+namespace modaltyre::app {
+namespace {
+
+struct FitModesArgs {
+  std::string hammer;
+  bool json = false;
+  std::string plot;
+};
+
+nlohmann::json to_json(const modal::ModeIdentification& id) {
+  nlohmann::json modes = nlohmann::json::array();
+  for (const auto& m : id.modes) {
+    nlohmann::json A = nlohmann::json::array(), B = nlohmann::json::array();
+    for (double a : m.radial.A) A.push_back(round_sig(a));
+    for (double b : m.radial.B) B.push_back(round_sig(b));
+    nlohmann::json tA = nlohmann::json::array(), tB = nlohmann::json::array();
+    for (double a : m.tangential.A) tA.push_back(round_sig(a));
+    for (double b : m.tangential.B) tB.push_back(round_sig(b));
+    nlohmann::json j = {{"mode", m.id},
+                        {"freq_hz", m.freq_hz},
+                        {"damping_ratio", m.damping_ratio},
+                        {"kind", modal::to_string(m.kind)},
+                        {"order", m.apparent_order},
+                        {"aliased", m.aliased},
+                        {"r2", round_sig(m.r2, 6)},
+                        {"A", A},
+                        {"B", B},
+                        {"A_nyquist", round_sig(m.radial.nyquist)},
+                        {"tangential_A", tA},
+                        {"tangential_B", tB},
+                        {"amplitude", round_sig(std::abs(m.c_radial))},
+                        {"phase_deg", m.apparent_order > 0
+                                          ? round_sig(-std::arg(m.c_radial) * 180 / M_PI /
+                                                          m.apparent_order, 6)
+                                          : 0.0},
+                        {"note", m.note}};
+    if (m.aliased) {
+      j["alias_candidates"] = m.alias_candidates;
+      j["likely_order"] = m.likely_order >= 0 ? nlohmann::json(m.likely_order) : nlohmann::json();
+    }
+    modes.push_back(j);
+  }
+  nlohmann::json disp = {{"valid", id.dispersion.valid}};
+  if (id.dispersion.valid) {
+    disp["model"] = "omega^2 = s0 + s1 k^2 + s2 k^4 (orders >= 2)";
+    disp["s0_rad2_s2"] = round_sig(id.dispersion.s0);
+    disp["s1_rad2_s2"] = round_sig(id.dispersion.s1);
+    disp["s2_rad2_s2"] = round_sig(id.dispersion.s2);
+    disp["orders_used"] = id.dispersion.orders_used;
+    disp["rms_rel_error"] = round_sig(id.dispersion.rms_rel_error, 6);
+  } else {
+    disp["reason"] = id.dispersion.reason;
+  }
+  return {{"points", id.points}, {"modes", modes}, {"dispersion", disp}};
+}
+
+void print_table(const modal::ModeIdentification& id, const std::string& path) {
+  std::cout << "Hammer data " << path << ": " << id.modes.size() << " modes at " << id.points
+            << " equally spaced points (orders >= " << (id.points + 1) / 2
+            << " cannot be resolved)\n\n";
+  std::cout << " mode  freq_Hz  damping_%  kind        order  aliased  R2      note\n";
+  for (const auto& m : id.modes) {
+    char line[256];
+    std::snprintf(line, sizeof line, " %4d  %7.2f  %9.3f  %-10s  %5d  %-7s  %.4f  ", m.id,
+                  m.freq_hz, 100 * m.damping_ratio, modal::to_string(m.kind), m.apparent_order,
+                  m.aliased ? "yes" : "no", m.r2);
+    std::cout << line << m.note;
+    if (m.aliased && m.likely_order >= 0) std::cout << " (likely order " << m.likely_order << ")";
+    std::cout << "\n";
+  }
+  if (id.dispersion.valid) {
+    std::cout << "\nDispersion of the resolved radial orders: f_k = sqrt(s0 + s1 k^2 + s2 k^4)/2pi,"
+              << " RMS error " << fixed(100 * id.dispersion.rms_rel_error, 2) << " % over "
+              << id.dispersion.orders_used << " orders\n";
+  }
+}
+
+void plot_modes(const modal::HammerData& data, const modal::ModeIdentification& id,
+                const std::string& path) {
+  PlotFigure fig;
+  fig.width_px = 1200;
+  fig.height_px = 260;
+  for (std::size_t i = 0; i < id.modes.size(); ++i) {
+    const auto& m = id.modes[i];
+    const auto& raw = data.modes[i];
+    PlotPanel p;
+    p.title = "mode " + std::to_string(m.id) + ": " + fixed(m.freq_hz, 1) + " Hz, " +
+              modal::to_string(m.kind) + " k=" + std::to_string(m.apparent_order) +
+              (m.aliased ? " (aliased)" : "");
+    p.xlabel = "angle [deg]";
+    p.ylabel = "shape [kg^{-1/2}]";
+    PlotSeries pts{"radial, measured", {}, raw.radial, "points"};
+    for (double a : raw.angle_rad) pts.x.push_back(a * 180 / M_PI);
+    PlotSeries fit{"fitted harmonic", {}, {}, "lines"};
+    const bool rot = m.kind == modal::ModeKind::rotation;
+    const auto& series = rot ? m.tangential : m.radial;
+    const int k = m.apparent_order;
+    const auto c = series.coefficient(k);
+    for (int s = 0; s <= 360; s += 2) {
+      const double th = s * M_PI / 180;
+      fit.x.push_back(s);
+      fit.y.push_back((c * std::polar(1.0, k * th)).real());
+    }
+    if (rot) pts = PlotSeries{"tangential, measured", pts.x, raw.tangential, "points"};
+    p.series = {pts, fit};
+    fig.panels.push_back(p);
+  }
+  render_plot(fig, path);
+}
+
+}  // namespace
+
+void register_fit_modes(CLI::App& app) {
+  auto args = std::make_shared<FitModesArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "fit-modes",
+      "Fit the trigonometric series of seed 001 eq. (20)-(21) to each mode of an N-point hammer "
+      "test; report harmonic order, kind (radial / rotation / unresolved), fit quality R2 and "
+      "spatial aliasing.");
+  cmd->add_option("HAMMER", args->hammer,
+                  "long-format CSV: mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential")
+      ->required();
+  cmd->add_flag("--json", args->json, "print JSON instead of a table");
+  cmd->add_option("--plot", args->plot, "draw each mode's points and fitted harmonic (.svg/.png)");
+  cmd->callback([args] {
+    const auto data = modal::read_hammer_csv(args->hammer);
+    const auto id = modal::identify_modes(data);
+    if (!args->plot.empty()) plot_modes(data, id, args->plot);
+    if (args->json) {
+      print_json(to_json(id));
+    } else {
+      print_table(id, args->hammer);
+    }
+  });
+}
+
+}  // namespace modaltyre::app

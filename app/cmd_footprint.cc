@@ -1,0 +1,57 @@
+// modaltyre footprint CONFIG [--load N]... [--set key=value]... [--json] [--plot FILE]
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "cli_support.h"
+#include "commands.h"
+#include "footprint_report.h"
+#include "modaltyre/contact/footprint.h"
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::app {
+namespace {
+
+struct FootprintArgs {
+  std::string config;
+  std::vector<double> loads;
+  double horizontal = 0;
+  bool horizontal_given = false;
+  std::vector<std::string> overrides;
+  bool json = false;
+  std::string plot;
+};
+
+}  // namespace
+
+void register_footprint(CLI::App& app) {
+  auto a = std::make_shared<FootprintArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "footprint",
+      "Static footprint on a rigid flat road: sinking, contact length and pressure distribution "
+      "for each vertical load (load control, carcass and tread in series, seed 001).");
+  cmd->add_option("CONFIG", a->config, "tyre config (YAML), e.g. configs/sf350.yaml")->required();
+  cmd->add_option("--load", a->loads, "vertical load [N]; repeat for several (default: loads_N)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--fx", a->horizontal, "horizontal force at the axle [N], forward positive");
+  cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");
+  cmd->add_flag("--json", a->json, "print JSON");
+  cmd->add_option("--plot", a->plot, "draw the pressure distributions (.svg or .png)");
+  cmd->callback([a, cmd] {
+    const auto config = contact::load_tyre_config(a->config, a->overrides);
+    const auto model = contact::build_tyre_model(config);
+    std::vector<contact::LoadCase> cases;
+    const double fx = cmd->count("--fx") ? a->horizontal : config.horizontal_force_N;
+    for (double f : a->loads.empty() ? config.loads_N : a->loads) cases.push_back({f, fx});
+    const auto results = contact::solve_footprints(model, cases);
+    require_converged(results);
+    if (!a->plot.empty()) plot_pressures(results, config, a->plot);
+    if (a->json) {
+      print_json(footprint_json(model, results));
+    } else {
+      print_footprint_table(model, results);
+    }
+  });
+}
+
+}  // namespace modaltyre::app

@@ -1,0 +1,12 @@
+#pragma once
+// Each subcommand registers itself on the top-level CLI11 app; its callback parses nothing by
+// hand, validates through the library, calls it and prints.
+#include <CLI/CLI.hpp>
+
+namespace modaltyre::app {
+
+void register_fit_modes(CLI::App& app);
+void register_footprint(CLI::App& app);
+
+
+}  // namespace modaltyre::app

@@ -1,0 +1,114 @@
+#include "footprint_report.h"
+
+#include <iostream>
+#include <sstream>
+
+#include "cli_support.h"
+#include "modaltyre/core/errors.h"
+#include "modaltyre/core/gnuplot.h"
+
+namespace modaltyre::app {
+
+void require_converged(const std::vector<contact::FootprintResult>& results) {
+  for (const auto& r : results) {
+    if (!r.converged) {
+      std::ostringstream msg;
+      msg << "load case " << r.load.load_N << " N did not converge after " << r.iterations
+          << " iterations: " << r.message;
+      throw ComputationError(msg.str());
+    }
+  }
+}
+
+nlohmann::json footprint_json(const contact::TyreModel& model,
+                              const std::vector<contact::FootprintResult>& results) {
+  nlohmann::json cases = nlohmann::json::array();
+  for (const auto& r : results) {
+    nlohmann::json units = nlohmann::json::array();
+    for (const auto& u : r.units) {
+      units.push_back({{"x_mm", round_sig(u.x_m * 1e3)},
+                       {"dx_mm", round_sig(u.dx_m * 1e3)},
+                       {"fz_N", round_sig(u.fz_N)},
+                       {"fx_N", round_sig(u.fx_N)},
+                       {"pressure_kPa", round_sig(u.pressure_Pa * 1e-3)}});
+    }
+    double peak = 0;
+    for (const auto& u : r.units) peak = std::max(peak, u.pressure_Pa);
+    cases.push_back({{"load_N", r.load.load_N},
+                     {"horizontal_force_N", r.load.horizontal_force_N},
+                     {"sinking_mm", round_sig(r.sinking_m * 1e3)},
+                     {"contact_length_mm", round_sig(r.contact_length_m * 1e3)},
+                     {"vertical_stiffness_N_mm", round_sig(r.vertical_stiffness_N_m() * 1e-3)},
+                     {"peak_pressure_kPa", round_sig(peak * 1e-3)},
+                     {"converged", r.converged},
+                     {"iterations", r.iterations},
+                     {"residuals",
+                      {{"vertical_equilibrium", r.equilibrium_residual},
+                       {"complementarity", r.complementarity_residual}}},
+                     {"units", units}});
+  }
+  const auto& c = model.config;
+  return {{"tyre", c.name},
+          {"config", c.source},
+          {"model",
+           {{"outer_radius_mm", c.outer_radius_m * 1e3},
+            {"unit_length_mm", round_sig(model.unit_length_m * 1e3)},
+            {"units_around", model.units_around},
+            {"candidate_units", model.candidates()},
+            {"max_order", model.basis.max_order},
+            {"measured_modal_terms", model.basis.measured_terms},
+            {"contact_width_mm", c.tread.width_m * 1e3}}},
+          {"cases", cases}};
+}
+
+void print_footprint_table(const contact::TyreModel& model,
+                           const std::vector<contact::FootprintResult>& results) {
+  const auto& c = model.config;
+  std::cout << c.name << " (" << c.source << "): " << model.candidates()
+            << " candidate units of " << fixed(model.unit_length_m * 1e3, 3)
+            << " mm, modal orders 0.." << model.basis.max_order << " ("
+            << model.basis.measured_terms << " measured modes)\n";
+  for (const auto& w : model.basis.warnings) std::cout << "warning: " << w << "\n";
+  std::cout << "\n  load_N  sinking_mm  length_mm  stiffness_N/mm  peak_kPa  mean_kPa  iters"
+               "  equilibrium  complementarity\n";
+  for (const auto& r : results) {
+    double peak = 0;
+    for (const auto& u : r.units) peak = std::max(peak, u.pressure_Pa);
+    const double mean = r.load.load_N / (r.contact_length_m * c.tread.width_m);
+    char line[256];
+    std::snprintf(line, sizeof line, "%8.0f  %10.2f  %9.1f  %14.1f  %8.0f  %8.0f  %5d  %11.1e  %15.1e\n",
+                  r.load.load_N, r.sinking_m * 1e3, r.contact_length_m * 1e3,
+                  r.vertical_stiffness_N_m() * 1e-3, peak * 1e-3, mean * 1e-3, r.iterations,
+                  r.equilibrium_residual, r.complementarity_residual);
+    std::cout << line;
+  }
+}
+
+void plot_pressures(const std::vector<contact::FootprintResult>& results,
+                    const contact::TyreConfig& config, const std::string& path) {
+  PlotPanel p;
+  p.title = config.name + ": contact pressure along the patch";
+  p.xlabel = "x along the road from the contact centre [mm]";
+  p.ylabel = "contact pressure [kPa]";
+  for (const auto& r : results) {
+    PlotSeries s;
+    s.title = fixed(r.load.load_N / 1000, 2) + " kN, L = " + fixed(r.contact_length_m * 1e3, 0) +
+              " mm";
+    s.style = "lines";
+    // Close the curve to zero at the patch edges so that the length reads off the plot.
+    s.x.push_back((r.units.front().x_m - 0.5 * r.units.front().dx_m) * 1e3);
+    s.y.push_back(0);
+    for (const auto& u : r.units) {
+      s.x.push_back(u.x_m * 1e3);
+      s.y.push_back(u.pressure_Pa * 1e-3);
+    }
+    s.x.push_back((r.units.back().x_m + 0.5 * r.units.back().dx_m) * 1e3);
+    s.y.push_back(0);
+    p.series.push_back(s);
+  }
+  PlotFigure fig;
+  fig.panels.push_back(p);
+  render_plot(fig, path);
+}
+
+}  // namespace modaltyre::app

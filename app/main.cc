@@ -1,0 +1,42 @@
+// modaltyre: command-line front end. Exit codes: 0 success, 1 a computation failed (with its
+// reason and residual), 2 bad input or usage (with file, line and key).
+#include <iostream>
+
+#include "commands.h"
+#include "modaltyre/core/errors.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "ModalTyre: tyre-road contact from experimental modal parameters (seed 001, Guan Dihua "
+      "rolling theory) and rheological parameter identification (seed 000)."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "modaltyre 0.1.0");
+  modaltyre::app::register_fit_modes(app);
+  modaltyre::app::register_footprint(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const modaltyre::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const modaltyre::ComputationError& e) {
+    std::cerr << "computation failed: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "computation failed: out of memory (reduce the problem size)\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,51 @@
+#pragma once
+// The immutable tyre model: modal basis, carcass kernels on the patch mesh and tread stiffness.
+// Built once per configuration, shared read-only by every load case (and thread).
+//
+// Patch mesh (seed 001 eq. 11): the circumference is divided into n equal units of arc length
+// ~unit_length; the candidate units are those within +-window/2 of the contact centre
+// (theta = 0 at the bottom, theta positive forward, x = R0 sin theta along the road).
+//
+// Carcass and tread in series (seed 001 eq. 13-19, linearised for displacements small against
+// R0): a vertical force f on unit j (upward on the tyre) has radial (inward) component
+// f cos theta_j and tangential component f sin theta_j (eq. 12 with f_x = 0); the carcass moves
+// unit i by the transfer functions of eq. (1); the tread unit compresses by f_r / k_r and shears
+// by f_t / k_t (eq. 6). The upward displacement of unit i is u_r cos theta_i + u_t sin theta_i.
+// Tread springs per unit (eq. 6-9, static limit: storage modulus):
+//   k_r = E_tr b ds / h,   k_t = G_tr b ds / h,  G_tr = E_tr / (2 (1 + nu)).
+#include <Eigen/Dense>
+#include <vector>
+
+#include "modaltyre/contact/tyre_config.h"
+#include "modaltyre/modal/carcass_kernel.h"
+#include "modaltyre/modal/mode_identification.h"
+
+namespace modaltyre::contact {
+
+struct TyreModel {
+  TyreConfig config;
+  modal::ModalBasis basis;
+  int units_around = 0;      ///< n, units on the whole circumference
+  double dtheta_rad = 0;     ///< 2 pi / n
+  double unit_length_m = 0;  ///< R0 dtheta
+  int half_window = 0;       ///< candidate units are -half_window .. +half_window
+  std::vector<double> theta; ///< angle of each candidate unit
+  modal::LagKernels kernels; ///< lags 0 .. 2 half_window
+  double k_radial_N_m = 0;   ///< tread radial stiffness per unit
+  double k_tangential_N_m = 0;
+  /// Vertical compliance of the candidate units under vertical forces [m/N] (symmetric).
+  Eigen::MatrixXd vertical_compliance;
+  /// Vertical displacement at i per unit horizontal (+x) force at j [m/N].
+  Eigen::MatrixXd vertical_from_horizontal;
+  Eigen::VectorXd sag;       ///< R0 (1 - cos theta): gap to the road at zero sinking [m]
+
+  int candidates() const { return static_cast<int>(theta.size()); }
+};
+
+/// Builds the model from a configuration and the identified modes of its hammer data.
+TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentification& modes);
+
+/// Reads the hammer data named in the config, identifies its modes and builds the model.
+TyreModel build_tyre_model(const TyreConfig& config);
+
+}  // namespace modaltyre::contact

@@ -1,0 +1,110 @@
+#include "modaltyre/contact/footprint.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "modaltyre/core/errors.h"
+#include "modaltyre/solvers/unilateral_contact.h"
+
+namespace modaltyre::contact {
+
+FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
+                                const std::vector<char>* warm_active) {
+  MODALTYRE_CHECK(load.load_N > 0, "load must be positive");
+  FootprintResult r;
+  r.load = load;
+  const double ratio = load.horizontal_force_N / load.load_N;
+  solvers::ContactProblem p;
+  if (ratio == 0.0) {
+    p.compliance = model.vertical_compliance;
+  } else {
+    p.compliance = model.vertical_compliance + ratio * model.vertical_from_horizontal;
+    p.symmetric = false;
+  }
+  p.initial_gap = model.sag;
+  p.load_N = load.load_N;
+  solvers::ContactOptions opt;
+  opt.max_iterations = model.config.solver.max_iterations;
+  opt.gap_tolerance = model.config.solver.gap_tolerance;
+  const solvers::ContactSolution s = solvers::solve_unilateral_contact(p, opt, warm_active);
+  r.iterations = s.iterations;
+  r.message = s.message;
+  if (!s.converged()) {
+    r.converged = false;
+    return r;
+  }
+  const int m = model.candidates();
+  if (s.active.front() || s.active.back()) {
+    std::ostringstream msg;
+    msg << "contact reached the edge of the candidate window (+-"
+        << 0.5e3 * model.config.mesh.window_m << " mm): increase contact.window_mm";
+    r.message = msg.str();
+    r.converged = false;
+    return r;
+  }
+  r.converged = true;
+  r.sinking_m = s.approach_m;
+  r.equilibrium_residual = s.equilibrium_residual;
+  r.complementarity_residual = s.complementarity_residual;
+  r.active = s.active;
+
+  // Radial and tangential displacement of every candidate unit (carcass + tread), eq. (1), (6).
+  const Eigen::VectorXd& f = s.force;
+  std::vector<double> fr(m), ft(m);
+  for (int j = 0; j < m; ++j) {
+    const double c = std::cos(model.theta[j]), sn = std::sin(model.theta[j]);
+    const double fx = ratio * f(j);
+    fr[j] = f(j) * c - fx * sn;  // seed 001 eq. (12), f_x positive forward
+    ft[j] = f(j) * sn + fx * c;
+  }
+  const double R0 = model.config.outer_radius_m;
+  const double width = model.config.tread.width_m;
+  r.contour_x_m.resize(m);
+  r.contour_height_m.resize(m);
+  for (int i = 0; i < m; ++i) {
+    double ur = fr[i] / model.k_radial_N_m, ut = ft[i] / model.k_tangential_N_m;
+    for (int j = 0; j < m; ++j) {
+      if (!s.active[j]) continue;
+      const modal::Transfer2x2 h = model.kernels.at(i - j);
+      ur += h.r_from_r * fr[j] + h.r_from_t * ft[j];
+      ut += h.t_from_r * fr[j] + h.t_from_t * ft[j];
+    }
+    const double th = model.theta[i];
+    r.contour_x_m[i] = (R0 - ur) * std::sin(th) + ut * std::cos(th);
+    const double depth = (R0 - ur) * std::cos(th) - ut * std::sin(th);
+    r.contour_height_m[i] = s.active[i] ? 0.0 : std::max((R0 - r.sinking_m) - depth, 0.0);
+  }
+  int first = -1, last = -1;
+  for (int i = 0; i < m; ++i) {
+    if (!s.active[i]) continue;
+    if (first < 0) first = i;
+    last = i;
+    PatchUnit u;
+    u.x_m = r.contour_x_m[i];
+    u.dx_m = model.unit_length_m * std::cos(model.theta[i]);
+    u.fz_N = f(i);
+    u.fx_N = ratio * f(i);
+    u.pressure_Pa = u.fz_N / (u.dx_m * width);
+    r.units.push_back(u);
+  }
+  // Each unit covers dx around its centre: the patch spans the outer edges of the end units.
+  r.contact_length_m = r.contour_x_m[last] - r.contour_x_m[first] +
+                       0.5 * (r.units.front().dx_m + r.units.back().dx_m);
+  std::ostringstream msg;
+  msg << "converged in " << s.iterations << " active-set iterations";
+  r.message = msg.str();
+  return r;
+}
+
+std::vector<FootprintResult> solve_footprints(const TyreModel& model,
+                                              const std::vector<LoadCase>& loads) {
+  std::vector<FootprintResult> out;
+  std::vector<char> warm;
+  for (const auto& lc : loads) {
+    out.push_back(solve_footprint(model, lc, warm.empty() ? nullptr : &warm));
+    if (out.back().converged) warm = out.back().active;
+  }
+  return out;
+}
+
+}  // namespace modaltyre::contact

@@ -1,0 +1,83 @@
+#include "modaltyre/contact/tyre_config.h"
+
+#include <cmath>
+
+namespace modaltyre::contact {
+
+TyreConfig read_tyre_config(const ConfigTree& tree) {
+  TyreConfig c;
+  c.source = tree.file();
+  const ConfigSection root = tree.root();
+
+  const ConfigSection tyre = root.section("tyre");
+  c.name = tyre.text("name", c.name);
+  c.outer_radius_m = tyre.number("outer_radius_mm", 294.8, 50, 2000) * 1e-3;
+  c.inflation_pressure_Pa = tyre.number("inflation_pressure_kPa", 230, 10, 2000) * 1e3;
+
+  const ConfigSection modal = root.section("modal");
+  if (!modal.has("hammer_csv")) modal.fail("hammer_csv", "required: path of the hammer data CSV");
+  c.hammer_csv = tree.resolve_path(modal.text("hammer_csv", "")).string();
+  c.extend_orders = modal.boolean("extend_orders", true);
+  c.compliance_scale = modal.number("compliance_scale", 1.0, 1e-3, 1e3);
+  c.mesh.max_order = static_cast<int>(modal.integer("max_order", 0, 0, 100000));
+
+  const ConfigSection tread = root.section("tread");
+  c.tread.modulus_Pa = tread.number("modulus_MPa", 6.0, 1e-3, 1e4) * 1e6;
+  c.tread.tan_delta = tread.number("tan_delta", c.tread.tan_delta, 0, 5);
+  c.tread.thickness_m = tread.number("thickness_mm", 8, 0.1, 200) * 1e-3;
+  c.tread.width_m = tread.number("contact_width_mm", 140, 1, 2000) * 1e-3;
+  c.tread.poisson = tread.number("poisson_ratio", c.tread.poisson, 0.0, 0.5);
+
+  const ConfigSection mesh = root.section("contact");
+  c.mesh.unit_length_m = mesh.number("unit_length_mm", 0.5, 0.01, 50) * 1e-3;
+  c.mesh.window_m = mesh.number("window_mm", 360, 5, 3000) * 1e-3;
+  if (c.mesh.window_m > M_PI * c.outer_radius_m) {
+    mesh.fail("window_mm", "candidate window longer than half the circumference");
+  }
+  const double units = c.mesh.window_m / c.mesh.unit_length_m;
+  if (units > 20000) {
+    mesh.fail("unit_length_mm", "window / unit length = " + std::to_string(long(units)) +
+                                    " candidate units; at most 20000 are supported");
+  }
+
+  const ConfigSection solver = root.section("solver");
+  c.solver.max_iterations = static_cast<int>(solver.integer("max_iterations", 200, 1, 100000));
+  c.solver.gap_tolerance = solver.number("gap_tolerance", 1e-10, 1e-15, 1e-2);
+
+  c.loads_N = root.numbers("loads_N", {2131, 3261, 5478, 6502, 7322, 8321}, 1e-6, 1e7);
+  for (double f : c.loads_N) {
+    if (!(f > 0)) root.fail("loads_N", "every load must be greater than 0 N");
+  }
+  c.horizontal_force_N = root.number("horizontal_force_N", 0, -1e7, 1e7);
+
+  const ConfigSection val = root.section("validation");
+  c.validation.calibrate = val.texts("calibrate", {});
+  c.validation.calibration_rows = [&] {
+    std::vector<int> rows;
+    for (long r : val.integers("calibration_rows", {}, 1, 100000)) rows.push_back(int(r));
+    return rows;
+  }();
+  c.validation.observables = val.texts("calibration_observables", c.validation.observables);
+  if (c.validation.calibrate.size() > 2) {
+    val.fail("calibrate", "at most two parameters may be calibrated");
+  }
+  if (c.validation.calibration_rows.size() > 2) {
+    val.fail("calibration_rows", "at most two rows may be used for calibration");
+  }
+  if (!c.validation.calibrate.empty() && c.validation.calibration_rows.empty()) {
+    val.fail("calibration_rows", "calibrated parameters need calibration rows");
+  }
+  for (const auto& o : c.validation.observables) {
+    if (o != "sinking_mm" && o != "length_mm") {
+      val.fail("calibration_observables", "'" + o + "' is not one of: sinking_mm, length_mm");
+    }
+  }
+  tree.reject_unknown_keys();
+  return c;
+}
+
+TyreConfig load_tyre_config(const std::string& path, const std::vector<std::string>& overrides) {
+  return read_tyre_config(ConfigTree::load(path, overrides));
+}
+
+}  // namespace modaltyre::contact

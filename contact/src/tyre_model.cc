@@ -1,0 +1,68 @@
+#include "modaltyre/contact/tyre_model.h"
+
+#include <cmath>
+
+#include "modaltyre/core/errors.h"
+#include "modaltyre/modal/hammer_data.h"
+
+namespace modaltyre::contact {
+
+TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentification& modes) {
+  TyreModel m;
+  m.config = config;
+  const double R0 = config.outer_radius_m;
+  m.units_around = static_cast<int>(std::lround(2 * M_PI * R0 / config.mesh.unit_length_m));
+  m.dtheta_rad = 2 * M_PI / m.units_around;
+  m.unit_length_m = R0 * m.dtheta_rad;
+  m.half_window = static_cast<int>(std::lround(0.5 * config.mesh.window_m / m.unit_length_m));
+  const int cand = 2 * m.half_window + 1;
+
+  modal::ModalBasisOptions bo;
+  bo.max_order = config.mesh.max_order > 0 ? config.mesh.max_order : m.units_around / 2;
+  bo.extend = config.extend_orders;
+  bo.compliance_scale = config.compliance_scale;
+  m.basis = modal::build_modal_basis(modes, bo);
+  m.kernels = modal::build_lag_kernels(m.basis, m.dtheta_rad, cand);
+
+  const auto& t = config.tread;
+  const double G = t.modulus_Pa / (2 * (1 + t.poisson));
+  m.k_radial_N_m = t.modulus_Pa * t.width_m * m.unit_length_m / t.thickness_m;
+  m.k_tangential_N_m = G * t.width_m * m.unit_length_m / t.thickness_m;
+
+  m.theta.resize(cand);
+  m.sag.resize(cand);
+  for (int i = 0; i < cand; ++i) {
+    m.theta[i] = (i - m.half_window) * m.dtheta_rad;
+    m.sag(i) = R0 * (1 - std::cos(m.theta[i]));
+  }
+  m.vertical_compliance.resize(cand, cand);
+  m.vertical_from_horizontal.resize(cand, cand);
+  for (int i = 0; i < cand; ++i) {
+    const double ci = std::cos(m.theta[i]), si = std::sin(m.theta[i]);
+    for (int j = 0; j < cand; ++j) {
+      const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
+      const modal::Transfer2x2 h = m.kernels.at(i - j);
+      // Unit vertical force at j: f_r = cos theta_j, f_t = sin theta_j (seed 001 eq. 12).
+      const double ur = h.r_from_r * cj + h.r_from_t * sj;
+      const double ut = h.t_from_r * cj + h.t_from_t * sj;
+      m.vertical_compliance(i, j) = ur * ci + ut * si;
+      // Unit horizontal force (+x) at j: f_r = -sin theta_j, f_t = cos theta_j.
+      const double urx = -h.r_from_r * sj + h.r_from_t * cj;
+      const double utx = -h.t_from_r * sj + h.t_from_t * cj;
+      m.vertical_from_horizontal(i, j) = urx * ci + utx * si;
+    }
+    // Tread in series (seed 001 eq. 6), only under the unit's own force.
+    m.vertical_compliance(i, i) += ci * ci / m.k_radial_N_m + si * si / m.k_tangential_N_m;
+    m.vertical_from_horizontal(i, i) += ci * (-si) / m.k_radial_N_m + si * ci / m.k_tangential_N_m;
+  }
+  // Symmetrise away rounding so that Cholesky sees an exactly symmetric matrix.
+  m.vertical_compliance = 0.5 * (m.vertical_compliance + m.vertical_compliance.transpose()).eval();
+  return m;
+}
+
+TyreModel build_tyre_model(const TyreConfig& config) {
+  const auto data = modal::read_hammer_csv(config.hammer_csv);
+  return build_tyre_model(config, modal::identify_modes(data));
+}
+
+}  // namespace modaltyre::contact

@@ -1,0 +1,51 @@
+#pragma once
+// Strict reader for the small numeric CSV files researchers bring (hammer data, footprint
+// measurements, test records). Every problem is an InputError naming file, line and column.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace modaltyre {
+
+struct CsvSchema {
+  std::vector<std::string> required;  ///< columns that must be present
+  std::vector<std::string> optional;  ///< columns that may be present
+  /// Columns whose cells are text (e.g. "branch"); all other columns must be finite numbers.
+  std::vector<std::string> text;
+  std::size_t max_rows = 1000000;  ///< refuse larger files with a clear message
+};
+
+class CsvTable {
+ public:
+  const std::string& path() const { return path_; }
+  std::size_t rows() const { return cells_.size(); }
+  bool has(const std::string& column) const;
+  /// Finite number at (row, column); column must be numeric and present.
+  double number(std::size_t row, const std::string& column) const;
+  /// Number or fallback when the column is absent.
+  double number_or(std::size_t row, const std::string& column, double fallback) const;
+  const std::string& text(std::size_t row, const std::string& column) const;
+  /// 1-based line of a data row in the file (for messages).
+  int line(std::size_t row) const { return lines_.at(row); }
+  const std::vector<std::string>& columns() const { return columns_; }
+
+  friend CsvTable read_csv(const std::string& path, const CsvSchema& schema);
+
+ private:
+  std::size_t index_of(const std::string& column) const;
+  std::string path_;
+  std::vector<std::string> columns_;
+  std::vector<std::vector<std::string>> cells_;
+  std::vector<std::vector<double>> numbers_;
+  std::vector<int> lines_;
+};
+
+/// Reads and validates a CSV file: header with known columns, same field count on each line,
+/// numeric cells finite. Blank lines and lines starting with '#' are skipped.
+CsvTable read_csv(const std::string& path, const CsvSchema& schema);
+
+/// Parses a finite double; nullopt for anything else (text, NaN, inf, trailing garbage).
+std::optional<double> parse_finite_double(const std::string& text);
+
+}  // namespace modaltyre

@@ -1,0 +1,287 @@
+#include "modaltyre/core/config_tree.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "modaltyre/core/csv.h"
+
+namespace modaltyre {
+namespace {
+
+std::vector<std::string> split_dotted(const std::string& key) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(key);
+  while (std::getline(in, part, '.')) parts.push_back(part);
+  return parts;
+}
+
+void apply_override(ConfigTree::State& st, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw InputError({"--set", 0, assignment}, "expected dotted.key=value");
+  }
+  const std::string key = assignment.substr(0, eq);
+  const std::string value = assignment.substr(eq + 1);
+  const auto parts = split_dotted(key);
+  for (const auto& p : parts) {
+    if (p.empty()) throw InputError({"--set", 0, key}, "empty component in dotted key");
+  }
+  YAML::Node parsed;
+  try {
+    parsed = YAML::Load(value);
+  } catch (const YAML::Exception& e) {
+    throw InputError({"--set", 0, key}, "cannot parse value '" + value + "': " + e.msg);
+  }
+  YAML::Node cur = st.root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    if (cur[parts[i]] && !cur[parts[i]].IsMap()) {
+      throw InputError({"--set", 0, key}, "'" + parts[i] + "' is not a section");
+    }
+    YAML::Node next = cur[parts[i]];
+    cur.reset(next);
+  }
+  cur[parts.back()] = parsed;
+  st.overridden.insert(key);
+}
+
+void init_state(YAML::Node root, const std::string& name,
+                const std::vector<std::string>& overrides, ConfigTree::State* st) {
+  if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  if (!root.IsMap()) throw InputError({name, 1, ""}, "top level must be a mapping of keys");
+  st->file = name;
+  st->root = root;
+  for (const auto& o : overrides) apply_override(*st, o);
+}
+
+void collect_unconsumed(const ConfigTree::State& st, const YAML::Node& node,
+                        const std::string& prefix, std::vector<std::string>& out,
+                        std::vector<int>& lines) {
+  if (!node.IsMap()) return;
+  for (const auto& kv : node) {
+    const std::string key = kv.first.as<std::string>();
+    const std::string dotted = prefix.empty() ? key : prefix + "." + key;
+    if (kv.second.IsMap() && !st.consumed.count(dotted)) {
+      collect_unconsumed(st, kv.second, dotted, out, lines);
+    } else if (!st.consumed.count(dotted)) {
+      out.push_back(dotted);
+      lines.push_back(kv.first.Mark().line >= 0 ? kv.first.Mark().line + 1 : 0);
+    }
+  }
+}
+
+}  // namespace
+
+ConfigTree ConfigTree::load(const std::string& path, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError({path, 0, ""}, "file not found");
+  if (std::filesystem::is_directory(path, ec)) {
+    throw InputError({path, 0, ""}, "is a directory, not a YAML config");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, 0, ""}, "cannot open file for reading");
+  std::stringstream buf;
+  buf << in.rdbuf();
+  return from_string(buf.str(), path, overrides);
+}
+
+ConfigTree ConfigTree::from_string(const std::string& yaml, const std::string& name,
+                                   const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception& e) {
+    throw InputError({name, e.mark.line >= 0 ? e.mark.line + 1 : 0, ""},
+                     "YAML syntax error: " + e.msg);
+  }
+  ConfigTree tree;
+  tree.state_ = std::make_shared<State>();
+  init_state(root, name, overrides, tree.state_.get());
+  return tree;
+}
+
+ConfigSection ConfigTree::root() const { return ConfigSection(state_, state_->root, ""); }
+
+void ConfigTree::reject_unknown_keys() const {
+  std::vector<std::string> keys;
+  std::vector<int> lines;
+  collect_unconsumed(*state_, state_->root, "", keys, lines);
+  if (keys.empty()) return;
+  const bool from_cli = state_->overridden.count(keys.front()) > 0;
+  throw InputError({from_cli ? "--set" : state_->file, from_cli ? 0 : lines.front(), keys.front()},
+                   "unknown key (misspelt, or not supported here)");
+}
+
+std::filesystem::path ConfigTree::resolve_path(const std::string& relative) const {
+  const std::filesystem::path p(relative);
+  if (p.is_absolute()) return p;
+  return std::filesystem::path(state_->file).parent_path() / p;
+}
+
+std::string ConfigTree::dump() const {
+  YAML::Emitter out;
+  out << state_->root;
+  return std::string(out.c_str()) + "\n";
+}
+
+ConfigSection::ConfigSection(std::shared_ptr<ConfigTree::State> state, YAML::Node node,
+                             std::string prefix)
+    : state_(std::move(state)), node_(node), prefix_(std::move(prefix)) {}
+
+std::string ConfigSection::dotted(const std::string& key) const {
+  return prefix_.empty() ? key : prefix_ + "." + key;
+}
+
+InputLocation ConfigSection::where(const std::string& key) const {
+  const std::string d = dotted(key);
+  if (state_->overridden.count(d)) return {"--set", 0, d};
+  int line = 0;
+  if (node_ && node_.IsMap()) {
+    for (const auto& kv : node_) {
+      if (kv.first.as<std::string>() == key) line = kv.first.Mark().line + 1;
+    }
+    if (line == 0) line = node_.Mark().line + 1;
+  }
+  return {state_->file, std::max(line, 0), d};
+}
+
+void ConfigSection::fail(const std::string& key, const std::string& message) const {
+  throw InputError(where(key), message);
+}
+
+YAML::Node ConfigSection::child(const std::string& key) const {
+  if (!node_ || !node_.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+  state_->consumed.insert(dotted(key));
+  const YAML::Node& const_node = node_;
+  return const_node[key];
+}
+
+bool ConfigSection::has(const std::string& key) const {
+  if (!node_ || !node_.IsMap()) return false;
+  const YAML::Node& const_node = node_;
+  return static_cast<bool>(const_node[key]);
+}
+
+ConfigSection ConfigSection::section(const std::string& key) const {
+  YAML::Node n = child(key);
+  if (n && !n.IsMap() && !n.IsNull()) fail(key, "expected a section (a mapping of keys)");
+  // Reading a section does not consume its children: they are checked one by one.
+  state_->consumed.erase(dotted(key));
+  return ConfigSection(state_, n, dotted(key));
+}
+
+double ConfigSection::number(const std::string& key, double fallback, double min,
+                             double max) const {
+  const YAML::Node n = child(key);
+  if (!n) return fallback;
+  if (!n.IsScalar()) fail(key, "expected a number");
+  const auto v = parse_finite_double(n.Scalar());
+  if (!v) fail(key, "expected a finite number, got '" + n.Scalar() + "'");
+  if (*v < min || *v > max) {
+    std::ostringstream msg;
+    msg << "value " << *v << " is out of range [" << min << ", " << max << "]";
+    fail(key, msg.str());
+  }
+  return *v;
+}
+
+double ConfigSection::positive(const std::string& key, double fallback, double max) const {
+  const double v = number(key, fallback, -1e300, max);
+  if (!(v > 0.0)) {
+    std::ostringstream msg;
+    msg << "value " << v << " must be greater than 0";
+    fail(key, msg.str());
+  }
+  return v;
+}
+
+long ConfigSection::integer(const std::string& key, long fallback, long min, long max) const {
+  const YAML::Node n = child(key);
+  if (!n) return fallback;
+  if (!n.IsScalar()) fail(key, "expected an integer");
+  const auto v = parse_finite_double(n.Scalar());
+  if (!v || std::floor(*v) != *v || std::abs(*v) > 9e15) {
+    fail(key, "expected an integer, got '" + n.Scalar() + "'");
+  }
+  if (*v < static_cast<double>(min) || *v > static_cast<double>(max)) {
+    fail(key, "value " + n.Scalar() + " is out of range [" + std::to_string(min) + ", " +
+                  std::to_string(max) + "]");
+  }
+  return static_cast<long>(*v);
+}
+
+bool ConfigSection::boolean(const std::string& key, bool fallback) const {
+  const YAML::Node n = child(key);
+  if (!n) return fallback;
+  if (!n.IsScalar()) fail(key, "expected true or false");
+  const std::string s = n.Scalar();
+  if (s == "true" || s == "True" || s == "yes" || s == "on") return true;
+  if (s == "false" || s == "False" || s == "no" || s == "off") return false;
+  fail(key, "expected true or false, got '" + s + "'");
+}
+
+std::string ConfigSection::text(const std::string& key, const std::string& fallback) const {
+  const YAML::Node n = child(key);
+  if (!n) return fallback;
+  if (!n.IsScalar()) fail(key, "expected a text value");
+  return n.Scalar();
+}
+
+std::string ConfigSection::choice(const std::string& key, const std::string& fallback,
+                                  const std::vector<std::string>& allowed) const {
+  const std::string v = text(key, fallback);
+  for (const auto& a : allowed) {
+    if (a == v) return v;
+  }
+  std::string list;
+  for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+  fail(key, "'" + v + "' is not one of: " + list);
+}
+
+std::vector<double> ConfigSection::numbers(const std::string& key,
+                                           const std::vector<double>& fallback, double min,
+                                           double max) const {
+  const YAML::Node n = child(key);
+  if (!n) return fallback;
+  if (!n.IsSequence()) fail(key, "expected a list of numbers, e.g. [1, 2, 3]");
+  std::vector<double> out;
+  for (const auto& item : n) {
+    const auto v = item.IsScalar() ? parse_finite_double(item.Scalar()) : std::nullopt;
+    if (!v) fail(key, "every list item must be a finite number");
+    if (*v < min || *v > max) {
+      std::ostringstream msg;
+      msg << "list value " << *v << " is out of range [" << min << ", " << max << "]";
+      fail(key, msg.str());
+    }
+    out.push_back(*v);
+  }
+  return out;
+}
+
+std::vector<long> ConfigSection::integers(const std::string& key, const std::vector<long>& fallback,
+                                          long min, long max) const {
+  std::vector<double> fb(fallback.begin(), fallback.end());
+  const auto vals = numbers(key, fb, static_cast<double>(min), static_cast<double>(max));
+  std::vector<long> out;
+  for (double v : vals) {
+    if (std::floor(v) != v) fail(key, "every list item must be an integer");
+    out.push_back(static_cast<long>(v));
+  }
+  return out;
+}
+
+std::vector<std::string> ConfigSection::texts(const std::string& key,
+                                              const std::vector<std::string>& fallback) const {
+  const YAML::Node n = child(key);
+  if (!n) return fallback;
+  if (!n.IsSequence()) fail(key, "expected a list, e.g. [a, b]");
+  std::vector<std::string> out;
+  for (const auto& item : n) {
+    if (!item.IsScalar()) fail(key, "every list item must be a text value");
+    out.push_back(item.Scalar());
+  }
+  return out;
+}
+
+}  // namespace modaltyre

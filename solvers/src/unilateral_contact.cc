@@ -1,0 +1,151 @@
+#include "modaltyre/solvers/unilateral_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::solvers {
+
+const char* to_string(ContactStatus s) {
+  switch (s) {
+    case ContactStatus::converged:
+      return "converged";
+    case ContactStatus::max_iterations:
+      return "iteration limit reached";
+    case ContactStatus::singular:
+      return "singular compliance on the contact set";
+  }
+  return "unknown";
+}
+
+namespace {
+
+struct RestrictedSolve {
+  bool ok = false;
+  Eigen::VectorXd f_S;
+  double delta = 0;
+};
+
+RestrictedSolve solve_on_set(const ContactProblem& p, const std::vector<int>& S) {
+  const int k = static_cast<int>(S.size());
+  Eigen::MatrixXd A(k, k);
+  Eigen::MatrixXd rhs(k, 2);
+  for (int a = 0; a < k; ++a) {
+    for (int b = 0; b < k; ++b) A(a, b) = p.compliance(S[a], S[b]);
+    rhs(a, 0) = 1.0;
+    rhs(a, 1) = p.initial_gap(S[a]);
+  }
+  RestrictedSolve r;
+  Eigen::MatrixXd x;
+  if (p.symmetric) {
+    Eigen::LLT<Eigen::MatrixXd> llt(A);
+    if (llt.info() != Eigen::Success) return r;
+    x = llt.solve(rhs);
+  } else {
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+    x = lu.solve(rhs);
+  }
+  const double one_a = x.col(0).sum();
+  if (!(std::abs(one_a) > 0) || !x.allFinite()) return r;
+  r.delta = (p.load_N + x.col(1).sum()) / one_a;
+  r.f_S = r.delta * x.col(0) - x.col(1);
+  r.ok = r.f_S.allFinite() && std::isfinite(r.delta);
+  return r;
+}
+
+}  // namespace
+
+ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactOptions& opt,
+                                         const std::vector<char>* warm_active) {
+  const int m = static_cast<int>(p.initial_gap.size());
+  MODALTYRE_CHECK(m > 0 && p.compliance.rows() == m && p.compliance.cols() == m,
+                  "contact problem sizes disagree");
+  MODALTYRE_CHECK(p.load_N > 0, "contact load must be positive");
+  ContactSolution sol;
+  std::vector<char> in(m, 0);
+  if (warm_active && static_cast<int>(warm_active->size()) == m) in = *warm_active;
+  if (std::find(in.begin(), in.end(), 1) == in.end()) {
+    Eigen::Index imin = 0;
+    p.initial_gap.minCoeff(&imin);
+    in[imin] = 1;
+  }
+  std::set<std::vector<char>> visited;
+  bool single_step = false;
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(m);
+  for (int it = 1; it <= opt.max_iterations; ++it) {
+    sol.iterations = it;
+    std::vector<int> S;
+    for (int i = 0; i < m; ++i)
+      if (in[i]) S.push_back(i);
+    const RestrictedSolve rs = solve_on_set(p, S);
+    if (!rs.ok) {
+      sol.status = ContactStatus::singular;
+      sol.message = "the compliance restricted to " + std::to_string(S.size()) +
+                    " contact points is not positive definite";
+      return sol;
+    }
+    f.setZero();
+    for (std::size_t a = 0; a < S.size(); ++a) f(S[a]) = rs.f_S(a);
+    const Eigen::VectorXd g = p.initial_gap + p.compliance * f - rs.delta * Eigen::VectorXd::Ones(m);
+    const double gtol = opt.gap_tolerance * std::max(std::abs(rs.delta), 1e-12);
+    const double ftol = 1e-13 * p.load_N;
+
+    std::vector<char> next = in;
+    int worst_drop = -1, worst_add = -1;
+    double most_negative_f = 0, most_negative_g = 0;
+    for (int i = 0; i < m; ++i) {
+      if (in[i] && f(i) < -ftol) {
+        next[i] = 0;
+        if (f(i) < most_negative_f) most_negative_f = f(i), worst_drop = i;
+      } else if (!in[i] && g(i) < -gtol) {
+        next[i] = 1;
+        if (g(i) < most_negative_g) most_negative_g = g(i), worst_add = i;
+      }
+    }
+    if (next == in) {
+      sol.status = ContactStatus::converged;
+      sol.force = f.cwiseMax(0.0);
+      sol.gap = g;
+      for (int i = 0; i < m; ++i)
+        if (in[i]) sol.gap(i) = std::max(sol.gap(i), 0.0);
+      sol.approach_m = rs.delta;
+      sol.active = in;
+      sol.equilibrium_residual = std::abs(sol.force.sum() - p.load_N) / p.load_N;
+      double comp = 0, pen = 0;
+      for (int i = 0; i < m; ++i) {
+        comp = std::max(comp, std::abs(f(i) * g(i)));
+        pen = std::max(pen, -g(i));
+      }
+      sol.complementarity_residual = comp / (p.load_N * std::max(std::abs(rs.delta), 1e-12));
+      sol.max_penetration_m = std::max(pen, 0.0);
+      sol.max_tension_N = std::max(-f.minCoeff(), 0.0);
+      sol.message = "converged in " + std::to_string(it) + " active-set iterations";
+      return sol;
+    }
+    if (!single_step && !visited.insert(in).second) single_step = true;
+    if (single_step) {
+      // One change at a time: drop the worst tension first, else add the worst penetration.
+      next = in;
+      if (worst_drop >= 0) {
+        next[worst_drop] = 0;
+      } else if (worst_add >= 0) {
+        next[worst_add] = 1;
+      }
+    }
+    if (std::find(next.begin(), next.end(), 1) == next.end()) {
+      Eigen::Index imin = 0;
+      g.minCoeff(&imin);
+      next[imin] = 1;
+    }
+    in = std::move(next);
+  }
+  sol.status = ContactStatus::max_iterations;
+  sol.force = f;
+  sol.message = "active set did not settle in " + std::to_string(opt.max_iterations) +
+                " iterations";
+  return sol;
+}
+
+}  // namespace modaltyre::solvers
