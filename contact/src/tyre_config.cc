@@ -20,6 +20,9 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   c.extend_orders = modal.boolean("extend_orders", true);
   c.compliance_scale = modal.number("compliance_scale", 1.0, 1e-3, 1e3);
   c.mesh.max_order = static_cast<int>(modal.integer("max_order", 0, 0, 100000));
+  if (modal.has("extension_bending_s2_rad2_s2")) {
+    c.extension_s2 = modal.number("extension_bending_s2_rad2_s2", 0, 0, 1e12);
+  }
 
   const ConfigSection tread = root.section("tread");
   c.tread.modulus_Pa = tread.number("modulus_MPa", 6.0, 1e-3, 1e4) * 1e6;

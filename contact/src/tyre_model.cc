@@ -21,7 +21,13 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
   bo.max_order = config.mesh.max_order > 0 ? config.mesh.max_order : m.units_around / 2;
   bo.extend = config.extend_orders;
   bo.compliance_scale = config.compliance_scale;
-  m.basis = modal::build_modal_basis(modes, bo);
+  if (config.extension_s2 >= 0) {
+    modal::ModeIdentification stated = modes;
+    stated.dispersion.s2 = config.extension_s2;
+    m.basis = modal::build_modal_basis(stated, bo);
+  } else {
+    m.basis = modal::build_modal_basis(modes, bo);
+  }
   m.kernels = modal::build_lag_kernels(m.basis, m.dtheta_rad, cand);
 
   const auto& t = config.tread;

@@ -44,7 +44,7 @@ ModalBasis build_modal_basis(const ModeIdentification& ident, const ModalBasisOp
       t.weight = 1.0;
       t.P_rr = m->radial.A[0] * m->radial.A[0];
       t.P_tt = m->tangential.A[0] * m->tangential.A[0];
-      t.P_rt = m->radial.A[0] * m->tangential.A[0];
+      t.P_rt = 0.0;  // mirror symmetry: no static radial-tangential coupling at order 0
     } else {
       const int k = m->apparent_order;
       t.order = k;
@@ -52,7 +52,10 @@ ModalBasis build_modal_basis(const ModeIdentification& ident, const ModalBasisOp
       const auto cr = m->c_radial, ct = m->c_tangential;
       t.P_rr = cr * std::conj(cr);
       t.P_tt = ct * std::conj(ct);
-      t.P_rt = cr * std::conj(ct);
+      // Mirror symmetry of the tyre (theta -> -theta) puts the tangential shape in quadrature
+      // with the radial one: only Im(c_r conj(c_t)) is physical; the real part is measurement
+      // noise and would make the static footprint lean fore or aft.
+      t.P_rt = std::complex<double>(0.0, (cr * std::conj(ct)).imag());
       max_measured = std::max(max_measured, k);
       if (k >= 2) {
         amp_sum += std::norm(cr);

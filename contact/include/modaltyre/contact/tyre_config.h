@@ -42,6 +42,10 @@ struct TyreConfig {
   std::string hammer_csv;       ///< resolved path of the hammer data
   bool extend_orders = true;
   double compliance_scale = 1.0;
+  /// Bending term s2 of the dispersion extension [rad^2/s^2]; negative = as fitted to the
+  /// resolved orders. Stating it lets a config add belt bending stiffness the hammer test cannot
+  /// resolve (it acts on unmeasured orders only).
+  double extension_s2 = -1.0;
   TreadParams tread;
   Discretisation mesh;
   SolverSettings solver;

@@ -11,7 +11,9 @@
 //
 // Mass normalisation: the shapes are in kg^-1/2 (unit modal mass), so
 //   H_ab(Delta) = sum_terms w Re(P_ab e^{ik Delta}) / omega^2   [m/N]
-// is the static compliance directly, with P_ab = c_a conj(c_b).
+// is the static compliance directly, with P_ab = c_a conj(c_b). The tyre is also mirror
+// symmetric (theta -> -theta), so the radial-tangential coupling P_rt is kept purely imaginary
+// (tangential shape in quadrature with the radial one) and is zero at order 0.
 //
 // Modal truncation: the hammer test resolves few orders, a footprint needs many more. Orders that
 // no resolved measured mode covers (aliased orders and all orders above) are filled from the

@@ -1,0 +1,174 @@
+// modaltyre validate CONFIG MEASURED.csv [--set key=value]... [--json] [--plot FILE]
+#include <iostream>
+#include <memory>
+
+#include "cli_support.h"
+#include "commands.h"
+#include "modaltyre/contact/validation.h"
+#include "modaltyre/core/gnuplot.h"
+
+namespace modaltyre::app {
+namespace {
+
+struct ValidateArgs {
+  std::string config;
+  std::string measured;
+  std::vector<std::string> overrides;
+  bool json = false;
+  std::string plot;
+};
+
+nlohmann::json opt_json(const std::optional<double>& v, double scale = 1.0) {
+  return v ? nlohmann::json(round_sig(*v * scale, 8)) : nlohmann::json();
+}
+
+nlohmann::json to_json(const contact::ValidationReport& rep) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& r : rep.rows) {
+    rows.push_back({{"row", r.measured.row},
+                    {"load_N", r.measured.load_N},
+                    {"calibration", r.calibration},
+                    {"measured",
+                     {{"sinking_mm", opt_json(r.measured.sinking_mm)},
+                      {"length_mm", opt_json(r.measured.length_mm)},
+                      {"width_mm", opt_json(r.measured.width_mm)}}},
+                    {"predicted",
+                     {{"sinking_mm", round_sig(r.sinking_mm, 8)},
+                      {"length_mm", round_sig(r.length_mm, 8)}}},
+                    {"rel_error",
+                     {{"sinking_mm", opt_json(r.sinking_rel_error)},
+                      {"length_mm", opt_json(r.length_rel_error)}}}});
+  }
+  nlohmann::json rms = nlohmann::json::object();
+  for (const auto& [k, v] : rep.rms_rel_error) rms[k] = round_sig(v, 8);
+  nlohmann::json calibrated = nlohmann::json::object();
+  nlohmann::json initial = nlohmann::json::object();
+  const auto& c = rep.calibration;
+  for (std::size_t i = 0; i < c.keys.size(); ++i) {
+    calibrated[c.keys[i]] = round_sig(c.values[i], 8);
+    initial[c.keys[i]] = c.initial_values[i];
+  }
+  return {{"config", rep.model.config.source},
+          {"rows", rows},
+          {"rms_rel_error", rms},
+          {"predicted_rows", rep.predicted_rows},
+          {"calibrated", calibrated},
+          {"calibration",
+           {{"rows", c.rows},
+            {"observables", c.observables},
+            {"initial", initial},
+            {"rms_rel_residual", round_sig(c.rms_rel_residual, 8)},
+            {"evaluations", c.evaluations}}}};
+}
+
+void print_table(const contact::ValidationReport& rep, const std::string& measured_path) {
+  const auto& c = rep.calibration;
+  std::cout << rep.model.config.name << " vs " << measured_path << "\n";
+  if (c.keys.empty()) {
+    std::cout << "No calibration: every row is a prediction.\n";
+  } else {
+    std::cout << "Calibrated on rows";
+    for (int r : c.rows) std::cout << " " << r;
+    std::cout << " (observables:";
+    for (const auto& o : c.observables) std::cout << " " << o;
+    std::cout << "):\n";
+    for (std::size_t i = 0; i < c.keys.size(); ++i) {
+      std::cout << "  " << c.keys[i] << " = " << round_sig(c.values[i], 5) << "  (was "
+                << c.initial_values[i] << ")\n";
+    }
+  }
+  std::cout << "\n row  load_N  role         sinking_mm meas/pred    err%   length_mm meas/pred"
+               "    err%\n";
+  auto cell = [](const std::optional<double>& m, double p, const std::optional<double>& e) {
+    char b[96];
+    if (m) {
+      std::snprintf(b, sizeof b, "%8.1f / %-8.2f %6.1f", *m, p, 100 * *e);
+    } else {
+      std::snprintf(b, sizeof b, "%8s / %-8.2f %6s", "-", p, "-");
+    }
+    return std::string(b);
+  };
+  for (const auto& r : rep.rows) {
+    char head[64];
+    std::snprintf(head, sizeof head, " %3d  %6.0f  %-11s  ", r.measured.row, r.measured.load_N,
+                  r.calibration ? "calibration" : "prediction");
+    std::cout << head << cell(r.measured.sinking_mm, r.sinking_mm, r.sinking_rel_error) << "   "
+              << cell(r.measured.length_mm, r.length_mm, r.length_rel_error) << "\n";
+  }
+  std::cout << "\nRMS relative error over predicted rows:";
+  for (const auto& [k, v] : rep.rms_rel_error) {
+    std::cout << "  " << k << " " << fixed(100 * v, 1) << " % (" << rep.predicted_rows.at(k)
+              << " rows)";
+  }
+  std::cout << "\n";
+}
+
+void plot_validation(const contact::ValidationReport& rep, const std::string& path) {
+  double lo = 1e300, hi = 0;
+  for (const auto& r : rep.rows) lo = std::min(lo, r.measured.load_N), hi = std::max(hi, r.measured.load_N);
+  std::vector<contact::LoadCase> curve;
+  const int n = 24;
+  for (int i = 0; i <= n; ++i) {
+    curve.push_back({0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n, rep.model.config.horizontal_force_N});
+  }
+  const auto res = contact::solve_footprints(rep.model, curve);
+  PlotPanel ps{"Sinking versus load", "vertical load [kN]", "sinking [mm]", {}};
+  PlotPanel pl{"Contact length versus load", "vertical load [kN]", "contact length [mm]", {}};
+  PlotSeries ps_pred{"model", {}, {}, "lines"}, pl_pred{"model", {}, {}, "lines"};
+  for (const auto& r : res) {
+    if (!r.converged) continue;
+    ps_pred.x.push_back(r.load.load_N / 1000);
+    ps_pred.y.push_back(r.sinking_m * 1e3);
+    pl_pred.x.push_back(r.load.load_N / 1000);
+    pl_pred.y.push_back(r.contact_length_m * 1e3);
+  }
+  PlotSeries ps_meas{"measured (prediction rows)", {}, {}, "points"};
+  PlotSeries pl_meas{"measured (prediction rows)", {}, {}, "points"};
+  PlotSeries ps_cal{"measured (calibration rows)", {}, {}, "points"};
+  PlotSeries pl_cal{"measured (calibration rows)", {}, {}, "points"};
+  for (const auto& r : rep.rows) {
+    auto& s = r.calibration ? ps_cal : ps_meas;
+    auto& l = r.calibration ? pl_cal : pl_meas;
+    if (r.measured.sinking_mm) s.x.push_back(r.measured.load_N / 1000), s.y.push_back(*r.measured.sinking_mm);
+    if (r.measured.length_mm) l.x.push_back(r.measured.load_N / 1000), l.y.push_back(*r.measured.length_mm);
+  }
+  ps.series = {ps_pred, ps_meas};
+  pl.series = {pl_pred, pl_meas};
+  if (!ps_cal.x.empty()) ps.series.push_back(ps_cal);
+  if (!pl_cal.x.empty()) pl.series.push_back(pl_cal);
+  PlotFigure fig;
+  fig.width_px = 1200;
+  fig.height_px = 480;
+  fig.panels = {ps, pl};
+  render_plot(fig, path);
+}
+
+}  // namespace
+
+void register_validate(CLI::App& app) {
+  auto a = std::make_shared<ValidateArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "validate",
+      "Compare predicted sinking and contact length with measured footprints (e.g. seed 001 "
+      "Table 3); calibration, if any, is declared in the config's validation section "
+      "(at most two parameters on at most two rows) and only the other rows count.");
+  cmd->add_option("CONFIG", a->config, "tyre config (YAML)")->required();
+  cmd->add_option("MEASURED", a->measured,
+                  "CSV with load_N and any of sinking_mm, length_mm, width_mm")
+      ->required();
+  cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");
+  cmd->add_flag("--json", a->json, "print JSON");
+  cmd->add_option("--plot", a->plot, "draw sinking and length versus load (.svg or .png)");
+  cmd->callback([a] {
+    const auto measured = contact::read_footprint_measurements(a->measured);
+    const auto rep = contact::validate_footprints(a->config, a->overrides, measured);
+    if (!a->plot.empty()) plot_validation(rep, a->plot);
+    if (a->json) {
+      print_json(to_json(rep));
+    } else {
+      print_table(rep, a->measured);
+    }
+  });
+}
+
+}  // namespace modaltyre::app
