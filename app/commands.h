@@ -7,6 +7,8 @@ namespace modaltyre::app {
 
 void register_fit_modes(CLI::App& app);
 void register_footprint(CLI::App& app);
+void register_identify(CLI::App& app);
+void register_validate(CLI::App& app);
 
 
 }  // namespace modaltyre::app

@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "modaltyre 0.1.0");
   modaltyre::app::register_fit_modes(app);
   modaltyre::app::register_footprint(app);
+  modaltyre::app::register_identify(app);
+  modaltyre::app::register_validate(app);
 
   try {
     app.parse(argc, argv);

@@ -43,10 +43,12 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
   }
   m.vertical_compliance.resize(cand, cand);
   m.vertical_from_horizontal.resize(cand, cand);
+  std::vector<double> cosv(cand), sinv(cand);
+  for (int i = 0; i < cand; ++i) cosv[i] = std::cos(m.theta[i]), sinv[i] = std::sin(m.theta[i]);
   for (int i = 0; i < cand; ++i) {
-    const double ci = std::cos(m.theta[i]), si = std::sin(m.theta[i]);
+    const double ci = cosv[i], si = sinv[i];
     for (int j = 0; j < cand; ++j) {
-      const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
+      const double cj = cosv[j], sj = sinv[j];
       const modal::Transfer2x2 h = m.kernels.at(i - j);
       // Unit vertical force at j: f_r = cos theta_j, f_t = sin theta_j (seed 001 eq. 12).
       const double ur = h.r_from_r * cj + h.r_from_t * sj;

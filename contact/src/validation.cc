@@ -26,6 +26,9 @@ const std::map<std::string, Calibratable>& calibratable() {
       {"tread.thickness_mm", {[](const TyreConfig& c) { return c.tread.thickness_m * 1e3; }, 1, 50}},
       {"tread.contact_width_mm", {[](const TyreConfig& c) { return c.tread.width_m * 1e3; }, 20, 500}},
       {"tyre.outer_radius_mm", {[](const TyreConfig& c) { return c.outer_radius_m * 1e3; }, 100, 1500}},
+      // Starts at 10 rad^2/s^2 when not stated (the fit to resolved orders may give 0).
+      {"modal.extension_bending_s2_rad2_s2",
+       {[](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; }, 1e-3, 1e6}},
   };
   return keys;
 }
@@ -169,6 +172,8 @@ ValidationReport validate_footprints(const std::string& config_path,
     };
     solvers::LeastSquaresOptions lso;
     lso.relative_step = 1e-5;
+    lso.step_tolerance = 1e-6;   // 1e-6 relative in each parameter is far below its meaning
+    lso.cost_tolerance = 1e-8;
     const auto fit = solvers::levenberg_marquardt(residual, x, lso);
     x = fit.x;
     cal.converged = fit.converged;

@@ -14,8 +14,9 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw InputError({path, 0, ""}, "output path is a directory");
   const fs::path target(path);
-  const fs::path tmp =
-      target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()));
+  std::string tmp_name = ".";
+  tmp_name.append(target.filename().string()).append(".tmp").append(std::to_string(getpid()));
+  const fs::path tmp = target.parent_path() / tmp_name;
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw InputError({path, 0, ""}, "cannot write output file (folder missing?)");

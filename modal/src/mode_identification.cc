@@ -95,7 +95,11 @@ ModeIdentification identify_modes(const HammerData& data, const IdentificationOp
       if (k > highest_below) highest_below = k, highest_id = m.id;
       continue;
     }
-    if (highest_below >= 2 && k < highest_below) {
+    // Apparent orders 0 and 1 are also breathing and rigid translation, which are not in the
+    // radial family and may lie above its low orders: they count as folded only above the
+    // family order just below the lowest order that folds onto them (N - k - 1).
+    const bool family_evidence = k >= 2 || highest_below >= N - k - 1;
+    if (highest_below >= 2 && k < highest_below && family_evidence) {
       m.aliased = true;
       m.note = "fits as order " + std::to_string(k) + " but lies above mode " +
                std::to_string(highest_id) + " of order " + std::to_string(highest_below) +

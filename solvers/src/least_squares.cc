@@ -41,7 +41,8 @@ LeastSquaresResult levenberg_marquardt(
       ++res.evaluations;
       const double cn = 0.5 * rn.squaredNorm();
       if (std::isfinite(cn) && cn < cost) {
-        const bool small = dx.norm() < opt.step_tolerance * (x.norm() + opt.step_tolerance);
+        const bool small = dx.norm() < opt.step_tolerance * (x.norm() + opt.step_tolerance) ||
+                           cost - cn < opt.cost_tolerance * cost;
         x = xn;
         r = rn;
         cost = cn;

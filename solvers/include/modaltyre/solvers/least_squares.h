@@ -12,6 +12,7 @@ struct LeastSquaresOptions {
   double relative_step = 1e-4;       ///< finite-difference step, relative to |x| (or absolute at 0)
   double gradient_tolerance = 1e-10;
   double step_tolerance = 1e-8;      ///< stop when |dx| < tol (|x| + tol)
+  double cost_tolerance = 1e-10;     ///< stop when a step lowers the cost by less than tol*cost
 };
 
 struct LeastSquaresResult {

@@ -1,0 +1,41 @@
+#pragma once
+// Helpers shared by the rheology tests: temporary CSV files and running the CLI.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+namespace modaltyre::rheology::test {
+
+inline std::string temp_file(const std::string& name, const std::string& content) {
+  const auto dir = std::filesystem::temp_directory_path() / "modaltyre_rheology_tests";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / name;
+  std::ofstream(path) << content;
+  return path.string();
+}
+
+/// Runs the CLI with arguments; returns its exit code; stdout goes to `out` if given.
+inline int run_cli(const std::string& args, const std::string& out = "") {
+  const std::string cmd = std::string(MODALTYRE_CLI) + " " + args + " > " +
+                          (out.empty() ? std::string("/dev/null") : out) + " 2>/dev/null";
+  const int rc = std::system(cmd.c_str());
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+inline std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// Fixed-seed Gaussian noise.
+struct Noise {
+  std::mt19937 rng{20240605u};
+  std::normal_distribution<double> n{0.0, 1.0};
+  double operator()() { return n(rng); }
+};
+
+}  // namespace modaltyre::rheology::test
