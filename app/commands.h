@@ -9,6 +9,8 @@ void register_fit_modes(CLI::App& app);
 void register_footprint(CLI::App& app);
 void register_identify(CLI::App& app);
 void register_validate(CLI::App& app);
+void register_sweep(CLI::App& app);
+void register_transient(CLI::App& app);
 
 
 }  // namespace modaltyre::app

@@ -38,6 +38,8 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
                      {"horizontal_force_N", r.load.horizontal_force_N},
                      {"sinking_mm", round_sig(r.sinking_m * 1e3)},
                      {"contact_length_mm", round_sig(r.contact_length_m * 1e3)},
+                     {"rear_edge_x_mm", round_sig(r.rear_edge_x_m * 1e3)},
+                     {"front_edge_x_mm", round_sig(r.front_edge_x_m * 1e3)},
                      {"vertical_stiffness_N_mm", round_sig(r.vertical_stiffness_N_m() * 1e-3)},
                      {"peak_pressure_kPa", round_sig(peak * 1e-3)},
                      {"converged", r.converged},
@@ -96,13 +98,13 @@ void plot_pressures(const std::vector<contact::FootprintResult>& results,
               " mm";
     s.style = "lines";
     // Close the curve to zero at the patch edges so that the length reads off the plot.
-    s.x.push_back((r.units.front().x_m - 0.5 * r.units.front().dx_m) * 1e3);
+    s.x.push_back(r.rear_edge_x_m * 1e3);
     s.y.push_back(0);
     for (const auto& u : r.units) {
       s.x.push_back(u.x_m * 1e3);
       s.y.push_back(u.pressure_Pa * 1e-3);
     }
-    s.x.push_back((r.units.back().x_m + 0.5 * r.units.back().dx_m) * 1e3);
+    s.x.push_back(r.front_edge_x_m * 1e3);
     s.y.push_back(0);
     p.series.push_back(s);
   }

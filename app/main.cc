@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
   modaltyre::app::register_footprint(app);
   modaltyre::app::register_identify(app);
   modaltyre::app::register_validate(app);
+  modaltyre::app::register_sweep(app);
+  modaltyre::app::register_transient(app);
 
   try {
     app.parse(argc, argv);

@@ -87,9 +87,18 @@ FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
     u.pressure_Pa = u.fz_N / (u.dx_m * width);
     r.units.push_back(u);
   }
-  // Each unit covers dx around its centre: the patch spans the outer edges of the end units.
-  r.contact_length_m = r.contour_x_m[last] - r.contour_x_m[first] +
-                       0.5 * (r.units.front().dx_m + r.units.back().dx_m);
+  // Patch edges between units: the level function phi = f C_ii (force as the unit's own
+  // displacement) inside and -g (gap) outside is interpolated linearly to its zero. For a rigid
+  // ring on a Winkler layer phi = delta - sag exactly, so the chord is recovered to O(ds^2).
+  auto edge = [&](int inside, int outside) {
+    const double phi_in = f(inside) * p.compliance(inside, inside);
+    const double phi_out = -s.gap(outside);
+    const double t = phi_in / (phi_in - phi_out);
+    return r.contour_x_m[inside] + t * (r.contour_x_m[outside] - r.contour_x_m[inside]);
+  };
+  r.rear_edge_x_m = edge(first, first - 1);
+  r.front_edge_x_m = edge(last, last + 1);
+  r.contact_length_m = r.front_edge_x_m - r.rear_edge_x_m;
   std::ostringstream msg;
   msg << "converged in " << s.iterations << " active-set iterations";
   r.message = msg.str();

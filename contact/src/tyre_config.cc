@@ -75,6 +75,41 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
       val.fail("calibration_observables", "'" + o + "' is not one of: sinking_mm, length_mm");
     }
   }
+  const ConfigSection tr = root.section("transient");
+  auto& T = c.transient;
+  T.hub_mass_kg = tr.positive("hub_mass_kg", T.hub_mass_kg, 1e5);
+  T.dynamic_max_order = static_cast<int>(tr.integer("dynamic_max_order", T.dynamic_max_order, 0, 2000));
+  T.relaxation = tr.boolean("relaxation", T.relaxation);
+  T.tread_reference_frequency_hz =
+      tr.positive("tread_reference_frequency_hz", T.tread_reference_frequency_hz, 1e6);
+  T.instantaneous_stiffness_ratio =
+      tr.number("instantaneous_stiffness_ratio", T.instantaneous_stiffness_ratio, 1.01, 1e6);
+  T.modal_damping_scale = tr.number("modal_damping_scale", T.modal_damping_scale, 0, 100);
+  T.output_step_s = tr.positive("output_step_ms", T.output_step_s * 1e3, 1e6) * 1e-3;
+  T.relative_tolerance = tr.number("relative_tolerance", T.relative_tolerance, 1e-12, 1e-2);
+  const ConfigSection lh = tr.section("load_hold");
+  T.load_hold.load_N = lh.positive("load_N", T.load_hold.load_N, 1e7);
+  T.load_hold.ramp_rate_N_s = lh.positive("ramp_rate_N_s", T.load_hold.ramp_rate_N_s, 1e12);
+  T.load_hold.hold_s = lh.number("hold_s", T.load_hold.hold_s, 0, 1e6);
+  const ConfigSection fv = tr.section("free_vibration");
+  T.free_vibration.load_N = fv.positive("load_N", T.free_vibration.load_N, 1e7);
+  T.free_vibration.initial_load_N =
+      fv.positive("initial_load_N", T.free_vibration.initial_load_N, 1e7);
+  T.free_vibration.duration_s = fv.positive("duration_s", T.free_vibration.duration_s, 1e6);
+  const ConfigSection ro = tr.section("rolling");
+  T.rolling.load_N = ro.positive("load_N", T.rolling.load_N, 1e7);
+  T.rolling.speed_m_s = ro.number("speed_km_h", T.rolling.speed_m_s * 3.6, 0, 1000) / 3.6;
+  T.rolling.ramp_s = ro.number("ramp_s", T.rolling.ramp_s, 0, 1e6);
+  T.rolling.duration_s = ro.positive("duration_s", T.rolling.duration_s, 1e6);
+  if (T.rolling.duration_s < T.rolling.ramp_s) {
+    ro.fail("duration_s", "must be at least ramp_s (the speed ramp is part of the run)");
+  }
+  const ConfigSection cl = tr.section("cleat");
+  T.cleat.load_N = cl.positive("load_N", T.cleat.load_N, 1e7);
+  T.cleat.speed_m_s = cl.positive("speed_km_h", T.cleat.speed_m_s * 3.6, 1000) / 3.6;
+  T.cleat.height_m = cl.positive("height_mm", T.cleat.height_m * 1e3, 200) * 1e-3;
+  T.cleat.length_m = cl.positive("length_mm", T.cleat.length_m * 1e3, 2000) * 1e-3;
+  T.cleat.ramp_s = cl.number("ramp_s", T.cleat.ramp_s, 0, 1e6);
   tree.reject_unknown_keys();
   return c;
 }

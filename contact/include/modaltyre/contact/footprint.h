@@ -33,7 +33,9 @@ struct FootprintResult {
   std::string message;
   int iterations = 0;
   double sinking_m = 0;           ///< approach of axle and road
-  double contact_length_m = 0;
+  double contact_length_m = 0;     ///< front_edge_x_m - rear_edge_x_m
+  double rear_edge_x_m = 0;        ///< patch edges, interpolated between units
+  double front_edge_x_m = 0;
   double equilibrium_residual = 0;      ///< |sum fz - F_z| / F_z
   double complementarity_residual = 0;  ///< max |f g| / (F_z sinking)
   std::vector<PatchUnit> units;         ///< units in contact, front to back ordered by x

@@ -34,6 +34,25 @@ struct ValidationSettings {
   std::vector<std::string> observables = {"sinking_mm"};  ///< fitted on those rows
 };
 
+/// Scenarios and model settings of the transient simulation (section `transient:`, see
+/// contact/transient.h and docs/transient.md). Speeds in m/s, lengths in m, times in s.
+struct TransientSettings {
+  double hub_mass_kg = 20;           ///< reduced mass on the hub DOF (tyre + rim + fixture), > 0
+  int dynamic_max_order = 40;        ///< orders above it respond quasi-statically (residual)
+  bool relaxation = true;            ///< Kelvin-Voigt tread (seed 001 eq. 10); false: eq. (6)
+  double tread_reference_frequency_hz = 10;  ///< Omega of c = K tan(delta) / Omega (eq. 9)
+  double instantaneous_stiffness_ratio = 20; ///< glassy / relaxed tread stiffness, > 1
+  double modal_damping_scale = 1;    ///< multiplies every modal damping ratio (0 = undamped)
+  double output_step_s = 0.01;
+  double relative_tolerance = 1e-6;
+  struct LoadHold { double load_N = 4000, ramp_rate_N_s = 4000, hold_s = 120; } load_hold;
+  struct FreeVibration { double load_N = 4000, initial_load_N = 5000, duration_s = 1; } free_vibration;
+  struct Rolling { double load_N = 4000, speed_m_s = 60 / 3.6, ramp_s = 1, duration_s = 3; } rolling;
+  struct Cleat {
+    double load_N = 4000, speed_m_s = 30 / 3.6, height_m = 0.01, length_m = 0.02, ramp_s = 0.5;
+  } cleat;
+};
+
 struct TyreConfig {
   std::string source;           ///< config file path
   std::string name = "tyre";
@@ -52,6 +71,7 @@ struct TyreConfig {
   std::vector<double> loads_N;
   double horizontal_force_N = 0;
   ValidationSettings validation;
+  TransientSettings transient;
 };
 
 /// Reads every key of the tree into a TyreConfig; unknown keys, wrong types and out-of-range

@@ -12,7 +12,9 @@
 // flagged `aliased` when (a) it fits at the Nyquist order N/2, or (b) it lies above (in frequency)
 // a radial mode whose order is higher than its own apparent order — along a tyre's radial mode
 // family (orders >= 2) frequency rises with order, so such a mode must be a higher order folded
-// down. Aliased modes keep their apparent order, list the candidate true orders
+// down. Apparent orders 0 and 1 (breathing, rigid translation) are not part of that family and
+// may lie above its low orders: they count as folded only above a family mode of order N - k - 1
+// or higher. Aliased modes keep their apparent order, list the candidate true orders
 // (j N +- k_apparent), and name the likely one from the dispersion fit of the resolved orders.
 #include <complex>
 #include <string>

@@ -1,0 +1,144 @@
+#pragma once
+// Parameter sweeps from a sweep file: the Cartesian product of condition and parameter values,
+// each case a static footprint, run in parallel (OpenMP) with results independent of the number
+// of threads.
+//
+// Sweep file (YAML; paths relative to the sweep file):
+//   base: ../sf350.yaml                 # tyre config every case starts from (required)
+//   set:                                # overrides applied to every case (optional)
+//     tread.modulus_MPa: 8              #   dotted config keys (nested mappings also accepted)
+//     horizontal_force_N: 0             #   or condition values
+//   grid:                               # keys -> lists, Cartesian product in written order,
+//     tread.modulus_MPa: [5, 6, 7]      #   the last key varies fastest (required, non-empty)
+//     load_N: [2131, 3261, 5478]
+//   output: table3_loads.csv            # CSV path (required unless the caller gives one)
+//
+// Condition keys: load_N (> 0, required in grid or set) and horizontal_force_N (default: the
+// base config's horizontal_force_N). Every other key is a dotted config key, applied like
+// `--set key=value` in the order base < set < (command-line set) < grid.
+// Cases that differ only in their conditions share one immutable TyreModel.
+//
+// Every input problem (unknown top-level key, missing base, empty or non-list grid value, a key
+// that is not a valid config key or a value it rejects) is an InputError naming the sweep file,
+// line and key, raised by plan_sweep() before any model is built.
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "modaltyre/contact/footprint.h"
+#include "modaltyre/contact/tyre_config.h"
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::contact {
+
+/// A scalar value as written in the sweep file (YAML text) and, if it is a number, its value.
+struct SweepValue {
+  std::string text;  ///< scalar text (for the CSV)
+  std::string yaml;  ///< YAML text given to the config as an override
+  std::optional<double> number;
+  int line = 0;  ///< 1-based line in the sweep file (0: command line)
+};
+
+struct SweepAssignment {
+  std::string key;  ///< dotted config key or condition name
+  SweepValue value;
+  InputLocation where;  ///< sweep file:line:"set.KEY", or "--set":0:KEY
+};
+
+struct SweepAxis {
+  std::string key;  ///< dotted config key or condition name, as written
+  std::vector<SweepValue> values;
+  InputLocation where;  ///< sweep file:line:"grid.KEY"
+  bool condition = false;  ///< load_N / horizontal_force_N (not a model parameter)
+};
+
+struct SweepSpec {
+  std::string file;         ///< the sweep file as given
+  std::string base_config;  ///< resolved path of the base tyre config
+  InputLocation base_where;
+  std::vector<SweepAssignment> set;  ///< sweep file's set:, then command-line overrides
+  std::vector<SweepAxis> grid;
+  std::string output;  ///< resolved CSV path ("" if the file names none)
+  InputLocation output_where;
+};
+
+/// The condition columns a sweep understands.
+bool is_sweep_condition(const std::string& key);
+
+/// Reads a sweep file; `overrides` ("dotted.key=value", e.g. from --set) apply to every case
+/// after the file's set:. Throws InputError naming file, line and key.
+SweepSpec read_sweep_spec(const std::string& path, const std::vector<std::string>& overrides = {});
+/// Same from YAML text; `name` is the file name used in messages and to resolve paths.
+SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
+                           const std::vector<std::string>& overrides = {});
+
+struct SweepCase {
+  std::vector<std::size_t> value_index;  ///< per grid axis
+  std::size_t model = 0;                 ///< index into SweepPlan::models
+  LoadCase load;
+};
+
+struct SweepPlan {
+  SweepSpec spec;
+  std::vector<std::string> columns;  ///< condition/parameter columns of the CSV
+  /// Per column: grid axis index, or -1 for a load_N column that comes from set:.
+  std::vector<int> column_axis;
+  std::vector<TyreConfig> models;            ///< one per distinct parameter combination
+  std::vector<std::vector<std::string>> model_overrides;  ///< "key=value" list per model
+  std::vector<SweepCase> cases;              ///< grid order, last axis fastest
+
+  /// Cells of the condition/parameter columns of case i (formatted as in the CSV).
+  std::vector<std::string> cells(std::size_t i) const;
+};
+
+/// Expands the grid, builds and validates the config of every distinct parameter combination
+/// (cheap: no model is built) and checks every condition value. InputError on any problem.
+SweepPlan plan_sweep(const SweepSpec& spec);
+
+struct SweepRow {
+  bool ok = false;
+  double sinking_mm = 0;
+  double length_mm = 0;
+  double vertical_stiffness_N_mm = 0;
+  double peak_pressure_kPa = 0;
+  int iterations = 0;
+  std::string message;  ///< empty when ok, else the reason
+};
+
+struct SweepOptions {
+  int threads = 0;  ///< OpenMP threads; 0 = omp_get_max_threads()
+  /// Warm-start every case of a model from one fixed reference solution of that model (its
+  /// median-load case, solved cold). Deterministic for any thread count; changes `iterations`
+  /// but not the solution. false: every case starts cold, exactly like solve_footprint().
+  bool warm_start = true;
+  /// Called with the number of newly finished cases, from any worker thread (must be
+  /// thread-safe and cheap). The library never prints.
+  std::function<void(std::size_t)> progress;
+};
+
+struct SweepResult {
+  std::vector<SweepRow> rows;  ///< one per case, in plan order
+  std::size_t failed = 0;
+  int threads = 1;  ///< threads actually used
+};
+
+/// Runs every case. A case that fails (no convergence, a model that cannot be built for a
+/// computational reason) is a row with ok = false and its reason; an InputError raised while
+/// building a model (e.g. unreadable hammer data) is rethrown.
+SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options = {});
+
+/// Observable columns, after the condition/parameter columns.
+const std::vector<std::string>& sweep_observable_columns();
+
+/// The CSV text: header, then one line per case; numbers with %.10g, text fields quoted when
+/// they hold a comma or a quote. Byte-identical for identical rows.
+std::string sweep_csv(const SweepPlan& plan, const SweepResult& result);
+
+/// Formats a number as in the sweep CSV (%.10g).
+std::string sweep_number(double v);
+/// Quotes a CSV field if needed (comma, quote; newlines become spaces).
+std::string csv_field(const std::string& text);
+
+}  // namespace modaltyre::contact

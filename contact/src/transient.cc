@@ -1,0 +1,724 @@
+#include "modaltyre/contact/transient.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <sstream>
+
+#include "modaltyre/contact/footprint.h"
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::contact {
+namespace {
+
+using cd = std::complex<double>;
+
+/// Eigenvalues of the residual compliance below this fraction of the largest are dropped: their
+/// displacements are at the rounding level of the sum.
+constexpr double kResidualEigenCutoff = 1e-13;
+/// Absolute tolerance of displacement-like states [m] (1 nm, ~1e-7 of a sinking).
+constexpr double kDisplacementTolerance = 1e-9;
+/// Minimum damping ratio used for the relaxation time of the quasi-static residual orders.
+constexpr double kResidualMinDamping = 0.01;
+
+/// Vertical compliance on the candidates from lag kernels (as in tyre_model.cc, no tread).
+Eigen::MatrixXd vertical_from_kernels(const TyreModel& t, const modal::LagKernels& K) {
+  const int m = t.candidates();
+  Eigen::MatrixXd C(m, m);
+  for (int i = 0; i < m; ++i) {
+    const double ci = std::cos(t.theta[i]), si = std::sin(t.theta[i]);
+    for (int j = 0; j < m; ++j) {
+      const double cj = std::cos(t.theta[j]), sj = std::sin(t.theta[j]);
+      const modal::Transfer2x2 h = K.at(i - j);
+      C(i, j) = (h.r_from_r * cj + h.r_from_t * sj) * ci + (h.t_from_r * cj + h.t_from_t * sj) * si;
+    }
+  }
+  return 0.5 * (C + C.transpose());
+}
+
+}  // namespace
+
+Scenario parse_scenario(const std::string& name) {
+  if (name == "load-hold") return Scenario::load_hold;
+  if (name == "free-vibration") return Scenario::free_vibration;
+  if (name == "rolling") return Scenario::rolling;
+  if (name == "cleat") return Scenario::cleat;
+  throw InputError(InputLocation{"--scenario", 0, ""},
+                   "unknown scenario '" + name +
+                       "': expected one of load-hold, free-vibration, rolling, cleat");
+}
+
+const char* to_string(Scenario s) {
+  switch (s) {
+    case Scenario::load_hold: return "load-hold";
+    case Scenario::free_vibration: return "free-vibration";
+    case Scenario::rolling: return "rolling";
+    case Scenario::cleat: return "cleat";
+  }
+  return "?";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Model
+
+TransientModel build_transient_model(const TyreModel& tyre) {
+  TransientModel M;
+  M.tyre = tyre;
+  M.settings = tyre.config.transient;
+  const auto& S = M.settings;
+  const int m = tyre.candidates();
+  M.m = m;
+  const int K = S.dynamic_max_order;
+
+  // Dynamic coordinates from the terms of order <= K.
+  struct Coord { int order; double omega, zeta; Eigen::VectorXd pr, pt; int partner; double sign; };
+  std::vector<Coord> coords;
+  modal::ModalBasis residual = tyre.basis;
+  residual.terms.clear();
+  for (const auto& t : tyre.basis.terms) {
+    if (t.order > K) {
+      residual.terms.push_back(t);
+      continue;
+    }
+    // Rank-one pieces of the Hermitian 2x2 P (Cholesky with pivoting on the larger diagonal).
+    std::vector<std::pair<cd, cd>> pieces;
+    const double prr = t.P_rr.real(), ptt = t.P_tt.real();
+    if (prr >= ptt && prr > 0) {
+      const double a = std::sqrt(prr);
+      pieces.push_back({cd(a, 0), std::conj(t.P_rt) / a});
+      const double d = ptt - std::norm(t.P_rt) / prr;
+      if (d > 1e-12 * std::max(ptt, 1e-300)) pieces.push_back({cd(0, 0), cd(std::sqrt(d), 0)});
+    } else if (ptt > 0) {
+      const double a = std::sqrt(ptt);
+      pieces.push_back({t.P_rt / a, cd(a, 0)});  // a_r conj(a_t) = P_rt
+      const double d = prr - std::norm(t.P_rt) / ptt;
+      if (d > 1e-12 * std::max(prr, 1e-300)) pieces.push_back({cd(std::sqrt(d), 0), cd(0, 0)});
+    }
+    const double sw = std::sqrt(t.weight);
+    for (const auto& [ar, at] : pieces) {
+      const int members = t.order == 0 ? 1 : 2;
+      const int first = static_cast<int>(coords.size());
+      for (int c = 0; c < members; ++c) {
+        Coord co;
+        co.order = t.order;
+        co.omega = t.omega_rad_s;
+        co.zeta = t.damping_ratio * S.modal_damping_scale;
+        co.pr.resize(m);
+        co.pt.resize(m);
+        for (int i = 0; i < m; ++i) {
+          const cd e = std::polar(1.0, t.order * tyre.theta[i]);
+          const cd vr = ar * e, vt = at * e;
+          co.pr(i) = sw * (c == 0 ? vr.real() : vr.imag());
+          co.pt(i) = sw * (c == 0 ? vt.real() : vt.imag());
+        }
+        co.partner = members == 2 ? first + (1 - c) : -1;
+        co.sign = members == 2 ? (c == 0 ? 1.0 : -1.0) : 0.0;
+        coords.push_back(std::move(co));
+      }
+    }
+  }
+  M.nq = static_cast<int>(coords.size());
+  M.psi.resize(m, M.nq);
+  M.phi_r.resize(m, M.nq);
+  M.phi_t.resize(m, M.nq);
+  for (int j = 0; j < M.nq; ++j) {
+    const Coord& c = coords[j];
+    M.omega.push_back(c.omega);
+    M.zeta.push_back(c.zeta);
+    M.order.push_back(c.order);
+    M.partner.push_back(c.partner);
+    M.pair_sign.push_back(c.sign);
+    M.phi_r.col(j) = c.pr;
+    M.phi_t.col(j) = c.pt;
+    for (int i = 0; i < m; ++i) {
+      M.psi(i, j) = c.pr(i) * std::cos(tyre.theta[i]) + c.pt(i) * std::sin(tyre.theta[i]);
+    }
+  }
+
+  // Residual orders: static vertical compliance, eigen-decomposed.
+  if (!residual.terms.empty()) {
+    M.residual_kernels = modal::build_lag_kernels(residual, tyre.dtheta_rad, m);
+    const Eigen::MatrixXd R = vertical_from_kernels(tyre, M.residual_kernels);
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(R);
+    if (es.info() != Eigen::Success) throw ComputationError("residual compliance: eigen solver failed");
+    const double lmax = es.eigenvalues().cwiseAbs().maxCoeff();
+    std::vector<int> keep;
+    for (int l = 0; l < m; ++l)
+      if (es.eigenvalues()(l) > kResidualEigenCutoff * lmax) keep.push_back(l);
+    M.nr = static_cast<int>(keep.size());
+    M.V.resize(m, M.nr);
+    M.lambda.resize(M.nr);
+    for (int a = 0; a < M.nr; ++a) {
+      M.V.col(a) = es.eigenvectors().col(keep[a]);
+      M.lambda(a) = es.eigenvalues()(keep[a]);
+    }
+    double wmin = 1e300, zsum = 0;
+    int kmin = 1 << 30;
+    for (const auto& t : residual.terms) {
+      wmin = std::min(wmin, t.omega_rad_s);
+      kmin = std::min(kmin, t.order);
+      zsum += t.damping_ratio * S.modal_damping_scale;
+    }
+    const double zmean = zsum / residual.terms.size();
+    M.residual_min_order = kmin;
+    M.residual_min_omega = wmin;
+    M.tau_residual_s = 2 * std::max(zmean, kResidualMinDamping) / wmin;
+  } else {
+    M.V.resize(m, 0);
+    M.lambda.resize(0);
+    M.residual_kernels = modal::LagKernels{};
+  }
+
+  // Tread.
+  const double ratio = S.instantaneous_stiffness_ratio;
+  M.k_relaxed.resize(m);
+  M.k_contact.resize(m);
+  M.k_kv.resize(m);
+  M.c_kv.resize(m);
+  M.x_road.resize(m);
+  M.tread_time_constant_s = tyre.config.tread.tan_delta / (2 * M_PI * S.tread_reference_frequency_hz);
+  for (int i = 0; i < m; ++i) {
+    const double c = std::cos(tyre.theta[i]), s = std::sin(tyre.theta[i]);
+    const double k = 1.0 / (c * c / tyre.k_radial_N_m + s * s / tyre.k_tangential_N_m);
+    M.k_relaxed(i) = k;
+    M.x_road(i) = tyre.config.outer_radius_m * s;
+    if (S.relaxation) {
+      M.k_contact(i) = ratio * k;
+      M.k_kv(i) = k * ratio / (ratio - 1);
+      M.c_kv(i) = M.k_kv(i) * M.tread_time_constant_s;
+    } else {
+      M.k_contact(i) = k;
+      M.k_kv(i) = 0;
+      M.c_kv(i) = 0;
+    }
+  }
+  if (S.relaxation && !(M.tread_time_constant_s > 0)) {
+    throw InputError(InputLocation{tyre.config.source, 0, "transient.relaxation"},
+                     "tread relaxation needs tread.tan_delta > 0 (or set transient.relaxation: "
+                     "false)");
+  }
+  return M;
+}
+
+Eigen::MatrixXd TransientModel::at_rest_compliance() const {
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(m, m);
+  for (int j = 0; j < nq; ++j) C += psi.col(j) * psi.col(j).transpose() / (omega[j] * omega[j]);
+  if (nr > 0) C += V * lambda.asDiagonal() * V.transpose();
+  for (int i = 0; i < m; ++i) C(i, i) += 1.0 / k_relaxed(i);
+  return C;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scenarios
+
+double ScenarioPlan::speed(double t) const {
+  if (speed_m_s == 0) return 0;
+  if (ramp_s <= 0 || t >= ramp_s) return speed_m_s;
+  return speed_m_s * std::max(t, 0.0) / ramp_s;
+}
+double ScenarioPlan::acceleration(double t) const {
+  if (ramp_s <= 0 || t >= ramp_s || t < 0) return 0;
+  return speed_m_s / ramp_s;
+}
+double ScenarioPlan::distance(double t) const {
+  if (ramp_s <= 0) return speed_m_s * t;
+  if (t <= ramp_s) return 0.5 * speed_m_s * t * t / ramp_s;
+  return 0.5 * speed_m_s * ramp_s + speed_m_s * (t - ramp_s);
+}
+
+ScenarioPlan plan_scenario(const TransientModel& model, Scenario s) {
+  const auto& T = model.settings;
+  const std::string src = model.tyre.config.source;
+  ScenarioPlan p;
+  p.scenario = s;
+  switch (s) {
+    case Scenario::load_hold: {
+      const auto& L = T.load_hold;
+      if (L.hold_s < 0) {
+        throw InputError(InputLocation{src, 0, "transient.load_hold.hold_s"},
+                         "hold time must not be negative");
+      }
+      const double t_ramp = L.load_N / L.ramp_rate_N_s;
+      p.duration_s = t_ramp + L.hold_s;
+      p.breakpoints = {t_ramp};
+      const double F = L.load_N, rate = L.ramp_rate_N_s;
+      p.load = [F, rate](double t) { return std::min(F, rate * std::max(t, 0.0)); };
+      break;
+    }
+    case Scenario::free_vibration: {
+      const auto& V = T.free_vibration;
+      if (V.initial_load_N == V.load_N) {
+        throw InputError(InputLocation{src, 0, "transient.free_vibration.initial_load_N"},
+                         "equals load_N: the tyre would not vibrate");
+      }
+      p.duration_s = V.duration_s;
+      p.initial_load_N = V.initial_load_N;
+      const double F = V.load_N;
+      p.load = [F](double) { return F; };
+      break;
+    }
+    case Scenario::rolling: {
+      const auto& R = T.rolling;
+      p.duration_s = R.duration_s;
+      p.initial_load_N = R.load_N;
+      p.speed_m_s = R.speed_m_s;
+      p.ramp_s = R.ramp_s;
+      if (R.ramp_s > 0 && R.ramp_s < R.duration_s) p.breakpoints = {R.ramp_s};
+      const double F = R.load_N;
+      p.load = [F](double) { return F; };
+      break;
+    }
+    case Scenario::cleat: {
+      const auto& C = T.cleat;
+      p.initial_load_N = C.load_N;
+      p.speed_m_s = C.speed_m_s;
+      p.ramp_s = C.ramp_s;
+      if (C.ramp_s > 0) p.breakpoints = {C.ramp_s};
+      p.cleat = true;
+      p.cleat_height_m = C.height_m;
+      p.cleat_length_m = C.length_m;
+      const double xw = model.x_road.maxCoeff();
+      const double settle = 0.1;  // steady rolling before the cleat enters the window
+      const double t_arrive = C.ramp_s + settle;
+      p.cleat_start_m = xw + 0.5 * C.length_m + p.distance(t_arrive);
+      // Until the cleat has left the window at the back, plus the same settling time.
+      const double travel = p.cleat_start_m + xw + 0.5 * C.length_m;
+      const double t_leave = C.ramp_s + (travel - p.distance(C.ramp_s)) / C.speed_m_s;
+      p.duration_s = t_leave + settle;
+      const double F = C.load_N;
+      p.load = [F](double) { return F; };
+      if (C.height_m >= model.tyre.sag.maxCoeff()) {
+        throw InputError(InputLocation{src, 0, "transient.cleat.height_mm"},
+                         "cleat higher than the tyre's sag at the edge of the candidate window; "
+                         "increase contact.window_mm");
+      }
+      break;
+    }
+  }
+  if (!(p.duration_s > 0)) {
+    throw InputError(InputLocation{src, 0, "transient"}, std::string("scenario ") + to_string(s) +
+                                                            " has zero duration");
+  }
+  if (model.settings.output_step_s > p.duration_s) {
+    throw InputError(InputLocation{src, 0, "transient.output_step_ms"},
+                     "output step longer than the scenario");
+  }
+  return p;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The ODE
+
+TransientSystem::TransientSystem(const TransientModel& model, const ScenarioPlan& plan)
+    : model_(model), plan_(plan) {}
+
+double TransientSystem::road(double t, int i, double* slope) const {
+  if (slope) *slope = 0;
+  if (!plan_.cleat) return 0;
+  const double L = plan_.cleat_length_m, H = plan_.cleat_height_m;
+  const double xi = model_.x_road(i) - (plan_.cleat_start_m - plan_.distance(t));
+  const double a = 0.25 * L;  // cosine edges, a quarter of the length each
+  const double ax = std::abs(xi);
+  if (ax >= 0.5 * L) return 0;
+  if (ax <= 0.5 * L - a) return H;
+  const double u = M_PI * (ax - (0.5 * L - a)) / a;
+  if (slope) *slope = -0.5 * H * std::sin(u) * M_PI / a * (xi > 0 ? 1.0 : -1.0);
+  return 0.5 * H * (1 + std::cos(u));
+}
+
+Eigen::VectorXd TransientSystem::forces(double t, const double* y) const {
+  const auto& M = model_;
+  const Eigen::Map<const Eigen::VectorXd> q(y, M.nq), r(y + 2 * M.nq, M.nr);
+  const double z = y[M.z_index()];
+  Eigen::VectorXd u = M.psi * q;
+  if (M.nr > 0) u.noalias() += M.V * r;
+  Eigen::VectorXd f(M.m);
+  const bool relax = M.settings.relaxation;
+  for (int i = 0; i < M.m; ++i) {
+    double g = z + road(t, i) - M.tyre.sag(i) - u(i);
+    if (relax) g -= y[M.e_index() + i];
+    f(i) = g > 0 ? M.k_contact(i) * g : 0.0;
+  }
+  return f;
+}
+
+void TransientSystem::roots(double t, const double* y, double* g) const {
+  const auto& M = model_;
+  const Eigen::Map<const Eigen::VectorXd> q(y, M.nq), r(y + 2 * M.nq, M.nr);
+  const double z = y[M.z_index()];
+  Eigen::VectorXd u = M.psi * q;
+  if (M.nr > 0) u.noalias() += M.V * r;
+  for (int i = 0; i < M.m; ++i) {
+    g[i] = z + road(t, i) - M.tyre.sag(i) - u(i);
+    if (M.settings.relaxation) g[i] -= y[M.e_index() + i];
+  }
+}
+
+void TransientSystem::rhs(double t, const double* y, double* ydot) const {
+  const auto& M = model_;
+  const int nq = M.nq, nr = M.nr;
+  const Eigen::VectorXd f = forces(t, y);
+  const Eigen::VectorXd G = M.psi.transpose() * f;
+  const double Omega = plan_.speed(t) / M.tyre.config.outer_radius_m;
+  const double dOmega = plan_.acceleration(t) / M.tyre.config.outer_radius_m;
+  for (int j = 0; j < nq; ++j) {
+    const double qj = y[j], vj = y[nq + j], w = M.omega[j], ze = M.zeta[j];
+    ydot[j] = vj;
+    double a = G(j) - 2 * ze * w * vj - w * w * qj;
+    const int p = M.partner[j];
+    if (p >= 0 && Omega != 0) {
+      const double b = M.order[j] * Omega, al = M.order[j] * dOmega, s = M.pair_sign[j];
+      a += s * 2 * b * y[nq + p] + b * b * qj + s * (2 * ze * w * b + al) * y[p];
+    }
+    ydot[nq + j] = a;
+  }
+  if (nr > 0) {
+    const Eigen::VectorXd Vf = M.V.transpose() * f;
+    for (int l = 0; l < nr; ++l)
+      ydot[2 * nq + l] = (M.lambda(l) * Vf(l) - y[2 * nq + l]) / M.tau_residual_s;
+  }
+  const int Z = M.z_index();
+  ydot[Z] = y[Z + 1];
+  ydot[Z + 1] = (plan_.load(t) - f.sum()) / M.settings.hub_mass_kg;
+  if (M.settings.relaxation) {
+    const int E = M.e_index();
+    const double adv = Omega / M.tyre.dtheta_rad;
+    for (int i = 0; i < M.m; ++i) {
+      const double e = y[E + i], e_front = i + 1 < M.m ? y[E + i + 1] : 0.0;
+      ydot[E + i] = adv * (e_front - e) + (f(i) - M.k_kv(i) * e) / M.c_kv(i);
+    }
+  }
+}
+
+int64_t TransientSystem::nnz() const {
+  const auto& M = model_;
+  const int64_t N = M.nq + M.nr + 1;  // coupled columns q, r, z
+  const int64_t E = M.settings.relaxation ? M.m : 0;
+  return N * N + 2 * N * E + 3 * E + 4 * M.nq + 2 + N;
+}
+
+void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J) const {
+  const auto& M = model_;
+  const int nq = M.nq, nr = M.nr, m = M.m;
+  const bool relax = M.settings.relaxation;
+  const int Z = M.z_index(), E = M.e_index();
+  const int n = size();
+  // d f_i / d g_i on the units in contact.
+  const Eigen::VectorXd f = forces(t, y);
+  Eigen::VectorXd kd(m);
+  for (int i = 0; i < m; ++i) kd(i) = f(i) > 0 ? M.k_contact(i) : 0.0;
+  // B = d g / d (q, r, z) = [-psi, -V, 1]; rows of W: d(v', r', w')/d f = [psi^T; lambda/tau V^T;
+  // -1/m 1^T]. Dense block D = W diag(kd) B  ((nq + nr + 1) squared).
+  const int N = nq + nr + 1;
+  std::vector<int> active;
+  for (int i = 0; i < m; ++i)
+    if (kd(i) > 0) active.push_back(i);
+  const int na = static_cast<int>(active.size());
+  Eigen::MatrixXd B(na, N), Wt(na, N);
+  const double mh = M.settings.hub_mass_kg;
+  for (int a = 0; a < na; ++a) {
+    const int i = active[a];
+    for (int j = 0; j < nq; ++j) B(a, j) = -M.psi(i, j), Wt(a, j) = M.psi(i, j);
+    for (int l = 0; l < nr; ++l) {
+      B(a, nq + l) = -M.V(i, l);
+      Wt(a, nq + l) = M.lambda(l) / M.tau_residual_s * M.V(i, l);
+    }
+    B(a, N - 1) = 1.0;
+    Wt(a, N - 1) = -1.0 / mh;
+  }
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(N, N);
+  if (na > 0) D.noalias() = Wt.transpose() * (kd(active).asDiagonal() * B);
+  // Row of the coupled block k in state numbering.
+  auto row_of = [&](int k) { return k < nq ? nq + k : (k < N - 1 ? 2 * nq + (k - nq) : Z + 1); };
+  const double Omega = plan_.speed(t) / M.tyre.config.outer_radius_m;
+  const double dOmega = plan_.acceleration(t) / M.tyre.config.outer_radius_m;
+  const double adv = Omega / M.tyre.dtheta_rad;
+
+  J.clear(n);
+  auto push = [&](int64_t r, double v) {
+    J.row.push_back(r);
+    J.value.push_back(v);
+  };
+  // Coupled column (q_j, r_l or z): k is its index in the coupled block.
+  auto coupled_column = [&](int k) {
+    for (int kk = 0; kk < N; ++kk) {
+      const int r = row_of(kk);
+      double v = D(kk, k);
+      if (k < nq) {  // modal terms of column q_j
+        const int j = k;
+        if (kk == j) {
+          v -= M.omega[j] * M.omega[j];
+          if (M.partner[j] >= 0) v += std::pow(M.order[j] * Omega, 2);
+        } else if (kk < nq && M.partner[kk] == j && Omega != 0) {
+          const double b = M.order[kk] * Omega, al = M.order[kk] * dOmega;
+          v += M.pair_sign[kk] * (2 * M.zeta[kk] * M.omega[kk] * b + al);
+        }
+      } else if (k < N - 1 && kk == k) {
+        v -= 1.0 / M.tau_residual_s;
+      }
+      // The rows are ordered v (nq.. 2nq), r (2nq..), w (Z+1) which is increasing in kk.
+      push(r, v);
+    }
+    if (relax) {
+      for (int i = 0; i < m; ++i) {
+        double bi;
+        if (k < nq) bi = -M.psi(i, k);
+        else if (k < N - 1) bi = -M.V(i, k - nq);
+        else bi = 1.0;
+        push(E + i, kd(i) * bi / M.c_kv(i));
+      }
+    }
+  };
+  int64_t col = 0;
+  // q columns.
+  for (int j = 0; j < nq; ++j, ++col) {
+    J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+    coupled_column(j);
+  }
+  // v columns: q_j' = v_j; v_j' has -2 zeta omega; partner rows have +-2b.
+  for (int j = 0; j < nq; ++j, ++col) {
+    J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+    push(j, 1.0);
+    const int p = M.partner[j];
+    // Row nq + p (partner's acceleration) and nq + j (own), in increasing order.
+    std::vector<std::pair<int, double>> rows = {{nq + j, -2 * M.zeta[j] * M.omega[j]}};
+    if (p >= 0) rows.push_back({nq + p, M.pair_sign[p] * 2 * M.order[p] * Omega});
+    std::sort(rows.begin(), rows.end());
+    for (auto& [r, v] : rows) push(r, v);
+  }
+  // r columns.
+  for (int l = 0; l < nr; ++l, ++col) {
+    J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+    coupled_column(nq + l);
+  }
+  // z column.
+  J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+  coupled_column(N - 1);
+  ++col;
+  // w column: z' = w.
+  J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+  push(Z, 1.0);
+  ++col;
+  // e columns.
+  if (relax) {
+    for (int i = 0; i < m; ++i, ++col) {
+      J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+      const double dfde = -kd(i);
+      for (int j = 0; j < nq; ++j) push(nq + j, M.psi(i, j) * dfde);
+      for (int l = 0; l < nr; ++l)
+        push(2 * nq + l, M.lambda(l) / M.tau_residual_s * M.V(i, l) * dfde);
+      push(Z + 1, -dfde / mh);
+      if (i > 0) push(E + i - 1, adv);  // e_{i-1}' depends on e_i (upwind from the front)
+      push(E + i, -adv + (dfde - M.k_kv(i)) / M.c_kv(i));
+    }
+  }
+  J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+  MODALTYRE_CHECK(col == n, "Jacobian column count");
+}
+
+std::vector<double> TransientSystem::absolute_tolerances() const {
+  const auto& M = model_;
+  std::vector<double> a(size(), kDisplacementTolerance);
+  for (int j = 0; j < M.nq; ++j) {
+    const double s = std::max(M.psi.col(j).cwiseAbs().maxCoeff(), 1e-300);
+    a[j] = kDisplacementTolerance / s;
+    a[M.nq + j] = a[j] * M.omega[j];
+  }
+  // Hub velocity: displacement tolerance over a 10 ms time scale.
+  a[M.z_index() + 1] = kDisplacementTolerance * 100;
+  return a;
+}
+
+std::vector<double> TransientSystem::static_state(double load_N) const {
+  const auto& M = model_;
+  std::vector<double> y(size(), 0.0);
+  if (load_N <= 0) return y;
+  const FootprintResult fr = solve_footprint(M.tyre, LoadCase{load_N, 0});
+  if (!fr.converged) throw ComputationError("static initial state: " + fr.message);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(M.m);
+  std::size_t k = 0;
+  for (int i = 0; i < M.m; ++i)
+    if (fr.active[i]) f(i) = fr.units.at(k++).fz_N;
+  const Eigen::VectorXd G = M.psi.transpose() * f;
+  for (int j = 0; j < M.nq; ++j) y[j] = G(j) / (M.omega[j] * M.omega[j]);
+  if (M.nr > 0) {
+    const Eigen::VectorXd Vf = M.V.transpose() * f;
+    for (int l = 0; l < M.nr; ++l) y[2 * M.nq + l] = M.lambda(l) * Vf(l);
+  }
+  y[M.z_index()] = fr.sinking_m;
+  if (M.settings.relaxation)
+    for (int i = 0; i < M.m; ++i) y[M.e_index() + i] = f(i) / M.k_kv(i);
+  return y;
+}
+
+double TransientSystem::energy(double t, const double* y) const {
+  const auto& M = model_;
+  double e = 0;
+  for (int j = 0; j < M.nq; ++j)
+    e += 0.5 * (y[M.nq + j] * y[M.nq + j] + M.omega[j] * M.omega[j] * y[j] * y[j]);
+  const double w = y[M.z_index() + 1];
+  e += 0.5 * M.settings.hub_mass_kg * w * w;
+  const Eigen::VectorXd f = forces(t, y);
+  for (int i = 0; i < M.m; ++i) e += 0.5 * f(i) * f(i) / M.k_contact(i);
+  return e;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Driver
+
+namespace {
+
+TransientSample observe(const TransientModel& M, const TransientSystem& sys,
+                        const ScenarioPlan& plan, double t, const double* y) {
+  TransientSample s;
+  s.t_s = t;
+  const Eigen::VectorXd f = sys.forces(t, y);
+  const double z = y[M.z_index()];
+  const double R0 = M.tyre.config.outer_radius_m;
+  s.applied_load_N = plan.load(t);
+  s.hub_displacement_m = z;
+  s.speed_m_s = plan.speed(t);
+  s.load_N = f.sum();
+  double sink = -1e300, moment = 0, slope_force = 0;
+  int first = -1, last = -1;
+  for (int i = 0; i < M.m; ++i) {
+    double slope = 0;
+    const double h = sys.road(t, i, &slope);
+    sink = std::max(sink, z + h - M.tyre.sag(i));
+    if (f(i) > 0) {
+      if (first < 0) first = i;
+      last = i;
+      ++s.contact_units;
+      moment += f(i) * M.x_road(i);
+      slope_force += f(i) * slope;
+    }
+  }
+  s.sinking_m = sink;
+  s.pressure_centre_m = s.load_N > 0 ? moment / s.load_N : 0;
+  s.longitudinal_force_N = -moment / (R0 - z) - slope_force;
+  if (first >= 0) {
+    // Deformed positions of the end units (as footprint.cc): dynamic modes from the state,
+    // residual orders and tread quasi-statically from the current forces.
+    const Eigen::Map<const Eigen::VectorXd> q(y, M.nq);
+    auto deformed_x = [&](int i) {
+      double ur = M.phi_r.row(i).dot(q), ut = M.phi_t.row(i).dot(q);
+      const double th = M.tyre.theta[i];
+      if (M.nr > 0) {
+        for (int j = first; j <= last; ++j) {
+          if (f(j) <= 0) continue;
+          const modal::Transfer2x2 h = M.residual_kernels.at(i - j);
+          const double fr = f(j) * std::cos(M.tyre.theta[j]), ft = f(j) * std::sin(M.tyre.theta[j]);
+          ur += h.r_from_r * fr + h.r_from_t * ft;
+          ut += h.t_from_r * fr + h.t_from_t * ft;
+        }
+      }
+      ur += f(i) * std::cos(th) / M.tyre.k_radial_N_m;
+      ut += f(i) * std::sin(th) / M.tyre.k_tangential_N_m;
+      return (R0 - ur) * std::sin(th) + ut * std::cos(th);
+    };
+    const double dx_first = M.tyre.unit_length_m * std::cos(M.tyre.theta[first]);
+    const double dx_last = M.tyre.unit_length_m * std::cos(M.tyre.theta[last]);
+    s.contact_length_m = deformed_x(last) - deformed_x(first) + 0.5 * (dx_first + dx_last);
+  }
+  return s;
+}
+
+}  // namespace
+
+TransientResult run_transient(const TransientModel& M, Scenario scenario,
+                              TransientRunOptions* options) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const ScenarioPlan plan = plan_scenario(M, scenario);
+  TransientSystem sys(M, plan);
+  TransientResult res;
+  res.scenario = scenario;
+
+  solvers::OdeProblem prob;
+  prob.size = sys.size();
+  prob.rhs = [&sys](double t, const double* y, double* yd) {
+    sys.rhs(t, y, yd);
+    return 0;
+  };
+  prob.jacobian = [&sys](double t, const double* y, const double*, solvers::CscMatrix& J) {
+    sys.jacobian(t, y, J);
+    return 0;
+  };
+  prob.roots = M.m;
+  prob.root_functions = [&sys](double t, const double* y, double* g) {
+    sys.roots(t, y, g);
+    return 0;
+  };
+  solvers::OdeOptions opt;
+  opt.relative_tolerance = M.settings.relative_tolerance;
+  opt.absolute_tolerance = sys.absolute_tolerances();
+  opt.max_order = 5;
+  opt.stability_limit_detection = true;
+  opt.max_step = M.settings.output_step_s;
+
+  std::vector<double> y = sys.static_state(plan.initial_load_N);
+  solvers::CvodeKlu ode(prob, opt, 0.0, y, sys.nnz());
+
+  const double T = plan.duration_s, dt = M.settings.output_step_s;
+  res.samples.push_back(observe(M, sys, plan, 0.0, y.data()));
+  std::vector<double> breaks = plan.breakpoints;
+  std::sort(breaks.begin(), breaks.end());
+  std::size_t next_break = 0;
+  long out_index = 1;
+  double t_out = std::min(dt, T);
+  bool failed = false;
+  while (true) {
+    while (next_break < breaks.size() && breaks[next_break] <= ode.time()) ++next_break;
+    const bool use_break = next_break < breaks.size() && breaks[next_break] < t_out;
+    const double target = use_break ? breaks[next_break] : t_out;
+    const solvers::OdeStatus st = ode.advance(target);
+    if (!st.ok()) {
+      std::ostringstream msg;
+      msg << "integrator failed at t = " << st.t << " s: " << st.message;
+      res.message = msg.str();
+      failed = true;
+      break;
+    }
+    if (st.outcome == solvers::OdeOutcome::root) {
+      ++res.contact_events;
+      ode.reinit(st.t, ode.state());
+      continue;
+    }
+    if (use_break) {
+      ode.reinit(target, ode.state());
+      ++next_break;
+      continue;
+    }
+    res.samples.push_back(observe(M, sys, plan, t_out, ode.state().data()));
+    if (options && options->progress && !options->progress(t_out, T)) {
+      res.message = "cancelled";
+      failed = true;
+      break;
+    }
+    if (t_out >= T) break;
+    ++out_index;
+    t_out = std::min(out_index * dt, T);
+    if (T - t_out < 1e-9 * T) t_out = T;
+  }
+  res.simulated_s = ode.time();
+  res.stats = ode.stats();
+  if (options && options->keep_final_state) options->final_state = ode.state();
+  res.status = failed ? TransientStatus::failed : TransientStatus::completed;
+  if (!failed) {
+    std::ostringstream msg;
+    msg << "completed: " << res.stats.steps << " steps, " << res.contact_events
+        << " contact switches";
+    res.message = msg.str();
+  }
+  // Rolling resistance: mean of -F_x over the last 10 % of the run.
+  const double t_from = 0.9 * res.simulated_s;
+  double sum = 0;
+  int cnt = 0;
+  for (const auto& s : res.samples)
+    if (s.t_s >= t_from) sum += -s.longitudinal_force_N, ++cnt;
+  res.rolling_resistance_N = cnt ? sum / cnt : 0;
+  res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return res;
+}
+
+}  // namespace modaltyre::contact

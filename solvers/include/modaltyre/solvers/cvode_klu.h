@@ -1,0 +1,108 @@
+#pragma once
+// Generic adapter around SUNDIALS CVODE (BDF, Newton) with the KLU sparse direct solver.
+//
+// The problem is y' = f(t, y) with an analytic sparse Jacobian J = df/dy given in compressed
+// sparse column form (64-bit indices, the SUNDIALS 6 sunindextype), and optional root functions
+// g(t, y) whose sign changes stop the integration (events, e.g. contact switches).
+//
+// Ownership and threads: every integrator owns its own SUNContext, vectors, matrix, linear solver
+// and CVODE memory; integrators may run concurrently on different threads, one each.
+//
+// Errors: nothing is printed. Every SUNDIALS return flag is checked; a failure inside advance()
+// becomes a Status with the message CVODE gave and the time it reached. Setup failures (out of
+// memory, inconsistent sizes) throw ComputationError. A callback may return a positive value to
+// request a smaller step (recoverable) or a negative one to stop the run.
+//
+// Sparsity pattern: KLU analyses the pattern once (ordering, symbolic factorisation) and then only
+// refactors numerically. If the Jacobian callback produces a different pattern, the adapter asks
+// KLU for a new analysis (SUNLinSol_KLUReInit, partial), so the pattern may change, but keeping it
+// fixed (explicit zeros) is cheaper.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace modaltyre::solvers {
+
+/// Compressed sparse column matrix (n x n); column j holds rows row[col_ptr[j] .. col_ptr[j+1]).
+struct CscMatrix {
+  int64_t n = 0;
+  std::vector<int64_t> col_ptr;  ///< n + 1 entries
+  std::vector<int64_t> row;
+  std::vector<double> value;
+  void clear(int64_t size) {
+    n = size;
+    col_ptr.assign(static_cast<std::size_t>(size) + 1, 0);
+    row.clear();
+    value.clear();
+  }
+};
+
+struct OdeProblem {
+  int64_t size = 0;
+  /// ydot = f(t, y); returns 0 on success, > 0 recoverable failure, < 0 fatal.
+  std::function<int(double t, const double* y, double* ydot)> rhs;
+  /// Fills J = df/dy at (t, y) (fy = f(t, y) given). Same return convention.
+  std::function<int(double t, const double* y, const double* fy, CscMatrix& jac)> jacobian;
+  int roots = 0;
+  /// g(t, y) for `roots` root functions; may be empty when roots == 0.
+  std::function<int(double t, const double* y, double* g)> root_functions;
+};
+
+struct OdeOptions {
+  double relative_tolerance = 1e-6;
+  std::vector<double> absolute_tolerance;  ///< per component (size n), or one value for all
+  long max_steps_per_call = 100000;
+  int max_order = 5;          ///< BDF order limit (2 keeps BDF A-stable for light damping)
+  double max_step = 0;        ///< 0 = unlimited
+  double initial_step = 0;    ///< 0 = CVODE's estimate
+  bool stability_limit_detection = false;
+};
+
+struct OdeStats {
+  long steps = 0, rhs_evals = 0, jac_evals = 0, lin_setups = 0, nonlin_iters = 0,
+       nonlin_fails = 0, error_test_fails = 0, root_returns = 0, reinits = 0,
+       pattern_changes = 0;
+};
+
+enum class OdeOutcome { reached, root, failed };
+
+struct OdeStatus {
+  OdeOutcome outcome = OdeOutcome::reached;
+  double t = 0;              ///< time reached
+  std::vector<int> roots;    ///< per root function: 0, +1 (rising) or -1 (falling) at a root
+  std::string message;       ///< CVODE's message on failure
+  bool ok() const { return outcome != OdeOutcome::failed; }
+};
+
+class CvodeKlu {
+ public:
+  /// Sets the problem up at (t0, y0); `nnz_hint` sizes the sparse matrix (it grows if needed).
+  CvodeKlu(OdeProblem problem, const OdeOptions& options, double t0, const std::vector<double>& y0,
+           int64_t nnz_hint);
+  ~CvodeKlu();
+  CvodeKlu(const CvodeKlu&) = delete;
+  CvodeKlu& operator=(const CvodeKlu&) = delete;
+
+  /// Integrates towards t_out (never past it: it is also the stop time). Returns when t_out is
+  /// reached, a root is found (status.t < t_out) or the integrator fails.
+  OdeStatus advance(double t_out);
+  /// Restarts the integrator at (t, y): BDF history and step size are discarded (order 1).
+  /// Used after events where the right-hand side changes non-smoothly.
+  void reinit(double t, const std::vector<double>& y);
+
+  const std::vector<double>& state() const { return y_; }
+  double time() const { return t_; }
+  OdeStats stats() const;
+
+  // C trampolines' access (public for the callbacks in the .cc; not part of the API).
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+  std::vector<double> y_;
+  double t_ = 0;
+};
+
+}  // namespace modaltyre::solvers

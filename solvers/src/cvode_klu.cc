@@ -1,0 +1,270 @@
+#include "modaltyre/solvers/cvode_klu.h"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "modaltyre/core/errors.h"
+
+static_assert(sizeof(sunindextype) == sizeof(int64_t), "SUNDIALS must use 64-bit indices");
+static_assert(sizeof(realtype) == sizeof(double), "SUNDIALS must use double precision");
+
+namespace modaltyre::solvers {
+
+struct CvodeKlu::Impl {
+  OdeProblem problem;
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr;
+  N_Vector abstol = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  void* mem = nullptr;
+  CscMatrix jac;
+  std::vector<int64_t> last_col_ptr, last_row;  // pattern KLU was analysed for
+  std::string last_error;
+  long root_returns = 0, reinits = 0, pattern_changes = 0;
+  std::string callback_error;  // exception text from a callback
+  OdeStats before_reinit;      // CVODE's counters restart at every CVodeReInit
+
+  ~Impl() {
+    if (mem) CVodeFree(&mem);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (abstol) N_VDestroy(abstol);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+namespace {
+
+void check(int flag, const char* what, const CvodeKlu::Impl& impl) {
+  if (flag < 0) {
+    throw ComputationError(std::string("SUNDIALS ") + what + " failed (flag " +
+                           std::to_string(flag) + ")" +
+                           (impl.last_error.empty() ? "" : ": " + impl.last_error));
+  }
+}
+
+extern "C" int rhs_trampoline(realtype t, N_Vector y, N_Vector ydot, void* user) {
+  auto* impl = static_cast<CvodeKlu::Impl*>(user);
+  try {
+    return impl->problem.rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+  } catch (const std::exception& e) {
+    impl->callback_error = e.what();
+    return -1;
+  }
+}
+
+extern "C" int root_trampoline(realtype t, N_Vector y, realtype* g, void* user) {
+  auto* impl = static_cast<CvodeKlu::Impl*>(user);
+  try {
+    return impl->problem.root_functions(t, N_VGetArrayPointer(y), g);
+  } catch (const std::exception& e) {
+    impl->callback_error = e.what();
+    return -1;
+  }
+}
+
+/// Copies the user's CSC matrix into the SUNDIALS matrix, inserting explicit zero diagonal
+/// entries where missing (CVODE forms I - gamma J in place; a missing diagonal would make it
+/// reallocate the matrix at every setup).
+int copy_with_diagonal(const CscMatrix& src, SUNMatrix A, CvodeKlu::Impl& impl) {
+  const int64_t n = src.n;
+  int64_t need = static_cast<int64_t>(src.row.size()) + n;
+  if (SUNSparseMatrix_NNZ(A) < need) {
+    if (SUNSparseMatrix_Reallocate(A, need) != SUNMAT_SUCCESS) return -1;
+  }
+  sunindextype* cp = SUNSparseMatrix_IndexPointers(A);
+  sunindextype* ri = SUNSparseMatrix_IndexValues(A);
+  realtype* v = SUNSparseMatrix_Data(A);
+  int64_t k = 0;
+  for (int64_t j = 0; j < n; ++j) {
+    cp[j] = k;
+    bool diag = false;
+    for (int64_t p = src.col_ptr[j]; p < src.col_ptr[j + 1]; ++p) {
+      const int64_t r = src.row[p];
+      if (!diag && r > j) {
+        ri[k] = j, v[k] = 0.0, ++k;
+        diag = true;
+      }
+      if (r == j) diag = true;
+      ri[k] = r, v[k] = src.value[p], ++k;
+    }
+    if (!diag) ri[k] = j, v[k] = 0.0, ++k;
+  }
+  cp[n] = k;
+  // Pattern check against what KLU analysed.
+  const bool same = static_cast<int64_t>(impl.last_col_ptr.size()) == n + 1 &&
+                    std::equal(cp, cp + n + 1, impl.last_col_ptr.begin()) &&
+                    static_cast<int64_t>(impl.last_row.size()) == k &&
+                    std::equal(ri, ri + k, impl.last_row.begin());
+  if (!same) {
+    const bool first = impl.last_col_ptr.empty();
+    impl.last_col_ptr.assign(cp, cp + n + 1);
+    impl.last_row.assign(ri, ri + k);
+    if (!first) {
+      ++impl.pattern_changes;
+      if (SUNLinSol_KLUReInit(impl.LS, A, SUNSparseMatrix_NNZ(A), SUNKLU_REINIT_PARTIAL) !=
+          SUNLS_SUCCESS)
+        return -1;
+    }
+  }
+  return 0;
+}
+
+extern "C" int jac_trampoline(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user,
+                              N_Vector, N_Vector, N_Vector) {
+  auto* impl = static_cast<CvodeKlu::Impl*>(user);
+  try {
+    impl->jac.clear(impl->problem.size);
+    const int flag =
+        impl->problem.jacobian(t, N_VGetArrayPointer(y), N_VGetArrayPointer(fy), impl->jac);
+    if (flag != 0) return flag;
+    const CscMatrix& m = impl->jac;
+    if (m.n != impl->problem.size || static_cast<int64_t>(m.col_ptr.size()) != m.n + 1 ||
+        m.row.size() != m.value.size() ||
+        static_cast<std::size_t>(m.col_ptr.back()) != m.row.size()) {
+      impl->callback_error = "Jacobian callback returned an inconsistent CSC matrix";
+      return -1;
+    }
+    return copy_with_diagonal(m, J, *impl);
+  } catch (const std::exception& e) {
+    impl->callback_error = e.what();
+    return -1;
+  }
+}
+
+extern "C" void error_trampoline(int code, const char* module, const char* function, char* msg,
+                                 void* user) {
+  auto* impl = static_cast<CvodeKlu::Impl*>(user);
+  if (code >= 0) return;  // warnings are not failures; the library never prints
+  impl->last_error = std::string(module ? module : "") + "::" + (function ? function : "") +
+                     ": " + (msg ? msg : "");
+}
+
+}  // namespace
+
+CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
+                   const std::vector<double>& y0, int64_t nnz_hint)
+    : impl_(std::make_unique<Impl>()), y_(y0), t_(t0) {
+  Impl& I = *impl_;
+  I.problem = std::move(problem);
+  const int64_t n = I.problem.size;
+  MODALTYRE_CHECK(n > 0 && static_cast<int64_t>(y0.size()) == n, "ODE size and y0 disagree");
+  MODALTYRE_CHECK(I.problem.rhs && I.problem.jacobian, "ODE problem needs rhs and Jacobian");
+  MODALTYRE_CHECK(I.problem.roots == 0 || I.problem.root_functions, "root functions missing");
+  if (SUNContext_Create(nullptr, &I.ctx) != 0) throw ComputationError("SUNContext_Create failed");
+  I.y = N_VNew_Serial(n, I.ctx);
+  if (!I.y) throw ComputationError("N_VNew_Serial failed (out of memory?)");
+  std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(I.y));
+  I.mem = CVodeCreate(CV_BDF, I.ctx);
+  if (!I.mem) throw ComputationError("CVodeCreate failed");
+  check(CVodeSetErrHandlerFn(I.mem, error_trampoline, &I), "CVodeSetErrHandlerFn", I);
+  check(CVodeInit(I.mem, rhs_trampoline, t0, I.y), "CVodeInit", I);
+  check(CVodeSetUserData(I.mem, &I), "CVodeSetUserData", I);
+  if (opt.absolute_tolerance.size() == static_cast<std::size_t>(n)) {
+    I.abstol = N_VNew_Serial(n, I.ctx);
+    if (!I.abstol) throw ComputationError("N_VNew_Serial failed");
+    std::copy(opt.absolute_tolerance.begin(), opt.absolute_tolerance.end(),
+              N_VGetArrayPointer(I.abstol));
+    check(CVodeSVtolerances(I.mem, opt.relative_tolerance, I.abstol), "CVodeSVtolerances", I);
+  } else {
+    MODALTYRE_CHECK(opt.absolute_tolerance.size() <= 1, "absolute tolerance size");
+    const double a = opt.absolute_tolerance.empty() ? 1e-10 : opt.absolute_tolerance[0];
+    check(CVodeSStolerances(I.mem, opt.relative_tolerance, a), "CVodeSStolerances", I);
+  }
+  I.A = SUNSparseMatrix(n, n, std::max<int64_t>(nnz_hint, n), CSC_MAT, I.ctx);
+  if (!I.A) throw ComputationError("SUNSparseMatrix failed (out of memory?)");
+  I.LS = SUNLinSol_KLU(I.y, I.A, I.ctx);
+  if (!I.LS) throw ComputationError("SUNLinSol_KLU failed");
+  check(CVodeSetLinearSolver(I.mem, I.LS, I.A), "CVodeSetLinearSolver", I);
+  check(CVodeSetJacFn(I.mem, jac_trampoline), "CVodeSetJacFn", I);
+  check(CVodeSetMaxNumSteps(I.mem, opt.max_steps_per_call), "CVodeSetMaxNumSteps", I);
+  check(CVodeSetMaxOrd(I.mem, opt.max_order), "CVodeSetMaxOrd", I);
+  if (opt.max_step > 0) check(CVodeSetMaxStep(I.mem, opt.max_step), "CVodeSetMaxStep", I);
+  if (opt.initial_step > 0) check(CVodeSetInitStep(I.mem, opt.initial_step), "CVodeSetInitStep", I);
+  if (opt.stability_limit_detection) check(CVodeSetStabLimDet(I.mem, SUNTRUE), "CVodeSetStabLimDet", I);
+  if (I.problem.roots > 0) {
+    check(CVodeRootInit(I.mem, I.problem.roots, root_trampoline), "CVodeRootInit", I);
+    check(CVodeSetNoInactiveRootWarn(I.mem), "CVodeSetNoInactiveRootWarn", I);
+  }
+}
+
+CvodeKlu::~CvodeKlu() = default;
+
+OdeStatus CvodeKlu::advance(double t_out) {
+  Impl& I = *impl_;
+  OdeStatus st;
+  I.last_error.clear();
+  I.callback_error.clear();
+  if (t_out <= t_) {
+    st.t = t_;
+    return st;
+  }
+  int flag = CVodeSetStopTime(I.mem, t_out);
+  if (flag < 0) {
+    st.outcome = OdeOutcome::failed;
+    st.t = t_;
+    st.message = "CVodeSetStopTime failed";
+    return st;
+  }
+  realtype t_reached = t_;
+  flag = CVode(I.mem, t_out, I.y, &t_reached, CV_NORMAL);
+  const double* yp = N_VGetArrayPointer(I.y);
+  std::copy(yp, yp + I.problem.size, y_.begin());
+  t_ = t_reached;
+  st.t = t_reached;
+  if (flag == CV_ROOT_RETURN) {
+    st.outcome = OdeOutcome::root;
+    st.roots.assign(static_cast<std::size_t>(I.problem.roots), 0);
+    if (CVodeGetRootInfo(I.mem, st.roots.data()) < 0) {
+      st.outcome = OdeOutcome::failed;
+      st.message = "CVodeGetRootInfo failed";
+    }
+    ++I.root_returns;
+  } else if (flag < 0) {
+    st.outcome = OdeOutcome::failed;
+    st.message = "CVODE flag " + std::to_string(flag) + " (" + CVodeGetReturnFlagName(flag) + ")";
+    if (!I.last_error.empty()) st.message += ": " + I.last_error;
+    if (!I.callback_error.empty()) st.message += ": " + I.callback_error;
+  }
+  return st;
+}
+
+void CvodeKlu::reinit(double t, const std::vector<double>& y) {
+  Impl& I = *impl_;
+  MODALTYRE_CHECK(static_cast<int64_t>(y.size()) == I.problem.size, "reinit size");
+  std::copy(y.begin(), y.end(), N_VGetArrayPointer(I.y));
+  const OdeStats now = stats();
+  I.before_reinit = now;
+  check(CVodeReInit(I.mem, t, I.y), "CVodeReInit", I);
+  y_ = y;
+  t_ = t;
+  ++I.reinits;
+}
+
+OdeStats CvodeKlu::stats() const {
+  const Impl& I = *impl_;
+  OdeStats s = I.before_reinit;
+  long v = 0;
+  if (CVodeGetNumSteps(I.mem, &v) == CV_SUCCESS) s.steps += v;
+  if (CVodeGetNumRhsEvals(I.mem, &v) == CV_SUCCESS) s.rhs_evals += v;
+  if (CVodeGetNumJacEvals(I.mem, &v) == CV_SUCCESS) s.jac_evals += v;
+  if (CVodeGetNumLinSolvSetups(I.mem, &v) == CV_SUCCESS) s.lin_setups += v;
+  if (CVodeGetNumNonlinSolvIters(I.mem, &v) == CV_SUCCESS) s.nonlin_iters += v;
+  if (CVodeGetNumNonlinSolvConvFails(I.mem, &v) == CV_SUCCESS) s.nonlin_fails += v;
+  if (CVodeGetNumErrTestFails(I.mem, &v) == CV_SUCCESS) s.error_test_fails += v;
+  s.root_returns = I.root_returns;
+  s.reinits = I.reinits;
+  s.pattern_changes = I.pattern_changes;
+  return s;
+}
+
+}  // namespace modaltyre::solvers
