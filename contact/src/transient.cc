@@ -17,8 +17,8 @@ using cd = std::complex<double>;
 /// Eigenvalues of the residual compliance below this fraction of the largest are dropped: their
 /// displacements are at the rounding level of the sum.
 constexpr double kResidualEigenCutoff = 1e-13;
-/// Absolute tolerance of displacement-like states [m] (1 nm, ~1e-7 of a sinking).
-constexpr double kDisplacementTolerance = 1e-9;
+/// Absolute tolerance of displacement-like states [m] (0.1 um, ~1e-5 of a sinking).
+constexpr double kDisplacementTolerance = 1e-7;
 /// Minimum damping ratio used for the relaxation time of the quasi-static residual orders.
 constexpr double kResidualMinDamping = 0.01;
 

@@ -11,7 +11,10 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
   TyreModel m;
   m.config = config;
   const double R0 = config.outer_radius_m;
-  m.units_around = static_cast<int>(std::lround(2 * M_PI * R0 / config.mesh.unit_length_m));
+  // n is rounded to the nearest 2^a 3^b 5^c so that the kernel is one FFT; the unit length
+  // moves by less than 1 % from the configured one.
+  m.units_around = modal::fft_friendly_size(
+      static_cast<int>(std::lround(2 * M_PI * R0 / config.mesh.unit_length_m)));
   m.dtheta_rad = 2 * M_PI / m.units_around;
   m.unit_length_m = R0 * m.dtheta_rad;
   m.half_window = static_cast<int>(std::lround(0.5 * config.mesh.window_m / m.unit_length_m));
@@ -28,7 +31,13 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
   } else {
     m.basis = modal::build_modal_basis(modes, bo);
   }
-  m.kernels = modal::build_lag_kernels(m.basis, m.dtheta_rad, cand);
+  if (2 * (cand - 1) >= m.units_around) {
+    throw InputError({config.source, 0, "contact.window_mm"},
+                     "candidate window longer than half the circumference");
+  }
+  m.kernels = bo.max_order * 2 <= m.units_around
+                  ? modal::build_periodic_kernels(m.basis, m.units_around, cand)
+                  : modal::build_lag_kernels(m.basis, m.dtheta_rad, cand);
 
   const auto& t = config.tread;
   const double G = t.modulus_Pa / (2 * (1 + t.poisson));

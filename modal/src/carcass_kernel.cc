@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <complex>
+#include <unsupported/Eigen/FFT>
+#include <vector>
 
 #include "modaltyre/core/errors.h"
 
@@ -65,6 +67,51 @@ LagKernels build_lag_kernels(const ModalBasis& basis, double dtheta_rad, int lag
         K.t_from_t[mid - j] += (a_tt * zc).real();
       }
       z *= step;
+    }
+  }
+  return K;
+}
+
+int fft_friendly_size(int n) {
+  auto smooth = [](int v) {
+    for (int f : {2, 3, 5})
+      while (v % f == 0) v /= f;
+    return v == 1;
+  };
+  for (int d = 0;; ++d) {
+    if (n - d >= 8 && smooth(n - d)) return n - d;
+    if (smooth(n + d)) return n + d;
+  }
+}
+
+LagKernels build_periodic_kernels(const ModalBasis& basis, int n, int lags,
+                                  const RollingState& rolling) {
+  MODALTYRE_CHECK(n >= 8 && lags >= 1 && 2 * (lags - 1) < n, "bad periodic kernel grid");
+  // Per-order coefficients G_ab[k] = sum over terms of order k of w P_ab D_k.
+  std::vector<std::vector<cd>> G(4, std::vector<cd>(n, cd(0, 0)));
+  for (const auto& t : basis.terms) {
+    MODALTYRE_CHECK(2 * t.order <= n, "modal order above the grid's Nyquist order");
+    const cd D = receptance(t, rolling);
+    G[0][t.order] += t.P_rr * D;
+    G[1][t.order] += t.P_rt * D;
+    G[2][t.order] += std::conj(t.P_rt) * D;
+    G[3][t.order] += t.P_tt * D;
+  }
+  LagKernels K;
+  K.dtheta_rad = 2 * M_PI / n;
+  K.lags = lags;
+  std::vector<double>* out[4] = {&K.r_from_r, &K.r_from_t, &K.t_from_r, &K.t_from_t};
+  Eigen::FFT<double> fft;
+  std::vector<cd> x;
+  const std::size_t mid = static_cast<std::size_t>(lags) - 1;
+  for (int f = 0; f < 4; ++f) {
+    // x_j = sum_k G_k e^{2 pi i k j / n}; Eigen's inverse transform divides by n.
+    fft.inv(x, G[f]);
+    auto& v = *out[f];
+    v.assign(2 * static_cast<std::size_t>(lags) - 1, 0.0);
+    for (int j = 0; j < lags; ++j) {
+      v[mid + j] = x[j].real() * n;
+      if (j > 0) v[mid - j] = x[n - j].real() * n;
     }
   }
   return K;

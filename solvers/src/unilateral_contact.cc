@@ -1,5 +1,6 @@
 #include "modaltyre/solvers/unilateral_contact.h"
 
+#include <Eigen/IterativeLinearSolvers>
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -28,25 +29,56 @@ struct RestrictedSolve {
   double delta = 0;
 };
 
-RestrictedSolve solve_on_set(const ContactProblem& p, const std::vector<int>& S) {
+/// Solutions of C_SS a = 1 and C_SS b = s from the previous active set, indexed by point, used
+/// as the initial guess of the iterative solver when the set changes by a few points.
+struct SolveWorkspace {
+  Eigen::VectorXd a, b;
+  Eigen::MatrixXd A;
+};
+
+// Above this many contact points the symmetric system is solved by conjugate gradients:
+// C = tread diagonal + smooth carcass kernel is well conditioned and each iteration is one
+// O(k^2) product, against O(k^3) for a factorisation.
+constexpr int kIterativeThreshold = 96;
+// CG relative residual: far below what the load multiplier and forces need (1e-9).
+constexpr double kCgTolerance = 1e-13;
+
+RestrictedSolve solve_on_set(const ContactProblem& p, const std::vector<int>& S,
+                             SolveWorkspace& ws) {
   const int k = static_cast<int>(S.size());
-  Eigen::MatrixXd A(k, k);
+  ws.A.resize(k, k);
   Eigen::MatrixXd rhs(k, 2);
+  for (int b = 0; b < k; ++b) {
+    for (int a = 0; a < k; ++a) ws.A(a, b) = p.compliance(S[a], S[b]);
+  }
   for (int a = 0; a < k; ++a) {
-    for (int b = 0; b < k; ++b) A(a, b) = p.compliance(S[a], S[b]);
     rhs(a, 0) = 1.0;
     rhs(a, 1) = p.initial_gap(S[a]);
   }
   RestrictedSolve r;
-  Eigen::MatrixXd x;
-  if (p.symmetric) {
-    Eigen::LLT<Eigen::MatrixXd> llt(A);
+  Eigen::MatrixXd x(k, 2);
+  bool solved = false;
+  if (p.symmetric && k > kIterativeThreshold) {
+    Eigen::ConjugateGradient<Eigen::MatrixXd, Eigen::Lower | Eigen::Upper> cg;
+    cg.setTolerance(kCgTolerance);
+    cg.setMaxIterations(4 * k);
+    cg.compute(ws.A);
+    Eigen::MatrixXd guess(k, 2);
+    for (int a = 0; a < k; ++a) guess(a, 0) = ws.a(S[a]), guess(a, 1) = ws.b(S[a]);
+    x.col(0) = cg.solveWithGuess(rhs.col(0), guess.col(0));
+    bool ok = cg.info() == Eigen::Success;
+    x.col(1) = cg.solveWithGuess(rhs.col(1), guess.col(1));
+    solved = ok && cg.info() == Eigen::Success;
+  }
+  if (!solved && p.symmetric) {
+    Eigen::LLT<Eigen::MatrixXd> llt(ws.A);
     if (llt.info() != Eigen::Success) return r;
     x = llt.solve(rhs);
-  } else {
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+  } else if (!solved) {
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu(ws.A);
     x = lu.solve(rhs);
   }
+  for (int a = 0; a < k; ++a) ws.a(S[a]) = x(a, 0), ws.b(S[a]) = x(a, 1);
   const double one_a = x.col(0).sum();
   if (!(std::abs(one_a) > 0) || !x.allFinite()) return r;
   r.delta = (p.load_N + x.col(1).sum()) / one_a;
@@ -67,19 +99,35 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
   std::vector<char> in(m, 0);
   if (warm_active && static_cast<int>(warm_active->size()) == m) in = *warm_active;
   if (std::find(in.begin(), in.end(), 1) == in.end()) {
-    Eigen::Index imin = 0;
-    p.initial_gap.minCoeff(&imin);
-    in[imin] = 1;
+    // Cold start: the set a Winkler layer with each point's own compliance C_ii would load,
+    // f_i = (delta - s_i)_+ / C_ii with sum f = F (a short patch; the iteration grows it).
+    std::vector<int> order(m);
+    for (int i = 0; i < m; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return p.initial_gap(a) < p.initial_gap(b); });
+    double sum_k = 0, sum_ks = 0;
+    for (int n = 0; n < m; ++n) {
+      const int i = order[n];
+      const double k = 1.0 / p.compliance(i, i);
+      sum_k += k;
+      sum_ks += k * p.initial_gap(i);
+      in[i] = 1;
+      const double delta = (p.load_N + sum_ks) / sum_k;
+      if (n + 1 == m || delta <= p.initial_gap(order[n + 1])) break;
+    }
   }
   std::set<std::vector<char>> visited;
   bool single_step = false;
+  SolveWorkspace ws;
+  ws.a = Eigen::VectorXd::Zero(m);
+  ws.b = Eigen::VectorXd::Zero(m);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(m);
   for (int it = 1; it <= opt.max_iterations; ++it) {
     sol.iterations = it;
     std::vector<int> S;
     for (int i = 0; i < m; ++i)
       if (in[i]) S.push_back(i);
-    const RestrictedSolve rs = solve_on_set(p, S);
+    const RestrictedSolve rs = solve_on_set(p, S, ws);
     if (!rs.ok) {
       sol.status = ContactStatus::singular;
       sol.message = "the compliance restricted to " + std::to_string(S.size()) +

@@ -120,7 +120,7 @@ TEST(Sweep, RowsEqualIndividualFootprintSolves) {
   ASSERT_EQ(rc.rows.size(), 12u);
   ASSERT_EQ(rc.failed, 0u);
   ASSERT_EQ(rw.failed, 0u);
-  for (int mi = 0; mi < 2; ++mi) {
+  for (std::size_t mi = 0; mi < 2; ++mi) {
     const TyreModel model =
         build_tyre_model(load_tyre_config(kConfig, {mi == 0 ? "tread.modulus_MPa=5" : "tread.modulus_MPa=7"}));
     for (std::size_t i = 6 * mi; i < 6 * mi + 6; ++i) {

@@ -223,5 +223,29 @@ TEST(CarcassKernel, LagKernelsMatchTransfer) {
   }
 }
 
+TEST(CarcassKernel, PeriodicFftKernelsEqualDirectSums) {
+  // The FFT route (one inverse transform per function on the n-unit grid) must reproduce the
+  // direct O(terms * lags) sums, static and rolling, at every lag; rounding only.
+  constexpr double kFftRoundoff = 1e-11;
+  const int n = fft_friendly_size(1000);
+  EXPECT_EQ(n, 1000);  // 2^3 5^3
+  EXPECT_EQ(fft_friendly_size(7409), 7500);  // nearest 2^a 3^b 5^c
+  const ModalBasis basis = sf350_basis(n / 2);
+  for (double speed : {0.0, 15.0}) {
+    const RollingState rolling{speed, 0.2948};
+    const int lags = 120;
+    const LagKernels direct = build_lag_kernels(basis, 2 * M_PI / n, lags, rolling);
+    const LagKernels fft = build_periodic_kernels(basis, n, lags, rolling);
+    const double scale = std::abs(direct.r_from_r[lags - 1]);
+    for (int j = -(lags - 1); j < lags; ++j) {
+      const auto a = direct.at(j), b = fft.at(j);
+      EXPECT_NEAR(a.r_from_r, b.r_from_r, kFftRoundoff * scale) << j;
+      EXPECT_NEAR(a.r_from_t, b.r_from_t, kFftRoundoff * scale) << j;
+      EXPECT_NEAR(a.t_from_r, b.t_from_r, kFftRoundoff * scale) << j;
+      EXPECT_NEAR(a.t_from_t, b.t_from_t, kFftRoundoff * scale) << j;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace modaltyre::modal

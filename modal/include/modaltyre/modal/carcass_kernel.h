@@ -53,4 +53,13 @@ struct LagKernels {
 LagKernels build_lag_kernels(const ModalBasis& basis, double dtheta_rad, int lags,
                              const RollingState& rolling = {});
 
+/// The same kernels on the grid of n units around the circumference (dtheta = 2 pi / n), built
+/// with one inverse FFT of length n per function from the per-order coefficients: O(n log n)
+/// instead of O(terms * lags). Requires every term's order <= n / 2 (no aliasing on the grid).
+LagKernels build_periodic_kernels(const ModalBasis& basis, int n, int lags,
+                                  const RollingState& rolling = {});
+
+/// Nearest n' >= 8 of the form 2^a 3^b 5^c (fast FFT lengths) to n.
+int fft_friendly_size(int n);
+
 }  // namespace modaltyre::modal

@@ -1,0 +1,87 @@
+// Benchmarks of the static chain: fit-modes, kernel construction, one footprint solve versus the
+// number of candidate units m, and the six Table 3 loads as a whole process.
+// Results compare only on the same machine: see BENCHMARKS.md.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "modaltyre/contact/footprint.h"
+#include "modaltyre/modal/carcass_kernel.h"
+#include "modaltyre/modal/hammer_data.h"
+#include "modaltyre/modal/mode_identification.h"
+
+namespace {
+
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kHammer =
+    std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_hammer_12pt.csv";
+
+using namespace modaltyre;
+
+void BM_FitModes(benchmark::State& state) {
+  for (auto _ : state) {
+    auto id = modal::identify_modes(modal::read_hammer_csv(kHammer));
+    benchmark::DoNotOptimize(id);
+  }
+}
+BENCHMARK(BM_FitModes)->Unit(benchmark::kMillisecond);
+
+// Kernel on the whole circumference: n units, orders up to n/2, lags over a 360 mm window.
+void BM_KernelBuild(benchmark::State& state) {
+  const double unit_mm = 1.0 / static_cast<double>(state.range(0));
+  const auto cfg = contact::load_tyre_config(kConfig, {"contact.unit_length_mm=" + std::to_string(unit_mm)});
+  const auto ident = modal::identify_modes(modal::read_hammer_csv(cfg.hammer_csv));
+  const int n = static_cast<int>(2 * M_PI * cfg.outer_radius_m / cfg.mesh.unit_length_m);
+  modal::ModalBasisOptions bo;
+  bo.max_order = n / 2;
+  const auto basis = modal::build_modal_basis(ident, bo);
+  const int lags = static_cast<int>(cfg.mesh.window_m / cfg.mesh.unit_length_m) + 1;
+  for (auto _ : state) {
+    auto K = modal::build_lag_kernels(basis, 2 * M_PI / n, lags);
+    benchmark::DoNotOptimize(K);
+  }
+  state.counters["n"] = n;
+  state.counters["lags"] = lags;
+}
+BENCHMARK(BM_KernelBuild)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
+
+// One solve (cold start) at 5478 N with m candidate units over a 180 mm window.
+void BM_FootprintSolve(benchmark::State& state) {
+  const int m = static_cast<int>(state.range(0));
+  const double unit_mm = 180.0 / m;
+  const auto model = contact::build_tyre_model(contact::load_tyre_config(
+      kConfig, {"contact.window_mm=180", "contact.unit_length_mm=" + std::to_string(unit_mm)}));
+  int iterations = 0;
+  for (auto _ : state) {
+    auto r = contact::solve_footprint(model, {5478, 0});
+    iterations = r.iterations;
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["m"] = model.candidates();
+  state.counters["active_set_iterations"] = iterations;
+  state.SetComplexityN(model.candidates());
+}
+BENCHMARK(BM_FootprintSolve)
+    ->RangeMultiplier(2)
+    ->Range(100, 3200)
+    ->Unit(benchmark::kMillisecond)
+    ->Complexity();
+
+// The whole job of the seed's Table 3: read config and hammer data, build the model at
+// `unit` mm, solve the six loads with warm starts.
+void BM_Table3Process(benchmark::State& state) {
+  const double unit_mm = state.range(0) / 100.0;
+  for (auto _ : state) {
+    const auto model = contact::build_tyre_model(contact::load_tyre_config(
+        kConfig, {"contact.unit_length_mm=" + std::to_string(unit_mm)}));
+    std::vector<contact::LoadCase> loads;
+    for (double F : model.config.loads_N) loads.push_back({F, 0});
+    auto res = contact::solve_footprints(model, loads);
+    benchmark::DoNotOptimize(res);
+  }
+}
+BENCHMARK(BM_Table3Process)->Arg(50)->Arg(25)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
