@@ -96,9 +96,9 @@ void register_sweep(CLI::App& app) {
     const double rate = wall > 0 ? static_cast<double>(n) / wall : 0.0;
     char line[512];
     std::snprintf(line, sizeof line,
-                  "sweep: %zu cases (%zu models), %zu failed, %.3f s wall, %.1f cases/s, %d "
+                  "sweep: %zu cases (%zu model%s), %zu failed, %.3f s wall, %.1f cases/s, %d "
                   "thread%s -> %s\n",
-                  n, plan.models.size(), res.failed, wall, rate, res.threads,
+                  n, plan.models.size(), plan.models.size() == 1 ? "" : "s", res.failed, wall, rate, res.threads,
                   res.threads == 1 ? "" : "s", spec.output.c_str());
     std::cerr << line;
     if (a->json) {

@@ -26,24 +26,30 @@ void BM_FitModes(benchmark::State& state) {
 }
 BENCHMARK(BM_FitModes)->Unit(benchmark::kMillisecond);
 
-// Kernel on the whole circumference: n units, orders up to n/2, lags over a 360 mm window.
-void BM_KernelBuild(benchmark::State& state) {
+// Kernels over a 360 mm window on the mesh of n units (orders up to n/2): the FFT route the
+// model uses, and the direct O(terms * lags) sums for comparison.
+void kernel_bench(benchmark::State& state, bool fft) {
   const double unit_mm = 1.0 / static_cast<double>(state.range(0));
   const auto cfg = contact::load_tyre_config(kConfig, {"contact.unit_length_mm=" + std::to_string(unit_mm)});
   const auto ident = modal::identify_modes(modal::read_hammer_csv(cfg.hammer_csv));
-  const int n = static_cast<int>(2 * M_PI * cfg.outer_radius_m / cfg.mesh.unit_length_m);
+  const int n = modal::fft_friendly_size(
+      static_cast<int>(2 * M_PI * cfg.outer_radius_m / cfg.mesh.unit_length_m));
   modal::ModalBasisOptions bo;
   bo.max_order = n / 2;
   const auto basis = modal::build_modal_basis(ident, bo);
   const int lags = static_cast<int>(cfg.mesh.window_m / cfg.mesh.unit_length_m) + 1;
   for (auto _ : state) {
-    auto K = modal::build_lag_kernels(basis, 2 * M_PI / n, lags);
+    auto K = fft ? modal::build_periodic_kernels(basis, n, lags)
+                 : modal::build_lag_kernels(basis, 2 * M_PI / n, lags);
     benchmark::DoNotOptimize(K);
   }
   state.counters["n"] = n;
   state.counters["lags"] = lags;
 }
-BENCHMARK(BM_KernelBuild)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
+void BM_KernelBuildFft(benchmark::State& state) { kernel_bench(state, true); }
+void BM_KernelBuildDirect(benchmark::State& state) { kernel_bench(state, false); }
+BENCHMARK(BM_KernelBuildFft)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_KernelBuildDirect)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
 
 // One solve (cold start) at 5478 N with m candidate units over a 180 mm window.
 void BM_FootprintSolve(benchmark::State& state) {

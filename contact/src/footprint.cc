@@ -18,7 +18,7 @@ FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
   if (ratio == 0.0) {
     p.compliance = model.vertical_compliance;
   } else {
-    p.compliance = model.vertical_compliance + ratio * model.vertical_from_horizontal;
+    p.compliance = model.vertical_compliance + ratio * vertical_from_horizontal(model);
     p.symmetric = false;
   }
   p.initial_gap = model.sag;

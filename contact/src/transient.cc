@@ -655,6 +655,8 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
   opt.max_order = 5;
   opt.stability_limit_detection = true;
   opt.max_step = M.settings.output_step_s;
+  opt.lsetup_frequency = 50;
+  opt.delta_gamma_max = 0.6;
 
   std::vector<double> y = sys.static_state(plan.initial_load_N);
   solvers::CvodeKlu ode(prob, opt, 0.0, y, sys.nnz());

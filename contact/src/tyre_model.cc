@@ -51,30 +51,43 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
     m.sag(i) = R0 * (1 - std::cos(m.theta[i]));
   }
   m.vertical_compliance.resize(cand, cand);
-  m.vertical_from_horizontal.resize(cand, cand);
   std::vector<double> cosv(cand), sinv(cand);
   for (int i = 0; i < cand; ++i) cosv[i] = std::cos(m.theta[i]), sinv[i] = std::sin(m.theta[i]);
-  for (int i = 0; i < cand; ++i) {
-    const double ci = cosv[i], si = sinv[i];
-    for (int j = 0; j < cand; ++j) {
-      const double cj = cosv[j], sj = sinv[j];
-      const modal::Transfer2x2 h = m.kernels.at(i - j);
+  const auto& K = m.kernels;
+  const int mid = K.lags - 1;
+  for (int j = 0; j < cand; ++j) {
+    const double cj = cosv[j], sj = sinv[j];
+    for (int i = 0; i < cand; ++i) {
+      const int l = mid + i - j;
       // Unit vertical force at j: f_r = cos theta_j, f_t = sin theta_j (seed 001 eq. 12).
-      const double ur = h.r_from_r * cj + h.r_from_t * sj;
-      const double ut = h.t_from_r * cj + h.t_from_t * sj;
-      m.vertical_compliance(i, j) = ur * ci + ut * si;
-      // Unit horizontal force (+x) at j: f_r = -sin theta_j, f_t = cos theta_j.
-      const double urx = -h.r_from_r * sj + h.r_from_t * cj;
-      const double utx = -h.t_from_r * sj + h.t_from_t * cj;
-      m.vertical_from_horizontal(i, j) = urx * ci + utx * si;
+      const double ur = K.r_from_r[l] * cj + K.r_from_t[l] * sj;
+      const double ut = K.t_from_r[l] * cj + K.t_from_t[l] * sj;
+      m.vertical_compliance(i, j) = ur * cosv[i] + ut * sinv[i];
     }
     // Tread in series (seed 001 eq. 6), only under the unit's own force.
-    m.vertical_compliance(i, i) += ci * ci / m.k_radial_N_m + si * si / m.k_tangential_N_m;
-    m.vertical_from_horizontal(i, i) += ci * (-si) / m.k_radial_N_m + si * ci / m.k_tangential_N_m;
+    m.vertical_compliance(j, j) += cj * cj / m.k_radial_N_m + sj * sj / m.k_tangential_N_m;
   }
   // Symmetrise away rounding so that Cholesky sees an exactly symmetric matrix.
   m.vertical_compliance = 0.5 * (m.vertical_compliance + m.vertical_compliance.transpose()).eval();
   return m;
+}
+
+Eigen::MatrixXd vertical_from_horizontal(const TyreModel& m) {
+  const int cand = m.candidates();
+  Eigen::MatrixXd C(cand, cand);
+  for (int j = 0; j < cand; ++j) {
+    const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
+    for (int i = 0; i < cand; ++i) {
+      const double ci = std::cos(m.theta[i]), si = std::sin(m.theta[i]);
+      const modal::Transfer2x2 h = m.kernels.at(i - j);
+      // Unit horizontal force (+x) at j: f_r = -sin theta_j, f_t = cos theta_j.
+      const double ur = -h.r_from_r * sj + h.r_from_t * cj;
+      const double ut = -h.t_from_r * sj + h.t_from_t * cj;
+      C(i, j) = ur * ci + ut * si;
+    }
+    C(j, j) += cj * (-sj) / m.k_radial_N_m + sj * cj / m.k_tangential_N_m;
+  }
+  return C;
 }
 
 TyreModel build_tyre_model(const TyreConfig& config) {

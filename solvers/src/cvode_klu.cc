@@ -191,6 +191,10 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
   if (opt.max_step > 0) check(CVodeSetMaxStep(I.mem, opt.max_step), "CVodeSetMaxStep", I);
   if (opt.initial_step > 0) check(CVodeSetInitStep(I.mem, opt.initial_step), "CVodeSetInitStep", I);
   if (opt.stability_limit_detection) check(CVodeSetStabLimDet(I.mem, SUNTRUE), "CVodeSetStabLimDet", I);
+  if (opt.lsetup_frequency > 0)
+    check(CVodeSetLSetupFrequency(I.mem, opt.lsetup_frequency), "CVodeSetLSetupFrequency", I);
+  if (opt.delta_gamma_max > 0)
+    check(CVodeSetDeltaGammaMaxLSetup(I.mem, opt.delta_gamma_max), "CVodeSetDeltaGammaMaxLSetup", I);
   if (I.problem.roots > 0) {
     check(CVodeRootInit(I.mem, I.problem.roots, root_trampoline), "CVodeRootInit", I);
     check(CVodeSetNoInactiveRootWarn(I.mem), "CVodeSetNoInactiveRootWarn", I);

@@ -35,12 +35,14 @@ struct TyreModel {
   double k_tangential_N_m = 0;
   /// Vertical compliance of the candidate units under vertical forces [m/N] (symmetric).
   Eigen::MatrixXd vertical_compliance;
-  /// Vertical displacement at i per unit horizontal (+x) force at j [m/N].
-  Eigen::MatrixXd vertical_from_horizontal;
   Eigen::VectorXd sag;       ///< R0 (1 - cos theta): gap to the road at zero sinking [m]
 
   int candidates() const { return static_cast<int>(theta.size()); }
 };
+
+/// Vertical displacement at i per unit horizontal (+x) force at j [m/N]; built on demand (only
+/// load cases with a horizontal force need it).
+Eigen::MatrixXd vertical_from_horizontal(const TyreModel& model);
 
 /// Builds the model from a configuration and the identified modes of its hammer data.
 TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentification& modes);

@@ -58,6 +58,12 @@ struct OdeOptions {
   double max_step = 0;        ///< 0 = unlimited
   double initial_step = 0;    ///< 0 = CVODE's estimate
   bool stability_limit_detection = false;
+  /// Linear-solver setups (KLU refactorisations) at most every this many steps (CVODE: 20) and
+  /// when gamma = h * beta changed by more than delta_gamma_max (CVODE: 0.3). Larger values
+  /// trade Newton iterations for fewer factorisations, which dominate when the Jacobian has
+  /// dense blocks. 0 = CVODE's default.
+  long lsetup_frequency = 0;
+  double delta_gamma_max = 0;
 };
 
 struct OdeStats {
