@@ -61,17 +61,27 @@ FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
   const double width = model.config.tread.width_m;
   r.contour_x_m.resize(m);
   r.contour_height_m.resize(m);
-  for (int i = 0; i < m; ++i) {
-    double ur = fr[i] / model.k_radial_N_m, ut = ft[i] / model.k_tangential_N_m;
-    for (int j = 0; j < m; ++j) {
-      if (!s.active[j]) continue;
-      const modal::Transfer2x2 h = model.kernels.at(i - j);
-      ur += h.r_from_r * fr[j] + h.r_from_t * ft[j];
-      ut += h.t_from_r * fr[j] + h.t_from_t * ft[j];
+  // Displacements u = H f (eq. 1) plus the tread's own (eq. 6): loop over loaded units outside so
+  // that the inner loop runs over contiguous kernel lags.
+  std::vector<double> ur(m), ut(m);
+  for (int i = 0; i < m; ++i) ur[i] = fr[i] / model.k_radial_N_m, ut[i] = ft[i] / model.k_tangential_N_m;
+  const auto& K = model.kernels;
+  for (int j = 0; j < m; ++j) {
+    if (!s.active[j]) continue;
+    const double* rr = K.r_from_r.data() + (K.lags - 1 - j);
+    const double* rt = K.r_from_t.data() + (K.lags - 1 - j);
+    const double* tr = K.t_from_r.data() + (K.lags - 1 - j);
+    const double* tt = K.t_from_t.data() + (K.lags - 1 - j);
+    const double frj = fr[j], ftj = ft[j];
+    for (int i = 0; i < m; ++i) {
+      ur[i] += rr[i] * frj + rt[i] * ftj;
+      ut[i] += tr[i] * frj + tt[i] * ftj;
     }
+  }
+  for (int i = 0; i < m; ++i) {
     const double th = model.theta[i];
-    r.contour_x_m[i] = (R0 - ur) * std::sin(th) + ut * std::cos(th);
-    const double depth = (R0 - ur) * std::cos(th) - ut * std::sin(th);
+    r.contour_x_m[i] = (R0 - ur[i]) * std::sin(th) + ut[i] * std::cos(th);
+    const double depth = (R0 - ur[i]) * std::cos(th) - ut[i] * std::sin(th);
     r.contour_height_m[i] = s.active[i] ? 0.0 : std::max((R0 - r.sinking_m) - depth, 0.0);
   }
   int first = -1, last = -1;

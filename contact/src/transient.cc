@@ -461,7 +461,7 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
       push(r, v);
     }
     if (relax) {
-      for (int i = 0; i < m; ++i) {
+      for (int i : active) {  // units out of contact do not couple (pattern changes at switches)
         double bi;
         if (k < nq) bi = -M.psi(i, k);
         else if (k < N - 1) bi = -M.V(i, k - nq);
@@ -505,10 +505,12 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
     for (int i = 0; i < m; ++i, ++col) {
       J.col_ptr[col] = static_cast<int64_t>(J.row.size());
       const double dfde = -kd(i);
-      for (int j = 0; j < nq; ++j) push(nq + j, M.psi(i, j) * dfde);
-      for (int l = 0; l < nr; ++l)
-        push(2 * nq + l, M.lambda(l) / M.tau_residual_s * M.V(i, l) * dfde);
-      push(Z + 1, -dfde / mh);
+      if (dfde != 0) {
+        for (int j = 0; j < nq; ++j) push(nq + j, M.psi(i, j) * dfde);
+        for (int l = 0; l < nr; ++l)
+          push(2 * nq + l, M.lambda(l) / M.tau_residual_s * M.V(i, l) * dfde);
+        push(Z + 1, -dfde / mh);
+      }
       if (i > 0) push(E + i - 1, adv);  // e_{i-1}' depends on e_i (upwind from the front)
       push(E + i, -adv + (dfde - M.k_kv(i)) / M.c_kv(i));
     }
