@@ -453,14 +453,14 @@ SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
       if (slot.input_error) std::rethrow_exception(slot.input_error);
     }
 
-    std::vector<std::size_t> todo;
+    std::vector<std::size_t> pending;
     for (std::size_t s = 0; s < count; ++s) {
-      todo.insert(todo.end(), cases_of[first + s].begin(), cases_of[first + s].end());
+      pending.insert(pending.end(), cases_of[first + s].begin(), cases_of[first + s].end());
     }
-    const long n_todo = static_cast<long>(todo.size());
+    const long n_pending = static_cast<long>(pending.size());
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
-    for (long t = 0; t < n_todo; ++t) {
-      const std::size_t i = todo[t];
+    for (long t = 0; t < n_pending; ++t) {
+      const std::size_t i = pending[t];
       const SweepCase& sc = plan.cases[i];
       const ModelSlot& slot = slots[sc.model - first];
       SweepRow row;
