@@ -17,63 +17,17 @@
 #include <string>
 #include <vector>
 
+#include "cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
+using modaltyre_test::CliRun;
+using modaltyre_test::slurp;
 constexpr double kPi = 3.14159265358979323846;
 
-struct CliRun {
-  int exit_code = -1;  ///< -1 when killed by a signal
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'') {
-      q.append("'\\''");
-    } else {
-      q.push_back(c);
-    }
-  }
-  q.push_back('\'');
-  return q;
-}
-
-class Cli : public ::testing::Test {
+class Cli : public modaltyre_test::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           (std::string("modaltyre_cli_") + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliRun run(const std::vector<std::string>& args) {
-    std::string cmd = quote(MODALTYRE_CLI);
-    for (const auto& a : args) {
-      cmd.push_back(' ');
-      cmd.append(quote(a));
-    }
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    cmd.append(" >").append(quote(out.string())).append(" 2>").append(quote(err.string()));
-    const int status = std::system(cmd.c_str());
-    CliRun r;
-    if (status != -1 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-
   std::string write(const std::string& content, const std::string& name = "h.csv") {
     const fs::path p = dir_ / name;
     std::ofstream(p, std::ios::binary) << content;
@@ -91,7 +45,6 @@ class Cli : public ::testing::Test {
     EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
   }
 
-  fs::path dir_;
 };
 
 /// Valid 12-point hammer lines (line 1 = header; mode m point i on line 2 + 12 m + i).
