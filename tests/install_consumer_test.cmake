@@ -1,0 +1,26 @@
+# Installs the built project into a scratch prefix, builds examples/footprint_consumer against it
+# with find_package(ModalTyre) and runs it on the bundled config. Arguments: SRC, BIN, WORK.
+file(REMOVE_RECURSE ${WORK})
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BIN} --prefix ${WORK}/prefix
+                RESULT_VARIABLE rc OUTPUT_QUIET)
+if(rc)
+  message(FATAL_ERROR "cmake --install failed: ${rc}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SRC}/examples/footprint_consumer -B ${WORK}/consumer
+                        -G Ninja -DCMAKE_PREFIX_PATH=${WORK}/prefix -DCMAKE_BUILD_TYPE=Release
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "configuring the consumer failed:\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK}/consumer
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "building the consumer failed:\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${WORK}/consumer/footprint_consumer ${SRC}/configs/sf350.yaml 5478
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc OR NOT out MATCHES "sinking_mm [0-9.]+ contact_length_mm [0-9.]+")
+  message(FATAL_ERROR "the consumer did not solve a footprint (${rc}):\n${out}\n${err}")
+endif()
+message(STATUS "consumer: ${out}")
+file(REMOVE_RECURSE ${WORK})
