@@ -1,4 +1,5 @@
 // modaltyre footprint CONFIG [--load N]... [--set key=value]... [--json] [--plot FILE]
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -31,8 +32,7 @@ void register_footprint(CLI::App& app) {
       "Static footprint on a rigid flat road: sinking, contact length and pressure distribution "
       "for each vertical load (load control, carcass and tread in series, seed 001).");
   cmd->add_option("CONFIG", a->config, "tyre config (YAML), e.g. configs/sf350.yaml")->required();
-  cmd->add_option("--load", a->loads, "vertical load [N]; repeat for several (default: loads_N)")
-      ->check(CLI::PositiveNumber);
+  cmd->add_option("--load", a->loads, "vertical load [N]; repeat for several (default: loads_N)");
   cmd->add_option("--fx", a->horizontal, "horizontal force at the axle [N], forward positive");
   cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");
   cmd->add_flag("--json", a->json, "print JSON");
@@ -42,7 +42,17 @@ void register_footprint(CLI::App& app) {
     const auto model = contact::build_tyre_model(config);
     std::vector<contact::LoadCase> cases;
     const double fx = cmd->count("--fx") ? a->horizontal : config.horizontal_force_N;
-    for (double f : a->loads.empty() ? config.loads_N : a->loads) cases.push_back({f, fx});
+    for (double f : a->loads.empty() ? config.loads_N : a->loads) {
+      if (!(f > 0) || !std::isfinite(f)) {
+        throw InputError({"--load", 0, ""}, "vertical load must be a finite number > 0 N");
+      }
+      // Uniform traction f_x = (F_x/F_z) f_z needs adhesion; beyond |F_x| = 1.5 F_z no tyre holds.
+      if (!(std::abs(fx) <= 1.5 * f)) {
+        throw InputError({"--fx", 0, ""}, "horizontal force must satisfy |F_x| <= 1.5 F_z "
+                                          "(no rubber-road adhesion carries more)");
+      }
+      cases.push_back({f, fx});
+    }
     const auto results = contact::solve_footprints(model, cases);
     require_converged(results);
     if (!a->plot.empty()) plot_pressures(results, config, a->plot);

@@ -1,0 +1,70 @@
+// `modaltyre footprint` and `validate` end to end: the documented JSON shapes, equilibrium of the
+// printed unit forces, exit 1 naming the load case when a solve does not converge, exit 2 for
+// impossible loads.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_runner.h"
+
+namespace {
+
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kTable3 =
+    std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
+
+class FootprintCli : public modaltyre_test::CliFixture {};
+
+TEST_F(FootprintCli, JsonHasTheDocumentedShapeAndUnitForcesBalanceTheLoad) {
+  const auto r = run({"footprint", kConfig, "--load", "2131", "--load", "8321", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["cases"].size(), 2u);
+  for (const auto& c : j["cases"]) {
+    EXPECT_TRUE(c["converged"].get<bool>());
+    EXPECT_GT(c["sinking_mm"].get<double>(), 0);
+    EXPECT_GT(c["contact_length_mm"].get<double>(), 0);
+    EXPECT_GE(c["iterations"].get<int>(), 1);
+    double sum = 0;
+    for (const auto& u : c["units"]) {
+      for (const char* key : {"x_mm", "dx_mm", "fz_N", "fx_N", "pressure_kPa"}) {
+        ASSERT_TRUE(u.contains(key)) << key;
+      }
+      sum += u["fz_N"].get<double>();
+    }
+    // Unit forces are printed with 10 significant digits.
+    EXPECT_NEAR(sum, c["load_N"].get<double>(), 1e-6 * c["load_N"].get<double>());
+  }
+}
+
+TEST_F(FootprintCli, NonConvergenceExitsOneNamingTheLoadCase) {
+  const auto r = run({"footprint", kConfig, "--load", "5478", "--set", "solver.max_iterations=1"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("5478"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << "no unconverged numbers may be printed";
+}
+
+TEST_F(FootprintCli, ImpossibleLoadsExitTwo) {
+  auto r = run({"footprint", kConfig, "--load", "0"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--load"), std::string::npos) << r.err;
+  r = run({"footprint", kConfig, "--load", "5000", "--fx", "1e7"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--fx"), std::string::npos) << r.err;
+}
+
+TEST_F(FootprintCli, ValidateJsonNamesCalibrationAndPredictedRows) {
+  const auto r = run({"validate", kConfig, kTable3, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["rows"].size(), 6u);
+  int calibration_rows = 0;
+  for (const auto& row : j["rows"]) calibration_rows += row["calibration"].get<bool>() ? 1 : 0;
+  EXPECT_EQ(calibration_rows, 2);
+  EXPECT_TRUE(j["calibrated"].contains("tread.modulus_MPa"));
+  EXPECT_TRUE(j["rms_rel_error"].contains("sinking_mm"));
+  EXPECT_TRUE(j["rms_rel_error"].contains("length_mm"));
+}
+
+}  // namespace
