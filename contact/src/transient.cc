@@ -619,9 +619,19 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
       ut += f(i) * std::sin(th) / M.tyre.k_tangential_N_m;
       return (R0 - ur) * std::sin(th) + ut * std::cos(th);
     };
-    const double dx_first = M.tyre.unit_length_m * std::cos(M.tyre.theta[first]);
-    const double dx_last = M.tyre.unit_length_m * std::cos(M.tyre.theta[last]);
-    s.contact_length_m = deformed_x(last) - deformed_x(first) + 0.5 * (dx_first + dx_last);
+    // Patch edges as in footprint.cc: the level function phi = f C_ii inside and -gap outside,
+    // interpolated linearly to its zero between the end unit and its outside neighbour.
+    std::vector<double> g(M.m);
+    sys.roots(t, y, g.data());  // penetration of the tread tip: -gap outside the patch
+    auto edge = [&](int inside, int outside) {
+      const double x_in = deformed_x(inside);
+      if (outside < 0 || outside >= M.m) return x_in;
+      const double phi_in = f(inside) * M.tyre.vertical_compliance(inside, inside);
+      const double phi_out = g[outside];
+      const double w = phi_in / (phi_in - phi_out);
+      return x_in + w * (deformed_x(outside) - x_in);
+    };
+    s.contact_length_m = edge(last, last + 1) - edge(first, first - 1);
   }
   return s;
 }

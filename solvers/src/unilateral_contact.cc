@@ -1,6 +1,5 @@
 #include "modaltyre/solvers/unilateral_contact.h"
 
-#include <Eigen/IterativeLinearSolvers>
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -43,39 +42,74 @@ constexpr int kIterativeThreshold = 96;
 // CG relative residual: far below what the load multiplier and forces need (1e-9).
 constexpr double kCgTolerance = 1e-13;
 
+/// Conjugate gradients for several right-hand sides in lockstep (one product A X per iteration
+/// streams A once for all columns), Jacobi-preconditioned. Returns false without convergence.
+bool lockstep_cg(const Eigen::Ref<const Eigen::MatrixXd>& A, const Eigen::MatrixXd& B,
+                 Eigen::MatrixXd& X, double tol, int max_iterations) {
+  const Eigen::VectorXd inv_diag = A.diagonal().cwiseInverse();
+  Eigen::MatrixXd R = B - A * X;
+  Eigen::MatrixXd Z = inv_diag.asDiagonal() * R;
+  Eigen::MatrixXd P = Z;
+  const Eigen::Index nrhs = B.cols();
+  Eigen::VectorXd rz(nrhs), bnorm(nrhs);
+  for (Eigen::Index c = 0; c < nrhs; ++c) {
+    rz(c) = R.col(c).dot(Z.col(c));
+    bnorm(c) = std::max(B.col(c).norm(), 1e-300);
+  }
+  for (int it = 0; it < max_iterations; ++it) {
+    bool done = true;
+    for (Eigen::Index c = 0; c < nrhs; ++c) done = done && R.col(c).norm() <= tol * bnorm(c);
+    if (done) return true;
+    const Eigen::MatrixXd AP = A * P;
+    for (Eigen::Index c = 0; c < nrhs; ++c) {
+      const double pAp = P.col(c).dot(AP.col(c));
+      if (!(pAp > 0)) continue;  // this column has converged exactly (or A is not SPD)
+      const double alpha = rz(c) / pAp;
+      X.col(c) += alpha * P.col(c);
+      R.col(c) -= alpha * AP.col(c);
+      Z.col(c) = inv_diag.cwiseProduct(R.col(c));
+      const double rz_new = R.col(c).dot(Z.col(c));
+      P.col(c) = Z.col(c) + (rz_new / rz(c)) * P.col(c);
+      rz(c) = rz_new;
+    }
+  }
+  return false;
+}
+
+bool contiguous(const std::vector<int>& S) {
+  return !S.empty() && S.back() - S.front() + 1 == static_cast<int>(S.size());
+}
+
 RestrictedSolve solve_on_set(const ContactProblem& p, const std::vector<int>& S,
                              SolveWorkspace& ws) {
   const int k = static_cast<int>(S.size());
-  ws.A.resize(k, k);
   Eigen::MatrixXd rhs(k, 2);
-  for (int b = 0; b < k; ++b) {
-    for (int a = 0; a < k; ++a) ws.A(a, b) = p.compliance(S[a], S[b]);
-  }
   for (int a = 0; a < k; ++a) {
     rhs(a, 0) = 1.0;
     rhs(a, 1) = p.initial_gap(S[a]);
   }
+  // A contiguous set (the usual patch) is used in place; a scattered one is gathered.
+  if (!contiguous(S)) {
+    ws.A.resize(k, k);
+    for (int b = 0; b < k; ++b)
+      for (int a = 0; a < k; ++a) ws.A(a, b) = p.compliance(S[a], S[b]);
+  }
+  const Eigen::Ref<const Eigen::MatrixXd> A =
+      contiguous(S) ? Eigen::Ref<const Eigen::MatrixXd>(p.compliance.block(S[0], S[0], k, k))
+                    : Eigen::Ref<const Eigen::MatrixXd>(ws.A);
   RestrictedSolve r;
   Eigen::MatrixXd x(k, 2);
   bool solved = false;
   if (p.symmetric && k > kIterativeThreshold) {
-    Eigen::ConjugateGradient<Eigen::MatrixXd, Eigen::Lower | Eigen::Upper> cg;
-    cg.setTolerance(kCgTolerance);
-    cg.setMaxIterations(4 * k);
-    cg.compute(ws.A);
-    Eigen::MatrixXd guess(k, 2);
-    for (int a = 0; a < k; ++a) guess(a, 0) = ws.a(S[a]), guess(a, 1) = ws.b(S[a]);
-    x.col(0) = cg.solveWithGuess(rhs.col(0), guess.col(0));
-    bool ok = cg.info() == Eigen::Success;
-    x.col(1) = cg.solveWithGuess(rhs.col(1), guess.col(1));
-    solved = ok && cg.info() == Eigen::Success;
+    for (int a = 0; a < k; ++a) x(a, 0) = ws.a(S[a]), x(a, 1) = ws.b(S[a]);
+    solved = lockstep_cg(A, rhs, x, kCgTolerance, 4 * k);
   }
   if (!solved && p.symmetric) {
-    Eigen::LLT<Eigen::MatrixXd> llt(ws.A);
+    Eigen::LLT<Eigen::MatrixXd> llt(A);
     if (llt.info() != Eigen::Success) return r;
     x = llt.solve(rhs);
   } else if (!solved) {
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu(ws.A);
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
     x = lu.solve(rhs);
   }
   for (int a = 0; a < k; ++a) ws.a(S[a]) = x(a, 0), ws.b(S[a]) = x(a, 1);
@@ -136,7 +170,13 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
     }
     f.setZero();
     for (std::size_t a = 0; a < S.size(); ++a) f(S[a]) = rs.f_S(a);
-    const Eigen::VectorXd g = p.initial_gap + p.compliance * f - rs.delta * Eigen::VectorXd::Ones(m);
+    // Gaps: only the loaded columns contribute.
+    Eigen::VectorXd g = p.initial_gap.array() - rs.delta;
+    if (contiguous(S)) {
+      g.noalias() += p.compliance.middleCols(S[0], static_cast<Eigen::Index>(S.size())) * rs.f_S;
+    } else {
+      g.noalias() += p.compliance * f;
+    }
     const double gtol = opt.gap_tolerance * std::max(std::abs(rs.delta), 1e-12);
     const double ftol = 1e-13 * p.load_N;
 

@@ -20,8 +20,20 @@ constexpr double kAtRestTol = 1e-9;
 constexpr double kStaticTol = 0.005;
 // Issue 6 item 5: with relaxation, approach of the relaxed static solution.
 constexpr double kRelaxedTol = 0.01;
-// Creep monotonicity: integration noise allowed per sample (atol 0.1 um).
-constexpr double kMonotoneSlack_m = 2e-7;
+// Creep monotonicity is checked on 0.2 s block means: the hub bounce (~22 Hz, lightly damped)
+// leaves a few um in a block mean; 10 um is 0.07 % of the sinking.
+constexpr double kMonotoneSlack_m = 1e-5;
+constexpr double kBlock_s = 0.2;
+
+/// Mean of a sample quantity over [t0, t1).
+template <class F>
+double mean_over(const TransientResult& r, double t0, double t1, F get) {
+  double s = 0;
+  int n = 0;
+  for (const auto& x : r.samples)
+    if (x.t_s >= t0 && x.t_s < t1 + 1e-12) s += get(x), ++n;
+  return n ? s / n : NAN;
+}
 // Eq. (22) vs the dashpots given: the contact set breathes with the bounce (a few units at 5 mm
 // resolution), so the effective damping differs from the static-contact sum by some percent.
 constexpr double kViscosityTol = 0.10;
@@ -51,39 +63,42 @@ TEST(TransientTest, AtRestModelEqualsStaticKernel) {
 TEST(TransientTest, LoadHoldWithoutRelaxationEndsAtStaticFootprint) {
   const TransientModel M = model_with(coarse({"transient.relaxation=false",
                                               "transient.load_hold.load_N=4000",
-                                              "transient.load_hold.ramp_rate_N_s=8000",
+                                              "transient.load_hold.ramp_rate_N_s=4000",
                                               "transient.load_hold.hold_s=1.0"}));
   const TransientResult r = run_transient(M, Scenario::load_hold);
   ASSERT_TRUE(r.ok()) << r.message;
   const FootprintResult s = solve_footprint(M.tyre, LoadCase{4000, 0});
   ASSERT_TRUE(s.converged);
-  const auto& fin = r.samples.back();
-  EXPECT_NEAR(fin.sinking_m / s.sinking_m, 1.0, kStaticTol);
-  EXPECT_NEAR(fin.contact_length_m / s.contact_length_m, 1.0, kStaticTol);
+  // Mean over the last 0.2 s (about four periods of the lightly damped hub bounce).
+  const double T = r.simulated_s;
+  const double sink = mean_over(r, T - kBlock_s, T, [](auto& x) { return x.sinking_m; });
+  const double len = mean_over(r, T - kBlock_s, T, [](auto& x) { return x.contact_length_m; });
+  EXPECT_NEAR(sink / s.sinking_m, 1.0, kStaticTol);
+  EXPECT_NEAR(len / s.contact_length_m, 1.0, kStaticTol);
   EXPECT_GT(r.contact_events, 0);
 }
 
 TEST(TransientTest, CreepIsMonotoneAndApproachesRelaxedStatic) {
-  // tan(delta) 0.15 at 0.2 Hz: tread time constant 0.12 s, visible during a 1.2 s hold.
+  // tan(delta) 0.15 at 0.1 Hz: tread time constant 0.24 s; a 0.1 s ramp, then a 2 s hold.
   const TransientModel M = model_with(coarse({"transient.relaxation=true",
-                                              "transient.tread_reference_frequency_hz=0.2",
+                                              "transient.tread_reference_frequency_hz=0.1",
                                               "transient.load_hold.load_N=4000",
-                                              "transient.load_hold.ramp_rate_N_s=8000",
-                                              "transient.load_hold.hold_s=1.2"}));
+                                              "transient.load_hold.ramp_rate_N_s=40000",
+                                              "transient.load_hold.hold_s=2.0"}));
   const TransientResult r = run_transient(M, Scenario::load_hold);
   ASSERT_TRUE(r.ok()) << r.message;
-  const double t_hold = 0.5 + 0.1;  // after the ramp and the first bounce
-  double prev = -1, first = -1;
-  for (const auto& s : r.samples) {
-    if (s.t_s < t_hold) continue;
-    if (first < 0) first = s.sinking_m;
-    if (prev >= 0) EXPECT_GE(s.sinking_m, prev - kMonotoneSlack_m) << "t = " << s.t_s;
-    prev = s.sinking_m;
-  }
+  const double t_hold = 0.1, T = r.simulated_s;
+  std::vector<double> blocks;
+  for (double t0 = t_hold; t0 + kBlock_s <= T + 1e-9; t0 += kBlock_s)
+    blocks.push_back(mean_over(r, t0, t0 + kBlock_s, [](auto& x) { return x.sinking_m; }));
+  ASSERT_GE(blocks.size(), 5u);
+  for (std::size_t b = 1; b < blocks.size(); ++b)
+    EXPECT_GE(blocks[b], blocks[b - 1] - kMonotoneSlack_m) << "block " << b;
   const FootprintResult st = solve_footprint(M.tyre, LoadCase{4000, 0});
-  EXPECT_GT(prev - first, 10 * kMonotoneSlack_m);  // it does creep
-  EXPECT_NEAR(prev / st.sinking_m, 1.0, kRelaxedTol);
-  EXPECT_NEAR(r.samples.back().contact_length_m / st.contact_length_m, 1.0, kRelaxedTol);
+  EXPECT_GT(blocks.back() - blocks.front(), 0.01 * st.sinking_m);  // it does creep
+  EXPECT_NEAR(blocks.back() / st.sinking_m, 1.0, kRelaxedTol);
+  const double len = mean_over(r, T - kBlock_s, T, [](auto& x) { return x.contact_length_m; });
+  EXPECT_NEAR(len / st.contact_length_m, 1.0, kRelaxedTol);
 }
 
 double rolling_resistance(const std::vector<std::string>& extra, double* centre = nullptr) {
@@ -109,9 +124,13 @@ TEST(TransientTest, RollingShiftsPressureForwardAndResistanceBehaves) {
   const double rr_damped =
       rolling_resistance(with({"transient.rolling.speed_km_h=60", "transient.modal_damping_scale=2"}));
   EXPECT_GT(rr_damped, rr);
-  const double rr_lossy =
-      rolling_resistance(with({"transient.rolling.speed_km_h=60", "tread.tan_delta=0.3"}));
-  EXPECT_GT(rr_lossy, rr);
+  // tan(delta) at 30 km/h: the Kelvin-Voigt time constant tan(delta)/Omega_ref (2.4 ms) stays
+  // below the patch transit time, where the tread's loss grows with c. (At 60 km/h the default
+  // tread is past its loss peak and doubling c lowers the loss; see docs/transient.md.)
+  const double rr30 = rolling_resistance(with({"transient.rolling.speed_km_h=30"}));
+  const double rr30_lossy =
+      rolling_resistance(with({"transient.rolling.speed_km_h=30", "tread.tan_delta=0.3"}));
+  EXPECT_GT(rr30_lossy, rr30);
   const double rr_slow = rolling_resistance(with({"transient.rolling.speed_km_h=1"}));
   EXPECT_LT(std::abs(rr_slow), 0.1 * rr);
 }

@@ -44,7 +44,7 @@ struct TransientSettings {
   double instantaneous_stiffness_ratio = 20; ///< glassy / relaxed tread stiffness, > 1
   double modal_damping_scale = 1;    ///< multiplies every modal damping ratio (0 = undamped)
   double output_step_s = 0.01;
-  double relative_tolerance = 1e-6;
+  double relative_tolerance = 1e-5;
   struct LoadHold { double load_N = 4000, ramp_rate_N_s = 4000, hold_s = 120; } load_hold;
   struct FreeVibration { double load_N = 4000, initial_load_N = 5000, duration_s = 1; } free_vibration;
   struct Rolling { double load_N = 4000, speed_m_s = 60 / 3.6, ramp_s = 1, duration_s = 3; } rolling;
