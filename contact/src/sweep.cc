@@ -130,13 +130,7 @@ bool is_sweep_condition(const std::string& key) {
 
 SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
                            const std::vector<std::string>& overrides) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::Exception& e) {
-    throw InputError({name, e.mark.line >= 0 ? e.mark.line + 1 : 0, ""},
-                     "YAML syntax error: " + e.msg);
-  }
+  YAML::Node root = parse_yaml(yaml, name);
   if (!root || root.IsNull()) {
     throw InputError({name, 1, ""}, "empty sweep file: expected base:, grid: and output:");
   }

@@ -86,15 +86,18 @@ ConfigTree ConfigTree::load(const std::string& path, const std::vector<std::stri
   return from_string(buf.str(), path, overrides);
 }
 
-ConfigTree ConfigTree::from_string(const std::string& yaml, const std::string& name,
-                                   const std::vector<std::string>& overrides) {
-  YAML::Node root;
+YAML::Node parse_yaml(const std::string& text, const std::string& name) {
   try {
-    root = YAML::Load(yaml);
+    return YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError({name, e.mark.line >= 0 ? e.mark.line + 1 : 0, ""},
                      "YAML syntax error: " + e.msg);
   }
+}
+
+ConfigTree ConfigTree::from_string(const std::string& yaml, const std::string& name,
+                                   const std::vector<std::string>& overrides) {
+  const YAML::Node root = parse_yaml(yaml, name);
   ConfigTree tree;
   tree.state_ = std::make_shared<State>();
   init_state(root, name, overrides, tree.state_.get());

@@ -20,6 +20,9 @@ namespace modaltyre {
 
 class ConfigSection;
 
+/// Parses YAML text; a syntax error is an InputError naming `name` and the line.
+YAML::Node parse_yaml(const std::string& text, const std::string& name);
+
 class ConfigTree {
  public:
   /// Loads a YAML file and applies overrides of the form "a.b.c=value" (value parsed as YAML).
