@@ -112,8 +112,9 @@ TEST(Footprint, NearlyRigidCarcassGivesWinklerPressureOnTheChord) {
   ASSERT_TRUE(r.converged);
   const double R = m.config.outer_radius_m, d = r.sinking_m;
   const double chord = 2 * std::sqrt(2 * R * d - d * d);
-  // One unit of discretisation at each edge.
-  EXPECT_NEAR(r.contact_length_m, chord, 2 * m.unit_length_m);
+  // Edges are interpolated (exact for a pure Winkler layer); the residual carcass compliance
+  // shortens the patch by about a third of a unit here, so half a unit bounds it.
+  EXPECT_NEAR(r.contact_length_m, chord, 0.5 * m.unit_length_m);
   // Centre unit: tread spring k_r against the approach; the residual carcass compliance is
   // 0.1 % of the measured one, small against the tread's, hence 2 % tolerance.
   const auto& centre = r.units[r.units.size() / 2];
