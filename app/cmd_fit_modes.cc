@@ -90,7 +90,7 @@ void plot_modes(const modal::HammerData& data, const modal::ModeIdentification& 
                 const std::string& path) {
   PlotFigure fig;
   fig.width_px = 1200;
-  fig.height_px = 260;
+  fig.height_px = 300;
   for (std::size_t i = 0; i < id.modes.size(); ++i) {
     const auto& m = id.modes[i];
     const auto& raw = data.modes[i];
@@ -114,6 +114,9 @@ void plot_modes(const modal::HammerData& data, const modal::ModeIdentification& 
     }
     if (rot) pts = PlotSeries{"tangential, measured", pts.x, raw.tangential, "points"};
     p.series = {pts, fit};
+    p.key = "below horizontal";
+    p.xmin = 0;
+    p.xmax = 360;
     fig.panels.push_back(p);
   }
   render_plot(fig, path);

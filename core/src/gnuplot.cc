@@ -49,7 +49,7 @@ void render_plot(const PlotFigure& figure, const std::string& path) {
   gp << "set terminal " << terminal << " size " << figure.width_px * (cols > 1 ? 1 : 1) << ","
      << figure.height_px * rows << "\n";
   gp << "set output " << quote(tmp_out.string()) << "\n";
-  gp << "set grid lc rgb '#dddddd'\nset key top left box opaque\n";
+  gp << "set grid lc rgb '#dddddd'\n";
   if (n > 1) gp << "set multiplot layout " << rows << "," << cols << "\n";
   {
     std::ofstream d(data);
@@ -57,6 +57,12 @@ void render_plot(const PlotFigure& figure, const std::string& path) {
     int block = 0;
     for (const auto& panel : figure.panels) {
       gp << "set title " << quote(panel.title) << "\n";
+      gp << "set key " << panel.key << "\n";
+      if (panel.xmax > panel.xmin) {
+        gp << "set xrange [" << panel.xmin << ":" << panel.xmax << "]\n";
+      } else {
+        gp << "set autoscale x\n";
+      }
       gp << "set xlabel " << quote(panel.xlabel) << "\nset ylabel " << quote(panel.ylabel) << "\n";
       std::string plot = "plot ";
       for (std::size_t s = 0; s < panel.series.size(); ++s) {

@@ -18,6 +18,8 @@ struct PlotPanel {
   std::string xlabel;  ///< with unit, e.g. "x along the road [mm]"
   std::string ylabel;
   std::vector<PlotSeries> series;
+  std::string key = "top left box opaque";  ///< gnuplot legend placement, e.g. "below"
+  double xmin = 0, xmax = 0;                ///< fixed x range when xmax > xmin
 };
 
 struct PlotFigure {
