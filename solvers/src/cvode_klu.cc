@@ -1,5 +1,7 @@
 #include "modaltyre/solvers/cvode_klu.h"
 
+#include <cstdlib>
+
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -235,7 +237,10 @@ OdeStatus CvodeKlu::advance(double t_out) {
     ++I.root_returns;
   } else if (flag < 0) {
     st.outcome = OdeOutcome::failed;
-    st.message = "CVODE flag " + std::to_string(flag) + " (" + CVodeGetReturnFlagName(flag) + ")";
+    // CVodeGetReturnFlagName returns a malloc'ed string that the caller frees.
+    char* name = CVodeGetReturnFlagName(flag);
+    st.message = "CVODE flag " + std::to_string(flag) + " (" + (name ? name : "?") + ")";
+    std::free(name);
     if (!I.last_error.empty()) st.message += ": " + I.last_error;
     if (!I.callback_error.empty()) st.message += ": " + I.callback_error;
   }
