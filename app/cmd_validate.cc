@@ -58,6 +58,7 @@ nlohmann::json to_json(const contact::ValidationReport& rep) {
             {"observables", c.observables},
             {"initial", initial},
             {"rms_rel_residual", round_sig(c.rms_rel_residual, 8)},
+            {"converged", c.converged},
             {"evaluations", c.evaluations}}}};
 }
 
