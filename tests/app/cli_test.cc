@@ -18,12 +18,15 @@
 #include <vector>
 
 #include "cli_runner.h"
+#include "../support/hammer_lines.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 using modaltyre_test::slurp;
+using modaltyre_test::hammer_lines;
+using modaltyre_test::set_field;
 constexpr double kPi = 3.14159265358979323846;
 
 class Cli : public modaltyre_test::CliFixture {
@@ -47,19 +50,6 @@ class Cli : public modaltyre_test::CliFixture {
 
 };
 
-/// Valid 12-point hammer lines (line 1 = header; mode m point i on line 2 + 12 m + i).
-std::vector<std::string> hammer_lines(int N = 12, int modes = 2) {
-  std::vector<std::string> l = {"mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential"};
-  for (int m = 0; m < modes; ++m)
-    for (int i = 0; i < N; ++i) {
-      const double th = 2 * kPi * i / N;
-      std::ostringstream s;
-      s << m + 1 << ',' << 100 + 20 * m << ",0.03," << i + 1 << ',' << 360.0 * i / N << ','
-        << 0.6 * std::cos(2 * th) << ',' << 0.3 * std::sin(2 * th);
-      l.push_back(s.str());
-    }
-  return l;
-}
 
 std::string join(const std::vector<std::string>& l) {
   std::string s;
@@ -67,18 +57,6 @@ std::string join(const std::vector<std::string>& l) {
   return s;
 }
 
-void set_field(std::vector<std::string>& l, int line, int col, const std::string& v) {
-  std::vector<std::string> f;
-  std::stringstream in(l[line - 1]);
-  for (std::string c; std::getline(in, c, ',');) f.push_back(c);
-  f[col] = v;
-  std::string out;
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    if (i) out.push_back(',');
-    out.append(f[i]);
-  }
-  l[line - 1] = out;
-}
 
 std::string loc(const std::string& path, int line) { return path + ":" + std::to_string(line); }
 

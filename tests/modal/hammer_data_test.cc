@@ -1,5 +1,6 @@
 // Hammer-file validation: every defect a researcher's file can have is an InputError naming the
 // file, and the line and column where they apply; a good file reads back sorted by angle.
+#include "../support/hammer_lines.h"
 #include "modaltyre/modal/hammer_data.h"
 
 #include <gtest/gtest.h>
@@ -18,35 +19,13 @@
 namespace modaltyre::modal {
 namespace {
 
+using modaltyre_test::hammer_lines;
+using modaltyre_test::set_field;
+
 namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
 
-/// Lines of a valid file: `modes` modes of order 2 at N equally spaced points (line 1 = header,
-/// mode m point i on line 2 + m*N + i).
-std::vector<std::string> good_lines(int N = 12, int modes = 2) {
-  std::vector<std::string> l = {"mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential"};
-  for (int m = 0; m < modes; ++m) {
-    for (int i = 0; i < N; ++i) {
-      const double th = 2 * kPi * i / N;
-      std::ostringstream s;
-      s << m + 1 << ',' << 100 + 20 * m << ",0.03," << i + 1 << ',' << 360.0 * i / N << ','
-        << 0.6 * std::cos(2 * th) << ',' << 0.3 * std::sin(2 * th);
-      l.push_back(s.str());
-    }
-  }
-  return l;
-}
 
-/// Replaces field `col` (0-based) of line `line` (1-based).
-void set_field(std::vector<std::string>& l, int line, int col, const std::string& v) {
-  std::vector<std::string> f;
-  std::stringstream in(l[line - 1]);
-  for (std::string c; std::getline(in, c, ',');) f.push_back(c);
-  f[col] = v;
-  std::string out;
-  for (std::size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + f[i];
-  l[line - 1] = out;
-}
 
 class HammerData : public ::testing::Test {
  protected:
@@ -97,7 +76,7 @@ class HammerData : public ::testing::Test {
 // A valid file: N, modes, frequencies and angle-sorted shapes come back (rows may be shuffled,
 // angles may be given outside [0, 360)).
 TEST_F(HammerData, ReadsValidFileSortedByAngle) {
-  auto l = good_lines(12, 2);
+  auto l = hammer_lines(12, 2);
   std::swap(l[3], l[7]);       // points out of order within mode 1
   set_field(l, 25, 4, "-30");  // mode 2, point 12 at 330 deg written as -30
   const auto d = read_hammer_csv(write(l));
@@ -114,25 +93,25 @@ TEST_F(HammerData, ReadsValidFileSortedByAngle) {
 }
 
 TEST_F(HammerData, MissingColumn) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   for (auto& s : l) s = s.substr(0, s.rfind(','));  // drop "tangential"
   expect_error(write(l), 1, "tangential");
 }
 
 TEST_F(HammerData, NaNCell) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   set_field(l, 5, 5, "nan");
   expect_error(write(l), 5, "radial");
 }
 
 TEST_F(HammerData, InfCell) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   set_field(l, 9, 6, "-inf");
   expect_error(write(l), 9, "tangential");
 }
 
 TEST_F(HammerData, TextInNumberColumn) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   set_field(l, 16, 1, "120Hz");
   expect_error(write(l), 16, "freq_hz");
 }
@@ -140,61 +119,61 @@ TEST_F(HammerData, TextInNumberColumn) {
 // A point misplaced by 10 degrees of a 30-degree spacing: the fit of eq. 20-21 assumes equal
 // spacing, so this is refused at the mode's first line.
 TEST_F(HammerData, UnequalAngularSpacing) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   set_field(l, 4, 4, "70");  // mode 1 point 3: 60 -> 70 deg
   expect_error(write(l), 2, "angle_deg", "equally spaced");
 }
 
 TEST_F(HammerData, DuplicatePoint) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   set_field(l, 6, 3, "3");  // mode 1: point 4 renumbered as point 3 (line 4)
   expect_error(write(l), 6, "point", "line 4");
 }
 
 TEST_F(HammerData, TwoPointsAtSameAngle) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   set_field(l, 6, 4, "60");  // mode 1 point 5 at the angle of point 3
   expect_error(write(l), 2, "angle_deg");
 }
 
 // Fewer than 6 points cannot resolve orders 0..2.
 TEST_F(HammerData, TooFewPoints) {
-  expect_error(write(good_lines(4, 2)), 2, "point", "at least 6");
+  expect_error(write(hammer_lines(4, 2)), 2, "point", "at least 6");
 }
 
 // Every mode must be measured at the same points.
 TEST_F(HammerData, ModeWithFewerPointsThanOthers) {
-  auto l = good_lines(12, 3);
+  auto l = hammer_lines(12, 3);
   l.erase(l.begin() + 14 + 5);  // mode 2 (lines 14-25) loses one point
   expect_error(write(l), 14, "point", "mode 2 has 11 points");
 }
 
 // Damping written as a percentage is refused (seed 001 Table 2 gives percentages).
 TEST_F(HammerData, DampingAsPercentage) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   for (int line = 2; line <= 13; ++line) set_field(l, line, 2, "4.5");
   expect_error(write(l), 2, "damping_ratio", "fraction");
 }
 
 // One mode with two frequencies is an inconsistent file.
 TEST_F(HammerData, InconsistentFrequencyWithinMode) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   set_field(l, 7, 1, "101");
   expect_error(write(l), 7, "freq_hz");
 }
 
 TEST_F(HammerData, NonPositiveFrequencyAndBadModeNumber) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   set_field(l, 2, 1, "0");
   expect_error(write(l), 2, "freq_hz");
-  l = good_lines();
+  l = hammer_lines();
   set_field(l, 3, 0, "1.5");
   expect_error(write(l, "h2.csv"), 3, "mode");
 }
 
 TEST_F(HammerData, EmptyFile) { expect_error(write_raw(""), 0, "", "empty"); }
 
-TEST_F(HammerData, HeaderOnly) { expect_error(write({good_lines()[0]}), 0, "", "no data"); }
+TEST_F(HammerData, HeaderOnly) { expect_error(write({hammer_lines()[0]}), 0, "", "no data"); }
 
 TEST_F(HammerData, DirectoryGiven) {
   const auto d = (dir_ / "folder.csv").string();
@@ -216,12 +195,12 @@ TEST_F(HammerData, BinaryBytes) {
 
 // Non-UTF-8 text (Latin-1 degree sign and a UTF-16 file) is refused at its line.
 TEST_F(HammerData, NonUtf8Bytes) {
-  auto l = good_lines();
+  auto l = hammer_lines();
   set_field(l, 3, 4, "30\xB0");  // "30°" in Latin-1
   expect_error(write(l), 3, "angle_deg");
 
   std::string utf16 = "\xFF\xFE";
-  for (char c : good_lines()[0] + "\n") utf16 += std::string{c, '\0'};
+  for (char c : hammer_lines()[0] + "\n") utf16 += std::string{c, '\0'};
   expect_error(write_raw(utf16, "u16.csv"), 1, "");
 }
 
