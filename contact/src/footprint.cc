@@ -1,5 +1,6 @@
 #include "modaltyre/contact/footprint.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -8,19 +9,39 @@
 
 namespace modaltyre::contact {
 
+PatchOperator static_operator(const TyreModel& model, double ratio) {
+  PatchOperator op;
+  op.kernels = &model.kernels;
+  op.tread_radial_lag = {1.0 / model.k_radial_N_m};
+  op.tread_tangential_compliance = 1.0 / model.k_tangential_N_m;
+  op.width_m = model.config.tread.width_m;
+  op.horizontal_ratio = ratio;
+  if (ratio == 0.0) {
+    op.compliance = model.vertical_compliance;
+  } else {
+    op.compliance = model.vertical_compliance + ratio * vertical_from_horizontal(model);
+    op.symmetric = false;
+  }
+  return op;
+}
+
 FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
                                 const std::vector<char>* warm_active) {
   MODALTYRE_CHECK(load.load_N > 0, "load must be positive");
+  return solve_patch(model, static_operator(model, load.horizontal_force_N / load.load_N), load,
+                     warm_active);
+}
+
+FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const LoadCase& load,
+                            const std::vector<char>* warm_active) {
+  MODALTYRE_CHECK(load.load_N > 0, "load must be positive");
+  MODALTYRE_CHECK(op.kernels != nullptr && !op.tread_radial_lag.empty(), "incomplete operator");
   FootprintResult r;
   r.load = load;
-  const double ratio = load.horizontal_force_N / load.load_N;
+  const double ratio = op.horizontal_ratio;
   solvers::ContactProblem p;
-  if (ratio == 0.0) {
-    p.compliance = model.vertical_compliance;
-  } else {
-    p.compliance = model.vertical_compliance + ratio * vertical_from_horizontal(model);
-    p.symmetric = false;
-  }
+  p.compliance = std::move(op.compliance);
+  p.symmetric = op.symmetric;
   p.initial_gap = model.sag;
   p.load_N = load.load_N;
   solvers::ContactOptions opt;
@@ -58,21 +79,29 @@ FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
     ft[j] = f(j) * sn + fx * c;
   }
   const double R0 = model.config.outer_radius_m;
-  const double width = model.config.tread.width_m;
+  const double width = op.width_m;
   r.contour_x_m.resize(m);
   r.contour_height_m.resize(m);
   // Displacements u = H f (eq. 1) plus the tread's own (eq. 6): loop over loaded units outside so
   // that the inner loop runs over contiguous kernel lags.
-  std::vector<double> ur(m), ut(m);
-  for (int i = 0; i < m; ++i) ur[i] = fr[i] / model.k_radial_N_m, ut[i] = ft[i] / model.k_tangential_N_m;
-  const auto& K = model.kernels;
+  std::vector<double> ur(m, 0.0), ut(m);
+  const int tread_lags = std::min<int>(static_cast<int>(op.tread_radial_lag.size()), m);
+  for (int i = 0; i < m; ++i) {
+    ut[i] = ft[i] * op.tread_tangential_compliance;
+    for (int l = 1 - tread_lags; l < tread_lags; ++l) {
+      const int j = i + l;
+      if (j >= 0 && j < m) ur[i] += op.tread_radial_lag[std::abs(l)] * fr[j];
+    }
+  }
+  const auto& K = *op.kernels;
+  const double cs = op.carcass_scale;
   for (int j = 0; j < m; ++j) {
     if (!s.active[j]) continue;
     const double* rr = K.r_from_r.data() + (K.lags - 1 - j);
     const double* rt = K.r_from_t.data() + (K.lags - 1 - j);
     const double* tr = K.t_from_r.data() + (K.lags - 1 - j);
     const double* tt = K.t_from_t.data() + (K.lags - 1 - j);
-    const double frj = fr[j], ftj = ft[j];
+    const double frj = cs * fr[j], ftj = cs * ft[j];
     for (int i = 0; i < m; ++i) {
       ur[i] += rr[i] * frj + rt[i] * ftj;
       ut[i] += tr[i] * frj + tt[i] * ftj;

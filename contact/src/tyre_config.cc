@@ -110,8 +110,17 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   T.cleat.height_m = cl.positive("height_mm", T.cleat.height_m * 1e3, 200) * 1e-3;
   T.cleat.length_m = cl.positive("length_mm", T.cleat.length_m * 1e3, 2000) * 1e-3;
   T.cleat.ramp_s = cl.number("ramp_s", T.cleat.ramp_s, 0, 1e6);
+  c.effects = read_effects(root.section("effects"));
   tree.reject_unknown_keys();
   return c;
+}
+
+OperatingConditions TyreConfig::default_conditions(double load_N) const {
+  OperatingConditions oc;
+  oc.load_N = load_N;
+  oc.horizontal_force_N = horizontal_force_N;
+  oc.pressure_kPa = inflation_pressure_Pa * 1e-3;
+  return oc;
 }
 
 TyreConfig load_tyre_config(const std::string& path, const std::vector<std::string>& overrides) {

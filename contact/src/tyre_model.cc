@@ -50,10 +50,23 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
     m.theta[i] = (i - m.half_window) * m.dtheta_rad;
     m.sag(i) = R0 * (1 - std::cos(m.theta[i]));
   }
-  m.vertical_compliance.resize(cand, cand);
+  m.vertical_compliance = carcass_vertical_compliance(m.kernels, m.theta);
+  for (int j = 0; j < cand; ++j) {
+    // Tread in series (seed 001 eq. 6), only under the unit's own force.
+    const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
+    m.vertical_compliance(j, j) += cj * cj / m.k_radial_N_m + sj * sj / m.k_tangential_N_m;
+  }
+  // Symmetrise away rounding so that Cholesky sees an exactly symmetric matrix.
+  m.vertical_compliance = 0.5 * (m.vertical_compliance + m.vertical_compliance.transpose()).eval();
+  return m;
+}
+
+Eigen::MatrixXd carcass_vertical_compliance(const modal::LagKernels& K,
+                                            const std::vector<double>& theta) {
+  const int cand = static_cast<int>(theta.size());
+  Eigen::MatrixXd C(cand, cand);
   std::vector<double> cosv(cand), sinv(cand);
-  for (int i = 0; i < cand; ++i) cosv[i] = std::cos(m.theta[i]), sinv[i] = std::sin(m.theta[i]);
-  const auto& K = m.kernels;
+  for (int i = 0; i < cand; ++i) cosv[i] = std::cos(theta[i]), sinv[i] = std::sin(theta[i]);
   const int mid = K.lags - 1;
   for (int j = 0; j < cand; ++j) {
     const double cj = cosv[j], sj = sinv[j];
@@ -62,14 +75,10 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
       // Unit vertical force at j: f_r = cos theta_j, f_t = sin theta_j (seed 001 eq. 12).
       const double ur = K.r_from_r[l] * cj + K.r_from_t[l] * sj;
       const double ut = K.t_from_r[l] * cj + K.t_from_t[l] * sj;
-      m.vertical_compliance(i, j) = ur * cosv[i] + ut * sinv[i];
+      C(i, j) = ur * cosv[i] + ut * sinv[i];
     }
-    // Tread in series (seed 001 eq. 6), only under the unit's own force.
-    m.vertical_compliance(j, j) += cj * cj / m.k_radial_N_m + sj * sj / m.k_tangential_N_m;
   }
-  // Symmetrise away rounding so that Cholesky sees an exactly symmetric matrix.
-  m.vertical_compliance = 0.5 * (m.vertical_compliance + m.vertical_compliance.transpose()).eval();
-  return m;
+  return C;
 }
 
 Eigen::MatrixXd vertical_from_horizontal(const TyreModel& m) {

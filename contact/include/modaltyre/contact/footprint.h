@@ -46,6 +46,31 @@ struct FootprintResult {
   double vertical_stiffness_N_m() const { return load.load_N / sinking_m; }
 };
 
+/// The linear operator of one load case on the model's candidate units: the carcass kernels
+/// (static or rolling) with a scale, the tread's compliance and the assembled vertical
+/// compliance the contact problem sees. solve_footprint() uses the model's own; the effects of
+/// predictor.h assemble others.
+struct PatchOperator {
+  const modal::LagKernels* kernels = nullptr;  ///< carcass transfer functions per lag
+  double carcass_scale = 1;                     ///< multiplies every carcass kernel
+  /// Tread radial compliance between units l apart, l = 0, 1, ... (one entry: independent
+  /// springs, seed 001 eq. 6) [m/N].
+  std::vector<double> tread_radial_lag;
+  double tread_tangential_compliance = 0;  ///< per unit [m/N]
+  double width_m = 0;                      ///< patch width for the pressure
+  double horizontal_ratio = 0;             ///< F_x / F_z
+  Eigen::MatrixXd compliance;              ///< vertical compliance of the candidates [m/N]
+  bool symmetric = true;
+};
+
+/// The model's own operator for a load case (static kernels, tread springs of the config).
+PatchOperator static_operator(const TyreModel& model, double horizontal_ratio);
+
+/// Solves one load case with a given operator (F_x = load.horizontal_force_N must match the
+/// operator's horizontal_ratio).
+FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const LoadCase& load,
+                            const std::vector<char>* warm_active = nullptr);
+
 FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
                                 const std::vector<char>* warm_active = nullptr);
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/contact/effects.h"
 #include "modaltyre/core/config_tree.h"
 
 namespace modaltyre::contact {
@@ -72,6 +73,11 @@ struct TyreConfig {
   double horizontal_force_N = 0;
   ValidationSettings validation;
   TransientSettings transient;
+  EffectsConfig effects;  ///< section effects:, every effect off by default
+
+  /// The conditions a row takes when it does not state them: the config's load, horizontal
+  /// force and inflation pressure, no hold, standing, loading branch, rigid road.
+  OperatingConditions default_conditions(double load_N) const;
 };
 
 /// Reads every key of the tree into a TyreConfig; unknown keys, wrong types and out-of-range

@@ -40,6 +40,11 @@ struct TyreModel {
   int candidates() const { return static_cast<int>(theta.size()); }
 };
 
+/// Vertical compliance of the carcass alone (no tread) between the candidate units at angles
+/// `theta`, from the transfer-function kernels (seed 001 eq. 1, 12) [m/N].
+Eigen::MatrixXd carcass_vertical_compliance(const modal::LagKernels& kernels,
+                                            const std::vector<double>& theta);
+
 /// Vertical displacement at i per unit horizontal (+x) force at j [m/N]; built on demand (only
 /// load cases with a horizontal force need it).
 Eigen::MatrixXd vertical_from_horizontal(const TyreModel& model);

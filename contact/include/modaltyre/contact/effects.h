@@ -1,0 +1,146 @@
+#pragma once
+// Switchable model effects (section `effects:` of the tyre config) and the operating conditions
+// a measurement row or sweep case is taken at.
+//
+// Every effect is off by default; `effects.NAME.enabled: true` switches it on. Parameters are
+// stored in the units their keys name (kPa, mm, s, N, MPa). What each effect does to the static
+// footprint is stated in docs/effects.md and at its use in contact/src/predictor.cc:
+//   inflation_pressure  carcass compliance x ((1 + p_test) / (1 + p))^exponent, p in bar
+//                       (seed 000 eq. 3, p_W in bar as chosen in docs/rheology.md)
+//   tread_relaxation    tread compliance x (1 + creep_ratio (1 - exp(-hold / time_constant)))
+//                       (seed 001 eq. 10: Kelvin-Voigt creep of the tread under a held load)
+//   dry_friction        Saint-Venant element in parallel: the elastic tyre carries F - F_f on
+//                       the loading branch and F + F_f on the unloading one (seed 000 eq. 13-16)
+//   load_stiffening     carcass compliance x (F / F_ref)^-exponent (seed 000 eq. 3: h ~ P^3/4
+//                       means a secant stiffness growing as P^1/4)
+//   tread_coupling      Pasternak tread layer: shear ties neighbouring tread units together
+//                       (coupling length l = sqrt(G h_shear / k)), instead of independent springs
+//   soil_compliance     Kelvin-Voigt soil layer under rows with surface = soil (seed 000 eq. 23),
+//                       static part: Winkler modulus E2 / layer depth
+//   rolling_speed       steady-rolling receptance of every mode at the row's speed (seed 001
+//                       eq. 2-5), modal damping x damping_scale: asymmetric pressure, rolling
+//                       resistance
+//   contact_width       patch width from the crown profile: w = min(max_width, 2 sqrt(2 R_c d)),
+//                       d the sinking; the tread's stiffness per unit length follows the width
+//   belt_flattening     extra foundation stiffness kappa of the doubly curved belt against
+//                       flattening, acting on harmonic orders >= 2 only:
+//                       c_k -> c_k / (1 + pi R kappa c_k)
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "modaltyre/core/config_tree.h"
+
+namespace modaltyre::contact {
+
+enum class EffectId {
+  inflation_pressure,
+  tread_relaxation,
+  dry_friction,
+  load_stiffening,
+  tread_coupling,
+  soil_compliance,
+  rolling_speed,
+  contact_width,
+  belt_flattening,
+};
+inline constexpr int kEffectCount = 9;
+
+struct EffectsConfig {
+  struct InflationPressure {
+    bool enabled = false;
+    double exponent = 1.0;                   ///< beta in ((1 + p_test) / (1 + p))^beta
+    double modal_test_pressure_kPa = 230;    ///< pressure of the hammer test (not fitted)
+  } inflation_pressure;
+  struct TreadRelaxation {
+    bool enabled = false;
+    double creep_ratio = 0.5;       ///< long-term / instantaneous tread compliance - 1
+    double time_constant_s = 30;    ///< tau = tan(delta) / Omega of seed 001 eq. (10)
+  } tread_relaxation;
+  struct DryFriction {
+    bool enabled = false;
+    double friction_force_N = 200;  ///< Saint-Venant limit force F_f
+  } dry_friction;
+  struct LoadStiffening {
+    bool enabled = false;
+    double exponent = 0.25;          ///< gamma; seed 000 eq. (3) implies 1/4
+    double reference_load_N = 4000;  ///< load where the modal test's stiffness holds (not fitted)
+  } load_stiffening;
+  struct TreadCoupling {
+    bool enabled = false;
+    double coupling_length_mm = 10;  ///< Pasternak length sqrt(G_shear h / k)
+  } tread_coupling;
+  struct SoilCompliance {
+    bool enabled = false;
+    double modulus_MPa = 2;    ///< deformation modulus E2 of the soil (seed 000 eq. 23)
+    double layer_mm = 200;     ///< depth of the deformable layer (not fitted: only E2/layer acts)
+  } soil_compliance;
+  struct RollingSpeed {
+    bool enabled = false;
+    double damping_scale = 1;  ///< multiplies the measured modal damping ratios when rolling
+  } rolling_speed;
+  struct ContactWidth {
+    bool enabled = false;
+    double crown_radius_mm = 150;  ///< transverse radius R_c of the loaded crown profile
+    double max_width_mm = 160;     ///< tread width: the patch cannot grow wider (not fitted)
+  } contact_width;
+  struct BeltFlattening {
+    bool enabled = false;
+    double stiffness_MPa = 1;  ///< kappa, N/mm per mm of circumference, on orders >= 2
+  } belt_flattening;
+
+  bool enabled(EffectId id) const;
+  bool& enabled(EffectId id);
+  bool any() const;
+};
+
+/// One parameter of an effect as listed by `modaltyre effects`.
+struct EffectParameterInfo {
+  std::string name;  ///< e.g. "exponent"; the config key is effects.EFFECT.name
+  std::string unit;  ///< "-" for dimensionless
+  double default_value = 0, min = 0, max = 0;
+  bool fitted = true;  ///< false: a stated reference value that `discover` does not fit
+  std::string meaning;
+  std::function<double&(EffectsConfig&)> ref;
+};
+
+struct EffectInfo {
+  EffectId id;
+  std::string name;
+  std::string description;
+  std::vector<std::string> observables;  ///< what it changes
+  std::string regime;                    ///< condition variable it acts through ("load_N", ...)
+  std::vector<EffectParameterInfo> parameters;
+
+  std::string key(const EffectParameterInfo& p) const { return "effects." + name + "." + p.name; }
+};
+
+/// Every effect, in EffectId order.
+const std::vector<EffectInfo>& effect_catalogue();
+const EffectInfo& effect_info(EffectId id);
+/// nullptr if no effect has that name.
+const EffectInfo* find_effect(const std::string& name);
+
+/// Conditions of one measurement row or sweep case (defaults: the config's).
+enum class Branch { loading, unloading };
+enum class Surface { rigid, soil };
+
+struct OperatingConditions {
+  double load_N = 0;
+  double horizontal_force_N = 0;
+  double pressure_kPa = 230;
+  double hold_s = 0;      ///< time the load has been held (0: measured right after loading)
+  double speed_kmh = 0;   ///< rolling speed (0: standing)
+  Branch branch = Branch::loading;
+  Surface surface = Surface::rigid;
+};
+
+/// Reads section `effects:` (unknown effect or parameter names, values outside the catalogue's
+/// [min, max] -> InputError naming file, line and key).
+EffectsConfig read_effects(const ConfigSection& effects);
+
+const char* branch_name(Branch b);
+const char* surface_name(Surface s);
+
+}  // namespace modaltyre::contact
