@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "footprint_report.h"
 #include "modaltyre/contact/footprint.h"
+#include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::app {
@@ -23,6 +24,31 @@ struct FootprintArgs {
   std::string plot;
 };
 
+// Footprints of the load cases. No effect on: the model's own operator, each load warm-started
+// from the previous (as always). With an effect on: FootprintPredictor at the config's default
+// conditions (its pressure, standing, loading branch, rigid road), so that the effects act on
+// what is printed exactly as they do in `sweep` and `validate`.
+std::vector<contact::Prediction> compute_cases(const contact::TyreModel& model,
+                                               const std::vector<contact::LoadCase>& cases) {
+  const contact::TyreConfig& config = model.config;
+  std::vector<contact::Prediction> out;
+  if (!config.effects.any()) {
+    for (auto& r : contact::solve_footprints(model, cases)) {
+      out.push_back(as_prediction(std::move(r), config));
+    }
+    return out;
+  }
+  const contact::FootprintPredictor predictor(model);
+  for (const auto& lc : cases) {
+    contact::OperatingConditions c = config.default_conditions(lc.load_N);
+    c.horizontal_force_N = lc.horizontal_force_N;
+    contact::Prediction p = predictor.predict(config, c);
+    p.footprint.load = lc;  // the applied load (dry_friction loads the elastic tyre with less)
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
 }  // namespace
 
 void register_footprint(CLI::App& app) {
@@ -30,7 +56,8 @@ void register_footprint(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "footprint",
       "Static footprint on a rigid flat road: sinking, contact length and pressure distribution "
-      "for each vertical load (load control, carcass and tread in series, seed 001).");
+      "for each vertical load (load control, carcass and tread in series, seed 001); effects "
+      "switched on in the config act at its default conditions.");
   cmd->add_option("CONFIG", a->config, "tyre config (YAML), e.g. configs/sf350.yaml")->required();
   cmd->add_option("--load", a->loads, "vertical load [N]; repeat for several (default: loads_N)");
   cmd->add_option("--fx", a->horizontal, "horizontal force at the axle [N], forward positive");
@@ -53,7 +80,7 @@ void register_footprint(CLI::App& app) {
       }
       cases.push_back({f, fx});
     }
-    const auto results = contact::solve_footprints(model, cases);
+    const auto results = compute_cases(model, cases);
     require_converged(results);
     if (!a->plot.empty()) plot_pressures(results, config, a->plot);
     if (a->json) {

@@ -55,8 +55,10 @@ void register_sweep(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "sweep",
       "Parameter sweep from a sweep file: static footprints for the Cartesian product of the "
-      "grid's condition (load_N, horizontal_force_N) and config-key values, in parallel, one CSV "
-      "row per case (identical for any thread count; failed cases are rows marked failed).");
+      "grid's condition (load_N, horizontal_force_N, pressure_kPa, hold_s, speed_kmh, branch, "
+      "surface) and config-key values (effects switched on with effects.NAME.enabled act), in "
+      "parallel, one CSV row per case (identical for any thread count; failed cases are rows "
+      "marked failed; readable as measured data by discover and validate).");
   cmd->add_option("SWEEP", a->sweep,
                   "sweep file (YAML: base, set, grid, output), e.g. configs/sweeps/table3_loads.yaml")
       ->required();

@@ -4,6 +4,7 @@
 
 #include "cli_support.h"
 #include "commands.h"
+#include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/validation.h"
 #include "modaltyre/core/gnuplot.h"
 
@@ -22,23 +23,51 @@ nlohmann::json opt_json(const std::optional<double>& v, double scale = 1.0) {
   return v ? nlohmann::json(round_sig(*v * scale, 8)) : nlohmann::json();
 }
 
+nlohmann::json conditions_json(const contact::OperatingConditions& c) {
+  return {{"load_N", c.load_N},
+          {"horizontal_force_N", c.horizontal_force_N},
+          {"pressure_kPa", c.pressure_kPa},
+          {"hold_s", c.hold_s},
+          {"speed_kmh", c.speed_kmh},
+          {"branch", contact::branch_name(c.branch)},
+          {"surface", contact::surface_name(c.surface)}};
+}
+
+nlohmann::json enabled_effects_json(const contact::EffectsConfig& effects) {
+  nlohmann::json names = nlohmann::json::array();
+  for (const auto& e : contact::effect_catalogue()) {
+    if (effects.enabled(e.id)) names.push_back(e.name);
+  }
+  return names;
+}
+
+nlohmann::json row_json(const contact::ValidationRow& r) {
+  nlohmann::json row = {
+      {"row", r.measured.row},
+      {"load_N", r.measured.load_N},
+      {"calibration", r.calibration},
+      {"measured",
+       {{"sinking_mm", opt_json(r.measured.sinking_mm)},
+        {"length_mm", opt_json(r.measured.length_mm)},
+        {"width_mm", opt_json(r.measured.width_mm)}}},
+      {"predicted",
+       {{"sinking_mm", round_sig(r.sinking_mm, 8)}, {"length_mm", round_sig(r.length_mm, 8)}}},
+      {"rel_error",
+       {{"sinking_mm", opt_json(r.sinking_rel_error)},
+        {"length_mm", opt_json(r.length_rel_error)}}}};
+  // Width is compared only where it was measured (the 2D model takes it as an input unless
+  // contact_width is on).
+  if (r.measured.width_mm) {
+    row["predicted"]["width_mm"] = round_sig(r.width_mm, 8);
+    row["rel_error"]["width_mm"] = opt_json(r.width_rel_error);
+  }
+  if (r.measured.conditions) row["conditions"] = conditions_json(*r.measured.conditions);
+  return row;
+}
+
 nlohmann::json to_json(const contact::ValidationReport& rep) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : rep.rows) {
-    rows.push_back({{"row", r.measured.row},
-                    {"load_N", r.measured.load_N},
-                    {"calibration", r.calibration},
-                    {"measured",
-                     {{"sinking_mm", opt_json(r.measured.sinking_mm)},
-                      {"length_mm", opt_json(r.measured.length_mm)},
-                      {"width_mm", opt_json(r.measured.width_mm)}}},
-                    {"predicted",
-                     {{"sinking_mm", round_sig(r.sinking_mm, 8)},
-                      {"length_mm", round_sig(r.length_mm, 8)}}},
-                    {"rel_error",
-                     {{"sinking_mm", opt_json(r.sinking_rel_error)},
-                      {"length_mm", opt_json(r.length_rel_error)}}}});
-  }
+  for (const auto& r : rep.rows) rows.push_back(row_json(r));
   nlohmann::json rms = nlohmann::json::object();
   for (const auto& [k, v] : rep.rms_rel_error) rms[k] = round_sig(v, 8);
   nlohmann::json calibrated = nlohmann::json::object();
@@ -49,6 +78,7 @@ nlohmann::json to_json(const contact::ValidationReport& rep) {
     initial[c.keys[i]] = c.initial_values[i];
   }
   return {{"config", rep.model.config.source},
+          {"effects", enabled_effects_json(rep.model.config.effects)},
           {"rows", rows},
           {"rms_rel_error", rms},
           {"predicted_rows", rep.predicted_rows},
@@ -78,8 +108,22 @@ void print_table(const contact::ValidationReport& rep, const std::string& measur
                 << c.initial_values[i] << ")\n";
     }
   }
+  if (rep.model.config.effects.any()) {
+    std::cout << "Effects on:";
+    for (const auto& e : enabled_effects_json(rep.model.config.effects)) {
+      std::cout << " " << e.get<std::string>();
+    }
+    std::cout << "\n";
+  }
+  if (rep.with_conditions) {
+    std::cout << "Each row is predicted at its own operating conditions (file columns; the "
+                 "config's where absent).\n";
+  }
+  bool width = false;
+  for (const auto& r : rep.rows) width = width || r.measured.width_mm.has_value();
   std::cout << "\n row  load_N  role         sinking_mm meas/pred    err%   length_mm meas/pred"
-               "    err%\n";
+               "    err%"
+            << (width ? "    width_mm meas/pred    err%" : "") << "\n";
   auto cell = [](const std::optional<double>& m, double p, const std::optional<double>& e) {
     char b[96];
     if (m) {
@@ -94,7 +138,9 @@ void print_table(const contact::ValidationReport& rep, const std::string& measur
     std::snprintf(head, sizeof head, " %3d  %6.0f  %-11s  ", r.measured.row, r.measured.load_N,
                   r.calibration ? "calibration" : "prediction");
     std::cout << head << cell(r.measured.sinking_mm, r.sinking_mm, r.sinking_rel_error) << "   "
-              << cell(r.measured.length_mm, r.length_mm, r.length_rel_error) << "\n";
+              << cell(r.measured.length_mm, r.length_mm, r.length_rel_error);
+    if (width) std::cout << "   " << cell(r.measured.width_mm, r.width_mm, r.width_rel_error);
+    std::cout << "\n";
   }
   std::cout << "\nRMS relative error over predicted rows:";
   for (const auto& [k, v] : rep.rms_rel_error) {
@@ -102,6 +148,24 @@ void print_table(const contact::ValidationReport& rep, const std::string& measur
               << " rows)";
   }
   std::cout << "\n";
+}
+
+// The model's curve at the config's conditions: through the predictor when an effect is on, so
+// that the curve shows what the rows were compared with.
+std::vector<contact::FootprintResult> model_curve(const contact::TyreModel& model,
+                                                  const std::vector<contact::LoadCase>& loads) {
+  if (!model.config.effects.any()) return contact::solve_footprints(model, loads);
+  const contact::FootprintPredictor predictor(model);
+  std::vector<contact::FootprintResult> out;
+  for (const auto& lc : loads) {
+    contact::OperatingConditions c = model.config.default_conditions(lc.load_N);
+    c.horizontal_force_N = lc.horizontal_force_N;
+    contact::Prediction p = predictor.predict(model.config, c);
+    p.footprint.converged = p.ok;  // a failed prediction is left out of the curve
+    p.footprint.load = lc;
+    out.push_back(std::move(p.footprint));
+  }
+  return out;
 }
 
 void plot_validation(const contact::ValidationReport& rep, const std::string& path) {
@@ -112,7 +176,7 @@ void plot_validation(const contact::ValidationReport& rep, const std::string& pa
   for (int i = 0; i <= n; ++i) {
     curve.push_back({0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n, rep.model.config.horizontal_force_N});
   }
-  const auto res = contact::solve_footprints(rep.model, curve);
+  const auto res = model_curve(rep.model, curve);
   PlotPanel ps{"Sinking versus load", "vertical load [kN]", "sinking [mm]", {}};
   PlotPanel pl{"Contact length versus load", "vertical load [kN]", "contact length [mm]", {}};
   PlotSeries ps_pred{"model", {}, {}, "lines"}, pl_pred{"model", {}, {}, "lines"};
@@ -155,13 +219,17 @@ void register_validate(CLI::App& app) {
       "(at most two parameters on at most two rows) and only the other rows count.");
   cmd->add_option("CONFIG", a->config, "tyre config (YAML)")->required();
   cmd->add_option("MEASURED", a->measured,
-                  "CSV with load_N and any of sinking_mm, length_mm, width_mm")
+                  "CSV with load_N and any of sinking_mm, length_mm, width_mm; optional "
+                  "condition columns pressure_kPa, hold_s, speed_kmh, horizontal_force_N, branch, "
+                  "surface (e.g. a sweep's output)")
       ->required();
   cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");
   cmd->add_flag("--json", a->json, "print JSON");
   cmd->add_option("--plot", a->plot, "draw sinking and length versus load (.svg or .png)");
   cmd->callback([a] {
-    const auto measured = contact::read_footprint_measurements(a->measured);
+    // The config decides how the file is read (effects need every row's conditions).
+    const auto config = contact::load_tyre_config(a->config, a->overrides);
+    const auto measured = contact::read_validation_measurements(a->measured, config);
     const auto rep = contact::validate_footprints(a->config, a->overrides, measured);
     if (!a->plot.empty()) plot_validation(rep, a->plot);
     if (a->json) {

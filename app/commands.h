@@ -11,6 +11,8 @@ void register_identify(CLI::App& app);
 void register_validate(CLI::App& app);
 void register_sweep(CLI::App& app);
 void register_transient(CLI::App& app);
+void register_effects(CLI::App& app);
+void register_discover(CLI::App& app);
 
 
 }  // namespace modaltyre::app

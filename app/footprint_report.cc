@@ -9,21 +9,49 @@
 
 namespace modaltyre::app {
 
-void require_converged(const std::vector<contact::FootprintResult>& results) {
-  for (const auto& r : results) {
-    if (!r.converged) {
+namespace {
+
+// Names of the effects switched on, in catalogue order.
+std::vector<std::string> enabled_effects(const contact::EffectsConfig& effects) {
+  std::vector<std::string> names;
+  for (const auto& e : contact::effect_catalogue()) {
+    if (effects.enabled(e.id)) names.push_back(e.name);
+  }
+  return names;
+}
+
+}  // namespace
+
+contact::Prediction as_prediction(contact::FootprintResult result,
+                                  const contact::TyreConfig& config) {
+  contact::Prediction p;
+  p.ok = result.converged;
+  p.message = result.message;
+  p.sinking_mm = result.sinking_m * 1e3;
+  p.length_mm = result.contact_length_m * 1e3;
+  p.width_mm = config.tread.width_m * 1e3;
+  p.elastic_load_N = result.load.load_N;
+  p.footprint = std::move(result);
+  return p;
+}
+
+void require_converged(const std::vector<contact::Prediction>& cases) {
+  for (const auto& p : cases) {
+    if (!p.ok) {
+      const auto& r = p.footprint;
       std::ostringstream msg;
       msg << "load case " << r.load.load_N << " N did not converge after " << r.iterations
-          << " iterations: " << r.message;
+          << " iterations: " << p.message;
       throw ComputationError(msg.str());
     }
   }
 }
 
 nlohmann::json footprint_json(const contact::TyreModel& model,
-                              const std::vector<contact::FootprintResult>& results) {
+                              const std::vector<contact::Prediction>& predictions) {
   nlohmann::json cases = nlohmann::json::array();
-  for (const auto& r : results) {
+  for (const auto& p : predictions) {
+    const auto& r = p.footprint;
     nlohmann::json units = nlohmann::json::array();
     for (const auto& u : r.units) {
       units.push_back({{"x_mm", round_sig(u.x_m * 1e3)},
@@ -42,6 +70,8 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
                      {"front_edge_x_mm", round_sig(r.front_edge_x_m * 1e3)},
                      {"vertical_stiffness_N_mm", round_sig(r.vertical_stiffness_N_m() * 1e-3)},
                      {"peak_pressure_kPa", round_sig(peak * 1e-3)},
+                     {"width_mm", round_sig(p.width_mm)},
+                     {"rolling_resistance_N", round_sig(p.rolling_resistance_N)},
                      {"converged", r.converged},
                      {"iterations", r.iterations},
                      {"residuals",
@@ -52,6 +82,7 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
   const auto& c = model.config;
   return {{"tyre", c.name},
           {"config", c.source},
+          {"effects", enabled_effects(c.effects)},
           {"model",
            {{"outer_radius_mm", c.outer_radius_m * 1e3},
             {"unit_length_mm", round_sig(model.unit_length_m * 1e3)},
@@ -64,19 +95,26 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
 }
 
 void print_footprint_table(const contact::TyreModel& model,
-                           const std::vector<contact::FootprintResult>& results) {
+                           const std::vector<contact::Prediction>& predictions) {
   const auto& c = model.config;
   std::cout << c.name << " (" << c.source << "): " << model.candidates()
             << " candidate units of " << fixed(model.unit_length_m * 1e3, 3)
             << " mm, modal orders 0.." << model.basis.max_order << " ("
             << model.basis.measured_terms << " measured modes)\n";
   for (const auto& w : model.basis.warnings) std::cout << "warning: " << w << "\n";
+  if (c.effects.any()) {
+    std::cout << "effects on:";
+    for (const auto& name : enabled_effects(c.effects)) std::cout << " " << name;
+    std::cout << " (at the config's conditions: " << fixed(c.inflation_pressure_Pa * 1e-3, 0)
+              << " kPa, standing, loading, rigid road)\n";
+  }
   std::cout << "\n  load_N  sinking_mm  length_mm  stiffness_N/mm  peak_kPa  mean_kPa  iters"
                "  equilibrium  complementarity\n";
-  for (const auto& r : results) {
+  for (const auto& p : predictions) {
+    const auto& r = p.footprint;
     double peak = 0;
     for (const auto& u : r.units) peak = std::max(peak, u.pressure_Pa);
-    const double mean = r.load.load_N / (r.contact_length_m * c.tread.width_m);
+    const double mean = r.load.load_N / (r.contact_length_m * p.width_mm * 1e-3);
     char line[256];
     std::snprintf(line, sizeof line, "%8.0f  %10.2f  %9.1f  %14.1f  %8.0f  %8.0f  %5d  %11.1e  %15.1e\n",
                   r.load.load_N, r.sinking_m * 1e3, r.contact_length_m * 1e3,
@@ -86,13 +124,14 @@ void print_footprint_table(const contact::TyreModel& model,
   }
 }
 
-void plot_pressures(const std::vector<contact::FootprintResult>& results,
+void plot_pressures(const std::vector<contact::Prediction>& predictions,
                     const contact::TyreConfig& config, const std::string& path) {
   PlotPanel p;
   p.title = config.name + ": contact pressure along the patch";
   p.xlabel = "x along the road from the contact centre [mm]";
   p.ylabel = "contact pressure [kPa]";
-  for (const auto& r : results) {
+  for (const auto& prediction : predictions) {
+    const auto& r = prediction.footprint;
     PlotSeries s;
     s.title = fixed(r.load.load_N / 1000, 2) + " kN, L = " + fixed(r.contact_length_m * 1e3, 0) +
               " mm";

@@ -1,20 +1,28 @@
 #pragma once
-// Presentation of footprint results (table, JSON, plot), shared by footprint and validate.
+// Presentation of footprint results (table, JSON, plot) of `footprint`, and the conversion that
+// lets the model's own operator and the effects' predictor be reported alike.
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "modaltyre/contact/footprint.h"
+#include "modaltyre/contact/predictor.h"
 
 namespace modaltyre::app {
 
+/// A footprint of the model's own operator as a Prediction (config width, no rolling
+/// resistance): what FootprintPredictor::predict() gives when no effect is on.
+contact::Prediction as_prediction(contact::FootprintResult result,
+                                  const contact::TyreConfig& config);
+
 /// Throws ComputationError naming the first load case that did not converge.
-void require_converged(const std::vector<contact::FootprintResult>& results);
+void require_converged(const std::vector<contact::Prediction>& cases);
+/// `footprint.load` of each case is the applied load.
 nlohmann::json footprint_json(const contact::TyreModel& model,
-                              const std::vector<contact::FootprintResult>& results);
+                              const std::vector<contact::Prediction>& cases);
 void print_footprint_table(const contact::TyreModel& model,
-                           const std::vector<contact::FootprintResult>& results);
-void plot_pressures(const std::vector<contact::FootprintResult>& results,
+                           const std::vector<contact::Prediction>& cases);
+void plot_pressures(const std::vector<contact::Prediction>& cases,
                     const contact::TyreConfig& config, const std::string& path);
 
 }  // namespace modaltyre::app

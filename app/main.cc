@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   modaltyre::app::register_validate(app);
   modaltyre::app::register_sweep(app);
   modaltyre::app::register_transient(app);
+  modaltyre::app::register_effects(app);
+  modaltyre::app::register_discover(app);
 
   try {
     app.parse(argc, argv);

@@ -141,8 +141,17 @@ Prediction FootprintPredictor::predict(const TyreConfig& params, const Operating
   const double G = T.modulus_Pa / (2 * (1 + T.poisson));
   const bool soil = E.soil_compliance.enabled && c.surface == Surface::soil;
   const double ratio = c.horizontal_force_N / c.load_N;
+  // Horizontal force: the static cross-compliance, carcass part scaled like the vertical one;
+  // its tread part (the model's springs) is swapped for this prediction's below.
   Eigen::MatrixXd horizontal;
-  if (ratio != 0.0) horizontal = scale * vertical_from_horizontal(m);
+  if (ratio != 0.0) {
+    horizontal = vertical_from_horizontal(m);
+    for (int j = 0; j < cand; ++j) {
+      const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
+      horizontal(j, j) -= cj * (-sj) / m.k_radial_N_m + sj * cj / m.k_tangential_N_m;
+    }
+    horizontal *= ratio * scale;
+  }
 
   double width = T.width_m;
   if (E.contact_width.enabled) width = std::min(width, E.contact_width.max_width_mm * 1e-3);
@@ -176,7 +185,14 @@ Prediction FootprintPredictor::predict(const TyreConfig& params, const Operating
                                (E.soil_compliance.modulus_MPa * 1e6 * width * ds * cj);
       }
     }
-    if (ratio != 0.0) op.compliance += horizontal;
+    if (ratio != 0.0) {
+      op.compliance += horizontal;
+      for (int j = 0; j < cand; ++j) {  // tread under the unit's own horizontal force (eq. 6)
+        const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
+        op.compliance(j, j) += ratio * (cj * (-sj) * op.tread_radial_lag[0] +
+                                        sj * cj * op.tread_tangential_compliance);
+      }
+    }
     if (op.symmetric) op.compliance = 0.5 * (op.compliance + op.compliance.transpose()).eval();
 
     LoadCase lc{elastic_load, c.horizontal_force_N * elastic_load / c.load_N};

@@ -12,8 +12,11 @@
 #include <map>
 #include <memory>
 #include <new>
+#include <optional>
 #include <sstream>
+#include <utility>
 
+#include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_model.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/csv.h"
@@ -105,14 +108,74 @@ void flatten_grid(const YAML::Node& node, const std::string& prefix, const std::
   }
 }
 
-// A condition value: a finite number, and a load must be positive.
-void check_condition(const std::string& key, const SweepValue& v, const InputLocation& where) {
-  const InputLocation at{where.file, v.line > 0 ? v.line : where.line, where.key};
+// Text conditions and their accepted values (the names branch_name()/surface_name() give, which
+// read_measurements() reads back).
+std::optional<Branch> branch_of(const std::string& text) {
+  for (Branch b : {Branch::loading, Branch::unloading}) {
+    if (text == branch_name(b)) return b;
+  }
+  return std::nullopt;
+}
+
+std::optional<Surface> surface_of(const std::string& text) {
+  for (Surface s : {Surface::rigid, Surface::soil}) {
+    if (text == surface_name(s)) return s;
+  }
+  return std::nullopt;
+}
+
+// A numeric condition: a finite number within the range read_measurements() accepts, so that a
+// sweep never writes a file that cannot be read back as measured data.
+void check_number(const std::string& key, const SweepValue& v, const InputLocation& at) {
   if (!v.number) throw InputError(at, "expected a finite number, got '" + v.text + "'");
-  if (key == "load_N" && !(*v.number > 0)) {
+  const double x = *v.number;
+  if (key == "load_N" && !(x > 0)) {
     throw InputError(at, "every load must be greater than 0 N, got " + v.text);
   }
-  if (std::abs(*v.number) > 1e7) throw InputError(at, "value " + v.text + " is out of range");
+  if (key == "pressure_kPa" && !(x > 0 && x <= 2000)) {
+    throw InputError(at, "inflation pressure must be in (0, 2000] kPa, got " + v.text);
+  }
+  if (key == "hold_s" && !(x >= 0)) throw InputError(at, "hold time must be >= 0 s, got " + v.text);
+  if (key == "speed_kmh" && !(x >= 0 && x <= 400)) {
+    throw InputError(at, "speed must be in [0, 400] km/h, got " + v.text);
+  }
+  if (std::abs(x) > 1e7) throw InputError(at, "value " + v.text + " is out of range");
+}
+
+// A condition value, named at the line of the value itself when it has one.
+void check_condition(const std::string& key, const SweepValue& v, const InputLocation& where) {
+  const InputLocation at{where.file, v.line > 0 ? v.line : where.line, where.key};
+  if (key == "branch") {
+    if (!branch_of(v.text)) throw InputError(at, "'" + v.text + "' is not one of: load, unload");
+  } else if (key == "surface") {
+    if (!surface_of(v.text)) throw InputError(at, "'" + v.text + "' is not one of: rigid, soil");
+  } else {
+    check_number(key, v, at);
+  }
+}
+
+// Sets one (checked) condition of a case.
+void apply_condition(const std::string& key, const SweepValue& v, OperatingConditions& c) {
+  if (key == "branch") {
+    c.branch = *branch_of(v.text);
+  } else if (key == "surface") {
+    c.surface = *surface_of(v.text);
+  } else if (key == "load_N") {
+    c.load_N = *v.number;
+  } else if (key == "horizontal_force_N") {
+    c.horizontal_force_N = *v.number;
+  } else if (key == "pressure_kPa") {
+    c.pressure_kPa = *v.number;
+  } else if (key == "hold_s") {
+    c.hold_s = *v.number;
+  } else if (key == "speed_kmh") {
+    c.speed_kmh = *v.number;
+  }
+}
+
+// A cell of the CSV as read_measurements() reads it back: numbers with %.10g, text as written.
+std::string cell_of(const SweepValue& v) {
+  return v.number ? sweep_number(*v.number) : csv_field(v.text);
 }
 
 // The message of an InputError without its "file:line: key: " prefix.
@@ -125,7 +188,9 @@ std::string bare_message(const InputError& e) {
 }  // namespace
 
 bool is_sweep_condition(const std::string& key) {
-  return key == "load_N" || key == "horizontal_force_N";
+  static const std::vector<std::string> keys = {
+      "load_N", "horizontal_force_N", "pressure_kPa", "hold_s", "speed_kmh", "branch", "surface"};
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
 
 SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
@@ -242,41 +307,45 @@ SweepPlan plan_sweep(const SweepSpec& spec) {
     total *= axis.values.size();
   }
 
-  // Conditions given once for every case (last assignment wins: the file's set:, then --set).
-  std::optional<SweepValue> set_load, set_fx;
+  // Conditions given once for every case: one column each, where first written; the last
+  // assignment wins (the file's set:, then --set).
+  std::vector<std::pair<std::string, SweepValue>> set_conditions;
   std::vector<const SweepAssignment*> params;  // config overrides for every case
   for (const auto& a : spec.set) {
-    if (a.key == "load_N") {
-      set_load = a.value;
-    } else if (a.key == "horizontal_force_N") {
-      set_fx = a.value;
-    } else {
+    if (!is_sweep_condition(a.key)) {
       params.push_back(&a);
+      continue;
     }
-  }
-  int load_axis = -1, fx_axis = -1;
-  std::vector<int> param_axes;
-  for (std::size_t k = 0; k < n_axes; ++k) {
-    if (spec.grid[k].key == "load_N") {
-      load_axis = static_cast<int>(k);
-    } else if (spec.grid[k].key == "horizontal_force_N") {
-      fx_axis = static_cast<int>(k);
+    const auto same = std::find_if(set_conditions.begin(), set_conditions.end(),
+                                   [&](const auto& c) { return c.first == a.key; });
+    if (same == set_conditions.end()) {
+      set_conditions.emplace_back(a.key, a.value);
     } else {
-      param_axes.push_back(static_cast<int>(k));
+      same->second = a.value;
     }
   }
-  if (load_axis < 0 && !set_load) {
+  std::vector<int> condition_axes, param_axes;
+  bool load_given = false;
+  for (const auto& c : set_conditions) load_given = load_given || c.first == "load_N";
+  for (std::size_t k = 0; k < n_axes; ++k) {
+    (spec.grid[k].condition ? condition_axes : param_axes).push_back(static_cast<int>(k));
+    load_given = load_given || spec.grid[k].key == "load_N";
+  }
+  if (!load_given) {
     throw InputError({spec.file, spec.grid.front().where.line, "load_N"},
                      "required: give the vertical load load_N in grid: or set:");
   }
 
-  if (load_axis < 0) {
-    plan.columns.push_back("load_N");
+  // Every condition given is a column, so that the CSV states what each row was computed at.
+  for (const auto& [key, value] : set_conditions) {
+    plan.columns.push_back(key);
     plan.column_axis.push_back(-1);
+    plan.set_cells.push_back(cell_of(value));
   }
   for (std::size_t k = 0; k < n_axes; ++k) {
     plan.columns.push_back(spec.grid[k].key);
     plan.column_axis.push_back(static_cast<int>(k));
+    plan.set_cells.emplace_back();
   }
 
   // Distinct parameter combinations: odometer over the parameter axes, last fastest.
@@ -340,12 +409,14 @@ SweepPlan plan_sweep(const SweepSpec& spec) {
     std::size_t combo = 0;
     for (int k : param_axes) combo = combo * spec.grid[k].values.size() + sc.value_index[k];
     sc.model = combo_model[combo];
-    sc.load.load_N = load_axis >= 0 ? *spec.grid[load_axis].values[sc.value_index[load_axis]].number
-                                    : *set_load->number;
-    sc.load.horizontal_force_N =
-        fx_axis >= 0 ? *spec.grid[fx_axis].values[sc.value_index[fx_axis]].number
-        : set_fx     ? *set_fx->number
-                     : plan.models[sc.model].horizontal_force_N;
+    // Conditions not given are the case's own config's (its horizontal force and pressure).
+    OperatingConditions& c = sc.conditions;
+    c = plan.models[sc.model].default_conditions(0);
+    for (const auto& [key, value] : set_conditions) apply_condition(key, value, c);
+    for (int k : condition_axes) {
+      apply_condition(spec.grid[k].key, spec.grid[k].values[sc.value_index[k]], c);
+    }
+    sc.load = {c.load_N, c.horizontal_force_N};
   }
   return plan;
 }
@@ -354,35 +425,14 @@ std::vector<std::string> SweepPlan::cells(std::size_t i) const {
   const SweepCase& sc = cases.at(i);
   std::vector<std::string> out;
   out.reserve(columns.size());
-  for (int k : column_axis) {
-    if (k < 0) {
-      out.push_back(sweep_number(sc.load.load_N));
-      continue;
-    }
-    const SweepValue& v = spec.grid[k].values[sc.value_index[k]];
-    out.push_back(v.number ? sweep_number(*v.number) : csv_field(v.text));
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    const int k = column_axis[c];
+    out.push_back(k < 0 ? set_cells[c] : cell_of(spec.grid[k].values[sc.value_index[k]]));
   }
   return out;
 }
 
 namespace {
-
-SweepRow row_from(const FootprintResult& r) {
-  SweepRow row;
-  row.iterations = r.iterations;
-  if (!r.converged) {
-    row.message = r.message.empty() ? "did not converge" : r.message;
-    return row;
-  }
-  row.ok = true;
-  row.sinking_mm = r.sinking_m * 1e3;
-  row.length_mm = r.contact_length_m * 1e3;
-  row.vertical_stiffness_N_mm = r.load.load_N / row.sinking_mm;
-  double peak = 0;
-  for (const auto& u : r.units) peak = std::max(peak, u.pressure_Pa);
-  row.peak_pressure_kPa = peak * 1e-3;
-  return row;
-}
 
 SweepRow failed_row(const std::string& why) {
   SweepRow row;
@@ -390,13 +440,104 @@ SweepRow failed_row(const std::string& why) {
   return row;
 }
 
+SweepRow row_from(const Prediction& p, const OperatingConditions& c) {
+  SweepRow row;
+  row.iterations = p.footprint.iterations;
+  if (!p.ok) {
+    row.message = p.message.empty() ? "did not converge" : p.message;
+    return row;
+  }
+  row.ok = true;
+  // Never empty: read_measurements() refuses empty text cells, and an ok row must read back.
+  row.message = p.footprint.message.empty() ? "converged" : p.footprint.message;
+  row.sinking_mm = p.sinking_mm;
+  row.length_mm = p.length_mm;
+  row.width_mm = p.width_mm;
+  row.rolling_resistance_N = p.rolling_resistance_N;
+  // Secant stiffness of the applied load (dry friction moves the elastic tyre's load, not F).
+  row.vertical_stiffness_N_mm = c.load_N / row.sinking_mm;
+  double peak = 0;
+  for (const auto& u : p.footprint.units) peak = std::max(peak, u.pressure_Pa);
+  row.peak_pressure_kPa = peak * 1e-3;
+  return row;
+}
+
+// The model's own operator as a Prediction (what predict() computes when no effect is on).
+Prediction static_prediction(const TyreModel& model, const LoadCase& load,
+                             const std::vector<char>* warm) {
+  Prediction p;
+  p.footprint = solve_footprint(model, load, warm);
+  p.ok = p.footprint.converged;
+  p.message = p.ok ? "" : p.footprint.message;
+  p.sinking_mm = p.footprint.sinking_m * 1e3;
+  p.length_mm = p.footprint.contact_length_m * 1e3;
+  p.width_mm = model.config.tread.width_m * 1e3;
+  p.elastic_load_N = load.load_N;
+  return p;
+}
+
+// One case. With no effect on, the conditions other than the loads act on nothing and the
+// model's prebuilt operator (solve_footprint) gives the same footprint as predict() without
+// assembling an m x m operator per case: the values of `modaltyre footprint`, bit for bit.
+Prediction solve_case(const FootprintPredictor& predictor, const TyreConfig& config,
+                      const SweepCase& sc, const std::vector<char>* warm) {
+  if (!config.effects.any()) return static_prediction(predictor.model(), sc.load, warm);
+  return predictor.predict(config, sc.conditions, warm);
+}
+
 // One distinct model, built for one batch and released after it.
 struct ModelSlot {
-  std::unique_ptr<TyreModel> model;
-  std::vector<char> warm;       // reference contact set (empty: cold starts)
-  std::string error;            // reason the model could not be built
+  std::unique_ptr<FootprintPredictor> predictor;  // read-only once built: shared by threads
+  std::vector<char> warm;                         // reference contact set (empty: cold starts)
+  std::string error;                              // reason the model could not be built
   std::exception_ptr input_error;
 };
+
+// Fixed warm-start reference of a model: its median-load case (ties: plan order), solved cold,
+// so that the reference does not depend on which thread gets there first.
+std::vector<char> reference_contact_set(const SweepPlan& plan,
+                                        const std::vector<std::size_t>& cases,
+                                        const FootprintPredictor& predictor,
+                                        const TyreConfig& config) {
+  std::vector<std::size_t> by_load = cases;
+  std::sort(by_load.begin(), by_load.end(), [&](std::size_t a, std::size_t b) {
+    const double la = plan.cases[a].conditions.load_N, lb = plan.cases[b].conditions.load_N;
+    return la != lb ? la < lb : a < b;
+  });
+  const Prediction ref =
+      solve_case(predictor, config, plan.cases[by_load[by_load.size() / 2]], nullptr);
+  return ref.ok ? ref.footprint.active : std::vector<char>{};
+}
+
+void build_slot(const SweepPlan& plan, std::size_t mi, const std::vector<std::size_t>& cases,
+                bool warm_start, ModelSlot& slot) {
+  try {
+    slot.predictor = std::make_unique<FootprintPredictor>(build_tyre_model(plan.models[mi]));
+    if (warm_start && !cases.empty()) {
+      slot.warm = reference_contact_set(plan, cases, *slot.predictor, plan.models[mi]);
+    }
+  } catch (const InputError&) {
+    slot.input_error = std::current_exception();
+  } catch (const std::bad_alloc&) {
+    slot.predictor.reset();
+    slot.error = "model not built: out of memory";
+  } catch (const std::exception& e) {
+    slot.predictor.reset();
+    slot.error = std::string("model not built: ") + e.what();
+  }
+}
+
+SweepRow run_case(const SweepPlan& plan, const SweepCase& sc, const ModelSlot& slot) {
+  if (!slot.predictor) return failed_row(slot.error);
+  try {
+    const std::vector<char>* warm = slot.warm.empty() ? nullptr : &slot.warm;
+    return row_from(solve_case(*slot.predictor, plan.models[sc.model], sc, warm), sc.conditions);
+  } catch (const std::bad_alloc&) {
+    return failed_row("out of memory");
+  } catch (const std::exception& e) {
+    return failed_row(e.what());
+  }
+}
 
 }  // namespace
 
@@ -418,30 +559,7 @@ SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
 
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
     for (std::size_t s = 0; s < count; ++s) {
-      ModelSlot& slot = slots[s];
-      const std::size_t mi = first + s;
-      try {
-        slot.model = std::make_unique<TyreModel>(build_tyre_model(plan.models[mi]));
-        if (options.warm_start && !cases_of[mi].empty()) {
-          // Fixed reference: the median-load case of this model, solved cold.
-          std::vector<std::size_t> by_load = cases_of[mi];
-          std::sort(by_load.begin(), by_load.end(), [&](std::size_t a, std::size_t b) {
-            const auto& la = plan.cases[a].load;
-            const auto& lb = plan.cases[b].load;
-            return la.load_N != lb.load_N ? la.load_N < lb.load_N : a < b;
-          });
-          const auto ref = solve_footprint(*slot.model, plan.cases[by_load[by_load.size() / 2]].load);
-          if (ref.converged) slot.warm = ref.active;
-        }
-      } catch (const InputError&) {
-        slot.input_error = std::current_exception();
-      } catch (const std::bad_alloc&) {
-        slot.model.reset();
-        slot.error = "model not built: out of memory";
-      } catch (const std::exception& e) {
-        slot.model.reset();
-        slot.error = std::string("model not built: ") + e.what();
-      }
+      build_slot(plan, first + s, cases_of[first + s], options.warm_start, slots[s]);
     }
     for (const auto& slot : slots) {
       if (slot.input_error) std::rethrow_exception(slot.input_error);
@@ -456,20 +574,7 @@ SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
     for (long t = 0; t < n_pending; ++t) {
       const std::size_t i = pending[t];
       const SweepCase& sc = plan.cases[i];
-      const ModelSlot& slot = slots[sc.model - first];
-      SweepRow row;
-      if (!slot.model) {
-        row = failed_row(slot.error);
-      } else {
-        try {
-          row = row_from(solve_footprint(*slot.model, sc.load, slot.warm.empty() ? nullptr : &slot.warm));
-        } catch (const std::bad_alloc&) {
-          row = failed_row("out of memory");
-        } catch (const std::exception& e) {
-          row = failed_row(e.what());
-        }
-      }
-      result.rows[i] = std::move(row);
+      result.rows[i] = run_case(plan, sc, slots[sc.model - first]);
       if (options.progress) options.progress(1);
     }
   }
@@ -478,9 +583,17 @@ SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
 }
 
 const std::vector<std::string>& sweep_observable_columns() {
-  static const std::vector<std::string> cols = {
-      "sinking_mm", "length_mm",  "vertical_stiffness_N_mm", "peak_pressure_kPa",
-      "iterations", "status",     "message"};
+  // The observables of predictor.h first (the columns read_measurements() reads), then the
+  // solver's by-products (which it ignores).
+  static const std::vector<std::string> cols = {"sinking_mm",
+                                                "length_mm",
+                                                "width_mm",
+                                                "rolling_resistance_N",
+                                                "vertical_stiffness_N_mm",
+                                                "peak_pressure_kPa",
+                                                "iterations",
+                                                "status",
+                                                "message"};
   return cols;
 }
 
@@ -525,11 +638,13 @@ std::string sweep_csv(const SweepPlan& plan, const SweepResult& result) {
     }
     const SweepRow& r = result.rows[i];
     if (r.ok) {
-      out += "," + sweep_number(r.sinking_mm) + "," + sweep_number(r.length_mm) + "," +
-             sweep_number(r.vertical_stiffness_N_mm) + "," + sweep_number(r.peak_pressure_kPa) +
-             "," + std::to_string(r.iterations) + ",ok," + csv_field(r.message) + "\n";
+      for (double v : {r.sinking_mm, r.length_mm, r.width_mm, r.rolling_resistance_N,
+                       r.vertical_stiffness_N_mm, r.peak_pressure_kPa}) {
+        out += "," + sweep_number(v);
+      }
+      out += "," + std::to_string(r.iterations) + ",ok," + csv_field(r.message) + "\n";
     } else {
-      out += ",,,,,,failed," + csv_field(r.message) + "\n";
+      out += ",,,,,,,,failed," + csv_field(r.message) + "\n";
     }
   }
   return out;

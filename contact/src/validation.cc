@@ -1,10 +1,14 @@
 #include "modaltyre/contact/validation.h"
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <set>
 #include <sstream>
 
+#include "modaltyre/contact/measurements.h"
+#include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
@@ -40,21 +44,97 @@ std::string assign(const std::string& key, double value) {
   return s.str();
 }
 
-std::vector<FootprintResult> solve_rows(const TyreModel& model,
-                                        const std::vector<MeasuredFootprint>& rows) {
-  std::vector<LoadCase> cases;
-  for (const auto& r : rows) cases.push_back({r.load_N, model.config.horizontal_force_N});
-  return solve_footprints(model, cases);
+// The conditions a row is predicted at.
+OperatingConditions conditions_of(const MeasuredFootprint& row, const TyreConfig& config) {
+  return row.conditions ? *row.conditions : config.default_conditions(row.load_N);
 }
 
-void require_converged(const std::vector<FootprintResult>& res, const std::string& stage) {
-  for (const auto& r : res) {
-    if (!r.converged) {
+Prediction prediction_of(FootprintResult f, const TyreConfig& config) {
+  Prediction p;
+  p.ok = f.converged;
+  p.message = f.message;
+  p.sinking_mm = f.sinking_m * 1e3;
+  p.length_mm = f.contact_length_m * 1e3;
+  p.width_mm = config.tread.width_m * 1e3;
+  p.elastic_load_N = f.load.load_N;
+  p.footprint = std::move(f);
+  return p;
+}
+
+// Predicted footprints of the rows. No effect on: the model's own operator, the rows in file
+// order each warm-started from the previous (what validate computed before effects existed);
+// with effects: FootprintPredictor::predict() at each row's conditions.
+std::vector<Prediction> predict_rows(const TyreModel& model,
+                                     const std::vector<MeasuredFootprint>& rows) {
+  const TyreConfig& config = model.config;
+  std::vector<Prediction> out;
+  if (!config.effects.any()) {
+    std::vector<LoadCase> cases;
+    for (const auto& r : rows) {
+      const OperatingConditions c = conditions_of(r, config);
+      cases.push_back({c.load_N, c.horizontal_force_N});
+    }
+    for (auto& f : solve_footprints(model, cases)) {
+      out.push_back(prediction_of(std::move(f), config));
+    }
+    return out;
+  }
+  const FootprintPredictor predictor(model);
+  for (const auto& r : rows) {
+    const OperatingConditions c = conditions_of(r, config);
+    Prediction p = predictor.predict(config, c);
+    // The applied load, not the elastic tyre's share of it (dry_friction), is the row's load.
+    p.footprint.load = {c.load_N, c.horizontal_force_N};
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+void require_converged(const std::vector<Prediction>& res, const std::string& stage) {
+  for (const auto& p : res) {
+    if (!p.ok) {
       std::ostringstream m;
-      m << stage << ": load case " << r.load.load_N << " N did not converge: " << r.message;
+      m << stage << ": load case " << p.footprint.load.load_N
+        << " N did not converge: " << p.message;
       throw ComputationError(m.str());
     }
   }
+}
+
+// Columns of the file's header (first line that is neither blank nor a comment), trimmed; empty
+// when the file cannot be read (the reader then reports why).
+std::vector<std::string> header_columns(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (in && std::getline(in, line)) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::vector<std::string> cols;
+    std::stringstream ss(line);
+    std::string c;
+    while (std::getline(ss, c, ',')) {
+      const auto b = c.find_first_not_of(" \t\r"), e = c.find_last_not_of(" \t\r");
+      cols.push_back(b == std::string::npos ? "" : c.substr(b, e - b + 1));
+    }
+    return cols;
+  }
+  return {};
+}
+
+MeasuredFootprint footprint_of(const MeasuredRow& r) {
+  MeasuredFootprint m;
+  m.row = r.row;
+  m.line = r.line;
+  m.load_N = r.conditions.load_N;
+  m.conditions = r.conditions;
+  auto value = [&](const char* name) -> std::optional<double> {
+    const auto it = r.observed.find(name);
+    return it == r.observed.end() ? std::nullopt : std::optional<double>(it->second);
+  };
+  m.sinking_mm = value("sinking_mm");
+  m.length_mm = value("length_mm");
+  m.width_mm = value("width_mm");
+  return m;
 }
 
 }  // namespace
@@ -94,6 +174,43 @@ std::vector<MeasuredFootprint> read_footprint_measurements(const std::string& pa
   return out;
 }
 
+const std::vector<std::string>& validation_observables() {
+  static const std::vector<std::string> names = {"sinking_mm", "length_mm", "width_mm"};
+  return names;
+}
+
+std::optional<double> measured_value(const MeasuredFootprint& m, const std::string& observable) {
+  if (observable == "sinking_mm") return m.sinking_mm;
+  if (observable == "length_mm") return m.length_mm;
+  if (observable == "width_mm") return m.width_mm;
+  return std::nullopt;
+}
+
+std::vector<MeasuredFootprint> read_validation_measurements(const std::string& path,
+                                                            const TyreConfig& config) {
+  // Files of the original shape keep their reader (and its checks, e.g. one row per load);
+  // condition columns, a sweep's extra columns or effects need the conditions of every row.
+  static const std::vector<std::string> plain = {"load_N", "sinking_mm", "length_mm", "width_mm"};
+  bool conditions = config.effects.any();
+  for (const auto& c : header_columns(path)) {
+    conditions = conditions || std::find(plain.begin(), plain.end(), c) == plain.end();
+  }
+  if (!conditions) return read_footprint_measurements(path);
+  const MeasurementSet set = read_measurements(path, config);
+  bool compared = false;
+  for (const auto& o : set.observables) {
+    for (const auto& v : validation_observables()) compared = compared || o == v;
+  }
+  if (!compared) {
+    throw InputError(
+        {path, 1, "sinking_mm"},
+        "no observable validate compares: give any of sinking_mm, length_mm, width_mm");
+  }
+  std::vector<MeasuredFootprint> out;
+  for (const auto& r : set.rows) out.push_back(footprint_of(r));
+  return out;
+}
+
 ValidationReport validate_footprints(const std::string& config_path,
                                      const std::vector<std::string>& overrides,
                                      const std::vector<MeasuredFootprint>& measured) {
@@ -123,9 +240,17 @@ ValidationReport validate_footprints(const std::string& config_path,
     }
     cal.initial_values.push_back(calibratable().at(key).value(base));
   }
+  const auto& known = validation_observables();
+  for (const auto& obs : cal.keys.empty() ? std::vector<std::string>{} : cal.observables) {
+    if (std::find(known.begin(), known.end(), obs) == known.end()) {
+      throw InputError(
+          {config_path, 0, "validation.calibration_observables"},
+          "'" + obs + "' cannot be fitted; choose from: sinking_mm, length_mm, width_mm");
+    }
+  }
   for (const auto& row : cal_rows) {
     for (const auto& obs : cal.observables) {
-      if ((obs == "sinking_mm" && !row.sinking_mm) || (obs == "length_mm" && !row.length_mm)) {
+      if (!measured_value(row, obs)) {
         throw InputError({config_path, 0, "validation.calibration_observables"},
                          "calibration row " + std::to_string(row.row) + " has no " + obs);
       }
@@ -156,16 +281,12 @@ ValidationReport validate_footprints(const std::string& config_path,
           return Eigen::VectorXd::Constant(static_cast<Eigen::Index>(n_res), 1e6).eval();
         }
       }
-      const TyreModel m = model_for(lx);
-      const auto res = solve_rows(m, cal_rows);
+      const auto res = predict_rows(model_for(lx), cal_rows);
       require_converged(res, "calibration");
       std::vector<double> r;
       for (std::size_t i = 0; i < cal_rows.size(); ++i) {
         for (const auto& obs : cal.observables) {
-          if (obs == "sinking_mm")
-            r.push_back(res[i].sinking_m * 1e3 / *cal_rows[i].sinking_mm - 1.0);
-          if (obs == "length_mm")
-            r.push_back(res[i].contact_length_m * 1e3 / *cal_rows[i].length_mm - 1.0);
+          r.push_back(res[i].observable(obs) / *measured_value(cal_rows[i], obs) - 1.0);
         }
       }
       return Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())).eval();
@@ -189,8 +310,10 @@ ValidationReport validate_footprints(const std::string& config_path,
     }
   }
   rep.model = model_for(x);
-  rep.footprints = solve_rows(rep.model, measured);
-  require_converged(rep.footprints, "validation");
+  const auto predicted = predict_rows(rep.model, measured);
+  require_converged(predicted, "validation");
+  for (const auto& p : predicted) rep.footprints.push_back(p.footprint);
+  for (const auto& m : measured) rep.with_conditions = rep.with_conditions || m.conditions;
 
   const std::set<int> cal_set(cal.rows.begin(), cal.rows.end());
   std::map<std::string, double> sq;
@@ -198,20 +321,22 @@ ValidationReport validate_footprints(const std::string& config_path,
     ValidationRow row;
     row.measured = measured[i];
     row.calibration = cal_set.count(measured[i].row) > 0;
-    row.sinking_mm = rep.footprints[i].sinking_m * 1e3;
-    row.length_mm = rep.footprints[i].contact_length_m * 1e3;
-    if (row.measured.sinking_mm) row.sinking_rel_error = row.sinking_mm / *row.measured.sinking_mm - 1;
-    if (row.measured.length_mm) row.length_rel_error = row.length_mm / *row.measured.length_mm - 1;
-    if (!row.calibration) {
-      if (row.sinking_rel_error) {
-        sq["sinking_mm"] += *row.sinking_rel_error * *row.sinking_rel_error;
-        ++rep.predicted_rows["sinking_mm"];
+    row.sinking_mm = predicted[i].sinking_mm;
+    row.length_mm = predicted[i].length_mm;
+    row.width_mm = predicted[i].width_mm;
+    auto rel_error = [&](const std::string& obs) -> std::optional<double> {
+      const auto m = measured_value(row.measured, obs);
+      if (!m) return std::nullopt;
+      const double e = predicted[i].observable(obs) / *m - 1;
+      if (!row.calibration) {
+        sq[obs] += e * e;
+        ++rep.predicted_rows[obs];
       }
-      if (row.length_rel_error) {
-        sq["length_mm"] += *row.length_rel_error * *row.length_rel_error;
-        ++rep.predicted_rows["length_mm"];
-      }
-    }
+      return e;
+    };
+    row.sinking_rel_error = rel_error("sinking_mm");
+    row.length_rel_error = rel_error("length_mm");
+    row.width_rel_error = rel_error("width_mm");
     rep.rows.push_back(row);
   }
   for (const auto& [obs, s] : sq) rep.rms_rel_error[obs] = std::sqrt(s / rep.predicted_rows[obs]);

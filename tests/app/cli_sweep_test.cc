@@ -57,12 +57,14 @@ TEST_F(SweepCli, OneAndTwoThreadsWriteByteIdenticalCsv) {
   ASSERT_EQ(r2.exit_code, 0) << r2.err;
   const std::string ca = slurp(a);
   EXPECT_EQ(ca, slurp(b));
+  // horizontal_force_N is given in set: (a condition): a column of its own.
   EXPECT_EQ(ca.substr(0, ca.find('\n')),
-            "tread.modulus_MPa,load_N,sinking_mm,length_mm,vertical_stiffness_N_mm,"
-            "peak_pressure_kPa,iterations,status,message");
+            "horizontal_force_N,tread.modulus_MPa,load_N,sinking_mm,length_mm,width_mm,"
+            "rolling_resistance_N,vertical_stiffness_N_mm,peak_pressure_kPa,iterations,status,"
+            "message");
   EXPECT_EQ(std::count(ca.begin(), ca.end(), '\n'), 13);
-  EXPECT_NE(ca.find("\n4,2000,"), std::string::npos);
-  EXPECT_NE(ca.find("\n8,8000,"), std::string::npos);
+  EXPECT_NE(ca.find("\n0,4,2000,"), std::string::npos);
+  EXPECT_NE(ca.find("\n0,8,8000,"), std::string::npos);
   // Summary: on stderr always, as JSON on stdout with --json; no progress bar off a terminal.
   EXPECT_NE(r1.err.find("sweep: 12 cases (3 models), 0 failed"), std::string::npos) << r1.err;
   EXPECT_NE(r1.err.find("1 thread "), std::string::npos) << r1.err;
@@ -85,8 +87,10 @@ TEST_F(SweepCli, OutputIsRelativeToTheSweepFileAndSetOverridesApply) {
   const CliRun r = run({"sweep", path, "--set", "tread.modulus_MPa=9", "--set", "horizontal_force_N=200"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string csv = slurp(dir_ / "sub" / "out" / "r.csv");
-  EXPECT_NE(csv.find("\n4000,"), std::string::npos) << csv;
-  EXPECT_NE(csv.find("\n6000,"), std::string::npos) << csv;
+  // A condition from --set is a column (before the grid's), a config key is not.
+  EXPECT_EQ(csv.substr(0, csv.find(',', csv.find(',') + 1)), "horizontal_force_N,load_N") << csv;
+  EXPECT_NE(csv.find("\n200,4000,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n200,6000,"), std::string::npos) << csv;
   // No temporary file is left next to the output.
   for (const auto& e : fs::directory_iterator(dir_ / "sub" / "out")) {
     EXPECT_EQ(e.path().filename().string(), "r.csv");
@@ -101,7 +105,7 @@ TEST_F(SweepCli, AFailedCaseIsARowAndTheSweepStillSucceeds) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("1 failed"), std::string::npos) << r.err;
   const std::string csv = slurp(out);
-  EXPECT_NE(csv.find("\n1,5000,,,,,,failed,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n1,5000,,,,,,,,failed,"), std::string::npos) << csv;
   EXPECT_NE(csv.find("\n200,5000,"), std::string::npos) << csv;
   EXPECT_NE(csv.find(",ok,"), std::string::npos) << csv;
 }
@@ -114,8 +118,8 @@ TEST_F(SweepCli, AllCasesFailedExitsOneButKeepsTheRows) {
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("all 2 cases failed"), std::string::npos) << r.err;
   const std::string csv = slurp(out);
-  EXPECT_NE(csv.find("\n4000,,,,,,failed,"), std::string::npos) << csv;
-  EXPECT_NE(csv.find("\n7000,,,,,,failed,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n4000,,,,,,,,failed,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n7000,,,,,,,,failed,"), std::string::npos) << csv;
 }
 
 TEST_F(SweepCli, BadSweepFilesExitTwoNamingFileLineAndKey) {
@@ -135,6 +139,42 @@ TEST_F(SweepCli, BadSweepFilesExitTwoNamingFileLineAndKey) {
   const CliRun r = run({"sweep", p.string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find(p.string() + ":1: base"), std::string::npos) << r.err;
+}
+
+TEST_F(SweepCli, BadConditionValuesExitTwoNamingFileLineAndKey) {
+  // Text conditions are checked against their lists, on the line of the offending item.
+  expect_bad("grid:\n  load_N: [4000]\n  branch: [load, sideways]\noutput: x.csv\n", 4,
+             "grid.branch");
+  expect_bad("grid:\n  load_N: [4000]\n  branch:\n    - unload\n    - up\noutput: x.csv\n", 6,
+             "grid.branch");
+  expect_bad("set:\n  surface: sand\ngrid:\n  load_N: [4000]\noutput: x.csv\n", 3, "set.surface");
+  expect_bad("grid:\n  load_N: [4000]\n  pressure_kPa: [230, 0]\noutput: x.csv\n", 4,
+             "grid.pressure_kPa");
+  expect_bad("grid:\n  load_N: [4000]\n  speed_kmh: [500]\noutput: x.csv\n", 4, "grid.speed_kmh");
+  expect_bad("grid:\n  load_N: [4000]\n  hold_s: [-1]\noutput: x.csv\n", 4, "grid.hold_s");
+  // The reason is stated too.
+  const CliRun r =
+      run({"sweep", sweep("grid:\n  load_N: [4000]\n  branch: [up]\noutput: x.csv\n")});
+  EXPECT_NE(r.err.find("'up' is not one of: load, unload"), std::string::npos) << r.err;
+}
+
+TEST_F(SweepCli, AnEffectAndConditionColumnsReachTheCsv) {
+  const std::string out = (dir_ / "r.csv").string();
+  const std::string path = sweep(
+      "set:\n  effects.tread_relaxation.enabled: true\n  branch: load\n"
+      "grid:\n  hold_s: [0, 600]\n  load_N: [4000]\noutput: " + out + "\n");
+  const CliRun r = run({"sweep", path, "--threads", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = slurp(out);
+  EXPECT_EQ(csv.substr(0, csv.find(',', csv.find(',', csv.find(',') + 1) + 1)),
+            "branch,hold_s,load_N") << csv;
+  // The held load creeps: the 600 s row sinks further than the 0 s one.
+  const auto sinking = [&](const std::string& prefix) {
+    const auto at = csv.find("\n" + prefix);
+    EXPECT_NE(at, std::string::npos) << csv;
+    return std::stod(csv.substr(at + 1 + prefix.size()));
+  };
+  EXPECT_GT(sinking("load,600,4000,"), 1.01 * sinking("load,0,4000,"));
 }
 
 TEST_F(SweepCli, OutputIntoAMissingFolderFailsBeforeComputing) {

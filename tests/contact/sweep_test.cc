@@ -4,13 +4,18 @@
 #include "modaltyre/contact/sweep.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "modaltyre/contact/measurements.h"
+#include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/progress.h"
 
 namespace {
@@ -76,7 +81,7 @@ TEST(Sweep, GridExpandsInWrittenOrderWithTheLastKeyFastest) {
   }
 }
 
-TEST(Sweep, SetAppliesToEveryCaseAndLoadFromSetBecomesAColumn) {
+TEST(Sweep, SetAppliesToEveryCaseAndItsConditionsBecomeColumns) {
   const auto plan = plan_sweep(spec_of(
       "base: ../sf350.yaml\n"
       "set:\n"
@@ -89,7 +94,10 @@ TEST(Sweep, SetAppliesToEveryCaseAndLoadFromSetBecomesAColumn) {
       "output: x.csv\n",
       {"tread.modulus_MPa=7"}));
   ASSERT_EQ(plan.cases.size(), 2u);
-  EXPECT_EQ(plan.columns, (std::vector<std::string>{"load_N", "modal.compliance_scale"}));
+  // Every condition given is a column (so that the CSV states what each row was computed at),
+  // set: ones first in the order written, then the grid keys.
+  EXPECT_EQ(plan.columns,
+            (std::vector<std::string>{"load_N", "horizontal_force_N", "modal.compliance_scale"}));
   for (const auto& m : plan.models) {
     EXPECT_DOUBLE_EQ(m.tread.thickness_m, 0.010);
     EXPECT_DOUBLE_EQ(m.tread.modulus_Pa, 7e6);  // from the command-line overrides
@@ -99,7 +107,7 @@ TEST(Sweep, SetAppliesToEveryCaseAndLoadFromSetBecomesAColumn) {
     EXPECT_EQ(c.load.load_N, 5000);
     EXPECT_EQ(c.load.horizontal_force_N, 300);
   }
-  EXPECT_EQ(plan.cells(1), (std::vector<std::string>{"5000", "1.2"}));
+  EXPECT_EQ(plan.cells(1), (std::vector<std::string>{"5000", "300", "1.2"}));
 }
 
 TEST(Sweep, RowsEqualIndividualFootprintSolves) {
@@ -167,8 +175,8 @@ TEST(Sweep, CsvIsByteIdenticalForOneAndTwoThreads) {
   one.warm_start = two.warm_start = true;
   EXPECT_EQ(sweep_csv(plan, run_sweep(plan, one)), sweep_csv(plan, run_sweep(plan, two)));
   EXPECT_EQ(a.substr(0, a.find('\n')),
-            "tread.modulus_MPa,load_N,sinking_mm,length_mm,vertical_stiffness_N_mm,"
-            "peak_pressure_kPa,iterations,status,message");
+            "tread.modulus_MPa,load_N,sinking_mm,length_mm,width_mm,rolling_resistance_N,"
+            "vertical_stiffness_N_mm,peak_pressure_kPa,iterations,status,message");
   EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 22);
 }
 
@@ -191,8 +199,198 @@ TEST(Sweep, AFailedCaseIsARowWithItsReason) {
   EXPECT_TRUE(res.rows[2].ok);
   EXPECT_TRUE(res.rows[3].ok);
   const std::string csv = sweep_csv(plan, res);
-  EXPECT_NE(csv.find("\n1,3000,,,,,,failed,active set did not settle"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\n1,3000,,,,,,,,failed,active set did not settle"), std::string::npos) << csv;
   EXPECT_NE(csv.find("\n200,6000,"), std::string::npos);
+}
+
+std::string full_precision(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// Observable `column` of every row of a sweep, in plan order (all rows must have succeeded).
+std::vector<double> column_of(const SweepResult& r, double SweepRow::*column) {
+  std::vector<double> out;
+  for (const auto& row : r.rows) {
+    EXPECT_TRUE(row.ok) << row.message;
+    out.push_back(row.*column);
+  }
+  return out;
+}
+
+TEST(SweepConditions, ConditionsAreColumnsAndTakeTheBaseConfigsValuesWhenNotGiven) {
+  const auto plan = plan_sweep(spec_of(
+      "base: ../sf350.yaml\n"
+      "set:\n"
+      "  surface: soil\n"
+      "  speed_kmh: 30\n"
+      "grid:\n"
+      "  branch: [load, unload]\n"
+      "  pressure_kPa: [200, 260]\n"
+      "  load_N: [3000]\n"
+      "output: x.csv\n"));
+  EXPECT_EQ(plan.columns, (std::vector<std::string>{"surface", "speed_kmh", "branch",
+                                                     "pressure_kPa", "load_N"}));
+  ASSERT_EQ(plan.cases.size(), 4u);
+  EXPECT_EQ(plan.models.size(), 1u);  // conditions do not make models
+  const OperatingConditions& c = plan.cases[3].conditions;
+  EXPECT_EQ(c.branch, Branch::unloading);
+  EXPECT_EQ(c.surface, Surface::soil);
+  EXPECT_EQ(c.pressure_kPa, 260);
+  EXPECT_EQ(c.speed_kmh, 30);
+  EXPECT_EQ(c.load_N, 3000);
+  EXPECT_EQ(c.hold_s, 0);              // not given: the base config's (no hold)
+  EXPECT_EQ(c.horizontal_force_N, 0);  // the base config's horizontal_force_N
+  EXPECT_EQ(plan.cells(3), (std::vector<std::string>{"soil", "30", "unload", "260", "3000"}));
+  // Without pressure_kPa the case takes the config's inflation pressure.
+  const auto plain = plan_sweep(spec_of(
+      "base: ../sf350.yaml\ngrid:\n  load_N: [3000]\n  tyre.inflation_pressure_kPa: [180]\n"));
+  EXPECT_EQ(plain.cases[0].conditions.pressure_kPa, 180);
+}
+
+TEST(SweepEffects, NoEffectAndDefaultConditionsGiveTheEffectFreeFootprints) {
+  // Conditions act only through effects: with none on, a pressure, a hold or a branch changes
+  // nothing, and the rows are the effect-free footprints.
+  const auto with_conditions = plan_sweep(spec_of(
+      "base: ../sf350.yaml\n"
+      "set:\n  hold_s: 120\n  branch: unload\n"
+      "grid:\n  pressure_kPa: [180, 280]\n  load_N: [2131, 8321]\n"));
+  const auto plain = plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [2131, 8321]\n"));
+  SweepOptions opt;
+  opt.threads = 2;
+  const auto rc = run_sweep(with_conditions, opt);
+  const auto rp = run_sweep(plain, opt);
+  for (std::size_t i = 0; i < rc.rows.size(); ++i) {
+    EXPECT_EQ(rc.rows[i].sinking_mm, rp.rows[i % 2].sinking_mm);
+    EXPECT_EQ(rc.rows[i].length_mm, rp.rows[i % 2].length_mm);
+    EXPECT_DOUBLE_EQ(rc.rows[i].width_mm, 130);  // the config's contact width
+    EXPECT_EQ(rc.rows[i].rolling_resistance_N, 0);
+  }
+}
+
+TEST(SweepEffects, InflationPressureStiffensTheCarcassAndIsNeutralAtTheModalTestPressure) {
+  const auto on = plan_sweep(spec_of(
+      "base: ../sf350.yaml\n"
+      "set:\n  effects.inflation_pressure.enabled: true\n"
+      "grid:\n  pressure_kPa: [180, 230, 280]\n  load_N: [4000]\n"));
+  const auto off = plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [4000]\n"));
+  SweepOptions opt;
+  opt.threads = 2;
+  const auto s = column_of(run_sweep(on, opt), &SweepRow::sinking_mm);
+  const double s_off = column_of(run_sweep(off, opt), &SweepRow::sinking_mm).at(0);
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_GT(s[0], s[1]);  // a softer tyre at lower pressure
+  EXPECT_GT(s[1], s[2]);
+  // At the hammer test's pressure (230 kPa) the factor is 1: the effect-free footprint, up to
+  // the rounding of a differently assembled (same) operator.
+  EXPECT_NEAR(s[1], s_off, 1e-9 * s_off);
+}
+
+TEST(SweepEffects, TreadRelaxationCreepsMonotonicallyToTheRelaxedTread) {
+  // Kelvin-Voigt creep of the tread under a held load: sinking grows with the hold time,
+  // ever more slowly, towards the tread of compliance x (1 + creep_ratio) (defaults 0.5, 30 s).
+  const auto plan = plan_sweep(spec_of(
+      "base: ../sf350.yaml\n"
+      "set:\n  effects.tread_relaxation.enabled: true\n  load_N: 4000\n"
+      "grid:\n  hold_s: [0, 15, 30, 45, 60, 120, 10000]\n"));
+  SweepOptions opt;
+  opt.threads = 2;
+  const auto s = column_of(run_sweep(plan, opt), &SweepRow::sinking_mm);
+  ASSERT_EQ(s.size(), 7u);
+  for (std::size_t i = 1; i < s.size(); ++i) EXPECT_GT(s[i], s[i - 1]) << "hold " << i;
+  for (std::size_t i = 2; i < 5; ++i) {
+    EXPECT_LT(s[i] - s[i - 1], s[i - 1] - s[i - 2]) << "creep must slow down (equal 15 s steps)";
+  }
+  // hold 0: the instantaneous tread, i.e. the effect-free footprint.
+  const auto off =
+      run_sweep(plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [4000]\n")), opt);
+  EXPECT_NEAR(s[0], off.rows.at(0).sinking_mm, 1e-9 * s[0]);
+  // Fully relaxed (exp(-10000 / 30) = 0): a tread 1.5 times softer, tread.modulus_MPa / 1.5.
+  const auto relaxed = run_sweep(
+      plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [4000]\n",
+                         {"tread.modulus_MPa=" + full_precision(2.329 / 1.5)})),
+      opt);
+  EXPECT_NEAR(s.back(), relaxed.rows.at(0).sinking_mm, 1e-6 * s.back());
+}
+
+TEST(SweepEffects, CsvIsByteIdenticalForOneAndTwoThreadsWithAnEffectOn) {
+  const auto plan = plan_sweep(spec_of(
+      "base: ../sf350.yaml\n"
+      "set:\n  effects.dry_friction.enabled: true\n  effects.tread_relaxation.enabled: true\n"
+      "grid:\n  tread.modulus_MPa: [2, 3]\n  branch: [load, unload]\n  hold_s: [0, 60]\n"
+      "  load_N: [150, 3000, 6000]\n"));
+  SweepOptions one;
+  one.threads = 1;
+  SweepOptions two = one;
+  two.threads = 2;
+  const auto r1 = run_sweep(plan, one);
+  const std::string a = sweep_csv(plan, r1);
+  EXPECT_EQ(a, sweep_csv(plan, run_sweep(plan, two)));
+  one.warm_start = two.warm_start = true;
+  EXPECT_EQ(sweep_csv(plan, run_sweep(plan, one)), sweep_csv(plan, run_sweep(plan, two)));
+  // 150 N does not overcome the 200 N friction on the loading branch: a failed row with the
+  // reason; on the unloading branch the elastic tyre carries 350 N and the case succeeds.
+  EXPECT_EQ(r1.failed, 4u);
+  EXPECT_NE(a.find("\n2,load,0,150,,,,,,,,failed,load 150 N does not exceed"), std::string::npos)
+      << a;
+  EXPECT_NE(a.find("\n2,unload,0,150,"), std::string::npos) << a;
+}
+
+TEST(SweepEffects, CsvReadsBackAsMeasuredDataThatThePredictorReproduces) {
+  // The discrepancy workflow's data path: a sweep with an effect on writes a CSV that
+  // read_measurements() reads unchanged, with every row's conditions, and predicting those rows
+  // with the same effect reproduces the written values (to their 10 digits).
+  const auto plan = plan_sweep(spec_of(
+      "base: ../sf350.yaml\n"
+      "set:\n  effects.inflation_pressure.enabled: true\n"
+      "  effects.tread_relaxation.enabled: true\n  hold_s: 45\n"
+      "grid:\n  tread.modulus_MPa: [2.329, 3]\n  surface: [rigid, soil]\n"
+      "  pressure_kPa: [200, 260]\n  load_N: [3000, 6000]\n"));
+  SweepOptions opt;
+  opt.threads = 2;
+  const auto res = run_sweep(plan, opt);
+  ASSERT_EQ(res.failed, 0u);
+  const fs::path csv =
+      fs::temp_directory_path() / ("sweep_roundtrip_" + std::to_string(::getpid()) + ".csv");
+  {
+    std::ofstream(csv, std::ios::binary) << sweep_csv(plan, res);
+  }
+  const TyreConfig base = load_tyre_config(kConfig);
+  const MeasurementSet set = read_measurements(csv.string(), base);
+  fs::remove(csv);
+  ASSERT_EQ(set.rows.size(), plan.cases.size());
+  EXPECT_EQ(set.observables, observable_names());
+  EXPECT_EQ(set.conditions,
+            (std::vector<std::string>{"load_N", "pressure_kPa", "hold_s", "surface"}));
+  auto as_written = [](double v) { return std::stod(sweep_number(v)); };
+  for (std::size_t i = 0; i < plan.cases.size(); ++i) {
+    SCOPED_TRACE(i);
+    const OperatingConditions& want = plan.cases[i].conditions;
+    const OperatingConditions& got = set.rows[i].conditions;
+    EXPECT_EQ(got.load_N, want.load_N);
+    EXPECT_EQ(got.pressure_kPa, want.pressure_kPa);
+    EXPECT_EQ(got.hold_s, 45);
+    EXPECT_EQ(got.surface, want.surface);
+    EXPECT_EQ(got.branch, Branch::loading);
+    const SweepRow& r = res.rows[i];
+    EXPECT_EQ(set.rows[i].observed.at("sinking_mm"), as_written(r.sinking_mm));
+    EXPECT_EQ(set.rows[i].observed.at("length_mm"), as_written(r.length_mm));
+    EXPECT_EQ(set.rows[i].observed.at("width_mm"), as_written(r.width_mm));
+    EXPECT_EQ(set.rows[i].observed.at("rolling_resistance_N"), as_written(r.rolling_resistance_N));
+  }
+  // The effects act: pressure and (effect off here, so rigid = soil) surface as expected.
+  EXPECT_GT(res.rows[0].sinking_mm, res.rows[2].sinking_mm);  // 200 kPa sinks more than 260
+  EXPECT_EQ(res.rows[0].sinking_mm, res.rows[4].sinking_mm);  // soil_compliance is off
+  // Predicting a read row at its conditions with the sweep's model gives the written values.
+  const FootprintPredictor predictor(build_tyre_model(plan.models[1]));
+  for (std::size_t i = 8; i < 16; i += 3) {
+    const Prediction p = predictor.predict(plan.models[1], set.rows[i].conditions);
+    ASSERT_TRUE(p.ok) << p.message;
+    EXPECT_NEAR(p.sinking_mm, set.rows[i].observed.at("sinking_mm"), 1e-9 * p.sinking_mm);
+    EXPECT_NEAR(p.length_mm, set.rows[i].observed.at("length_mm"), 1e-9 * p.length_mm);
+  }
 }
 
 TEST(Sweep, BadSweepFilesNameFileLineAndKey) {
@@ -226,6 +424,19 @@ TEST(Sweep, BadSweepFilesNameFileLineAndKey) {
       6, "tread.modulus_MPa");
   expect_input_error([] { plan_sweep(spec_of("base: ../sf350.yaml\nset:\n  solver.max_iter: 5\ngrid:\n  load_N: [1]\n")); },
                      3, "solver.max_iter");
+  // Condition values outside their ranges or lists, on the line of the item.
+  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  branch: [load, up]\n"); }, 4,
+                     "grid.branch");
+  expect_input_error([] { spec_of("base: ../sf350.yaml\nset:\n  surface: sand\ngrid:\n  load_N: [1]\n"); }, 3,
+                     "set.surface");
+  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  pressure_kPa: [2001]\n"); }, 4,
+                     "grid.pressure_kPa");
+  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  speed_kmh:\n    - 10\n    - -1\n"); },
+                     6, "grid.speed_kmh");
+  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  hold_s: [fast]\n"); }, 4,
+                     "grid.hold_s");
+  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n", {"branch=down"}); }, 0,
+                     "branch", "--set");
   // Command-line overrides are named as such.
   expect_input_error(
       [] { plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n", {"tread.bogus=1"})); }, 0,

@@ -1,32 +1,51 @@
 #pragma once
 // Parameter sweeps from a sweep file: the Cartesian product of condition and parameter values,
-// each case a static footprint, run in parallel (OpenMP) with results independent of the number
-// of threads.
+// each case a static footprint prediction (predictor.h: effects switched on in the config act),
+// run in parallel (OpenMP) with results independent of the number of threads. A sweep with an
+// effect on writes data the effect-free model cannot reproduce: the input of the discrepancy
+// workflow (`discover`), which reads the CSV with read_measurements() (measurements.h).
 //
 // Sweep file (YAML; paths relative to the sweep file):
 //   base: ../sf350.yaml                 # tyre config every case starts from (required)
 //   set:                                # overrides applied to every case (optional)
 //     tread.modulus_MPa: 8              #   dotted config keys (nested mappings also accepted)
+//     effects.tread_relaxation.enabled: true   # switch an effect on for every case
 //     horizontal_force_N: 0             #   or condition values
 //   grid:                               # keys -> lists, Cartesian product in written order,
-//     tread.modulus_MPa: [5, 6, 7]      #   the last key varies fastest (required, non-empty)
+//     hold_s: [0, 30, 120]              #   the last key varies fastest (required, non-empty)
 //     load_N: [2131, 3261, 5478]
 //   output: table3_loads.csv            # CSV path (required unless the caller gives one)
 //
-// Condition keys: load_N (> 0, required in grid or set) and horizontal_force_N (default: the
-// base config's horizontal_force_N). Every other key is a dotted config key, applied like
-// `--set key=value` in the order base < set < (command-line set) < grid.
-// Cases that differ only in their conditions share one immutable TyreModel.
+// Condition keys (the operating conditions of effects.h, the columns of measurements.h):
+//   load_N              vertical load [N], > 0; required in grid or set
+//   horizontal_force_N  horizontal force at the axle [N]
+//   pressure_kPa        inflation pressure [kPa], in (0, 2000]
+//   hold_s              time the load has been held [s], >= 0
+//   speed_kmh           rolling speed [km/h], in [0, 400]
+//   branch              load | unload (text)
+//   surface             rigid | soil (text)
+// A condition not given takes the base config's value (TyreConfig::default_conditions: its
+// horizontal_force_N and inflation pressure, no hold, standing, loading branch, rigid road).
+// Conditions act only through the effects that use them. Every other key is a dotted config
+// key, applied like `--set key=value` in the order base < set < (command-line set) < grid.
+// Cases that differ only in their conditions share one immutable model (FootprintPredictor).
+//
+// CSV columns: every condition given in set: (then --set), in the order written, then every
+// grid key in the order written; then sweep_observable_columns(). It is valid measured data for
+// read_measurements(): conditions not written there take the reader's config defaults, so give
+// every condition an effect acts through whenever it differs from the base config's default.
 //
 // Every input problem (unknown top-level key, missing base, empty or non-list grid value, a key
-// that is not a valid config key or a value it rejects) is an InputError naming the sweep file,
-// line and key, raised by plan_sweep() before any model is built.
+// that is not a valid config key, a value it rejects, a condition out of range or a branch or
+// surface not in its list) is an InputError naming the sweep file, line and key, raised by
+// parse_sweep_spec() or plan_sweep() before any model is built.
 #include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "modaltyre/contact/effects.h"
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/errors.h"
@@ -51,7 +70,7 @@ struct SweepAxis {
   std::string key;  ///< dotted config key or condition name, as written
   std::vector<SweepValue> values;
   InputLocation where;  ///< sweep file:line:"grid.KEY"
-  bool condition = false;  ///< load_N / horizontal_force_N (not a model parameter)
+  bool condition = false;  ///< an operating condition (is_sweep_condition), not a parameter
 };
 
 struct SweepSpec {
@@ -64,7 +83,8 @@ struct SweepSpec {
   InputLocation output_where;
 };
 
-/// The condition columns a sweep understands.
+/// The condition columns a sweep understands (load_N, horizontal_force_N, pressure_kPa, hold_s,
+/// speed_kmh, branch, surface).
 bool is_sweep_condition(const std::string& key);
 
 /// Reads a sweep file; `overrides` ("dotted.key=value", e.g. from --set) apply to every case
@@ -77,14 +97,17 @@ SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
 struct SweepCase {
   std::vector<std::size_t> value_index;  ///< per grid axis
   std::size_t model = 0;                 ///< index into SweepPlan::models
-  LoadCase load;
+  OperatingConditions conditions;        ///< given ones, the rest from the model's config
+  LoadCase load;                         ///< conditions.load_N and .horizontal_force_N
 };
 
 struct SweepPlan {
   SweepSpec spec;
   std::vector<std::string> columns;  ///< condition/parameter columns of the CSV
-  /// Per column: grid axis index, or -1 for a load_N column that comes from set:.
+  /// Per column: grid axis index, or -1 for a condition that comes from set:.
   std::vector<int> column_axis;
+  /// Per column: the CSV cell of a condition from set: (empty for grid columns).
+  std::vector<std::string> set_cells;
   std::vector<TyreConfig> models;            ///< one per distinct parameter combination
   std::vector<std::vector<std::string>> model_overrides;  ///< "key=value" list per model
   std::vector<SweepCase> cases;              ///< grid order, last axis fastest
@@ -101,19 +124,24 @@ struct SweepRow {
   bool ok = false;
   double sinking_mm = 0;
   double length_mm = 0;
-  double vertical_stiffness_N_mm = 0;
+  double width_mm = 0;                 ///< config width, or the crown-profile width (contact_width)
+  double rolling_resistance_N = 0;     ///< 0 unless rolling_speed acts at a speed > 0
+  double vertical_stiffness_N_mm = 0;  ///< applied load / sinking
   double peak_pressure_kPa = 0;
   int iterations = 0;
-  std::string message;  ///< empty when ok, else the reason
+  /// ok: the solver's note ("converged in N active-set iterations"), never empty so that the
+  /// CSV reads back as measured data; failed: the reason.
+  std::string message;
 };
 
 struct SweepOptions {
   int threads = 0;  ///< OpenMP threads; 0 = omp_get_max_threads()
-  /// false (default): every case starts cold, exactly like solve_footprint() (same values and
-  /// iterations, bit for bit). true: every case of a model starts from one fixed reference
-  /// solution of that model (its median-load case, solved cold); deterministic for any thread
-  /// count, fewer iterations (~10 % less time on the SF-350 load sweep), the same contact set,
-  /// values equal up to the restricted solver's tolerance.
+  /// false (default): every case starts cold, exactly like solve_footprint() with no effect on
+  /// and FootprintPredictor::predict() with effects (same values and iterations, bit for bit).
+  /// true: every case of a model starts from the contact set of one fixed reference case of
+  /// that model (its median-load case, solved cold); deterministic for any thread count, fewer
+  /// iterations (~10 % less time on the SF-350 load sweep), the same contact set, values equal
+  /// up to the restricted solver's tolerance.
   bool warm_start = false;
   /// Called with the number of newly finished cases, from any worker thread (must be
   /// thread-safe and cheap). The library never prints.
@@ -126,12 +154,17 @@ struct SweepResult {
   int threads = 1;  ///< threads actually used
 };
 
-/// Runs every case. A case that fails (no convergence, a model that cannot be built for a
-/// computational reason) is a row with ok = false and its reason; an InputError raised while
-/// building a model (e.g. unreadable hammer data) is rethrown.
+/// Runs every case: FootprintPredictor::predict(case config, case conditions) on one predictor
+/// per distinct model, or, for a model with no effect on, solve_footprint() on its operator (the
+/// same footprint: without effects only load_N and horizontal_force_N act). A case that fails
+/// (no convergence, a model that cannot be built for a computational reason) is a row with
+/// ok = false and its reason; an InputError raised while building a model (e.g. unreadable
+/// hammer data) is rethrown.
 SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options = {});
 
-/// Observable columns, after the condition/parameter columns.
+/// Observable columns, after the condition/parameter columns: sinking_mm, length_mm, width_mm,
+/// rolling_resistance_N (predictor.h's observables, read back by read_measurements()), then
+/// vertical_stiffness_N_mm, peak_pressure_kPa, iterations, status (ok | failed), message.
 const std::vector<std::string>& sweep_observable_columns();
 
 /// The CSV text: header, then one line per case; numbers with %.10g, text fields quoted when

@@ -1,0 +1,315 @@
+// modaltyre discover CONFIG MEASURED.csv [--set key=value]... [--json] [--plot FILE]
+//                   [--out-config FILE] [--threads N] [--unit-length-mm L] [--max-effects N]
+//
+// Locates where the model and the measurements disagree, names the missing effect (if any is
+// significant) and writes the augmented config. Exit 0 whether or not an effect is named
+// (naming nothing is a result); 1 when the baseline cannot be fitted; 2 for bad input.
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <tuple>
+#include <algorithm>
+
+#include "cli_support.h"
+#include "commands.h"
+#include "modaltyre/contact/measurements.h"
+#include "modaltyre/core/atomic_file.h"
+#include "modaltyre/core/errors.h"
+#include "modaltyre/core/gnuplot.h"
+#include "modaltyre/core/progress.h"
+#include "modaltyre/discover/discover.h"
+
+namespace modaltyre::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct DiscoverArgs {
+  std::string config;
+  std::string measured;
+  std::vector<std::string> overrides;
+  bool json = false;
+  std::string plot;
+  std::string out_config;
+  int threads = 0;
+  double unit_length_mm = 2;
+  int max_effects = 2;
+};
+
+nlohmann::json gaps(const std::map<std::string, double>& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& kv : m) j[kv.first] = round_sig(kv.second, 6);
+  return j;
+}
+
+nlohmann::json values(const std::map<std::string, double>& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& kv : m) j[kv.first] = round_sig(kv.second, 8);
+  return j;
+}
+
+// Standard errors: null when a parameter is not identifiable from the data.
+nlohmann::json errors(const std::map<std::string, double>& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& kv : m) {
+    j[kv.first] = std::isfinite(kv.second) ? nlohmann::json(round_sig(kv.second, 4)) : nlohmann::json(nullptr);
+  }
+  return j;
+}
+
+nlohmann::json candidates_json(const std::vector<discover::CandidateScore>& cs) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& c : cs) {
+    nlohmann::json j = {{"name", c.name}, {"testable", c.testable}};
+    if (c.testable) {
+      j["delta_bic"] = round_sig(c.delta_bic, 6);
+      j["cv_rms_before"] = round_sig(c.cv_rms_before, 6);
+      j["cv_rms_after"] = round_sig(c.cv_rms_after, 6);
+      j["rms_after"] = round_sig(c.rms_after, 6);
+      j["significant"] = c.significant;
+      j["parameters"] = values(c.parameters);
+      j["standard_errors"] = errors(c.standard_errors);
+      j["cv_before"] = gaps(c.cv_before);
+      j["cv_after"] = gaps(c.cv_after);
+      if (c.failures) j["failed_rows"] = c.failures;
+    } else {
+      j["reason"] = c.reason;
+    }
+    a.push_back(j);
+  }
+  return a;
+}
+
+std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
+
+void print_text(const discover::DiscoverReport& r, const contact::MeasurementSet& data) {
+  std::cout << "discover: " << data.path << ", " << data.rows.size() << " rows; evaluated on "
+            << r.evaluation_mesh << "\n\nGap (RMS of (predicted - measured) / measured):\n";
+  std::cout << "  observable              config   baseline  baseline(CV)    after  after(CV)\n";
+  for (const auto& kv : r.gap_before) {
+    const auto& o = kv.first;
+    char line[200];
+    std::snprintf(line, sizeof line, "  %-22s %8s %10s %13s %8s %10s\n", o.c_str(),
+                  pct(r.gap_config.at(o)).c_str(), pct(kv.second).c_str(),
+                  pct(r.cv_gap_before.at(o)).c_str(), pct(r.gap_after.at(o)).c_str(),
+                  pct(r.cv_gap_after.at(o)).c_str());
+    std::cout << line;
+  }
+  std::cout << "\nLocate (baseline re-fitted on all rows):\n";
+  for (const auto& f : r.regimes) std::cout << "  " << f.summary << "\n";
+  std::cout << "  rows worst off:";
+  for (int w : r.worst_rows) std::cout << " " << w;
+  std::cout << "\n";
+  for (std::size_t k = 0; k < r.rounds.size(); ++k) {
+    std::cout << "\nName, round " << k + 1
+              << " (significant: Delta BIC > 10, CV RMS falls >= 25 % on an observable, "
+                 "grows <= 10 % on none):\n";
+    for (const auto& c : r.rounds[k]) {
+      if (!c.testable) {
+        std::cout << "  " << c.name << ": not testable (" << c.reason << ")\n";
+        continue;
+      }
+      char line[200];
+      std::snprintf(line, sizeof line, "  %-20s dBIC %9.1f  CV %8s -> %8s%s\n", c.name.c_str(),
+                    c.delta_bic, pct(c.cv_rms_before).c_str(), pct(c.cv_rms_after).c_str(),
+                    c.significant ? "  significant" : "");
+      std::cout << line;
+    }
+  }
+  std::cout << "\n" << r.conclusion << "\n";
+  for (const auto& e : r.effects) {
+    std::cout << "  " << e.name << ":";
+    for (const auto& kv : e.parameters) {
+      std::cout << " " << kv.first << " = " << kv.second << " +- " << e.standard_errors.at(kv.first);
+    }
+    for (const auto& k : e.at_bound) {
+      std::cout << "\n    " << k << " ended at a bound of its range: the data bound it from one "
+                << "side only";
+    }
+    std::cout << "\n";
+  }
+}
+
+void write_out_config(const DiscoverArgs& a, const contact::TyreConfig& cfg,
+                      const discover::DiscoverReport& r) {
+  std::vector<std::string> ov = a.overrides;
+  ov.insert(ov.end(), r.out_overrides.begin(), r.out_overrides.end());
+  // The hammer data path is relative to the config; re-anchor it to the new file's folder.
+  fs::path folder = fs::absolute(fs::path(a.out_config)).parent_path();
+  ov.push_back("modal.hammer_csv=" +
+               fs::relative(fs::absolute(cfg.hammer_csv), folder).generic_string());
+  const std::string text =
+      "# Written by modaltyre discover from " + a.config + " and " + a.measured + ".\n# " +
+      r.conclusion + "\n" + ConfigTree::load(a.config, ov).dump() + "\n";
+  write_file_atomically(a.out_config, text);
+}
+
+// "load_N" -> "load [N]", "sinking_mm" -> "sinking [mm]" (gnuplot's enhanced text would read
+// an underscore as a subscript).
+std::string axis_label(const std::string& name) {
+  for (const char* unit : {"_kPa", "_mm", "_N", "_s", "_kmh"}) {
+    const std::string u(unit);
+    if (name.size() > u.size() && name.compare(name.size() - u.size(), u.size(), u) == 0) {
+      return name.substr(0, name.size() - u.size()) + " [" + u.substr(1) + "]";
+    }
+  }
+  std::string out = name;
+  for (char& c : out) c = c == '_' ? ' ' : c;
+  return out;
+}
+
+void plot(const std::string& path, const discover::DiscoverReport& r,
+          const contact::MeasurementSet& data) {
+  const std::string var = r.regimes.empty() ? "" : r.regimes.front().variable;
+  PlotFigure fig;
+  for (const auto& obs : data.observables) {
+    std::vector<std::tuple<double, double, double>> pts;  // x, before, after (percent)
+    for (std::size_t i = 0; i < data.rows.size(); ++i) {
+      const auto& row = r.rows[i];
+      if (!row.cv_before.count(obs)) continue;
+      const double x = var.empty() ? row.row : contact::condition_value(data.rows[i].conditions, var);
+      pts.emplace_back(x, 100 * row.cv_before.at(obs), 100 * row.cv_after.at(obs));
+    }
+    std::sort(pts.begin(), pts.end());
+    PlotPanel p;
+    p.title = axis_label(obs) + (r.effects.empty() ? ": nothing named" : ": before and after");
+    p.xlabel = var.empty() ? "row" : axis_label(var);
+    p.ylabel = "cross-validated (predicted - measured) / measured [%]";
+    PlotSeries before{"baseline", {}, {}, "linespoints"};
+    PlotSeries after{r.effects.empty() ? "baseline (unchanged)" : "with the named effects", {}, {},
+                     "linespoints"};
+    for (const auto& [x, b, a] : pts) {
+      before.x.push_back(x), before.y.push_back(b);
+      after.x.push_back(x), after.y.push_back(a);
+    }
+    p.series = {before, after};
+    p.key = "below";
+    fig.panels.push_back(p);
+  }
+  fig.width_px = 420 * static_cast<int>(std::min<std::size_t>(fig.panels.size(), 3)) + 60;
+  fig.height_px = fig.panels.size() > 3 ? 900 : 520;
+  render_plot(fig, path);
+}
+
+}  // namespace
+
+void register_discover(CLI::App& app) {
+  auto a = std::make_shared<DiscoverArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "discover",
+      "Discrepancy workflow: locate where the model and measured footprints disagree, name the "
+      "missing effect (Delta BIC and cross-validation over every candidate of `modaltyre "
+      "effects`), write the augmented config and show the gap before and after.");
+  cmd->add_option("CONFIG", a->config, "tyre config (YAML), e.g. configs/sf350.yaml")->required();
+  cmd->add_option("MEASURED", a->measured,
+                  "measured CSV: load_N, optional pressure_kPa, hold_s, speed_kmh, branch, "
+                  "surface; any of sinking_mm, length_mm, width_mm, rolling_resistance_N")
+      ->required();
+  cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.tan_delta=0.2");
+  cmd->add_flag("--json", a->json, "print the report as JSON on stdout");
+  cmd->add_option("--plot", a->plot, "residuals before/after against the regime variable (.svg/.png)");
+  cmd->add_option("--out-config", a->out_config, "write the augmented config (YAML) here");
+  cmd->add_option("--threads", a->threads, "OpenMP threads over candidates (default: all cores)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--unit-length-mm", a->unit_length_mm,
+                  "patch unit length of the evaluations (default 2 mm; 0 = the config's)")
+      ->check(CLI::Range(0.0, 50.0));
+  cmd->add_option("--max-effects", a->max_effects, "effects to name at most (default 2)")
+      ->check(CLI::Range(1, 9));
+  cmd->callback([a] {
+    const contact::TyreConfig cfg = contact::load_tyre_config(a->config, a->overrides);
+    const contact::MeasurementSet data = contact::read_measurements(a->measured, cfg);
+    for (const std::string* out : {&a->plot, &a->out_config}) {
+      if (out->empty()) continue;
+      const fs::path folder = fs::absolute(fs::path(*out)).parent_path();
+      if (!fs::is_directory(folder)) {
+        throw InputError({*out, 0, ""}, "output folder '" + folder.string() + "' does not exist");
+      }
+    }
+    discover::DiscoverOptions opt;
+    opt.threads = a->threads;
+    opt.unit_length_mm = a->unit_length_mm;
+    opt.max_effects = a->max_effects;
+    std::mutex m;
+    std::unique_ptr<ProgressBar> bar;
+    int round = 0;
+    opt.progress = [&](int done, int total) {
+      std::lock_guard<std::mutex> lock(m);
+      if (!bar || done == 1) {
+        if (bar) bar->finish();
+        bar = std::make_unique<ProgressBar>(static_cast<std::size_t>(total),
+                                            "discover round " + std::to_string(++round));
+      }
+      bar->tick();
+    };
+    const discover::DiscoverReport r = discover::discover(cfg, data, opt);
+    if (bar) bar->finish();
+    if (!a->out_config.empty()) write_out_config(*a, cfg, r);
+    if (!a->plot.empty()) plot(a->plot, r, data);
+    if (!a->json) {
+      print_text(r, data);
+      if (!a->out_config.empty()) std::cout << "augmented config: " << a->out_config << "\n";
+      return;
+    }
+    nlohmann::json effects = nlohmann::json::array();
+    for (const auto& e : r.effects) {
+      effects.push_back({{"name", e.name},
+                         {"parameters", values(e.parameters)},
+                         {"standard_errors", errors(e.standard_errors)},
+                         {"at_bound", e.at_bound},
+                         {"delta_bic", round_sig(e.delta_bic, 6)},
+                         {"cv_rms_before", round_sig(e.cv_rms_before, 6)},
+                         {"cv_rms_after", round_sig(e.cv_rms_after, 6)}});
+    }
+    nlohmann::json regimes = nlohmann::json::array();
+    for (const auto& f : r.regimes) {
+      regimes.push_back({{"observable", f.observable},
+                         {"variable", f.variable},
+                         {"correlation", round_sig(f.correlation, 4)},
+                         {"mean_residual", round_sig(f.mean_residual, 4)},
+                         {"summary", f.summary}});
+    }
+    nlohmann::json rounds = nlohmann::json::array();
+    for (const auto& rd : r.rounds) rounds.push_back(candidates_json(rd));
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& row : r.rows) {
+      rows.push_back({{"row", row.row},
+                      {"before", gaps(row.before)},
+                      {"after", gaps(row.after)},
+                      {"cv_before", gaps(row.cv_before)},
+                      {"cv_after", gaps(row.cv_after)}});
+    }
+    nlohmann::json j = {
+        {"measured", a->measured},
+        {"rows", data.rows.size()},
+        {"evaluation_mesh", r.evaluation_mesh},
+        {"gap_unit", "relative RMS of (predicted - measured) / measured"},
+        {"gap_config", gaps(r.gap_config)},
+        {"gap_before", gaps(r.gap_before)},
+        {"gap_after", gaps(r.gap_after)},
+        {"cv_gap_before", gaps(r.cv_gap_before)},
+        {"cv_gap_after", gaps(r.cv_gap_after)},
+        {"regime", r.regimes.empty()
+                       ? nlohmann::json{{"variable", ""}, {"correlation", 0}}
+                       : nlohmann::json{{"variable", r.regimes.front().variable},
+                                        {"correlation", round_sig(r.regimes.front().correlation, 4)},
+                                        {"observable", r.regimes.front().observable}}},
+        {"regimes", regimes},
+        {"worst_rows", r.worst_rows},
+        {"effects", effects},
+        {"candidates", r.rounds.empty() ? nlohmann::json::array() : candidates_json(r.rounds.front())},
+        {"rounds", rounds},
+        {"baseline_parameters", values(r.baseline_parameters)},
+        {"final_parameters", values(r.final_parameters)},
+        {"residuals", rows},
+        {"fits", r.fits},
+        {"conclusion", r.conclusion}};
+    if (!a->out_config.empty()) j["out_config"] = a->out_config;
+    print_json(j);
+  });
+}
+
+}  // namespace modaltyre::app

@@ -1,0 +1,112 @@
+#pragma once
+// The discrepancy workflow (`modaltyre discover`): find where the simulation and the measured
+// data disagree, name the missing effect, add it to the model and show the gap shrink.
+//
+//  1. Locate: fit the baseline (the config's calibrated scalars, modal.compliance_scale and
+//     tread.modulus_MPa, re-fitted on all rows) and correlate the relative residual of every
+//     observable with every condition variable that varies in the data (branch and surface as
+//     0/1); report the strongest and the rows worst off.
+//  2. Name: for every candidate effect the data can reveal (its regime variable varies), fit its
+//     parameters together with the baseline scalars, score it by Delta BIC against the current
+//     model and by the cross-validated RMS (leave-one-out up to 8 rows, else 6-fold). It is
+//     named only if Delta BIC > min_delta_bic AND the cross-validated RMS falls by at least
+//     min_cv_gain (relative) on at least one observable while it grows by no more than
+//     max_cv_loss on any and not at all pooled over all; else nothing is named. (Per observable
+//     because an effect may close the length gap and leave a width gap no candidate explains.) With an effect named, the search repeats
+//     on top of it for a further one (up to max_effects) while a residual still
+//     correlates clearly with a condition.
+//  3. Add and show: the augmented config (effects on, fitted values), the gap before and after
+//     per observable, in-sample and cross-validated, per-row residuals for the plot.
+//
+// Evaluations run on a mesh of discover_unit_length_mm (default 2 mm: sinking within 0.01 % and
+// length within 0.2 % of the 0.5 mm mesh on the SF-350, measured in docs/discover.md), in
+// parallel over candidates (OpenMP), deterministic for any thread count.
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "modaltyre/contact/measurements.h"
+#include "modaltyre/discover/model_fit.h"
+
+namespace modaltyre::discover {
+
+struct DiscoverOptions {
+  double unit_length_mm = 2;     ///< evaluation mesh (0: the config's own)
+  double min_delta_bic = 10;     ///< "very strong" evidence on the Kass-Raftery scale
+  double min_cv_gain = 0.25;     ///< cross-validated RMS must fall by at least this fraction
+  double max_cv_loss = 0.10;     ///< ... and grow on no observable by more than this fraction
+  int max_effects = 2;
+  /// After an effect is named, search for another only if a residual still correlates with a
+  /// condition at least this strongly.
+  double structure_correlation = 0.5;
+  int threads = 0;               ///< 0: OpenMP default
+  /// Called after each candidate fit with (done, total) of the current round; thread-safe.
+  std::function<void(int, int)> progress;
+};
+
+struct RegimeFinding {
+  std::string observable;
+  std::string variable;      ///< condition column
+  double correlation = 0;    ///< Pearson r of the residual with the variable
+  double mean_residual = 0;  ///< relative
+  std::string summary;       ///< e.g. "sinking_mm under-predicted, more so as hold_s grows"
+};
+
+struct CandidateScore {
+  std::string name;
+  bool testable = false;
+  std::string reason;  ///< why it cannot be tested on these data, when !testable
+  std::map<std::string, double> parameters;  ///< fitted, config keys (effect's and baseline's)
+  double delta_bic = 0;
+  double cv_rms_before = 0, cv_rms_after = 0;  ///< all observables pooled, relative
+  std::map<std::string, double> cv_before, cv_after;  ///< per observable
+  std::map<std::string, double> standard_errors;     ///< of the fitted parameters
+  double rms_after = 0;
+  int failures = 0;
+  bool significant = false;
+};
+
+struct NamedEffect {
+  std::string name;
+  std::map<std::string, double> parameters;  ///< the effect's fitted parameters
+  std::map<std::string, double> standard_errors;
+  /// Parameters that ended at a bound of their range: the data bound them from one side only
+  /// (e.g. a stiffness "at least this large"), the value is not a measurement.
+  std::vector<std::string> at_bound;
+  double delta_bic = 0;
+  double cv_rms_before = 0, cv_rms_after = 0;
+};
+
+struct RowResidual {
+  int row = 0;  ///< 1-based
+  std::map<std::string, double> before, after;        ///< in-sample, relative
+  std::map<std::string, double> cv_before, cv_after;  ///< held-out, relative
+};
+
+struct DiscoverReport {
+  std::string evaluation_mesh;  ///< e.g. "2 mm units"
+  std::map<std::string, double> gap_config;   ///< config as given, RMS relative per observable
+  std::map<std::string, double> gap_before;   ///< baseline re-fitted, in-sample
+  std::map<std::string, double> gap_after;
+  std::map<std::string, double> cv_gap_before, cv_gap_after;
+  std::vector<RegimeFinding> regimes;  ///< strongest first, one per observable
+  std::vector<int> worst_rows;         ///< 1-based, worst first (baseline)
+  std::vector<NamedEffect> effects;    ///< empty when nothing is significant
+  std::vector<std::vector<CandidateScore>> rounds;  ///< candidates of each search round
+  std::map<std::string, double> baseline_parameters, final_parameters;
+  std::vector<RowResidual> rows;
+  std::vector<std::string> out_overrides;  ///< "key=value" that turn the config into the final one
+  std::string conclusion;                   ///< one paragraph in words
+  int fits = 0;
+  long evaluations = 0;  ///< parameter sets evaluated (each on all rows of its fit)
+};
+
+DiscoverReport discover(const contact::TyreConfig& config, const contact::MeasurementSet& data,
+                        const DiscoverOptions& options = {});
+
+/// Pearson correlation (0 when either side has no spread).
+double pearson(const std::vector<double>& x, const std::vector<double>& y);
+
+}  // namespace modaltyre::discover

@@ -1,0 +1,124 @@
+#pragma once
+// Fitting a model variant (the baseline's calibrated scalars plus the fitted parameters of some
+// effects) to measured footprints, its information criterion and its cross-validated error.
+//
+// Residuals are relative, r = (predicted - measured) / |measured|, one per row and observed
+// observable (a zero measurement carries no relative information and is skipped). Noise is
+// taken as Gaussian with one variance per observable (sinking, length, width and rolling
+// resistance are measured with different instruments), profiled out of the likelihood:
+//   BIC = sum_o n_o ln(max(RSS_o / n_o, floor^2)) + k ln(N),   N = sum_o n_o,
+// floor = 1e-4 (0.01 %, below any footprint measurement) keeps noise-free synthetic data finite.
+// Parameters are searched in a bounded transform (logistic in the value, or in its logarithm
+// when the range spans two decades or more), so Levenberg-Marquardt never leaves the
+// catalogue's [min, max].
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "modaltyre/contact/measurements.h"
+#include "modaltyre/contact/predictor.h"
+
+namespace modaltyre::discover {
+
+/// One free parameter of a model variant, in the units of its config key.
+struct FreeParameter {
+  std::string key;  ///< dotted config key, e.g. "tread.modulus_MPa"
+  double min = 0, max = 0;
+  bool log_scale = false;
+  bool of_effect = false;  ///< an effect's parameter (else a baseline scalar)
+  contact::EffectId effect = contact::EffectId::inflation_pressure;  ///< when of_effect
+  std::function<double(const contact::TyreConfig&)> get;
+  std::function<void(contact::TyreConfig&, double)> set;
+};
+
+/// The baseline's calibrated scalars that every variant re-fits: modal.compliance_scale and
+/// tread.modulus_MPa (the two the SF-350 config declares).
+std::vector<FreeParameter> baseline_parameters();
+
+/// The fitted parameters of an effect (catalogue entries with fitted = true).
+std::vector<FreeParameter> effect_parameters(contact::EffectId id);
+
+/// A model variant: the config with extra effects switched on, and what is fitted.
+struct Variant {
+  std::vector<contact::EffectId> effects;  ///< switched on besides the config's own
+  std::vector<FreeParameter> parameters;   ///< baseline scalars, then each effect's
+  std::string name() const;                ///< "baseline" or "effect+effect"
+};
+Variant make_variant(const std::vector<contact::EffectId>& effects);
+
+/// Evaluates relative residuals of a config on rows of a measurement set.
+class Evaluator {
+ public:
+  Evaluator(const contact::FootprintPredictor& predictor, const contact::MeasurementSet& data);
+
+  struct Entry {
+    int row = 0;           ///< index into data.rows
+    int observable = 0;    ///< index into data.observables
+  };
+  /// Entries of the given rows (all observed, non-zero measurements).
+  std::vector<Entry> entries(const std::vector<int>& rows) const;
+  /// Relative residuals of the entries; a row whose prediction fails contributes `failure`
+  /// (1 = 100 %) to each of its entries and counts in `failures`.
+  std::vector<double> residuals(const contact::TyreConfig& config, const std::vector<Entry>& e,
+                                int* failures = nullptr) const;
+  const contact::MeasurementSet& data() const { return data_; }
+  const contact::FootprintPredictor& predictor() const { return predictor_; }
+
+ private:
+  const contact::FootprintPredictor& predictor_;
+  const contact::MeasurementSet& data_;
+};
+
+struct FitResult {
+  std::vector<double> values;          ///< per free parameter, config units
+  /// Standard errors (config units) from the Gauss-Newton covariance of the residuals weighted
+  /// by each observable's fitted noise level; computed only when asked (full fits).
+  std::vector<double> standard_errors;
+  contact::TyreConfig config;          ///< fitted config (effects on, values set)
+  std::vector<Evaluator::Entry> entries;
+  std::vector<double> residuals;       ///< relative, per entry
+  std::map<std::string, double> rms;   ///< per observable
+  double rms_all = 0;
+  double bic = 0;
+  int evaluations = 0;
+  int failures = 0;                    ///< rows whose prediction failed at the optimum
+  bool converged = false;
+};
+
+/// Applies a variant's effects and parameter values to a config.
+contact::TyreConfig apply(const contact::TyreConfig& base, const Variant& v,
+                          const std::vector<double>& values);
+
+/// Fits a variant on the given rows. `start` (config units) seeds the search; without it the
+/// search starts from `base`'s values for the baseline scalars and for effects already on in
+/// `base`, and from the best of a small grid around the catalogue defaults for the parameters
+/// of effects `base` does not have on.
+FitResult fit_variant(const Evaluator& ev, const contact::TyreConfig& base, const Variant& v,
+                      const std::vector<int>& rows, const std::vector<double>* start = nullptr,
+                      bool standard_errors = false);
+
+/// BIC of residuals grouped by observable, k free parameters.
+double bic(const std::vector<Evaluator::Entry>& entries, const std::vector<double>& residuals,
+           int observables, int k);
+
+struct CrossValidation {
+  int folds = 0;
+  int evaluations = 0;                  ///< model evaluations (all rows of a fold each)
+  std::vector<double> residuals;        ///< held-out relative residual per entry of all rows
+  std::vector<Evaluator::Entry> entries;
+  std::map<std::string, double> rms;    ///< per observable
+  double rms_all = 0;
+};
+
+/// k-fold cross-validation (leave-one-out when rows <= 8, else 6 folds by row index mod 6):
+/// re-fit on the other rows from the full fit's values, predict the held-out rows.
+CrossValidation cross_validate(const Evaluator& ev, const contact::TyreConfig& base,
+                               const Variant& v, const FitResult& full);
+
+/// RMS per observable of residuals over entries.
+std::map<std::string, double> rms_by_observable(const contact::MeasurementSet& data,
+                                                const std::vector<Evaluator::Entry>& entries,
+                                                const std::vector<double>& residuals);
+
+}  // namespace modaltyre::discover

@@ -1,0 +1,348 @@
+#include "modaltyre/discover/discover.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::discover {
+namespace {
+
+using contact::EffectId;
+using contact::MeasurementSet;
+using contact::TyreConfig;
+
+std::string percent(double rel) {
+  std::ostringstream s;
+  s.precision(3);
+  s << 100 * rel << " %";
+  return s.str();
+}
+
+std::size_t distinct(const MeasurementSet& d, const std::string& condition) {
+  std::set<double> v;
+  for (const auto& r : d.rows) v.insert(contact::condition_value(r.conditions, condition));
+  return v.size();
+}
+
+// Whether the data can reveal an effect: its regime variable must vary (an effect acting as a
+// constant factor is confounded with the re-fitted baseline scalars).
+std::string untestable_reason(EffectId id, const MeasurementSet& d) {
+  const auto& info = contact::effect_info(id);
+  const std::size_t n = distinct(d, info.regime);
+  switch (id) {
+    case EffectId::load_stiffening:
+    case EffectId::tread_coupling:
+    case EffectId::belt_flattening:
+    case EffectId::contact_width:
+      return n >= 3 ? "" : "needs at least 3 distinct loads";
+    case EffectId::rolling_speed: {
+      bool rolling = false;
+      for (const auto& r : d.rows) rolling = rolling || r.conditions.speed_kmh > 0;
+      return rolling ? "" : "no row is rolling (speed_kmh > 0)";
+    }
+    default:
+      return n >= 2 ? "" : info.regime + " does not vary in the data";
+  }
+}
+
+struct Stage {
+  Variant variant;
+  FitResult fit;
+  CrossValidation cv;
+};
+
+std::map<std::string, double> named_values(const Variant& v, const std::vector<double>& values,
+                                           bool effects_only) {
+  std::map<std::string, double> out;
+  for (std::size_t i = 0; i < v.parameters.size(); ++i) {
+    if (effects_only && !v.parameters[i].of_effect) continue;
+    out[v.parameters[i].key] = values[i];
+  }
+  return out;
+}
+
+std::vector<RegimeFinding> locate(const MeasurementSet& d, const FitResult& base) {
+  std::vector<RegimeFinding> out;
+  std::vector<std::string> vars;
+  for (const auto& c : contact::condition_names()) {
+    if (distinct(d, c) >= 2) vars.push_back(c);
+  }
+  for (std::size_t o = 0; o < d.observables.size(); ++o) {
+    std::vector<double> res;
+    std::vector<int> rows;
+    for (std::size_t i = 0; i < base.entries.size(); ++i) {
+      if (base.entries[i].observable == static_cast<int>(o)) {
+        res.push_back(base.residuals[i]);
+        rows.push_back(base.entries[i].row);
+      }
+    }
+    if (res.size() < 3) continue;
+    RegimeFinding f;
+    f.observable = d.observables[o];
+    f.mean_residual = std::accumulate(res.begin(), res.end(), 0.0) / res.size();
+    for (const auto& var : vars) {
+      std::vector<double> x;
+      for (int r : rows) x.push_back(contact::condition_value(d.rows[r].conditions, var));
+      const double r = pearson(x, res);
+      if (std::abs(r) > std::abs(f.correlation)) f.correlation = r, f.variable = var;
+    }
+    std::ostringstream s;
+    s.precision(2);
+    s << f.observable << ": ";
+    if (f.variable.empty()) {
+      s << "no condition varies; mean residual " << percent(f.mean_residual);
+    } else {
+      const bool categorical = f.variable == "branch" || f.variable == "surface";
+      s << "predicted minus measured " << (f.correlation > 0 ? "rises" : "falls");
+      if (categorical) {
+        s << " from " << (f.variable == "branch" ? "load to unload" : "rigid to soil") << " rows";
+      } else {
+        s << " as " << f.variable << " grows";
+      }
+      s << " (r = " << std::fixed << f.correlation << ")";
+    }
+    f.summary = s.str();
+    out.push_back(f);
+  }
+  std::sort(out.begin(), out.end(), [](const RegimeFinding& a, const RegimeFinding& b) {
+    return std::abs(a.correlation) > std::abs(b.correlation);
+  });
+  return out;
+}
+
+std::vector<int> worst_rows(const MeasurementSet& d, const FitResult& fit) {
+  std::vector<double> sum(d.rows.size(), 0.0);
+  std::vector<int> n(d.rows.size(), 0);
+  for (std::size_t i = 0; i < fit.entries.size(); ++i) {
+    sum[fit.entries[i].row] += fit.residuals[i] * fit.residuals[i];
+    ++n[fit.entries[i].row];
+  }
+  std::vector<int> idx(d.rows.size());
+  std::iota(idx.begin(), idx.end(), 0);
+  auto score = [&](int r) { return n[r] ? sum[r] / n[r] : 0.0; };
+  std::stable_sort(idx.begin(), idx.end(), [&](int a, int b) { return score(a) > score(b); });
+  std::vector<int> out;
+  for (std::size_t i = 0; i < idx.size() && i < 3; ++i) out.push_back(d.rows[idx[i]].row);
+  return out;
+}
+
+void fill_rows(const MeasurementSet& d, const Stage& before, const Stage& after,
+               std::vector<RowResidual>& rows) {
+  rows.assign(d.rows.size(), {});
+  for (std::size_t r = 0; r < d.rows.size(); ++r) rows[r].row = d.rows[r].row;
+  auto put = [&](const std::vector<Evaluator::Entry>& e, const std::vector<double>& res,
+                 std::map<std::string, double> RowResidual::*field) {
+    for (std::size_t i = 0; i < e.size(); ++i) {
+      (rows[e[i].row].*field)[d.observables[e[i].observable]] = res[i];
+    }
+  };
+  put(before.fit.entries, before.fit.residuals, &RowResidual::before);
+  put(after.fit.entries, after.fit.residuals, &RowResidual::after);
+  put(before.cv.entries, before.cv.residuals, &RowResidual::cv_before);
+  put(after.cv.entries, after.cv.residuals, &RowResidual::cv_after);
+}
+
+std::string number_text(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+double pearson(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = std::min(x.size(), y.size());
+  if (n < 2) return 0;
+  const double mx = std::accumulate(x.begin(), x.begin() + n, 0.0) / n;
+  const double my = std::accumulate(y.begin(), y.begin() + n, 0.0) / n;
+  double sxy = 0, sxx = 0, syy = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sxy += (x[i] - mx) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  if (sxx <= 0 || syy <= 0) return 0;
+  return sxy / std::sqrt(sxx * syy);
+}
+
+DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
+                        const DiscoverOptions& opt) {
+  if (data.rows.size() < 4) {
+    throw InputError({data.path, 0, "load_N"},
+                     "discover needs at least 4 measured rows (" +
+                         std::to_string(data.rows.size()) + " given): fewer cannot be "
+                         "cross-validated against a 2-parameter baseline");
+  }
+  TyreConfig eval = config;
+  if (opt.unit_length_mm > 0) eval.mesh.unit_length_m = opt.unit_length_mm * 1e-3;
+  const contact::FootprintPredictor predictor(contact::build_tyre_model(eval));
+  const Evaluator ev(predictor, data);
+  std::vector<int> all(data.rows.size());
+  std::iota(all.begin(), all.end(), 0);
+
+  DiscoverReport rep;
+  {
+    std::ostringstream s;
+    s << predictor.model().unit_length_m * 1e3 << " mm units, " << predictor.model().candidates()
+      << " candidate units";
+    rep.evaluation_mesh = s.str();
+  }
+  const auto all_entries = ev.entries(all);
+  int config_failures = 0;
+  rep.gap_config = rms_by_observable(data, all_entries, ev.residuals(eval, all_entries, &config_failures));
+
+  Stage current{make_variant({}), {}, {}};
+  current.fit = fit_variant(ev, eval, current.variant, all, nullptr, true);
+  current.cv = cross_validate(ev, eval, current.variant, current.fit);
+  rep.fits = 1 + current.cv.folds;
+  rep.evaluations = current.fit.evaluations + current.cv.evaluations;
+  if (current.fit.failures > 0) {
+    throw ComputationError("the baseline cannot be fitted: " + std::to_string(current.fit.failures) +
+                           " rows fail to converge at its best parameters");
+  }
+  const Stage baseline = current;
+  rep.gap_before = baseline.fit.rms;
+  rep.cv_gap_before = baseline.cv.rms;
+  rep.baseline_parameters = named_values(baseline.variant, baseline.fit.values, false);
+  rep.regimes = locate(data, baseline.fit);
+  rep.worst_rows = worst_rows(data, baseline.fit);
+
+  const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
+  for (int round = 0; round < opt.max_effects; ++round) {
+    std::vector<EffectId> ids;
+    std::vector<CandidateScore> scores;
+    for (const auto& info : contact::effect_catalogue()) {
+      if (config.effects.enabled(info.id)) continue;  // already in the model
+      if (std::find(current.variant.effects.begin(), current.variant.effects.end(), info.id) !=
+          current.variant.effects.end()) {
+        continue;
+      }
+      CandidateScore s;
+      s.name = info.name;
+      s.reason = untestable_reason(info.id, data);
+      s.testable = s.reason.empty();
+      scores.push_back(s);
+      ids.push_back(info.id);
+    }
+    std::vector<Stage> stages(ids.size());
+    std::atomic<int> done{0};
+    const int total = static_cast<int>(ids.size());
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
+    for (int c = 0; c < total; ++c) {
+      if (!scores[c].testable) continue;
+      std::vector<EffectId> effects = current.variant.effects;
+      effects.push_back(ids[c]);
+      Stage& st = stages[c];
+      st.variant = make_variant(effects);
+      st.fit = fit_variant(ev, current.fit.config, st.variant, all, nullptr, true);
+      st.cv = cross_validate(ev, current.fit.config, st.variant, st.fit);
+      if (opt.progress) opt.progress(++done, total);
+    }
+    int best = -1;
+    for (int c = 0; c < total; ++c) {
+      CandidateScore& s = scores[c];
+      if (!s.testable) continue;
+      rep.fits += 1 + stages[c].cv.folds;
+      rep.evaluations += stages[c].fit.evaluations + stages[c].cv.evaluations;
+      s.parameters = named_values(stages[c].variant, stages[c].fit.values, false);
+      s.delta_bic = current.fit.bic - stages[c].fit.bic;
+      s.cv_rms_before = current.cv.rms_all;
+      s.cv_rms_after = stages[c].cv.rms_all;
+      s.rms_after = stages[c].fit.rms_all;
+      s.failures = stages[c].fit.failures;
+      s.cv_before = current.cv.rms;
+      s.cv_after = stages[c].cv.rms;
+      s.standard_errors = named_values(stages[c].variant, stages[c].fit.standard_errors, false);
+      double best_gain = 0, worst_loss = 0;
+      for (const auto& kv : s.cv_before) {
+        const double after = s.cv_after.at(kv.first);
+        if (kv.second <= 0) continue;
+        best_gain = std::max(best_gain, 1 - after / kv.second);
+        worst_loss = std::max(worst_loss, after / kv.second - 1);
+      }
+      s.significant = s.failures == 0 && s.delta_bic > opt.min_delta_bic &&
+                      best_gain >= opt.min_cv_gain && worst_loss <= opt.max_cv_loss &&
+                      s.cv_rms_after <= s.cv_rms_before;
+      if (s.significant && (best < 0 || s.delta_bic > scores[best].delta_bic)) best = c;
+    }
+    std::stable_sort(scores.begin(), scores.end(), [](const CandidateScore& a, const CandidateScore& b) {
+      if (a.testable != b.testable) return a.testable;
+      return a.delta_bic > b.delta_bic;
+    });
+    rep.rounds.push_back(scores);
+    if (best < 0) break;
+    NamedEffect ne;
+    ne.name = contact::effect_info(ids[best]).name;
+    const Stage& chosen = stages[best];
+    const auto se = named_values(chosen.variant, chosen.fit.standard_errors, true);
+    for (const auto& kv : named_values(chosen.variant, chosen.fit.values, true)) {
+      if (kv.first.rfind("effects." + ne.name + ".", 0) == 0) {
+        ne.parameters[kv.first] = kv.second;
+        ne.standard_errors[kv.first] = se.at(kv.first);
+      }
+    }
+    for (std::size_t i = 0; i < chosen.variant.parameters.size(); ++i) {
+      const auto& p = chosen.variant.parameters[i];
+      if (!ne.parameters.count(p.key)) continue;
+      const double v = chosen.fit.values[i];
+      const double span = p.log_scale ? std::log(p.max / p.min) : p.max - p.min;
+      const double lo = p.log_scale ? std::log(v / p.min) : v - p.min;
+      const double hi = p.log_scale ? std::log(p.max / v) : p.max - v;
+      if (std::min(lo, hi) < 1e-3 * span) ne.at_bound.push_back(p.key);
+    }
+    ne.delta_bic = current.fit.bic - chosen.fit.bic;
+    ne.cv_rms_before = current.cv.rms_all;
+    ne.cv_rms_after = chosen.cv.rms_all;
+    rep.effects.push_back(ne);
+    current = chosen;
+    // Search again only if a clear structure is left: some observable's residual still
+    // correlates with a condition (|r| >= opt.structure_correlation).
+    const auto left = locate(data, current.fit);
+    if (left.empty() || std::abs(left.front().correlation) < opt.structure_correlation) break;
+  }
+
+  rep.gap_after = current.fit.rms;
+  rep.cv_gap_after = current.cv.rms;
+  rep.final_parameters = named_values(current.variant, current.fit.values, false);
+  fill_rows(data, baseline, current, rep.rows);
+  for (auto id : current.variant.effects) {
+    rep.out_overrides.push_back("effects." + contact::effect_info(id).name + ".enabled=true");
+  }
+  for (const auto& kv : rep.final_parameters) {
+    rep.out_overrides.push_back(kv.first + "=" + number_text(kv.second));
+  }
+
+  std::ostringstream c;
+  c.precision(3);
+  if (rep.effects.empty()) {
+    c << "No candidate effect explains the gap significantly";
+    const auto& first = rep.rounds.front();
+    if (!first.empty() && first.front().testable) {
+      c << " (best: " << first.front().name << ", Delta BIC " << first.front().delta_bic
+        << ", cross-validated RMS " << percent(first.front().cv_rms_before) << " -> "
+        << percent(first.front().cv_rms_after) << ")";
+    }
+    c << "; the baseline stays.";
+  } else {
+    c << "Named: ";
+    for (std::size_t i = 0; i < rep.effects.size(); ++i) {
+      const auto& e = rep.effects[i];
+      c << (i ? "; then " : "") << e.name << " (Delta BIC " << e.delta_bic
+        << ", cross-validated RMS " << percent(e.cv_rms_before) << " -> " << percent(e.cv_rms_after)
+        << ")";
+    }
+    c << ".";
+  }
+  rep.conclusion = c.str();
+  return rep;
+}
+
+}  // namespace modaltyre::discover

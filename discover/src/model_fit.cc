@@ -1,0 +1,318 @@
+#include "modaltyre/discover/model_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "modaltyre/core/errors.h"
+#include "modaltyre/solvers/least_squares.h"
+
+namespace modaltyre::discover {
+namespace {
+
+using contact::EffectId;
+using contact::TyreConfig;
+
+constexpr double kNoiseFloor = 1e-4;
+constexpr double kFailureResidual = 1.0;
+
+// Bounded transform: value = lo + (hi - lo) sigma(u) (in ln value when log_scale).
+double to_value(const FreeParameter& p, double u) {
+  const double s = 1.0 / (1.0 + std::exp(-u));
+  if (p.log_scale) return std::exp(std::log(p.min) + (std::log(p.max) - std::log(p.min)) * s);
+  return p.min + (p.max - p.min) * s;
+}
+
+double to_u(const FreeParameter& p, double value) {
+  double s = p.log_scale ? (std::log(value) - std::log(p.min)) / (std::log(p.max) - std::log(p.min))
+                         : (value - p.min) / (p.max - p.min);
+  s = std::clamp(s, 1e-6, 1 - 1e-6);
+  return std::log(s / (1 - s));
+}
+
+FreeParameter make_parameter(std::string key, double lo, double hi,
+                             std::function<double(const TyreConfig&)> get,
+                             std::function<void(TyreConfig&, double)> set) {
+  FreeParameter p;
+  p.key = std::move(key);
+  p.min = lo;
+  p.max = hi;
+  p.log_scale = lo > 0 && hi / lo >= 100;
+  p.get = std::move(get);
+  p.set = std::move(set);
+  return p;
+}
+
+std::vector<double> values_of(const std::vector<FreeParameter>& ps, const Eigen::VectorXd& u) {
+  std::vector<double> v(ps.size());
+  for (std::size_t i = 0; i < ps.size(); ++i) v[i] = to_value(ps[i], u(static_cast<int>(i)));
+  return v;
+}
+
+}  // namespace
+
+std::vector<FreeParameter> baseline_parameters() {
+  return {make_parameter(
+              "modal.compliance_scale", 0.05, 20,
+              [](const TyreConfig& c) { return c.compliance_scale; },
+              [](TyreConfig& c, double v) { c.compliance_scale = v; }),
+          make_parameter(
+              "tread.modulus_MPa", 0.05, 200,
+              [](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; },
+              [](TyreConfig& c, double v) { c.tread.modulus_Pa = v * 1e6; })};
+}
+
+std::vector<FreeParameter> effect_parameters(EffectId id) {
+  const contact::EffectInfo& info = contact::effect_info(id);
+  std::vector<FreeParameter> out;
+  for (const auto& p : info.parameters) {
+    if (!p.fitted) continue;
+    auto ref = p.ref;
+    FreeParameter fp = make_parameter(
+        info.key(p), p.min, p.max, [ref](const TyreConfig& c) { return ref(const_cast<TyreConfig&>(c).effects); },
+        [ref](TyreConfig& c, double v) { ref(c.effects) = v; });
+    fp.of_effect = true;
+    fp.effect = id;
+    out.push_back(std::move(fp));
+  }
+  return out;
+}
+
+std::string Variant::name() const {
+  if (effects.empty()) return "baseline";
+  std::string n;
+  for (auto id : effects) n += (n.empty() ? "" : "+") + contact::effect_info(id).name;
+  return n;
+}
+
+Variant make_variant(const std::vector<EffectId>& effects) {
+  Variant v;
+  v.effects = effects;
+  v.parameters = baseline_parameters();
+  for (auto id : effects) {
+    for (auto& p : effect_parameters(id)) v.parameters.push_back(std::move(p));
+  }
+  return v;
+}
+
+TyreConfig apply(const TyreConfig& base, const Variant& v, const std::vector<double>& values) {
+  TyreConfig c = base;
+  for (auto id : v.effects) c.effects.enabled(id) = true;
+  for (std::size_t i = 0; i < v.parameters.size(); ++i) v.parameters[i].set(c, values[i]);
+  return c;
+}
+
+Evaluator::Evaluator(const contact::FootprintPredictor& predictor,
+                     const contact::MeasurementSet& data)
+    : predictor_(predictor), data_(data) {}
+
+std::vector<Evaluator::Entry> Evaluator::entries(const std::vector<int>& rows) const {
+  std::vector<Entry> out;
+  for (int r : rows) {
+    for (std::size_t o = 0; o < data_.observables.size(); ++o) {
+      const auto it = data_.rows[r].observed.find(data_.observables[o]);
+      if (it != data_.rows[r].observed.end() && it->second != 0) {
+        out.push_back({r, static_cast<int>(o)});
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<double> Evaluator::residuals(const TyreConfig& config, const std::vector<Entry>& e,
+                                         int* failures) const {
+  std::vector<double> out(e.size());
+  int failed = 0;
+  std::size_t i = 0;
+  while (i < e.size()) {
+    const int row = e[i].row;
+    const auto& mr = data_.rows[row];
+    const contact::Prediction p = predictor_.predict(config, mr.conditions);
+    if (!p.ok) ++failed;
+    for (; i < e.size() && e[i].row == row; ++i) {
+      const std::string& obs = data_.observables[e[i].observable];
+      const double meas = mr.observed.at(obs);
+      out[i] = p.ok ? (p.observable(obs) - meas) / std::abs(meas) : kFailureResidual;
+    }
+  }
+  if (failures) *failures = failed;
+  return out;
+}
+
+double bic(const std::vector<Evaluator::Entry>& entries, const std::vector<double>& residuals,
+           int observables, int k) {
+  std::vector<double> rss(observables, 0.0);
+  std::vector<int> n(observables, 0);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    rss[entries[i].observable] += residuals[i] * residuals[i];
+    ++n[entries[i].observable];
+  }
+  double b = 0;
+  int total = 0;
+  for (int o = 0; o < observables; ++o) {
+    if (n[o] == 0) continue;
+    b += n[o] * std::log(std::max(rss[o] / n[o], kNoiseFloor * kNoiseFloor));
+    total += n[o];
+  }
+  return b + k * std::log(static_cast<double>(std::max(total, 1)));
+}
+
+std::map<std::string, double> rms_by_observable(const contact::MeasurementSet& data,
+                                                const std::vector<Evaluator::Entry>& entries,
+                                                const std::vector<double>& residuals) {
+  std::map<std::string, double> sum;
+  std::map<std::string, int> n;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const auto& o = data.observables[entries[i].observable];
+    sum[o] += residuals[i] * residuals[i];
+    ++n[o];
+  }
+  for (auto& kv : sum) kv.second = std::sqrt(kv.second / n[kv.first]);
+  return sum;
+}
+
+namespace {
+
+double rms_of(const std::vector<double>& r) {
+  if (r.empty()) return 0;
+  double s = 0;
+  for (double x : r) s += x * x;
+  return std::sqrt(s / static_cast<double>(r.size()));
+}
+
+// Gauss-Newton covariance (J^T W J)^-1 with W = 1 / sigma_o^2 per observable (sigma_o the RMS
+// residual of the observable at the optimum), J by central differences in config units.
+std::vector<double> standard_errors(const Evaluator& ev, const TyreConfig& base, const Variant& v,
+                                    const FitResult& fr) {
+  const int k = static_cast<int>(v.parameters.size());
+  const int m = static_cast<int>(fr.entries.size());
+  std::vector<double> sigma(ev.data().observables.size(), 1.0);
+  for (std::size_t o = 0; o < sigma.size(); ++o) {
+    const auto it = fr.rms.find(ev.data().observables[o]);
+    if (it != fr.rms.end()) sigma[o] = std::max(it->second, 1e-4);
+  }
+  Eigen::MatrixXd J(m, k);
+  for (int j = 0; j < k; ++j) {
+    const auto& p = v.parameters[j];
+    const double h = 1e-4 * std::max(std::abs(fr.values[j]), 1e-3 * (p.max - p.min));
+    std::vector<double> up = fr.values, down = fr.values;
+    up[j] = std::min(up[j] + h, p.max);
+    down[j] = std::max(down[j] - h, p.min);
+    const auto ru = ev.residuals(apply(base, v, up), fr.entries);
+    const auto rd = ev.residuals(apply(base, v, down), fr.entries);
+    for (int i = 0; i < m; ++i) {
+      J(i, j) = (ru[i] - rd[i]) / (up[j] - down[j]) / sigma[fr.entries[i].observable];
+    }
+  }
+  const Eigen::MatrixXd info = J.transpose() * J;
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(info);
+  std::vector<double> se(k, std::numeric_limits<double>::infinity());
+  if (cod.rank() < k) return se;  // not identifiable: infinite uncertainty
+  const Eigen::MatrixXd cov = cod.pseudoInverse();
+  for (int j = 0; j < k; ++j) se[j] = std::sqrt(std::max(cov(j, j), 0.0));
+  return se;
+}
+
+}  // namespace
+
+FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant& v,
+                      const std::vector<int>& rows, const std::vector<double>* start,
+                      bool with_errors) {
+  const auto entries = ev.entries(rows);
+  const auto& ps = v.parameters;
+  const int k = static_cast<int>(ps.size());
+  int evaluations = 0;
+  auto residual = [&](const Eigen::VectorXd& u) {
+    ++evaluations;
+    const auto r = ev.residuals(apply(base, v, values_of(ps, u)), entries);
+    return Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<int>(r.size())).eval();
+  };
+
+  Eigen::VectorXd u0(k);
+  if (start) {
+    for (int i = 0; i < k; ++i) u0(i) = to_u(ps[i], (*start)[i]);
+  } else {
+    // Baseline scalars from the config; effect parameters from the best point of a small grid
+    // (default, and two steps either side in the transformed variable) - one cheap evaluation
+    // each, so that the local search starts in the right basin.
+    std::vector<int> fresh;  // parameters of effects base does not have on
+    const TyreConfig defaults{};  // catalogue defaults live in a default-constructed config
+    for (int i = 0; i < k; ++i) {
+      const bool is_new = ps[i].of_effect && !base.effects.enabled(ps[i].effect);
+      u0(i) = to_u(ps[i], ps[i].get(is_new ? defaults : base));
+      if (is_new) fresh.push_back(i);
+    }
+    if (!fresh.empty()) {
+      // A new effect's parameters may start where the effect is negligible (a flat direction a
+      // local search cannot leave) or far from the basin the re-fitted baseline scalars need:
+      // short searches from the default and from every corner 2.5 units away in the transformed
+      // variables (1 + 2^n starts), then the best one is refined below.
+      solvers::LeastSquaresOptions scout;
+      scout.max_iterations = 8;
+      scout.relative_step = 1e-5;
+      const int corners = 1 << fresh.size();
+      double best = -1;
+      Eigen::VectorXd best_u = u0;
+      for (int c = -1; c < corners; ++c) {
+        Eigen::VectorXd u = u0;
+        for (std::size_t j = 0; c >= 0 && j < fresh.size(); ++j) {
+          u(fresh[j]) += (c >> j & 1) ? 2.5 : -2.5;
+        }
+        const auto trial = solvers::levenberg_marquardt(residual, u, scout);
+        if (best < 0 || trial.cost < best) best = trial.cost, best_u = trial.x;
+      }
+      u0 = best_u;
+    }
+  }
+  solvers::LeastSquaresOptions opt;
+  opt.max_iterations = 60;
+  opt.relative_step = 1e-5;
+  opt.step_tolerance = 1e-7;
+  const auto lm = solvers::levenberg_marquardt(residual, u0, opt);
+
+  FitResult fr;
+  fr.values = values_of(ps, lm.x);
+  fr.config = apply(base, v, fr.values);
+  fr.entries = entries;
+  fr.residuals = ev.residuals(fr.config, entries, &fr.failures);
+  fr.rms = rms_by_observable(ev.data(), entries, fr.residuals);
+  fr.rms_all = rms_of(fr.residuals);
+  fr.bic = bic(entries, fr.residuals, static_cast<int>(ev.data().observables.size()), k);
+  fr.evaluations = evaluations + 1;
+  if (with_errors) fr.standard_errors = standard_errors(ev, base, v, fr);
+  fr.converged = lm.converged;
+  return fr;
+}
+
+CrossValidation cross_validate(const Evaluator& ev, const TyreConfig& base, const Variant& v,
+                               const FitResult& full) {
+  const int n = static_cast<int>(ev.data().rows.size());
+  CrossValidation cv;
+  cv.folds = n <= 8 ? n : 6;
+  std::vector<int> all(n);
+  std::iota(all.begin(), all.end(), 0);
+  cv.entries = ev.entries(all);
+  cv.residuals.assign(cv.entries.size(), 0.0);
+  for (int f = 0; f < cv.folds; ++f) {
+    std::vector<int> train, test;
+    for (int r = 0; r < n; ++r) (r % cv.folds == f ? test : train).push_back(r);
+    const FitResult fit = fit_variant(ev, base, v, train, &full.values);
+    cv.evaluations += fit.evaluations;
+    const auto test_entries = ev.entries(test);
+    const auto r = ev.residuals(fit.config, test_entries);
+    for (std::size_t i = 0; i < test_entries.size(); ++i) {
+      for (std::size_t j = 0; j < cv.entries.size(); ++j) {
+        if (cv.entries[j].row == test_entries[i].row &&
+            cv.entries[j].observable == test_entries[i].observable) {
+          cv.residuals[j] = r[i];
+        }
+      }
+    }
+  }
+  cv.rms = rms_by_observable(ev.data(), cv.entries, cv.residuals);
+  cv.rms_all = rms_of(cv.residuals);
+  return cv;
+}
+
+}  // namespace modaltyre::discover

@@ -1,0 +1,112 @@
+// `modaltyre effects` end to end: the documented JSON shape, keys the config reader accepts,
+// and exit 2 naming the key for a value outside the catalogue's range.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+#include "cli_runner.h"
+
+namespace {
+
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+
+class EffectsCli : public modaltyre_test::CliFixture {
+ protected:
+  nlohmann::json catalogue() {
+    const auto r = run({"effects", "--json"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  }
+
+  // A coarse mesh: only the config reader is under test here, not the solve.
+  modaltyre_test::CliRun footprint_with(const std::vector<std::string>& sets) {
+    std::vector<std::string> args{
+        "footprint", kConfig, "--load", "4000", "--json", "--set", "contact.unit_length_mm=2"};
+    for (const auto& s : sets) {
+      args.push_back("--set");
+      args.push_back(s);
+    }
+    return run(args);
+  }
+};
+
+TEST_F(EffectsCli, JsonListsNineEffectsWithTheDocumentedShape) {
+  const auto j = catalogue();
+  ASSERT_TRUE(j.contains("effects"));
+  ASSERT_EQ(j["effects"].size(), 9u);
+  std::set<std::string> names;
+  for (const auto& e : j["effects"]) {
+    for (const char* k :
+         {"name", "description", "observables", "regime", "enabled_key", "parameters"}) {
+      ASSERT_TRUE(e.contains(k)) << k;
+    }
+    const auto name = e["name"].get<std::string>();
+    names.insert(name);
+    EXPECT_EQ(e["enabled_key"], "effects." + name + ".enabled");
+    EXPECT_FALSE(e["observables"].empty()) << name;
+    EXPECT_FALSE(e["regime"].get<std::string>().empty()) << name;
+    ASSERT_FALSE(e["parameters"].empty()) << name;
+    for (const auto& p : e["parameters"]) {
+      for (const char* k : {"key", "unit", "default", "min", "max", "fitted", "meaning"}) {
+        ASSERT_TRUE(p.contains(k)) << name << " " << k;
+      }
+      EXPECT_EQ(p["key"].get<std::string>().rfind("effects." + name + ".", 0), 0u) << p["key"];
+      EXPECT_TRUE(p["fitted"].is_boolean());
+      const double lo = p["min"], hi = p["max"], def = p["default"];
+      EXPECT_LE(lo, def) << p["key"];
+      EXPECT_LE(def, hi) << p["key"];
+    }
+  }
+  EXPECT_EQ(names.size(), 9u) << "effect names must be unique";
+}
+
+TEST_F(EffectsCli, TextTableNamesEveryKeyAndWhetherItIsFitted) {
+  const auto j = catalogue();
+  const auto r = run({"effects"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const auto& e : j["effects"]) {
+    EXPECT_NE(r.out.find(e["enabled_key"].get<std::string>()), std::string::npos);
+    EXPECT_NE(r.out.find("regime variable: " + e["regime"].get<std::string>()), std::string::npos);
+    for (const auto& p : e["parameters"]) {
+      EXPECT_NE(r.out.find(p["key"].get<std::string>()), std::string::npos) << p["key"];
+    }
+  }
+  EXPECT_NE(r.out.find("stated"), std::string::npos);
+  EXPECT_NE(r.out.find("fitted"), std::string::npos);
+}
+
+TEST_F(EffectsCli, EveryListedKeyIsAcceptedAtItsDefault) {
+  // Every key of every effect in one run: the reader rejects unknown keys, so exit 0 means each
+  // listed key is a real one.
+  std::vector<std::string> sets;
+  for (const auto& e : catalogue()["effects"]) {
+    sets.push_back(e["enabled_key"].get<std::string>() + "=true");
+    for (const auto& p : e["parameters"]) {
+      sets.push_back(p["key"].get<std::string>() + "=" + p["default"].dump());
+    }
+  }
+  const auto r = footprint_with(sets);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(nlohmann::json::parse(r.out)["cases"][0]["converged"].get<bool>());
+  // A misspelt key is not silently ignored.
+  const auto bad = footprint_with({"effects.dry_friction.friction_force=200"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("friction_force"), std::string::npos) << bad.err;
+}
+
+TEST_F(EffectsCli, OutOfRangeValueExitsTwoNamingTheKey) {
+  for (const auto& e : catalogue()["effects"]) {
+    const auto& p = e["parameters"][0];
+    const std::string key = p["key"];
+    const double above = p["max"].get<double>() * 2 + 1;
+    const auto r = footprint_with(
+        {e["enabled_key"].get<std::string>() + "=true", key + "=" + nlohmann::json(above).dump()});
+    EXPECT_EQ(r.exit_code, 2) << key << ": " << r.err;
+    EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty()) << key;
+  }
+}
+
+}  // namespace
