@@ -173,6 +173,7 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
       const double x = var.empty() ? row.row : contact::condition_value(data.rows[i].conditions, var);
       pts.emplace_back(x, 100 * row.cv_before.at(obs), 100 * row.cv_after.at(obs));
     }
+    if (pts.empty()) continue;  // e.g. a rolling resistance measured as 0 on every row
     std::sort(pts.begin(), pts.end());
     PlotPanel p;
     p.title = axis_label(obs) + (r.effects.empty() ? ": nothing named" : ": before and after");
@@ -188,6 +189,9 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
     p.series = {before, after};
     p.key = "below";
     fig.panels.push_back(p);
+  }
+  if (fig.panels.empty()) {
+    throw InputError({data.path, 0, ""}, "nothing to plot: no observable has a non-zero measurement");
   }
   fig.width_px = 420 * static_cast<int>(std::min<std::size_t>(fig.panels.size(), 3)) + 60;
   fig.height_px = fig.panels.size() > 3 ? 900 : 520;
