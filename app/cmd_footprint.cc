@@ -34,7 +34,7 @@ std::vector<contact::Prediction> compute_cases(const contact::TyreModel& model,
   std::vector<contact::Prediction> out;
   if (!config.effects.any()) {
     for (auto& r : contact::solve_footprints(model, cases)) {
-      out.push_back(as_prediction(std::move(r), config));
+      out.push_back(contact::prediction_from(std::move(r), config));
     }
     return out;
   }

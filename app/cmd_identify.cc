@@ -1,16 +1,24 @@
 // modaltyre identify METHOD [FILE] [options] [--json] [--plot FILE] [--write-config FILE]
-// Rheological parameters from simple tyre and soil tests (seed 000).
+//                   [--into-config TYRE.yaml --out-config OUT.yaml]
+// Rheological parameters from simple tyre and soil tests (seed 000); with --into-config the
+// parameters the footprint model uses are written into a copy of the tyre config as effects.
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <numeric>
+#include <optional>
 #include <sstream>
 
 #include "cli_support.h"
 #include "commands.h"
+#include "modaltyre/contact/effects.h"
+#include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
@@ -37,6 +45,7 @@ struct IdentifyArgs {
   bool json = false;
   std::string plot;
   std::string write_config;
+  std::string into_config, out_config;  ///< --into-config TYRE.yaml --out-config OUT.yaml
   int samples = 6;
   std::string sampling = "deflection";
   bool intercept = false;
@@ -49,10 +58,19 @@ struct Geometry {
   double r0_m = 0, tread_width_m = 0, pressure_Pa = -1;
 };
 
+// The config the tyre geometry comes from: --config, else for the methods that test the tyre
+// itself (not the rigid soil-test wheel) the --into-config target, which is the same tyre.
+std::string geometry_config(const IdentifyArgs& a) {
+  if (!a.config.empty()) return a.config;
+  const bool tests_the_tyre = a.method == "load-deflection" || a.method == "free-vibration";
+  return tests_the_tyre ? a.into_config : std::string();
+}
+
 Geometry resolve_geometry(const IdentifyArgs& a) {
   Geometry g;
-  if (!a.config.empty()) {
-    const ConfigTree tree = ConfigTree::load(a.config);
+  const std::string config = geometry_config(a);
+  if (!config.empty()) {
+    const ConfigTree tree = ConfigTree::load(config);
     const ConfigSection root = tree.root();
     if (root.has("tyre")) {
       const ConfigSection tyre = root.section("tyre");
@@ -144,9 +162,226 @@ void write_rheology_yaml(const IdentifyArgs& a, const nlohmann::json& out) {
   write_file_atomically(a.write_config, text);
 }
 
+// ---- --into-config: identified parameters -> effects of the tyre config (docs/rheology.md) ---
+
+// What an identification determines in the tyre config's `effects:` section.
+struct EffectMapping {
+  std::vector<std::string> enabled;                     ///< effect names switched on
+  std::vector<std::pair<std::string, double>> values;   ///< dotted key, value in the key's unit
+  std::vector<std::string> notes;                       ///< how each value was obtained, why
+};
+
+std::string number_text(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+// Sets effects.EFFECT.PARAM = value, refusing a value outside the catalogue's range (the tyre
+// config reader would refuse it too, but without saying that it was identified).
+void set_effect(EffectMapping& m, const std::string& effect, const std::string& param,
+                double value) {
+  const contact::EffectInfo* info = contact::find_effect(effect);
+  if (!info) throw ComputationError("identify: no effect named " + effect);
+  const auto p = std::find_if(info->parameters.begin(), info->parameters.end(),
+                              [&](const auto& q) { return q.name == param; });
+  if (p == info->parameters.end()) throw ComputationError("identify: no parameter " + param);
+  const std::string key = info->key(*p);
+  if (!std::isfinite(value) || value < p->min || value > p->max)
+    throw InputError({"--into-config", 0, key},
+                     "the identified value " + number_text(value) + " " + p->unit +
+                         " is outside the range [" + number_text(p->min) + ", " +
+                         number_text(p->max) + "] the tyre config accepts; check the data");
+  if (std::find(m.enabled.begin(), m.enabled.end(), effect) == m.enabled.end())
+    m.enabled.push_back(effect);
+  m.values.emplace_back(key, value);
+}
+
+// Methods whose results the footprint model has no place for refuse --into-config (exit 2)
+// before any fitting; so does a half-given pair of options.
+void check_into_config_use(const IdentifyArgs& a) {
+  if (a.into_config.empty() && a.out_config.empty()) return;
+  if (a.out_config.empty())
+    throw InputError({"--out-config", 0, ""},
+                     "--into-config " + a.into_config + " needs --out-config OUT.yaml, the file "
+                     "to write the tyre config with the identified effects to");
+  if (a.into_config.empty())
+    throw InputError({"--into-config", 0, ""},
+                     "--out-config needs --into-config TYRE.yaml, the tyre config to start from");
+  const std::string refuse = "identify " + a.method + " --into-config: ";
+  if (a.method == "b-factors")
+    throw InputError(refuse + "the slope factors B1, B2 (eq. 6, 10) are constants of the seed's "
+                     "approximations; the footprint model uses nothing they determine (use "
+                     "--write-config for a separate document)");
+  if (a.method == "contact-stress")
+    throw InputError(refuse + "K1 and C_P (eq. 8-12) are radial stiffnesses of the seed's ring "
+                     "model; the footprint model takes its carcass stiffness from the hammer "
+                     "test (modal.*) and no effect uses K1 or C_P (use --write-config)");
+  if (a.method == "free-vibration" && a.static_file.empty())
+    throw InputError(refuse + "without --static, free-vibration identifies only the viscosity "
+                     "eta1 (eq. 22), which the static footprint model does not use; give "
+                     "--static LOOP.csv to identify the dry friction chi (eq. 18)");
+  namespace fs = std::filesystem;
+  std::error_code ec_in, ec_out;
+  const fs::path in = fs::weakly_canonical(a.into_config, ec_in);
+  const fs::path out = fs::weakly_canonical(a.out_config, ec_out);
+  if (!ec_in && !ec_out && in == out)
+    throw InputError({"--out-config", 0, ""},
+                     a.out_config + " is the tyre config itself: write the augmented config to "
+                     "another file (its comments would be lost)");
+}
+
+// Saint-Venant force of the three-element model, the third term of eq. (14) with
+// sgn dh/dt = +-1 (eq. 18 solved for P_Zv): P_Zv = 2 B_tr chi E1 r0 phi1 cos phi1 [N]
+// (~ chi E1 B_tr L_C for small phi1).
+double dry_friction_force_N(double chi, double E1_Pa, double tread_width_m, double r0_m,
+                            double phi1_rad) {
+  return 2.0 * tread_width_m * chi * E1_Pa * r0_m * phi1_rad * std::cos(phi1_rad);
+}
+
+// Three-element model (static loop + free decay) -> effects.dry_friction.friction_force_N.
+// F_f is evaluated at the free-vibration test point: the contact length L_C of eq. (22) at the
+// friction-free deflection h_Z0 (sin phi1 = L_C / (2 r0)).
+EffectMapping map_three_element(const rh::FreeVibrationResult& res, const rh::StaticLoop& loop,
+                                const rh::ThreeElementOptions& o) {
+  const rh::StaticLoopFit& s = *res.static_fit;
+  const double s_half = res.contact_length_m / (2.0 * o.r0_m);
+  if (!(s_half > 0 && s_half < 1))
+    throw InputError({"--contact-length-mm", 0, ""},
+                     "the contact length L_C = " + number_text(res.contact_length_m * 1e3) +
+                         " mm is not below the diameter 2 r0");
+  const double phi1 = std::asin(s_half);
+  const double ff = dry_friction_force_N(s.chi, s.E1_Pa, o.tread_width_m, o.r0_m, phi1);
+  EffectMapping m;
+  set_effect(m, "dry_friction", "friction_force_N", ff);
+  double hmin = 1e300, hmax = 0;
+  for (const auto& r : loop.rows) hmin = std::min(hmin, r.deflection_m), hmax = std::max(hmax, r.deflection_m);
+  auto ff_at = [&](double h) {
+    return dry_friction_force_N(s.chi, s.E1_Pa, o.tread_width_m, o.r0_m,
+                                rh::half_contact_angle(h, o.r0_m));
+  };
+  m.notes.push_back("effects.dry_friction.friction_force_N = F_f = 2 B_tr chi E1 r0 phi1 cos phi1 "
+                    "(seed eq. 14, 18) = " + number_text(round_sig(ff, 5)) + " N with chi = " +
+                    number_text(round_sig(s.chi, 5)) + ", E1 = " +
+                    number_text(round_sig(s.E1_Pa * 1e-6, 5)) + " MPa, B_tr = " +
+                    number_text(o.tread_width_m * 1e3) + " mm, r0 = " +
+                    number_text(o.r0_m * 1e3) + " mm at the test's contact length L_C = " +
+                    number_text(round_sig(res.contact_length_m * 1e3, 5)) + " mm (phi1 = " +
+                    number_text(round_sig(phi1, 4)) + " rad)");
+  m.notes.push_back("the three-element force grows with the contact: " +
+                    number_text(round_sig(ff_at(hmin), 4)) + " N at h_Z = " +
+                    number_text(round_sig(hmin * 1e3, 4)) + " mm to " +
+                    number_text(round_sig(ff_at(hmax), 4)) + " N at " +
+                    number_text(round_sig(hmax * 1e3, 4)) +
+                    " mm of the static loop; the footprint model's F_f is constant");
+  m.notes.push_back("eta1 (eq. 22) is not written: the footprint model is static");
+  return m;
+}
+
+// Kelvin-Voigt soil (rolling tests) -> effects.soil_compliance.modulus_MPa = E2 and layer_mm =
+// the layer depth A of the tests (the Winkler stiffness of the static part is E2 / A).
+EffectMapping map_soil(const rh::SoilData& data, const rh::SoilResult& res) {
+  double amin = 1e300, amax = 0, sum = 0;
+  for (const auto& r : data.rows) {
+    amin = std::min(amin, r.layer_m), amax = std::max(amax, r.layer_m), sum += r.layer_m;
+  }
+  const double layer_m = sum / static_cast<double>(data.rows.size());
+  EffectMapping m;
+  set_effect(m, "soil_compliance", "modulus_MPa", res.E2_Pa * 1e-6);
+  set_effect(m, "soil_compliance", "layer_mm", layer_m * 1e3);
+  m.notes.push_back("effects.soil_compliance.modulus_MPa = E2 (eq. 23, 27) = " +
+                    number_text(round_sig(res.E2_Pa * 1e-6, 5)) + " MPa");
+  m.notes.push_back("effects.soil_compliance.layer_mm = the layer depth A of the rolling tests = " +
+                    number_text(round_sig(layer_m * 1e3, 5)) + " mm" +
+                    (amax - amin > 1e-9 * amax ? " (mean of " + number_text(amin * 1e3) + "-" +
+                                                     number_text(amax * 1e3) + " mm)"
+                                               : std::string()));
+  m.notes.push_back("the soil acts on rows with surface: soil only; eta2 and k_E = " +
+                    number_text(round_sig(res.k_E, 3)) +
+                    " (plastic share) are not written: the static Winkler soil is elastic");
+  return m;
+}
+
+// Number of different values (relative tolerance 1e-6 of the largest).
+int distinct_values(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const double tol = 1e-6 * std::max(std::abs(v.front()), std::abs(v.back()));
+  int n = v.empty() ? 0 : 1;
+  for (std::size_t i = 1; i < v.size(); ++i) n += v[i] - v[i - 1] > tol ? 1 : 0;
+  return n;
+}
+
+// Load-deflection (eq. 3, h_Z = K_Z P_Z^3/4 (1 + p_W)^-1) -> the two laws it states, each only
+// when the data span its variable: load_stiffening (exponent 1/4, reference the mean test load)
+// and inflation_pressure (exponent 1, the hammer test at the tyre config's pressure).
+EffectMapping map_load_deflection(const rh::LoadDeflectionData& data, double tyre_pressure_kPa) {
+  std::vector<double> loads, pressures;
+  for (const auto& r : data.rows) loads.push_back(r.load_N), pressures.push_back(r.pressure_Pa);
+  EffectMapping m;
+  if (distinct_values(loads) > 1) {
+    const double mean = std::accumulate(loads.begin(), loads.end(), 0.0) / loads.size();
+    set_effect(m, "load_stiffening", "exponent", 0.25);
+    set_effect(m, "load_stiffening", "reference_load_N", mean);
+    m.notes.push_back("effects.load_stiffening: exponent = 1/4 (h ~ P^3/4 of eq. 3: secant "
+                      "compliance ~ P^-1/4), reference_load_N = the mean test load " +
+                      number_text(round_sig(mean, 6)) + " N");
+  } else {
+    m.notes.push_back("one load only: the P^3/4 law of eq. (3) is the seed's, not identified by "
+                      "these data; effects.load_stiffening left as in the tyre config");
+  }
+  if (distinct_values(pressures) > 1) {
+    set_effect(m, "inflation_pressure", "exponent", 1.0);
+    set_effect(m, "inflation_pressure", "modal_test_pressure_kPa", tyre_pressure_kPa);
+    m.notes.push_back("effects.inflation_pressure: exponent = 1 ((1 + p_W)^-1 of eq. 3, p_W in "
+                      "bar), modal_test_pressure_kPa = tyre.inflation_pressure_kPa = " +
+                      number_text(tyre_pressure_kPa) + " kPa");
+  } else {
+    m.notes.push_back("one pressure only: the (1 + p_W)^-1 law of eq. (3) is the seed's, not "
+                      "identified by these data; effects.inflation_pressure left as in the "
+                      "tyre config");
+  }
+  m.notes.push_back("K_Z itself is not written: the footprint model's stiffness level comes from "
+                    "the hammer test (modal.compliance_scale)");
+  return m;
+}
+
+// OUT = TYRE with the mapping applied as overrides, modal.hammer_csv re-anchored to OUT's
+// folder, checked by the tyre config reader before it is written (atomically).
+void write_into_config(const IdentifyArgs& a, const contact::TyreConfig& tyre,
+                       const EffectMapping& m) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> ov;
+  for (const auto& e : m.enabled) ov.push_back("effects." + e + ".enabled=true");
+  for (const auto& [key, value] : m.values) ov.push_back(key + "=" + number_text(value));
+  const fs::path folder = fs::absolute(fs::path(a.out_config)).parent_path();
+  ov.push_back("modal.hammer_csv=" +
+               fs::relative(fs::absolute(tyre.hammer_csv), folder).generic_string());
+  std::string text = "# Written by modaltyre identify " + a.method + " from " + a.into_config +
+                     (a.file.empty() ? "" : " and " + a.file) +
+                     " (seed 000, docs/rheology.md).\n";
+  for (const auto& n : m.notes) text += "# " + n + "\n";
+  text += ConfigTree::load(a.into_config, ov).dump() + "\n";
+  contact::read_tyre_config(ConfigTree::from_string(text, a.out_config));
+  write_file_atomically(a.out_config, text);
+}
+
+// The target tyre config (read before any fitting) and what the method determined in it.
+struct IntoConfig {
+  contact::TyreConfig tyre;
+  EffectMapping mapping;
+};
+
+nlohmann::json mapping_json(const IdentifyArgs& a, const EffectMapping& m) {
+  nlohmann::json set = nlohmann::json::object();
+  for (const auto& [key, value] : m.values) set[key] = value;
+  return {{"tyre_config", a.into_config}, {"out_config", a.out_config},
+          {"enabled", m.enabled},         {"set", set},
+          {"notes", m.notes}};
+}
+
 // ---- methods --------------------------------------------------------------------------------
 
-nlohmann::json run_load_deflection(const IdentifyArgs& a, const Geometry& g) {
+nlohmann::json run_load_deflection(const IdentifyArgs& a, const Geometry& g, IntoConfig* into) {
   const auto data = rh::read_load_deflection_csv(a.file);
   rh::LoadDeflectionOptions o;
   o.r0_m = g.r0_m;
@@ -156,6 +391,7 @@ nlohmann::json run_load_deflection(const IdentifyArgs& a, const Geometry& g) {
   out["pressure_unit"] = rh::kPressureUnitName;
   out["reference_pressure_kPa"] = round_sig(res.reference_pressure_Pa * 1e-3);
   out["law"] = "h_Z[mm] = K_Z P_Z[N]^(3/4) / (1 + p_W[bar, gauge])";
+  if (into) into->mapping = map_load_deflection(data, into->tyre.inflation_pressure_Pa * 1e-3);
   if (!a.plot.empty()) {
     std::map<long long, PlotSeries> meas, fit;
     double pmax = 0;
@@ -241,7 +477,7 @@ nlohmann::json run_contact_stress(const IdentifyArgs& a, const Geometry& g) {
   return out;
 }
 
-nlohmann::json run_free_vibration(const IdentifyArgs& a, const Geometry& g) {
+nlohmann::json run_free_vibration(const IdentifyArgs& a, const Geometry& g, IntoConfig* into) {
   const auto signal = rh::read_free_vibration_csv(a.file);
   rh::ThreeElementOptions o;
   o.r0_m = g.r0_m;
@@ -253,6 +489,7 @@ nlohmann::json run_free_vibration(const IdentifyArgs& a, const Geometry& g) {
   if (!a.static_file.empty())
     loop = std::make_unique<rh::StaticLoop>(rh::read_static_loop_csv(a.static_file));
   const auto res = rh::identify_free_vibration(signal, loop.get(), o);
+  if (into) into->mapping = map_three_element(res, *loop, o);  // --static: check_into_config_use
   nlohmann::json out = report_json(res.report);
   nlohmann::json amps = nlohmann::json::array();
   for (std::size_t i = 0; i < res.decay.amplitude_m.size(); ++i)
@@ -300,10 +537,11 @@ nlohmann::json run_free_vibration(const IdentifyArgs& a, const Geometry& g) {
   return out;
 }
 
-nlohmann::json run_soil(const IdentifyArgs& a, const Geometry& g) {
+nlohmann::json run_soil(const IdentifyArgs& a, const Geometry& g, IntoConfig* into) {
   const auto data = rh::read_soil_rolling_csv(a.file);
   rh::SoilOptions o{g.r0_m, g.tread_width_m};
   const auto res = rh::identify_soil(data, o);
+  if (into) into->mapping = map_soil(data, res);
   nlohmann::json out = report_json(res.report);
   if (!a.plot.empty()) {
     PlotSeries z{"P_Z", {}, {}, "points"}, x{"P_X", {}, {}, "points"}, d{"equal", {}, {}, "lines"};
@@ -365,6 +603,12 @@ void register_identify(CLI::App& app) {
   cmd->add_option("--plot", args->plot, "draw the fitted curve over the data (.svg/.png)");
   cmd->add_option("--write-config", args->write_config,
                   "write the identified parameters as a 'rheology:' YAML document");
+  cmd->add_option("--into-config", args->into_config,
+                  "tyre config (YAML) to write the identified effects into (with --out-config; "
+                  "load-deflection, free-vibration with --static, soil-rolling)");
+  cmd->add_option("--out-config", args->out_config,
+                  "write the tyre config of --into-config with the identified effects switched "
+                  "on and set here (YAML)");
   cmd->callback([args] {
     const auto& a = *args;
     if (a.method == "b-factors") {
@@ -375,16 +619,24 @@ void register_identify(CLI::App& app) {
     }
     if (!a.static_file.empty() && a.method != "free-vibration")
       throw InputError({"--static", 0, ""}, "--static is only used by free-vibration");
+    check_into_config_use(a);
+    std::optional<IntoConfig> into;
+    if (!a.into_config.empty()) into = IntoConfig{contact::load_tyre_config(a.into_config), {}};
+    IntoConfig* ic = into ? &*into : nullptr;
     const Geometry g = resolve_geometry(a);
     nlohmann::json out;
-    if (a.method == "load-deflection") out = run_load_deflection(a, g);
+    if (a.method == "load-deflection") out = run_load_deflection(a, g, ic);
     else if (a.method == "b-factors") out = run_b_factors(a);
     else if (a.method == "contact-stress") out = run_contact_stress(a, g);
-    else if (a.method == "free-vibration") out = run_free_vibration(a, g);
-    else out = run_soil(a, g);
+    else if (a.method == "free-vibration") out = run_free_vibration(a, g, ic);
+    else out = run_soil(a, g, ic);
     if (!a.file.empty()) out["file"] = a.file;
     check_finite(out);
     if (!a.write_config.empty()) write_rheology_yaml(a, out);
+    if (into) {
+      write_into_config(a, into->tyre, into->mapping);
+      out["into_config"] = mapping_json(a, into->mapping);
+    }
     if (a.json) {
       print_json(out);
     } else {
@@ -401,6 +653,11 @@ void register_identify(CLI::App& app) {
         r.notes.push_back(std::string("p_W in (1 + p_W) is gauge pressure in ") +
                           out["pressure_unit"].get<std::string>());
       print_report(r, a.file);
+      if (into) {
+        std::cout << "\naugmented tyre config: " << a.out_config << " (from " << a.into_config
+                  << ")\n";
+        for (const auto& n : into->mapping.notes) std::cout << "  " << n << "\n";
+      }
     }
   });
 }

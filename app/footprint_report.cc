@@ -22,19 +22,6 @@ std::vector<std::string> enabled_effects(const contact::EffectsConfig& effects) 
 
 }  // namespace
 
-contact::Prediction as_prediction(contact::FootprintResult result,
-                                  const contact::TyreConfig& config) {
-  contact::Prediction p;
-  p.ok = result.converged;
-  p.message = result.message;
-  p.sinking_mm = result.sinking_m * 1e3;
-  p.length_mm = result.contact_length_m * 1e3;
-  p.width_mm = config.tread.width_m * 1e3;
-  p.elastic_load_N = result.load.load_N;
-  p.footprint = std::move(result);
-  return p;
-}
-
 void require_converged(const std::vector<contact::Prediction>& cases) {
   for (const auto& p : cases) {
     if (!p.ok) {

@@ -10,11 +10,6 @@
 
 namespace modaltyre::app {
 
-/// A footprint of the model's own operator as a Prediction (config width, no rolling
-/// resistance): what FootprintPredictor::predict() gives when no effect is on.
-contact::Prediction as_prediction(contact::FootprintResult result,
-                                  const contact::TyreConfig& config);
-
 /// Throws ComputationError naming the first load case that did not converge.
 void require_converged(const std::vector<contact::Prediction>& cases);
 /// `footprint.load` of each case is the applied load.

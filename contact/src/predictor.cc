@@ -42,6 +42,18 @@ double Prediction::observable(const std::string& name) const {
   throw std::invalid_argument("unknown observable " + name);
 }
 
+Prediction prediction_from(FootprintResult result, const TyreConfig& config) {
+  Prediction p;
+  p.ok = result.converged;
+  p.message = result.message;
+  p.sinking_mm = result.sinking_m * 1e3;
+  p.length_mm = result.contact_length_m * 1e3;
+  p.width_mm = config.tread.width_m * 1e3;
+  p.elastic_load_N = result.load.load_N;
+  p.footprint = std::move(result);
+  return p;
+}
+
 std::vector<double> pasternak_tread_lags(double k_r, double ell, double ds, int max_lags) {
   if (!(ell > 0)) return {1.0 / k_r};
   const double a = (ell / ds) * (ell / ds);

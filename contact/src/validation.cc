@@ -49,18 +49,6 @@ OperatingConditions conditions_of(const MeasuredFootprint& row, const TyreConfig
   return row.conditions ? *row.conditions : config.default_conditions(row.load_N);
 }
 
-Prediction prediction_of(FootprintResult f, const TyreConfig& config) {
-  Prediction p;
-  p.ok = f.converged;
-  p.message = f.message;
-  p.sinking_mm = f.sinking_m * 1e3;
-  p.length_mm = f.contact_length_m * 1e3;
-  p.width_mm = config.tread.width_m * 1e3;
-  p.elastic_load_N = f.load.load_N;
-  p.footprint = std::move(f);
-  return p;
-}
-
 // Predicted footprints of the rows. No effect on: the model's own operator, the rows in file
 // order each warm-started from the previous (what validate computed before effects existed);
 // with effects: FootprintPredictor::predict() at each row's conditions.
@@ -75,7 +63,7 @@ std::vector<Prediction> predict_rows(const TyreModel& model,
       cases.push_back({c.load_N, c.horizontal_force_N});
     }
     for (auto& f : solve_footprints(model, cases)) {
-      out.push_back(prediction_of(std::move(f), config));
+      out.push_back(prediction_from(std::move(f), config));
     }
     return out;
   }

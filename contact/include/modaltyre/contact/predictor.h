@@ -30,6 +30,10 @@ struct Prediction {
   double observable(const std::string& name) const;
 };
 
+/// A plain solve_footprint() result as a Prediction (no effect on: the config's width, no
+/// rolling resistance), for callers that keep the effect-free path bit for bit.
+Prediction prediction_from(FootprintResult result, const TyreConfig& config);
+
 /// The observable columns a prediction provides, in CSV order.
 const std::vector<std::string>& observable_names();
 

@@ -1,0 +1,318 @@
+// `modaltyre identify ... --into-config TYRE.yaml --out-config OUT.yaml`: identified parameters
+// written into the tyre config as effects (docs/rheology.md, "Feeding the footprint model").
+// Planted synthetic data as in three_element_test.cc, soil_test.cc and load_deflection_test.cc;
+// the CLI runs in a fresh temporary folder per test (tests/app/cli_runner.h).
+//
+// The checks that need the footprint model go through the CLI (`footprint`, `sweep`), which
+// loads OUT with contact::load_tyre_config and predicts with contact::FootprintPredictor: this
+// test executable links modaltyre::rheology only.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../app/cli_runner.h"
+#include "modaltyre/core/config_tree.h"
+#include "modaltyre/rheology/contact_geometry.h"
+#include "modaltyre/rheology/load_deflection.h"
+#include "modaltyre/rheology/soil.h"
+#include "modaltyre/rheology/three_element.h"
+#include "rheology_test_support.h"
+
+namespace modaltyre::rheology {
+namespace {
+
+using modaltyre_test::CliFixture;
+using modaltyre_test::slurp;
+
+const std::string kSrc = MODALTYRE_SOURCE_DIR;
+const std::string kTyre = kSrc + "/configs/sf350.yaml";
+
+// SF-350 geometry as configs/sf350.yaml gives it (r0 294.8 mm, B_tr 130 mm), H = 117 mm.
+ThreeElementOptions tyre_options() {
+  ThreeElementOptions o;
+  o.r0_m = 0.2948;
+  o.tread_width_m = 0.13;
+  o.section_height_m = 0.117;
+  o.mass_kg = 350.0;
+  return o;
+}
+
+constexpr double kE1_Pa = 1.2e6, kChi = 0.02, kH0_m = 0.020;
+
+std::string static_loop_csv(double noise_rel, unsigned seed) {
+  test::Noise noise;
+  noise.rng.seed(seed);
+  std::ostringstream s;
+  s.precision(10);
+  s << "load_N,deflection_mm,branch\n";
+  for (bool loading : {true, false})
+    for (int i = 1; i <= 8; ++i) {
+      const double h = 0.004 * i;
+      const double P = static_loop_load(kE1_Pa, kChi, h, loading, tyre_options()) *
+                       (1 + noise_rel * noise());
+      s << P << "," << h * 1e3 << "," << (loading ? "loading" : "unloading") << "\n";
+    }
+  return s.str();
+}
+
+// Free decay about h0 = 20 mm, 8 Hz, zeta = 0.05 (closed form, as three_element_test.cc).
+std::string decay_csv() {
+  const double f = 8.0, zeta = 0.05, a0 = 0.005;
+  const double wd = 2 * M_PI * f, wn = wd / std::sqrt(1 - zeta * zeta);
+  std::ostringstream s;
+  s.precision(10);
+  s << "t_s,deflection_mm\n";
+  for (int i = 0; i <= 1500; ++i) {
+    const double t = 1e-3 * i;
+    s << t << "," << (kH0_m + a0 * std::exp(-zeta * wn * t) * std::cos(wd * t)) * 1e3 << "\n";
+  }
+  return s.str();
+}
+
+// The planted Saint-Venant force at the decay's contact length (docs/rheology.md):
+// F_f = 2 B_tr chi E1 r0 phi1 cos phi1 with phi1 at h_Z0.
+double planted_friction_N() {
+  const auto o = tyre_options();
+  const double phi1 = half_contact_angle(kH0_m, o.r0_m);
+  return 2 * o.tread_width_m * kChi * kE1_Pa * o.r0_m * phi1 * std::cos(phi1);
+}
+
+std::string soil_csv() {
+  const SoilOptions o{0.5, 0.3};
+  std::ostringstream s;
+  s.precision(10);
+  s << "load_N,longitudinal_force_N,alpha1_deg,alpha2_deg,total_sinking_mm,elastic_sinking_mm,"
+       "layer_mm,speed_m_s\n";
+  for (double a1 : {12.0, 16.0, 20.0, 24.0})
+    for (double V : {0.5, 1.5, 3.0}) {
+      SoilRow r;
+      r.alpha1_rad = a1 * M_PI / 180;
+      r.alpha2_rad = 0.55 * r.alpha1_rad;
+      r.total_sinking_m = o.r0_m * (1 - std::cos(r.alpha1_rad));
+      r.elastic_sinking_m = o.r0_m * (1 - std::cos(r.alpha2_rad));
+      r.layer_m = 0.30;
+      r.speed_m_s = V;
+      r = soil_forces(r, 3.0e6, 5.0e4, o);
+      s << r.load_N << "," << r.longitudinal_force_N << "," << a1 << "," << 0.55 * a1 << ","
+        << r.total_sinking_m * 1e3 << "," << r.elastic_sinking_m * 1e3 << ",300," << V << "\n";
+    }
+  return s.str();
+}
+
+std::string load_deflection_csv(const std::vector<double>& pressures_kPa) {
+  std::ostringstream s;
+  s.precision(10);
+  s << "load_N,pressure_kPa,deflection_mm\n";
+  for (double p : pressures_kPa)
+    for (double P : {2000.0, 3000.0, 4000.0, 5000.0, 6000.0})
+      s << P << "," << p << "," << law_deflection(0.13e-3, P, p * 1e3) * 1e3 << "\n";
+  return s.str();
+}
+
+// CSV of a sweep: column name -> values.
+std::map<std::string, std::vector<std::string>> read_csv_columns(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  for (std::stringstream h(line); std::getline(h, line, ',');) names.push_back(line);
+  std::map<std::string, std::vector<std::string>> cols;
+  while (std::getline(in, line)) {
+    std::stringstream r(line);
+    std::string cell;
+    for (const auto& n : names) {
+      std::getline(r, cell, ',');
+      cols[n].push_back(cell);
+    }
+  }
+  return cols;
+}
+
+class rheology_IdentifyIntoConfig : public CliFixture {
+ protected:
+  std::string file(const std::string& name, const std::string& text) {
+    const auto p = dir_ / name;
+    std::ofstream(p) << text;
+    return p.string();
+  }
+  // OUT in its own folder, so that modal.hammer_csv must be re-anchored.
+  std::string out() {
+    std::filesystem::create_directories(dir_ / "out");
+    return (dir_ / "out" / "sf350_identified.yaml").string();
+  }
+  // Writes OUT from the three-element test (static loop + free decay) and returns the CLI run.
+  modaltyre_test::CliRun identify_three_element(double noise_rel = 0, unsigned seed = 11) {
+    return run({"identify", "free-vibration", file("decay.csv", decay_csv()), "--mass-kg", "350",
+                "--section-height-mm", "117", "--static",
+                file("loop.csv", static_loop_csv(noise_rel, seed)), "--into-config", kTyre,
+                "--out-config", out(), "--json"});
+  }
+  ConfigSection effect(const ConfigTree& t, const std::string& name) const {
+    return t.root().section("effects").section(name);
+  }
+};
+
+TEST_F(rheology_IdentifyIntoConfig, ThreeElementWritesDryFrictionForce) {
+  const auto r = identify_three_element();
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const ConfigTree t = ConfigTree::load(out());
+  const ConfigSection df = effect(t, "dry_friction");
+  EXPECT_TRUE(df.boolean("enabled", false));
+  // Noise-free planted loop: chi and E1 exact to 1e-9, h_Z0 of the decay to 1e-6.
+  EXPECT_NEAR(df.number("friction_force_N", 0, 0, 1e9) / planted_friction_N(), 1.0, 1e-4);
+  // Only the effect the method determines is switched on; the rest of the config is kept.
+  EXPECT_FALSE(t.root().section("effects").has("soil_compliance"));
+  EXPECT_DOUBLE_EQ(t.root().section("tread").number("modulus_MPa", 0, 0, 1e9), 2.329);
+  // modal.hammer_csv re-anchored to OUT's folder.
+  EXPECT_TRUE(std::filesystem::exists(
+      t.resolve_path(t.root().section("modal").text("hammer_csv", ""))));
+  EXPECT_NE(r.out.find("\"into_config\""), std::string::npos);
+  EXPECT_NE(r.out.find("effects.dry_friction.friction_force_N"), std::string::npos);
+}
+
+TEST_F(rheology_IdentifyIntoConfig, ThreeElementWithNoiseWithinStatedChiAccuracy) {
+  // docs/rheology.md: chi within 25 % with 2 % load noise; E1 within 2 %; F_f ~ chi E1.
+  for (unsigned seed : {11u, 12u, 13u}) {
+    const auto r = identify_three_element(0.02, seed);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const ConfigTree t = ConfigTree::load(out());
+    EXPECT_NEAR(effect(t, "dry_friction").number("friction_force_N", 0, 0, 1e9) /
+                    planted_friction_N(),
+                1.0, 0.27)
+        << seed;
+  }
+}
+
+TEST_F(rheology_IdentifyIntoConfig, OutConfigRunsFootprintAndDryFrictionShiftsElasticLoadBy2Ff) {
+  ASSERT_EQ(identify_three_element().exit_code, 0);
+  const auto fp = run({"footprint", out(), "--load", "4000", "--json"});
+  ASSERT_EQ(fp.exit_code, 0) << fp.err;
+  EXPECT_NE(fp.out.find("dry_friction"), std::string::npos) << "listed among the effects on";
+
+  // Three-element model: at the same applied load F the elastic tyre carries F - F_f on the
+  // loading branch and F + F_f on the unloading one, a difference of 2 F_f. The sweep predicts
+  // both branches with FootprintPredictor; they must equal the friction-free tyre at F -+ F_f.
+  const double ff =
+      effect(ConfigTree::load(out()), "dry_friction").number("friction_force_N", 0, 0, 1e9);
+  const double F = 4000;
+  const std::string coarse = "  contact.unit_length_mm: 2\n";
+  const auto with = file("with.yaml", "base: " + out() + "\nset:\n" + coarse +
+                                          "grid:\n  branch: [load, unload]\n  load_N: [4000]\n"
+                                          "output: with.csv\n");
+  const auto without =
+      file("without.yaml", "base: " + out() + "\nset:\n" + coarse +
+                               "  effects.dry_friction.enabled: false\ngrid:\n  load_N: [" +
+                               std::to_string(F - ff) + ", " + std::to_string(F + ff) +
+                               "]\noutput: without.csv\n");
+  ASSERT_EQ(run({"sweep", with, "--threads", "1"}).exit_code, 0);
+  ASSERT_EQ(run({"sweep", without, "--threads", "1"}).exit_code, 0);
+  const auto w = read_csv_columns((dir_ / "with.csv").string());
+  const auto wo = read_csv_columns((dir_ / "without.csv").string());
+  ASSERT_EQ(w.at("sinking_mm").size(), 2u);
+  ASSERT_EQ(wo.at("sinking_mm").size(), 2u);
+  const double load_branch = std::stod(w.at("sinking_mm")[0]);
+  const double unload_branch = std::stod(w.at("sinking_mm")[1]);
+  EXPECT_EQ(w.at("branch")[0], "load");
+  EXPECT_GT(unload_branch, load_branch) << "unloading: the elastic tyre carries more";
+  EXPECT_NEAR(load_branch / std::stod(wo.at("sinking_mm")[0]), 1.0, 1e-5);
+  EXPECT_NEAR(unload_branch / std::stod(wo.at("sinking_mm")[1]), 1.0, 1e-5);
+}
+
+TEST_F(rheology_IdentifyIntoConfig, SoilWritesModulusAndLayer) {
+  const auto r = run({"identify", "soil-rolling", file("soil.csv", soil_csv()), "--r0-mm", "500",
+                      "--tread-width-mm", "300", "--into-config", kTyre, "--out-config", out()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const ConfigSection s = effect(ConfigTree::load(out()), "soil_compliance");
+  EXPECT_TRUE(s.boolean("enabled", false));
+  EXPECT_NEAR(s.number("modulus_MPa", 0, 0, 1e9) / 3.0, 1.0, 1e-5);  // noise-free: 1e-6
+  EXPECT_NEAR(s.number("layer_mm", 0, 0, 1e9), 300.0, 1e-9);
+  EXPECT_NE(r.out.find("augmented tyre config"), std::string::npos);
+  const auto fp = run({"footprint", out(), "--load", "4000", "--json", "--set",
+                       "contact.unit_length_mm=2"});
+  EXPECT_EQ(fp.exit_code, 0) << fp.err;
+}
+
+TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionOverLoadsAndPressuresWritesBothLaws) {
+  const auto r = run({"identify", "load-deflection",
+                      file("ld.csv", load_deflection_csv({150, 230, 300})), "--into-config",
+                      kTyre, "--out-config", out()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const ConfigTree t = ConfigTree::load(out());
+  const ConfigSection ls = effect(t, "load_stiffening"), ip = effect(t, "inflation_pressure");
+  EXPECT_TRUE(ls.boolean("enabled", false));
+  EXPECT_DOUBLE_EQ(ls.number("exponent", 0, -1, 1), 0.25);
+  EXPECT_NEAR(ls.number("reference_load_N", 0, 0, 1e9), 4000.0, 1e-6);  // mean test load
+  EXPECT_TRUE(ip.boolean("enabled", false));
+  EXPECT_DOUBLE_EQ(ip.number("exponent", 0, 0, 9), 1.0);
+  EXPECT_DOUBLE_EQ(ip.number("modal_test_pressure_kPa", 0, 0, 1e9), 230.0);  // tyre config's
+  const auto fp = run({"footprint", out(), "--load", "4000", "--json", "--set",
+                       "contact.unit_length_mm=2"});
+  EXPECT_EQ(fp.exit_code, 0) << fp.err;
+}
+
+TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionAtOnePressureLeavesThePressureLawAlone) {
+  const auto r = run({"identify", "load-deflection", file("ld1.csv", load_deflection_csv({230})),
+                      "--into-config", kTyre, "--out-config", out()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const ConfigTree t = ConfigTree::load(out());
+  EXPECT_TRUE(effect(t, "load_stiffening").boolean("enabled", false));
+  EXPECT_FALSE(effect(t, "inflation_pressure").boolean("enabled", false));
+  EXPECT_NE(r.out.find("the seed's, not identified"), std::string::npos);
+}
+
+TEST_F(rheology_IdentifyIntoConfig, MethodsThatDetermineNoEffectRefuseWithExit2) {
+  const auto b = run({"identify", "b-factors", "--into-config", kTyre, "--out-config", out()});
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("uses nothing"), std::string::npos) << b.err;
+  const auto cs = run({"identify", "contact-stress", kSrc + "/tests/data/rheology/contact_stress.csv",
+                       "--config", kTyre, "--into-config", kTyre, "--out-config", out()});
+  EXPECT_EQ(cs.exit_code, 2);
+  EXPECT_NE(cs.err.find("no effect uses K1"), std::string::npos) << cs.err;
+  const auto fv = run({"identify", "free-vibration", file("decay.csv", decay_csv()), "--mass-kg",
+                       "350", "--into-config", kTyre, "--out-config", out()});
+  EXPECT_EQ(fv.exit_code, 2);
+  EXPECT_NE(fv.err.find("--static"), std::string::npos) << fv.err;
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+TEST_F(rheology_IdentifyIntoConfig, BadUseExits2NamingTheFileOrOption) {
+  const std::string soil = file("soil.csv", soil_csv());
+  const std::vector<std::string> geo = {"--r0-mm", "500", "--tread-width-mm", "300"};
+  auto args = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = {"identify", "soil-rolling", soil};
+    a.insert(a.end(), geo.begin(), geo.end());
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+  };
+  const auto no_out = run(args({"--into-config", kTyre}));
+  EXPECT_EQ(no_out.exit_code, 2);
+  EXPECT_NE(no_out.err.find("--out-config"), std::string::npos) << no_out.err;
+  const auto no_into = run(args({"--out-config", out()}));
+  EXPECT_EQ(no_into.exit_code, 2);
+  EXPECT_NE(no_into.err.find("--into-config"), std::string::npos) << no_into.err;
+  const std::string missing = (dir_ / "no_such_tyre.yaml").string();
+  const auto unreadable = run(args({"--into-config", missing, "--out-config", out()}));
+  EXPECT_EQ(unreadable.exit_code, 2);
+  EXPECT_NE(unreadable.err.find(missing), std::string::npos) << unreadable.err;
+  // A tyre config with a bad key is named by file and key.
+  const std::string bad = file("bad.yaml", slurp(kTyre) + "effects:\n  dry_friction:\n    "
+                                                          "friction_force_N: -5\n");
+  const auto bad_key = run(args({"--into-config", bad, "--out-config", out()}));
+  EXPECT_EQ(bad_key.exit_code, 2);
+  EXPECT_NE(bad_key.err.find("effects.dry_friction.friction_force_N"), std::string::npos)
+      << bad_key.err;
+  // OUT must not be the tyre config itself (a copy: never risk configs/sf350.yaml).
+  const std::string copy = file("copy.yaml", slurp(kTyre));
+  const auto self = run(args({"--into-config", copy, "--out-config", copy}));
+  EXPECT_EQ(self.exit_code, 2);
+  EXPECT_EQ(slurp(copy), slurp(kTyre));
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+}  // namespace
+}  // namespace modaltyre::rheology
