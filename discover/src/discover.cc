@@ -182,7 +182,16 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
                          "cross-validated against a 2-parameter baseline");
   }
   TyreConfig eval = config;
-  if (opt.unit_length_mm > 0) eval.mesh.unit_length_m = opt.unit_length_mm * 1e-3;
+  if (opt.unit_length_mm > 0) {
+    // The same limit the config reader puts on contact.unit_length_mm.
+    const double units = config.mesh.window_m / (opt.unit_length_mm * 1e-3);
+    if (!(units <= 20000)) {
+      throw InputError({"--unit-length-mm", 0, "unit_length_mm"},
+                       "window / unit length = " + std::to_string(static_cast<long>(units)) +
+                           " candidate units; at most 20000 are supported");
+    }
+    eval.mesh.unit_length_m = opt.unit_length_mm * 1e-3;
+  }
   const contact::FootprintPredictor predictor(contact::build_tyre_model(eval));
   const Evaluator ev(predictor, data);
   std::vector<int> all(data.rows.size());
