@@ -224,6 +224,10 @@ void register_discover(CLI::App& app) {
   cmd->add_option("--max-effects", a->max_effects, "effects to name at most (default 2)")
       ->check(CLI::Range(1, 9));
   cmd->callback([a] {
+    // CLI::Range lets NaN through (every comparison with it is false).
+    if (!std::isfinite(a->unit_length_mm)) {
+      throw InputError({"--unit-length-mm", 0, "unit_length_mm"}, "must be a finite number");
+    }
     const contact::TyreConfig cfg = contact::load_tyre_config(a->config, a->overrides);
     const contact::MeasurementSet data = contact::read_measurements(a->measured, cfg);
     for (const std::string* out : {&a->plot, &a->out_config}) {
@@ -231,6 +235,16 @@ void register_discover(CLI::App& app) {
       const fs::path folder = fs::absolute(fs::path(*out)).parent_path();
       if (!fs::is_directory(folder)) {
         throw InputError({*out, 0, ""}, "output folder '" + folder.string() + "' does not exist");
+      }
+      if (fs::is_directory(fs::path(*out))) {
+        throw InputError({*out, 0, ""}, "output path is a directory, not a file");
+      }
+    }
+    // Checked before minutes of fitting, not after the augmented config has been written.
+    if (!a->plot.empty()) {
+      const std::string ext = fs::path(a->plot).extension().string();
+      if (ext != ".svg" && ext != ".png") {
+        throw InputError({a->plot, 0, "--plot"}, "plot file must end in .svg or .png");
       }
     }
     discover::DiscoverOptions opt;
@@ -251,9 +265,14 @@ void register_discover(CLI::App& app) {
     };
     const discover::DiscoverReport r = discover::discover(cfg, data, opt);
     if (bar) bar->finish();
-    if (!a->out_config.empty()) write_out_config(*a, cfg, r);
-    if (!a->plot.empty()) plot(a->plot, r, data);
+    // Output files only once the report is known to be printable (the JSON finite), the plot
+    // (which can still refuse) before the config, so that a failure leaves neither behind.
+    auto write_outputs = [&] {
+      if (!a->plot.empty()) plot(a->plot, r, data);
+      if (!a->out_config.empty()) write_out_config(*a, cfg, r);
+    };
     if (!a->json) {
+      write_outputs();
       print_text(r, data);
       if (!a->out_config.empty()) std::cout << "augmented config: " << a->out_config << "\n";
       return;
@@ -312,6 +331,8 @@ void register_discover(CLI::App& app) {
         {"fits", r.fits},
         {"conclusion", r.conclusion}};
     if (!a->out_config.empty()) j["out_config"] = a->out_config;
+    check_finite(j);
+    write_outputs();
     print_json(j);
   });
 }
