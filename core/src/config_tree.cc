@@ -60,7 +60,11 @@ void collect_unconsumed(const ConfigTree::State& st, const YAML::Node& node,
                         std::vector<int>& lines) {
   if (!node.IsMap()) return;
   for (const auto& kv : node) {
-    const std::string key = kv.first.as<std::string>();
+    if (!kv.first.IsScalar()) {  // e.g. "[a]: 1" (found by fuzz_config)
+      const int line = kv.first.Mark().line >= 0 ? kv.first.Mark().line + 1 : 0;
+      throw InputError({st.file, line, prefix}, "keys must be plain names, not lists or mappings");
+    }
+    const std::string key = kv.first.Scalar();
     const std::string dotted = prefix.empty() ? key : prefix + "." + key;
     if (kv.second.IsMap() && !st.consumed.count(dotted)) {
       collect_unconsumed(st, kv.second, dotted, out, lines);
@@ -142,7 +146,7 @@ InputLocation ConfigSection::where(const std::string& key) const {
   int line = 0;
   if (node_ && node_.IsMap()) {
     for (const auto& kv : node_) {
-      if (kv.first.as<std::string>() == key) line = kv.first.Mark().line + 1;
+      if (kv.first.IsScalar() && kv.first.Scalar() == key) line = kv.first.Mark().line + 1;
     }
     if (line == 0) line = node_.Mark().line + 1;
   }

@@ -172,3 +172,26 @@ TEST(ConfigTree, LoadAndResolvePath) {
 
 }  // namespace
 }  // namespace modaltyre
+
+namespace modaltyre {
+namespace {
+
+// A list or mapping used as a key (found by fuzz_config: it escaped as a yaml-cpp exception and
+// aborted) is an InputError naming the file and line, both when unknown keys are rejected and
+// when a missing key's location is looked up among such keys.
+TEST(ConfigTree, NonScalarKeysAreInputErrors) {
+  const ConfigTree t = ConfigTree::from_string("tread:\n  modulus_MPa: 6\n[a]: 1\n", "k.yaml");
+  t.root().section("tread").number("modulus_MPa", 6, 0, 100);
+  const InputError e = error_of([&] { t.reject_unknown_keys(); });
+  EXPECT_EQ(e.where().file, "k.yaml");
+  EXPECT_EQ(e.where().line, 3);
+  EXPECT_NE(std::string(e.what()).find("plain names"), std::string::npos);
+
+  const ConfigTree u = ConfigTree::from_string("modal: {[a]: 1}\n", "m.yaml");
+  const InputLocation where = u.root().section("modal").where("hammer_csv");
+  EXPECT_EQ(where.file, "m.yaml");
+  EXPECT_EQ(where.key, "modal.hammer_csv");
+}
+
+}  // namespace
+}  // namespace modaltyre
