@@ -4,6 +4,7 @@
 // Locates where the model and the measurements disagree, names the missing effect (if any is
 // significant) and writes the augmented config. Exit 0 whether or not an effect is named
 // (naming nothing is a result); 1 when the baseline cannot be fitted; 2 for bad input.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -11,7 +12,6 @@
 #include <mutex>
 #include <set>
 #include <tuple>
-#include <algorithm>
 
 #include "cli_support.h"
 #include "commands.h"
@@ -55,7 +55,8 @@ nlohmann::json values(const std::map<std::string, double>& m) {
 nlohmann::json errors(const std::map<std::string, double>& m) {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& kv : m) {
-    j[kv.first] = std::isfinite(kv.second) ? nlohmann::json(round_sig(kv.second, 4)) : nlohmann::json(nullptr);
+    j[kv.first] = std::isfinite(kv.second) ? nlohmann::json(round_sig(kv.second, 4))
+                                           : nlohmann::json(nullptr);
   }
   return j;
 }
@@ -123,7 +124,8 @@ void print_text(const discover::DiscoverReport& r, const contact::MeasurementSet
   for (const auto& e : r.effects) {
     std::cout << "  " << e.name << ":";
     for (const auto& kv : e.parameters) {
-      std::cout << " " << kv.first << " = " << kv.second << " +- " << e.standard_errors.at(kv.first);
+      std::cout << " " << kv.first << " = " << kv.second << " +- "
+                << e.standard_errors.at(kv.first);
     }
     for (const auto& k : e.at_bound) {
       std::cout << "\n    " << k << " ended at a bound of its range: the data bound it from one "
@@ -141,9 +143,9 @@ void write_out_config(const DiscoverArgs& a, const contact::TyreConfig& cfg,
   fs::path folder = fs::absolute(fs::path(a.out_config)).parent_path();
   ov.push_back("modal.hammer_csv=" +
                fs::relative(fs::absolute(cfg.hammer_csv), folder).generic_string());
-  const std::string text =
-      "# Written by modaltyre discover from " + a.config + " and " + a.measured + ".\n# " +
-      r.conclusion + "\n" + ConfigTree::load(a.config, ov).dump() + "\n";
+  const std::string text = "# Written by modaltyre discover from " + a.config + " and " +
+                           a.measured + ".\n# " + r.conclusion + "\n" +
+                           ConfigTree::load(a.config, ov).dump() + "\n";
   write_file_atomically(a.out_config, text);
 }
 
@@ -170,7 +172,8 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
     for (std::size_t i = 0; i < data.rows.size(); ++i) {
       const auto& row = r.rows[i];
       if (!row.cv_before.count(obs)) continue;
-      const double x = var.empty() ? row.row : contact::condition_value(data.rows[i].conditions, var);
+      const double x =
+          var.empty() ? row.row : contact::condition_value(data.rows[i].conditions, var);
       pts.emplace_back(x, 100 * row.cv_before.at(obs), 100 * row.cv_after.at(obs));
     }
     if (pts.empty()) continue;  // e.g. a rolling resistance measured as 0 on every row
@@ -180,7 +183,9 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
     p.xlabel = var.empty() ? "row" : axis_label(var);
     p.ylabel = "cross-validated (predicted - measured) / measured [%]";
     PlotSeries before{"baseline", {}, {}, "linespoints"};
-    PlotSeries after{r.effects.empty() ? "baseline (unchanged)" : "with the named effects", {}, {},
+    PlotSeries after{r.effects.empty() ? "baseline (unchanged)" : "with the named effects",
+                     {},
+                     {},
                      "linespoints"};
     for (const auto& [x, b, a] : pts) {
       before.x.push_back(x), before.y.push_back(b);
@@ -191,7 +196,8 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
     fig.panels.push_back(p);
   }
   if (fig.panels.empty()) {
-    throw InputError({data.path, 0, ""}, "nothing to plot: no observable has a non-zero measurement");
+    throw InputError({data.path, 0, ""},
+                     "nothing to plot: no observable has a non-zero measurement");
   }
   fig.width_px = 420 * static_cast<int>(std::min<std::size_t>(fig.panels.size(), 3)) + 60;
   fig.height_px = fig.panels.size() > 3 ? 900 : 520;
@@ -214,7 +220,8 @@ void register_discover(CLI::App& app) {
       ->required();
   cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.tan_delta=0.2");
   cmd->add_flag("--json", a->json, "print the report as JSON on stdout");
-  cmd->add_option("--plot", a->plot, "residuals before/after against the regime variable (.svg/.png)");
+  cmd->add_option("--plot", a->plot,
+                  "residuals before/after against the regime variable (.svg/.png)");
   cmd->add_option("--out-config", a->out_config, "write the augmented config (YAML) here");
   cmd->add_option("--threads", a->threads, "OpenMP threads over candidates (default: all cores)")
       ->check(CLI::Range(1, 4096));
@@ -315,15 +322,17 @@ void register_discover(CLI::App& app) {
         {"gap_after", gaps(r.gap_after)},
         {"cv_gap_before", gaps(r.cv_gap_before)},
         {"cv_gap_after", gaps(r.cv_gap_after)},
-        {"regime", r.regimes.empty()
-                       ? nlohmann::json{{"variable", ""}, {"correlation", 0}}
-                       : nlohmann::json{{"variable", r.regimes.front().variable},
-                                        {"correlation", round_sig(r.regimes.front().correlation, 4)},
-                                        {"observable", r.regimes.front().observable}}},
+        {"regime",
+         r.regimes.empty()
+             ? nlohmann::json{{"variable", ""}, {"correlation", 0}}
+             : nlohmann::json{{"variable", r.regimes.front().variable},
+                              {"correlation", round_sig(r.regimes.front().correlation, 4)},
+                              {"observable", r.regimes.front().observable}}},
         {"regimes", regimes},
         {"worst_rows", r.worst_rows},
         {"effects", effects},
-        {"candidates", r.rounds.empty() ? nlohmann::json::array() : candidates_json(r.rounds.front())},
+        {"candidates",
+         r.rounds.empty() ? nlohmann::json::array() : candidates_json(r.rounds.front())},
         {"rounds", rounds},
         {"baseline_parameters", values(r.baseline_parameters)},
         {"final_parameters", values(r.final_parameters)},

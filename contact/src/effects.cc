@@ -9,7 +9,8 @@ using E = EffectsConfig;
 
 std::vector<EffectInfo> make_catalogue() {
   std::vector<EffectInfo> c;
-  c.push_back({EffectId::inflation_pressure, "inflation_pressure",
+  c.push_back({EffectId::inflation_pressure,
+               "inflation_pressure",
                "carcass compliance scales as ((1 + p_test) / (1 + p))^exponent with the row's "
                "inflation pressure p (bar), seed 000 eq. (3)",
                {"sinking_mm", "length_mm"},
@@ -19,23 +20,27 @@ std::vector<EffectInfo> make_catalogue() {
                 {"modal_test_pressure_kPa", "kPa", 230, 10, 2000, false,
                  "pressure at which the hammer test was made",
                  [](E& e) -> double& { return e.inflation_pressure.modal_test_pressure_kPa; }}}});
-  c.push_back({EffectId::tread_relaxation, "tread_relaxation",
-               "tread creep while the load is held: tread compliance x (1 + creep_ratio "
-               "(1 - exp(-hold_s / time_constant_s))), seed 001 eq. (10)",
-               {"sinking_mm", "length_mm"},
-               "hold_s",
-               {{"creep_ratio", "-", 0.5, 0.0, 5.0, true, "long-term over instantaneous compliance - 1",
-                 [](E& e) -> double& { return e.tread_relaxation.creep_ratio; }},
-                {"time_constant_s", "s", 30, 0.1, 1e4, true, "retardation time tan(delta)/Omega",
-                 [](E& e) -> double& { return e.tread_relaxation.time_constant_s; }}}});
-  c.push_back({EffectId::dry_friction, "dry_friction",
+  c.push_back(
+      {EffectId::tread_relaxation,
+       "tread_relaxation",
+       "tread creep while the load is held: tread compliance x (1 + creep_ratio "
+       "(1 - exp(-hold_s / time_constant_s))), seed 001 eq. (10)",
+       {"sinking_mm", "length_mm"},
+       "hold_s",
+       {{"creep_ratio", "-", 0.5, 0.0, 5.0, true, "long-term over instantaneous compliance - 1",
+         [](E& e) -> double& { return e.tread_relaxation.creep_ratio; }},
+        {"time_constant_s", "s", 30, 0.1, 1e4, true, "retardation time tan(delta)/Omega",
+         [](E& e) -> double& { return e.tread_relaxation.time_constant_s; }}}});
+  c.push_back({EffectId::dry_friction,
+               "dry_friction",
                "Saint-Venant dry friction in parallel with the tyre: the elastic part carries "
                "F - F_f when loading and F + F_f when unloading, seed 000 three-element model",
                {"sinking_mm", "length_mm"},
                "branch",
                {{"friction_force_N", "N", 200, 0, 5000, true, "internal friction force F_f",
                  [](E& e) -> double& { return e.dry_friction.friction_force_N; }}}});
-  c.push_back({EffectId::load_stiffening, "load_stiffening",
+  c.push_back({EffectId::load_stiffening,
+               "load_stiffening",
                "nonlinear sidewall: carcass compliance x (F / F_ref)^-exponent, seed 000 eq. (3) "
                "(h ~ P^3/4: exponent 1/4)",
                {"sinking_mm", "length_mm"},
@@ -45,14 +50,16 @@ std::vector<EffectInfo> make_catalogue() {
                 {"reference_load_N", "N", 4000, 1, 1e6, false,
                  "load at which the carcass has its modal-test compliance",
                  [](E& e) -> double& { return e.load_stiffening.reference_load_N; }}}});
-  c.push_back({EffectId::tread_coupling, "tread_coupling",
+  c.push_back({EffectId::tread_coupling,
+               "tread_coupling",
                "shear coupling of neighbouring tread units (Pasternak layer) instead of "
                "independent springs",
                {"length_mm", "sinking_mm"},
                "load_N",
                {{"coupling_length_mm", "mm", 10, 0, 100, true, "Pasternak length sqrt(G h / k)",
                  [](E& e) -> double& { return e.tread_coupling.coupling_length_mm; }}}});
-  c.push_back({EffectId::soil_compliance, "soil_compliance",
+  c.push_back({EffectId::soil_compliance,
+               "soil_compliance",
                "Kelvin-Voigt soil under rows with surface = soil (static part: Winkler modulus "
                "E2 / layer), seed 000 eq. (23)-(28)",
                {"sinking_mm", "length_mm"},
@@ -61,14 +68,16 @@ std::vector<EffectInfo> make_catalogue() {
                  [](E& e) -> double& { return e.soil_compliance.modulus_MPa; }},
                 {"layer_mm", "mm", 200, 1, 5000, false, "depth of the deformable layer",
                  [](E& e) -> double& { return e.soil_compliance.layer_mm; }}}});
-  c.push_back({EffectId::rolling_speed, "rolling_speed",
+  c.push_back({EffectId::rolling_speed,
+               "rolling_speed",
                "steady-rolling modal receptance at the row's speed, seed 001 eq. (2)-(5): "
                "asymmetric pressure and rolling resistance from modal damping",
                {"rolling_resistance_N", "sinking_mm", "length_mm"},
                "speed_kmh",
                {{"damping_scale", "-", 1, 0, 20, true, "multiplies the measured modal damping",
                  [](E& e) -> double& { return e.rolling_speed.damping_scale; }}}});
-  c.push_back({EffectId::contact_width, "contact_width",
+  c.push_back({EffectId::contact_width,
+               "contact_width",
                "patch width from the crown profile, w = min(max_width, 2 sqrt(2 R_c sinking)); "
                "the tread stiffness per unit length follows the width",
                {"width_mm", "length_mm", "sinking_mm"},
@@ -77,14 +86,15 @@ std::vector<EffectInfo> make_catalogue() {
                  [](E& e) -> double& { return e.contact_width.crown_radius_mm; }},
                 {"max_width_mm", "mm", 160, 1, 2000, false, "tread width",
                  [](E& e) -> double& { return e.contact_width.max_width_mm; }}}});
-  c.push_back({EffectId::belt_flattening, "belt_flattening",
-               "stiffness of the doubly curved belt against flattening that in-plane modes do "
-               "not carry: foundation kappa on harmonic orders >= 2, c_k / (1 + pi R kappa c_k)",
-               {"length_mm", "sinking_mm"},
-               "load_N",
-               {{"stiffness_MPa", "MPa", 1, 0.0, 1000, true,
-                 "kappa in N/mm per mm of circumference",
-                 [](E& e) -> double& { return e.belt_flattening.stiffness_MPa; }}}});
+  c.push_back(
+      {EffectId::belt_flattening,
+       "belt_flattening",
+       "stiffness of the doubly curved belt against flattening that in-plane modes do "
+       "not carry: foundation kappa on harmonic orders >= 2, c_k / (1 + pi R kappa c_k)",
+       {"length_mm", "sinking_mm"},
+       "load_N",
+       {{"stiffness_MPa", "MPa", 1, 0.0, 1000, true, "kappa in N/mm per mm of circumference",
+         [](E& e) -> double& { return e.belt_flattening.stiffness_MPa; }}}});
   return c;
 }
 
@@ -96,15 +106,24 @@ bool EffectsConfig::enabled(EffectId id) const {
 
 bool& EffectsConfig::enabled(EffectId id) {
   switch (id) {
-    case EffectId::inflation_pressure: return inflation_pressure.enabled;
-    case EffectId::tread_relaxation: return tread_relaxation.enabled;
-    case EffectId::dry_friction: return dry_friction.enabled;
-    case EffectId::load_stiffening: return load_stiffening.enabled;
-    case EffectId::tread_coupling: return tread_coupling.enabled;
-    case EffectId::soil_compliance: return soil_compliance.enabled;
-    case EffectId::rolling_speed: return rolling_speed.enabled;
-    case EffectId::contact_width: return contact_width.enabled;
-    case EffectId::belt_flattening: return belt_flattening.enabled;
+    case EffectId::inflation_pressure:
+      return inflation_pressure.enabled;
+    case EffectId::tread_relaxation:
+      return tread_relaxation.enabled;
+    case EffectId::dry_friction:
+      return dry_friction.enabled;
+    case EffectId::load_stiffening:
+      return load_stiffening.enabled;
+    case EffectId::tread_coupling:
+      return tread_coupling.enabled;
+    case EffectId::soil_compliance:
+      return soil_compliance.enabled;
+    case EffectId::rolling_speed:
+      return rolling_speed.enabled;
+    case EffectId::contact_width:
+      return contact_width.enabled;
+    case EffectId::belt_flattening:
+      return belt_flattening.enabled;
   }
   throw std::logic_error("unknown effect id");
 }

@@ -58,9 +58,8 @@ std::vector<std::string> cells_on_line(const std::string& path, int wanted) {
 }  // namespace
 
 const std::vector<std::string>& condition_names() {
-  static const std::vector<std::string> names = {"load_N",    "pressure_kPa", "hold_s",
-                                                 "speed_kmh", "branch",       "surface",
-                                                 "horizontal_force_N"};
+  static const std::vector<std::string> names = {
+      "load_N", "pressure_kPa", "hold_s", "speed_kmh", "branch", "surface", "horizontal_force_N"};
   return names;
 }
 
@@ -78,11 +77,10 @@ double condition_value(const OperatingConditions& c, const std::string& name) {
 MeasurementSet read_measurements(const std::string& path, const TyreConfig& defaults) {
   CsvSchema schema;
   schema.required = {"load_N"};
-  schema.optional = {"pressure_kPa", "hold_s", "speed_kmh", "horizontal_force_N", "branch",
-                     "surface",
-                     // written by `modaltyre sweep`, ignored here
-                     "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations", "status",
-                     "message"};
+  schema.optional = {
+      "pressure_kPa", "hold_s", "speed_kmh", "horizontal_force_N", "branch", "surface",
+      // written by `modaltyre sweep`, ignored here
+      "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations", "status", "message"};
   schema.text = {"branch", "surface", "status", "message"};
   for (const auto& o : observable_names()) schema.optional.push_back(o);
   {
@@ -112,9 +110,9 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
       const auto cells = cells_on_line(path, e.where().line);
       const auto k = static_cast<std::size_t>(status - header.begin());
       if (cells.size() == header.size() && !cells[k].empty() && cells[k] != "ok") {
-        throw InputError({path, e.where().line, "status"},
-                         "row is marked '" + cells[k] +
-                             "': remove failed sweep rows from measured data");
+        throw InputError(
+            {path, e.where().line, "status"},
+            "row is marked '" + cells[k] + "': remove failed sweep rows from measured data");
       }
     }
     throw;

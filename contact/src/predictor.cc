@@ -102,7 +102,8 @@ Prediction FootprintPredictor::predict(const TyreConfig& params, const Operating
     scale *= std::pow((1 + p0_bar) / (1 + p_bar), E.inflation_pressure.exponent);
   }
   if (E.load_stiffening.enabled) {
-    scale *= std::pow(elastic_load / E.load_stiffening.reference_load_N, -E.load_stiffening.exponent);
+    scale *=
+        std::pow(elastic_load / E.load_stiffening.reference_load_N, -E.load_stiffening.exponent);
   }
 
   // Carcass kernels: static ones unless rolling or belt flattening change them.
@@ -177,8 +178,8 @@ Prediction FootprintPredictor::predict(const TyreConfig& params, const Operating
     op.kernels = kernels;
     op.carcass_scale = scale;
     op.tread_radial_lag = pasternak_tread_lags(
-        k_r / creep, E.tread_coupling.enabled ? E.tread_coupling.coupling_length_mm * 1e-3 : 0,
-        ds, cand);
+        k_r / creep, E.tread_coupling.enabled ? E.tread_coupling.coupling_length_mm * 1e-3 : 0, ds,
+        cand);
     op.tread_tangential_compliance = creep / k_t;
     op.width_m = width;
     op.horizontal_ratio = ratio;

@@ -178,7 +178,8 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   if (data.rows.size() < 4) {
     throw InputError({data.path, 0, "load_N"},
                      "discover needs at least 4 measured rows (" +
-                         std::to_string(data.rows.size()) + " given): fewer cannot be "
+                         std::to_string(data.rows.size()) +
+                         " given): fewer cannot be "
                          "cross-validated against a 2-parameter baseline");
   }
   TyreConfig eval = config;
@@ -206,7 +207,8 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   }
   const auto all_entries = ev.entries(all);
   int config_failures = 0;
-  rep.gap_config = rms_by_observable(data, all_entries, ev.residuals(eval, all_entries, &config_failures));
+  rep.gap_config =
+      rms_by_observable(data, all_entries, ev.residuals(eval, all_entries, &config_failures));
 
   Stage current{make_variant({}), {}, {}};
   current.fit = fit_variant(ev, eval, current.variant, all, nullptr, true);
@@ -214,8 +216,9 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   rep.fits = 1 + current.cv.folds;
   rep.evaluations = current.fit.evaluations + current.cv.evaluations;
   if (current.fit.failures > 0) {
-    throw ComputationError("the baseline cannot be fitted: " + std::to_string(current.fit.failures) +
-                           " rows fail to converge at its best parameters");
+    throw ComputationError(
+        "the baseline cannot be fitted: " + std::to_string(current.fit.failures) +
+        " rows fail to converge at its best parameters");
   }
   const Stage baseline = current;
   rep.gap_before = baseline.fit.rms;
@@ -282,10 +285,11 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
                       s.cv_rms_after <= s.cv_rms_before;
       if (s.significant && (best < 0 || s.delta_bic > scores[best].delta_bic)) best = c;
     }
-    std::stable_sort(scores.begin(), scores.end(), [](const CandidateScore& a, const CandidateScore& b) {
-      if (a.testable != b.testable) return a.testable;
-      return a.delta_bic > b.delta_bic;
-    });
+    std::stable_sort(scores.begin(), scores.end(),
+                     [](const CandidateScore& a, const CandidateScore& b) {
+                       if (a.testable != b.testable) return a.testable;
+                       return a.delta_bic > b.delta_bic;
+                     });
     rep.rounds.push_back(scores);
     if (best < 0) break;
     NamedEffect ne;

@@ -70,7 +70,8 @@ std::vector<FreeParameter> effect_parameters(EffectId id) {
     if (!p.fitted) continue;
     auto ref = p.ref;
     FreeParameter fp = make_parameter(
-        info.key(p), p.min, p.max, [ref](const TyreConfig& c) { return ref(const_cast<TyreConfig&>(c).effects); },
+        info.key(p), p.min, p.max,
+        [ref](const TyreConfig& c) { return ref(const_cast<TyreConfig&>(c).effects); },
         [ref](TyreConfig& c, double v) { ref(c.effects) = v; });
     fp.of_effect = true;
     fp.effect = id;
@@ -236,7 +237,7 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
     // Baseline scalars from the config; effect parameters from the best point of a small grid
     // (default, and two steps either side in the transformed variable) - one cheap evaluation
     // each, so that the local search starts in the right basin.
-    std::vector<int> fresh;  // parameters of effects base does not have on
+    std::vector<int> fresh;       // parameters of effects base does not have on
     const TyreConfig defaults{};  // catalogue defaults live in a default-constructed config
     for (int i = 0; i < k; ++i) {
       const bool is_new = ps[i].of_effect && !base.effects.enabled(ps[i].effect);

@@ -28,9 +28,9 @@ using contact::TyreConfig;
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
 
 struct Planted {
-  std::string effect;                                   // name; "" = none
-  std::function<void(contact::EffectsConfig&)> truth;   // switches it on with hidden values
-  std::map<std::string, double> hidden;                 // key -> planted value
+  std::string effect;                                  // name; "" = none
+  std::function<void(contact::EffectsConfig&)> truth;  // switches it on with hidden values
+  std::map<std::string, double> hidden;                // key -> planted value
   std::vector<OperatingConditions> rows;
   std::vector<std::string> observables = {"sinking_mm", "length_mm"};
   double noise = 0.015;
@@ -39,7 +39,8 @@ struct Planted {
 
 // Writes the measurement CSV of a planted data set and reads it back like the CLI would.
 contact::MeasurementSet make_data(const Planted& p, const std::string& name) {
-  static const TyreConfig gen_cfg = contact::load_tyre_config(kConfig, {"contact.unit_length_mm=2"});
+  static const TyreConfig gen_cfg =
+      contact::load_tyre_config(kConfig, {"contact.unit_length_mm=2"});
   static const contact::FootprintPredictor gen(contact::build_tyre_model(gen_cfg));
   TyreConfig truth = gen_cfg;
   if (p.truth) p.truth(truth.effects);
@@ -86,10 +87,14 @@ std::vector<Planted> planted_cases() {
   {
     Planted p;
     p.effect = "inflation_pressure";
-    p.truth = [](auto& e) { e.inflation_pressure.enabled = true; e.inflation_pressure.exponent = 1.0; };
+    p.truth = [](auto& e) {
+      e.inflation_pressure.enabled = true;
+      e.inflation_pressure.exponent = 1.0;
+    };
     p.hidden = {{"effects.inflation_pressure.exponent", 1.0}};
     const double kpa[] = {160, 200, 240, 280};
-    p.rows = grid(kLoads5, [&](auto& c, int l) { c.pressure_kPa = kpa[l]; }, 4);
+    p.rows = grid(
+        kLoads5, [&](auto& c, int l) { c.pressure_kPa = kpa[l]; }, 4);
     v.push_back(p);
   }
   {
@@ -103,21 +108,29 @@ std::vector<Planted> planted_cases() {
     p.hidden = {{"effects.tread_relaxation.creep_ratio", 0.8},
                 {"effects.tread_relaxation.time_constant_s", 40}};
     const double hold[] = {0, 15, 60, 180};
-    p.rows = grid(kLoads5, [&](auto& c, int l) { c.hold_s = hold[l]; }, 4);
+    p.rows = grid(
+        kLoads5, [&](auto& c, int l) { c.hold_s = hold[l]; }, 4);
     v.push_back(p);
   }
   {
     Planted p;
     p.effect = "dry_friction";
-    p.truth = [](auto& e) { e.dry_friction.enabled = true; e.dry_friction.friction_force_N = 300; };
+    p.truth = [](auto& e) {
+      e.dry_friction.enabled = true;
+      e.dry_friction.friction_force_N = 300;
+    };
     p.hidden = {{"effects.dry_friction.friction_force_N", 300}};
-    p.rows = grid(kLoads5, [](auto& c, int l) { c.branch = l ? Branch::unloading : Branch::loading; }, 2);
+    p.rows = grid(
+        kLoads5, [](auto& c, int l) { c.branch = l ? Branch::unloading : Branch::loading; }, 2);
     v.push_back(p);
   }
   {
     Planted p;
     p.effect = "load_stiffening";
-    p.truth = [](auto& e) { e.load_stiffening.enabled = true; e.load_stiffening.exponent = 0.25; };
+    p.truth = [](auto& e) {
+      e.load_stiffening.enabled = true;
+      e.load_stiffening.exponent = 0.25;
+    };
     p.hidden = {{"effects.load_stiffening.exponent", 0.25}};
     p.rows = grid(kLoads9, nullptr, 1);
     v.push_back(p);
@@ -125,7 +138,10 @@ std::vector<Planted> planted_cases() {
   {
     Planted p;
     p.effect = "tread_coupling";
-    p.truth = [](auto& e) { e.tread_coupling.enabled = true; e.tread_coupling.coupling_length_mm = 25; };
+    p.truth = [](auto& e) {
+      e.tread_coupling.enabled = true;
+      e.tread_coupling.coupling_length_mm = 25;
+    };
     p.hidden = {{"effects.tread_coupling.coupling_length_mm", 25}};
     // Its signature (3.5 % RMS at 25 mm) is only about twice 1.5 % noise, so halving the
     // cross-validated gap is out of reach there (named at 1.5 %, 3.5 % -> 1.9 %); 1 % noise.
@@ -136,25 +152,36 @@ std::vector<Planted> planted_cases() {
   {
     Planted p;
     p.effect = "soil_compliance";
-    p.truth = [](auto& e) { e.soil_compliance.enabled = true; e.soil_compliance.modulus_MPa = 8; };
+    p.truth = [](auto& e) {
+      e.soil_compliance.enabled = true;
+      e.soil_compliance.modulus_MPa = 8;
+    };
     p.hidden = {{"effects.soil_compliance.modulus_MPa", 8}};
-    p.rows = grid(kLoads5, [](auto& c, int l) { c.surface = l ? Surface::soil : Surface::rigid; }, 2);
+    p.rows = grid(
+        kLoads5, [](auto& c, int l) { c.surface = l ? Surface::soil : Surface::rigid; }, 2);
     v.push_back(p);
   }
   {
     Planted p;
     p.effect = "rolling_speed";
-    p.truth = [](auto& e) { e.rolling_speed.enabled = true; e.rolling_speed.damping_scale = 3; };
+    p.truth = [](auto& e) {
+      e.rolling_speed.enabled = true;
+      e.rolling_speed.damping_scale = 3;
+    };
     p.hidden = {{"effects.rolling_speed.damping_scale", 3}};
     const double kmh[] = {10, 40, 70, 100};
-    p.rows = grid(kLoads5, [&](auto& c, int l) { c.speed_kmh = kmh[l]; }, 4);
+    p.rows = grid(
+        kLoads5, [&](auto& c, int l) { c.speed_kmh = kmh[l]; }, 4);
     p.observables = {"sinking_mm", "length_mm", "rolling_resistance_N"};
     v.push_back(p);
   }
   {
     Planted p;
     p.effect = "contact_width";
-    p.truth = [](auto& e) { e.contact_width.enabled = true; e.contact_width.crown_radius_mm = 120; };
+    p.truth = [](auto& e) {
+      e.contact_width.enabled = true;
+      e.contact_width.crown_radius_mm = 120;
+    };
     p.hidden = {{"effects.contact_width.crown_radius_mm", 120}};
     p.rows = grid(kLoads9, nullptr, 1);
     p.observables = {"sinking_mm", "length_mm", "width_mm"};
@@ -163,7 +190,10 @@ std::vector<Planted> planted_cases() {
   {
     Planted p;
     p.effect = "belt_flattening";
-    p.truth = [](auto& e) { e.belt_flattening.enabled = true; e.belt_flattening.stiffness_MPa = 15; };
+    p.truth = [](auto& e) {
+      e.belt_flattening.enabled = true;
+      e.belt_flattening.stiffness_MPa = 15;
+    };
     p.hidden = {{"effects.belt_flattening.stiffness_MPa", 15}};
     // As for tread_coupling: a 3.1 % signature, named at 1.5 % noise (3.1 % -> 1.6 %); 1 % noise.
     p.noise = 0.01;
@@ -203,8 +233,9 @@ TEST(DiscoverNegativeControl, NoiseOnlyNamesNothingAndTheGapNeverGrows) {
   p.seed = 7;
   const double kpa[] = {190, 270};
   const double hold[] = {0, 120};
-  p.rows = grid({2000, 4000, 6000, 8000},
-                [&](auto& c, int l) { c.pressure_kPa = kpa[l % 2], c.hold_s = hold[l / 2]; }, 4);
+  p.rows = grid(
+      {2000, 4000, 6000, 8000},
+      [&](auto& c, int l) { c.pressure_kPa = kpa[l % 2], c.hold_s = hold[l / 2]; }, 4);
   const auto data = make_data(p, "control");
   const DiscoverReport r = discover(contact::load_tyre_config(kConfig), data, {});
   EXPECT_TRUE(r.effects.empty()) << r.conclusion;
@@ -227,13 +258,15 @@ TEST(DiscoverTwoEffects, FindsBothHiddenEffects) {
   };
   const double kpa[] = {180, 260};
   const double hold[] = {0, 30, 180};
-  p.rows = grid({2500, 5000, 7500},
-                [&](auto& c, int l) { c.pressure_kPa = kpa[l % 2], c.hold_s = hold[l / 2]; }, 6);
+  p.rows = grid(
+      {2500, 5000, 7500},
+      [&](auto& c, int l) { c.pressure_kPa = kpa[l % 2], c.hold_s = hold[l / 2]; }, 6);
   const auto data = make_data(p, "two");
   const DiscoverReport r = discover(contact::load_tyre_config(kConfig), data, {});
   std::set<std::string> named;
   for (const auto& e : r.effects) named.insert(e.name);
-  EXPECT_EQ(named, (std::set<std::string>{"inflation_pressure", "tread_relaxation"})) << r.conclusion;
+  EXPECT_EQ(named, (std::set<std::string>{"inflation_pressure", "tread_relaxation"}))
+      << r.conclusion;
   for (const auto& [obs, before] : r.cv_gap_before) EXPECT_LT(r.cv_gap_after.at(obs), 0.5 * before);
 }
 
@@ -245,7 +278,8 @@ TEST(DiscoverTable3, CrossValidatedGapNeverGrowsAndTheLengthGapShrinks) {
       std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv", cfg);
   const DiscoverReport r = discover(cfg, data, {});
   EXPECT_GT(r.gap_before.at("length_mm"), 0.08);
-  for (const auto& [obs, before] : r.cv_gap_before) EXPECT_LE(r.cv_gap_after.at(obs), before) << obs;
+  for (const auto& [obs, before] : r.cv_gap_before)
+    EXPECT_LE(r.cv_gap_after.at(obs), before) << obs;
   ASSERT_FALSE(r.effects.empty()) << r.conclusion;
   EXPECT_LT(r.cv_gap_after.at("length_mm"), 0.6 * r.cv_gap_before.at("length_mm"));
 }

@@ -50,13 +50,13 @@ inline constexpr int kEffectCount = 9;
 struct EffectsConfig {
   struct InflationPressure {
     bool enabled = false;
-    double exponent = 1.0;                   ///< beta in ((1 + p_test) / (1 + p))^beta
-    double modal_test_pressure_kPa = 230;    ///< pressure of the hammer test (not fitted)
+    double exponent = 1.0;                 ///< beta in ((1 + p_test) / (1 + p))^beta
+    double modal_test_pressure_kPa = 230;  ///< pressure of the hammer test (not fitted)
   } inflation_pressure;
   struct TreadRelaxation {
     bool enabled = false;
-    double creep_ratio = 0.5;       ///< long-term / instantaneous tread compliance - 1
-    double time_constant_s = 30;    ///< tau = tan(delta) / Omega of seed 001 eq. (10)
+    double creep_ratio = 0.5;     ///< long-term / instantaneous tread compliance - 1
+    double time_constant_s = 30;  ///< tau = tan(delta) / Omega of seed 001 eq. (10)
   } tread_relaxation;
   struct DryFriction {
     bool enabled = false;
@@ -73,8 +73,8 @@ struct EffectsConfig {
   } tread_coupling;
   struct SoilCompliance {
     bool enabled = false;
-    double modulus_MPa = 2;    ///< deformation modulus E2 of the soil (seed 000 eq. 23)
-    double layer_mm = 200;     ///< depth of the deformable layer (not fitted: only E2/layer acts)
+    double modulus_MPa = 2;  ///< deformation modulus E2 of the soil (seed 000 eq. 23)
+    double layer_mm = 200;   ///< depth of the deformable layer (not fitted: only E2/layer acts)
   } soil_compliance;
   struct RollingSpeed {
     bool enabled = false;
@@ -130,8 +130,8 @@ struct OperatingConditions {
   double load_N = 0;
   double horizontal_force_N = 0;
   double pressure_kPa = 230;
-  double hold_s = 0;      ///< time the load has been held (0: measured right after loading)
-  double speed_kmh = 0;   ///< rolling speed (0: standing)
+  double hold_s = 0;     ///< time the load has been held (0: measured right after loading)
+  double speed_kmh = 0;  ///< rolling speed (0: standing)
   Branch branch = Branch::loading;
   Surface surface = Surface::rigid;
 };

@@ -29,8 +29,9 @@ struct MeasuredRow {
 struct MeasurementSet {
   std::string path;
   std::vector<MeasuredRow> rows;
-  std::vector<std::string> observables;  ///< observable columns present, in observable_names() order
-  std::vector<std::string> conditions;   ///< condition columns present in the file
+  std::vector<std::string>
+      observables;                      ///< observable columns present, in observable_names() order
+  std::vector<std::string> conditions;  ///< condition columns present in the file
 };
 
 /// The condition column names, in the order discover reports them.

@@ -20,9 +20,9 @@ struct Prediction {
   std::string message;  ///< reason when !ok
   double sinking_mm = 0;
   double length_mm = 0;
-  double width_mm = 0;             ///< config width, or the crown-profile width (contact_width)
-  double rolling_resistance_N = 0; ///< sum f_z x / (R0 - sinking): 0 for a standing tyre
-  double elastic_load_N = 0;       ///< load on the elastic tyre (dry_friction moves it)
+  double width_mm = 0;              ///< config width, or the crown-profile width (contact_width)
+  double rolling_resistance_N = 0;  ///< sum f_z x / (R0 - sinking): 0 for a standing tyre
+  double elastic_load_N = 0;        ///< load on the elastic tyre (dry_friction moves it)
   FootprintResult footprint;
 
   /// Observable by its measurement-column name (sinking_mm, length_mm, width_mm,

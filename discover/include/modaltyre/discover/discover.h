@@ -12,9 +12,9 @@
 //     named only if Delta BIC > min_delta_bic AND the cross-validated RMS falls by at least
 //     min_cv_gain (relative) on at least one observable while it grows by no more than
 //     max_cv_loss on any and not at all pooled over all; else nothing is named. (Per observable
-//     because an effect may close the length gap and leave a width gap no candidate explains.) With an effect named, the search repeats
-//     on top of it for a further one (up to max_effects) while a residual still
-//     correlates clearly with a condition.
+//     because an effect may close the length gap and leave a width gap no candidate explains.) With
+//     an effect named, the search repeats on top of it for a further one (up to max_effects) while
+//     a residual still correlates clearly with a condition.
 //  3. Add and show: the augmented config (effects on, fitted values), the gap before and after
 //     per observable, in-sample and cross-validated, per-row residuals for the plot.
 //
@@ -33,15 +33,15 @@
 namespace modaltyre::discover {
 
 struct DiscoverOptions {
-  double unit_length_mm = 2;     ///< evaluation mesh (0: the config's own)
-  double min_delta_bic = 10;     ///< "very strong" evidence on the Kass-Raftery scale
-  double min_cv_gain = 0.25;     ///< cross-validated RMS must fall by at least this fraction
-  double max_cv_loss = 0.10;     ///< ... and grow on no observable by more than this fraction
+  double unit_length_mm = 2;  ///< evaluation mesh (0: the config's own)
+  double min_delta_bic = 10;  ///< "very strong" evidence on the Kass-Raftery scale
+  double min_cv_gain = 0.25;  ///< cross-validated RMS must fall by at least this fraction
+  double max_cv_loss = 0.10;  ///< ... and grow on no observable by more than this fraction
   int max_effects = 2;
   /// After an effect is named, search for another only if a residual still correlates with a
   /// condition at least this strongly.
   double structure_correlation = 0.5;
-  int threads = 0;               ///< 0: OpenMP default
+  int threads = 0;  ///< 0: OpenMP default
   /// Called after each candidate fit with (done, total) of the current round; thread-safe.
   std::function<void(int, int)> progress;
 };
@@ -60,9 +60,9 @@ struct CandidateScore {
   std::string reason;  ///< why it cannot be tested on these data, when !testable
   std::map<std::string, double> parameters;  ///< fitted, config keys (effect's and baseline's)
   double delta_bic = 0;
-  double cv_rms_before = 0, cv_rms_after = 0;  ///< all observables pooled, relative
+  double cv_rms_before = 0, cv_rms_after = 0;         ///< all observables pooled, relative
   std::map<std::string, double> cv_before, cv_after;  ///< per observable
-  std::map<std::string, double> standard_errors;     ///< of the fitted parameters
+  std::map<std::string, double> standard_errors;      ///< of the fitted parameters
   double rms_after = 0;
   int failures = 0;
   bool significant = false;
@@ -80,25 +80,25 @@ struct NamedEffect {
 };
 
 struct RowResidual {
-  int row = 0;  ///< 1-based
+  int row = 0;                                        ///< 1-based
   std::map<std::string, double> before, after;        ///< in-sample, relative
   std::map<std::string, double> cv_before, cv_after;  ///< held-out, relative
 };
 
 struct DiscoverReport {
-  std::string evaluation_mesh;  ///< e.g. "2 mm units"
-  std::map<std::string, double> gap_config;   ///< config as given, RMS relative per observable
-  std::map<std::string, double> gap_before;   ///< baseline re-fitted, in-sample
+  std::string evaluation_mesh;               ///< e.g. "2 mm units"
+  std::map<std::string, double> gap_config;  ///< config as given, RMS relative per observable
+  std::map<std::string, double> gap_before;  ///< baseline re-fitted, in-sample
   std::map<std::string, double> gap_after;
   std::map<std::string, double> cv_gap_before, cv_gap_after;
-  std::vector<RegimeFinding> regimes;  ///< strongest first, one per observable
-  std::vector<int> worst_rows;         ///< 1-based, worst first (baseline)
-  std::vector<NamedEffect> effects;    ///< empty when nothing is significant
+  std::vector<RegimeFinding> regimes;               ///< strongest first, one per observable
+  std::vector<int> worst_rows;                      ///< 1-based, worst first (baseline)
+  std::vector<NamedEffect> effects;                 ///< empty when nothing is significant
   std::vector<std::vector<CandidateScore>> rounds;  ///< candidates of each search round
   std::map<std::string, double> baseline_parameters, final_parameters;
   std::vector<RowResidual> rows;
   std::vector<std::string> out_overrides;  ///< "key=value" that turn the config into the final one
-  std::string conclusion;                   ///< one paragraph in words
+  std::string conclusion;                  ///< one paragraph in words
   int fits = 0;
   long evaluations = 0;  ///< parameter sets evaluated (each on all rows of its fit)
 };

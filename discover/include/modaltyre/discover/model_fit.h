@@ -53,8 +53,8 @@ class Evaluator {
   Evaluator(const contact::FootprintPredictor& predictor, const contact::MeasurementSet& data);
 
   struct Entry {
-    int row = 0;           ///< index into data.rows
-    int observable = 0;    ///< index into data.observables
+    int row = 0;         ///< index into data.rows
+    int observable = 0;  ///< index into data.observables
   };
   /// Entries of the given rows (all observed, non-zero measurements).
   std::vector<Entry> entries(const std::vector<int>& rows) const;
@@ -71,18 +71,18 @@ class Evaluator {
 };
 
 struct FitResult {
-  std::vector<double> values;          ///< per free parameter, config units
+  std::vector<double> values;  ///< per free parameter, config units
   /// Standard errors (config units) from the Gauss-Newton covariance of the residuals weighted
   /// by each observable's fitted noise level; computed only when asked (full fits).
   std::vector<double> standard_errors;
-  contact::TyreConfig config;          ///< fitted config (effects on, values set)
+  contact::TyreConfig config;  ///< fitted config (effects on, values set)
   std::vector<Evaluator::Entry> entries;
-  std::vector<double> residuals;       ///< relative, per entry
-  std::map<std::string, double> rms;   ///< per observable
+  std::vector<double> residuals;      ///< relative, per entry
+  std::map<std::string, double> rms;  ///< per observable
   double rms_all = 0;
   double bic = 0;
   int evaluations = 0;
-  int failures = 0;                    ///< rows whose prediction failed at the optimum
+  int failures = 0;  ///< rows whose prediction failed at the optimum
   bool converged = false;
 };
 
@@ -104,10 +104,10 @@ double bic(const std::vector<Evaluator::Entry>& entries, const std::vector<doubl
 
 struct CrossValidation {
   int folds = 0;
-  int evaluations = 0;                  ///< model evaluations (all rows of a fold each)
-  std::vector<double> residuals;        ///< held-out relative residual per entry of all rows
+  int evaluations = 0;            ///< model evaluations (all rows of a fold each)
+  std::vector<double> residuals;  ///< held-out relative residual per entry of all rows
   std::vector<Evaluator::Entry> entries;
-  std::map<std::string, double> rms;    ///< per observable
+  std::map<std::string, double> rms;  ///< per observable
   double rms_all = 0;
 };
 
