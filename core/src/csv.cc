@@ -75,6 +75,10 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError({path, 0, ""}, "file not found");
   if (fs::is_directory(path, ec)) throw InputError({path, 0, ""}, "is a directory, not a CSV file");
+  // A named pipe or device would block the read (or never end): refuse it.
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
+    throw InputError({path, 0, ""}, "is not a regular file (a pipe or device?)");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, ""}, "cannot open file for reading");
 

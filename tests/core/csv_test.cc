@@ -2,6 +2,7 @@
 #include "modaltyre/core/csv.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -136,6 +137,16 @@ TEST_F(CsvTest, WholeFileProblems) {
     EXPECT_EQ(e.where().file, p);
     EXPECT_EQ(std::string(e.what()).rfind(p, 0), 0u) << e.what();
   }
+}
+
+// A named pipe would block the reader forever: it is refused before any read (no writer is
+// ever attached, so a hang would show as a test timeout).
+TEST_F(CsvTest, NamedPipeIsRefusedNotWaitedOn) {
+  const std::string fifo = (dir_ / "pipe.csv").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const auto e = error_of(fifo);
+  EXPECT_EQ(e.where().file, fifo);
+  EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
 }
 
 // Binary content (control bytes) is refused as not a text CSV; non-UTF-8 bytes in a number
