@@ -81,7 +81,8 @@ TEST_F(EffectsCli, EveryListedKeyIsAcceptedAtItsDefault) {
   // Every key of every effect in one run: the reader rejects unknown keys, so exit 0 means each
   // listed key is a real one.
   std::vector<std::string> sets;
-  for (const auto& e : catalogue()["effects"]) {
+  const nlohmann::json all = catalogue();  // not a temporary: the loop keeps references into it
+  for (const auto& e : all["effects"]) {
     sets.push_back(e["enabled_key"].get<std::string>() + "=true");
     for (const auto& p : e["parameters"]) {
       sets.push_back(p["key"].get<std::string>() + "=" + p["default"].dump());
@@ -97,7 +98,8 @@ TEST_F(EffectsCli, EveryListedKeyIsAcceptedAtItsDefault) {
 }
 
 TEST_F(EffectsCli, OutOfRangeValueExitsTwoNamingTheKey) {
-  for (const auto& e : catalogue()["effects"]) {
+  const nlohmann::json all = catalogue();  // not a temporary: the loop keeps references into it
+  for (const auto& e : all["effects"]) {
     const auto& p = e["parameters"][0];
     const std::string key = p["key"];
     const double above = p["max"].get<double>() * 2 + 1;
