@@ -32,15 +32,7 @@ using modaltyre_test::slurp;
 const std::string kSrc = MODALTYRE_SOURCE_DIR;
 const std::string kTyre = kSrc + "/configs/sf350.yaml";
 
-// SF-350 geometry as configs/sf350.yaml gives it (r0 294.8 mm, B_tr 130 mm), H = 117 mm.
-ThreeElementOptions tyre_options() {
-  ThreeElementOptions o;
-  o.r0_m = 0.2948;
-  o.tread_width_m = 0.13;
-  o.section_height_m = 0.117;
-  o.mass_kg = 350.0;
-  return o;
-}
+ThreeElementOptions tyre_options() { return test::sf350_three_element_options(); }
 
 constexpr double kE1_Pa = 1.2e6, kChi = 0.02, kH0_m = 0.020;
 

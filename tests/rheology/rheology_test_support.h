@@ -8,6 +8,8 @@
 #include <random>
 #include <string>
 
+#include "modaltyre/rheology/three_element.h"
+
 namespace modaltyre::rheology::test {
 
 inline std::string temp_file(const std::string& name, const std::string& content) {
@@ -37,5 +39,16 @@ struct Noise {
   std::normal_distribution<double> n{0.0, 1.0};
   double operator()() { return n(rng); }
 };
+
+/// SF-350 geometry as configs/sf350.yaml gives it (r0 294.8 mm, contact width 130 mm), section
+/// height 117 mm, and a 350 kg test mass: the three-element tests' tyre.
+inline ThreeElementOptions sf350_three_element_options() {
+  ThreeElementOptions o;
+  o.r0_m = 0.2948;
+  o.tread_width_m = 0.13;
+  o.section_height_m = 0.117;
+  o.mass_kg = 350.0;
+  return o;
+}
 
 }  // namespace modaltyre::rheology::test

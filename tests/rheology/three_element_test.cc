@@ -36,14 +36,7 @@ DecaySignal decay(const Planted& p, double noise_rel, unsigned seed = 3, double 
   return s;
 }
 
-ThreeElementOptions opts() {
-  ThreeElementOptions o;
-  o.r0_m = 0.2948;
-  o.tread_width_m = 0.13;
-  o.section_height_m = 0.117;
-  o.mass_kg = 350.0;
-  return o;
-}
+ThreeElementOptions opts() { return test::sf350_three_element_options(); }
 
 TEST(rheology_FreeVibration, RoundTripWithoutNoiseWithin1Percent) {
   const Planted p;
