@@ -1,61 +1,12 @@
 #include "modaltyre/contact/measurements.h"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <set>
-#include <sstream>
 
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::contact {
-namespace {
-
-std::string trimmed(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
-std::vector<std::string> fields_of(const std::string& line) {
-  std::vector<std::string> cols;
-  std::stringstream ss(line);
-  std::string c;
-  while (std::getline(ss, c, ',')) cols.push_back(trimmed(c));
-  if (!line.empty() && line.back() == ',') cols.push_back("");
-  return cols;
-}
-
-// Header of the file as read_csv() sees it (UTF-8 BOM dropped, first line that is neither
-// blank nor a comment after trimming, cells trimmed), with its line number.
-std::vector<std::string> header_of(const std::string& path, int* header_line) {
-  std::ifstream in(path, std::ios::binary);
-  std::string raw;
-  int line_no = 0;
-  while (in && std::getline(in, raw)) {
-    ++line_no;
-    if (line_no == 1 && raw.compare(0, 3, "\xEF\xBB\xBF") == 0) raw.erase(0, 3);
-    const std::string line = trimmed(raw);
-    if (line.empty() || line[0] == '#') continue;
-    *header_line = line_no;
-    return fields_of(line);
-  }
-  return {};
-}
-
-// The cells of line `wanted` of the file (empty if there is no such line).
-std::vector<std::string> cells_on_line(const std::string& path, int wanted) {
-  std::ifstream in(path, std::ios::binary);
-  std::string raw;
-  for (int line_no = 1; in && std::getline(in, raw); ++line_no) {
-    if (line_no == wanted) return fields_of(trimmed(raw));
-  }
-  return {};
-}
-
-}  // namespace
 
 const std::vector<std::string>& condition_names() {
   static const std::vector<std::string> names = {
@@ -83,40 +34,13 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
       "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations", "status", "message"};
   schema.text = {"branch", "surface", "status", "message"};
   for (const auto& o : observable_names()) schema.optional.push_back(o);
-  {
-    // A FIFO or device would block both readings of the file below: refuse it instead.
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (fs::exists(path, ec) && !fs::is_directory(path, ec) && !fs::is_regular_file(path, ec)) {
-      throw InputError({path, 0, ""}, "is not a regular file (a pipe or device?)");
-    }
-  }
-  int header_line = 0;
-  const std::vector<std::string> header = header_of(path, &header_line);
-  for (const auto& c : header) {
-    if (c.find('.') != std::string::npos) {  // a sweep's parameter column (dotted config key)
-      schema.optional.push_back(c);
-      schema.text.push_back(c);
-    }
-  }
-  CsvTable t;
-  try {
-    t = read_csv(path, schema);
-  } catch (const InputError& e) {
-    // A failed sweep row has empty observable cells: say that it failed rather than that its
-    // first empty cell is not a number.
-    const auto status = std::find(header.begin(), header.end(), "status");
-    if (status != header.end() && e.where().line > header_line) {
-      const auto cells = cells_on_line(path, e.where().line);
-      const auto k = static_cast<std::size_t>(status - header.begin());
-      if (cells.size() == header.size() && !cells[k].empty() && cells[k] != "ok") {
-        throw InputError(
-            {path, e.where().line, "status"},
-            "row is marked '" + cells[k] + "': remove failed sweep rows from measured data");
-      }
-    }
-    throw;
-  }
+  // A failed sweep row has empty number cells: the status check below names it before they
+  // are read.
+  schema.may_be_empty = {"message", "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations"};
+  for (const auto& o : observable_names()) schema.may_be_empty.push_back(o);
+  // A sweep's parameter columns are dotted config keys, ignored here.
+  schema.accept_text_column = [](const std::string& c) { return c.find('.') != std::string::npos; };
+  const CsvTable t = read_csv(path, schema);
   MeasurementSet set;
   set.path = path;
   for (const auto& o : observable_names()) {

@@ -68,6 +68,7 @@ std::vector<double> pasternak_tread_lags(double k_r, double ell, double ds, int 
 
 FootprintPredictor::FootprintPredictor(TyreModel model) : model_(std::move(model)) {
   carcass_vertical_ = carcass_vertical_compliance(model_.kernels, model_.theta);
+  for (double th : model_.theta) cos_.push_back(std::cos(th)), sin_.push_back(std::sin(th));
 }
 
 Prediction FootprintPredictor::predict(const TyreConfig& params, const OperatingConditions& c,
@@ -160,7 +161,7 @@ Prediction FootprintPredictor::predict(const TyreConfig& params, const Operating
   if (ratio != 0.0) {
     horizontal = vertical_from_horizontal(m);
     for (int j = 0; j < cand; ++j) {
-      const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
+      const double cj = cos_[j], sj = sin_[j];
       horizontal(j, j) -= cj * (-sj) / m.k_radial_N_m + sj * cj / m.k_tangential_N_m;
     }
     horizontal *= ratio * scale;
@@ -187,9 +188,9 @@ Prediction FootprintPredictor::predict(const TyreConfig& params, const Operating
     op.compliance = scale * *carcass;
     const int lags = static_cast<int>(op.tread_radial_lag.size());
     for (int j = 0; j < cand; ++j) {
-      const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
+      const double cj = cos_[j], sj = sin_[j];
       for (int i = std::max(0, j - lags + 1); i < std::min(cand, j + lags); ++i) {
-        op.compliance(i, j) += std::cos(m.theta[i]) * cj * op.tread_radial_lag[std::abs(i - j)];
+        op.compliance(i, j) += cos_[i] * cj * op.tread_radial_lag[std::abs(i - j)];
       }
       op.compliance(j, j) += sj * sj * op.tread_tangential_compliance;
       if (soil) {
@@ -201,7 +202,7 @@ Prediction FootprintPredictor::predict(const TyreConfig& params, const Operating
     if (ratio != 0.0) {
       op.compliance += horizontal;
       for (int j = 0; j < cand; ++j) {  // tread under the unit's own horizontal force (eq. 6)
-        const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
+        const double cj = cos_[j], sj = sin_[j];
         op.compliance(j, j) += ratio * (cj * (-sj) * op.tread_radial_lag[0] +
                                         sj * cj * op.tread_tangential_compliance);
       }

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "modaltyre/core/errors.h"
 
@@ -59,7 +60,12 @@ std::size_t CsvTable::index_of(const std::string& column) const {
 }
 
 double CsvTable::number(std::size_t row, const std::string& column) const {
-  return numbers_.at(row).at(index_of(column));
+  const double v = numbers_.at(row).at(index_of(column));
+  // Parsed numbers are always finite: NaN marks an empty cell.
+  if (std::isnan(v)) {
+    throw InputError({path_, lines_.at(row), column}, "empty cell: '' is not a finite number");
+  }
+  return v;
 }
 
 double CsvTable::number_or(std::size_t row, const std::string& column, double fallback) const {
@@ -87,6 +93,7 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
   std::string raw;
   int line_no = 0;
   bool header_seen = false;
+  std::vector<std::string> extra_text;  // header names accepted by schema.accept_text_column
   while (std::getline(in, raw)) {
     ++line_no;
     if (line_no == 1 && raw.size() >= 3 && raw.compare(0, 3, "\xEF\xBB\xBF") == 0) raw.erase(0, 3);
@@ -102,7 +109,9 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
       header_seen = true;
       for (const auto& name : fields) {
         if (name.empty()) throw InputError({path, line_no, ""}, "empty column name in header");
-        if (!contains(schema.required, name) && !contains(schema.optional, name)) {
+        const bool extra = schema.accept_text_column && schema.accept_text_column(name);
+        if (extra) extra_text.push_back(name);
+        if (!extra && !contains(schema.required, name) && !contains(schema.optional, name)) {
           std::string known;
           for (const auto& k : schema.required) known += (known.empty() ? "" : ", ") + k;
           for (const auto& k : schema.optional) known += ", " + k + " (optional)";
@@ -129,7 +138,11 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
     }
     std::vector<double> nums(fields.size(), 0.0);
     for (std::size_t c = 0; c < fields.size(); ++c) {
-      if (contains(schema.text, table.columns_[c])) {
+      if (fields[c].empty() && contains(schema.may_be_empty, table.columns_[c])) {
+        nums[c] = std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
+      if (contains(schema.text, table.columns_[c]) || contains(extra_text, table.columns_[c])) {
         if (fields[c].empty()) throw InputError({path, line_no, table.columns_[c]}, "empty cell");
         continue;
       }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 
 #include "modaltyre/core/errors.h"
@@ -295,6 +296,10 @@ CrossValidation cross_validate(const Evaluator& ev, const TyreConfig& base, cons
   std::iota(all.begin(), all.end(), 0);
   cv.entries = ev.entries(all);
   cv.residuals.assign(cv.entries.size(), 0.0);
+  std::map<std::pair<int, int>, std::size_t> slot;  // (row, observable) -> index in cv.entries
+  for (std::size_t j = 0; j < cv.entries.size(); ++j) {
+    slot[{cv.entries[j].row, cv.entries[j].observable}] = j;
+  }
   for (int f = 0; f < cv.folds; ++f) {
     std::vector<int> train, test;
     for (int r = 0; r < n; ++r) (r % cv.folds == f ? test : train).push_back(r);
@@ -303,12 +308,7 @@ CrossValidation cross_validate(const Evaluator& ev, const TyreConfig& base, cons
     const auto test_entries = ev.entries(test);
     const auto r = ev.residuals(fit.config, test_entries);
     for (std::size_t i = 0; i < test_entries.size(); ++i) {
-      for (std::size_t j = 0; j < cv.entries.size(); ++j) {
-        if (cv.entries[j].row == test_entries[i].row &&
-            cv.entries[j].observable == test_entries[i].observable) {
-          cv.residuals[j] = r[i];
-        }
-      }
+      cv.residuals[slot.at({test_entries[i].row, test_entries[i].observable})] = r[i];
     }
   }
   cv.rms = rms_by_observable(ev.data(), cv.entries, cv.residuals);

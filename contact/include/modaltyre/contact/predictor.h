@@ -51,6 +51,7 @@ class FootprintPredictor {
  private:
   TyreModel model_;
   Eigen::MatrixXd carcass_vertical_;  ///< carcass-only vertical compliance, static kernels
+  std::vector<double> cos_, sin_;     ///< of each candidate unit's angle (assembly hot path)
 };
 
 /// Tread radial compliance between units l apart for a Pasternak (shear-coupled) tread layer

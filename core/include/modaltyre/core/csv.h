@@ -2,6 +2,7 @@
 // Strict reader for the small numeric CSV files researchers bring (hammer data, footprint
 // measurements, test records). Every problem is an InputError naming file, line and column.
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,12 @@ struct CsvSchema {
   std::vector<std::string> optional;  ///< columns that may be present
   /// Columns whose cells are text (e.g. "branch"); all other columns must be finite numbers.
   std::vector<std::string> text;
+  /// Columns whose cells may be empty; an empty number cell is refused only when it is read
+  /// (CsvTable::number), so that a caller can look at other cells of the row first.
+  std::vector<std::string> may_be_empty;
+  /// Accepts further header names as optional text columns (e.g. a sweep's dotted config-key
+  /// columns); any other unknown name is still an error.
+  std::function<bool(const std::string&)> accept_text_column;
   std::size_t max_rows = 1000000;  ///< refuse larger files with a clear message
 };
 
@@ -21,7 +28,8 @@ class CsvTable {
   const std::string& path() const { return path_; }
   std::size_t rows() const { return cells_.size(); }
   bool has(const std::string& column) const;
-  /// Finite number at (row, column); column must be numeric and present.
+  /// Finite number at (row, column); column must be numeric and present. An empty cell (allowed
+  /// by CsvSchema::may_be_empty) is an InputError naming file, line and column.
   double number(std::size_t row, const std::string& column) const;
   /// Number or fallback when the column is absent.
   double number_or(std::size_t row, const std::string& column, double fallback) const;
