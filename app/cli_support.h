@@ -7,6 +7,12 @@
 
 namespace modaltyre::app {
 
+/// Ends the program with `code` and no message: the message was printed by another process
+/// (rank 0 of a distributed sweep reports for all ranks).
+struct QuietExit {
+  int code = 1;
+};
+
 /// Prints JSON to stdout (pretty, 2-space indent). Non-finite numbers are refused: they would
 /// be written as null and silently corrupt a researcher's pipeline.
 void print_json(const nlohmann::json& j);

@@ -18,6 +18,8 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "modaltyre/contact/effects.h"
+#include "modaltyre/contact/predictor.h"
+#include "modaltyre/contact/stiffness_calibration.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/config_tree.h"
@@ -340,15 +342,18 @@ EffectMapping map_load_deflection(const rh::LoadDeflectionData& data, double tyr
                       "identified by these data; effects.inflation_pressure left as in the "
                       "tyre config");
   }
-  m.notes.push_back("K_Z itself is not written: the footprint model's stiffness level comes from "
-                    "the hammer test (modal.compliance_scale)");
   return m;
 }
 
 // OUT = TYRE with the mapping applied as overrides, modal.hammer_csv re-anchored to OUT's
-// folder, checked by the tyre config reader before it is written (atomically).
-void write_into_config(const IdentifyArgs& a, const contact::TyreConfig& tyre,
-                       const EffectMapping& m) {
+// folder, checked by the tyre config reader (InputError naming the key otherwise).
+struct OutConfig {
+  std::string text;
+  contact::TyreConfig config;
+};
+
+OutConfig compose_out_config(const IdentifyArgs& a, const contact::TyreConfig& tyre,
+                             const EffectMapping& m) {
   namespace fs = std::filesystem;
   std::vector<std::string> ov;
   for (const auto& e : m.enabled) ov.push_back("effects." + e + ".enabled=true");
@@ -356,13 +361,20 @@ void write_into_config(const IdentifyArgs& a, const contact::TyreConfig& tyre,
   const fs::path folder = fs::absolute(fs::path(a.out_config)).parent_path();
   ov.push_back("modal.hammer_csv=" +
                fs::relative(fs::absolute(tyre.hammer_csv), folder).generic_string());
-  std::string text = "# Written by modaltyre identify " + a.method + " from " + a.into_config +
-                     (a.file.empty() ? "" : " and " + a.file) +
-                     " (seed 000, docs/rheology.md).\n";
-  for (const auto& n : m.notes) text += "# " + n + "\n";
-  text += ConfigTree::load(a.into_config, ov).dump() + "\n";
-  contact::read_tyre_config(ConfigTree::from_string(text, a.out_config));
-  write_file_atomically(a.out_config, text);
+  OutConfig out;
+  out.text = "# Written by modaltyre identify " + a.method + " from " + a.into_config +
+             (a.file.empty() ? "" : " and " + a.file) + " (seed 000, docs/rheology.md).\n";
+  for (const auto& n : m.notes) out.text += "# " + n + "\n";
+  out.text += ConfigTree::load(a.into_config, ov).dump() + "\n";
+  out.config = contact::read_tyre_config(ConfigTree::from_string(out.text, a.out_config));
+  // The hammer file as TYRE's reader resolved it (OUT's relative path is for OUT's folder).
+  out.config.hammer_csv = tyre.hammer_csv;
+  return out;
+}
+
+void write_into_config(const IdentifyArgs& a, const contact::TyreConfig& tyre,
+                       const EffectMapping& m) {
+  write_file_atomically(a.out_config, compose_out_config(a, tyre, m).text);
 }
 
 // The target tyre config (read before any fitting) and what the method determined in it.
@@ -370,6 +382,62 @@ struct IntoConfig {
   contact::TyreConfig tyre;
   EffectMapping mapping;
 };
+
+// K_Z -> modal.compliance_scale (docs/rheology.md 6.5): the carcass level at which OUT's
+// footprint model sinks eq. (3)'s h_Z at the mean test load and the tyre's pressure; then every
+// test row is predicted by OUT's model, so the note says how far the modal model with the
+// seed's laws follows the test (the laws scale the carcass only; the tread is in series).
+void map_stiffness_level(const IdentifyArgs& a, const rh::LoadDeflectionData& data,
+                         const rh::LoadDeflectionResult& res, IntoConfig& into) {
+  const contact::TyreConfig out = compose_out_config(a, into.tyre, into.mapping).config;
+  double mean_load = 0;
+  for (const auto& r : data.rows) mean_load += r.load_N / data.rows.size();
+  const double target_mm = rh::law_deflection(res.K_Z_m, mean_load, out.inflation_pressure_Pa) * 1e3;
+  const contact::FootprintPredictor predictor(contact::build_tyre_model(out));
+  contact::OperatingConditions at = out.default_conditions(mean_load);
+  at.pressure_kPa = out.inflation_pressure_Pa * 1e-3;
+  const contact::ScaleCalibration cal =
+      contact::calibrate_compliance_scale(predictor, out, at, target_mm);
+  if (!cal.converged) {
+    throw ComputationError("identify load-deflection --into-config: " + cal.message);
+  }
+  contact::TyreConfig fed = out;
+  fed.compliance_scale = cal.compliance_scale;
+  double sum_sq = 0, worst = 0;
+  for (const auto& r : data.rows) {
+    contact::OperatingConditions c = fed.default_conditions(r.load_N);
+    c.pressure_kPa = r.pressure_Pa * 1e-3;
+    const contact::Prediction p = predictor.predict(fed, c);
+    if (!p.ok) throw ComputationError("identify load-deflection --into-config: footprint at " +
+                                      number_text(r.load_N) + " N: " + p.message);
+    const double e = p.sinking_mm / (r.deflection_m * 1e3) - 1;
+    sum_sq += e * e;
+    worst = std::max(worst, std::abs(e));
+  }
+  const double rms = std::sqrt(sum_sq / data.rows.size());
+  std::vector<double> pressures;
+  for (const auto& r : data.rows) pressures.push_back(r.pressure_Pa);
+  if (distinct_values(pressures) == 1 &&
+      std::abs(pressures.front() - out.inflation_pressure_Pa) > 1e-6 * out.inflation_pressure_Pa) {
+    into.mapping.notes.push_back(
+        "the test's pressure " + number_text(pressures.front() * 1e-3) + " kPa is not the tyre "
+        "config's " + number_text(at.pressure_kPa) + " kPa: the level was carried over with eq. "
+        "(3)'s (1 + p_W)^-1, and the row comparison below mixes the two pressures");
+  }
+  into.mapping.values.emplace_back("modal.compliance_scale", cal.compliance_scale);
+  into.mapping.notes.push_back(
+      "modal.compliance_scale = " + number_text(round_sig(cal.compliance_scale, 6)) + " (was " +
+      number_text(into.tyre.compliance_scale) + "): calibrated on all " +
+      std::to_string(data.rows.size()) + " rows of " + a.file + " through K_Z, so that the "
+      "footprint model sinks eq. (3)'s " + number_text(round_sig(target_mm, 5)) +
+      " mm at the mean test load " + number_text(round_sig(mean_load, 6)) + " N and " +
+      number_text(round_sig(at.pressure_kPa, 6)) + " kPa (" + std::to_string(cal.evaluations) +
+      " footprints)");
+  into.mapping.notes.push_back(
+      "with it, the footprint model gives the test's deflections to " +
+      number_text(round_sig(100 * rms, 3)) + " % RMS (worst row " +
+      number_text(round_sig(100 * worst, 3)) + " %), each row at its own load and pressure");
+}
 
 nlohmann::json mapping_json(const IdentifyArgs& a, const EffectMapping& m) {
   nlohmann::json set = nlohmann::json::object();
@@ -391,7 +459,10 @@ nlohmann::json run_load_deflection(const IdentifyArgs& a, const Geometry& g, Int
   out["pressure_unit"] = rh::kPressureUnitName;
   out["reference_pressure_kPa"] = round_sig(res.reference_pressure_Pa * 1e-3);
   out["law"] = "h_Z[mm] = K_Z P_Z[N]^(3/4) / (1 + p_W[bar, gauge])";
-  if (into) into->mapping = map_load_deflection(data, into->tyre.inflation_pressure_Pa * 1e-3);
+  if (into) {
+    into->mapping = map_load_deflection(data, into->tyre.inflation_pressure_Pa * 1e-3);
+    map_stiffness_level(a, data, res, *into);
+  }
   if (!a.plot.empty()) {
     std::map<long long, PlotSeries> meas, fit;
     double pmax = 0;

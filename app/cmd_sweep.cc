@@ -1,18 +1,25 @@
 // modaltyre sweep SWEEP.yaml [--threads N] [--set key=value]... [--output FILE] [--json] [--warm-start]
+// mpirun -n K modaltyre sweep SWEEP.yaml ...   (built with -DMODALTYRE_WITH_MPI=ON)
 //
 // Exit codes: 0 when at least one case succeeded (failed cases are rows marked failed in the
 // CSV); 1 when every case failed (the CSV is still written, so the reasons can be read); 2 for a
 // bad sweep file, config or output path, before anything is computed.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <string_view>
+
+#include <omp.h>
 
 #include "cli_support.h"
 #include "commands.h"
+#include "mpi_session.h"
 #include "modaltyre/contact/sweep.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
@@ -48,6 +55,183 @@ void check_output(const std::string& path, const InputLocation& where) {
   }
 }
 
+// The spec (with --output) and its plan: everything is checked before anything is computed.
+struct Prepared {
+  contact::SweepSpec spec;
+  contact::SweepPlan plan;
+};
+
+Prepared prepare(const SweepArgs& a) {
+  Prepared p;
+  p.spec = contact::read_sweep_spec(a.sweep, a.overrides);
+  if (!a.output.empty()) {
+    p.spec.output = a.output;
+    p.spec.output_where = {"--output", 0, ""};
+  }
+  if (p.spec.output.empty()) {
+    throw InputError({p.spec.file, 1, "output"}, "required: CSV path (or give --output)");
+  }
+  check_output(p.spec.output, p.spec.output_where);
+  p.plan = contact::plan_sweep(p.spec);
+  return p;
+}
+
+struct Summary {
+  std::size_t failed = 0;
+  int threads = 1;
+  int ranks = 1;
+  double wall_s = 0;
+  std::string first_failure;  // a failed case's reason, when every case failed
+};
+
+void report(const SweepArgs& a, const Prepared& p, const Summary& s) {
+  const std::size_t n = p.plan.cases.size();
+  const double rate = s.wall_s > 0 ? static_cast<double>(n) / s.wall_s : 0.0;
+  char line[640];
+  std::snprintf(line, sizeof line,
+                "sweep: %zu cases (%zu model%s), %zu failed, %.3f s wall, %.1f cases/s, %d "
+                "thread%s%s -> %s\n",
+                n, p.plan.models.size(), p.plan.models.size() == 1 ? "" : "s", s.failed, s.wall_s,
+                rate, s.threads, s.threads == 1 ? "" : "s",
+                s.ranks > 1 ? (" per rank x " + std::to_string(s.ranks) + " MPI ranks").c_str() : "",
+                p.spec.output.c_str());
+  std::cerr << line;
+  if (a.json) {
+    print_json({{"sweep", p.spec.file},
+                {"output", p.spec.output},
+                {"cases", n},
+                {"ok", n - s.failed},
+                {"failed", s.failed},
+                {"models", p.plan.models.size()},
+                {"threads", s.threads},
+                {"mpi_ranks", s.ranks},
+                {"warm_start", a.warm_start},
+                {"wall_s", round_sig(s.wall_s, 6)},
+                {"cases_per_s", round_sig(rate, 6)}});
+  }
+  if (s.failed == n) {
+    throw ComputationError("all " + std::to_string(n) + " cases failed (first: " + s.first_failure +
+                           "); the reasons are in " + p.spec.output);
+  }
+}
+
+std::string first_failure(const contact::SweepResult& res, const std::vector<std::size_t>* share) {
+  const std::size_t n = share ? share->size() : res.rows.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& r = res.rows[share ? (*share)[k] : k];
+    if (!r.ok) return r.message;
+  }
+  return "see the CSV";
+}
+
+// One process: OpenMP threads over every case.
+void run_local(const SweepArgs& a) {
+  const Prepared p = prepare(a);
+  const auto start = std::chrono::steady_clock::now();
+  ProgressBar bar(p.plan.cases.size(), "sweep");
+  contact::SweepOptions opt;
+  opt.threads = a.threads;
+  opt.warm_start = a.warm_start;
+  opt.progress = [&bar](std::size_t n) { bar.tick(n); };
+  const contact::SweepResult res = contact::run_sweep(p.plan, opt);
+  bar.finish();
+  write_file_atomically(p.spec.output, contact::sweep_csv(p.plan, res));
+  Summary s;
+  s.failed = res.failed;
+  s.threads = res.threads;
+  s.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (s.failed == p.plan.cases.size()) s.first_failure = first_failure(res, nullptr);
+  report(a, p, s);
+}
+
+#ifdef MODALTYRE_WITH_MPI
+// Cores of this node shared between its ranks, unless --threads or OMP_NUM_THREADS says.
+int threads_per_rank(const SweepArgs& a, const mpi::Session& session) {
+  if (a.threads > 0) return a.threads;
+  if (std::getenv("OMP_NUM_THREADS")) return omp_get_max_threads();
+  return std::max(1, omp_get_num_procs() / session.ranks_on_node());
+}
+
+// K ranks: each computes its share (contact::sweep_share) with OpenMP threads; rank 0 gathers
+// the rows, puts them in plan order and writes the one CSV (byte-identical to run_local's).
+// Every rank reads and plans the same sweep, so input errors are found by all; the ranks then
+// agree on the outcome so that one message is printed and every rank exits with its code.
+void run_distributed(const SweepArgs& a) {
+  mpi::Session session;
+  const auto start = std::chrono::steady_clock::now();
+  std::exception_ptr error;
+  int code = 0;
+  Prepared p;
+  std::vector<std::size_t> share;
+  contact::SweepResult res;
+  std::string rows;
+  try {
+    p = prepare(a);
+    share = contact::sweep_share(p.plan, session.rank(), session.ranks());
+    ProgressBar bar(share.size(),
+                    "sweep, rank 0 of " + std::to_string(session.ranks()),
+                    session.rank() == 0 ? ProgressBar::Mode::automatic : ProgressBar::Mode::never);
+    contact::SweepOptions opt;
+    opt.threads = threads_per_rank(a, session);
+    opt.warm_start = a.warm_start;
+    opt.only_cases = &share;
+    opt.progress = [&bar](std::size_t n) { bar.tick(n); };
+    res = contact::run_sweep(p.plan, opt);
+    bar.finish();
+    for (std::size_t i : share) rows += contact::sweep_csv_row(p.plan, res.rows[i], i);
+  } catch (const InputError&) {
+    error = std::current_exception();
+    code = 2;
+  } catch (...) {
+    error = std::current_exception();
+    code = 1;
+  }
+  const mpi::Session::Outcome outcome = session.agree(code);
+  if (outcome.code != 0) {
+    if (outcome.report && error) std::rethrow_exception(error);
+    throw QuietExit{outcome.code};
+  }
+
+  const std::size_t failed = session.sum(res.failed);
+  std::vector<std::string> parts;
+  try {
+    parts = session.gather(rows);
+  } catch (const ComputationError&) {
+    if (session.rank() != 0) throw QuietExit{1};
+    throw;
+  }
+  if (session.rank() != 0) {
+    if (failed == p.plan.cases.size()) throw QuietExit{1};
+    return;
+  }
+  // Each part holds its rank's share in plan order, one line per case (csv_field turns
+  // newlines in messages into spaces).
+  std::vector<std::string_view> line_of(p.plan.cases.size());
+  for (int r = 0; r < session.ranks(); ++r) {
+    const std::vector<std::size_t> its = contact::sweep_share(p.plan, r, session.ranks());
+    std::string_view text = parts[static_cast<std::size_t>(r)];
+    for (std::size_t i : its) {
+      const std::size_t end = text.find('\n');
+      MODALTYRE_CHECK(end != std::string_view::npos, "rank " + std::to_string(r) + " sent too few rows");
+      line_of[i] = text.substr(0, end + 1);
+      text.remove_prefix(end + 1);
+    }
+    MODALTYRE_CHECK(text.empty(), "rank " + std::to_string(r) + " sent too many rows");
+  }
+  std::string csv = contact::sweep_csv_header(p.plan);
+  for (const auto& line : line_of) csv += line;
+  write_file_atomically(p.spec.output, csv);
+
+  Summary s;
+  s.failed = failed;
+  s.threads = res.threads;
+  s.ranks = session.ranks();
+  s.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (failed == p.plan.cases.size()) s.first_failure = first_failure(res, &share);
+  report(a, p, s);
+}
+#endif
+
 }  // namespace
 
 void register_sweep(CLI::App& app) {
@@ -73,60 +257,19 @@ void register_sweep(CLI::App& app) {
                 "instead of cold (same contact sets, fewer iterations; still identical for any "
                 "thread count)");
   cmd->callback([a] {
-    auto spec = contact::read_sweep_spec(a->sweep, a->overrides);
-    if (!a->output.empty()) {
-      spec.output = a->output;
-      spec.output_where = {"--output", 0, ""};
+    if (mpi::launcher_world_size() > 1) {
+#ifdef MODALTYRE_WITH_MPI
+      run_distributed(*a);
+      return;
+#else
+      throw InputError({"mpirun", 0, ""},
+                       "started as one of " + std::to_string(mpi::launcher_world_size()) +
+                           " MPI ranks, but this modaltyre was built without MPI: every rank "
+                           "would run the whole sweep. Rebuild with -DMODALTYRE_WITH_MPI=ON, or "
+                           "run it without mpirun");
+#endif
     }
-    if (spec.output.empty()) {
-      throw InputError({spec.file, 1, "output"}, "required: CSV path (or give --output)");
-    }
-    check_output(spec.output, spec.output_where);
-    const contact::SweepPlan plan = contact::plan_sweep(spec);
-
-    const auto start = std::chrono::steady_clock::now();
-    ProgressBar bar(plan.cases.size(), "sweep");
-    contact::SweepOptions opt;
-    opt.threads = a->threads;
-    opt.warm_start = a->warm_start;
-    opt.progress = [&bar](std::size_t n) { bar.tick(n); };
-    const contact::SweepResult res = contact::run_sweep(plan, opt);
-    bar.finish();
-    write_file_atomically(spec.output, contact::sweep_csv(plan, res));
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    const std::size_t n = plan.cases.size();
-    const double rate = wall > 0 ? static_cast<double>(n) / wall : 0.0;
-    char line[512];
-    std::snprintf(line, sizeof line,
-                  "sweep: %zu cases (%zu model%s), %zu failed, %.3f s wall, %.1f cases/s, %d "
-                  "thread%s -> %s\n",
-                  n, plan.models.size(), plan.models.size() == 1 ? "" : "s", res.failed, wall, rate, res.threads,
-                  res.threads == 1 ? "" : "s", spec.output.c_str());
-    std::cerr << line;
-    if (a->json) {
-      print_json({{"sweep", spec.file},
-                  {"output", spec.output},
-                  {"cases", n},
-                  {"ok", n - res.failed},
-                  {"failed", res.failed},
-                  {"models", plan.models.size()},
-                  {"threads", res.threads},
-                  {"warm_start", a->warm_start},
-                  {"wall_s", round_sig(wall, 6)},
-                  {"cases_per_s", round_sig(rate, 6)}});
-    }
-    if (res.failed == n) {
-      std::string first;
-      for (const auto& r : res.rows) {
-        if (!r.ok) {
-          first = r.message;
-          break;
-        }
-      }
-      throw ComputationError("all " + std::to_string(n) + " cases failed (first: " + first +
-                             "); the reasons are in " + spec.output);
-    }
+    run_local(*a);
   });
 }
 

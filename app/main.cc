@@ -2,6 +2,7 @@
 // reason and residual), 2 bad input or usage (with file, line and key).
 #include <iostream>
 
+#include "cli_support.h"
 #include "commands.h"
 #include "modaltyre/core/errors.h"
 
@@ -22,6 +23,8 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+  } catch (const modaltyre::app::QuietExit& e) {
+    return e.code;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {

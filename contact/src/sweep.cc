@@ -547,19 +547,36 @@ SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
   result.threads = threads;
   result.rows.resize(plan.cases.size());
 
-  std::vector<std::vector<std::size_t>> cases_of(plan.models.size());
-  for (std::size_t i = 0; i < plan.cases.size(); ++i) cases_of[plan.cases[i].model].push_back(i);
+  // all_of: every case of a model (the warm-start reference is chosen among them, so that a
+  // distributed share starts from the same reference as the whole sweep); run_of: the cases
+  // to compute here.
+  std::vector<std::vector<std::size_t>> all_of(plan.models.size()), run_of(plan.models.size());
+  for (std::size_t i = 0; i < plan.cases.size(); ++i) all_of[plan.cases[i].model].push_back(i);
+  if (options.only_cases) {
+    for (std::size_t i : *options.only_cases) {
+      MODALTYRE_CHECK(i < plan.cases.size(), "sweep share names a case outside the plan");
+      run_of[plan.cases[i].model].push_back(i);
+    }
+  } else {
+    run_of = all_of;
+  }
+  std::vector<std::size_t> models;  // those with something to compute
+  for (std::size_t mi = 0; mi < plan.models.size(); ++mi) {
+    if (!run_of[mi].empty()) models.push_back(mi);
+  }
 
   // Models are built and used in batches of `threads` (each holds dense m x m matrices: only a
   // few are alive at once, however many parameter combinations the grid has).
   const std::size_t batch = static_cast<std::size_t>(std::max(threads, 1));
-  for (std::size_t first = 0; first < plan.models.size(); first += batch) {
-    const std::size_t count = std::min(batch, plan.models.size() - first);
+  for (std::size_t first = 0; first < models.size(); first += batch) {
+    const std::size_t count = std::min(batch, models.size() - first);
     std::vector<ModelSlot> slots(count);
+    std::vector<std::size_t> slot_of(plan.models.size(), 0);
 
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
     for (std::size_t s = 0; s < count; ++s) {
-      build_slot(plan, first + s, cases_of[first + s], options.warm_start, slots[s]);
+      const std::size_t mi = models[first + s];
+      build_slot(plan, mi, all_of[mi], options.warm_start, slots[s]);
     }
     for (const auto& slot : slots) {
       if (slot.input_error) std::rethrow_exception(slot.input_error);
@@ -567,19 +584,39 @@ SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
 
     std::vector<std::size_t> pending;
     for (std::size_t s = 0; s < count; ++s) {
-      pending.insert(pending.end(), cases_of[first + s].begin(), cases_of[first + s].end());
+      const std::size_t mi = models[first + s];
+      slot_of[mi] = s;
+      pending.insert(pending.end(), run_of[mi].begin(), run_of[mi].end());
     }
     const long n_pending = static_cast<long>(pending.size());
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
     for (long t = 0; t < n_pending; ++t) {
       const std::size_t i = pending[t];
       const SweepCase& sc = plan.cases[i];
-      result.rows[i] = run_case(plan, sc, slots[sc.model - first]);
+      result.rows[i] = run_case(plan, sc, slots[slot_of[sc.model]]);
       if (options.progress) options.progress(1);
     }
   }
-  for (const auto& r : result.rows) result.failed += r.ok ? 0 : 1;
+  for (const auto& cases : run_of) {
+    for (std::size_t i : cases) result.failed += result.rows[i].ok ? 0 : 1;
+  }
   return result;
+}
+
+std::vector<std::size_t> sweep_share(const SweepPlan& plan, int rank, int ranks) {
+  MODALTYRE_CHECK(ranks >= 1 && rank >= 0 && rank < ranks, "sweep share: bad rank");
+  std::vector<std::size_t> by_model(plan.cases.size());
+  for (std::size_t i = 0; i < by_model.size(); ++i) by_model[i] = i;
+  std::stable_sort(by_model.begin(), by_model.end(), [&](std::size_t a, std::size_t b) {
+    return plan.cases[a].model < plan.cases[b].model;
+  });
+  // Chunk r is [r n / K, (r + 1) n / K): sizes differ by at most one.
+  const std::size_t n = by_model.size(), k = static_cast<std::size_t>(ranks);
+  const std::size_t r = static_cast<std::size_t>(rank);
+  std::vector<std::size_t> share(by_model.begin() + static_cast<long>(r * n / k),
+                                 by_model.begin() + static_cast<long>((r + 1) * n / k));
+  std::sort(share.begin(), share.end());
+  return share;
 }
 
 const std::vector<std::string>& sweep_observable_columns() {
@@ -618,10 +655,8 @@ std::string csv_field(const std::string& text) {
   return q;
 }
 
-std::string sweep_csv(const SweepPlan& plan, const SweepResult& result) {
-  MODALTYRE_CHECK(result.rows.size() == plan.cases.size(), "sweep rows and cases disagree");
+std::string sweep_csv_header(const SweepPlan& plan) {
   std::string out;
-  out.reserve(plan.cases.size() * 96);
   bool first = true;
   for (const auto& c : plan.columns) {
     out += (first ? "" : ",") + csv_field(c);
@@ -629,24 +664,34 @@ std::string sweep_csv(const SweepPlan& plan, const SweepResult& result) {
   }
   for (const auto& c : sweep_observable_columns()) out += "," + c;
   out += "\n";
-  for (std::size_t i = 0; i < plan.cases.size(); ++i) {
-    first = true;
-    for (const auto& cell : plan.cells(i)) {
-      if (!first) out += ",";
-      out += cell;
-      first = false;
-    }
-    const SweepRow& r = result.rows[i];
-    if (r.ok) {
-      for (double v : {r.sinking_mm, r.length_mm, r.width_mm, r.rolling_resistance_N,
-                       r.vertical_stiffness_N_mm, r.peak_pressure_kPa}) {
-        out += "," + sweep_number(v);
-      }
-      out += "," + std::to_string(r.iterations) + ",ok," + csv_field(r.message) + "\n";
-    } else {
-      out += ",,,,,,,,failed," + csv_field(r.message) + "\n";
-    }
+  return out;
+}
+
+std::string sweep_csv_row(const SweepPlan& plan, const SweepRow& r, std::size_t i) {
+  std::string out;
+  bool first = true;
+  for (const auto& cell : plan.cells(i)) {
+    if (!first) out += ",";
+    out += cell;
+    first = false;
   }
+  if (r.ok) {
+    for (double v : {r.sinking_mm, r.length_mm, r.width_mm, r.rolling_resistance_N,
+                     r.vertical_stiffness_N_mm, r.peak_pressure_kPa}) {
+      out += "," + sweep_number(v);
+    }
+    out += "," + std::to_string(r.iterations) + ",ok," + csv_field(r.message) + "\n";
+  } else {
+    out += ",,,,,,,,failed," + csv_field(r.message) + "\n";
+  }
+  return out;
+}
+
+std::string sweep_csv(const SweepPlan& plan, const SweepResult& result) {
+  MODALTYRE_CHECK(result.rows.size() == plan.cases.size(), "sweep rows and cases disagree");
+  std::string out = sweep_csv_header(plan);
+  out.reserve(plan.cases.size() * 96);
+  for (std::size_t i = 0; i < plan.cases.size(); ++i) out += sweep_csv_row(plan, result.rows[i], i);
   return out;
 }
 

@@ -203,6 +203,60 @@ TEST(Sweep, AFailedCaseIsARowWithItsReason) {
   EXPECT_NE(csv.find("\n200,6000,"), std::string::npos);
 }
 
+// Distributed sweeps (MPI) run each rank's share with only_cases; rank 0 puts the rows back in
+// plan order. Shares must partition the plan, be balanced, touch few models, and give the rows
+// of the whole run, warm starts included (the reference case comes from the whole model).
+TEST(SweepShare, SharesPartitionThePlanAndReassembleToTheSingleProcessCsv) {
+  const auto plan = plan_sweep(spec_of(
+      "base: ../sf350.yaml\n"
+      "grid:\n"
+      "  load_N: [1500, 3000, 4500, 6000, 7500]\n"
+      "  tread.modulus_MPa: [4, 6, 9]\n"
+      "output: x.csv\n"));
+  ASSERT_EQ(plan.models.size(), 3u);
+  for (bool warm : {false, true}) {
+    SweepOptions whole;
+    whole.threads = 1;
+    whole.warm_start = warm;
+    const SweepResult all = run_sweep(plan, whole);
+    for (int ranks : {1, 2, 4, 7, 20}) {
+      std::vector<int> owner(plan.cases.size(), -1);
+      std::vector<std::string> line(plan.cases.size());
+      for (int r = 0; r < ranks; ++r) {
+        const auto share = sweep_share(plan, r, ranks);
+        EXPECT_TRUE(std::is_sorted(share.begin(), share.end()));
+        // Balanced: 15 cases over `ranks` chunks differ by at most one.
+        EXPECT_LE(share.size(), (plan.cases.size() + ranks - 1) / ranks);
+        EXPECT_GE(share.size(), plan.cases.size() / ranks);
+        // Contiguous in model order: a share of 5 cases or fewer touches at most two models.
+        std::vector<std::size_t> models;
+        for (auto i : share) models.push_back(plan.cases[i].model);
+        std::sort(models.begin(), models.end());
+        models.erase(std::unique(models.begin(), models.end()), models.end());
+        if (share.size() <= 5) {
+          EXPECT_LE(models.size(), 2u);
+        }
+
+        SweepOptions part = whole;
+        part.only_cases = &share;
+        const SweepResult mine = run_sweep(plan, part);
+        EXPECT_EQ(mine.failed, 0u);
+        for (auto i : share) {
+          EXPECT_EQ(owner[i], -1) << "case " << i << " in two shares";
+          owner[i] = r;
+          line[i] = sweep_csv_row(plan, mine.rows[i], i);
+        }
+      }
+      std::string csv = sweep_csv_header(plan);
+      for (std::size_t i = 0; i < plan.cases.size(); ++i) {
+        EXPECT_NE(owner[i], -1) << "case " << i << " in no share";
+        csv += line[i];
+      }
+      EXPECT_EQ(csv, sweep_csv(plan, all)) << ranks << " ranks, warm start " << warm;
+    }
+  }
+}
+
 std::string full_precision(double v) {
   std::ostringstream s;
   s.precision(17);

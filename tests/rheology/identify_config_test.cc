@@ -257,6 +257,53 @@ TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionAtOnePressureLeavesThePressure
   EXPECT_NE(r.out.find("the seed's, not identified"), std::string::npos);
 }
 
+// First number after "key": in a JSON text (the CLI's output).
+double json_number(const std::string& json, const std::string& key) {
+  const auto at = json.find("\"" + key + "\":");
+  if (at == std::string::npos) return std::nan("");
+  return std::stod(json.substr(at + key.size() + 3));
+}
+
+// K_Z feeds the carcass level (docs/rheology.md 6.5): OUT's footprint sinks eq. (3)'s h_Z at
+// the mean test load and the tyre's pressure, and a stiffer tested tyre gives a stiffer carcass.
+TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionSetsTheCarcassLevelSoTheFootprintSinksEq3) {
+  auto csv_for = [](double K_Z_mm) {
+    std::ostringstream s;
+    s.precision(10);
+    s << "load_N,pressure_kPa,deflection_mm\n";
+    for (double P : {2000.0, 3000.0, 4000.0, 5000.0, 6000.0})
+      s << P << ",230," << law_deflection(K_Z_mm * 1e-3, P, 230e3) * 1e3 << "\n";
+    return s.str();
+  };
+  std::vector<double> scales;
+  for (double K_Z_mm : {0.13, 0.10}) {
+    const auto r = run({"identify", "load-deflection", file("ld.csv", csv_for(K_Z_mm)),
+                        "--into-config", kTyre, "--out-config", out()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("calibrated on all 5 rows"), std::string::npos) << r.out;
+    const double scale =
+        ConfigTree::load(out()).root().section("modal").number("compliance_scale", 0, 0, 1e9);
+    scales.push_back(scale);
+    const auto fp = run({"footprint", out(), "--load", "4000", "--json"});
+    ASSERT_EQ(fp.exit_code, 0) << fp.err;
+    const double expected_mm = law_deflection(K_Z_mm * 1e-3, 4000, 230e3) * 1e3;
+    EXPECT_NEAR(json_number(fp.out, "sinking_mm") / expected_mm, 1.0, 1e-5) << fp.out;
+  }
+  EXPECT_LT(scales[1], scales[0]) << "a stiffer tested tyre must give a stiffer carcass";
+}
+
+TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionStifferThanTheTreadAloneExits2) {
+  std::ostringstream s;
+  s << "load_N,pressure_kPa,deflection_mm\n";
+  for (double P : {2000.0, 4000.0}) s << P << ",230," << law_deflection(1e-6, P, 230e3) * 1e3 << "\n";
+  const auto r = run({"identify", "load-deflection", file("stiff.csv", s.str()), "--into-config",
+                      kTyre, "--out-config", out()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("modal.compliance_scale"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("stiffer"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
 TEST_F(rheology_IdentifyIntoConfig, MethodsThatDetermineNoEffectRefuseWithExit2) {
   const auto b = run({"identify", "b-factors", "--into-config", kTyre, "--out-config", out()});
   EXPECT_EQ(b.exit_code, 2);

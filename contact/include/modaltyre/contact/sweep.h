@@ -146,6 +146,10 @@ struct SweepOptions {
   /// Called with the number of newly finished cases, from any worker thread (must be
   /// thread-safe and cheap). The library never prints.
   std::function<void(std::size_t)> progress;
+  /// Plan indices to compute (a distributed sweep's share, see sweep_share()); null = all.
+  /// Rows of the other cases stay default (ok = false, empty message) and are not counted
+  /// as failed. Models with no case in the share are not built.
+  const std::vector<std::size_t>* only_cases = nullptr;
 };
 
 struct SweepResult {
@@ -161,6 +165,19 @@ struct SweepResult {
 /// ok = false and its reason; an InputError raised while building a model (e.g. unreadable
 /// hammer data) is rethrown.
 SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options = {});
+
+/// The share of rank `rank` (0-based) out of `ranks` in a distributed sweep (MPI): the cases
+/// ordered by model, then plan order, cut into `ranks` contiguous chunks whose sizes differ by
+/// at most one, so that every rank computes about as many cases and builds only the few models
+/// its chunk touches. Returned in plan order. The shares partition the plan, and a case's row
+/// does not depend on which rank computes it, so gathering the rows gives the single-process
+/// CSV byte for byte.
+std::vector<std::size_t> sweep_share(const SweepPlan& plan, int rank, int ranks);
+
+/// One CSV line of case i (with its trailing newline), as in sweep_csv().
+std::string sweep_csv_row(const SweepPlan& plan, const SweepRow& row, std::size_t i);
+/// The CSV header line (with its trailing newline), as in sweep_csv().
+std::string sweep_csv_header(const SweepPlan& plan);
 
 /// Observable columns, after the condition/parameter columns: sinking_mm, length_mm, width_mm,
 /// rolling_resistance_N (predictor.h's observables, read back by read_measurements()), then
