@@ -1,6 +1,7 @@
 #include "modaltyre/contact/measurements.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/csv.h"
@@ -60,12 +61,15 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
     r.line = t.line(i);
     auto at = [&](const std::string& col) { return InputLocation{path, r.line, col}; };
     if (t.has("status") && t.text(i, "status") != "ok") {
-      throw InputError(at("status"), "row is marked '" + t.text(i, "status") +
+      throw InputError(at("status"), "row is marked '" + printable(t.text(i, "status")) +
                                          "': remove failed sweep rows from measured data");
     }
     r.conditions = defaults.default_conditions(t.number(i, "load_N"));
     OperatingConditions& c = r.conditions;
     if (!(c.load_N > 0)) throw InputError(at("load_N"), "load must be > 0 N");
+    // The tyre config's limits (loads_N, horizontal_force_N): beyond them a unit error, and the
+    // solver would fail on it instead of the reader saying so.
+    if (c.load_N > 1e7) throw InputError(at("load_N"), "load must be at most 1e7 N");
     if (t.has("pressure_kPa")) {
       c.pressure_kPa = t.number(i, "pressure_kPa");
       if (!(c.pressure_kPa > 0 && c.pressure_kPa <= 2000)) {
@@ -82,7 +86,12 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
         throw InputError(at("speed_kmh"), "speed must be in [0, 400] km/h");
       }
     }
-    if (t.has("horizontal_force_N")) c.horizontal_force_N = t.number(i, "horizontal_force_N");
+    if (t.has("horizontal_force_N")) {
+      c.horizontal_force_N = t.number(i, "horizontal_force_N");
+      if (!(std::abs(c.horizontal_force_N) <= 1e7)) {
+        throw InputError(at("horizontal_force_N"), "horizontal force must be in [-1e7, 1e7] N");
+      }
+    }
     if (t.has("branch")) {
       const std::string& b = t.text(i, "branch");
       if (b == "load" || b == "loading") {
@@ -90,7 +99,7 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
       } else if (b == "unload" || b == "unloading") {
         c.branch = Branch::unloading;
       } else {
-        throw InputError(at("branch"), "'" + b + "' is not one of: load, unload");
+        throw InputError(at("branch"), "'" + printable(b) + "' is not one of: load, unload");
       }
     }
     if (t.has("surface")) {
@@ -100,12 +109,16 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
       } else if (s == "soil") {
         c.surface = Surface::soil;
       } else {
-        throw InputError(at("surface"), "'" + s + "' is not one of: rigid, soil");
+        throw InputError(at("surface"), "'" + printable(s) + "' is not one of: rigid, soil");
       }
     }
     for (const auto& o : set.observables) {
       const double v = t.number(i, o);
       if (o != "rolling_resistance_N" && !(v > 0)) throw InputError(at(o), "must be > 0 mm");
+      // A footprint of tens of metres is a unit error (and a calibration target no model meets).
+      if (o != "rolling_resistance_N" && v > 1e4) throw InputError(at(o), "must be at most 1e4 mm");
+      if (o == "rolling_resistance_N" && !(std::abs(v) <= 1e7))
+        throw InputError(at(o), "must be in [-1e7, 1e7] N");
       r.observed[o] = v;
     }
     set.rows.push_back(std::move(r));

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <set>
 #include <sstream>
@@ -89,26 +88,6 @@ void require_converged(const std::vector<Prediction>& res, const std::string& st
   }
 }
 
-// Columns of the file's header (first line that is neither blank nor a comment), trimmed; empty
-// when the file cannot be read (the reader then reports why).
-std::vector<std::string> header_columns(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  while (in && std::getline(in, line)) {
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    std::vector<std::string> cols;
-    std::stringstream ss(line);
-    std::string c;
-    while (std::getline(ss, c, ',')) {
-      const auto b = c.find_first_not_of(" \t\r"), e = c.find_last_not_of(" \t\r");
-      cols.push_back(b == std::string::npos ? "" : c.substr(b, e - b + 1));
-    }
-    return cols;
-  }
-  return {};
-}
-
 MeasuredFootprint footprint_of(const MeasuredRow& r) {
   MeasuredFootprint m;
   m.row = r.row;
@@ -143,10 +122,13 @@ std::vector<MeasuredFootprint> read_footprint_measurements(const std::string& pa
     m.line = t.line(i);
     m.load_N = t.number(i, "load_N");
     if (!(m.load_N > 0)) throw InputError({path, m.line, "load_N"}, "load must be > 0 N");
+    // The tyre config's limit on loads_N: beyond it a unit error the solver would fail on.
+    if (m.load_N > 1e7) throw InputError({path, m.line, "load_N"}, "load must be at most 1e7 N");
     for (const char* col : {"sinking_mm", "length_mm", "width_mm"}) {
       if (!t.has(col)) continue;
       const double v = t.number(i, col);
       if (!(v > 0)) throw InputError({path, m.line, col}, "must be > 0 mm");
+      if (v > 1e4) throw InputError({path, m.line, col}, "must be at most 1e4 mm (a unit error?)");
       if (std::string(col) == "sinking_mm") m.sinking_mm = v;
       if (std::string(col) == "length_mm") m.length_mm = v;
       if (std::string(col) == "width_mm") m.width_mm = v;
@@ -180,7 +162,7 @@ std::vector<MeasuredFootprint> read_validation_measurements(const std::string& p
   // condition columns, a sweep's extra columns or effects need the conditions of every row.
   static const std::vector<std::string> plain = {"load_N", "sinking_mm", "length_mm", "width_mm"};
   bool conditions = config.effects.any();
-  for (const auto& c : header_columns(path)) {
+  for (const auto& c : read_csv_header(path)) {
     conditions = conditions || std::find(plain.begin(), plain.end(), c) == plain.end();
   }
   if (!conditions) return read_footprint_measurements(path);

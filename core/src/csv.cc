@@ -1,7 +1,6 @@
 #include "modaltyre/core/csv.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -20,18 +19,115 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cell;
-  for (char c : line) {
-    if (c == ',') {
-      out.push_back(trim(cell));
-      cell.clear();
-    } else {
-      cell.push_back(c);
-    }
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// Length of the well-formed UTF-8 sequence at s[i], 0 if there is none (RFC 3629: no overlong
+// forms, no surrogates, nothing above U+10FFFF).
+std::size_t utf8_sequence(const std::string& s, std::size_t i) {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char c = b(i);
+  if (c < 0x80) return 1;
+  std::size_t n = 0;
+  unsigned char lo = 0x80, hi = 0xBF;  // allowed range of the second byte
+  if (c >= 0xC2 && c <= 0xDF) {
+    n = 2;
+  } else if (c >= 0xE0 && c <= 0xEF) {
+    n = 3;
+    if (c == 0xE0) lo = 0xA0;
+    if (c == 0xED) hi = 0x9F;
+  } else if (c >= 0xF0 && c <= 0xF4) {
+    n = 4;
+    if (c == 0xF0) lo = 0x90;
+    if (c == 0xF4) hi = 0x8F;
+  } else {
+    return 0;
   }
-  out.push_back(trim(cell));
+  if (i + n > s.size() || b(i + 1) < lo || b(i + 1) > hi) return 0;
+  for (std::size_t k = 2; k < n; ++k) {
+    if (b(i + k) < 0x80 || b(i + k) > 0xBF) return 0;
+  }
+  return n;
+}
+
+bool valid_utf8(const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const std::size_t n = utf8_sequence(s, i);
+    if (n == 0) return false;
+    i += n;
+  }
+  return true;
+}
+
+std::string hex_byte(unsigned char c) {
+  static const char* digits = "0123456789ABCDEF";
+  return std::string("\\x") + digits[c >> 4] + digits[c & 0xF];
+}
+
+// Column of field i for messages: its header name, or its position where there is none.
+using ColumnName = std::function<std::string(std::size_t)>;
+
+// Splits one line into fields by the quoting rule of csv.h, refusing control bytes on the way
+// (a binary file or an old Mac file with CR line ends) so that the column can be named.
+std::vector<std::string> split(const std::string& line, const std::string& path, int line_no,
+                               const ColumnName& column) {
+  std::vector<std::string> out;
+  auto fail = [&](const std::string& message) {
+    throw InputError({path, line_no, column(out.size())}, message);
+  };
+  auto check_byte = [&](char ch) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '\r')
+      fail(
+          "carriage return inside the line (old Mac line endings?): save the file "
+          "with LF or CRLF line endings");
+    if ((c < 0x20 && c != '\t') || c == 0x7F)
+      fail("contains control or binary byte " + hex_byte(c) + "; not a text CSV");
+  };
+  const std::size_t n = line.size();
+  std::size_t i = 0;
+  while (true) {
+    std::size_t j = i;
+    while (j < n && (line[j] == ' ' || line[j] == '\t')) ++j;
+    std::string cell;
+    if (j < n && line[j] == '"') {
+      std::size_t k = j + 1;
+      bool closed = false;
+      while (k < n) {
+        if (line[k] == '"') {
+          if (k + 1 < n && line[k + 1] == '"') {
+            cell.push_back('"');
+            k += 2;
+            continue;
+          }
+          closed = true;
+          ++k;
+          break;
+        }
+        check_byte(line[k]);
+        cell.push_back(line[k++]);
+      }
+      if (!closed) {
+        fail(
+            "unterminated quoted field: the closing '\"' is missing (a quoted field must end "
+            "on its line)");
+      }
+      while (k < n && is_blank(line[k])) ++k;
+      if (k < n && line[k] != ',') {
+        fail(
+            "text after the closing quote of a quoted field (write \"\" for a quote inside "
+            "quotes)");
+      }
+      i = k;
+    } else {
+      std::size_t k = i;
+      for (; k < n && line[k] != ','; ++k) check_byte(line[k]);
+      cell = trim(line.substr(i, k - i));
+      i = k;
+    }
+    out.push_back(std::move(cell));
+    if (i >= n) break;
+    ++i;  // past the comma
+  }
   return out;
 }
 
@@ -39,15 +135,63 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
 
+std::string file_size_text(std::uintmax_t bytes) {
+  if (bytes < (1u << 20)) return std::to_string(bytes) + " bytes";
+  return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MB";
+}
+
+// Refuses what is not a readable regular file, before anything is read from it.
+void check_is_regular_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const auto st = fs::status(path, ec);
+  if (!fs::exists(st)) throw InputError({path, 0, ""}, "file not found");
+  if (fs::is_directory(st)) throw InputError({path, 0, ""}, "is a directory, not a CSV file");
+  // A named pipe or device would block the read (or never end): refuse it.
+  if (!fs::is_regular_file(st)) {
+    throw InputError({path, 0, ""}, "is not a regular file (a pipe or device?)");
+  }
+}
+
+// The next line that is neither blank nor a comment, trimmed; false at the end of the file.
+bool next_content_line(std::istream& in, std::string& line, int& line_no) {
+  std::string raw;
+  while (std::getline(in, raw)) {
+    ++line_no;
+    if (line_no == 1 && raw.size() >= 3 && raw.compare(0, 3, "\xEF\xBB\xBF") == 0) raw.erase(0, 3);
+    line = trim(raw);
+    if (!line.empty() && line[0] != '#') return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+std::string printable(const std::string& text, std::size_t max_bytes) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (out.size() >= max_bytes) return out + "...";
+    const auto c = static_cast<unsigned char>(text[i]);
+    const std::size_t n = utf8_sequence(text, i);
+    if (n == 0 || c < 0x20 || c == 0x7F) {
+      out += hex_byte(c);
+      ++i;
+    } else {
+      out.append(text, i, n);
+      i += n;
+    }
+  }
+  return out;
+}
 
 std::optional<double> parse_finite_double(const std::string& text) {
   const std::string t = trim(text);
   if (t.empty()) return std::nullopt;
-  errno = 0;
   char* end = nullptr;
   const double v = std::strtod(t.c_str(), &end);
-  if (end != t.c_str() + t.size() || errno == ERANGE || !std::isfinite(v)) return std::nullopt;
+  // Overflow gives +-inf (refused below); underflow (1e-400) is a finite number that rounds to
+  // a subnormal or zero, which the readers' own range checks then judge.
+  if (end != t.c_str() + t.size() || !std::isfinite(v)) return std::nullopt;
   return v;
 }
 
@@ -78,44 +222,47 @@ const std::string& CsvTable::text(std::size_t row, const std::string& column) co
 
 CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
   namespace fs = std::filesystem;
+  check_is_regular_file(path);
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError({path, 0, ""}, "file not found");
-  if (fs::is_directory(path, ec)) throw InputError({path, 0, ""}, "is a directory, not a CSV file");
-  // A named pipe or device would block the read (or never end): refuse it.
-  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
-    throw InputError({path, 0, ""}, "is not a regular file (a pipe or device?)");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (!ec && size > schema.max_bytes) {
+    throw InputError({path, 0, ""}, "is " + file_size_text(size) + "; refusing CSV files over " +
+                                        file_size_text(schema.max_bytes) +
+                                        " (is it the right file?)");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, ""}, "cannot open file for reading");
 
   CsvTable table;
   table.path_ = path;
-  std::string raw;
+  std::string line;
   int line_no = 0;
-  bool header_seen = false;
+  int header_line = 0;
   std::vector<std::string> extra_text;  // header names accepted by schema.accept_text_column
-  while (std::getline(in, raw)) {
-    ++line_no;
-    if (line_no == 1 && raw.size() >= 3 && raw.compare(0, 3, "\xEF\xBB\xBF") == 0) raw.erase(0, 3);
-    const std::string line = trim(raw);
-    if (line.empty() || line[0] == '#') continue;
-    for (unsigned char c : line) {
-      if (c < 0x20 && c != '\t') {
-        throw InputError({path, line_no, ""}, "contains control or binary bytes; not a text CSV");
-      }
+  const ColumnName header_column = [](std::size_t i) { return "column " + std::to_string(i + 1); };
+  const ColumnName data_column = [&](std::size_t i) {
+    return i < table.columns_.size() ? table.columns_[i] : header_column(i);
+  };
+  while (next_content_line(in, line, line_no)) {
+    if (line_no == 1 && line.size() >= 2 &&
+        (line.compare(0, 2, "\xFF\xFE") == 0 || line.compare(0, 2, "\xFE\xFF") == 0)) {
+      throw InputError({path, 1, ""}, "is UTF-16 encoded; save it as UTF-8 (\"CSV UTF-8\")");
     }
-    const auto fields = split(line);
-    if (!header_seen) {
-      header_seen = true;
-      for (const auto& name : fields) {
-        if (name.empty()) throw InputError({path, line_no, ""}, "empty column name in header");
+    if (header_line == 0) {
+      header_line = line_no;
+      const auto fields = split(line, path, line_no, header_column);
+      for (std::size_t c = 0; c < fields.size(); ++c) {
+        const std::string& name = fields[c];
+        if (name.empty()) {
+          throw InputError({path, line_no, header_column(c)}, "empty column name in header");
+        }
         const bool extra = schema.accept_text_column && schema.accept_text_column(name);
         if (extra) extra_text.push_back(name);
         if (!extra && !contains(schema.required, name) && !contains(schema.optional, name)) {
           std::string known;
           for (const auto& k : schema.required) known += (known.empty() ? "" : ", ") + k;
           for (const auto& k : schema.optional) known += ", " + k + " (optional)";
-          throw InputError({path, line_no, name}, "unknown column; expected: " + known);
+          throw InputError({path, line_no, printable(name)}, "unknown column; expected: " + known);
         }
         if (contains(table.columns_, name))
           throw InputError({path, line_no, name}, "column appears twice in the header");
@@ -127,29 +274,44 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
       }
       continue;
     }
-    if (fields.size() != table.columns_.size()) {
-      throw InputError({path, line_no, ""}, "has " + std::to_string(fields.size()) +
-                                                " fields, header has " +
-                                                std::to_string(table.columns_.size()));
+    const auto fields = split(line, path, line_no, data_column);
+    const std::size_t ncol = table.columns_.size();
+    const std::string counts =
+        "has " + std::to_string(fields.size()) + " fields, header has " + std::to_string(ncol);
+    if (fields.size() < ncol) {
+      throw InputError({path, line_no, table.columns_[fields.size()]},
+                       counts + ": no value for this column");
+    }
+    if (fields.size() > ncol) {
+      throw InputError({path, line_no, header_column(ncol)},
+                       counts + ": field " + std::to_string(ncol + 1) + " has no column");
     }
     if (table.cells_.size() >= schema.max_rows) {
       throw InputError({path, line_no, ""},
                        "more than " + std::to_string(schema.max_rows) + " data rows; refusing");
     }
+    if ((table.cells_.size() + 1) * ncol > schema.max_cells) {
+      throw InputError({path, line_no, ""}, "more than " + std::to_string(schema.max_cells) +
+                                                " cells (rows x columns); refusing");
+    }
     std::vector<double> nums(fields.size(), 0.0);
     for (std::size_t c = 0; c < fields.size(); ++c) {
-      if (fields[c].empty() && contains(schema.may_be_empty, table.columns_[c])) {
+      const std::string& col = table.columns_[c];
+      if (fields[c].empty() && contains(schema.may_be_empty, col)) {
         nums[c] = std::numeric_limits<double>::quiet_NaN();
         continue;
       }
-      if (contains(schema.text, table.columns_[c]) || contains(extra_text, table.columns_[c])) {
-        if (fields[c].empty()) throw InputError({path, line_no, table.columns_[c]}, "empty cell");
+      if (contains(schema.text, col) || contains(extra_text, col)) {
+        if (fields[c].empty()) throw InputError({path, line_no, col}, "empty cell");
         continue;
       }
       const auto v = parse_finite_double(fields[c]);
       if (!v) {
-        throw InputError({path, line_no, table.columns_[c]},
-                         "'" + fields[c] + "' is not a finite number");
+        throw InputError({path, line_no, col},
+                         "'" + printable(fields[c]) + "' is not a finite number" +
+                             (valid_utf8(fields[c]) ? ""
+                                                    : " (bytes that are not UTF-8: save "
+                                                      "the file as UTF-8)"));
       }
       nums[c] = *v;
     }
@@ -157,9 +319,30 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
     table.numbers_.push_back(std::move(nums));
     table.lines_.push_back(line_no);
   }
-  if (!header_seen) throw InputError({path, 0, ""}, "file is empty (no header line)");
-  if (table.cells_.empty()) throw InputError({path, 0, ""}, "has a header but no data rows");
+  if (header_line == 0) {
+    throw InputError({path, std::max(line_no, 1), ""},
+                     line_no == 0 ? "the file is empty: no header line"
+                                  : "the file is empty: only blank and comment lines, no header");
+  }
+  if (table.cells_.empty()) {
+    throw InputError({path, header_line, ""}, "header only, no data rows");
+  }
   return table;
+}
+
+std::vector<std::string> read_csv_header(const std::string& path) {
+  try {
+    check_is_regular_file(path);
+    std::error_code ec;
+    if (std::filesystem::file_size(path, ec) > CsvSchema{}.max_bytes || ec) return {};
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    int line_no = 0;
+    if (!in || !next_content_line(in, line, line_no)) return {};
+    return split(line, path, line_no, [](std::size_t) { return std::string(); });
+  } catch (const InputError&) {
+    return {};
+  }
 }
 
 }  // namespace modaltyre

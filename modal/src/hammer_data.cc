@@ -14,6 +14,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // Angles are typed by hand in degrees; 1 % of the spacing separates a rounding from a misplacement.
 constexpr double kSpacingTolerance = 0.01;
+constexpr double kMaxShape = 1e6;  // kg^-1/2
 
 int as_index(const CsvTable& t, std::size_t row, const std::string& col) {
   const double v = t.number(row, col);
@@ -72,6 +73,15 @@ HammerData read_hammer_csv(const std::string& path) {
     double a = std::fmod(t.number(r, "angle_deg"), 360.0);
     if (a < 0) a += 360.0;
     m.angle_rad.push_back(a * kPi / 180.0);
+    // Mass-normalised shapes are of order 1 kg^-1/2; far beyond, their squares in the harmonic
+    // fits overflow (NaN in the output) instead of the reader naming the cell.
+    for (const char* col : {"radial", "tangential"}) {
+      if (!(std::abs(t.number(r, col)) <= kMaxShape)) {
+        throw InputError({path, line, col},
+                         "shape value must be within +-1e6 kg^-1/2 "
+                         "(mass-normalised shapes are of order 1)");
+      }
+    }
     m.radial.push_back(t.number(r, "radial"));
     m.tangential.push_back(t.number(r, "tangential"));
   }

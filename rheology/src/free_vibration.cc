@@ -49,8 +49,13 @@ DecaySignal read_free_vibration_csv(const std::string& path) {
   s.path = path;
   for (std::size_t r = 0; r < t.rows(); ++r) {
     const double ts = t.number(r, "t_s");
-    if (!s.t_s.empty() && ts <= s.t_s.back())
-      throw InputError({path, t.line(r), "t_s"}, "time must increase strictly");
+    if (!s.t_s.empty() && ts <= s.t_s.back()) {
+      const std::string before =
+          "line " + std::to_string(s.line.back()) + " has t_s = " + t.text(r - 1, "t_s");
+      throw InputError({path, t.line(r), "t_s"},
+                       "time must increase strictly (" + before +
+                           "): the decay is a sampled signal in time order");
+    }
     s.t_s.push_back(ts);
     s.deflection_m.push_back(t.number(r, "deflection_mm") * 1e-3);
     s.line.push_back(t.line(r));

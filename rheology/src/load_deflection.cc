@@ -13,6 +13,10 @@ namespace modaltyre::rheology {
 namespace {
 
 constexpr double kMmPerM = 1e3;
+// Plausible ranges, as the tyre config has them (loads_N, tyre.inflation_pressure_kPa): beyond
+// them a typo or a wrong unit, and the fit would overflow instead of saying so.
+constexpr double kMaxLoad_N = 1e7;
+constexpr double kMaxPressure_kPa = 2000;
 
 // Groups rows by a key rounded to a tolerance (equal within it = "one value").
 std::map<long long, std::vector<std::size_t>> group_by(const std::vector<LoadDeflectionRow>& rows,
@@ -38,9 +42,14 @@ LoadDeflectionData read_load_deflection_csv(const std::string& path) {
     row.load_N = t.number(r, "load_N");
     row.pressure_Pa = t.number(r, "pressure_kPa") * 1e3;
     row.deflection_m = t.number(r, "deflection_mm") / kMmPerM;
-    if (row.load_N <= 0) throw InputError({path, row.line, "load_N"}, "load must be > 0 N");
-    if (row.pressure_Pa < 0)
-      throw InputError({path, row.line, "pressure_kPa"}, "gauge pressure must be >= 0 kPa");
+    if (!(row.load_N > 0 && row.load_N <= kMaxLoad_N))
+      throw InputError({path, row.line, "load_N"}, "load must be in (0, 1e7] N");
+    // Eq. (3) is a law of the inflated tyre: at zero gauge pressure the carcass alone carries
+    // the load, which (1 + p_W) does not describe.
+    if (!(row.pressure_Pa > 0 && row.pressure_Pa <= kMaxPressure_kPa * 1e3))
+      throw InputError({path, row.line, "pressure_kPa"},
+                       "gauge inflation pressure must be in (0, 2000] kPa: eq. (3) describes an "
+                       "inflated tyre");
     if (row.deflection_m <= 0)
       throw InputError({path, row.line, "deflection_mm"},
                        "deflection must be > 0 mm (measured from the unloaded tyre)");
@@ -107,9 +116,10 @@ LoadDeflectionResult identify_load_deflection(const LoadDeflectionData& data,
       throw InputError({path, rows[i].line, "deflection_mm"}, "deflection exceeds the radius r0");
   }
   if (A.maxCoeff() - A.minCoeff() <= 1e-9 * A.maxCoeff())
-    throw InputError({path, 0, "load_N"},
-                     "all rows have equal loads at the same pressure: eq. (3) needs two loads at "
-                     "one pressure or two pressures at one load");
+    throw InputError({path, rows.back().line, "load_N"},
+                     "all rows have equal loads at the same pressure (as line " +
+                         std::to_string(rows.front().line) +
+                         "): eq. (3) needs two loads at one pressure or two pressures at one load");
 
   LoadDeflectionResult res;
   const LinearFit fit = solve_least_squares(A, b);

@@ -31,7 +31,10 @@ SoilData read_soil_rolling_csv(const std::string& path) {
     auto bad = [&](const char* col, const std::string& msg) {
       throw InputError({path, s.line, col}, msg);
     };
-    if (s.load_N <= 0) bad("load_N", "load must be > 0 N");
+    // Upper bounds as the tyre config's loads_N: beyond them the fit overflows.
+    if (!(s.load_N > 0 && s.load_N <= 1e7)) bad("load_N", "load must be in (0, 1e7] N");
+    if (!(std::abs(s.longitudinal_force_N) <= 1e7))
+      bad("longitudinal_force_N", "must be in [-1e7, 1e7] N");
     if (!(s.alpha1_rad > 0 && s.alpha1_rad < M_PI / 2)) bad("alpha1_deg", "must be in (0, 90) deg");
     if (!(s.alpha2_rad > 0 && s.alpha2_rad <= s.alpha1_rad))
       bad("alpha2_deg", "must be in (0, alpha1_deg]: the rear contact needs elastic recovery");

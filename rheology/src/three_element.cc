@@ -38,9 +38,17 @@ StaticLoop read_static_loop_csv(const std::string& path) {
     row.deflection_m = t.number(r, "deflection_mm") * 1e-3;
     const std::string& br = t.text(r, "branch");
     if (br != "loading" && br != "unloading")
-      throw InputError({path, row.line, "branch"}, "must be 'loading' or 'unloading', got '" + br + "'");
+      throw InputError({path, row.line, "branch"},
+                       "must be 'loading' or 'unloading', got '" + printable(br) + "'");
     row.loading = br == "loading";
-    if (row.load_N <= 0) throw InputError({path, row.line, "load_N"}, "load must be > 0 N");
+    // Upper bound as the tyre config's loads_N: beyond it the fit overflows.
+    if (!(row.load_N > 0 && row.load_N <= 1e7))
+      throw InputError({path, row.line, "load_N"}, "load must be in (0, 1e7] N");
+    // Not used by the fit, but a recorded pressure must still be an inflation pressure.
+    if (t.has("pressure_kPa") &&
+        !(t.number(r, "pressure_kPa") > 0 && t.number(r, "pressure_kPa") <= 2000))
+      throw InputError({path, row.line, "pressure_kPa"},
+                       "gauge inflation pressure must be in (0, 2000] kPa");
     if (row.deflection_m <= 0)
       throw InputError({path, row.line, "deflection_mm"}, "deflection must be > 0 mm");
     loop.rows.push_back(row);

@@ -83,6 +83,9 @@ TEST_F(CsvTest, ReadsNumbersTextAndLineNumbers) {
 TEST_F(CsvTest, ParseFiniteDouble) {
   EXPECT_EQ(parse_finite_double("1e-3"), 1e-3);
   EXPECT_EQ(parse_finite_double(" -4.5 "), -4.5);
+  // Underflow is a finite number (rounded to a subnormal or zero), not a refusal.
+  EXPECT_EQ(parse_finite_double("1e-400"), 0.0);
+  EXPECT_GT(*parse_finite_double("1.2e-316"), 0.0);
   for (const char* bad :
        {"", "nan", "NaN", "inf", "-inf", "Infinity", "1e999", "1.0x", "abc", "1,2", "0x1p3q"}) {
     EXPECT_FALSE(parse_finite_double(bad).has_value()) << bad;
@@ -173,6 +176,136 @@ TEST_F(CsvTest, RowLimit) {
   s.max_rows = 2;
   const auto p = write("long.csv", "x,y\n1,2\n3,4\n5,6\n");
   EXPECT_EQ(error_of(p, s).where().line, 4);
+}
+
+// RFC 4180 quoting: commas and doubled quotes inside quotes, quoted numbers, quoted header names;
+// quoted text is kept verbatim, a '"' inside an unquoted field is an ordinary character.
+TEST_F(CsvTest, QuotedFields) {
+  const auto p = write("quoted.csv",
+                       "\"x\",y,label\n"
+                       "\"1.5\", \"2\" ,\"a, b\"\n"
+                       "3,4,\"say \"\"hi\"\", then go\"\n"
+                       "5,6,  \" padded \"  \n"
+                       "7,8,5\" rim\n");
+  const CsvTable t = read_csv(p, schema());
+  ASSERT_EQ(t.rows(), 4u);
+  EXPECT_EQ(t.columns(), (std::vector<std::string>{"x", "y", "label"}));
+  EXPECT_DOUBLE_EQ(t.number(0, "x"), 1.5);
+  EXPECT_DOUBLE_EQ(t.number(0, "y"), 2.0);
+  EXPECT_EQ(t.text(0, "label"), "a, b");
+  EXPECT_EQ(t.text(1, "label"), "say \"hi\", then go");
+  EXPECT_EQ(t.text(2, "label"), " padded ");
+  EXPECT_EQ(t.text(3, "label"), "5\" rim");
+  EXPECT_EQ(t.line(3), 5);
+}
+
+// Broken quoting is named by file, line and column.
+TEST_F(CsvTest, BrokenQuotesNameLineAndColumn) {
+  struct Bad {
+    std::string content, column, words;
+  };
+  for (const Bad& b : std::vector<Bad>{
+           {"x,y,label\n1,2,ok\n3,4,\"no end\n", "label", "unterminated quoted field"},
+           {"x,y,label\n1,2,ok\n3,4,\"two\nlines\"\n", "label", "must end on its line"},
+           {"x,y,label\n1,2,ok\n3,\"4\"5,z\n", "y", "after the closing quote"},
+           {"x,y,label\n1,2,ok\n3,\"\",z\n", "y", "'' is not a finite number"},
+           {"x,y,label\n1,2,ok\n3,4,\"\"\n", "label", "empty cell"}}) {
+    const auto p = write("q.csv", b.content);
+    const auto e = error_of(p);
+    EXPECT_EQ(e.where().line, 3) << b.content;
+    EXPECT_EQ(e.where().key, b.column) << b.content;
+    EXPECT_NE(std::string(e.what()).find(p + ":3: " + b.column + ": "), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find(b.words), std::string::npos) << e.what();
+  }
+  const auto h = write("qh.csv", "x,\"y\n1,2\n");
+  EXPECT_EQ(error_of(h).where().line, 1);
+  EXPECT_EQ(error_of(h).where().key, "column 2");
+}
+
+// An empty file, one of comments only and a header without rows each name a line.
+TEST_F(CsvTest, EmptyAndHeaderOnlyNameALine) {
+  struct Whole {
+    std::string content;
+    int line;
+    std::string words;
+  };
+  for (const Whole& w :
+       std::vector<Whole>{{"", 1, "the file is empty: no header line"},
+                          {"# c\n\n\n", 3, "empty: only blank and comment"},
+                          {"\n# c\nx,y\n# none\n", 3, "header only, no data rows"}}) {
+    const auto p = write("w.csv", w.content);
+    const auto e = error_of(p);
+    EXPECT_EQ(e.where().line, w.line) << w.content;
+    EXPECT_EQ(std::string(e.what()).rfind(p + ":" + std::to_string(w.line) + ": ", 0), 0u)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find(w.words), std::string::npos) << e.what();
+  }
+}
+
+// A wrong field count names the column without a value, or the first field without a column.
+TEST_F(CsvTest, FieldCountNamesTheColumn) {
+  const auto shorter = error_of(write("s.csv", "x,y,label\n1,2,a\n3,4\n"));
+  EXPECT_EQ(shorter.where().key, "label");
+  EXPECT_NE(std::string(shorter.what()).find("has 2 fields, header has 3"), std::string::npos);
+  const auto longer = error_of(write("l.csv", "x,y\n1,2\n3,4,5\n"));
+  EXPECT_EQ(longer.where().line, 3);
+  EXPECT_EQ(longer.where().key, "column 3");
+}
+
+// Size limits refuse clearly: bytes before reading (line 0, whole file), cells at their line.
+TEST_F(CsvTest, ByteAndCellLimits) {
+  auto s = schema();
+  s.max_bytes = 10;
+  const auto big = write("big.csv", "x,y\n1,2\n3,4\n5,6\n");
+  const auto e1 = error_of(big, s);
+  EXPECT_EQ(e1.where().line, 0);
+  EXPECT_NE(std::string(e1.what()).find("refusing CSV files over"), std::string::npos);
+  s = schema();
+  s.max_cells = 5;  // two columns: the third row would make six cells
+  const auto e2 = error_of(big, s);
+  EXPECT_EQ(e2.where().line, 4);
+  EXPECT_NE(std::string(e2.what()).find("more than 5 cells"), std::string::npos) << e2.what();
+}
+
+// Old Mac line ends (CR only) and UTF-16 files get a message saying what they are.
+TEST_F(CsvTest, CarriageReturnsAndUtf16) {
+  const auto cr = error_of(write("cr.csv", "x,y\r1,2\r3,4\r"));
+  EXPECT_EQ(cr.where().line, 1);
+  EXPECT_EQ(cr.where().key, "column 2");
+  EXPECT_NE(std::string(cr.what()).find("carriage return"), std::string::npos) << cr.what();
+  std::string u16 = "\xFE\xFF";
+  for (char c : std::string("x,y\n1,2\n")) u16 += std::string{'\0', c};
+  const auto e = error_of(write("u16.csv", u16));
+  EXPECT_EQ(e.where().line, 1);
+  EXPECT_NE(std::string(e.what()).find("UTF-16"), std::string::npos) << e.what();
+}
+
+// Cells and column names quoted in messages never carry raw binary or non-UTF-8 bytes.
+TEST_F(CsvTest, MessagesArePrintable) {
+  EXPECT_EQ(printable("a\xE9z"), "a\\xE9z");
+  EXPECT_EQ(printable(std::string("n\0l", 3)), "n\\x00l");
+  EXPECT_EQ(printable("30\xC2\xB0 \xCE\xBC"), "30\xC2\xB0 \xCE\xBC");  // valid UTF-8 stays
+  EXPECT_EQ(printable("\xED\xA0\x80"), "\\xED\\xA0\\x80");             // a UTF-16 surrogate
+  EXPECT_EQ(printable(std::string(100, 'a'), 8), "aaaaaaaa...");
+  const auto e = error_of(write("u.csv", "x,y\xFF\n1,2\n"));
+  EXPECT_EQ(e.where().key, "y\\xFF");
+  const auto e2 = error_of(write("v.csv", "x,y\n1," + std::string(5000, '7') + "x\n"));
+  EXPECT_LT(std::string(e2.what()).size(), 300u) << "a huge cell is not echoed whole";
+}
+
+// read_csv_header parses the header as read_csv does and never blocks or throws.
+TEST_F(CsvTest, ReadCsvHeader) {
+  EXPECT_EQ(
+      read_csv_header(write("h.csv", "\xEF\xBB\xBF# c\n\n \"load_N\", a.b ,\"c,d\"\n1,2,3\n")),
+      (std::vector<std::string>{"load_N", "a.b", "c,d"}));
+  EXPECT_TRUE(read_csv_header(write("e.csv", "")).empty());
+  EXPECT_TRUE(read_csv_header(write("bad.csv", "x,\"y\n")).empty());
+  EXPECT_TRUE(read_csv_header((dir_ / "absent.csv").string()).empty());
+  EXPECT_TRUE(read_csv_header(dir_.string()).empty());
+  const std::string fifo = (dir_ / "pipe.csv").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_TRUE(read_csv_header(fifo).empty());  // no writer: a read would block for ever
 }
 
 }  // namespace

@@ -1,7 +1,16 @@
 #pragma once
 // Strict reader for the small numeric CSV files researchers bring (hammer data, footprint
 // measurements, test records). Every problem is an InputError naming file, line and column.
+//
+// Quoting (RFC 4180, one record per line): a field whose first non-blank character is '"' is
+// quoted; inside it a comma is literal and "" stands for one '"' (what `modaltyre sweep` writes
+// for messages with commas or quotes). Quoted text is kept as it is, unquoted fields are trimmed
+// of blanks; a quoted number ("1.5") is read as a number. A line break inside quotes is refused
+// (the quote is unterminated at the end of its line: sweep messages never span lines), as is
+// anything but blanks after a closing quote; a '"' inside an unquoted field is an ordinary
+// character.
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -21,6 +30,10 @@ struct CsvSchema {
   /// columns); any other unknown name is still an error.
   std::function<bool(const std::string&)> accept_text_column;
   std::size_t max_rows = 1000000;  ///< refuse larger files with a clear message
+  /// Refuse more cells (rows x columns) than this: a stored cell costs about 40 bytes.
+  std::size_t max_cells = 8000000;
+  /// Refuse files larger than this before reading them (a measurement table is far smaller).
+  std::uintmax_t max_bytes = std::uintmax_t{64} << 20;
 };
 
 class CsvTable {
@@ -50,8 +63,18 @@ class CsvTable {
 };
 
 /// Reads and validates a CSV file: header with known columns, same field count on each line,
-/// numeric cells finite. Blank lines and lines starting with '#' are skipped.
+/// numeric cells finite. Blank lines and lines starting with '#' are skipped. An empty file (or
+/// one of comments only) and a header without data rows are refused at a line; whole-file
+/// problems (missing, a directory, a pipe, too large) name the file only (line 0).
 CsvTable read_csv(const std::string& path, const CsvSchema& schema);
+
+/// The header's column names as read_csv() parses them; empty when the file is not a readable
+/// regular file or its header cannot be parsed (read_csv() then says why). Never throws.
+std::vector<std::string> read_csv_header(const std::string& path);
+
+/// Text from a file made safe to quote in a message: control bytes and bytes that are not
+/// UTF-8 become \xNN, and text longer than max_bytes is cut with "...".
+std::string printable(const std::string& text, std::size_t max_bytes = 40);
 
 /// Parses a finite double; nullopt for anything else (text, NaN, inf, trailing garbage).
 std::optional<double> parse_finite_double(const std::string& text);

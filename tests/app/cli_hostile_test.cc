@@ -1,0 +1,109 @@
+// Issue 9 at the command line: hostile input files make `modaltyre` exit 2 with one message on
+// stderr naming the file (and line and column where there is one), print nothing that looks like
+// a result on stdout, and never hang. A sweep's quoted CSV is valid measured data.
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "../support/hammer_lines.h"
+#include "cli_runner.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using modaltyre_test::CliRun;
+
+const std::string kSrc = MODALTYRE_SOURCE_DIR;
+const std::string kConfig = kSrc + "/configs/sf350.yaml";
+
+class CliHostile : public modaltyre_test::CliFixture {
+ protected:
+  std::string write(const std::string& name, const std::string& content) {
+    const fs::path p = dir_ / name;
+    std::ofstream(p, std::ios::binary) << content;
+    return p.string();
+  }
+
+  /// Runs the CLI with a 60 s limit (a hang shows as exit code 124, not a stuck test).
+  CliRun run_limited(const std::vector<std::string>& args) {
+    std::vector<std::string> all = {"60", MODALTYRE_CLI};
+    all.insert(all.end(), args.begin(), args.end());
+    std::string cmd = "timeout";
+    for (const auto& a : all) cmd += " " + modaltyre_test::quote(a);
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    cmd += " >" + modaltyre_test::quote(out.string()) + " 2>" + modaltyre_test::quote(err.string());
+    const int status = std::system(cmd.c_str());
+    CliRun r;
+    if (status != -1 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+    r.out = modaltyre_test::slurp(out);
+    r.err = modaltyre_test::slurp(err);
+    return r;
+  }
+
+  /// Exit 2, a single "error: " line on stderr holding every needle, nothing on stdout.
+  void expect_input_error(const CliRun& r, const std::vector<std::string>& needles) {
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.out, "") << "stdout of a refused input";
+    EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one message: " << r.err;
+    for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << n << "\n" << r.err;
+  }
+};
+
+TEST_F(CliHostile, IdentifyLoadDeflectionOnADirectory) {
+  const std::string d = (dir_ / "tests.csv").string();
+  fs::create_directories(d);
+  expect_input_error(run_limited({"identify", "load-deflection", d, "--r0-mm", "295"}),
+                     {d + ": is a directory"});
+}
+
+TEST_F(CliHostile, ValidateNonUtf8File) {
+  // Latin-1 "12,5" with a degree sign in a number cell (data row 2, file line 3).
+  const std::string p = write("non_utf8.csv",
+                              "load_N,sinking_mm,length_mm\n"
+                              "2131,8,86\n"
+                              "3261,12\xB0,112\n");
+  expect_input_error(run_limited({"validate", kConfig, p}),
+                     {p + ":3: sinking_mm: ", "'12\\xB0' is not a finite number", "not UTF-8"});
+}
+
+TEST_F(CliHostile, ValidateNamedPipeDoesNotHang) {
+  const std::string fifo = (dir_ / "measured.csv").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expect_input_error(run_limited({"validate", kConfig, fifo}), {fifo, "not a regular file"});
+}
+
+TEST_F(CliHostile, FitModesHeaderOnly) {
+  const std::string p = write("hammer.csv", modaltyre_test::hammer_lines()[0] + "\n");
+  expect_input_error(run_limited({"fit-modes", p}), {p + ":1: header only, no data rows"});
+}
+
+TEST_F(CliHostile, FitModesUnterminatedQuote) {
+  auto l = modaltyre_test::hammer_lines();
+  modaltyre_test::set_field(l, 4, 5, "\"0.6");
+  std::string s;
+  for (const auto& x : l) s += x + "\n";
+  const std::string p = write("hammer.csv", s);
+  expect_input_error(run_limited({"fit-modes", p}), {p + ":4: radial: unterminated quoted field"});
+}
+
+// The measured data written as a sweep writes them (status and a quoted message with a comma)
+// are validated like the plain table.
+TEST_F(CliHostile, ValidateReadsASweepStyleQuotedCsv) {
+  std::ifstream in(kSrc + "/configs/data/sf350_footprint_table3.csv");
+  std::string s, line;
+  for (bool header = true; std::getline(in, line); header = false) {
+    s += line + (header ? ",status,message\n" : ",ok,\"converged, \"\"measured\"\"\"\n");
+  }
+  const std::string p = write("sweep_style.csv", s);
+  const CliRun r = run_limited({"validate", kConfig, p});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("8321"), std::string::npos) << r.out;
+}
+
+}  // namespace
