@@ -1,6 +1,8 @@
 #include "modaltyre/core/config_tree.h"
 
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -82,6 +84,18 @@ ConfigTree ConfigTree::load(const std::string& path, const std::vector<std::stri
   if (!std::filesystem::exists(path, ec)) throw InputError({path, 0, ""}, "file not found");
   if (std::filesystem::is_directory(path, ec)) {
     throw InputError({path, 0, ""}, "is a directory, not a YAML config");
+  }
+  // A named pipe or device would block the read (or never end); a config is a few kB, so a
+  // file of megabytes is the wrong file, not a config to parse into memory.
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw InputError({path, 0, ""}, "is not a regular file (a pipe or device?)");
+  }
+  constexpr std::uintmax_t kMaxConfigBytes = 16u << 20;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxConfigBytes) {
+    throw InputError({path, 0, ""}, "is " + std::to_string(size >> 20) +
+                                        " MB; refusing YAML configs over 16 MB (is it the right "
+                                        "file?)");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, ""}, "cannot open file for reading");

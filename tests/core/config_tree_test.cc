@@ -3,6 +3,7 @@
 #include "modaltyre/core/config_tree.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -191,6 +192,28 @@ TEST(ConfigTree, NonScalarKeysAreInputErrors) {
   const InputLocation where = u.root().section("modal").where("hammer_csv");
   EXPECT_EQ(where.file, "m.yaml");
   EXPECT_EQ(where.key, "modal.hammer_csv");
+}
+
+
+// A pipe would block the read forever and a huge file would be parsed into memory: both are
+// refused before anything is read, naming the file.
+TEST(ConfigTree, PipeAndHugeFileAreRefusedBeforeReading) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("modaltyre_config_hostile_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string fifo = (dir / "config.yaml").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const InputError e = error_of([&] { ConfigTree::load(fifo); });
+  EXPECT_EQ(e.where().file, fifo);
+  EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+
+  const std::string big = (dir / "big.yaml").string();
+  { std::ofstream(big) << "tread:\n"; }
+  std::filesystem::resize_file(big, 64u << 20);  // sparse: no disk used
+  const InputError h = error_of([&] { ConfigTree::load(big); });
+  EXPECT_EQ(h.where().file, big);
+  EXPECT_NE(std::string(h.what()).find("over 16 MB"), std::string::npos) << h.what();
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
