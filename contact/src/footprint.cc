@@ -9,13 +9,66 @@
 
 namespace modaltyre::contact {
 
-PatchOperator static_operator(const TyreModel& model, double ratio) {
+namespace {
+
+PatchOperator static_operator_without_compliance(const TyreModel& model, double ratio) {
   PatchOperator op;
   op.kernels = &model.kernels;
   op.tread_radial_lag = {1.0 / model.k_radial_N_m};
   op.tread_tangential_compliance = 1.0 / model.k_tangential_N_m;
   op.width_m = model.config.tread.width_m;
   op.horizontal_ratio = ratio;
+  return op;
+}
+
+/// Radial (returned) and tangential (`ut`) displacement of every candidate unit under the unit
+/// forces fr, ft: carcass u = H f (seed 001 eq. 1) over the loaded units, plus the tread's own
+/// (eq. 6). The carcass part is a 2 x 2 lag convolution of the loaded span: by FFT when large.
+std::vector<double> radial_displacements(const PatchOperator& op, const std::vector<char>& active,
+                                         const std::vector<double>& fr,
+                                         const std::vector<double>& ft, std::vector<double>& ut) {
+  const int m = static_cast<int>(fr.size());
+  std::vector<double> ur(m);
+  const auto& K = *op.kernels;
+  const int first = static_cast<int>(std::find(active.begin(), active.end(), 1) - active.begin());
+  const int last =
+      m - 1 - static_cast<int>(std::find(active.rbegin(), active.rend(), 1) - active.rbegin());
+  if (first <= last) {
+    const double cs = op.carcass_scale;
+    const int span = last - first + 1;
+    std::vector<double> vr(span), vt(span);
+    for (int j = first; j <= last; ++j) {
+      // Only loaded units push (the converged forces of free units are 0 anyway).
+      vr[j - first] = active[j] ? cs * fr[j] : 0.0;
+      vt[j - first] = active[j] ? cs * ft[j] : 0.0;
+    }
+    const solvers::LagConvolution2x2 H({K.r_from_r, K.r_from_t, K.t_from_r, K.t_from_t}, K.lags);
+    H.apply(0, m, first, span, vr.data(), vt.data(), ur.data(), ut.data());
+  } else {
+    std::fill(ut.begin(), ut.end(), 0.0);
+  }
+  const int tread_lags = std::min<int>(static_cast<int>(op.tread_radial_lag.size()), m);
+  for (int i = 0; i < m; ++i) {
+    ut[i] += ft[i] * op.tread_tangential_compliance;
+    for (int l = 1 - tread_lags; l < tread_lags; ++l) {
+      const int j = i + l;
+      if (j >= 0 && j < m) ur[i] += op.tread_radial_lag[std::abs(l)] * fr[j];
+    }
+  }
+  return ur;
+}
+
+}  // namespace
+
+PatchOperator static_matrix_free_operator(const TyreModel& model) {
+  PatchOperator op = static_operator_without_compliance(model, 0.0);
+  op.compliance_operator =
+      std::make_shared<solvers::WeightedToeplitzCompliance>(vertical_compliance_operator(model));
+  return op;
+}
+
+PatchOperator static_operator(const TyreModel& model, double ratio) {
+  PatchOperator op = static_operator_without_compliance(model, ratio);
   if (ratio == 0.0) {
     op.compliance = model.vertical_compliance;
   } else {
@@ -28,8 +81,12 @@ PatchOperator static_operator(const TyreModel& model, double ratio) {
 FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
                                 const std::vector<char>* warm_active) {
   MODALTYRE_CHECK(load.load_N > 0, "load must be positive");
-  return solve_patch(model, static_operator(model, load.horizontal_force_N / load.load_N), load,
-                     warm_active);
+  // Without a horizontal force the problem is symmetric and solved matrix-free; with one, C
+  // gains the non-symmetric horizontal coupling and is assembled (LU on the contact set).
+  const double ratio = load.horizontal_force_N / load.load_N;
+  return solve_patch(
+      model, ratio == 0.0 ? static_matrix_free_operator(model) : static_operator(model, ratio),
+      load, warm_active);
 }
 
 FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const LoadCase& load,
@@ -41,6 +98,7 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
   const double ratio = op.horizontal_ratio;
   solvers::ContactProblem p;
   p.compliance = std::move(op.compliance);
+  p.compliance_operator = op.compliance_operator.get();
   p.symmetric = op.symmetric;
   p.initial_gap = model.sag;
   p.load_N = load.load_N;
@@ -71,7 +129,7 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
 
   // Radial and tangential displacement of every candidate unit (carcass + tread), eq. (1), (6).
   const Eigen::VectorXd& f = s.force;
-  std::vector<double> fr(m), ft(m);
+  std::vector<double> fr(m), ft(m), ut(m);
   for (int j = 0; j < m; ++j) {
     const double c = std::cos(model.theta[j]), sn = std::sin(model.theta[j]);
     const double fx = ratio * f(j);
@@ -82,31 +140,7 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
   const double width = op.width_m;
   r.contour_x_m.resize(m);
   r.contour_height_m.resize(m);
-  // Displacements u = H f (eq. 1) plus the tread's own (eq. 6): loop over loaded units outside so
-  // that the inner loop runs over contiguous kernel lags.
-  std::vector<double> ur(m, 0.0), ut(m);
-  const int tread_lags = std::min<int>(static_cast<int>(op.tread_radial_lag.size()), m);
-  for (int i = 0; i < m; ++i) {
-    ut[i] = ft[i] * op.tread_tangential_compliance;
-    for (int l = 1 - tread_lags; l < tread_lags; ++l) {
-      const int j = i + l;
-      if (j >= 0 && j < m) ur[i] += op.tread_radial_lag[std::abs(l)] * fr[j];
-    }
-  }
-  const auto& K = *op.kernels;
-  const double cs = op.carcass_scale;
-  for (int j = 0; j < m; ++j) {
-    if (!s.active[j]) continue;
-    const double* rr = K.r_from_r.data() + (K.lags - 1 - j);
-    const double* rt = K.r_from_t.data() + (K.lags - 1 - j);
-    const double* tr = K.t_from_r.data() + (K.lags - 1 - j);
-    const double* tt = K.t_from_t.data() + (K.lags - 1 - j);
-    const double frj = cs * fr[j], ftj = cs * ft[j];
-    for (int i = 0; i < m; ++i) {
-      ur[i] += rr[i] * frj + rt[i] * ftj;
-      ut[i] += tr[i] * frj + tt[i] * ftj;
-    }
-  }
+  const std::vector<double> ur = radial_displacements(op, s.active, fr, ft, ut);
   for (int i = 0; i < m; ++i) {
     const double th = model.theta[i];
     r.contour_x_m[i] = (R0 - ur[i]) * std::sin(th) + ut[i] * std::cos(th);
@@ -130,7 +164,9 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
   // displacement) inside and -g (gap) outside is interpolated linearly to its zero. For a rigid
   // ring on a Winkler layer phi = delta - sag exactly, so the chord is recovered to O(ds^2).
   auto edge = [&](int inside, int outside) {
-    const double phi_in = f(inside) * p.compliance(inside, inside);
+    const double phi_in =
+        f(inside) * (p.compliance_operator ? p.compliance_operator->entry(inside, inside)
+                                           : p.compliance(inside, inside));
     const double phi_out = -s.gap(outside);
     const double t = phi_in / (phi_in - phi_out);
     return r.contour_x_m[inside] + t * (r.contour_x_m[outside] - r.contour_x_m[inside]);

@@ -1,11 +1,71 @@
 #include "modaltyre/contact/tyre_model.h"
 
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
 
 namespace modaltyre::contact {
+
+namespace {
+
+/// The kernels of C's symmetric part: K_ab(l) -> (K_ab(l) + K_ba(-l)) / 2. Reciprocity (H_tr(l)
+/// = H_rt(-l), docs/footprint.md section 1) makes this a change at rounding level only; it makes
+/// C_ij = sum_ab w_a(i) K_ab(i - j) w_b(j) symmetric.
+std::array<std::vector<double>, 4> symmetrised_kernels(const modal::LagKernels& K) {
+  const std::vector<double>* k[4] = {&K.r_from_r, &K.r_from_t, &K.t_from_r, &K.t_from_t};
+  std::array<std::vector<double>, 4> s;
+  const int n = 2 * K.lags - 1;
+  for (int a = 0; a < 2; ++a) {
+    for (int b = 0; b < 2; ++b) {
+      const auto& ab = *k[2 * a + b];
+      const auto& ba = *k[2 * b + a];
+      auto& out = s[2 * a + b];
+      out.resize(static_cast<std::size_t>(n));
+      for (int p = 0; p < n; ++p) out[p] = 0.5 * (ab[p] + ba[n - 1 - p]);
+    }
+  }
+  return s;
+}
+
+/// Tread in series (seed 001 eq. 6), only under the unit's own force.
+std::vector<double> tread_diagonal(const TyreModel& m) {
+  std::vector<double> d(m.theta.size());
+  for (std::size_t j = 0; j < d.size(); ++j) {
+    const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
+    d[j] = cj * cj / m.k_radial_N_m + sj * sj / m.k_tangential_N_m;
+  }
+  return d;
+}
+
+/// The assembled vertical compliance (exactly symmetric): the lower triangle from the
+/// symmetrised kernels, mirrored. One pass over the m x m array, no temporaries.
+Eigen::MatrixXd assembled_vertical_compliance(const TyreModel& m) {
+  const int cand = m.candidates();
+  const auto K = symmetrised_kernels(m.kernels);
+  const std::vector<double> d = tread_diagonal(m);
+  std::vector<double> cosv(cand), sinv(cand);
+  for (int i = 0; i < cand; ++i) cosv[i] = std::cos(m.theta[i]), sinv[i] = std::sin(m.theta[i]);
+  Eigen::MatrixXd C(cand, cand);
+  const int mid = m.kernels.lags - 1;
+  for (int j = 0; j < cand; ++j) {
+    const double cj = cosv[j], sj = sinv[j];
+    for (int i = j; i < cand; ++i) {
+      const int l = mid + i - j;
+      // Unit vertical force at j: f_r = cos theta_j, f_t = sin theta_j (seed 001 eq. 12).
+      const double ur = K[0][l] * cj + K[1][l] * sj;
+      const double ut = K[2][l] * cj + K[3][l] * sj;
+      C(i, j) = ur * cosv[i] + ut * sinv[i];
+    }
+    C(j, j) += d[j];
+  }
+  C.triangularView<Eigen::StrictlyUpper>() = C.transpose();
+  return C;
+}
+
+}  // namespace
 
 TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentification& modes) {
   TyreModel m;
@@ -50,15 +110,24 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
     m.theta[i] = (i - m.half_window) * m.dtheta_rad;
     m.sag(i) = R0 * (1 - std::cos(m.theta[i]));
   }
-  m.vertical_compliance = carcass_vertical_compliance(m.kernels, m.theta);
-  for (int j = 0; j < cand; ++j) {
-    // Tread in series (seed 001 eq. 6), only under the unit's own force.
-    const double cj = std::cos(m.theta[j]), sj = std::sin(m.theta[j]);
-    m.vertical_compliance(j, j) += cj * cj / m.k_radial_N_m + sj * sj / m.k_tangential_N_m;
-  }
-  // Symmetrise away rounding so that Cholesky sees an exactly symmetric matrix.
-  m.vertical_compliance = 0.5 * (m.vertical_compliance + m.vertical_compliance.transpose()).eval();
+  // Exactly symmetric so that Cholesky sees a symmetric matrix. Solves of the model's own load
+  // cases use vertical_compliance_operator() instead; the matrix is for other users (transient,
+  // export) and costs one O(m^2) pass here.
+  m.vertical_compliance = assembled_vertical_compliance(m);
   return m;
+}
+
+solvers::WeightedToeplitzCompliance vertical_compliance_operator(const TyreModel& m) {
+  std::vector<double> cosv(m.theta.size()), sinv(m.theta.size());
+  for (std::size_t i = 0; i < m.theta.size(); ++i) {
+    cosv[i] = std::cos(m.theta[i]);
+    sinv[i] = std::sin(m.theta[i]);
+  }
+  // Projections of seed 001 eq. (12): a vertical force has radial part f cos theta and
+  // tangential part f sin theta; the upward displacement is u_r cos theta + u_t sin theta.
+  return solvers::WeightedToeplitzCompliance(
+      solvers::LagConvolution2x2(symmetrised_kernels(m.kernels), m.kernels.lags), std::move(cosv),
+      std::move(sinv), tread_diagonal(m));
 }
 
 Eigen::MatrixXd carcass_vertical_compliance(const modal::LagKernels& K,

@@ -32,22 +32,27 @@ struct RestrictedSolve {
 /// as the initial guess of the iterative solver when the set changes by a few points.
 struct SolveWorkspace {
   Eigen::VectorXd a, b;
-  Eigen::MatrixXd A;
+  Eigen::MatrixXd A, P_span, Y_span;
 };
 
 // Above this many contact points the symmetric system is solved by conjugate gradients:
 // C = tread diagonal + smooth carcass kernel is well conditioned and each iteration is one
-// O(k^2) product, against O(k^3) for a factorisation.
+// product with C_SS (O(k^2) assembled, O(k log k) for a Toeplitz operator), against O(k^3) for
+// a factorisation.
 constexpr int kIterativeThreshold = 96;
 // CG relative residual: far below what the load multiplier and forces need (1e-9).
 constexpr double kCgTolerance = 1e-13;
 
 /// Conjugate gradients for several right-hand sides in lockstep (one product A X per iteration
-/// streams A once for all columns), Jacobi-preconditioned. Returns false without convergence.
-bool lockstep_cg(const Eigen::Ref<const Eigen::MatrixXd>& A, const Eigen::MatrixXd& B,
+/// serves all columns), Jacobi-preconditioned. `product(P, AP)` sets AP = A P. Returns false
+/// without convergence.
+template <class Product>
+bool lockstep_cg(const Product& product, const Eigen::VectorXd& diagonal, const Eigen::MatrixXd& B,
                  Eigen::MatrixXd& X, double tol, int max_iterations) {
-  const Eigen::VectorXd inv_diag = A.diagonal().cwiseInverse();
-  Eigen::MatrixXd R = B - A * X;
+  const Eigen::VectorXd inv_diag = diagonal.cwiseInverse();
+  Eigen::MatrixXd AP(B.rows(), B.cols());
+  product(X, AP);
+  Eigen::MatrixXd R = B - AP;
   Eigen::MatrixXd Z = inv_diag.asDiagonal() * R;
   Eigen::MatrixXd P = Z;
   const Eigen::Index nrhs = B.cols();
@@ -60,7 +65,7 @@ bool lockstep_cg(const Eigen::Ref<const Eigen::MatrixXd>& A, const Eigen::Matrix
     bool done = true;
     for (Eigen::Index c = 0; c < nrhs; ++c) done = done && R.col(c).norm() <= tol * bnorm(c);
     if (done) return true;
-    const Eigen::MatrixXd AP = A * P;
+    product(P, AP);
     for (Eigen::Index c = 0; c < nrhs; ++c) {
       const double pAp = P.col(c).dot(AP.col(c));
       if (!(pAp > 0)) continue;  // this column has converged exactly (or A is not SPD)
@@ -80,37 +85,53 @@ bool contiguous(const std::vector<int>& S) {
   return !S.empty() && S.back() - S.front() + 1 == static_cast<int>(S.size());
 }
 
-RestrictedSolve solve_on_set(const ContactProblem& p, const std::vector<int>& S,
-                             SolveWorkspace& ws) {
+/// Y = C_SS X. A contiguous set (the usual patch) is one block product; a scattered one is
+/// spread over the span of its points with zeros elsewhere and gathered back.
+void product_on_set(const ComplianceOperator& C, const std::vector<int>& S,
+                    const Eigen::MatrixXd& X, Eigen::MatrixXd& Y, SolveWorkspace& ws) {
+  const int k = static_cast<int>(S.size());
+  if (contiguous(S)) {
+    C.apply(S[0], k, S[0], k, X, Y);
+    return;
+  }
+  const int span = S.back() - S.front() + 1;
+  ws.P_span.setZero(span, X.cols());
+  ws.Y_span.resize(span, X.cols());
+  for (int a = 0; a < k; ++a) ws.P_span.row(S[a] - S[0]) = X.row(a);
+  C.apply(S[0], span, S[0], span, ws.P_span, ws.Y_span);
+  for (int a = 0; a < k; ++a) Y.row(a) = ws.Y_span.row(S[a] - S[0]);
+}
+
+RestrictedSolve solve_on_set(const ContactProblem& p, const ComplianceOperator& C,
+                             const std::vector<int>& S, SolveWorkspace& ws) {
   const int k = static_cast<int>(S.size());
   Eigen::MatrixXd rhs(k, 2);
   for (int a = 0; a < k; ++a) {
     rhs(a, 0) = 1.0;
     rhs(a, 1) = p.initial_gap(S[a]);
   }
-  // A contiguous set (the usual patch) is used in place; a scattered one is gathered.
-  if (!contiguous(S)) {
-    ws.A.resize(k, k);
-    for (int b = 0; b < k; ++b)
-      for (int a = 0; a < k; ++a) ws.A(a, b) = p.compliance(S[a], S[b]);
-  }
-  const Eigen::Ref<const Eigen::MatrixXd> A =
-      contiguous(S) ? Eigen::Ref<const Eigen::MatrixXd>(p.compliance.block(S[0], S[0], k, k))
-                    : Eigen::Ref<const Eigen::MatrixXd>(ws.A);
   RestrictedSolve r;
   Eigen::MatrixXd x(k, 2);
   bool solved = false;
   if (p.symmetric && k > kIterativeThreshold) {
     for (int a = 0; a < k; ++a) x(a, 0) = ws.a(S[a]), x(a, 1) = ws.b(S[a]);
-    solved = lockstep_cg(A, rhs, x, kCgTolerance, 4 * k);
+    Eigen::VectorXd diagonal(k);
+    for (int a = 0; a < k; ++a) diagonal(a) = C.entry(S[a], S[a]);
+    const auto product = [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) {
+      product_on_set(C, S, X, Y, ws);
+    };
+    solved = lockstep_cg(product, diagonal, rhs, x, kCgTolerance, 4 * k);
   }
-  if (!solved && p.symmetric) {
-    Eigen::LLT<Eigen::MatrixXd> llt(A);
-    if (llt.info() != Eigen::Success) return r;
-    x = llt.solve(rhs);
-  } else if (!solved) {
-    Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
-    x = lu.solve(rhs);
+  if (!solved) {
+    C.gather(S, ws.A);
+    if (p.symmetric) {
+      Eigen::LLT<Eigen::MatrixXd> llt(ws.A);
+      if (llt.info() != Eigen::Success) return r;
+      x = llt.solve(rhs);
+    } else {
+      Eigen::PartialPivLU<Eigen::MatrixXd> lu(ws.A);
+      x = lu.solve(rhs);
+    }
   }
   for (int a = 0; a < k; ++a) ws.a(S[a]) = x(a, 0), ws.b(S[a]) = x(a, 1);
   const double one_a = x.col(0).sum();
@@ -121,13 +142,31 @@ RestrictedSolve solve_on_set(const ContactProblem& p, const std::vector<int>& S,
   return r;
 }
 
+/// g = s + C f - delta over all points; only the columns of the loaded points contribute.
+Eigen::VectorXd gaps(const ContactProblem& p, const ComplianceOperator& C,
+                     const std::vector<int>& S, const RestrictedSolve& rs) {
+  const int m = C.size();
+  const int span = S.back() - S.front() + 1;
+  Eigen::MatrixXd f_span = Eigen::MatrixXd::Zero(span, 1);
+  for (std::size_t a = 0; a < S.size(); ++a) f_span(S[a] - S[0], 0) = rs.f_S(a);
+  Eigen::MatrixXd Cf(m, 1);
+  C.apply(0, m, S[0], span, f_span, Cf);
+  return p.initial_gap.array() - rs.delta + Cf.col(0).array();
+}
+
 }  // namespace
 
 ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactOptions& opt,
                                          const std::vector<char>* warm_active) {
   const int m = static_cast<int>(p.initial_gap.size());
-  MODALTYRE_CHECK(m > 0 && p.compliance.rows() == m && p.compliance.cols() == m,
-                  "contact problem sizes disagree");
+  const DenseCompliance dense(p.compliance);
+  const ComplianceOperator& C = p.compliance_operator
+                                    ? *p.compliance_operator
+                                    : static_cast<const ComplianceOperator&>(dense);
+  MODALTYRE_CHECK(
+      m > 0 && C.size() == m &&
+          (p.compliance_operator || (p.compliance.rows() == m && p.compliance.cols() == m)),
+      "contact problem sizes disagree");
   MODALTYRE_CHECK(p.load_N > 0, "contact load must be positive");
   ContactSolution sol;
   std::vector<char> in(m, 0);
@@ -142,7 +181,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
     double sum_k = 0, sum_ks = 0;
     for (int n = 0; n < m; ++n) {
       const int i = order[n];
-      const double k = 1.0 / p.compliance(i, i);
+      const double k = 1.0 / C.entry(i, i);
       sum_k += k;
       sum_ks += k * p.initial_gap(i);
       in[i] = 1;
@@ -161,7 +200,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
     std::vector<int> S;
     for (int i = 0; i < m; ++i)
       if (in[i]) S.push_back(i);
-    const RestrictedSolve rs = solve_on_set(p, S, ws);
+    const RestrictedSolve rs = solve_on_set(p, C, S, ws);
     if (!rs.ok) {
       sol.status = ContactStatus::singular;
       sol.message = "the compliance restricted to " + std::to_string(S.size()) +
@@ -170,13 +209,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
     }
     f.setZero();
     for (std::size_t a = 0; a < S.size(); ++a) f(S[a]) = rs.f_S(a);
-    // Gaps: only the loaded columns contribute.
-    Eigen::VectorXd g = p.initial_gap.array() - rs.delta;
-    if (contiguous(S)) {
-      g.noalias() += p.compliance.middleCols(S[0], static_cast<Eigen::Index>(S.size())) * rs.f_S;
-    } else {
-      g.noalias() += p.compliance * f;
-    }
+    Eigen::VectorXd g = gaps(p, C, S, rs);
     const double gtol = opt.gap_tolerance * std::max(std::abs(rs.delta), 1e-12);
     const double ftol = 1e-13 * p.load_N;
 

@@ -7,6 +7,7 @@
 // Horizontal force: with F_x != 0 every unit in contact carries f_x,i = (F_x / F_z) f_z,i
 // (uniform use of adhesion along the patch); positive F_x points forward (+x). With F_x = 0 the
 // contact is frictionless and the solution is symmetric about the contact centre.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,11 +61,19 @@ struct PatchOperator {
   double width_m = 0;                      ///< patch width for the pressure
   double horizontal_ratio = 0;             ///< F_x / F_z
   Eigen::MatrixXd compliance;              ///< vertical compliance of the candidates [m/N]
+  /// The same compliance matrix-free; when set it is used and `compliance` may stay empty.
+  /// Per solve (the operator caches FFT plans and is not thread-safe).
+  std::shared_ptr<const solvers::ComplianceOperator> compliance_operator;
   bool symmetric = true;
 };
 
-/// The model's own operator for a load case (static kernels, tread springs of the config).
+/// The model's own operator for a load case (static kernels, tread springs of the config), with
+/// the assembled compliance.
 PatchOperator static_operator(const TyreModel& model, double horizontal_ratio);
+
+/// The same without a horizontal force, matrix-free (vertical_compliance_operator): what
+/// solve_footprint() uses. Nothing of size m x m is copied or built.
+PatchOperator static_matrix_free_operator(const TyreModel& model);
 
 /// Solves one load case with a given operator (F_x = load.horizontal_force_N must match the
 /// operator's horizontal_ratio).

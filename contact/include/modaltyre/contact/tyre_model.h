@@ -19,6 +19,7 @@
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/modal/carcass_kernel.h"
 #include "modaltyre/modal/mode_identification.h"
+#include "modaltyre/solvers/toeplitz_compliance.h"
 
 namespace modaltyre::contact {
 
@@ -44,6 +45,12 @@ struct TyreModel {
 /// `theta`, from the transfer-function kernels (seed 001 eq. 1, 12) [m/N].
 Eigen::MatrixXd carcass_vertical_compliance(const modal::LagKernels& kernels,
                                             const std::vector<double>& theta);
+
+/// TyreModel::vertical_compliance as a matrix-free operator: the carcass kernels (symmetrised,
+/// as the matrix is) between the candidates' cos/sin projections plus the tread diagonal. Equal
+/// to the matrix to rounding; block products by FFT in O(m log m). Not thread-safe (it caches FFT
+/// plans): one per solve.
+solvers::WeightedToeplitzCompliance vertical_compliance_operator(const TyreModel& model);
 
 /// Vertical displacement at i per unit horizontal (+x) force at j [m/N]; built on demand (only
 /// load cases with a horizontal force need it).

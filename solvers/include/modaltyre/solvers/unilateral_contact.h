@@ -11,14 +11,22 @@
 // f_S = delta a - b with C_SS a = 1, C_SS b = s_S and delta = (F + 1^T b) / 1^T a; the set is
 // updated by a primal-dual active-set rule (drop tension, add penetration) with a switch to
 // one-at-a-time updates if a set repeats.
+//
+// C enters only through entries and block products (compliance_operator.h), so a structured
+// compliance can be given without assembling it: the gap check is one product of C's columns on
+// the contact set, the inner systems are solved by conjugate gradients on C_SS products.
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
 
+#include "modaltyre/solvers/compliance_operator.h"
+
 namespace modaltyre::solvers {
 
 struct ContactProblem {
-  Eigen::MatrixXd compliance;  ///< C [m/N], m x m
+  Eigen::MatrixXd compliance;  ///< C [m/N], m x m (unused when compliance_operator is set)
+  /// C given as an operator instead (not owned; must outlive the solve). Takes precedence.
+  const ComplianceOperator* compliance_operator = nullptr;
   Eigen::VectorXd initial_gap; ///< s [m], m
   double load_N = 0;           ///< F > 0
   bool symmetric = true;       ///< C symmetric positive definite (Cholesky); else LU

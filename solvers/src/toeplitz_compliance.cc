@@ -1,0 +1,214 @@
+#include "modaltyre/solvers/toeplitz_compliance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::solvers {
+
+namespace {
+
+using cd = std::complex<double>;
+
+bool smooth(int v) {
+  for (int f : {2, 3, 5})
+    while (v % f == 0) v /= f;
+  return v == 1;
+}
+
+}  // namespace
+
+int fast_fft_length(int n) {
+  int v = std::max(4, (n + 3) / 4 * 4);
+  while (!smooth(v)) v += 4;
+  return v;
+}
+
+void ComplianceOperator::gather(const std::vector<int>& S, Eigen::MatrixXd& A) const {
+  const Eigen::Index k = static_cast<Eigen::Index>(S.size());
+  A.resize(k, k);
+  for (Eigen::Index b = 0; b < k; ++b)
+    for (Eigen::Index a = 0; a < k; ++a) A(a, b) = entry(S[a], S[b]);
+}
+
+void DenseCompliance::gather(const std::vector<int>& S, Eigen::MatrixXd& A) const { A = C_(S, S); }
+
+void DenseCompliance::apply(int r0, int nr, int c0, int nc,
+                            const Eigen::Ref<const Eigen::MatrixXd>& X,
+                            Eigen::Ref<Eigen::MatrixXd> Y) const {
+  // Column by column: a matrix-vector product streams the block once per column, whereas a
+  // matrix-matrix product with two columns would first copy (pack) the whole block.
+  const auto block = C_.block(r0, c0, nr, nc);
+  for (Eigen::Index c = 0; c < X.cols(); ++c) Y.col(c).noalias() = block * X.col(c);
+}
+
+LagConvolution2x2::LagConvolution2x2(std::array<std::vector<double>, 4> kernels, int lags)
+    : k_(std::move(kernels)), lags_(lags) {
+  MODALTYRE_CHECK(lags >= 1, "convolution needs at least one lag");
+  for (const auto& k : k_) {
+    MODALTYRE_CHECK(k.size() == 2 * static_cast<std::size_t>(lags) - 1, "kernel length");
+  }
+  fft_.SetFlag(Eigen::FFT<double>::HalfSpectrum);
+  fft_.SetFlag(Eigen::FFT<double>::Unscaled);
+}
+
+const LagConvolution2x2::Spectra& LagConvolution2x2::spectra(int n) const {
+  for (const auto& s : spectra_)
+    if (s.n == n) return s;
+  // Circular embedding of length n: index p holds lag p for p < n/2 and lag p - n above, so
+  // every lag in [-n/2, n/2 - 1] is represented once (zero beyond the kernels' reach).
+  Spectra s;
+  s.n = n;
+  real_.assign(static_cast<std::size_t>(n), 0.0);
+  for (int ab = 0; ab < 4; ++ab) {
+    for (int p = 0; p < n; ++p) {
+      const int l = p < n / 2 ? p : p - n;
+      real_[p] = std::abs(l) < lags_ ? k_[ab][static_cast<std::size_t>(l + lags_ - 1)] / n : 0.0;
+    }
+    s.h[ab].resize(static_cast<std::size_t>(n / 2 + 1));
+    fft_.fwd(s.h[ab].data(), real_.data(), n);
+  }
+  spectra_.push_back(std::move(s));
+  return spectra_.back();
+}
+
+void LagConvolution2x2::apply(int r0, int nr, int c0, int nc, const double* v0, const double* v1,
+                              double* u0, double* u1) const {
+  // The lags the block needs: i - j from r0 - c0 - (nc - 1) to r0 - c0 + nr - 1.
+  const int lo = r0 - c0 - (nc - 1), hi = r0 - c0 + nr - 1;
+  const int n = fast_fft_length(std::max(2 * (hi + 1), -2 * lo));
+  // Six real transforms of length n against 4 nr nc multiply-adds: the direct sum wins on small
+  // blocks (the constant is a rough fit on this machine; both give the same product).
+  const double fft_cost = 6.0 * 8.0 * n * std::log2(static_cast<double>(n));
+  if (4.0 * nr * nc <= fft_cost) {
+    apply_direct(r0, nr, c0, nc, v0, v1, u0, u1);
+  } else {
+    apply_fft(r0, nr, c0, nc, v0, v1, u0, u1);
+  }
+}
+
+void LagConvolution2x2::apply_direct(int r0, int nr, int c0, int nc, const double* v0,
+                                     const double* v1, double* u0, double* u1) const {
+  MODALTYRE_CHECK(nc - 1 - (r0 - c0) < lags_ && r0 - c0 + nr - 1 < lags_,
+                  "block reaches beyond the kernels' lags");
+  std::fill(u0, u0 + nr, 0.0);
+  std::fill(u1, u1 + nr, 0.0);
+  const int mid = lags_ - 1;
+  for (int q = 0; q < nc; ++q) {
+    // Column j = c0 + q: lag i - j for i = r0 + p is r0 - c0 - q + p, contiguous in p.
+    const int l0 = r0 - c0 - q;
+    const double* k00 = k_[0].data() + mid + l0;
+    const double* k01 = k_[1].data() + mid + l0;
+    const double* k10 = k_[2].data() + mid + l0;
+    const double* k11 = k_[3].data() + mid + l0;
+    const double a = v0[q], b = v1[q];
+    for (int p = 0; p < nr; ++p) {
+      u0[p] += k00[p] * a + k01[p] * b;
+      u1[p] += k10[p] * a + k11[p] * b;
+    }
+  }
+}
+
+void LagConvolution2x2::apply_fft(int r0, int nr, int c0, int nc, const double* v0,
+                                  const double* v1, double* u0, double* u1) const {
+  const int lo = r0 - c0 - (nc - 1), hi = r0 - c0 + nr - 1;
+  MODALTYRE_CHECK(-lo < lags_ && hi < lags_, "block reaches beyond the kernels' lags");
+  const int n = fast_fft_length(std::max(2 * (hi + 1), -2 * lo));
+  const Spectra& s = spectra(n);
+  const std::size_t half = static_cast<std::size_t>(n / 2 + 1);
+  real_.resize(static_cast<std::size_t>(n));
+  x0_.resize(half);
+  x1_.resize(half);
+  y_.resize(half);
+  auto forward = [&](const double* v, std::vector<cd>& x) {
+    std::copy(v, v + nc, real_.begin());
+    std::fill(real_.begin() + nc, real_.end(), 0.0);
+    fft_.fwd(x.data(), real_.data(), n);
+  };
+  forward(v0, x0_);
+  forward(v1, x1_);
+  // Input j sits at p = j - c0, output i at (i - c0) mod n: the lag i - j lies in [lo, hi],
+  // which the embedding represents without wrap-around. Outputs are read in at most two runs.
+  const int start = ((r0 - c0) % n + n) % n;
+  const int first_run = std::min(nr, n - start);
+  auto inverse_into = [&](const std::vector<cd>& ha, const std::vector<cd>& hb, double* u) {
+    // Spelled out in reals: std::complex's operator* guards against inf/nan (slow path).
+    for (std::size_t k = 0; k < half; ++k) {
+      const double ar = ha[k].real(), ai = ha[k].imag(), br = hb[k].real(), bi = hb[k].imag();
+      const double xr = x0_[k].real(), xi = x0_[k].imag(), zr = x1_[k].real(), zi = x1_[k].imag();
+      y_[k] = cd(ar * xr - ai * xi + br * zr - bi * zi, ar * xi + ai * xr + br * zi + bi * zr);
+    }
+    fft_.inv(real_.data(), y_.data(), n);
+    std::copy(real_.begin() + start, real_.begin() + start + first_run, u);
+    std::copy(real_.begin(), real_.begin() + (nr - first_run), u + first_run);
+  };
+  inverse_into(s.h[0], s.h[1], u0);
+  inverse_into(s.h[2], s.h[3], u1);
+}
+
+WeightedToeplitzCompliance::WeightedToeplitzCompliance(LagConvolution2x2 convolution,
+                                                       std::vector<double> w0,
+                                                       std::vector<double> w1,
+                                                       std::vector<double> diagonal)
+    : conv_(std::move(convolution)),
+      w0_(std::move(w0)),
+      w1_(std::move(w1)),
+      d_(std::move(diagonal)) {
+  MODALTYRE_CHECK(w0_.size() == d_.size() && w1_.size() == d_.size(), "operator sizes disagree");
+  MODALTYRE_CHECK(conv_.lags() >= static_cast<int>(d_.size()), "kernels shorter than the grid");
+}
+
+double WeightedToeplitzCompliance::entry(int i, int j) const {
+  const int l = i - j;
+  const double ur = conv_.kernel(0, 0, l) * w0_[j] + conv_.kernel(0, 1, l) * w1_[j];
+  const double ut = conv_.kernel(1, 0, l) * w0_[j] + conv_.kernel(1, 1, l) * w1_[j];
+  return w0_[i] * ur + w1_[i] * ut + (i == j ? d_[i] : 0.0);
+}
+
+void WeightedToeplitzCompliance::gather(const std::vector<int>& S, Eigen::MatrixXd& A) const {
+  const Eigen::Index k = static_cast<Eigen::Index>(S.size());
+  A.resize(k, k);
+  for (Eigen::Index b = 0; b < k; ++b) {
+    const int j = S[b];
+    const double w0j = w0_[j], w1j = w1_[j];
+    for (Eigen::Index a = 0; a < k; ++a) {
+      const int i = S[a], l = i - j;
+      const double ur = conv_.kernel(0, 0, l) * w0j + conv_.kernel(0, 1, l) * w1j;
+      const double ut = conv_.kernel(1, 0, l) * w0j + conv_.kernel(1, 1, l) * w1j;
+      A(a, b) = w0_[i] * ur + w1_[i] * ut;
+    }
+    A(b, b) += d_[j];
+  }
+}
+
+void WeightedToeplitzCompliance::apply(int r0, int nr, int c0, int nc,
+                                       const Eigen::Ref<const Eigen::MatrixXd>& X,
+                                       Eigen::Ref<Eigen::MatrixXd> Y) const {
+  v0_.resize(static_cast<std::size_t>(nc));
+  v1_.resize(static_cast<std::size_t>(nc));
+  u0_.resize(static_cast<std::size_t>(nr));
+  u1_.resize(static_cast<std::size_t>(nr));
+  // Rows and columns shared by the block carry the local compliance.
+  const int d0 = std::max(r0, c0), d1 = std::min(r0 + nr, c0 + nc);
+  for (Eigen::Index c = 0; c < X.cols(); ++c) {
+    for (int q = 0; q < nc; ++q) {
+      v0_[q] = w0_[c0 + q] * X(q, c);
+      v1_[q] = w1_[c0 + q] * X(q, c);
+    }
+    conv_.apply(r0, nr, c0, nc, v0_.data(), v1_.data(), u0_.data(), u1_.data());
+    for (int p = 0; p < nr; ++p) Y(p, c) = w0_[r0 + p] * u0_[p] + w1_[r0 + p] * u1_[p];
+    for (int i = d0; i < d1; ++i) Y(i - r0, c) += d_[i] * X(i - c0, c);
+  }
+}
+
+Eigen::MatrixXd WeightedToeplitzCompliance::dense() const {
+  const int m = size();
+  Eigen::MatrixXd C(m, m);
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) C(i, j) = entry(i, j);
+  return C;
+}
+
+}  // namespace modaltyre::solvers
