@@ -1,7 +1,5 @@
 #include "modaltyre/solvers/cvode_klu.h"
 
-#include <cstdlib>
-
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -9,6 +7,8 @@
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
@@ -30,6 +30,7 @@ struct CvodeKlu::Impl {
   CscMatrix jac;
   std::vector<int64_t> last_col_ptr, last_row;  // pattern KLU was analysed for
   std::string last_error;
+  double stop_time = std::nan("");  // stop time CVODE currently holds (NaN: none)
   long root_returns = 0, reinits = 0, pattern_changes = 0;
   std::string callback_error;  // exception text from a callback
   OdeStats before_reinit;      // CVODE's counters restart at every CVodeReInit
@@ -197,6 +198,8 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
     check(CVodeSetLSetupFrequency(I.mem, opt.lsetup_frequency), "CVodeSetLSetupFrequency", I);
   if (opt.delta_gamma_max > 0)
     check(CVodeSetDeltaGammaMaxLSetup(I.mem, opt.delta_gamma_max), "CVodeSetDeltaGammaMaxLSetup", I);
+  if (opt.max_nonlinear_iterations > 0)
+    check(CVodeSetMaxNonlinIters(I.mem, opt.max_nonlinear_iterations), "CVodeSetMaxNonlinIters", I);
   if (I.problem.roots > 0) {
     check(CVodeRootInit(I.mem, I.problem.roots, root_trampoline), "CVodeRootInit", I);
     check(CVodeSetNoInactiveRootWarn(I.mem), "CVodeSetNoInactiveRootWarn", I);
@@ -205,7 +208,9 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
 
 CvodeKlu::~CvodeKlu() = default;
 
-OdeStatus CvodeKlu::advance(double t_out) {
+OdeStatus CvodeKlu::advance(double t_out) { return advance(t_out, t_out); }
+
+OdeStatus CvodeKlu::advance(double t_out, double t_stop) {
   Impl& I = *impl_;
   OdeStatus st;
   I.last_error.clear();
@@ -214,19 +219,26 @@ OdeStatus CvodeKlu::advance(double t_out) {
     st.t = t_;
     return st;
   }
-  int flag = CVodeSetStopTime(I.mem, t_out);
-  if (flag < 0) {
-    st.outcome = OdeOutcome::failed;
-    st.t = t_;
-    st.message = "CVodeSetStopTime failed";
-    return st;
+  MODALTYRE_CHECK(t_stop >= t_out, "stop time before the output time");
+  // CVODE disables the stop time once reached; set it again whenever it differs.
+  if (t_stop != I.stop_time) {
+    const int sflag = CVodeSetStopTime(I.mem, t_stop);
+    if (sflag < 0) {
+      st.outcome = OdeOutcome::failed;
+      st.t = t_;
+      st.message = "CVodeSetStopTime failed" + (I.last_error.empty() ? "" : ": " + I.last_error);
+      return st;
+    }
+    I.stop_time = t_stop;
   }
+  int flag = 0;
   realtype t_reached = t_;
   flag = CVode(I.mem, t_out, I.y, &t_reached, CV_NORMAL);
   const double* yp = N_VGetArrayPointer(I.y);
   std::copy(yp, yp + I.problem.size, y_.begin());
   t_ = t_reached;
   st.t = t_reached;
+  if (flag == CV_TSTOP_RETURN) I.stop_time = std::nan("");  // reached: CVODE disabled it
   if (flag == CV_ROOT_RETURN) {
     st.outcome = OdeOutcome::root;
     st.roots.assign(static_cast<std::size_t>(I.problem.roots), 0);
@@ -254,6 +266,7 @@ void CvodeKlu::reinit(double t, const std::vector<double>& y) {
   const OdeStats now = stats();
   I.before_reinit = now;
   check(CVodeReInit(I.mem, t, I.y), "CVodeReInit", I);
+  I.stop_time = std::nan("");  // a re-initialisation clears the stop time
   y_ = y;
   t_ = t;
   ++I.reinits;
@@ -270,6 +283,10 @@ OdeStats CvodeKlu::stats() const {
   if (CVodeGetNumNonlinSolvIters(I.mem, &v) == CV_SUCCESS) s.nonlin_iters += v;
   if (CVodeGetNumNonlinSolvConvFails(I.mem, &v) == CV_SUCCESS) s.nonlin_fails += v;
   if (CVodeGetNumErrTestFails(I.mem, &v) == CV_SUCCESS) s.error_test_fails += v;
+  realtype h = 0;
+  if (CVodeGetLastStep(I.mem, &h) == CV_SUCCESS) s.last_step = h;
+  int q = 0;
+  if (CVodeGetLastOrder(I.mem, &q) == CV_SUCCESS) s.last_order = q;
   s.root_returns = I.root_returns;
   s.reinits = I.reinits;
   s.pattern_changes = I.pattern_changes;

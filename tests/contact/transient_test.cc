@@ -14,8 +14,14 @@ namespace {
 
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
 
-// Static consistency of the at-rest model: exact up to rounding of the eigen-decomposition.
-constexpr double kAtRestTol = 1e-9;
+// The truncated residual keeps every unit's own compliance: the diagonal of the at-rest model
+// equals the static kernel's up to rounding of the eigen-decomposition.
+constexpr double kAtRestDiagonalTol = 1e-9;
+// Its off-diagonal remainder is dropped: static footprint at 4000 N with the model's at-rest
+// compliance vs the kernel's, on the coarse test mesh (5 mm, orders > 16 residual), where the
+// truncation matters most. Measured: sinking +0.19 %, length +0.17 % (0.5 mm default mesh,
+// orders > 40: +0.010 %, +0.002 %); docs/transient.md section 1.
+constexpr double kTruncationTol = 0.003;
 // Issue 6 item 5: end of a load-hold vs the static footprint (relaxation off).
 constexpr double kStaticTol = 0.005;
 // Issue 6 item 5: with relaxation, approach of the relaxed static solution.
@@ -51,13 +57,38 @@ TransientModel model_with(const std::vector<std::string>& overrides) {
   return build_transient_model(build_tyre_model(load_tyre_config(kConfig, overrides)));
 }
 
-TEST(TransientTest, AtRestModelEqualsStaticKernel) {
+TEST(TransientTest, AtRestModelMatchesStaticKernelWithinTruncation) {
   const TransientModel M = model_with(coarse());
-  ASSERT_GT(M.nr, 0);  // the test must exercise the residual orders
+  ASSERT_GT(M.nr, 0);  // the test must exercise the integrated residual orders
+  ASSERT_GT(M.residual_lumped.maxCoeff(), 0.0);  // ... and the lumped ones
+  ASSERT_LT(M.nr, M.m);
   const Eigen::MatrixXd C = M.at_rest_compliance();
-  const double err = (C - M.tyre.vertical_compliance).cwiseAbs().maxCoeff() /
-                     M.tyre.vertical_compliance.cwiseAbs().maxCoeff();
-  EXPECT_LT(err, kAtRestTol);
+  const double scale = M.tyre.vertical_compliance.cwiseAbs().maxCoeff();
+  EXPECT_LT((C.diagonal() - M.tyre.vertical_compliance.diagonal()).cwiseAbs().maxCoeff() / scale,
+            kAtRestDiagonalTol);
+  const TruncationError e = truncation_error(M, 4000);
+  EXPECT_LT(std::abs(e.sinking_rel), kTruncationTol);
+  EXPECT_LT(std::abs(e.length_rel), kTruncationTol);
+}
+
+TEST(TransientTest, ContinuingOverContactSwitchesMatchesRestarting) {
+  // The driver continues BDF over the kink of a switching unit instead of restarting CVODE:
+  // both must give the same load-hold end state to the integration's accuracy.
+  const TransientModel M = model_with(
+      coarse({"transient.relaxation=false", "transient.load_hold.load_N=4000",
+              "transient.load_hold.ramp_rate_N_s=8000", "transient.load_hold.hold_s=0.3"}));
+  TransientRunOptions restart;
+  restart.restart_at_switches = true;
+  const TransientResult a = run_transient(M, Scenario::load_hold);
+  const TransientResult b = run_transient(M, Scenario::load_hold, &restart);
+  ASSERT_TRUE(a.ok()) << a.message;
+  ASSERT_TRUE(b.ok()) << b.message;
+  ASSERT_EQ(a.samples.size(), b.samples.size());
+  const double T = a.simulated_s;
+  const double sa = mean_over(a, T - kBlock_s, T, [](auto& x) { return x.sinking_m; });
+  const double sb = mean_over(b, T - kBlock_s, T, [](auto& x) { return x.sinking_m; });
+  EXPECT_NEAR(sa / sb, 1.0, 1e-3);
+  EXPECT_EQ(a.samples.back().contact_units, b.samples.back().contact_units);
 }
 
 TEST(TransientTest, LoadHoldWithoutRelaxationEndsAtStaticFootprint) {

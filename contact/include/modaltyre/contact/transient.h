@@ -23,9 +23,11 @@
 // Carcass, residual part (orders above the dynamic truncation): quasi-static. Their vertical
 // static compliance on the candidates, R = V diag(lambda) V^T (eigen-decomposition), is carried
 // by first-order coordinates tau r' + r = diag(lambda) V^T f, tau = 2 zeta / omega_(K+1)
-// (the residual modes without their inertia, keeping their damping). At rest r = lambda V^T f,
-// so the model's compliance is psi diag(1/omega^2) psi^T + R + tread = the static kernel's
-// vertical compliance exactly (at_rest_compliance() vs TyreModel::vertical_compliance).
+// (the residual modes without their inertia, keeping their damping). Only the eigenpairs with
+// lambda >= 0.3 lambda_max are integrated; the others' diagonal (residual_lumped) acts in series
+// with the tread spring and their off-diagonal coupling is dropped, so the model's at-rest
+// compliance has the static kernel's diagonal exactly and moves the static footprint by
+// truncation_error() (0.01 % at the default mesh; docs/transient.md section 1).
 //
 // Tread, per unit, vertical: relaxed stiffness k_i = 1 / (cos^2/k_r + sin^2/k_t) (the static
 // footprint's tread, tyre_model.h). Relaxation off (seed 001 eq. 6): f_i = k_i max(0, p_i).
@@ -43,10 +45,11 @@
 //
 // Contact switches: one CVODE root function per unit, g_i = p_i - e_i (on) or p_i (off): the
 // tip of tread unit i touches the road when g_i rises through 0 and leaves when it falls
-// through 0 (with the tread force f_i = k_g g_i this is also the force's sign). At every root
-// the integration stops at the located time and CVODE is re-initialised there (BDF history
-// discarded), so no step straddles the kink of max(0, .). The right-hand side is continuous
-// across a switch, so no state jump is needed.
+// through 0 (with the tread force f_i = k_g g_i this is also the force's sign). CVODE locates
+// every root and returns there; the right-hand side is continuous across a switch (a kink of
+// max(0, .)), so the driver counts the switch and continues the integration (BDF's error test
+// shortens the steps over the kink) unless TransientRunOptions::restart_at_switches asks for a
+// re-initialisation. No state jump is needed.
 #include <functional>
 #include <string>
 #include <vector>
@@ -79,6 +82,9 @@ struct TransientModel {
   // Residual.
   Eigen::MatrixXd V;               ///< m x nr
   Eigen::VectorXd lambda;          ///< nr, [m/N]
+  /// Diagonal of the residual eigenpairs not integrated (lambda below the truncation), lumped
+  /// in series with the tread spring [m/N]; m entries.
+  Eigen::VectorXd residual_lumped;
   double tau_residual_s = 0;
   modal::LagKernels residual_kernels;  ///< radial/tangential kernels of the residual orders
   int residual_min_order = 0;
@@ -96,6 +102,15 @@ struct TransientModel {
   /// Vertical compliance of the model at rest (carcass dynamic + residual + tread) [m/N].
   Eigen::MatrixXd at_rest_compliance() const;
 };
+
+/// How far the truncated residual moves the model from the static kernel at rest: the static
+/// footprint under `load_N` solved with at_rest_compliance() against the one solved with
+/// TyreModel::vertical_compliance (relative differences of sinking and length), and the largest
+/// entry of the compliance difference relative to the largest compliance.
+struct TruncationError {
+  double sinking_rel = 0, length_rel = 0, compliance_rel = 0;
+};
+TruncationError truncation_error(const TransientModel& model, double load_N);
 
 /// Builds the transient model (settings from tyre.config.transient).
 TransientModel build_transient_model(const TyreModel& tyre);
@@ -137,11 +152,24 @@ class TransientSystem {
   /// excluded), for energy checks of undamped models without residual orders.
   double energy(double t, const double* y) const;
   std::vector<double> absolute_tolerances() const;
+  /// Tells the system that a unit switched (a root was located): the next Jacobian treats the
+  /// units next to the patch ends as in contact (see jacobian()).
+  void contact_switched() const { ++switches_since_jacobian_; }
   int64_t nnz() const;
 
  private:
+  /// g_i = z + h_i - s_i - u_i (- e_i): the tread tip's penetration (root functions).
+  void tip_penetration(double t, const double* y, Eigen::VectorXd& g) const;
+  void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
+
   const TransientModel& model_;
   const ScenarioPlan& plan_;
+  // Work vectors of rhs() and roots(): the integrator calls them thousands of times, so they
+  // are not allocated per call (one TransientSystem per run and thread).
+  mutable Eigen::VectorXd scratch_f_, scratch_G_, scratch_Vf_, scratch_g_;
+  /// Units in the Jacobian's sparsity pattern (ever in contact at a Jacobian evaluation).
+  mutable std::vector<char> in_pattern_;
+  mutable long switches_since_jacobian_ = 0;
 };
 
 struct TransientSample {
@@ -179,6 +207,9 @@ struct TransientRunOptions {
   std::function<bool(double, double)> progress;
   std::vector<double> final_state;  ///< filled with the last state if non-null-sized request
   bool keep_final_state = false;
+  /// Re-initialise CVODE at every contact switch (BDF history discarded) instead of continuing
+  /// over the kink; slower, kept for comparisons.
+  bool restart_at_switches = false;
 };
 
 /// Runs a scenario. Failures of the integrator are reported in the result (message and time

@@ -64,12 +64,17 @@ struct OdeOptions {
   /// dense blocks. 0 = CVODE's default.
   long lsetup_frequency = 0;
   double delta_gamma_max = 0;
+  /// Newton iterations per step before CVODE declares a convergence failure (CVODE: 3); a
+  /// failure with a stale Jacobian costs a new Jacobian and factorisation. 0 = CVODE's default.
+  int max_nonlinear_iterations = 0;
 };
 
 struct OdeStats {
   long steps = 0, rhs_evals = 0, jac_evals = 0, lin_setups = 0, nonlin_iters = 0,
        nonlin_fails = 0, error_test_fails = 0, root_returns = 0, reinits = 0,
        pattern_changes = 0;
+  double last_step = 0;  ///< size of the last successful step (diagnostics)
+  int last_order = 0;    ///< BDF order of the last successful step
 };
 
 enum class OdeOutcome { reached, root, failed };
@@ -94,6 +99,11 @@ class CvodeKlu {
   /// Integrates towards t_out (never past it: it is also the stop time). Returns when t_out is
   /// reached, a root is found (status.t < t_out) or the integrator fails.
   OdeStatus advance(double t_out);
+  /// Integrates towards t_out without stepping past t_stop >= t_out: the integrator may step
+  /// beyond t_out (up to t_stop) and returns the state at t_out interpolated from its BDF
+  /// history (CV_NORMAL), so dense output does not limit the step size. A later call continues
+  /// from the integrator's internal time, not from t_out.
+  OdeStatus advance(double t_out, double t_stop);
   /// Restarts the integrator at (t, y): BDF history and step size are discarded (order 1).
   /// Used after events where the right-hand side changes non-smoothly.
   void reinit(double t, const std::vector<double>& y);
