@@ -242,7 +242,9 @@ void register_sweep(CLI::App& app) {
       "grid's condition (load_N, horizontal_force_N, pressure_kPa, hold_s, speed_kmh, branch, "
       "surface) and config-key values (effects switched on with effects.NAME.enabled act), in "
       "parallel, one CSV row per case (identical for any thread count; failed cases are rows "
-      "marked failed; readable as measured data by discover and validate).");
+      "marked failed; readable as measured data by discover and validate). Under mpirun (build "
+      "option MODALTYRE_WITH_MPI) the cases are split over the ranks and rank 0 writes the same "
+      "CSV.");
   cmd->add_option("SWEEP", a->sweep,
                   "sweep file (YAML: base, set, grid, output), e.g. configs/sweeps/table3_loads.yaml")
       ->required();
