@@ -366,9 +366,8 @@ OutConfig compose_out_config(const IdentifyArgs& a, const contact::TyreConfig& t
              (a.file.empty() ? "" : " and " + a.file) + " (seed 000, docs/rheology.md).\n";
   for (const auto& n : m.notes) out.text += "# " + n + "\n";
   out.text += ConfigTree::load(a.into_config, ov).dump() + "\n";
+  // Read back as OUT: its re-anchored modal.hammer_csv resolves against OUT's folder to TYRE's file.
   out.config = contact::read_tyre_config(ConfigTree::from_string(out.text, a.out_config));
-  // The hammer file as TYRE's reader resolved it (OUT's relative path is for OUT's folder).
-  out.config.hammer_csv = tyre.hammer_csv;
   return out;
 }
 

@@ -13,33 +13,46 @@ namespace {
 constexpr double kRtol = 1e-9;
 constexpr double kClosedFormTol = 1e-6;  // relative to the amplitude
 
-// x'' + 2 zeta w x' + w^2 x = 0, x(0) = 1, x'(0) = 0.
-TEST(CvodeKluTest, DampedOscillatorMatchesClosedForm) {
-  const double w = 2 * M_PI * 5, zeta = 0.05;
-  OdeProblem p;
-  p.size = 2;
-  p.rhs = [&](double, const double* y, double* yd) {
-    yd[0] = y[1];
-    yd[1] = -2 * zeta * w * y[1] - w * w * y[0];
-    return 0;
-  };
-  p.jacobian = [&](double, const double*, const double*, CscMatrix& J) {
-    J.col_ptr = {0, 1, 3};
-    J.row = {1, 0, 1};
-    J.value = {-w * w, 1.0, -2 * zeta * w};
-    return 0;
-  };
+// x'' + 2 zeta w x' + w^2 x = 0, x(0) = 1, x'(0) = 0: the problem, its analytic Jacobian and
+// the closed-form solution, shared by the step-to-output and the interpolated-output tests.
+struct DampedOscillator {
+  double w = 2 * M_PI * 5, zeta = 0.05;
+  OdeProblem problem() const {
+    OdeProblem p;
+    p.size = 2;
+    p.rhs = [w = w, zeta = zeta](double, const double* y, double* yd) {
+      yd[0] = y[1];
+      yd[1] = -2 * zeta * w * y[1] - w * w * y[0];
+      return 0;
+    };
+    p.jacobian = [w = w, zeta = zeta](double, const double*, const double*, CscMatrix& J) {
+      J.col_ptr = {0, 1, 3};
+      J.row = {1, 0, 1};
+      J.value = {-w * w, 1.0, -2 * zeta * w};
+      return 0;
+    };
+    return p;
+  }
+  double exact(double t) const {
+    const double wd = w * std::sqrt(1 - zeta * zeta);
+    return std::exp(-zeta * w * t) * (std::cos(wd * t) + zeta * w / wd * std::sin(wd * t));
+  }
+};
+
+OdeOptions oscillator_options() {
   OdeOptions o;
   o.relative_tolerance = kRtol;
   o.absolute_tolerance = {1e-12};
-  CvodeKlu ode(p, o, 0.0, {1.0, 0.0}, 4);
-  const double wd = w * std::sqrt(1 - zeta * zeta);
+  return o;
+}
+
+TEST(CvodeKluTest, DampedOscillatorMatchesClosedForm) {
+  const DampedOscillator osc;
+  CvodeKlu ode(osc.problem(), oscillator_options(), 0.0, {1.0, 0.0}, 4);
   for (double t = 0.05; t <= 1.0 + 1e-12; t += 0.05) {
     const OdeStatus st = ode.advance(t);
     ASSERT_TRUE(st.ok()) << st.message;
-    const double exact = std::exp(-zeta * w * t) *
-                         (std::cos(wd * t) + zeta * w / wd * std::sin(wd * t));
-    EXPECT_NEAR(ode.state()[0], exact, kClosedFormTol) << "t = " << t;
+    EXPECT_NEAR(ode.state()[0], osc.exact(t), kClosedFormTol) << "t = " << t;
   }
   EXPECT_GT(ode.stats().jac_evals, 0);
 }
@@ -47,35 +60,17 @@ TEST(CvodeKluTest, DampedOscillatorMatchesClosedForm) {
 // Interpolated output: the integrator steps past the output times (stop time only at the end)
 // and returns the state there from its BDF history; same closed form, same tolerance.
 TEST(CvodeKluTest, InterpolatedOutputMatchesClosedForm) {
-  const double w = 2 * M_PI * 5, zeta = 0.05;
-  OdeProblem p;
-  p.size = 2;
-  p.rhs = [&](double, const double* y, double* yd) {
-    yd[0] = y[1];
-    yd[1] = -2 * zeta * w * y[1] - w * w * y[0];
-    return 0;
-  };
-  p.jacobian = [&](double, const double*, const double*, CscMatrix& J) {
-    J.col_ptr = {0, 1, 3};
-    J.row = {1, 0, 1};
-    J.value = {-w * w, 1.0, -2 * zeta * w};
-    return 0;
-  };
-  OdeOptions o;
-  o.relative_tolerance = kRtol;
-  o.absolute_tolerance = {1e-12};
+  const DampedOscillator osc;
+  OdeOptions o = oscillator_options();
   o.max_nonlinear_iterations = 6;
-  CvodeKlu ode(p, o, 0.0, {1.0, 0.0}, 4);
-  const double wd = w * std::sqrt(1 - zeta * zeta);
+  CvodeKlu ode(osc.problem(), o, 0.0, {1.0, 0.0}, 4);
   const double t_end = 1.0;
   for (int k = 1; k <= 200; ++k) {
     const double t = k * 0.005;
     const OdeStatus st = ode.advance(t, t_end);
     ASSERT_TRUE(st.ok()) << st.message;
     ASSERT_EQ(st.t, t);
-    const double exact =
-        std::exp(-zeta * w * t) * (std::cos(wd * t) + zeta * w / wd * std::sin(wd * t));
-    EXPECT_NEAR(ode.state()[0], exact, kClosedFormTol) << "t = " << t;
+    EXPECT_NEAR(ode.state()[0], osc.exact(t), kClosedFormTol) << "t = " << t;
   }
   // Fewer steps than outputs would have forced with the output time as stop time.
   EXPECT_LT(ode.stats().steps, 20000);
