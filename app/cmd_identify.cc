@@ -106,9 +106,8 @@ double positive_or_zero(double v, const char* name) {
 nlohmann::json report_json(const rh::FitReport& r) {
   nlohmann::json params = nlohmann::json::object();
   for (const auto& p : r.parameters)
-    params[p.name] = {{"value", round_sig(p.value)},
-                      {"unit", p.unit},
-                      {"std_error", round_sig(p.std_error, 6)}};
+    params[p.name] = {
+        {"value", round_sig(p.value)}, {"unit", p.unit}, {"std_error", round_sig(p.std_error, 6)}};
   return {{"method", r.method},
           {"parameters", params},
           {"residual_rms", round_sig(r.residual_rms, 6)},
@@ -168,9 +167,9 @@ void write_rheology_yaml(const IdentifyArgs& a, const nlohmann::json& out) {
 
 // What an identification determines in the tyre config's `effects:` section.
 struct EffectMapping {
-  std::vector<std::string> enabled;                     ///< effect names switched on
-  std::vector<std::pair<std::string, double>> values;   ///< dotted key, value in the key's unit
-  std::vector<std::string> notes;                       ///< how each value was obtained, why
+  std::vector<std::string> enabled;                    ///< effect names switched on
+  std::vector<std::pair<std::string, double>> values;  ///< dotted key, value in the key's unit
+  std::vector<std::string> notes;                      ///< how each value was obtained, why
 };
 
 std::string number_text(double v) {
@@ -205,22 +204,21 @@ void check_into_config_use(const IdentifyArgs& a) {
   if (a.into_config.empty() && a.out_config.empty()) return;
   if (a.out_config.empty())
     throw InputError({"--out-config", 0, ""},
-                     "--into-config " + a.into_config + " needs --out-config OUT.yaml, the file "
-                     "to write the tyre config with the identified effects to");
+                     "--into-config " + a.into_config +
+                         " needs --out-config OUT.yaml, the file "
+                         "to write the tyre config with the identified effects to");
   if (a.into_config.empty())
     throw InputError({"--into-config", 0, ""},
                      "--out-config needs --into-config TYRE.yaml, the tyre config to start from");
   const std::string refuse = "identify " + a.method + " --into-config: ";
   if (a.method == "b-factors")
-    throw InputError(refuse + "the slope factors B1, B2 (eq. 6, 10) are constants of the seed's "
+    throw InputError(refuse +
+                     "the slope factors B1, B2 (eq. 6, 10) are constants of the seed's "
                      "approximations; the footprint model uses nothing they determine (use "
                      "--write-config for a separate document)");
-  if (a.method == "contact-stress")
-    throw InputError(refuse + "K1 and C_P (eq. 8-12) are radial stiffnesses of the seed's ring "
-                     "model; the footprint model takes its carcass stiffness from the hammer "
-                     "test (modal.*) and no effect uses K1 or C_P (use --write-config)");
   if (a.method == "free-vibration" && a.static_file.empty())
-    throw InputError(refuse + "without --static, free-vibration identifies only the viscosity "
+    throw InputError(refuse +
+                     "without --static, free-vibration identifies only the viscosity "
                      "eta1 (eq. 22), which the static footprint model does not use; give "
                      "--static LOOP.csv to identify the dry friction chi (eq. 18)");
   namespace fs = std::filesystem;
@@ -229,8 +227,9 @@ void check_into_config_use(const IdentifyArgs& a) {
   const fs::path out = fs::weakly_canonical(a.out_config, ec_out);
   if (!ec_in && !ec_out && in == out)
     throw InputError({"--out-config", 0, ""},
-                     a.out_config + " is the tyre config itself: write the augmented config to "
-                     "another file (its comments would be lost)");
+                     a.out_config +
+                         " is the tyre config itself: write the augmented config to "
+                         "another file (its comments would be lost)");
 }
 
 // Saint-Venant force of the three-element model, the third term of eq. (14) with
@@ -257,25 +256,26 @@ EffectMapping map_three_element(const rh::FreeVibrationResult& res, const rh::St
   EffectMapping m;
   set_effect(m, "dry_friction", "friction_force_N", ff);
   double hmin = 1e300, hmax = 0;
-  for (const auto& r : loop.rows) hmin = std::min(hmin, r.deflection_m), hmax = std::max(hmax, r.deflection_m);
+  for (const auto& r : loop.rows)
+    hmin = std::min(hmin, r.deflection_m), hmax = std::max(hmax, r.deflection_m);
   auto ff_at = [&](double h) {
     return dry_friction_force_N(s.chi, s.E1_Pa, o.tread_width_m, o.r0_m,
                                 rh::half_contact_angle(h, o.r0_m));
   };
-  m.notes.push_back("effects.dry_friction.friction_force_N = F_f = 2 B_tr chi E1 r0 phi1 cos phi1 "
-                    "(seed eq. 14, 18) = " + number_text(round_sig(ff, 5)) + " N with chi = " +
-                    number_text(round_sig(s.chi, 5)) + ", E1 = " +
-                    number_text(round_sig(s.E1_Pa * 1e-6, 5)) + " MPa, B_tr = " +
-                    number_text(o.tread_width_m * 1e3) + " mm, r0 = " +
-                    number_text(o.r0_m * 1e3) + " mm at the test's contact length L_C = " +
-                    number_text(round_sig(res.contact_length_m * 1e3, 5)) + " mm (phi1 = " +
-                    number_text(round_sig(phi1, 4)) + " rad)");
-  m.notes.push_back("the three-element force grows with the contact: " +
-                    number_text(round_sig(ff_at(hmin), 4)) + " N at h_Z = " +
-                    number_text(round_sig(hmin * 1e3, 4)) + " mm to " +
-                    number_text(round_sig(ff_at(hmax), 4)) + " N at " +
-                    number_text(round_sig(hmax * 1e3, 4)) +
-                    " mm of the static loop; the footprint model's F_f is constant");
+  m.notes.push_back(
+      "effects.dry_friction.friction_force_N = F_f = 2 B_tr chi E1 r0 phi1 cos phi1 "
+      "(seed eq. 14, 18) = " +
+      number_text(round_sig(ff, 5)) + " N with chi = " + number_text(round_sig(s.chi, 5)) +
+      ", E1 = " + number_text(round_sig(s.E1_Pa * 1e-6, 5)) +
+      " MPa, B_tr = " + number_text(o.tread_width_m * 1e3) +
+      " mm, r0 = " + number_text(o.r0_m * 1e3) + " mm at the test's contact length L_C = " +
+      number_text(round_sig(res.contact_length_m * 1e3, 5)) +
+      " mm (phi1 = " + number_text(round_sig(phi1, 4)) + " rad)");
+  m.notes.push_back(
+      "the three-element force grows with the contact: " + number_text(round_sig(ff_at(hmin), 4)) +
+      " N at h_Z = " + number_text(round_sig(hmin * 1e3, 4)) + " mm to " +
+      number_text(round_sig(ff_at(hmax), 4)) + " N at " + number_text(round_sig(hmax * 1e3, 4)) +
+      " mm of the static loop; the footprint model's F_f is constant");
   m.notes.push_back("eta1 (eq. 22) is not written: the footprint model is static");
   return m;
 }
@@ -324,23 +324,27 @@ EffectMapping map_load_deflection(const rh::LoadDeflectionData& data, double tyr
     const double mean = std::accumulate(loads.begin(), loads.end(), 0.0) / loads.size();
     set_effect(m, "load_stiffening", "exponent", 0.25);
     set_effect(m, "load_stiffening", "reference_load_N", mean);
-    m.notes.push_back("effects.load_stiffening: exponent = 1/4 (h ~ P^3/4 of eq. 3: secant "
-                      "compliance ~ P^-1/4), reference_load_N = the mean test load " +
-                      number_text(round_sig(mean, 6)) + " N");
+    m.notes.push_back(
+        "effects.load_stiffening: exponent = 1/4 (h ~ P^3/4 of eq. 3: secant "
+        "compliance ~ P^-1/4), reference_load_N = the mean test load " +
+        number_text(round_sig(mean, 6)) + " N");
   } else {
-    m.notes.push_back("one load only: the P^3/4 law of eq. (3) is the seed's, not identified by "
-                      "these data; effects.load_stiffening left as in the tyre config");
+    m.notes.push_back(
+        "one load only: the P^3/4 law of eq. (3) is the seed's, not identified by "
+        "these data; effects.load_stiffening left as in the tyre config");
   }
   if (distinct_values(pressures) > 1) {
     set_effect(m, "inflation_pressure", "exponent", 1.0);
     set_effect(m, "inflation_pressure", "modal_test_pressure_kPa", tyre_pressure_kPa);
-    m.notes.push_back("effects.inflation_pressure: exponent = 1 ((1 + p_W)^-1 of eq. 3, p_W in "
-                      "bar), modal_test_pressure_kPa = tyre.inflation_pressure_kPa = " +
-                      number_text(tyre_pressure_kPa) + " kPa");
+    m.notes.push_back(
+        "effects.inflation_pressure: exponent = 1 ((1 + p_W)^-1 of eq. 3, p_W in "
+        "bar), modal_test_pressure_kPa = tyre.inflation_pressure_kPa = " +
+        number_text(tyre_pressure_kPa) + " kPa");
   } else {
-    m.notes.push_back("one pressure only: the (1 + p_W)^-1 law of eq. (3) is the seed's, not "
-                      "identified by these data; effects.inflation_pressure left as in the "
-                      "tyre config");
+    m.notes.push_back(
+        "one pressure only: the (1 + p_W)^-1 law of eq. (3) is the seed's, not "
+        "identified by these data; effects.inflation_pressure left as in the "
+        "tyre config");
   }
   return m;
 }
@@ -366,7 +370,8 @@ OutConfig compose_out_config(const IdentifyArgs& a, const contact::TyreConfig& t
              (a.file.empty() ? "" : " and " + a.file) + " (seed 000, docs/rheology.md).\n";
   for (const auto& n : m.notes) out.text += "# " + n + "\n";
   out.text += ConfigTree::load(a.into_config, ov).dump() + "\n";
-  // Read back as OUT: its re-anchored modal.hammer_csv resolves against OUT's folder to TYRE's file.
+  // Read back as OUT: its re-anchored modal.hammer_csv resolves against OUT's folder to TYRE's
+  // file.
   out.config = contact::read_tyre_config(ConfigTree::from_string(out.text, a.out_config));
   return out;
 }
@@ -382,33 +387,61 @@ struct IntoConfig {
   EffectMapping mapping;
 };
 
+// The carcass level modal.compliance_scale at which OUT's footprint model sinks `target_mm` under
+// `load_N` at the tyre's pressure (docs/rheology.md 6.5, 6.6). OUT is TYRE with the mapping so
+// far applied, so the effects the method switched on act during the calibration.
+struct CarcassLevel {
+  contact::TyreConfig fed;                                 ///< OUT with the calibrated scale
+  std::unique_ptr<contact::FootprintPredictor> predictor;  ///< on OUT's model
+  contact::ScaleCalibration cal;
+};
+
+CarcassLevel calibrate_carcass_level(const IdentifyArgs& a, const IntoConfig& into, double load_N,
+                                     double target_mm) {
+  CarcassLevel level;
+  level.fed = compose_out_config(a, into.tyre, into.mapping).config;
+  level.predictor =
+      std::make_unique<contact::FootprintPredictor>(contact::build_tyre_model(level.fed));
+  contact::OperatingConditions at = level.fed.default_conditions(load_N);
+  at.pressure_kPa = level.fed.inflation_pressure_Pa * 1e-3;
+  level.cal = contact::calibrate_compliance_scale(*level.predictor, level.fed, at, target_mm);
+  if (!level.cal.converged)
+    throw ComputationError("identify " + a.method + " --into-config: " + level.cal.message);
+  level.fed.compliance_scale = level.cal.compliance_scale;
+  return level;
+}
+
+void note_carcass_level(const CarcassLevel& level, IntoConfig& into, const std::string& through,
+                        double load_N) {
+  into.mapping.values.emplace_back("modal.compliance_scale", level.cal.compliance_scale);
+  into.mapping.notes.push_back(
+      "modal.compliance_scale = " + number_text(round_sig(level.cal.compliance_scale, 6)) +
+      " (was " + number_text(into.tyre.compliance_scale) + "): calibrated on " + through +
+      ", so that the footprint model sinks " + number_text(round_sig(level.cal.target_mm, 5)) +
+      " mm at " + number_text(round_sig(load_N, 6)) + " N and " +
+      number_text(round_sig(level.fed.inflation_pressure_Pa * 1e-3, 6)) + " kPa (" +
+      std::to_string(level.cal.evaluations) + " footprints)");
+}
+
 // K_Z -> modal.compliance_scale (docs/rheology.md 6.5): the carcass level at which OUT's
 // footprint model sinks eq. (3)'s h_Z at the mean test load and the tyre's pressure; then every
 // test row is predicted by OUT's model, so the note says how far the modal model with the
 // seed's laws follows the test (the laws scale the carcass only; the tread is in series).
 void map_stiffness_level(const IdentifyArgs& a, const rh::LoadDeflectionData& data,
                          const rh::LoadDeflectionResult& res, IntoConfig& into) {
-  const contact::TyreConfig out = compose_out_config(a, into.tyre, into.mapping).config;
   double mean_load = 0;
   for (const auto& r : data.rows) mean_load += r.load_N / data.rows.size();
-  const double target_mm = rh::law_deflection(res.K_Z_m, mean_load, out.inflation_pressure_Pa) * 1e3;
-  const contact::FootprintPredictor predictor(contact::build_tyre_model(out));
-  contact::OperatingConditions at = out.default_conditions(mean_load);
-  at.pressure_kPa = out.inflation_pressure_Pa * 1e-3;
-  const contact::ScaleCalibration cal =
-      contact::calibrate_compliance_scale(predictor, out, at, target_mm);
-  if (!cal.converged) {
-    throw ComputationError("identify load-deflection --into-config: " + cal.message);
-  }
-  contact::TyreConfig fed = out;
-  fed.compliance_scale = cal.compliance_scale;
+  const double target_mm =
+      rh::law_deflection(res.K_Z_m, mean_load, into.tyre.inflation_pressure_Pa) * 1e3;
+  const CarcassLevel level = calibrate_carcass_level(a, into, mean_load, target_mm);
   double sum_sq = 0, worst = 0;
   for (const auto& r : data.rows) {
-    contact::OperatingConditions c = fed.default_conditions(r.load_N);
+    contact::OperatingConditions c = level.fed.default_conditions(r.load_N);
     c.pressure_kPa = r.pressure_Pa * 1e-3;
-    const contact::Prediction p = predictor.predict(fed, c);
-    if (!p.ok) throw ComputationError("identify load-deflection --into-config: footprint at " +
-                                      number_text(r.load_N) + " N: " + p.message);
+    const contact::Prediction p = level.predictor->predict(level.fed, c);
+    if (!p.ok)
+      throw ComputationError("identify load-deflection --into-config: footprint at " +
+                             number_text(r.load_N) + " N: " + p.message);
     const double e = p.sinking_mm / (r.deflection_m * 1e3) - 1;
     sum_sq += e * e;
     worst = std::max(worst, std::abs(e));
@@ -416,33 +449,65 @@ void map_stiffness_level(const IdentifyArgs& a, const rh::LoadDeflectionData& da
   const double rms = std::sqrt(sum_sq / data.rows.size());
   std::vector<double> pressures;
   for (const auto& r : data.rows) pressures.push_back(r.pressure_Pa);
-  if (distinct_values(pressures) == 1 &&
-      std::abs(pressures.front() - out.inflation_pressure_Pa) > 1e-6 * out.inflation_pressure_Pa) {
+  const double tyre_Pa = into.tyre.inflation_pressure_Pa;
+  if (distinct_values(pressures) == 1 && std::abs(pressures.front() - tyre_Pa) > 1e-6 * tyre_Pa) {
     into.mapping.notes.push_back(
-        "the test's pressure " + number_text(pressures.front() * 1e-3) + " kPa is not the tyre "
-        "config's " + number_text(at.pressure_kPa) + " kPa: the level was carried over with eq. "
+        "the test's pressure " + number_text(pressures.front() * 1e-3) +
+        " kPa is not the tyre "
+        "config's " +
+        number_text(tyre_Pa * 1e-3) +
+        " kPa: the level was carried over with eq. "
         "(3)'s (1 + p_W)^-1, and the row comparison below mixes the two pressures");
   }
-  into.mapping.values.emplace_back("modal.compliance_scale", cal.compliance_scale);
+  note_carcass_level(level, into,
+                     "all " + std::to_string(data.rows.size()) + " rows of " + a.file +
+                         " through K_Z (eq. 3's h_Z at the mean test load)",
+                     mean_load);
+  into.mapping.notes.push_back("with it, the footprint model gives the test's deflections to " +
+                               number_text(round_sig(100 * rms, 3)) + " % RMS (worst row " +
+                               number_text(round_sig(100 * worst, 3)) +
+                               " %), each row at its own load and pressure");
+}
+
+// K1 and h_Z from a contact-stress profile -> modal.compliance_scale (docs/rheology.md 6.6): the
+// profile is one operating point of the tyre, the deflection h_Z under the load P_Z it carries
+// (eq. 8). OUT's footprint sinks h_Z under P_Z; its contact length and peak pressure are then
+// predictions, compared with the profile's 2 r0 sin(phi1) and K1 Delta_P(0).
+void map_contact_stress_level(const IdentifyArgs& a, const rh::ContactStressResult& res,
+                              double r0_m, IntoConfig& into) {
+  const CarcassLevel level = calibrate_carcass_level(a, into, res.load_N, res.deflection_m * 1e3);
+  const contact::Prediction p =
+      level.predictor->predict(level.fed, level.fed.default_conditions(res.load_N));
+  if (!p.ok)
+    throw ComputationError("identify contact-stress --into-config: footprint at " +
+                           number_text(res.load_N) + " N: " + p.message);
+  note_carcass_level(level, into,
+                     "the profile of " + a.file + " through K1 and h_Z (the load P_Z = " +
+                         number_text(round_sig(res.load_N, 5)) + " N of eq. 8)",
+                     res.load_N);
+  const double length_mm = 2e3 * r0_m * std::sin(rh::half_contact_angle(res.deflection_m, r0_m));
+  const double peak_kPa = rh::contact_stress_law(res.K1_Pa_per_m, 0, res.deflection_m, r0_m) * 1e-3;
+  double model_peak_kPa = 0;
+  for (const auto& u : p.footprint.units)
+    model_peak_kPa = std::max(model_peak_kPa, u.pressure_Pa * 1e-3);
+  into.mapping.notes.push_back("predicted by OUT at that load: contact length " +
+                               number_text(round_sig(p.length_mm, 4)) +
+                               " mm (profile: " + number_text(round_sig(length_mm, 4)) + " mm, " +
+                               number_text(round_sig(100 * (p.length_mm / length_mm - 1), 3)) +
+                               " %), peak pressure " + number_text(round_sig(model_peak_kPa, 4)) +
+                               " kPa (profile: " + number_text(round_sig(peak_kPa, 4)) + " kPa)");
   into.mapping.notes.push_back(
-      "modal.compliance_scale = " + number_text(round_sig(cal.compliance_scale, 6)) + " (was " +
-      number_text(into.tyre.compliance_scale) + "): calibrated on all " +
-      std::to_string(data.rows.size()) + " rows of " + a.file + " through K_Z, so that the "
-      "footprint model sinks eq. (3)'s " + number_text(round_sig(target_mm, 5)) +
-      " mm at the mean test load " + number_text(round_sig(mean_load, 6)) + " N and " +
-      number_text(round_sig(at.pressure_kPa, 6)) + " kPa (" + std::to_string(cal.evaluations) +
-      " footprints)");
-  into.mapping.notes.push_back(
-      "with it, the footprint model gives the test's deflections to " +
-      number_text(round_sig(100 * rms, 3)) + " % RMS (worst row " +
-      number_text(round_sig(100 * worst, 3)) + " %), each row at its own load and pressure");
+      "K1 and C_P themselves are not written: the footprint model's "
+      "carcass is the modal one, scaled");
 }
 
 nlohmann::json mapping_json(const IdentifyArgs& a, const EffectMapping& m) {
   nlohmann::json set = nlohmann::json::object();
   for (const auto& [key, value] : m.values) set[key] = value;
-  return {{"tyre_config", a.into_config}, {"out_config", a.out_config},
-          {"enabled", m.enabled},         {"set", set},
+  return {{"tyre_config", a.into_config},
+          {"out_config", a.out_config},
+          {"enabled", m.enabled},
+          {"set", set},
           {"notes", m.notes}};
 }
 
@@ -474,8 +539,10 @@ nlohmann::json run_load_deflection(const IdentifyArgs& a, const Geometry& g, Int
       m.x.push_back(r.load_N);
       m.y.push_back(r.deflection_m * 1e3);
     }
-    PlotPanel p{"eq. (3): K_Z = " + fixed(res.K_Z_m * 1e3, 4) + " mm N^{-3/4}", "load P_Z [N]",
-                "deflection h_Z [mm]", {}};
+    PlotPanel p{"eq. (3): K_Z = " + fixed(res.K_Z_m * 1e3, 4) + " mm N^{-3/4}",
+                "load P_Z [N]",
+                "deflection h_Z [mm]",
+                {}};
     for (auto& [key, m] : meas) {
       PlotSeries f{"eq. (3) at " + std::to_string(key) + " kPa", {}, {}, "lines"};
       for (int i = 0; i <= 60; ++i) {
@@ -502,14 +569,24 @@ nlohmann::json run_b_factors(const IdentifyArgs& a) {
   nlohmann::json out = report_json(res.report);
   out["seed"] = {{"B1", rh::kSeedB1}, {"B2", rh::kSeedB2}, {"R", 0.995}};
   if (!a.plot.empty()) {
-    PlotPanel p1{"eq. (6): B1 = " + fixed(res.B1, 4), "sin phi1 - phi1 cos phi1",
-                 "(1 - cos phi1)^{4/3}", {}};
-    PlotPanel p2{"eq. (10): B2 = " + fixed(res.B2, 4), "cos phi1 (phi1 - cos phi1 atanh sin phi1)",
-                 "(1 - cos phi1)^{4/3}", {}};
+    PlotPanel p1{"eq. (6): B1 = " + fixed(res.B1, 4),
+                 "sin phi1 - phi1 cos phi1",
+                 "(1 - cos phi1)^{4/3}",
+                 {}};
+    PlotPanel p2{"eq. (10): B2 = " + fixed(res.B2, 4),
+                 "cos phi1 (phi1 - cos phi1 atanh sin phi1)",
+                 "(1 - cos phi1)^{4/3}",
+                 {}};
     p1.series.push_back({"exact", res.x1, res.y, "points"});
     p2.series.push_back({"exact", res.x2, res.y, "points"});
-    PlotSeries l1{"B1 x", {0, res.x1.back()}, {res.intercept1, res.intercept1 + res.B1 * res.x1.back()}, "lines"};
-    PlotSeries l2{"B2 x", {0, res.x2.back()}, {res.intercept2, res.intercept2 + res.B2 * res.x2.back()}, "lines"};
+    PlotSeries l1{"B1 x",
+                  {0, res.x1.back()},
+                  {res.intercept1, res.intercept1 + res.B1 * res.x1.back()},
+                  "lines"};
+    PlotSeries l2{"B2 x",
+                  {0, res.x2.back()},
+                  {res.intercept2, res.intercept2 + res.B2 * res.x2.back()},
+                  "lines"};
     p1.series.push_back(l1);
     p2.series.push_back(l2);
     render_plot(PlotFigure{{p1, p2}, 1200, 500}, a.plot);
@@ -517,13 +594,14 @@ nlohmann::json run_b_factors(const IdentifyArgs& a) {
   return out;
 }
 
-nlohmann::json run_contact_stress(const IdentifyArgs& a, const Geometry& g) {
+nlohmann::json run_contact_stress(const IdentifyArgs& a, const Geometry& g, IntoConfig* into) {
   const auto data = rh::read_contact_stress_csv(a.file);
   rh::ContactStressOptions o;
   o.r0_m = g.r0_m;
   o.tread_width_m = g.tread_width_m;
   o.contact_length_m = positive_or_zero(a.contact_length_mm, "--contact-length-mm") * 1e-3;
   const auto res = rh::identify_contact_stress(data, o);
+  if (into) map_contact_stress_level(a, res, o.r0_m, *into);
   nlohmann::json out = report_json(res.report);
   out["pressure_unit"] = rh::kPressureUnitName;
   if (!a.plot.empty()) {
@@ -539,10 +617,12 @@ nlohmann::json run_contact_stress(const IdentifyArgs& a, const Geometry& g) {
       f.x.push_back(x * 1e3);
       f.y.push_back(rh::contact_stress_law(res.K1_Pa_per_m, x, res.deflection_m, o.r0_m) * 1e-3);
     }
-    render_plot(PlotFigure{{PlotPanel{"eq. (8)-(12): K1 = " + fixed(res.K1_Pa_per_m * 1e-6, 3) +
-                                          " MPa/m", "x along the road [mm]",
-                                      "contact stress [kPa]", {m, f}}}},
-                a.plot);
+    render_plot(
+        PlotFigure{{PlotPanel{"eq. (8)-(12): K1 = " + fixed(res.K1_Pa_per_m * 1e-6, 3) + " MPa/m",
+                              "x along the road [mm]",
+                              "contact stress [kPa]",
+                              {m, f}}}},
+        a.plot);
   }
   return out;
 }
@@ -575,13 +655,17 @@ nlohmann::json run_free_vibration(const IdentifyArgs& a, const Geometry& g, Into
       f.x.push_back(t);
       f.y.push_back(rh::decay_value(res.decay, t) * 1e3);
     }
-    PlotFigure fig{{PlotPanel{"T = " + fixed(res.decay.period_s * 1e3, 2) + " ms, delta = " +
-                                  fixed(res.decay.log_decrement, 4),
-                              "time [s]", "deflection h_Z [mm]", {m, f}}}};
+    PlotFigure fig{{PlotPanel{"T = " + fixed(res.decay.period_s * 1e3, 2) +
+                                  " ms, delta = " + fixed(res.decay.log_decrement, 4),
+                              "time [s]",
+                              "deflection h_Z [mm]",
+                              {m, f}}}};
     if (res.static_fit) {
       PlotPanel sp{"static loop: E1 = " + fixed(res.static_fit->E1_Pa * 1e-6, 3) +
                        " MPa, chi = " + fixed(res.static_fit->chi, 4),
-                   "deflection h_Z [mm]", "load P_Z [N]", {}};
+                   "deflection h_Z [mm]",
+                   "load P_Z [N]",
+                   {}};
       PlotSeries ml{"loading", {}, {}, "points"}, mu{"unloading", {}, {}, "points"};
       double hmax = 0;
       for (const auto& r : loop->rows) {
@@ -595,8 +679,10 @@ nlohmann::json run_free_vibration(const IdentifyArgs& a, const Geometry& g, Into
         const double h = hmax * i / 60;
         fl.x.push_back(h * 1e3);
         fu.x.push_back(h * 1e3);
-        fl.y.push_back(rh::static_loop_load(res.static_fit->E1_Pa, res.static_fit->chi, h, true, o));
-        fu.y.push_back(rh::static_loop_load(res.static_fit->E1_Pa, res.static_fit->chi, h, false, o));
+        fl.y.push_back(
+            rh::static_loop_load(res.static_fit->E1_Pa, res.static_fit->chi, h, true, o));
+        fu.y.push_back(
+            rh::static_loop_load(res.static_fit->E1_Pa, res.static_fit->chi, h, false, o));
       }
       sp.series = {ml, mu, fl, fu};
       fig.panels.push_back(sp);
@@ -625,10 +711,13 @@ nlohmann::json run_soil(const IdentifyArgs& a, const Geometry& g, IntoConfig* in
     }
     d.x = {0, fmax * 1.05};
     d.y = d.x;
-    render_plot(PlotFigure{{PlotPanel{"eq. (25)-(28): E2 = " + fixed(res.E2_Pa * 1e-6, 3) +
-                                          " MPa, eta2 = " + fixed(res.eta2_Pa_s * 1e-3, 3) + " kPa s",
-                                      "measured force [N]", "model force [N]", {z, x, d}}}},
-                a.plot);
+    render_plot(
+        PlotFigure{{PlotPanel{"eq. (25)-(28): E2 = " + fixed(res.E2_Pa * 1e-6, 3) +
+                                  " MPa, eta2 = " + fixed(res.eta2_Pa_s * 1e-3, 3) + " kPa s",
+                              "measured force [N]",
+                              "model force [N]",
+                              {z, x, d}}}},
+        a.plot);
   }
   return out;
 }
@@ -646,8 +735,8 @@ void register_identify(CLI::App& app) {
   cmd->add_option("METHOD", args->method,
                   "load-deflection | b-factors | contact-stress | free-vibration | soil-rolling")
       ->required()
-      ->check(CLI::IsMember({"load-deflection", "b-factors", "contact-stress", "free-vibration",
-                             "soil-rolling"}));
+      ->check(CLI::IsMember(
+          {"load-deflection", "b-factors", "contact-stress", "free-vibration", "soil-rolling"}));
   cmd->add_option("FILE", args->file, "measurement CSV (not for b-factors)");
   cmd->add_option("--config", args->config,
                   "tyre config: tyre.outer_radius_mm, tyre.inflation_pressure_kPa, "
@@ -675,7 +764,7 @@ void register_identify(CLI::App& app) {
                   "write the identified parameters as a 'rheology:' YAML document");
   cmd->add_option("--into-config", args->into_config,
                   "tyre config (YAML) to write the identified effects into (with --out-config; "
-                  "load-deflection, free-vibration with --static, soil-rolling)");
+                  "load-deflection, contact-stress, free-vibration with --static, soil-rolling)");
   cmd->add_option("--out-config", args->out_config,
                   "write the tyre config of --into-config with the identified effects switched "
                   "on and set here (YAML)");
@@ -695,11 +784,16 @@ void register_identify(CLI::App& app) {
     IntoConfig* ic = into ? &*into : nullptr;
     const Geometry g = resolve_geometry(a);
     nlohmann::json out;
-    if (a.method == "load-deflection") out = run_load_deflection(a, g, ic);
-    else if (a.method == "b-factors") out = run_b_factors(a);
-    else if (a.method == "contact-stress") out = run_contact_stress(a, g);
-    else if (a.method == "free-vibration") out = run_free_vibration(a, g, ic);
-    else out = run_soil(a, g, ic);
+    if (a.method == "load-deflection")
+      out = run_load_deflection(a, g, ic);
+    else if (a.method == "b-factors")
+      out = run_b_factors(a);
+    else if (a.method == "contact-stress")
+      out = run_contact_stress(a, g, ic);
+    else if (a.method == "free-vibration")
+      out = run_free_vibration(a, g, ic);
+    else
+      out = run_soil(a, g, ic);
     if (!a.file.empty()) out["file"] = a.file;
     check_finite(out);
     if (!a.write_config.empty()) write_rheology_yaml(a, out);
@@ -716,8 +810,8 @@ void register_identify(CLI::App& app) {
       r.residual_rms = out["residual_rms"];
       r.residual_unit = out["residual_unit"];
       for (auto it = out["parameters"].begin(); it != out["parameters"].end(); ++it)
-        r.parameters.push_back({it.key(), it.value()["value"], it.value()["unit"],
-                                it.value()["std_error"]});
+        r.parameters.push_back(
+            {it.key(), it.value()["value"], it.value()["unit"], it.value()["std_error"]});
       for (const auto& n : out["notes"]) r.notes.push_back(n);
       if (out.contains("pressure_unit"))
         r.notes.push_back(std::string("p_W in (1 + p_W) is gauge pressure in ") +

@@ -18,6 +18,7 @@
 #include "../app/cli_runner.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/rheology/contact_geometry.h"
+#include "modaltyre/rheology/contact_stress.h"
 #include "modaltyre/rheology/load_deflection.h"
 #include "modaltyre/rheology/soil.h"
 #include "modaltyre/rheology/three_element.h"
@@ -45,8 +46,8 @@ std::string static_loop_csv(double noise_rel, unsigned seed) {
   for (bool loading : {true, false})
     for (int i = 1; i <= 8; ++i) {
       const double h = 0.004 * i;
-      const double P = static_loop_load(kE1_Pa, kChi, h, loading, tyre_options()) *
-                       (1 + noise_rel * noise());
+      const double P =
+          static_loop_load(kE1_Pa, kChi, h, loading, tyre_options()) * (1 + noise_rel * noise());
       s << P << "," << h * 1e3 << "," << (loading ? "loading" : "unloading") << "\n";
     }
   return s.str();
@@ -161,8 +162,8 @@ TEST_F(rheology_IdentifyIntoConfig, ThreeElementWritesDryFrictionForce) {
   EXPECT_FALSE(t.root().section("effects").has("soil_compliance"));
   EXPECT_DOUBLE_EQ(t.root().section("tread").number("modulus_MPa", 0, 0, 1e9), 2.329);
   // modal.hammer_csv re-anchored to OUT's folder.
-  EXPECT_TRUE(std::filesystem::exists(
-      t.resolve_path(t.root().section("modal").text("hammer_csv", ""))));
+  EXPECT_TRUE(
+      std::filesystem::exists(t.resolve_path(t.root().section("modal").text("hammer_csv", ""))));
   EXPECT_NE(r.out.find("\"into_config\""), std::string::npos);
   EXPECT_NE(r.out.find("effects.dry_friction.friction_force_N"), std::string::npos);
 }
@@ -173,9 +174,9 @@ TEST_F(rheology_IdentifyIntoConfig, ThreeElementWithNoiseWithinStatedChiAccuracy
     const auto r = identify_three_element(0.02, seed);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const ConfigTree t = ConfigTree::load(out());
-    EXPECT_NEAR(effect(t, "dry_friction").number("friction_force_N", 0, 0, 1e9) /
-                    planted_friction_N(),
-                1.0, 0.27)
+    EXPECT_NEAR(
+        effect(t, "dry_friction").number("friction_force_N", 0, 0, 1e9) / planted_friction_N(), 1.0,
+        0.27)
         << seed;
   }
 }
@@ -224,15 +225,15 @@ TEST_F(rheology_IdentifyIntoConfig, SoilWritesModulusAndLayer) {
   EXPECT_NEAR(s.number("modulus_MPa", 0, 0, 1e9) / 3.0, 1.0, 1e-5);  // noise-free: 1e-6
   EXPECT_NEAR(s.number("layer_mm", 0, 0, 1e9), 300.0, 1e-9);
   EXPECT_NE(r.out.find("augmented tyre config"), std::string::npos);
-  const auto fp = run({"footprint", out(), "--load", "4000", "--json", "--set",
-                       "contact.unit_length_mm=2"});
+  const auto fp =
+      run({"footprint", out(), "--load", "4000", "--json", "--set", "contact.unit_length_mm=2"});
   EXPECT_EQ(fp.exit_code, 0) << fp.err;
 }
 
 TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionOverLoadsAndPressuresWritesBothLaws) {
-  const auto r = run({"identify", "load-deflection",
-                      file("ld.csv", load_deflection_csv({150, 230, 300})), "--into-config",
-                      kTyre, "--out-config", out()});
+  const auto r =
+      run({"identify", "load-deflection", file("ld.csv", load_deflection_csv({150, 230, 300})),
+           "--into-config", kTyre, "--out-config", out()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const ConfigTree t = ConfigTree::load(out());
   const ConfigSection ls = effect(t, "load_stiffening"), ip = effect(t, "inflation_pressure");
@@ -242,8 +243,8 @@ TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionOverLoadsAndPressuresWritesBot
   EXPECT_TRUE(ip.boolean("enabled", false));
   EXPECT_DOUBLE_EQ(ip.number("exponent", 0, 0, 9), 1.0);
   EXPECT_DOUBLE_EQ(ip.number("modal_test_pressure_kPa", 0, 0, 1e9), 230.0);  // tyre config's
-  const auto fp = run({"footprint", out(), "--load", "4000", "--json", "--set",
-                       "contact.unit_length_mm=2"});
+  const auto fp =
+      run({"footprint", out(), "--load", "4000", "--json", "--set", "contact.unit_length_mm=2"});
   EXPECT_EQ(fp.exit_code, 0) << fp.err;
 }
 
@@ -292,10 +293,45 @@ TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionSetsTheCarcassLevelSoTheFootpr
   EXPECT_LT(scales[1], scales[0]) << "a stiffer tested tyre must give a stiffer carcass";
 }
 
+// A contact-stress profile is one operating point (docs/rheology.md 6.6): OUT's footprint sinks
+// the profile's h_Z under the load eq. (8) integrates from it, and a stiffer foundation K1 at the
+// same deflection (more load) gives a stiffer carcass.
+TEST_F(rheology_IdentifyIntoConfig,
+       ContactStressSetsTheCarcassLevelSoTheFootprintSinksItsDeflection) {
+  const double r0_m = 0.2948, h_m = 0.018;
+  auto profile_csv = [&](double K1_Pa_per_m) {
+    std::ostringstream s;
+    s.precision(10);
+    s << "x_mm,stress_kPa\n";
+    const double a = std::sqrt(r0_m * r0_m - (r0_m - h_m) * (r0_m - h_m));
+    for (int i = -40; i <= 40; ++i) {
+      const double x = 1.25 * a * i / 40;
+      s << x * 1e3 << "," << contact_stress_law(K1_Pa_per_m, x, h_m, r0_m) * 1e-3 << "\n";
+    }
+    return s.str();
+  };
+  std::vector<double> scales;
+  for (double K1 : {2.5e7, 3.5e7}) {
+    const auto r = run({"identify", "contact-stress", file("cs.csv", profile_csv(K1)), "--config",
+                        kTyre, "--into-config", kTyre, "--out-config", out(), "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("through K1 and h_Z"), std::string::npos) << r.out;
+    const double load_N = json_number(r.out.substr(r.out.find("\"load_eq8\"")), "value");
+    const double scale =
+        ConfigTree::load(out()).root().section("modal").number("compliance_scale", 0, 0, 1e9);
+    scales.push_back(scale);
+    const auto fp = run({"footprint", out(), "--load", std::to_string(load_N), "--json"});
+    ASSERT_EQ(fp.exit_code, 0) << fp.err;
+    EXPECT_NEAR(json_number(fp.out, "sinking_mm") / (h_m * 1e3), 1.0, 1e-4) << fp.out;
+  }
+  EXPECT_LT(scales[1], scales[0]) << "more load at the same deflection needs a stiffer carcass";
+}
+
 TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionStifferThanTheTreadAloneExits2) {
   std::ostringstream s;
   s << "load_N,pressure_kPa,deflection_mm\n";
-  for (double P : {2000.0, 4000.0}) s << P << ",230," << law_deflection(1e-6, P, 230e3) * 1e3 << "\n";
+  for (double P : {2000.0, 4000.0})
+    s << P << ",230," << law_deflection(1e-6, P, 230e3) * 1e3 << "\n";
   const auto r = run({"identify", "load-deflection", file("stiff.csv", s.str()), "--into-config",
                       kTyre, "--out-config", out()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
@@ -308,10 +344,6 @@ TEST_F(rheology_IdentifyIntoConfig, MethodsThatDetermineNoEffectRefuseWithExit2)
   const auto b = run({"identify", "b-factors", "--into-config", kTyre, "--out-config", out()});
   EXPECT_EQ(b.exit_code, 2);
   EXPECT_NE(b.err.find("uses nothing"), std::string::npos) << b.err;
-  const auto cs = run({"identify", "contact-stress", kSrc + "/tests/data/rheology/contact_stress.csv",
-                       "--config", kTyre, "--into-config", kTyre, "--out-config", out()});
-  EXPECT_EQ(cs.exit_code, 2);
-  EXPECT_NE(cs.err.find("no effect uses K1"), std::string::npos) << cs.err;
   const auto fv = run({"identify", "free-vibration", file("decay.csv", decay_csv()), "--mass-kg",
                        "350", "--into-config", kTyre, "--out-config", out()});
   EXPECT_EQ(fv.exit_code, 2);
@@ -339,8 +371,9 @@ TEST_F(rheology_IdentifyIntoConfig, BadUseExits2NamingTheFileOrOption) {
   EXPECT_EQ(unreadable.exit_code, 2);
   EXPECT_NE(unreadable.err.find(missing), std::string::npos) << unreadable.err;
   // A tyre config with a bad key is named by file and key.
-  const std::string bad = file("bad.yaml", slurp(kTyre) + "effects:\n  dry_friction:\n    "
-                                                          "friction_force_N: -5\n");
+  const std::string bad = file("bad.yaml", slurp(kTyre) +
+                                               "effects:\n  dry_friction:\n    "
+                                               "friction_force_N: -5\n");
   const auto bad_key = run(args({"--into-config", bad, "--out-config", out()}));
   EXPECT_EQ(bad_key.exit_code, 2);
   EXPECT_NE(bad_key.err.find("effects.dry_friction.friction_force_N"), std::string::npos)
