@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <sstream>
 
 #include "modaltyre/contact/footprint.h"
@@ -19,6 +20,16 @@ using cd = std::complex<double>;
 constexpr double kResidualEigenCutoff = 1e-13;
 /// Absolute tolerance of displacement-like states [m] (0.1 um, ~1e-5 of a sinking).
 constexpr double kDisplacementTolerance = 1e-7;
+/// Offset of the contact root functions [m]: a switch is located where the tip penetration
+/// crosses this, 1e4 times the rounding noise of g (~1e-16 m) and 1e5 times below
+/// kDisplacementTolerance. A unit grazing the road with zero force (g = 0 to rounding, e.g. the
+/// centre of a ladder-like static patch) otherwise makes CVODE return a root at every rounding
+/// flip of g without advancing in time. The kink of f = k max(0, g) is located to eta / |g'|.
+constexpr double kRootOffset_m = 1e-12;
+/// Root returns in a row within kZenoWindow_s of each other before the run is stopped as
+/// chattering (never a hang): a located switch is normally followed by a step.
+constexpr int kZenoRootReturns = 1000;
+constexpr double kZenoWindow_s = 1e-12;
 /// Minimum damping ratio used for the relaxation time of the quasi-static residual orders.
 constexpr double kResidualMinDamping = 0.01;
 
@@ -54,17 +65,21 @@ Scenario parse_scenario(const std::string& name) {
   if (name == "free-vibration") return Scenario::free_vibration;
   if (name == "rolling") return Scenario::rolling;
   if (name == "cleat") return Scenario::cleat;
-  throw InputError(InputLocation{"--scenario", 0, ""},
-                   "unknown scenario '" + name +
-                       "': expected one of load-hold, free-vibration, rolling, cleat");
+  throw InputError(
+      InputLocation{"--scenario", 0, ""},
+      "unknown scenario '" + name + "': expected one of load-hold, free-vibration, rolling, cleat");
 }
 
 const char* to_string(Scenario s) {
   switch (s) {
-    case Scenario::load_hold: return "load-hold";
-    case Scenario::free_vibration: return "free-vibration";
-    case Scenario::rolling: return "rolling";
-    case Scenario::cleat: return "cleat";
+    case Scenario::load_hold:
+      return "load-hold";
+    case Scenario::free_vibration:
+      return "free-vibration";
+    case Scenario::rolling:
+      return "rolling";
+    case Scenario::cleat:
+      return "cleat";
   }
   return "?";
 }
@@ -82,7 +97,13 @@ TransientModel build_transient_model(const TyreModel& tyre) {
   const int K = S.dynamic_max_order;
 
   // Dynamic coordinates from the terms of order <= K.
-  struct Coord { int order; double omega, zeta; Eigen::VectorXd pr, pt; int partner; double sign; };
+  struct Coord {
+    int order;
+    double omega, zeta;
+    Eigen::VectorXd pr, pt;
+    int partner;
+    double sign;
+  };
   std::vector<Coord> coords;
   modal::ModalBasis residual = tyre.basis;
   residual.terms.clear();
@@ -151,7 +172,8 @@ TransientModel build_transient_model(const TyreModel& tyre) {
     M.residual_kernels = modal::build_lag_kernels(residual, tyre.dtheta_rad, m);
     const Eigen::MatrixXd R = vertical_from_kernels(tyre, M.residual_kernels);
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(R);
-    if (es.info() != Eigen::Success) throw ComputationError("residual compliance: eigen solver failed");
+    if (es.info() != Eigen::Success)
+      throw ComputationError("residual compliance: eigen solver failed");
     const double lmax = es.eigenvalues().cwiseAbs().maxCoeff();
     const double cutoff = std::max(kResidualEigenCutoff, kResidualKeepFraction) * lmax;
     std::vector<int> keep;
@@ -192,7 +214,8 @@ TransientModel build_transient_model(const TyreModel& tyre) {
   M.k_kv.resize(m);
   M.c_kv.resize(m);
   M.x_road.resize(m);
-  M.tread_time_constant_s = tyre.config.tread.tan_delta / (2 * M_PI * S.tread_reference_frequency_hz);
+  M.tread_time_constant_s =
+      tyre.config.tread.tan_delta / (2 * M_PI * S.tread_reference_frequency_hz);
   for (int i = 0; i < m; ++i) {
     const double c = std::cos(tyre.theta[i]), s = std::sin(tyre.theta[i]);
     const double k = 1.0 / (c * c / tyre.k_radial_N_m + s * s / tyre.k_tangential_N_m);
@@ -331,8 +354,8 @@ ScenarioPlan plan_scenario(const TransientModel& model, Scenario s) {
     }
   }
   if (!(p.duration_s > 0)) {
-    throw InputError(InputLocation{src, 0, "transient"}, std::string("scenario ") + to_string(s) +
-                                                            " has zero duration");
+    throw InputError(InputLocation{src, 0, "transient"},
+                     std::string("scenario ") + to_string(s) + " has zero duration");
   }
   if (model.settings.output_step_s > p.duration_s) {
     throw InputError(InputLocation{src, 0, "transient.output_step_ms"},
@@ -391,7 +414,11 @@ void TransientSystem::roots(double t, const double* y, double* g) const {
   Eigen::Map<Eigen::VectorXd> gm(g, model_.m);
   scratch_g_.resize(model_.m);
   tip_penetration(t, y, scratch_g_);
-  gm = scratch_g_;
+  scratch_g_.array() -= kRootOffset_m;
+  // CVODE treats an exact 0 as a root; when its root finder lands on one, the function is still
+  // 0.0 a rounding step later, which cvRcheck2 rejects as "root found at and very near t"
+  // (CV_ILL_INPUT). An exact 0 is reported as just below (the side of no force).
+  gm = (scratch_g_.array() == 0.0).select(-std::numeric_limits<double>::min(), scratch_g_);
 }
 
 void TransientSystem::rhs(double t, const double* y, double* ydot) const {
@@ -540,9 +567,12 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
     if (relax) {
       for (int i : pattern) {  // zero for units of the pattern out of contact
         double bi;
-        if (k < nq) bi = -M.psi(i, k);
-        else if (k < N - 1) bi = -M.V(i, k - nq);
-        else bi = 1.0;
+        if (k < nq)
+          bi = -M.psi(i, k);
+        else if (k < N - 1)
+          bi = -M.V(i, k - nq);
+        else
+          bi = 1.0;
         push(E + i, kd(i) * bi / M.c_kv(i));
       }
     }
@@ -796,6 +826,8 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
   double t_out = std::min(dt, T);
   bool failed = false;
   const bool restart_at_switches = options && options->restart_at_switches;
+  int roots_in_place = 0;
+  double last_root_t = -1;
   while (true) {
     while (next_break < breaks.size() && breaks[next_break] <= ode.time()) ++next_break;
     const bool use_break = next_break < breaks.size() && breaks[next_break] <= t_out;
@@ -812,6 +844,17 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
       break;
     }
     if (st.outcome == solvers::OdeOutcome::root) {
+      // Chattering guard: root returns that no longer advance the time would loop for ever.
+      roots_in_place = std::abs(st.t - last_root_t) <= kZenoWindow_s ? roots_in_place + 1 : 0;
+      last_root_t = st.t;
+      if (roots_in_place >= kZenoRootReturns) {
+        std::ostringstream msg;
+        msg << "contact switches chatter at t = " << st.t << " s (" << kZenoRootReturns
+            << " root returns without the time advancing): a tread tip hovers at the road";
+        res.message = msg.str();
+        failed = true;
+        break;
+      }
       sys.contact_switched();
       // A unit's tip touched or left the road: f_i = k max(0, g_i) has a kink there, the
       // right-hand side stays continuous. The located root is counted and the integration
