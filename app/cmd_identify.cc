@@ -198,6 +198,13 @@ void set_effect(EffectMapping& m, const std::string& effect, const std::string& 
   m.values.emplace_back(key, value);
 }
 
+// Whether the footprint model uses what the method identifies (docs/rheology.md section 6).
+bool feeds_tyre_config(const IdentifyArgs& a) {
+  if (a.method == "b-factors") return false;
+  if (a.method == "free-vibration") return !a.static_file.empty();
+  return true;
+}
+
 // Methods whose results the footprint model has no place for refuse --into-config (exit 2)
 // before any fitting; so does a half-given pair of options.
 void check_into_config_use(const IdentifyArgs& a) {
@@ -761,7 +768,10 @@ void register_identify(CLI::App& app) {
   cmd->add_flag("--json", args->json, "print JSON instead of a table");
   cmd->add_option("--plot", args->plot, "draw the fitted curve over the data (.svg/.png)");
   cmd->add_option("--write-config", args->write_config,
-                  "write the identified parameters as a 'rheology:' YAML document");
+                  "with --config TYRE: write TYRE with the identified parameters set, a tyre "
+                  "config the footprint model runs (as --into-config TYRE --out-config FILE); "
+                  "b-factors, free-vibration without --static, or no --config: a 'rheology:' "
+                  "YAML record of the parameters");
   cmd->add_option("--into-config", args->into_config,
                   "tyre config (YAML) to write the identified effects into (with --out-config; "
                   "load-deflection, contact-stress, free-vibration with --static, soil-rolling)");
@@ -769,7 +779,17 @@ void register_identify(CLI::App& app) {
                   "write the tyre config of --into-config with the identified effects switched "
                   "on and set here (YAML)");
   cmd->callback([args] {
-    const auto& a = *args;
+    IdentifyArgs a = *args;
+    // --write-config FILE with a tyre config (--config) writes a tyre config the footprint
+    // model runs (the same as --into-config CONFIG --out-config FILE) for every method whose
+    // results it uses; otherwise the standalone 'rheology:' record.
+    const bool tyre_config_out = !a.write_config.empty() && a.into_config.empty() &&
+                                 a.out_config.empty() && !a.config.empty() && feeds_tyre_config(a);
+    if (tyre_config_out) {
+      a.into_config = a.config;
+      a.out_config = a.write_config;
+      a.write_config.clear();
+    }
     if (a.method == "b-factors") {
       if (!a.file.empty())
         throw InputError({a.file, 0, ""}, "b-factors takes no FILE (it samples eq. 6 and 10)");
@@ -798,6 +818,11 @@ void register_identify(CLI::App& app) {
     check_finite(out);
     if (!a.write_config.empty()) write_rheology_yaml(a, out);
     if (into) {
+      for (auto it = out["parameters"].begin(); it != out["parameters"].end(); ++it)
+        into->mapping.notes.push_back("identified " + it.key() + " = " +
+                                      number_text(it.value()["value"].get<double>()) + " " +
+                                      it.value()["unit"].get<std::string>() + " (standard error " +
+                                      number_text(it.value()["std_error"].get<double>()) + ")");
       write_into_config(a, into->tyre, into->mapping);
       out["into_config"] = mapping_json(a, into->mapping);
     }

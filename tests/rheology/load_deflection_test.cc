@@ -12,8 +12,8 @@
 namespace modaltyre::rheology {
 namespace {
 
-constexpr double kK = 0.13e-3;   // planted K_Z [m N^-3/4] = 0.13 mm N^-3/4
-constexpr double kR0 = 0.2948;   // SF-350 free radius [m]
+constexpr double kK = 0.13e-3;  // planted K_Z [m N^-3/4] = 0.13 mm N^-3/4
+constexpr double kR0 = 0.2948;  // SF-350 free radius [m]
 
 LoadDeflectionData synthetic(double noise_rel, unsigned seed = 1) {
   test::Noise noise;
@@ -86,8 +86,8 @@ TEST(rheology_LoadDeflection, DegenerateInputsAreInputErrors) {
 }
 
 TEST(rheology_LoadDeflection, NegativeDeflectionNamesLineAndColumn) {
-  const auto f = test::temp_file("neg.csv",
-                                 "load_N,pressure_kPa,deflection_mm\n2000,230,12\n3000,230,-15\n");
+  const auto f =
+      test::temp_file("neg.csv", "load_N,pressure_kPa,deflection_mm\n2000,230,12\n3000,230,-15\n");
   try {
     read_load_deflection_csv(f);
     FAIL() << "no error";
@@ -110,12 +110,22 @@ TEST(rheology_LoadDeflectionCli, ExampleFileRunsAndDegenerateExit2) {
   EXPECT_NE(j.find("\"K_Z\""), std::string::npos);
   EXPECT_NE(j.find("\"C_P\""), std::string::npos);
   EXPECT_NE(j.find("\"pressure_unit\": \"bar\""), std::string::npos);
-  EXPECT_NE(test::slurp(yaml).find("rheology:"), std::string::npos);
+  // With --config, --write-config writes a tyre config that the footprint model runs, with the
+  // identified parameters in its header and K_Z's carcass level set.
+  const std::string written = test::slurp(yaml);
+  EXPECT_NE(written.find("# identified K_Z = "), std::string::npos) << written;
+  EXPECT_NE(written.find("compliance_scale"), std::string::npos) << written;
+  EXPECT_EQ(test::run_cli("footprint " + yaml + " --load 4000"), 0);
+  // Without a tyre config: the standalone 'rheology:' record.
+  const auto record = test::temp_file("ld_record.yaml", "");
+  EXPECT_EQ(
+      test::run_cli("identify load-deflection " + ex + " --r0-mm 295 --write-config " + record), 0);
+  EXPECT_NE(test::slurp(record).find("rheology:"), std::string::npos);
 
   const auto one = test::temp_file("one.csv", "load_N,pressure_kPa,deflection_mm\n3000,230,15\n");
   EXPECT_EQ(test::run_cli("identify load-deflection " + one + " --r0-mm 295"), 2);
-  const auto eq = test::temp_file(
-      "eq.csv", "load_N,pressure_kPa,deflection_mm\n3000,230,15\n3000,230,15.2\n");
+  const auto eq =
+      test::temp_file("eq.csv", "load_N,pressure_kPa,deflection_mm\n3000,230,15\n3000,230,15.2\n");
   EXPECT_EQ(test::run_cli("identify load-deflection " + eq + " --r0-mm 295"), 2);
   const auto neg = test::temp_file(
       "negcli.csv", "load_N,pressure_kPa,deflection_mm\n2000,230,12\n3000,230,-15\n");
