@@ -36,7 +36,7 @@
 // 1/k_i: the static limit is again k_i); e_i is the Kelvin-Voigt deformation:
 //   f_i = k_g max(0, p_i - e_i),   c' De_i/Dt + k' e_i = f_i,
 //   De/Dt = de/dt - Omega de/dtheta (material flows backward through the ground-fixed units;
-//   first-order upwind difference, undeformed rubber enters at the front of the window).
+//   second-order upwind difference, undeformed rubber enters at the front of the window).
 // Penetration of the undeformed tread surface: p_i = z + h(x_i, t) - s_i - u_i, z the hub's
 // downward displacement, s_i the sag R0 (1 - cos theta_i), h the road profile (cleat), u_i =
 // psi_i q + V_i r the carcass's upward displacement.
