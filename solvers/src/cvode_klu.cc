@@ -24,6 +24,7 @@ struct CvodeKlu::Impl {
   SUNContext ctx = nullptr;
   N_Vector y = nullptr;
   N_Vector abstol = nullptr;
+  N_Vector dky = nullptr;  // interpolate()'s output, made on first use
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
   void* mem = nullptr;
@@ -40,6 +41,7 @@ struct CvodeKlu::Impl {
     if (LS) SUNLinSolFree(LS);
     if (A) SUNMatDestroy(A);
     if (abstol) N_VDestroy(abstol);
+    if (dky) N_VDestroy(dky);
     if (y) N_VDestroy(y);
     if (ctx) SUNContext_Free(&ctx);
   }
@@ -148,8 +150,8 @@ extern "C" void error_trampoline(int code, const char* module, const char* funct
                                  void* user) {
   auto* impl = static_cast<CvodeKlu::Impl*>(user);
   if (code >= 0) return;  // warnings are not failures; the library never prints
-  impl->last_error = std::string(module ? module : "") + "::" + (function ? function : "") +
-                     ": " + (msg ? msg : "");
+  impl->last_error = std::string(module ? module : "") + "::" + (function ? function : "") + ": " +
+                     (msg ? msg : "");
 }
 
 }  // namespace
@@ -193,11 +195,13 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
   check(CVodeSetMaxOrd(I.mem, opt.max_order), "CVodeSetMaxOrd", I);
   if (opt.max_step > 0) check(CVodeSetMaxStep(I.mem, opt.max_step), "CVodeSetMaxStep", I);
   if (opt.initial_step > 0) check(CVodeSetInitStep(I.mem, opt.initial_step), "CVodeSetInitStep", I);
-  if (opt.stability_limit_detection) check(CVodeSetStabLimDet(I.mem, SUNTRUE), "CVodeSetStabLimDet", I);
+  if (opt.stability_limit_detection)
+    check(CVodeSetStabLimDet(I.mem, SUNTRUE), "CVodeSetStabLimDet", I);
   if (opt.lsetup_frequency > 0)
     check(CVodeSetLSetupFrequency(I.mem, opt.lsetup_frequency), "CVodeSetLSetupFrequency", I);
   if (opt.delta_gamma_max > 0)
-    check(CVodeSetDeltaGammaMaxLSetup(I.mem, opt.delta_gamma_max), "CVodeSetDeltaGammaMaxLSetup", I);
+    check(CVodeSetDeltaGammaMaxLSetup(I.mem, opt.delta_gamma_max), "CVodeSetDeltaGammaMaxLSetup",
+          I);
   if (opt.max_nonlinear_iterations > 0)
     check(CVodeSetMaxNonlinIters(I.mem, opt.max_nonlinear_iterations), "CVodeSetMaxNonlinIters", I);
   if (I.problem.roots > 0) {
@@ -211,15 +215,39 @@ CvodeKlu::~CvodeKlu() = default;
 OdeStatus CvodeKlu::advance(double t_out) { return advance(t_out, t_out); }
 
 OdeStatus CvodeKlu::advance(double t_out, double t_stop) {
-  Impl& I = *impl_;
-  OdeStatus st;
-  I.last_error.clear();
-  I.callback_error.clear();
   if (t_out <= t_) {
+    OdeStatus st;
     st.t = t_;
     return st;
   }
   MODALTYRE_CHECK(t_stop >= t_out, "stop time before the output time");
+  return call_cvode(t_out, t_stop, CV_NORMAL);
+}
+
+OdeStatus CvodeKlu::step(double t_stop) {
+  MODALTYRE_CHECK(t_stop > t_, "step: stop time not ahead of the integrator");
+  return call_cvode(t_stop, t_stop, CV_ONE_STEP);
+}
+
+void CvodeKlu::interpolate(double t, std::vector<double>& y) const {
+  Impl& I = *impl_;
+  if (!I.dky) {
+    I.dky = N_VNew_Serial(I.problem.size, I.ctx);
+    if (!I.dky) throw ComputationError("N_VNew_Serial failed (out of memory?)");
+  }
+  const int flag = CVodeGetDky(I.mem, t, 0, I.dky);
+  if (flag < 0)
+    throw ComputationError("CVodeGetDky at t = " + std::to_string(t) + " s: outside the last step" +
+                           (I.last_error.empty() ? "" : ": " + I.last_error));
+  const double* p = N_VGetArrayPointer(I.dky);
+  y.assign(p, p + I.problem.size);
+}
+
+OdeStatus CvodeKlu::call_cvode(double t_out, double t_stop, int task) {
+  Impl& I = *impl_;
+  OdeStatus st;
+  I.last_error.clear();
+  I.callback_error.clear();
   // CVODE disables the stop time once reached; set it again whenever it differs.
   if (t_stop != I.stop_time) {
     const int sflag = CVodeSetStopTime(I.mem, t_stop);
@@ -233,7 +261,7 @@ OdeStatus CvodeKlu::advance(double t_out, double t_stop) {
   }
   int flag = 0;
   realtype t_reached = t_;
-  flag = CVode(I.mem, t_out, I.y, &t_reached, CV_NORMAL);
+  flag = CVode(I.mem, t_out, I.y, &t_reached, task);
   const double* yp = N_VGetArrayPointer(I.y);
   std::copy(yp, yp + I.problem.size, y_.begin());
   t_ = t_reached;

@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "modaltyre/core/errors.h"
+
 namespace modaltyre::solvers {
 namespace {
 
@@ -75,6 +77,35 @@ TEST(CvodeKluTest, InterpolatedOutputMatchesClosedForm) {
   // Fewer steps than outputs would have forced with the output time as stop time.
   EXPECT_LT(ode.stats().steps, 20000);
   EXPECT_GT(ode.stats().last_step, 0.0);
+}
+
+// One internal step at a time, outputs interpolated inside each step (what the transient driver
+// does): every output matches the closed form, and the steps stop exactly at the stop time.
+TEST(CvodeKluTest, OneStepWithInterpolatedOutputsMatchesClosedForm) {
+  const DampedOscillator osc;
+  OdeOptions o = oscillator_options();
+  o.max_nonlinear_iterations = 6;
+  CvodeKlu ode(osc.problem(), o, 0.0, {1.0, 0.0}, 4);
+  const double t_end = 1.0, dt = 0.005;
+  std::vector<double> y;
+  int k = 1, outputs = 0, steps = 0;
+  while (ode.time() < t_end) {
+    const double before = ode.time();
+    const OdeStatus st = ode.step(t_end);
+    ASSERT_TRUE(st.ok()) << st.message;
+    ASSERT_GT(st.t, before);
+    ASSERT_LE(st.t, t_end);
+    ++steps;
+    for (; k * dt <= st.t * (1 + 1e-14) && k <= 200; ++k, ++outputs) {
+      ode.interpolate(std::min(k * dt, st.t), y);
+      EXPECT_NEAR(y[0], osc.exact(k * dt), kClosedFormTol) << "t = " << k * dt;
+    }
+  }
+  EXPECT_EQ(ode.time(), t_end);
+  EXPECT_EQ(outputs, 200);
+  EXPECT_EQ(steps, ode.stats().steps);  // each call took exactly one internal step
+  // A time outside the last step cannot be interpolated.
+  EXPECT_THROW(ode.interpolate(0.0, y), modaltyre::ComputationError);
 }
 
 // First-order relaxation (seed 001 eq. 10): c t' + K t = f, t(0) = 0 -> t = f/K (1 - e^{-K t/c}).

@@ -54,9 +54,9 @@ struct OdeOptions {
   double relative_tolerance = 1e-6;
   std::vector<double> absolute_tolerance;  ///< per component (size n), or one value for all
   long max_steps_per_call = 100000;
-  int max_order = 5;          ///< BDF order limit (2 keeps BDF A-stable for light damping)
-  double max_step = 0;        ///< 0 = unlimited
-  double initial_step = 0;    ///< 0 = CVODE's estimate
+  int max_order = 5;        ///< BDF order limit (2 keeps BDF A-stable for light damping)
+  double max_step = 0;      ///< 0 = unlimited
+  double initial_step = 0;  ///< 0 = CVODE's estimate
   bool stability_limit_detection = false;
   /// Linear-solver setups (KLU refactorisations) at most every this many steps (CVODE: 20) and
   /// when gamma = h * beta changed by more than delta_gamma_max (CVODE: 0.3). Larger values
@@ -70,9 +70,8 @@ struct OdeOptions {
 };
 
 struct OdeStats {
-  long steps = 0, rhs_evals = 0, jac_evals = 0, lin_setups = 0, nonlin_iters = 0,
-       nonlin_fails = 0, error_test_fails = 0, root_returns = 0, reinits = 0,
-       pattern_changes = 0;
+  long steps = 0, rhs_evals = 0, jac_evals = 0, lin_setups = 0, nonlin_iters = 0, nonlin_fails = 0,
+       error_test_fails = 0, root_returns = 0, reinits = 0, pattern_changes = 0;
   double last_step = 0;  ///< size of the last successful step (diagnostics)
   int last_order = 0;    ///< BDF order of the last successful step
 };
@@ -81,9 +80,9 @@ enum class OdeOutcome { reached, root, failed };
 
 struct OdeStatus {
   OdeOutcome outcome = OdeOutcome::reached;
-  double t = 0;              ///< time reached
-  std::vector<int> roots;    ///< per root function: 0, +1 (rising) or -1 (falling) at a root
-  std::string message;       ///< CVODE's message on failure
+  double t = 0;            ///< time reached
+  std::vector<int> roots;  ///< per root function: 0, +1 (rising) or -1 (falling) at a root
+  std::string message;     ///< CVODE's message on failure
   bool ok() const { return outcome != OdeOutcome::failed; }
 };
 
@@ -104,6 +103,13 @@ class CvodeKlu {
   /// history (CV_NORMAL), so dense output does not limit the step size. A later call continues
   /// from the integrator's internal time, not from t_out.
   OdeStatus advance(double t_out, double t_stop);
+  /// One internal step (CV_ONE_STEP), not beyond t_stop > time(): returns at the end of the
+  /// step, at a root inside it, or at t_stop. Outputs inside the step come from interpolate(),
+  /// which (unlike advance() to each output time) does not evaluate the root functions.
+  OdeStatus step(double t_stop);
+  /// State at t within the last internal step (CVodeGetDky, the BDF interpolant).
+  /// ComputationError for t outside it.
+  void interpolate(double t, std::vector<double>& y) const;
   /// Restarts the integrator at (t, y): BDF history and step size are discarded (order 1).
   /// Used after events where the right-hand side changes non-smoothly.
   void reinit(double t, const std::vector<double>& y);
@@ -116,6 +122,8 @@ class CvodeKlu {
   struct Impl;
 
  private:
+  OdeStatus call_cvode(double t_out, double t_stop, int task);
+
   std::unique_ptr<Impl> impl_;
   std::vector<double> y_;
   double t_ = 0;
