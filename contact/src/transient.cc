@@ -243,6 +243,8 @@ TransientModel build_transient_model(const TyreModel& tyre) {
                      "tread relaxation needs tread.tan_delta > 0 (or set transient.relaxation: "
                      "false)");
   }
+  M.psi_by_unit = M.psi.transpose();
+  M.V_by_unit = M.V.transpose();
   return M;
 }
 
@@ -433,7 +435,16 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   Eigen::VectorXd& G = scratch_G_;
   f.resize(M.m);
   forces_into(t, y, f);
-  G.noalias() = M.psi.transpose() * f;
+  // G = psi^T f and Vf = V^T f over the units in contact only (a third of the candidates at the
+  // default load): columns of the transposed shapes, contiguous in memory.
+  G.setZero(nq);
+  Eigen::VectorXd& Vf = scratch_Vf_;
+  Vf.setZero(nr);
+  for (int i = 0; i < M.m; ++i) {
+    if (f(i) == 0.0) continue;
+    G.noalias() += f(i) * M.psi_by_unit.col(i);
+    if (nr > 0) Vf.noalias() += f(i) * M.V_by_unit.col(i);
+  }
   const double Omega = plan_.speed(t) / M.tyre.config.outer_radius_m;
   const double dOmega = plan_.acceleration(t) / M.tyre.config.outer_radius_m;
   for (int j = 0; j < nq; ++j) {
@@ -448,8 +459,6 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
     ydot[nq + j] = a;
   }
   if (nr > 0) {
-    Eigen::VectorXd& Vf = scratch_Vf_;
-    Vf.noalias() = M.V.transpose() * f;
     for (int l = 0; l < nr; ++l)
       ydot[2 * nq + l] = (M.lambda(l) * Vf(l) - y[2 * nq + l]) / M.tau_residual_s;
   }

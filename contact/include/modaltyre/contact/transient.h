@@ -50,11 +50,10 @@
 // max(0, .)), so the driver counts the switch and continues the integration (BDF's error test
 // shortens the steps over the kink) unless TransientRunOptions::restart_at_switches asks for a
 // re-initialisation. No state jump is needed.
+#include <Eigen/Dense>
 #include <functional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "modaltyre/contact/tyre_model.h"
 #include "modaltyre/solvers/cvode_klu.h"
@@ -69,19 +68,20 @@ const char* to_string(Scenario s);
 struct TransientModel {
   TyreModel tyre;
   TransientSettings settings;
-  int m = 0;    ///< candidate units
-  int nq = 0;   ///< dynamic modal coordinates
-  int nr = 0;   ///< residual (quasi-static) coordinates
+  int m = 0;   ///< candidate units
+  int nq = 0;  ///< dynamic modal coordinates
+  int nr = 0;  ///< residual (quasi-static) coordinates
   // Dynamic coordinates.
   std::vector<double> omega, zeta;
   std::vector<int> order;
-  std::vector<int> partner;        ///< the other member of a (cos, sin) pair, -1 if none
-  std::vector<double> pair_sign;   ///< +1 for the cos member, -1 for the sin member, 0 if none
-  Eigen::MatrixXd psi;             ///< m x nq vertical shapes
-  Eigen::MatrixXd phi_r, phi_t;    ///< m x nq radial and tangential shapes
+  std::vector<int> partner;       ///< the other member of a (cos, sin) pair, -1 if none
+  std::vector<double> pair_sign;  ///< +1 for the cos member, -1 for the sin member, 0 if none
+  Eigen::MatrixXd psi;            ///< m x nq vertical shapes
+  Eigen::MatrixXd phi_r, phi_t;   ///< m x nq radial and tangential shapes
   // Residual.
-  Eigen::MatrixXd V;               ///< m x nr
-  Eigen::VectorXd lambda;          ///< nr, [m/N]
+  Eigen::MatrixXd V;                       ///< m x nr
+  Eigen::MatrixXd psi_by_unit, V_by_unit;  ///< psi^T (nq x m) and V^T (nr x m): a unit per column
+  Eigen::VectorXd lambda;                  ///< nr, [m/N]
   /// Diagonal of the residual eigenpairs not integrated (lambda below the truncation), lumped
   /// in series with the tread spring [m/N]; m entries.
   Eigen::VectorXd residual_lumped;
@@ -90,11 +90,11 @@ struct TransientModel {
   int residual_min_order = 0;
   double residual_min_omega = 0;
   // Tread.
-  Eigen::VectorXd k_relaxed;       ///< k_i [N/m]
-  Eigen::VectorXd k_contact;       ///< spring between penetration and force: k_i (off) or k_g
-  Eigen::VectorXd k_kv, c_kv;      ///< Kelvin-Voigt element (relaxation on)
+  Eigen::VectorXd k_relaxed;         ///< k_i [N/m]
+  Eigen::VectorXd k_contact;         ///< spring between penetration and force: k_i (off) or k_g
+  Eigen::VectorXd k_kv, c_kv;        ///< Kelvin-Voigt element (relaxation on)
   double tread_time_constant_s = 0;  ///< c'/k' = tan(delta) / Omega_ref
-  Eigen::VectorXd x_road;          ///< R0 sin theta_i
+  Eigen::VectorXd x_road;            ///< R0 sin theta_i
 
   int state_size() const { return 2 * nq + nr + 2 + (settings.relaxation ? m : 0); }
   int z_index() const { return 2 * nq + nr; }
@@ -126,9 +126,9 @@ struct ScenarioPlan {
   double ramp_s = 0;                   ///< linear speed ramp from 0 (0: at speed from t = 0)
   bool cleat = false;
   double cleat_height_m = 0, cleat_length_m = 0, cleat_start_m = 0;  ///< centre at t = 0
-  double speed(double t) const;        ///< V(t)
-  double acceleration(double t) const; ///< V'(t)
-  double distance(double t) const;     ///< integral of V
+  double speed(double t) const;                                      ///< V(t)
+  double acceleration(double t) const;                               ///< V'(t)
+  double distance(double t) const;                                   ///< integral of V
 };
 
 /// The plan of a scenario from the settings; InputError for an ill-posed one.
@@ -174,13 +174,13 @@ class TransientSystem {
 
 struct TransientSample {
   double t_s = 0;
-  double load_N = 0;             ///< sum of contact forces (road reaction)
-  double applied_load_N = 0;     ///< F(t) at the hub
-  double hub_displacement_m = 0; ///< z, downward
-  double sinking_m = 0;          ///< max_i (z + h_i - s_i): deflection of the tyre at the road
+  double load_N = 0;              ///< sum of contact forces (road reaction)
+  double applied_load_N = 0;      ///< F(t) at the hub
+  double hub_displacement_m = 0;  ///< z, downward
+  double sinking_m = 0;           ///< max_i (z + h_i - s_i): deflection of the tyre at the road
   double contact_length_m = 0;
   double longitudinal_force_N = 0;  ///< -(sum f x)/(R0 - z) - sum f h'(x)
-  double pressure_centre_m = 0;  ///< sum f x / sum f (+ forward)
+  double pressure_centre_m = 0;     ///< sum f x / sum f (+ forward)
   double speed_m_s = 0;
   int contact_units = 0;
 };
