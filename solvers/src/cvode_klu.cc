@@ -287,6 +287,12 @@ OdeStatus CvodeKlu::call_cvode(double t_out, double t_stop, int task) {
   return st;
 }
 
+void CvodeKlu::set_max_step(double h) {
+  Impl& I = *impl_;
+  // CVODE: hmax <= 0 restores the default, no bound.
+  check(CVodeSetMaxStep(I.mem, h > 0 ? h : 0.0), "CVodeSetMaxStep", I);
+}
+
 void CvodeKlu::reinit(double t, const std::vector<double>& y) {
   Impl& I = *impl_;
   MODALTYRE_CHECK(static_cast<int64_t>(y.size()) == I.problem.size, "reinit size");

@@ -123,12 +123,15 @@ struct ScenarioPlan {
   std::vector<double> breakpoints;     ///< times where F or Omega change slope (restarts)
   std::function<double(double)> load;  ///< F(t) [N]
   double speed_m_s = 0;                ///< final rolling speed
-  double ramp_s = 0;                   ///< linear speed ramp from 0 (0: at speed from t = 0)
+  double ramp_s = 0;                   ///< speed ramp from 0 (0: at speed from t = 0)
   bool cleat = false;
   double cleat_height_m = 0, cleat_length_m = 0, cleat_start_m = 0;  ///< centre at t = 0
-  double speed(double t) const;                                      ///< V(t)
-  double acceleration(double t) const;                               ///< V'(t)
-  double distance(double t) const;                                   ///< integral of V
+  /// Step-size bound while a cleat crosses the window, in force over [from, until) [s].
+  double step_limit_s = 0, step_limit_from_s = 0, step_limit_until_s = 0;
+  double step_limit(double t) const;    ///< the bound in force at t (0 = none)
+  double speed(double t) const;         ///< V(t), smoothstep ramp from rest
+  double acceleration(double t) const;  ///< V'(t)
+  double distance(double t) const;      ///< integral of V
 };
 
 /// The plan of a scenario from the settings; InputError for an ill-posed one.

@@ -110,6 +110,8 @@ class CvodeKlu {
   /// State at t within the last internal step (CVodeGetDky, the BDF interpolant).
   /// ComputationError for t outside it.
   void interpolate(double t, std::vector<double>& y) const;
+  /// Bounds the step size from now on (0 = unlimited), e.g. while a forcing moves fast.
+  void set_max_step(double h);
   /// Restarts the integrator at (t, y): BDF history and step size are discarded (order 1).
   /// Used after events where the right-hand side changes non-smoothly.
   void reinit(double t, const std::vector<double>& y);
