@@ -199,11 +199,21 @@ void set_effect(EffectMapping& m, const std::string& effect, const std::string& 
 }
 
 // Whether the footprint model uses what the method identifies (docs/rheology.md section 6).
-bool feeds_tyre_config(const IdentifyArgs& a) {
-  if (a.method == "b-factors") return false;
-  if (a.method == "free-vibration") return !a.static_file.empty();
-  return true;
+// Why the footprint model has no place for what the method identifies; empty when it has one
+// (docs/rheology.md 6.4). The one list both --into-config and --write-config consult.
+std::string nothing_for_the_tyre_config(const IdentifyArgs& a) {
+  if (a.method == "b-factors")
+    return "the slope factors B1, B2 (eq. 6, 10) are constants of the seed's approximations; the "
+           "footprint model uses nothing they determine (use --write-config for a separate "
+           "document)";
+  if (a.method == "free-vibration" && a.static_file.empty())
+    return "without --static, free-vibration identifies only the viscosity eta1 (eq. 22), which "
+           "the static footprint model does not use; give --static LOOP.csv to identify the dry "
+           "friction chi (eq. 18)";
+  return "";
 }
+
+bool feeds_tyre_config(const IdentifyArgs& a) { return nothing_for_the_tyre_config(a).empty(); }
 
 // Methods whose results the footprint model has no place for refuse --into-config (exit 2)
 // before any fitting; so does a half-given pair of options.
@@ -217,17 +227,8 @@ void check_into_config_use(const IdentifyArgs& a) {
   if (a.into_config.empty())
     throw InputError({"--into-config", 0, ""},
                      "--out-config needs --into-config TYRE.yaml, the tyre config to start from");
-  const std::string refuse = "identify " + a.method + " --into-config: ";
-  if (a.method == "b-factors")
-    throw InputError(refuse +
-                     "the slope factors B1, B2 (eq. 6, 10) are constants of the seed's "
-                     "approximations; the footprint model uses nothing they determine (use "
-                     "--write-config for a separate document)");
-  if (a.method == "free-vibration" && a.static_file.empty())
-    throw InputError(refuse +
-                     "without --static, free-vibration identifies only the viscosity "
-                     "eta1 (eq. 22), which the static footprint model does not use; give "
-                     "--static LOOP.csv to identify the dry friction chi (eq. 18)");
+  if (const std::string why = nothing_for_the_tyre_config(a); !why.empty())
+    throw InputError("identify " + a.method + " --into-config: " + why);
   namespace fs = std::filesystem;
   std::error_code ec_in, ec_out;
   const fs::path in = fs::weakly_canonical(a.into_config, ec_in);

@@ -651,7 +651,7 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
         push(Z + 1, -dfde / mh);
       }
       // e_{i-2}' and e_{i-1}' depend on e_i (upwind from the front).
-      if (i > 1 && kUpwind[2] != 0) push(E + i - 2, kUpwind[2] * adv);
+      if (i > 1) push(E + i - 2, kUpwind[2] * adv);
       if (i > 0) push(E + i - 1, kUpwind[1] * adv);
       push(E + i, kUpwind[0] * adv + (dfde - M.k_kv(i)) / M.c_kv(i));
     }

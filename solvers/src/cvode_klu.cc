@@ -24,7 +24,7 @@ struct CvodeKlu::Impl {
   SUNContext ctx = nullptr;
   N_Vector y = nullptr;
   N_Vector abstol = nullptr;
-  N_Vector dky = nullptr;  // interpolate()'s output, made on first use
+  N_Vector dky = nullptr;  // interpolate()'s output
   SUNMatrix A = nullptr;
   SUNLinearSolver LS = nullptr;
   void* mem = nullptr;
@@ -169,6 +169,8 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
   I.y = N_VNew_Serial(n, I.ctx);
   if (!I.y) throw ComputationError("N_VNew_Serial failed (out of memory?)");
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(I.y));
+  I.dky = N_VNew_Serial(n, I.ctx);
+  if (!I.dky) throw ComputationError("N_VNew_Serial failed (out of memory?)");
   I.mem = CVodeCreate(CV_BDF, I.ctx);
   if (!I.mem) throw ComputationError("CVodeCreate failed");
   check(CVodeSetErrHandlerFn(I.mem, error_trampoline, &I), "CVodeSetErrHandlerFn", I);
@@ -231,10 +233,6 @@ OdeStatus CvodeKlu::step(double t_stop) {
 
 void CvodeKlu::interpolate(double t, std::vector<double>& y) const {
   Impl& I = *impl_;
-  if (!I.dky) {
-    I.dky = N_VNew_Serial(I.problem.size, I.ctx);
-    if (!I.dky) throw ComputationError("N_VNew_Serial failed (out of memory?)");
-  }
   const int flag = CVodeGetDky(I.mem, t, 0, I.dky);
   if (flag < 0)
     throw ComputationError("CVodeGetDky at t = " + std::to_string(t) + " s: outside the last step" +

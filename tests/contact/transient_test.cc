@@ -338,6 +338,25 @@ TEST(TransientTest, CleatPeakLoadDoesNotDependOnTheRunUp) {
   EXPECT_NEAR(peaks[1] / peaks[0], 1.0, 0.02) << peaks[0] << " N vs " << peaks[1] << " N";
 }
 
+// The smoothstep speed ramp: V' is the derivative of V and V of the distance (central
+// differences), the acceleration starts and ends at 0 (no jump of V' at either end of the
+// ramp), peaks at 1.5 V / ramp_s, and the distance at the ramp's end is V ramp_s / 2.
+TEST(TransientTest, SpeedRampIsSmoothAndItsFunctionsAgree) {
+  const TransientModel M = model_with(coarse({"transient.rolling.ramp_s=0.8"}));
+  const ScenarioPlan p = plan_scenario(M, Scenario::rolling);
+  const double V = p.speed_m_s, R = p.ramp_s, h = 1e-6;
+  ASSERT_GT(V, 0);
+  for (double t = 0.01; t < 1.2; t += 0.0137) {
+    EXPECT_NEAR((p.speed(t + h) - p.speed(t - h)) / (2 * h), p.acceleration(t), 1e-6 * V / R) << t;
+    EXPECT_NEAR((p.distance(t + h) - p.distance(t - h)) / (2 * h), p.speed(t), 1e-6 * V) << t;
+  }
+  EXPECT_EQ(p.acceleration(0.0), 0.0);
+  EXPECT_NEAR(p.acceleration(R * (1 - 1e-9)), 0.0, 1e-8 * V / R);
+  EXPECT_NEAR(p.acceleration(0.5 * R), 1.5 * V / R, 1e-12 * V / R);
+  EXPECT_NEAR(p.distance(R), 0.5 * V * R, 1e-12 * V * R);
+  EXPECT_EQ(p.speed(R), V);
+}
+
 TEST(TransientTest, IllPosedScenariosAreInputErrors) {
   EXPECT_THROW(load_tyre_config(kConfig, coarse({"transient.load_hold.hold_s=-1"})), InputError);
   EXPECT_THROW(load_tyre_config(kConfig, coarse({"transient.hub_mass_kg=0"})), InputError);
