@@ -29,7 +29,8 @@ ModalBasis build_modal_basis(const ModeIdentification& ident, const ModalBasisOp
       if (m.kind == ModeKind::radial) ++count[m.apparent_order];
     }
   }
-  if (used.empty()) throw InputError("hammer data: no resolved mode to build a carcass kernel from");
+  if (used.empty())
+    throw InputError("hammer data: no resolved mode to build a carcass kernel from");
 
   int max_measured = 0;
   double amp_sum = 0, zeta_sum = 0, coupling_sum = 0;
@@ -71,14 +72,14 @@ ModalBasis build_modal_basis(const ModeIdentification& ident, const ModalBasisOp
     basis.terms.push_back(t);
   }
   basis.measured_terms = static_cast<int>(basis.terms.size());
-  basis.max_order = std::max(opts.max_order, max_measured);
+  // Without the extension the kernel's highest order is the highest measured one.
+  basis.max_order = opts.extend ? std::max(opts.max_order, max_measured) : max_measured;
 
   for (int k : {0, 1}) {
     if (!count.count(k)) {
-      basis.warnings.push_back("no resolved order-" + std::to_string(k) +
-                               " mode in the hammer data: " +
-                               (k == 0 ? "breathing" : "rigid translation") +
-                               " compliance is missing from the kernel");
+      basis.warnings.push_back(
+          "no resolved order-" + std::to_string(k) + " mode in the hammer data: " +
+          (k == 0 ? "breathing" : "rigid translation") + " compliance is missing from the kernel");
     }
   }
   if (opts.extend && basis.max_order > max_measured) {

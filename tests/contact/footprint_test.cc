@@ -87,12 +87,14 @@ TEST(Footprint, MeshConvergenceDoublingUnits) {
 }
 
 TEST(Footprint, StiffTreadLimitConvergesToTheRingContact) {
-  // As the tread stiffens its series compliance vanishes: successive tenfold stiffenings change
-  // the sinking by less and less (the tread's share falls like 1/E).
+  // A ring that can flatten at every order (the dispersion extension up to the mesh's Nyquist
+  // order): as the tread stiffens its series compliance vanishes, so successive tenfold
+  // stiffenings change the sinking by less and less (the tread's share falls like 1/E).
   double prev = 0, prev_change = 1e9;
   for (double E : {10.0, 100.0, 1000.0, 10000.0}) {
-    const auto r =
-        solve_footprint(model_with({"tread.modulus_MPa=" + std::to_string(E)}), {5478, 0});
+    const auto r = solve_footprint(
+        model_with({"modal.extend_orders=true", "tread.modulus_MPa=" + std::to_string(E)}),
+        {5478, 0});
     ASSERT_TRUE(r.converged);
     if (prev > 0) {
       const double change = std::abs(r.sinking_m - prev);
@@ -102,6 +104,32 @@ TEST(Footprint, StiffTreadLimitConvergesToTheRingContact) {
     prev = r.sinking_m;
   }
   EXPECT_LT(prev_change / prev, 1e-3);
+}
+
+TEST(Footprint, MeasuredModeCarcassUnderAStiffTreadIsARigidArcOnWinkler) {
+  // The default carcass has the measured orders only (<= 5): over a patch of a few centimetres
+  // it barely flattens, so a stiff tread meets a rigid arc. Winkler on an arc of radius R:
+  // F = (4/3) sqrt(2R) (E b / h) d^(3/2), so the tread's share of the sinking d falls as
+  // E^(-2/3) and the chord 2 sqrt(2 R d) as E^(-1/3): tenfold stiffenings shrink the change of
+  // sinking by 10^(-2/3) = 0.215 and the length by 10^(-1/3) = 0.464.
+  std::vector<double> sinking, length;
+  for (double E : {10.0, 100.0, 1000.0, 10000.0}) {
+    const auto r =
+        solve_footprint(model_with({"tread.modulus_MPa=" + std::to_string(E)}), {5478, 0});
+    ASSERT_TRUE(r.converged);
+    sinking.push_back(r.sinking_m);
+    length.push_back(r.contact_length_m);
+  }
+  const double winkler_sinking = std::pow(10.0, -2.0 / 3),
+               winkler_length = std::pow(10.0, -1.0 / 3);
+  for (std::size_t i = 2; i < sinking.size(); ++i) {
+    const double ratio = (sinking[i] - sinking[i - 1]) / (sinking[i - 1] - sinking[i - 2]);
+    EXPECT_NEAR(ratio, winkler_sinking, 0.03 * winkler_sinking) << "E step " << i;
+  }
+  // The 10 GPa chord is 6 mm, 12 units: compare lengths down to 1 GPa (25 units and more).
+  for (std::size_t i = 1; i < 3; ++i) {
+    EXPECT_NEAR(length[i] / length[i - 1], winkler_length, 0.05 * winkler_length) << "E step " << i;
+  }
 }
 
 TEST(Footprint, NearlyRigidCarcassGivesWinklerPressureOnTheChord) {
@@ -129,7 +157,8 @@ TEST(Footprint, NonConvergenceIsReported) {
 
 TEST(Footprint, VerticalStiffnessNearlyConstantOverTable3Loads) {
   // Seed 001 Fig. 9: stiffness basically unchanged between 2131 and 8321 N. The measured
-  // secant stiffness rises 8 %; the model's must stay within 25 % (ring flattening stiffens it).
+  // secant stiffness rises 8 %; the model's (17 %) must stay within 25 % (the tread's chord
+  // geometry stiffens it).
   const TyreModel m = model_with({});
   const auto lo = solve_footprint(m, {2131, 0});
   const auto hi = solve_footprint(m, {8321, 0});
@@ -138,16 +167,16 @@ TEST(Footprint, VerticalStiffnessNearlyConstantOverTable3Loads) {
   EXPECT_LT(rise, 0.25);
 }
 
-TEST(Validation, Table3DeclaredCalibrationAndLengthTarget) {
+TEST(Validation, Table3DeclaredCalibrationMeetsTheSinkingAndLengthTargets) {
   // Calibration declared in sf350.yaml: compliance scale and tread modulus on rows 1 and 6;
-  // rows 2-5 are predictions. Issue target: length RMS <= 10 % over predicted rows (met).
-  // The sinking target (<= 5 %) is missed at 6.5 % and documented in the README rather than
-  // asserted with a wider tolerance.
+  // rows 2-5 are predictions. Issue targets over the predicted rows: sinking RMS <= 5 %,
+  // length RMS <= 10 % (measured: 3.7 % and 7.8 %).
   const auto rep = validate_footprints(kConfig, {}, read_footprint_measurements(kTable3));
   ASSERT_EQ(rep.calibration.rows, (std::vector<int>{1, 6}));
   ASSERT_EQ(rep.calibration.keys.size(), 2u);
   EXPECT_EQ(rep.predicted_rows.at("sinking_mm"), 4);
   EXPECT_EQ(rep.predicted_rows.at("length_mm"), 4);
+  EXPECT_LE(rep.rms_rel_error.at("sinking_mm"), 0.05);
   EXPECT_LE(rep.rms_rel_error.at("length_mm"), 0.10);
   for (const auto& row : rep.rows) {
     EXPECT_EQ(row.calibration, row.measured.row == 1 || row.measured.row == 6);
@@ -170,8 +199,7 @@ TEST(Validation, CalibrationRecoversPlantedParameters) {
     m.length_mm = r.contact_length_m * 1e3;
     meas.push_back(m);
   }
-  const auto rep = validate_footprints(
-      kConfig, {"validation.calibration_rows=[1, 3]"}, meas);
+  const auto rep = validate_footprints(kConfig, {"validation.calibration_rows=[1, 3]"}, meas);
   ASSERT_EQ(rep.calibration.values.size(), 2u);
   // Least-squares stopping tolerance on log-parameters is 1e-6; 1e-3 covers the finite-difference
   // Jacobian and the flat direction of the cost.
@@ -196,7 +224,7 @@ TEST(Fig5, ShapesAndLengthsOfTheSeedsFigure) {
   EXPECT_GT(centre_over_max(res[0]), 0.999);  // 2.1 kN: single peak at the centre
   EXPECT_LT(centre_over_max(res[1]), 0.98);   // 5.4 kN: slight dip at the centre
   EXPECT_GT(centre_over_max(res[1]), 0.85);
-  EXPECT_GT(centre_over_max(res[2]), 0.85);   // 8.3 kN: flat ladder, no deep dip
+  EXPECT_GT(centre_over_max(res[2]), 0.85);  // 8.3 kN: flat ladder, no deep dip
 }
 
 }  // namespace

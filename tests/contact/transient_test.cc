@@ -46,6 +46,11 @@ constexpr double kViscosityTol = 0.10;
 // Energy balance (undamped, no residual orders): BDF's numerical dissipation at rtol 1e-8.
 constexpr double kEnergyTol = 0.01;
 
+// The default carcass has the measured orders only (<= 5), all dynamic. The dispersion
+// extension adds orders up to the mesh's Nyquist order, those above dynamic_max_order as the
+// quasi-static residual: tests of that path switch it on.
+const std::string kExtended = "modal.extend_orders=true";
+
 std::vector<std::string> coarse(std::vector<std::string> extra = {}) {
   std::vector<std::string> o = {"contact.unit_length_mm=5", "contact.window_mm=220",
                                 "transient.dynamic_max_order=16", "transient.output_step_ms=5"};
@@ -58,7 +63,7 @@ TransientModel model_with(const std::vector<std::string>& overrides) {
 }
 
 TEST(TransientTest, AtRestModelMatchesStaticKernelWithinTruncation) {
-  const TransientModel M = model_with(coarse());
+  const TransientModel M = model_with(coarse({kExtended}));
   ASSERT_GT(M.nr, 0);  // the test must exercise the integrated residual orders
   ASSERT_GT(M.residual_lumped.maxCoeff(), 0.0);  // ... and the lumped ones
   ASSERT_LT(M.nr, M.m);
@@ -92,20 +97,24 @@ TEST(TransientTest, ContinuingOverContactSwitchesMatchesRestarting) {
 }
 
 TEST(TransientTest, LoadHoldWithoutRelaxationEndsAtStaticFootprint) {
-  const TransientModel M = model_with(
-      coarse({"transient.relaxation=false", "transient.load_hold.load_N=4000",
-              "transient.load_hold.ramp_rate_N_s=4000", "transient.load_hold.hold_s=1.0"}));
-  const TransientResult r = run_transient(M, Scenario::load_hold);
-  ASSERT_TRUE(r.ok()) << r.message;
-  const FootprintResult s = solve_footprint(M.tyre, LoadCase{4000, 0});
-  ASSERT_TRUE(s.converged);
-  // Mean over the last 0.2 s (about four periods of the lightly damped hub bounce).
-  const double T = r.simulated_s;
-  const double sink = mean_over(r, T - kBlock_s, T, [](auto& x) { return x.sinking_m; });
-  const double len = mean_over(r, T - kBlock_s, T, [](auto& x) { return x.contact_length_m; });
-  EXPECT_NEAR(sink / s.sinking_m, 1.0, kStaticTol);
-  EXPECT_NEAR(len / s.contact_length_m, 1.0, kStaticTol);
-  EXPECT_GT(r.contact_events, 0);
+  // Both carcasses: the measured orders only (default) and the extension with its residual.
+  for (const std::string kernel : {"modal.extend_orders=false", kExtended.c_str()}) {
+    SCOPED_TRACE(kernel);
+    const TransientModel M = model_with(
+        coarse({kernel, "transient.relaxation=false", "transient.load_hold.load_N=4000",
+                "transient.load_hold.ramp_rate_N_s=4000", "transient.load_hold.hold_s=1.0"}));
+    const TransientResult r = run_transient(M, Scenario::load_hold);
+    ASSERT_TRUE(r.ok()) << r.message;
+    const FootprintResult s = solve_footprint(M.tyre, LoadCase{4000, 0});
+    ASSERT_TRUE(s.converged);
+    // Mean over the last 0.2 s (about four periods of the lightly damped hub bounce).
+    const double T = r.simulated_s;
+    const double sink = mean_over(r, T - kBlock_s, T, [](auto& x) { return x.sinking_m; });
+    const double len = mean_over(r, T - kBlock_s, T, [](auto& x) { return x.contact_length_m; });
+    EXPECT_NEAR(sink / s.sinking_m, 1.0, kStaticTol);
+    EXPECT_NEAR(len / s.contact_length_m, 1.0, kStaticTol);
+    EXPECT_GT(r.contact_events, 0);
+  }
 }
 
 TEST(TransientTest, CreepIsMonotoneAndApproachesRelaxedStatic) {
@@ -275,7 +284,9 @@ TEST(TransientTest, RollingResistanceConvergesAtSecondOrderInTheMesh) {
 // right-hand side: rolling while the speed ramps (rolling and gyroscopic terms, the tread's
 // second-order advection), relaxation on, at a perturbed static state (no unit on a kink).
 TEST(TransientTest, AnalyticJacobianMatchesFiniteDifferences) {
-  const TransientModel M = model_with(coarse({"transient.rolling.ramp_s=1"}));
+  // The extended carcass: its Jacobian has the residual orders' entries too.
+  const TransientModel M = model_with(coarse({kExtended, "transient.rolling.ramp_s=1"}));
+  ASSERT_GT(M.nr, 0);
   const ScenarioPlan plan = plan_scenario(M, Scenario::rolling);
   TransientSystem sys(M, plan);
   const int n = sys.size();

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <random>
 #include <set>
 
@@ -26,6 +27,9 @@ using contact::Surface;
 using contact::TyreConfig;
 
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+// The carcass with the dispersion extension (orders up to the mesh's Nyquist order) instead of
+// the default's measured orders only.
+const std::string kExtended = "modal.extend_orders=true";
 
 struct Planted {
   std::string effect;                                  // name; "" = none
@@ -35,13 +39,29 @@ struct Planted {
   std::vector<std::string> observables = {"sinking_mm", "length_mm"};
   double noise = 0.015;
   unsigned seed = 1;
+  std::vector<std::string> overrides;  // of the tyre config, for data and discover alike
 };
+
+std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += x + ";";
+  return s;
+}
 
 // Writes the measurement CSV of a planted data set and reads it back like the CLI would.
 contact::MeasurementSet make_data(const Planted& p, const std::string& name) {
-  static const TyreConfig gen_cfg =
-      contact::load_tyre_config(kConfig, {"contact.unit_length_mm=2"});
-  static const contact::FootprintPredictor gen(contact::build_tyre_model(gen_cfg));
+  // One generator per tyre config, built once.
+  static std::map<std::string, std::pair<TyreConfig, contact::FootprintPredictor>> generators;
+  auto it = generators.find(joined(p.overrides));
+  if (it == generators.end()) {
+    std::vector<std::string> o = p.overrides;
+    o.push_back("contact.unit_length_mm=2");
+    TyreConfig c = contact::load_tyre_config(kConfig, o);
+    contact::FootprintPredictor g(contact::build_tyre_model(c));
+    it = generators.emplace(joined(p.overrides), std::make_pair(std::move(c), std::move(g))).first;
+  }
+  const TyreConfig& gen_cfg = it->second.first;
+  const contact::FootprintPredictor& gen = it->second.second;
   TyreConfig truth = gen_cfg;
   if (p.truth) p.truth(truth.effects);
   std::mt19937 rng(p.seed);
@@ -195,7 +215,11 @@ std::vector<Planted> planted_cases() {
       e.belt_flattening.stiffness_MPa = 15;
     };
     p.hidden = {{"effects.belt_flattening.stiffness_MPa", 15}};
-    // As for tread_coupling: a 3.1 % signature, named at 1.5 % noise (3.1 % -> 1.6 %); 1 % noise.
+    // On the extended carcass, where the belt flattens at every order >= 2: a 3.1 % signature,
+    // as for tread_coupling, named at 1.5 % noise (3.1 % -> 1.6 %); 1 % noise. On the default
+    // carcass (orders 2-5 only, nearly uniform over a patch) the foundation mostly rescales the
+    // compliance, which the baseline scalars absorb: named, but kappa not pinned down.
+    p.overrides = {kExtended};
     p.noise = 0.01;
     p.rows = grid(kLoads9, nullptr, 1);
     v.push_back(p);
@@ -208,7 +232,7 @@ class HiddenEffect : public ::testing::TestWithParam<Planted> {};
 TEST_P(HiddenEffect, IsNamedShrinksTheCrossValidatedGapAndRecoversItsParameters) {
   const Planted& p = GetParam();
   const auto data = make_data(p, p.effect);
-  const auto cfg = contact::load_tyre_config(kConfig);
+  const auto cfg = contact::load_tyre_config(kConfig, p.overrides);
   const DiscoverReport r = discover(cfg, data, {});
   ASSERT_FALSE(r.effects.empty()) << r.conclusion;
   const NamedEffect& e = r.effects.front();
@@ -270,10 +294,24 @@ TEST(DiscoverTwoEffects, FindsBothHiddenEffects) {
   for (const auto& [obs, before] : r.cv_gap_before) EXPECT_LT(r.cv_gap_after.at(obs), 0.5 * before);
 }
 
-// The seed's measured Table 3: whatever is named, the cross-validated gap must not grow on any
-// observable, and the length gap the 2D modal ring leaves (about 10 % RMS) must shrink.
-TEST(DiscoverTable3, CrossValidatedGapNeverGrowsAndTheLengthGapShrinks) {
+// The seed's measured Table 3. On the default carcass (the measured orders only, seed 001's
+// model) the baseline leaves a gap no candidate explains significantly (README: nothing is
+// named; the width gap of a fixed-width 2D patch stays), and naming never grows it.
+TEST(DiscoverTable3, MeasuredModeCarcassLeavesNoGapACandidateExplains) {
   const auto cfg = contact::load_tyre_config(kConfig);
+  const auto data = contact::read_measurements(
+      std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv", cfg);
+  const DiscoverReport r = discover(cfg, data, {});
+  for (const auto& [obs, before] : r.cv_gap_before)
+    EXPECT_LE(r.cv_gap_after.at(obs), before) << obs;
+  EXPECT_TRUE(r.effects.empty()) << r.conclusion;
+}
+
+// With the dispersion extension the ring flattens at every order and leaves a length gap of
+// about 10 % RMS: whatever is named must not grow the cross-validated gap on any observable,
+// and the length gap must shrink.
+TEST(DiscoverTable3, ExtendedCarcassLengthGapIsNamedAndShrinks) {
+  const auto cfg = contact::load_tyre_config(kConfig, {kExtended});
   const auto data = contact::read_measurements(
       std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv", cfg);
   const DiscoverReport r = discover(cfg, data, {});

@@ -15,11 +15,12 @@
 // symmetric (theta -> -theta), so the radial-tangential coupling P_rt is kept purely imaginary
 // (tangential shape in quadrature with the radial one) and is zero at order 0.
 //
-// Modal truncation: the hammer test resolves few orders, a footprint needs many more. Orders that
-// no resolved measured mode covers (aliased orders and all orders above) are filled from the
-// dispersion fit (dispersion.h) with the mean measured modal amplitude |c_r|^2 of the resolved
-// orders >= 2 and the inextensional-ring tangential shape c_t = c_r * s / (i k), s being the
-// measured sign of the radial-tangential coupling. This is the ring-on-elastic-foundation
+// Modal truncation: the hammer test resolves few orders. Without the extension the sums run over
+// the resolved measured modes only (seed 001 eq. 1-4; docs/footprint.md section 2). With it,
+// orders that no resolved measured mode covers (aliased orders and all orders above) are filled
+// from the dispersion fit (dispersion.h) with the mean measured modal amplitude |c_r|^2 of the
+// resolved orders >= 2 and the inextensional-ring tangential shape c_t = c_r * s / (i k), s being
+// the measured sign of the radial-tangential coupling: the ring-on-elastic-foundation
 // extension; `max_order` sets where the sum stops (the mesh's Nyquist order).
 #include <complex>
 #include <string>
@@ -31,17 +32,17 @@ namespace modaltyre::modal {
 
 struct ModalTerm {
   int order = 0;
-  double omega_rad_s = 0;   ///< undamped natural circular frequency
+  double omega_rad_s = 0;  ///< undamped natural circular frequency
   double damping_ratio = 0;
-  double weight = 1;        ///< 1/2 for a member of a measured pair, 1 otherwise
+  double weight = 1;                      ///< 1/2 for a member of a measured pair, 1 otherwise
   std::complex<double> P_rr, P_rt, P_tt;  ///< c_r conj(c_r), c_r conj(c_t), c_t conj(c_t) [1/kg]
-  bool measured = true;     ///< false: from the dispersion extension
-  int mode_id = 0;          ///< hammer mode number, 0 for extension terms
+  bool measured = true;                   ///< false: from the dispersion extension
+  int mode_id = 0;                        ///< hammer mode number, 0 for extension terms
 };
 
 struct ModalBasisOptions {
-  int max_order = 0;  ///< highest harmonic order in the sums (>= highest measured order)
-  bool extend = true; ///< fill unmeasured orders from the dispersion fit
+  int max_order = 0;   ///< highest harmonic order in the sums (>= highest measured order)
+  bool extend = true;  ///< fill unmeasured orders from the dispersion fit
   /// Scales every modal compliance term (1 = as measured). A single scalar, not per order: it
   /// represents the uncertainty of the modal-mass normalisation of the hammer data.
   double compliance_scale = 1.0;
@@ -50,7 +51,7 @@ struct ModalBasisOptions {
 struct ModalBasis {
   std::vector<ModalTerm> terms;
   DispersionFit dispersion;
-  int max_order = 0;
+  int max_order = 0;  ///< highest order in the sums: the highest measured one without extension
   int measured_terms = 0;
   std::vector<std::string> warnings;  ///< e.g. an order 0 or 1 mode missing from the test
 
