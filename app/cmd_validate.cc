@@ -72,10 +72,12 @@ nlohmann::json to_json(const contact::ValidationReport& rep) {
   for (const auto& [k, v] : rep.rms_rel_error) rms[k] = round_sig(v, 8);
   nlohmann::json calibrated = nlohmann::json::object();
   nlohmann::json initial = nlohmann::json::object();
+  nlohmann::json at_bound = nlohmann::json::object();
   const auto& c = rep.calibration;
   for (std::size_t i = 0; i < c.keys.size(); ++i) {
     calibrated[c.keys[i]] = round_sig(c.values[i], 8);
     initial[c.keys[i]] = c.initial_values[i];
+    if (!c.at_bound[i].empty()) at_bound[c.keys[i]] = c.at_bound[i];
   }
   return {{"config", rep.model.config.source},
           {"effects", enabled_effects_json(rep.model.config.effects)},
@@ -87,6 +89,7 @@ nlohmann::json to_json(const contact::ValidationReport& rep) {
            {{"rows", c.rows},
             {"observables", c.observables},
             {"initial", initial},
+            {"at_bound", at_bound},
             {"rms_rel_residual", round_sig(c.rms_rel_residual, 8)},
             {"converged", c.converged},
             {"evaluations", c.evaluations}}}};
@@ -105,7 +108,13 @@ void print_table(const contact::ValidationReport& rep, const std::string& measur
     std::cout << "):\n";
     for (std::size_t i = 0; i < c.keys.size(); ++i) {
       std::cout << "  " << c.keys[i] << " = " << round_sig(c.values[i], 5) << "  (was "
-                << c.initial_values[i] << ")\n";
+                << c.initial_values[i] << ")";
+      if (!c.at_bound[i].empty()) {
+        std::cout << "  warning: at the " << c.at_bound[i]
+                  << " bound of its search range: the rows bound it from one side only, or a "
+                     "better fit lies elsewhere (try another starting value with --set)";
+      }
+      std::cout << "\n";
     }
   }
   if (rep.model.config.effects.any()) {
@@ -170,11 +179,13 @@ std::vector<contact::FootprintResult> model_curve(const contact::TyreModel& mode
 
 void plot_validation(const contact::ValidationReport& rep, const std::string& path) {
   double lo = 1e300, hi = 0;
-  for (const auto& r : rep.rows) lo = std::min(lo, r.measured.load_N), hi = std::max(hi, r.measured.load_N);
+  for (const auto& r : rep.rows)
+    lo = std::min(lo, r.measured.load_N), hi = std::max(hi, r.measured.load_N);
   std::vector<contact::LoadCase> curve;
   const int n = 24;
   for (int i = 0; i <= n; ++i) {
-    curve.push_back({0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n, rep.model.config.horizontal_force_N});
+    curve.push_back(
+        {0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n, rep.model.config.horizontal_force_N});
   }
   const auto res = model_curve(rep.model, curve);
   PlotPanel ps{"Sinking versus load", "vertical load [kN]", "sinking [mm]", {}};
@@ -194,8 +205,10 @@ void plot_validation(const contact::ValidationReport& rep, const std::string& pa
   for (const auto& r : rep.rows) {
     auto& s = r.calibration ? ps_cal : ps_meas;
     auto& l = r.calibration ? pl_cal : pl_meas;
-    if (r.measured.sinking_mm) s.x.push_back(r.measured.load_N / 1000), s.y.push_back(*r.measured.sinking_mm);
-    if (r.measured.length_mm) l.x.push_back(r.measured.load_N / 1000), l.y.push_back(*r.measured.length_mm);
+    if (r.measured.sinking_mm)
+      s.x.push_back(r.measured.load_N / 1000), s.y.push_back(*r.measured.sinking_mm);
+    if (r.measured.length_mm)
+      l.x.push_back(r.measured.load_N / 1000), l.y.push_back(*r.measured.length_mm);
   }
   ps.series = {ps_pred, ps_meas};
   pl.series = {pl_pred, pl_meas};

@@ -21,14 +21,21 @@ struct Calibratable {
   double min, max;  ///< physically plausible range searched by the calibration
 };
 
+/// A calibrated value this close (relative) to a bound of its range is reported as at the bound.
+constexpr double kAtBound = 1e-3;
+
 /// Scalar config keys that may be calibrated.
 const std::map<std::string, Calibratable>& calibratable() {
   static const std::map<std::string, Calibratable> keys = {
       {"modal.compliance_scale", {[](const TyreConfig& c) { return c.compliance_scale; }, 0.2, 5}},
-      {"tread.modulus_MPa", {[](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; }, 0.1, 100}},
-      {"tread.thickness_mm", {[](const TyreConfig& c) { return c.tread.thickness_m * 1e3; }, 1, 50}},
-      {"tread.contact_width_mm", {[](const TyreConfig& c) { return c.tread.width_m * 1e3; }, 20, 500}},
-      {"tyre.outer_radius_mm", {[](const TyreConfig& c) { return c.outer_radius_m * 1e3; }, 100, 1500}},
+      {"tread.modulus_MPa",
+       {[](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; }, 0.1, 100}},
+      {"tread.thickness_mm",
+       {[](const TyreConfig& c) { return c.tread.thickness_m * 1e3; }, 1, 50}},
+      {"tread.contact_width_mm",
+       {[](const TyreConfig& c) { return c.tread.width_m * 1e3; }, 20, 500}},
+      {"tyre.outer_radius_mm",
+       {[](const TyreConfig& c) { return c.outer_radius_m * 1e3; }, 100, 1500}},
       // Starts at 10 rad^2/s^2 when not stated (the fit to resolved orders may give 0).
       {"modal.extension_bending_s2_rad2_s2",
        {[](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; }, 1e-3, 1e6}},
@@ -263,17 +270,21 @@ ValidationReport validate_footprints(const std::string& config_path,
     };
     solvers::LeastSquaresOptions lso;
     lso.relative_step = 1e-5;
-    lso.step_tolerance = 1e-6;   // 1e-6 relative in each parameter is far below its meaning
+    lso.step_tolerance = 1e-6;  // 1e-6 relative in each parameter is far below its meaning
     lso.cost_tolerance = 1e-8;
     const auto fit = solvers::levenberg_marquardt(residual, x, lso);
     x = fit.x;
     cal.converged = fit.converged;
     cal.evaluations = fit.evaluations;
-    cal.rms_rel_residual = fit.residual.size()
-                               ? std::sqrt(fit.residual.squaredNorm() / fit.residual.size())
-                               : 0.0;
+    cal.rms_rel_residual =
+        fit.residual.size() ? std::sqrt(fit.residual.squaredNorm() / fit.residual.size()) : 0.0;
     for (std::size_t k = 0; k < cal.keys.size(); ++k) {
-      cal.values.push_back(std::exp(x(static_cast<Eigen::Index>(k))));
+      const double v = std::exp(x(static_cast<Eigen::Index>(k)));
+      const auto& range = calibratable().at(cal.keys[k]);
+      cal.values.push_back(v);
+      cal.at_bound.push_back(v <= range.min * (1 + kAtBound)   ? "lower"
+                             : v >= range.max * (1 - kAtBound) ? "upper"
+                                                               : "");
     }
     if (cal.rms_rel_residual > 1e3) {
       throw ComputationError("calibration found no parameters within their plausible ranges");

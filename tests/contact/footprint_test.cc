@@ -183,6 +183,25 @@ TEST(Validation, Table3DeclaredCalibrationMeetsTheSinkingAndLengthTargets) {
   }
 }
 
+TEST(Validation, CalibratedValueAtTheBoundOfItsRangeIsFlagged) {
+  // The extension's bending term calibrated from 10 rad^2/s^2 with the tread modulus on rows 1
+  // and 6 has no interior optimum: from the default config's values it runs to the upper bound
+  // of its range (1e6), from the extended carcass's old calibration (compliance 0.94, tread
+  // 2.33 MPa) to the lower one (1e-3). Either way the value must be flagged with its side, the
+  // interior tread modulus not.
+  const auto rep = validate_footprints(
+      kConfig,
+      {"modal.extend_orders=true",
+       "validation.calibrate=[modal.extension_bending_s2_rad2_s2, tread.modulus_MPa]"},
+      read_footprint_measurements(kTable3));
+  ASSERT_EQ(rep.calibration.values.size(), 2u);
+  const double s2 = rep.calibration.values[0];
+  ASSERT_TRUE(s2 < 1.01e-3 || s2 > 0.99e6) << s2;
+  EXPECT_EQ(rep.calibration.at_bound, (std::vector<std::string>{s2 < 1 ? "lower" : "upper", ""}));
+  const auto plain = validate_footprints(kConfig, {}, read_footprint_measurements(kTable3));
+  EXPECT_EQ(plain.calibration.at_bound, (std::vector<std::string>{"", ""}));
+}
+
 TEST(Validation, CalibrationRecoversPlantedParameters) {
   // Round trip: "measurements" made by the model itself with planted tread modulus and
   // compliance scale are calibrated back from two rows.

@@ -64,6 +64,9 @@ struct Calibration {
   double rms_rel_residual = 0;  ///< on the calibration rows
   int evaluations = 0;
   bool converged = false;
+  /// Per key: "lower" or "upper" when the value ended within 0.1 % of its search range's bound
+  /// (the rows only bound it from one side, or a better optimum lies across the range), else "".
+  std::vector<std::string> at_bound;
 };
 
 struct ValidationReport {
@@ -71,7 +74,7 @@ struct ValidationReport {
   std::map<std::string, double> rms_rel_error;  ///< per observable, predicted rows only
   std::map<std::string, int> predicted_rows;    ///< count per observable
   Calibration calibration;
-  std::vector<FootprintResult> footprints;      ///< final model, one per row
+  std::vector<FootprintResult> footprints;  ///< final model, one per row
   TyreModel model;
   bool with_conditions = false;  ///< rows carry their own conditions (read_measurements())
 };
