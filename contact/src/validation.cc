@@ -21,9 +21,6 @@ struct Calibratable {
   double min, max;  ///< physically plausible range searched by the calibration
 };
 
-/// A calibrated value this close (relative) to a bound of its range is reported as at the bound.
-constexpr double kAtBound = 1e-3;
-
 /// Scalar config keys that may be calibrated.
 const std::map<std::string, Calibratable>& calibratable() {
   static const std::map<std::string, Calibratable> keys = {
@@ -188,6 +185,15 @@ std::vector<MeasuredFootprint> read_validation_measurements(const std::string& p
   return out;
 }
 
+std::string range_bound_side(double value, double min, double max, bool log_scale) {
+  const double span = log_scale ? std::log(max / min) : max - min;
+  const double lo = log_scale ? std::log(value / min) : value - min;
+  const double hi = log_scale ? std::log(max / value) : max - value;
+  if (lo < 1e-3 * span) return "lower";
+  if (hi < 1e-3 * span) return "upper";
+  return "";
+}
+
 ValidationReport validate_footprints(const std::string& config_path,
                                      const std::vector<std::string>& overrides,
                                      const std::vector<MeasuredFootprint>& measured) {
@@ -282,9 +288,7 @@ ValidationReport validate_footprints(const std::string& config_path,
       const double v = std::exp(x(static_cast<Eigen::Index>(k)));
       const auto& range = calibratable().at(cal.keys[k]);
       cal.values.push_back(v);
-      cal.at_bound.push_back(v <= range.min * (1 + kAtBound)   ? "lower"
-                             : v >= range.max * (1 - kAtBound) ? "upper"
-                                                               : "");
+      cal.at_bound.push_back(range_bound_side(v, range.min, range.max, true));  // log-fitted
     }
     if (cal.rms_rel_residual > 1e3) {
       throw ComputationError("calibration found no parameters within their plausible ranges");

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "modaltyre/contact/validation.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::discover {
@@ -305,11 +306,8 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     for (std::size_t i = 0; i < chosen.variant.parameters.size(); ++i) {
       const auto& p = chosen.variant.parameters[i];
       if (!ne.parameters.count(p.key)) continue;
-      const double v = chosen.fit.values[i];
-      const double span = p.log_scale ? std::log(p.max / p.min) : p.max - p.min;
-      const double lo = p.log_scale ? std::log(v / p.min) : v - p.min;
-      const double hi = p.log_scale ? std::log(p.max / v) : p.max - v;
-      if (std::min(lo, hi) < 1e-3 * span) ne.at_bound.push_back(p.key);
+      if (!contact::range_bound_side(chosen.fit.values[i], p.min, p.max, p.log_scale).empty())
+        ne.at_bound.push_back(p.key);
     }
     ne.delta_bic = current.fit.bic - chosen.fit.bic;
     ne.cv_rms_before = current.cv.rms_all;

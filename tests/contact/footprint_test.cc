@@ -202,6 +202,16 @@ TEST(Validation, CalibratedValueAtTheBoundOfItsRangeIsFlagged) {
   EXPECT_EQ(plain.calibration.at_bound, (std::vector<std::string>{"", ""}));
 }
 
+TEST(Validation, RangeBoundSideUsesOneThousandthOfTheSpan) {
+  EXPECT_EQ(range_bound_side(0.0005, 0, 1, false), "lower");  // linear span 1
+  EXPECT_EQ(range_bound_side(0.002, 0, 1, false), "");
+  EXPECT_EQ(range_bound_side(0.9995, 0, 1, false), "upper");
+  // Log span of [1e-3, 1e6] is ln 1e9 = 20.7: the threshold is a factor exp(0.0207) = 1.021.
+  EXPECT_EQ(range_bound_side(1.02e-3, 1e-3, 1e6, true), "lower");
+  EXPECT_EQ(range_bound_side(1.03e-3, 1e-3, 1e6, true), "");
+  EXPECT_EQ(range_bound_side(0.985e6, 1e-3, 1e6, true), "upper");
+}
+
 TEST(Validation, CalibrationRecoversPlantedParameters) {
   // Round trip: "measurements" made by the model itself with planted tread modulus and
   // compliance scale are calibrated back from two rows.

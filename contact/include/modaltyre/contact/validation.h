@@ -79,6 +79,11 @@ struct ValidationReport {
   bool with_conditions = false;  ///< rows carry their own conditions (read_measurements())
 };
 
+/// "lower" or "upper" when a fitted value lies within 1e-3 of its search range's span (of the
+/// logarithms when `log_scale`) from that bound, else "": the data then bound the parameter from
+/// one side only, or a better optimum lies across the range. Used by validate and discover.
+std::string range_bound_side(double value, double min, double max, bool log_scale);
+
 /// Validates the config at `config_path` (with overrides) against measurements, calibrating the
 /// parameters the config's `validation:` section names on the rows it names.
 ValidationReport validate_footprints(const std::string& config_path,
