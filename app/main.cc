@@ -1,6 +1,8 @@
 // modaltyre: command-line front end. Exit codes: 0 success, 1 a computation failed (with its
 // reason and residual), 2 bad input or usage (with file, line and key).
+#include <csignal>
 #include <iostream>
+#include <string>
 
 #include "cli_support.h"
 #include "commands.h"
@@ -20,6 +22,24 @@ int main(int argc, char** argv) {
   modaltyre::app::register_transient(app);
   modaltyre::app::register_effects(app);
   modaltyre::app::register_discover(app);
+
+  // A file-size limit (ulimit -f) then fails the write with EFBIG, which the atomic writer
+  // reports and cleans up, instead of killing the program with a half-written temporary.
+  std::signal(SIGXFSZ, SIG_IGN);
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string name = argv[1];
+    std::string names;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      known = known || sub->get_name() == name;
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::cerr << "error: unknown command '" << name << "'; the commands are: " << names
+                << " (modaltyre <command> --help for each)\n";
+      return 2;
+    }
+  }
 
   try {
     app.parse(argc, argv);

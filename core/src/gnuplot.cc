@@ -1,28 +1,117 @@
 #include "modaltyre/core/gnuplot.h"
 
-#include <unistd.h>
-
-#include <cstdio>
-#include <cstdlib>
+#include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
+#include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/subprocess.h"
 
 namespace modaltyre {
 namespace {
 
-std::string quote(const std::string& s) {
-  std::string out = "\"";
+constexpr double kGnuplotTimeout_s = 120.0;
+constexpr std::size_t kMaxImageBytes = 256u << 20;
+
+// Keyword arguments (legend placement, plot style) come from the program, never from input;
+// they are still reduced to letters, digits and spaces so that nothing else can reach gnuplot.
+std::string keywords_only(const std::string& s) {
+  std::string out;
   for (char c : s) {
-    if (c == '"' || c == '\\') out.push_back('\\');
-    out.push_back(c);
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == ' ') out.push_back(c);
   }
-  return out + "\"";
+  return out;
+}
+
+void write_number(std::ostream& out, double v) {
+  if (std::isfinite(v)) {
+    out << v;
+  } else {
+    out << "NaN";  // gnuplot leaves the point out
+  }
+}
+
+// A complete image: gnuplot writes the closing tag (SVG) or IEND chunk (PNG) last.
+bool image_is_complete(const std::string& bytes, const std::string& ext) {
+  if (ext == ".svg") return bytes.find("</svg>") != std::string::npos;
+  static const std::string png_magic = "\x89PNG\r\n\x1a\n";
+  return bytes.rfind(png_magic, 0) == 0 && bytes.find("IEND") != std::string::npos;
+}
+
+std::string first_line(const std::string& text) {
+  const auto end = text.find('\n');
+  return text.substr(0, std::min<std::size_t>(end, 300));
 }
 
 }  // namespace
+
+std::string gnuplot_quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) {
+    if (c == '\'') {
+      out += "''";
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      out.push_back(' ');  // a newline would end the command
+    } else {
+      out.push_back(c);
+    }
+  }
+  return out + "'";
+}
+
+std::string gnuplot_script(const PlotFigure& figure, const std::string& terminal) {
+  std::ostringstream gp;
+  const int n = static_cast<int>(figure.panels.size());
+  const int cols = n <= 3 ? std::max(n, 1) : 2;
+  const int rows = (std::max(n, 1) + cols - 1) / cols;
+  gp << "set terminal " << terminal << " size " << figure.width_px << ","
+     << figure.height_px * rows << "\n";
+  // Data first, as inline datablocks: one per series, no file names anywhere.
+  int block = 0;
+  for (const auto& panel : figure.panels) {
+    for (const auto& ser : panel.series) {
+      gp << "$d" << block++ << " << EOD\n";
+      for (std::size_t i = 0; i < ser.x.size() && i < ser.y.size(); ++i) {
+        write_number(gp, ser.x[i]);
+        gp << " ";
+        write_number(gp, ser.y[i]);
+        gp << "\n";
+      }
+      gp << "EOD\n";
+    }
+  }
+  gp << "set grid lc rgb '#dddddd'\n";
+  if (n > 1) gp << "set multiplot layout " << rows << "," << cols << "\n";
+  block = 0;
+  for (const auto& panel : figure.panels) {
+    gp << "set title " << gnuplot_quote(panel.title) << "\n";
+    gp << "set key " << keywords_only(panel.key) << "\n";
+    if (panel.xmax > panel.xmin) {
+      gp << "set xrange [" << panel.xmin << ":" << panel.xmax << "]\n";
+    } else {
+      gp << "set autoscale x\n";
+    }
+    if (panel.ymax > panel.ymin) {
+      gp << "set yrange [" << panel.ymin << ":" << panel.ymax << "]\n";
+    } else {
+      gp << "set autoscale y\n";
+    }
+    gp << "set xlabel " << gnuplot_quote(panel.xlabel) << "\nset ylabel "
+       << gnuplot_quote(panel.ylabel) << "\n";
+    std::string plot = "plot ";
+    for (std::size_t s = 0; s < panel.series.size(); ++s) {
+      const auto& ser = panel.series[s];
+      const std::string style =
+          ser.style == "points" ? "points pt 7 ps 1.2" : keywords_only(ser.style) + " lw 2";
+      plot += (s ? ", " : "") + std::string("$d") + std::to_string(block++) + " with " + style +
+              " title " + gnuplot_quote(ser.title);
+    }
+    gp << (panel.series.empty() ? "plot 0 notitle" : plot) << "\n";
+  }
+  if (n > 1) gp << "unset multiplot\n";
+  return gp.str();
+}
 
 void render_plot(const PlotFigure& figure, const std::string& path) {
   namespace fs = std::filesystem;
@@ -35,67 +124,28 @@ void render_plot(const PlotFigure& figure, const std::string& path) {
   } else {
     throw InputError({path, 0, "--plot"}, "plot file must end in .svg or .png");
   }
-  const fs::path target(path);
-  const std::string stem = "." + target.filename().string() + std::to_string(getpid());
-  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  const fs::path data = dir / (stem + ".dat");
-  const fs::path script = dir / (stem + ".gp");
-  const fs::path tmp_out = dir / (stem + ext);
-
-  std::ostringstream gp;
-  const int n = static_cast<int>(figure.panels.size());
-  const int cols = n <= 3 ? n : 2;
-  const int rows = (n + cols - 1) / cols;
-  gp << "set terminal " << terminal << " size " << figure.width_px * (cols > 1 ? 1 : 1) << ","
-     << figure.height_px * rows << "\n";
-  gp << "set output " << quote(tmp_out.string()) << "\n";
-  gp << "set grid lc rgb '#dddddd'\n";
-  if (n > 1) gp << "set multiplot layout " << rows << "," << cols << "\n";
-  {
-    std::ofstream d(data);
-    if (!d) throw InputError({path, 0, "--plot"}, "cannot write next to the plot file");
-    int block = 0;
-    for (const auto& panel : figure.panels) {
-      gp << "set title " << quote(panel.title) << "\n";
-      gp << "set key " << panel.key << "\n";
-      if (panel.xmax > panel.xmin) {
-        gp << "set xrange [" << panel.xmin << ":" << panel.xmax << "]\n";
-      } else {
-        gp << "set autoscale x\n";
-      }
-      gp << "set xlabel " << quote(panel.xlabel) << "\nset ylabel " << quote(panel.ylabel) << "\n";
-      std::string plot = "plot ";
-      for (std::size_t s = 0; s < panel.series.size(); ++s) {
-        const auto& ser = panel.series[s];
-        for (std::size_t i = 0; i < ser.x.size() && i < ser.y.size(); ++i) {
-          d << ser.x[i] << " " << ser.y[i] << "\n";
-        }
-        d << "\n\n";
-        std::string style = ser.style == "points" ? "points pt 7 ps 1.2" : ser.style + " lw 2";
-        plot += (s ? ", " : "") + quote(data.string()) + " index " + std::to_string(block++) +
-                " with " + style + " title " + quote(ser.title);
-      }
-      gp << (panel.series.empty() ? "plot 0 notitle" : plot) << "\n";
-    }
-  }
-  if (n > 1) gp << "unset multiplot\n";
-  gp << "set output\n";
-  {
-    std::ofstream s(script);
-    s << gp.str();
-  }
-  const std::string cmd = "gnuplot " + quote(script.string()) + " 2>/dev/null";
-  const int rc = std::system(cmd.c_str());
   std::error_code ec;
-  fs::remove(data, ec);
-  fs::remove(script, ec);
-  if (rc != 0 || !fs::exists(tmp_out)) {
-    fs::remove(tmp_out, ec);
-    throw ComputationError("plotting failed: gnuplot is missing or returned an error (install "
-                           "the Debian package gnuplot-nox)");
+  if (fs::is_directory(path, ec)) {
+    throw InputError({path, 0, "--plot"}, "is a directory; give a file name ending in " + ext);
   }
-  fs::rename(tmp_out, target, ec);
-  if (ec) throw InputError({path, 0, "--plot"}, "cannot move the finished plot into place");
+  // gnuplot's image goes to its stdout (no `set output`): it is held in memory, checked, and
+  // only then written; a failed run leaves nothing behind.
+  const SubprocessResult run =
+      run_subprocess({"gnuplot"}, gnuplot_script(figure, terminal), kGnuplotTimeout_s,
+                     kMaxImageBytes);
+  if (!run.started) {
+    throw ComputationError("plotting failed: gnuplot was not found (install the Debian package "
+                           "gnuplot-nox)");
+  }
+  if (run.timed_out || run.exit_status != 0 || !image_is_complete(run.out, ext)) {
+    std::string why = run.timed_out ? "it ran longer than 120 s"
+                      : run.exit_status != 0
+                          ? "it exited with status " + std::to_string(run.exit_status)
+                          : "its image is incomplete (" + std::to_string(run.out.size()) + " bytes)";
+    if (!run.err.empty()) why += ": " + first_line(run.err);
+    throw ComputationError("plotting " + path + " failed: gnuplot " + why);
+  }
+  write_file_atomically(path, run.out);
 }
 
 }  // namespace modaltyre

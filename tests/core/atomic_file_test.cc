@@ -2,12 +2,14 @@
 #include "modaltyre/core/atomic_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "modaltyre/core/errors.h"
 
@@ -71,6 +73,51 @@ TEST_F(AtomicFile, DirectoryTarget) {
   EXPECT_THROW(write_file_atomically(d.string(), "x"), InputError);
   EXPECT_TRUE(fs::is_directory(d));
   EXPECT_EQ(entries(), 1u);
+}
+
+
+// A symbolic link stays a link; the file it points to gets the content.
+TEST_F(AtomicFile, SymlinkIsFollowedNotReplaced) {
+  const fs::path real = dir_ / "real.csv", link = dir_ / "link.csv";
+  std::ofstream(real) << "old";
+  fs::create_symlink(real, link);
+  write_file_atomically(link.string(), "new");
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(slurp(real), "new");
+  EXPECT_EQ(entries(), 2u);
+}
+
+// An overwrite keeps the file's permissions.
+TEST_F(AtomicFile, OverwriteKeepsPermissions) {
+  const fs::path p = dir_ / "out.csv";
+  std::ofstream(p) << "old";
+  fs::permissions(p, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  write_file_atomically(p.string(), "new");
+  EXPECT_EQ(fs::status(p).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+}
+
+// Devices are written in place, never replaced by a regular file (e.g. /dev/null run as
+// root); a device that refuses the bytes (/dev/full: "no space left") is an error.
+TEST_F(AtomicFile, DevicesAreWrittenInPlace) {
+  write_file_atomically("/dev/null", "discarded");
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  if (fs::exists("/dev/full")) {
+    EXPECT_THROW(write_file_atomically("/dev/full", std::string(1 << 16, 'x')), InputError);
+    EXPECT_TRUE(fs::is_character_file("/dev/full"));
+  }
+}
+
+// A named pipe is written through (a reader gets the bytes), not replaced.
+TEST_F(AtomicFile, NamedPipeIsWrittenThrough) {
+  const fs::path fifo = dir_ / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string got;
+  std::thread reader([&] { got = slurp(fifo); });
+  write_file_atomically(fifo.string(), "through the pipe");
+  reader.join();
+  EXPECT_EQ(got, "through the pipe");
+  EXPECT_TRUE(fs::is_fifo(fifo));
 }
 
 }  // namespace

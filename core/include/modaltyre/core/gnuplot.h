@@ -1,6 +1,8 @@
 #pragma once
 // Publication-style plots through Debian's gnuplot (SVG or PNG chosen by the file extension).
-// The library describes the figure; gnuplot draws it. The output is written atomically.
+// The library describes the figure; gnuplot draws it. gnuplot runs without a shell, reads its
+// script (data included) on stdin and writes the image to stdout; the image is checked (exit
+// status, complete file) and written through write_file_atomically: whole or not at all.
 #include <string>
 #include <vector>
 
@@ -20,6 +22,7 @@ struct PlotPanel {
   std::vector<PlotSeries> series;
   std::string key = "top left box opaque";  ///< gnuplot legend placement, e.g. "below"
   double xmin = 0, xmax = 0;                ///< fixed x range when xmax > xmin
+  double ymin = 0, ymax = 0;  ///< fixed y range when ymax > ymin
 };
 
 struct PlotFigure {
@@ -28,8 +31,17 @@ struct PlotFigure {
   int height_px = 560;
 };
 
-/// Renders the figure to `path` (.svg or .png). Throws InputError for an unknown extension,
-/// ComputationError when gnuplot is missing or fails.
+/// Renders the figure to `path` (.svg or .png). Throws InputError for an unknown extension or
+/// an unwritable path, ComputationError when gnuplot is missing or fails.
 void render_plot(const PlotFigure& figure, const std::string& path);
+
+/// The gnuplot script for the figure (data inline), image to stdout. Every text of the figure
+/// is a single-quoted gnuplot string with control characters removed, so no title or label
+/// can end the command or run a backquoted shell command. Exposed for tests.
+std::string gnuplot_script(const PlotFigure& figure, const std::string& terminal);
+
+/// A gnuplot single-quoted string literal for arbitrary text (no escapes are interpreted
+/// inside single quotes; a quote is doubled; control characters become spaces).
+std::string gnuplot_quote(const std::string& text);
 
 }  // namespace modaltyre
