@@ -139,7 +139,9 @@ void check_number(const std::string& key, const SweepValue& v, const InputLocati
   if (key == "speed_kmh" && !(x >= 0 && x <= 400)) {
     throw InputError(at, "speed must be in [0, 400] km/h, got " + v.text);
   }
-  if (std::abs(x) > 1e7) throw InputError(at, "value " + v.text + " is out of range");
+  if (std::abs(x) > 1e7) {
+    throw InputError(at, "value " + v.text + " is out of range [-1e7, 1e7]");
+  }
 }
 
 // A condition value, named at the line of the value itself when it has one.
@@ -255,12 +257,7 @@ SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
     SweepAssignment a;
     a.key = o.substr(0, eq);
     a.where = {"--set", 0, a.key};
-    YAML::Node n;
-    try {
-      n = YAML::Load(o.substr(eq + 1));
-    } catch (const YAML::Exception& e) {
-      throw InputError(a.where, "cannot parse value '" + o.substr(eq + 1) + "': " + e.msg);
-    }
+    const YAML::Node n = parse_set_value(o.substr(eq + 1), a.key);
     if (!n || n.IsNull()) throw InputError(a.where, "missing value");
     a.value = scalar_value(n);
     a.value.line = 0;
@@ -283,14 +280,7 @@ SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
 }
 
 SweepSpec read_sweep_spec(const std::string& path, const std::vector<std::string>& overrides) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError({path, 0, ""}, "file not found");
-  if (fs::is_directory(path, ec)) throw InputError({path, 0, ""}, "is a directory, not a sweep file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, ""}, "cannot open file for reading");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return parse_sweep_spec(buf.str(), path, overrides);
+  return parse_sweep_spec(read_yaml_file(path, "a sweep file"), path, overrides);
 }
 
 SweepPlan plan_sweep(const SweepSpec& spec) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "modaltyre/core/csv.h"
+#include "modaltyre/core/yaml_guard.h"
 
 namespace modaltyre {
 namespace {
@@ -30,12 +31,7 @@ void apply_override(ConfigTree::State& st, const std::string& assignment) {
   for (const auto& p : parts) {
     if (p.empty()) throw InputError({"--set", 0, key}, "empty component in dotted key");
   }
-  YAML::Node parsed;
-  try {
-    parsed = YAML::Load(value);
-  } catch (const YAML::Exception& e) {
-    throw InputError({"--set", 0, key}, "cannot parse value '" + value + "': " + e.msg);
-  }
+  const YAML::Node parsed = parse_set_value(value, key);
   YAML::Node cur = st.root;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     if (cur[parts[i]] && !cur[parts[i]].IsMap()) {
@@ -79,11 +75,11 @@ void collect_unconsumed(const ConfigTree::State& st, const YAML::Node& node,
 
 }  // namespace
 
-ConfigTree ConfigTree::load(const std::string& path, const std::vector<std::string>& overrides) {
+std::string read_yaml_file(const std::string& path, const std::string& what) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError({path, 0, ""}, "file not found");
   if (std::filesystem::is_directory(path, ec)) {
-    throw InputError({path, 0, ""}, "is a directory, not a YAML config");
+    throw InputError({path, 0, ""}, "is a directory, not " + what);
   }
   // A named pipe or device would block the read (or never end); a config is a few kB, so a
   // file of megabytes is the wrong file, not a config to parse into memory.
@@ -94,17 +90,35 @@ ConfigTree ConfigTree::load(const std::string& path, const std::vector<std::stri
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (!ec && size > kMaxConfigBytes) {
     throw InputError({path, 0, ""}, "is " + std::to_string(size >> 20) +
-                                        " MB; refusing YAML configs over 16 MB (is it the right "
+                                        " MB; refusing YAML files over 16 MB (is it the right "
                                         "file?)");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, ""}, "cannot open file for reading");
   std::stringstream buf;
   buf << in.rdbuf();
-  return from_string(buf.str(), path, overrides);
+  return buf.str();
+}
+
+ConfigTree ConfigTree::load(const std::string& path, const std::vector<std::string>& overrides) {
+  return from_string(read_yaml_file(path, "a YAML config"), path, overrides);
+}
+
+YAML::Node parse_set_value(const std::string& value, const std::string& key) {
+  try {
+    check_yaml_structure(value, "--set");
+    return YAML::Load(value);
+  } catch (const InputError& e) {
+    const std::string all = e.what(), prefix = format_location(e.where(), "");
+    throw InputError({"--set", 0, key},
+                     all.rfind(prefix, 0) == 0 ? all.substr(prefix.size()) : all);
+  } catch (const YAML::Exception& e) {
+    throw InputError({"--set", 0, key}, "cannot parse value '" + value + "': " + e.msg);
+  }
 }
 
 YAML::Node parse_yaml(const std::string& text, const std::string& name) {
+  check_yaml_structure(text, name);
   try {
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {

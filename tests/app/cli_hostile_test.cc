@@ -106,4 +106,38 @@ TEST_F(CliHostile, ValidateReadsASweepStyleQuotedCsv) {
   EXPECT_NE(r.out.find("8321"), std::string::npos) << r.out;
 }
 
+// Issue 16 item 2: a key twice (here tread.modulus_MPa) used to keep the first value, exit 0.
+TEST_F(CliHostile, FootprintConfigWithAKeyTwice) {
+  std::string text = modaltyre_test::slurp(kConfig);
+  const std::string line = "  modulus_MPa: 0.99096\n";
+  const auto at = text.find(line);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + line.size(), "  modulus_MPa: 5.0\n");
+  const int first = static_cast<int>(std::count(text.begin(), text.begin() + at, '\n')) + 1;
+  const std::string p = write("twice.yaml", text);
+  expect_input_error(run_limited({"footprint", p}),
+                     {p + ":" + std::to_string(first + 1) + ": tread.modulus_MPa: ",
+                      "first at line " + std::to_string(first)});
+}
+
+// Issue 16 item 3: an alias bomb in a config or a sweep is refused at once.
+TEST_F(CliHostile, AliasBombsAreRefused) {
+  std::string bomb = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
+  for (int i = 1; i < 12; ++i) {
+    std::string items;
+    for (int k = 0; k < 10; ++k) items += (k ? ", *a" : "*a") + std::to_string(i - 1);
+    bomb += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [" + items + "]\n";
+  }
+  const std::string p = write("bomb.yaml", bomb);
+  expect_input_error(run_limited({"footprint", p}), {p + ":2: a1: ", "aliases"});
+  expect_input_error(run_limited({"sweep", p}), {p + ":2: a1: ", "aliases"});
+  expect_input_error(run_limited({"footprint", kConfig, "--set", "modal.x=[&a [1], *a]"}),
+                     {"--set: modal.x: ", "aliases"});
+}
+
+// Issue 16 item 3: the sweep reader now refuses devices like every other reader.
+TEST_F(CliHostile, SweepSpecThatIsADevice) {
+  expect_input_error(run_limited({"sweep", "/dev/zero"}), {"/dev/zero: ", "not a regular file"});
+}
+
 }  // namespace

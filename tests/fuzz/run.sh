@@ -3,10 +3,10 @@
 # each for a bounded time on a scratch copy of its seed corpus. Exit status non-zero on any
 # finding (crash, unexpected exception, sanitizer report, timeout, out-of-memory) or build error.
 #
-#   tests/fuzz/run.sh                     # 20 s per target (CI)
+#   tests/fuzz/run.sh                     # 60 s per target (CI)
 #   FUZZ_TIME=600 tests/fuzz/run.sh       # longer local run
 #   FUZZ_TARGETS="fuzz_csv fuzz_sweep" tests/fuzz/run.sh
-# Environment: FUZZ_BUILD_DIR (default build-fuzz), FUZZ_TIME (seconds per target, 20),
+# Environment: FUZZ_BUILD_DIR (default build-fuzz), FUZZ_TIME (seconds per target, 60),
 # FUZZ_JOBS (build parallelism, default: Ninja's), FUZZ_PARALLEL (targets fuzzed at once,
 # default: number of cores), FUZZ_TARGETS (default: all six), CC / CXX (default: clang-14 /
 # clang++-14 if installed, else clang / clang++).
@@ -18,7 +18,7 @@ cd "$(dirname "$0")/../.."
 root=$PWD
 
 build=${FUZZ_BUILD_DIR:-build-fuzz}
-time_per_target=${FUZZ_TIME:-20}
+time_per_target=${FUZZ_TIME:-60}
 targets=(${FUZZ_TARGETS:-fuzz_csv fuzz_config fuzz_hammer fuzz_measurements fuzz_sweep fuzz_rheology})
 
 pick() { for c in "$@"; do command -v "$c" >/dev/null 2>&1 && { echo "$c"; return; }; done; echo "$1"; }

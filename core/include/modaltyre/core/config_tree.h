@@ -20,8 +20,16 @@ namespace modaltyre {
 
 class ConfigSection;
 
-/// Parses YAML text; a syntax error is an InputError naming `name` and the line.
+/// Parses YAML text; a syntax error, a duplicate key or an alias is an InputError naming
+/// `name` and the line (see yaml_guard.h).
 YAML::Node parse_yaml(const std::string& text, const std::string& name);
+
+/// Reads a YAML file whole: refuses a missing file, a directory (naming `what`, e.g. "a sweep
+/// file"), a pipe or device, and files over 16 MB, each an InputError naming the path.
+std::string read_yaml_file(const std::string& path, const std::string& what);
+
+/// Parses the value of "--set key=value" with the same checks; errors name "--set" and `key`.
+YAML::Node parse_set_value(const std::string& value, const std::string& key);
 
 class ConfigTree {
  public:

@@ -1,0 +1,20 @@
+#pragma once
+// Structural checks of YAML input before it is loaded into a tree (issue 16):
+//  - a key given twice in one mapping (or a section twice) is an error naming both lines;
+//    yaml-cpp would silently keep the first value;
+//  - aliases (*name, and merge keys <<: *name) are refused: a few lines of anchors and aliases
+//    expand into exponentially many nodes ("billion laughs"), and a config never needs them;
+//  - a second document ("---") is refused instead of being silently ignored;
+//  - the number of nodes is bounded.
+#include <string>
+
+namespace modaltyre {
+
+/// Maximum number of YAML nodes (keys, values, list items) in one input.
+inline constexpr long kMaxYamlNodes = 1'000'000;
+
+/// Throws InputError({name, line, dotted key}, ...) for the first problem above; YAML syntax
+/// errors are left to the loader (not reported here).
+void check_yaml_structure(const std::string& text, const std::string& name);
+
+}  // namespace modaltyre
