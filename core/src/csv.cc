@@ -262,6 +262,14 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
           std::string known;
           for (const auto& k : schema.required) known += (known.empty() ? "" : ", ") + k;
           for (const auto& k : schema.optional) known += ", " + k + " (optional)";
+          // A semicolon-separated file (a spreadsheet's export in many locales) arrives as
+          // one long header cell: say so instead of listing columns.
+          if (name.find(';') != std::string::npos) {
+            throw InputError({path, line_no, printable(name)},
+                             "the header is separated by ';' but the separator is ','; save the "
+                             "file as comma-separated CSV (decimal point '.'), columns: " +
+                                 known);
+          }
           throw InputError({path, line_no, printable(name)}, "unknown column; expected: " + known);
         }
         if (contains(table.columns_, name))

@@ -110,6 +110,15 @@ TEST_F(CsvTest, UnknownColumn) {
   EXPECT_EQ(e.where().key, "z");
 }
 
+// A semicolon-separated export is named as such (issue 16 item 9), not as an unknown column.
+TEST_F(CsvTest, SemicolonSeparatorIsNamed) {
+  const auto p = write("semicolon.csv", "x;y\n1,5;2\n");
+  const std::string msg = error_of(p).what();
+  EXPECT_NE(msg.find("separated by ';'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("separator is ','"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find("unknown column"), std::string::npos) << msg;
+}
+
 // NaN, infinities and text in a numeric column are each named by file, line and column.
 TEST_F(CsvTest, NonFiniteAndTextCells) {
   for (const std::string cell : {"nan", "inf", "-inf", "abc", "", "1.2.3"}) {
