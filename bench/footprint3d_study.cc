@@ -203,7 +203,7 @@ int main(int argc, char** argv) try {
     std::printf("%3zu %7.0f  %-5s", q + 1, m.load_N, cal ? "cal" : "pred");
     for (int k = 0; k < 3; ++k) {
       const double e = pred[k] / meas[k] - 1;
-      std::printf("  %5.0f %6.1f %+6.1f%%", meas[k], pred[k], 100 * e);
+      std::printf("  %5.0f %6.2f %+6.1f%%", meas[k], pred[k], 100 * e);
       if (!cal) se[k] += e * e;
     }
     np += !cal;

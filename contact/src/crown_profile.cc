@@ -20,9 +20,19 @@ ShoulderArc shoulder_arc(const CrownProfile& c) {
   return {y1, z1, y1 - r2 * s, z1 + r2 * co, r2};
 }
 
-/// Steep continuation past a vertical tangent or the last tabulated slope (never reached
+/// Steep continuation past a shoulder arc's vertical tangent (never reached
 /// inside a valid tread width, see patch3d.h).
 constexpr double kWallSlope = 1e3;
+
+/// v(u) linear between the points of a table with u and v both strictly increasing (the contour
+/// and its inverse), the last segment's slope past the end; u >= us[0].
+double table_lookup(const std::vector<double>& us, const std::vector<double>& vs, double u) {
+  const std::size_t n = us.size();
+  std::size_t k = std::upper_bound(us.begin(), us.end(), u) - us.begin();
+  k = std::min(k, n - 1);  // past the end: extend the last segment
+  const double t = (u - us[k - 1]) / (us[k] - us[k - 1]);
+  return vs[k - 1] + t * (vs[k] - vs[k - 1]);
+}
 
 }  // namespace
 
@@ -40,18 +50,8 @@ double CrownProfile::drop_m(double y) const {
       if (u >= s.r2) return s.cz + kWallSlope * (u - s.r2);
       return s.cz - std::sqrt(s.r2 * s.r2 - u * u);
     }
-    case CrownShape::contour: {
-      const auto& ys = contour_y_m;
-      const auto& zs = contour_drop_m;
-      const std::size_t n = ys.size();
-      if (a >= ys[n - 1]) {
-        const double slope = (zs[n - 1] - zs[n - 2]) / (ys[n - 1] - ys[n - 2]);
-        return zs[n - 1] + slope * (a - ys[n - 1]);
-      }
-      const std::size_t k = std::upper_bound(ys.begin(), ys.end(), a) - ys.begin();
-      const double t = (a - ys[k - 1]) / (ys[k] - ys[k - 1]);
-      return zs[k - 1] + t * (zs[k] - zs[k - 1]);
-    }
+    case CrownShape::contour:
+      return table_lookup(contour_y_m, contour_drop_m, a);
   }
   return 0.0;
 }
@@ -70,18 +70,8 @@ double CrownProfile::half_width_m(double d) const {
       if (d >= s.cz) return s.cy + s.r2 + (d - s.cz) / kWallSlope;
       return s.cy + std::sqrt(s.r2 * s.r2 - (s.cz - d) * (s.cz - d));
     }
-    case CrownShape::contour: {
-      const auto& ys = contour_y_m;
-      const auto& zs = contour_drop_m;
-      const std::size_t n = zs.size();
-      if (d >= zs[n - 1]) {
-        const double slope = (zs[n - 1] - zs[n - 2]) / (ys[n - 1] - ys[n - 2]);
-        return ys[n - 1] + (d - zs[n - 1]) / slope;
-      }
-      const std::size_t k = std::upper_bound(zs.begin(), zs.end(), d) - zs.begin();
-      const double t = (d - zs[k - 1]) / (zs[k] - zs[k - 1]);
-      return ys[k - 1] + t * (ys[k] - ys[k - 1]);
-    }
+    case CrownShape::contour:
+      return table_lookup(contour_drop_m, contour_y_m, d);
   }
   return 0.0;
 }
