@@ -11,35 +11,19 @@
 
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/core/errors.h"
+#include "patch3d_fixture.h"
 
 namespace {
 
 using namespace modaltyre;
 using namespace modaltyre::contact;
+using namespace modaltyre::contact::testing;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_3d.yaml";
-const std::vector<std::string> kCoarse = {"contact.unit_length_mm=2", "contact.window_mm=300",
-                                          "footprint_3d.lateral_cell_mm=5"};
 // A flexible belt whose width stays inside the tread (free strip on the belt's foundation).
 const std::vector<std::string> kFlexible = {"footprint_3d.crown.radius_mm=300",
                                             "footprint_3d.lateral_belt.supports=free",
                                             "footprint_3d.lateral_belt.bending_stiffness_Nm=0.5",
                                             "footprint_3d.lateral_belt.foundation_MPa_per_m=100"};
-constexpr double kExact = 1e-9;        // active-set solutions: rounding of the inner solves
-constexpr double kMeshChange = 0.005;  // the mesh-convergence bound
-
-std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
-struct Tyre3d {
-  Tyre3dConfig config;
-  TyreModel model;
-  explicit Tyre3d(const std::vector<std::string>& overrides)
-      : config(load_tyre3d_config(kConfig, overrides)), model(build_tyre_model(config.tyre)) {}
-};
-
 LateralBelt belt(BeltSupports supports, double D, double k = 0) {
   LateralBelt b;
   b.enabled = true;
@@ -133,24 +117,12 @@ TEST(LateralBelt, StiffBeltEqualsTheLaterallyRigidPatch) {
 }
 
 TEST(LateralBelt, ReductionEqualsTheFullCellSolve) {
-  for (const auto& variant :
-       {kFlexible, std::vector<std::string>{"footprint_3d.lateral_belt.bending_stiffness_Nm=50",
-                                            "footprint_3d.lateral_belt.tension_N_per_m=12000",
-                                            "footprint_3d.lateral_belt.support_span_mm=170"}}) {
+  const std::vector<std::string> shoulders = {"footprint_3d.lateral_belt.bending_stiffness_Nm=50",
+                                              "footprint_3d.lateral_belt.tension_N_per_m=12000",
+                                              "footprint_3d.lateral_belt.support_span_mm=170"};
+  for (const auto& variant : {kFlexible, shoulders}) {
     const Tyre3d s(with(kCoarse, variant));
-    const Patch3d patch(s.model, s.config.patch);
-    for (double F : {2131.0, 8321.0}) {
-      const Patch3dResult red = patch.solve(F), full = patch.solve_cells(F);
-      ASSERT_TRUE(red.converged) << red.message;
-      ASSERT_TRUE(full.converged) << full.message;
-      EXPECT_NEAR(red.sinking_m, full.sinking_m, kExact * full.sinking_m);
-      const double fmax = *std::max_element(full.cell_force_N.begin(), full.cell_force_N.end());
-      for (std::size_t k = 0; k < red.cell_force_N.size(); ++k) {
-        EXPECT_NEAR(red.cell_force_N[k], full.cell_force_N[k], kExact * fmax) << "cell " << k;
-      }
-      EXPECT_NEAR(red.width_m, full.width_m, kExact * full.width_m);
-      EXPECT_NEAR(red.length_m, full.length_m, kExact * full.length_m);
-    }
+    expect_reduction_equals_full_cell_solve(Patch3d(s.model, s.config.patch), {2131, 8321});
   }
 }
 
@@ -198,47 +170,21 @@ TEST(LateralBelt, FlatCrownOnARigidCarcassIsABeamOnTheTreadFoundation) {
 
 TEST(LateralBelt, SymmetricAcrossTheTread) {
   const Tyre3d s(with(kCoarse, kFlexible));
-  const Patch3d patch(s.model, s.config.patch);
-  const Patch3dResult r = patch.solve(5478);
-  ASSERT_TRUE(r.converged) << r.message;
-  const int ny = r.columns;
-  for (int i = 0; i < r.sections; ++i) {
-    for (int j = 0; j < ny / 2; ++j) {
-      EXPECT_NEAR(r.cell_force(i, j), r.cell_force(i, ny - 1 - j), kExact * 5478);
-      EXPECT_NEAR(r.belt_deflection(i, j), r.belt_deflection(i, ny - 1 - j), kExact * r.sinking_m);
-    }
-  }
+  expect_symmetric_in_y(Patch3d(s.model, s.config.patch).solve(5478));
 }
 
 TEST(LateralBelt, EquilibriumComplementarityNoTensionNoPenetration) {
   const Tyre3d s(kFlexible);
   const Patch3d patch(s.model, s.config.patch);
   for (const Patch3dResult& r : patch.solve_all({2131, 5478, 8321})) {
-    ASSERT_TRUE(r.converged) << r.message;
-    double sum = 0;
-    for (double f : r.cell_force_N) {
-      EXPECT_GE(f, 0.0);
-      sum += f;
-    }
-    EXPECT_NEAR(sum, r.load_N, kExact * r.load_N);
-    EXPECT_LT(r.complementarity_residual, kExact);
-    EXPECT_LT(r.max_penetration_m, kExact * r.sinking_m);
+    expect_equilibrium_and_complementarity(r);
     EXPECT_GT(r.width_m, 0.0);
     EXPECT_LT(r.width_m, s.config.patch.tread_width_m);  // the edge is inside the tread here
   }
 }
 
 TEST(LateralBelt, HalvingTheLateralCellChangesSinkingLengthWidthByLessThanHalfAPercent) {
-  const Tyre3d coarse(kFlexible), fine(with(kFlexible, {"footprint_3d.lateral_cell_mm=1.25"}));
-  const Patch3d pc(coarse.model, coarse.config.patch), pf(fine.model, fine.config.patch);
-  const auto rc = pc.solve_all({2131, 8321});
-  const auto rf = pf.solve_all({2131, 8321});
-  for (std::size_t k = 0; k < rc.size(); ++k) {
-    ASSERT_TRUE(rc[k].converged && rf[k].converged);
-    EXPECT_NEAR(rc[k].sinking_m, rf[k].sinking_m, kMeshChange * rf[k].sinking_m);
-    EXPECT_NEAR(rc[k].length_m, rf[k].length_m, kMeshChange * rf[k].length_m);
-    EXPECT_NEAR(rc[k].width_m, rf[k].width_m, kMeshChange * rf[k].width_m);
-  }
+  expect_mesh_converged(kFlexible, with(kFlexible, {"footprint_3d.lateral_cell_mm=1.25"}));
 }
 
 TEST(LateralBelt, ConfigErrorsNameTheKey) {
