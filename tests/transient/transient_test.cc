@@ -1,6 +1,6 @@
 // Transient model: consistency with the static footprint, creep, rolling, free vibration,
 // energy, contact switching and input errors. Coarse meshes keep every test to seconds.
-#include "modaltyre/contact/transient.h"
+#include "modaltyre/transient/transient.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,10 @@
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/core/errors.h"
 
-namespace modaltyre::contact {
+namespace modaltyre::transient {
 namespace {
+
+using namespace modaltyre::contact;
 
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
 
@@ -381,4 +383,4 @@ TEST(TransientTest, IllPosedScenariosAreInputErrors) {
 }
 
 }  // namespace
-}  // namespace modaltyre::contact
+}  // namespace modaltyre::transient
