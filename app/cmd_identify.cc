@@ -19,7 +19,7 @@
 #include "commands.h"
 #include "modaltyre/contact/effects.h"
 #include "modaltyre/contact/predictor.h"
-#include "modaltyre/contact/stiffness_calibration.h"
+#include "modaltyre/studies/stiffness_calibration.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/config_tree.h"
@@ -401,7 +401,7 @@ struct IntoConfig {
 struct CarcassLevel {
   contact::TyreConfig fed;                                 ///< OUT with the calibrated scale
   std::unique_ptr<contact::FootprintPredictor> predictor;  ///< on OUT's model
-  contact::ScaleCalibration cal;
+  studies::ScaleCalibration cal;
 };
 
 CarcassLevel calibrate_carcass_level(const IdentifyArgs& a, const IntoConfig& into, double load_N,
@@ -412,7 +412,7 @@ CarcassLevel calibrate_carcass_level(const IdentifyArgs& a, const IntoConfig& in
       std::make_unique<contact::FootprintPredictor>(contact::build_tyre_model(level.fed));
   contact::OperatingConditions at = level.fed.default_conditions(load_N);
   at.pressure_kPa = level.fed.inflation_pressure_Pa * 1e-3;
-  level.cal = contact::calibrate_compliance_scale(*level.predictor, level.fed, at, target_mm);
+  level.cal = studies::calibrate_compliance_scale(*level.predictor, level.fed, at, target_mm);
   if (!level.cal.converged)
     throw ComputationError("identify " + a.method + " --into-config: " + level.cal.message);
   level.fed.compliance_scale = level.cal.compliance_scale;

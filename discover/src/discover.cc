@@ -9,14 +9,14 @@
 #include <set>
 #include <sstream>
 
-#include "modaltyre/contact/validation.h"
+#include "modaltyre/studies/validation.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::discover {
 namespace {
 
 using contact::EffectId;
-using contact::MeasurementSet;
+using studies::MeasurementSet;
 using contact::TyreConfig;
 
 std::string percent(double rel) {
@@ -28,7 +28,7 @@ std::string percent(double rel) {
 
 std::size_t distinct(const MeasurementSet& d, const std::string& condition) {
   std::set<double> v;
-  for (const auto& r : d.rows) v.insert(contact::condition_value(r.conditions, condition));
+  for (const auto& r : d.rows) v.insert(studies::condition_value(r.conditions, condition));
   return v.size();
 }
 
@@ -72,7 +72,7 @@ std::map<std::string, double> named_values(const Variant& v, const std::vector<d
 std::vector<RegimeFinding> locate(const MeasurementSet& d, const FitResult& base) {
   std::vector<RegimeFinding> out;
   std::vector<std::string> vars;
-  for (const auto& c : contact::condition_names()) {
+  for (const auto& c : studies::condition_names()) {
     if (distinct(d, c) >= 2) vars.push_back(c);
   }
   for (std::size_t o = 0; o < d.observables.size(); ++o) {
@@ -90,7 +90,7 @@ std::vector<RegimeFinding> locate(const MeasurementSet& d, const FitResult& base
     f.mean_residual = std::accumulate(res.begin(), res.end(), 0.0) / res.size();
     for (const auto& var : vars) {
       std::vector<double> x;
-      for (int r : rows) x.push_back(contact::condition_value(d.rows[r].conditions, var));
+      for (int r : rows) x.push_back(studies::condition_value(d.rows[r].conditions, var));
       const double r = pearson(x, res);
       if (std::abs(r) > std::abs(f.correlation)) f.correlation = r, f.variable = var;
     }
@@ -306,7 +306,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     for (std::size_t i = 0; i < chosen.variant.parameters.size(); ++i) {
       const auto& p = chosen.variant.parameters[i];
       if (!ne.parameters.count(p.key)) continue;
-      if (!contact::range_bound_side(chosen.fit.values[i], p.min, p.max, p.log_scale).empty())
+      if (!studies::range_bound_side(chosen.fit.values[i], p.min, p.max, p.log_scale).empty())
         ne.at_bound.push_back(p.key);
     }
     ne.delta_bic = current.fit.bic - chosen.fit.bic;

@@ -106,7 +106,7 @@ TyreConfig apply(const TyreConfig& base, const Variant& v, const std::vector<dou
 }
 
 Evaluator::Evaluator(const contact::FootprintPredictor& predictor,
-                     const contact::MeasurementSet& data)
+                     const studies::MeasurementSet& data)
     : predictor_(predictor), data_(data) {}
 
 std::vector<Evaluator::Entry> Evaluator::entries(const std::vector<int>& rows) const {
@@ -160,7 +160,7 @@ double bic(const std::vector<Evaluator::Entry>& entries, const std::vector<doubl
   return b + k * std::log(static_cast<double>(std::max(total, 1)));
 }
 
-std::map<std::string, double> rms_by_observable(const contact::MeasurementSet& data,
+std::map<std::string, double> rms_by_observable(const studies::MeasurementSet& data,
                                                 const std::vector<Evaluator::Entry>& entries,
                                                 const std::vector<double>& residuals) {
   std::map<std::string, double> sum;

@@ -49,7 +49,7 @@ std::string joined(const std::vector<std::string>& v) {
 }
 
 // Writes the measurement CSV of a planted data set and reads it back like the CLI would.
-contact::MeasurementSet make_data(const Planted& p, const std::string& name) {
+studies::MeasurementSet make_data(const Planted& p, const std::string& name) {
   // One generator per tyre config, built once.
   static std::map<std::string, std::pair<TyreConfig, contact::FootprintPredictor>> generators;
   auto it = generators.find(joined(p.overrides));
@@ -81,7 +81,7 @@ contact::MeasurementSet make_data(const Planted& p, const std::string& name) {
     out << "\n";
   }
   out.close();
-  return contact::read_measurements(path.string(), gen_cfg);
+  return studies::read_measurements(path.string(), gen_cfg);
 }
 
 std::vector<OperatingConditions> grid(const std::vector<double>& loads,
@@ -299,7 +299,7 @@ TEST(DiscoverTwoEffects, FindsBothHiddenEffects) {
 // named; the width gap of a fixed-width 2D patch stays), and naming never grows it.
 TEST(DiscoverTable3, MeasuredModeCarcassLeavesNoGapACandidateExplains) {
   const auto cfg = contact::load_tyre_config(kConfig);
-  const auto data = contact::read_measurements(
+  const auto data = studies::read_measurements(
       std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv", cfg);
   const DiscoverReport r = discover(cfg, data, {});
   for (const auto& [obs, before] : r.cv_gap_before)
@@ -312,7 +312,7 @@ TEST(DiscoverTable3, MeasuredModeCarcassLeavesNoGapACandidateExplains) {
 // and the length gap must shrink.
 TEST(DiscoverTable3, ExtendedCarcassLengthGapIsNamedAndShrinks) {
   const auto cfg = contact::load_tyre_config(kConfig, {kExtended});
-  const auto data = contact::read_measurements(
+  const auto data = studies::read_measurements(
       std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv", cfg);
   const DiscoverReport r = discover(cfg, data, {});
   EXPECT_GT(r.gap_before.at("length_mm"), 0.08);

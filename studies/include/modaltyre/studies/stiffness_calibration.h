@@ -12,7 +12,7 @@
 
 #include "modaltyre/contact/predictor.h"
 
-namespace modaltyre::contact {
+namespace modaltyre::studies {
 
 struct ScaleCalibration {
   bool converged = false;
@@ -27,9 +27,10 @@ struct ScaleCalibration {
 /// `config` under `at` sinks `target_sinking_mm` to `relative_tolerance`. `predictor` must be
 /// built from `config`'s model (its mesh and modal basis). InputError when the target lies
 /// outside what the range can reach (names the key modal.compliance_scale).
-ScaleCalibration calibrate_compliance_scale(const FootprintPredictor& predictor,
-                                            const TyreConfig& config, const OperatingConditions& at,
+ScaleCalibration calibrate_compliance_scale(const contact::FootprintPredictor& predictor,
+                                            const contact::TyreConfig& config,
+                                            const contact::OperatingConditions& at,
                                             double target_sinking_mm,
                                             double relative_tolerance = 1e-6);
 
-}  // namespace modaltyre::contact
+}  // namespace modaltyre::studies

@@ -1,11 +1,13 @@
-#include "modaltyre/contact/stiffness_calibration.h"
+#include "modaltyre/studies/stiffness_calibration.h"
 
 #include <cmath>
 #include <cstdio>
 
 #include "modaltyre/core/errors.h"
 
-namespace modaltyre::contact {
+namespace modaltyre::studies {
+
+using namespace contact;
 namespace {
 
 constexpr double kMinScale = 1e-3, kMaxScale = 1e3;  // tyre_config.cc's range of the key
@@ -109,4 +111,4 @@ ScaleCalibration calibrate_compliance_scale(const FootprintPredictor& predictor,
   return out;
 }
 
-}  // namespace modaltyre::contact
+}  // namespace modaltyre::studies

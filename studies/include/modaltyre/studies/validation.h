@@ -1,11 +1,11 @@
 #pragma once
 // Measured versus predicted footprints (seed 001 Table 3 style data).
 //
-// Measured file: CSV with load_N and any of sinking_mm, length_mm, width_mm. A file with
-// operating-condition columns (pressure_kPa, hold_s, speed_kmh, horizontal_force_N, branch,
-// surface: measurements.h, e.g. the output of `modaltyre sweep`) is read with
-// read_measurements(), and so is any file when the config switches an effect on; each row is
-// then predicted at its own conditions (missing ones: the config's).
+// Measured file (measurements.h): CSV with load_N and any of sinking_mm, length_mm, width_mm,
+// optionally operating-condition columns (pressure_kPa, hold_s, speed_kmh, horizontal_force_N,
+// branch, surface, e.g. the output of `modaltyre sweep`). With condition columns, or with an
+// effect on in the config, each row is predicted at its own conditions (missing ones: the
+// config's).
 // With an effect on (effects.h) rows are predicted by FootprintPredictor, otherwise by the
 // model's own operator (solve_footprints), as before effects existed.
 // Calibration is always declared: at most two scalar config keys fitted on at most two rows;
@@ -17,36 +17,27 @@
 #include <vector>
 
 #include "modaltyre/contact/footprint.h"
+#include "modaltyre/studies/measurements.h"
 
-namespace modaltyre::contact {
+namespace modaltyre::studies {
 
-struct MeasuredFootprint {
-  int row = 0;   ///< 1-based data row in the file
-  int line = 0;  ///< line in the file
-  double load_N = 0;
-  std::optional<double> sinking_mm, length_mm, width_mm;
-  /// The row's operating conditions when the file was read with them (see above); without,
-  /// the config's default conditions at load_N apply.
-  std::optional<OperatingConditions> conditions;
-};
+/// Reads the measured file for validating `config` (read_measurements()) and checks what
+/// validate needs: an observable it compares (sinking_mm, length_mm, width_mm) and, when the rows
+/// are predicted at the config's conditions (rows_at_own_conditions() false), one row per load.
+/// InputError naming file, line and column on any problem.
+MeasurementSet read_validation_measurements(const std::string& path,
+                                            const contact::TyreConfig& config);
 
-/// Reads a footprint measurement file; loads must be > 0, lengths and sinkings >= 0.
-std::vector<MeasuredFootprint> read_footprint_measurements(const std::string& path);
-
-/// Reads the measured file for validating `config`: with read_measurements() (every row with
-/// its conditions) when the file has a condition column besides load_N or the config has an
-/// effect on, otherwise with read_footprint_measurements(). InputError naming file, line and
-/// column on any problem.
-std::vector<MeasuredFootprint> read_validation_measurements(const std::string& path,
-                                                            const TyreConfig& config);
+/// Whether the rows are predicted at conditions of their own: the file states some (a condition
+/// column besides load_N, or a sweep's output), or an effect is on (conditions act only through
+/// effects; rows without condition columns then take the config's).
+bool rows_at_own_conditions(const MeasurementSet& set, const contact::TyreConfig& config);
 
 /// The observables validate compares (and may calibrate on): sinking_mm, length_mm, width_mm.
 const std::vector<std::string>& validation_observables();
-/// A measured observable of a row by name (nullopt when not measured).
-std::optional<double> measured_value(const MeasuredFootprint& m, const std::string& observable);
 
 struct ValidationRow {
-  MeasuredFootprint measured;
+  MeasuredRow measured;
   bool calibration = false;
   double sinking_mm = 0;  ///< predicted
   double length_mm = 0;   ///< predicted
@@ -74,9 +65,9 @@ struct ValidationReport {
   std::map<std::string, double> rms_rel_error;  ///< per observable, predicted rows only
   std::map<std::string, int> predicted_rows;    ///< count per observable
   Calibration calibration;
-  std::vector<FootprintResult> footprints;  ///< final model, one per row
-  TyreModel model;
-  bool with_conditions = false;  ///< rows carry their own conditions (read_measurements())
+  std::vector<contact::FootprintResult> footprints;  ///< final model, one per row
+  contact::TyreModel model;
+  bool with_conditions = false;  ///< rows predicted at their own conditions
 };
 
 /// "lower" or "upper" when a fitted value lies within 1e-3 of its search range's span (of the
@@ -88,6 +79,6 @@ std::string range_bound_side(double value, double min, double max, bool log_scal
 /// parameters the config's `validation:` section names on the rows it names.
 ValidationReport validate_footprints(const std::string& config_path,
                                      const std::vector<std::string>& overrides,
-                                     const std::vector<MeasuredFootprint>& measured);
+                                     const MeasurementSet& measured);
 
-}  // namespace modaltyre::contact
+}  // namespace modaltyre::studies
