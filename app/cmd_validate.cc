@@ -117,11 +117,9 @@ void print_table(const studies::ValidationReport& rep, const std::string& measur
       std::cout << "\n";
     }
   }
-  if (rep.model.config.effects.any()) {
+  if (const auto on = enabled_effects_json(rep.model.config.effects); !on.empty()) {
     std::cout << "Effects on:";
-    for (const auto& e : enabled_effects_json(rep.model.config.effects)) {
-      std::cout << " " << e.get<std::string>();
-    }
+    for (const auto& e : on) std::cout << " " << e.get<std::string>();
     std::cout << "\n";
   }
   if (rep.with_conditions) {
@@ -160,41 +158,24 @@ void print_table(const studies::ValidationReport& rep, const std::string& measur
   std::cout << "\n";
 }
 
-// The model's curve at the config's conditions: through the predictor when an effect is on, so
-// that the curve shows what the rows were compared with.
-std::vector<contact::FootprintResult> model_curve(const contact::TyreModel& model,
-                                                  const std::vector<contact::LoadCase>& loads) {
-  if (!model.config.effects.any()) return contact::solve_footprints(model, loads);
-  const contact::FootprintPredictor predictor(model);
-  std::vector<contact::FootprintResult> out;
-  for (const auto& lc : loads) {
-    contact::OperatingConditions c = model.config.default_conditions(lc.load_N);
-    c.horizontal_force_N = lc.horizontal_force_N;
-    contact::Prediction p = predictor.predict(model.config, c);
-    p.footprint.converged = p.ok;  // a failed prediction is left out of the curve
-    p.footprint.load = lc;
-    out.push_back(std::move(p.footprint));
-  }
-  return out;
-}
-
 void plot_validation(const studies::ValidationReport& rep, const std::string& path) {
   double lo = 1e300, hi = 0;
   for (const auto& r : rep.rows)
     lo = std::min(lo, r.measured.conditions.load_N),
     hi = std::max(hi, r.measured.conditions.load_N);
-  std::vector<contact::LoadCase> curve;
+  // The model's curve at the config's conditions (effects act as on the rows).
+  std::vector<contact::OperatingConditions> curve;
   const int n = 24;
   for (int i = 0; i <= n; ++i) {
-    curve.push_back(
-        {0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n, rep.model.config.horizontal_force_N});
+    curve.push_back(rep.model.config.default_conditions(0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n));
   }
-  const auto res = model_curve(rep.model, curve);
+  const auto res = contact::predict_all(rep.model, curve);
   PlotPanel ps{"Sinking versus load", "vertical load [kN]", "sinking [mm]", {}};
   PlotPanel pl{"Contact length versus load", "vertical load [kN]", "contact length [mm]", {}};
   PlotSeries ps_pred{"model", {}, {}, "lines"}, pl_pred{"model", {}, {}, "lines"};
-  for (const auto& r : res) {
-    if (!r.converged) continue;
+  for (const auto& p : res) {
+    if (!p.ok) continue;  // a failed prediction is left out of the curve
+    const auto& r = p.footprint;
     ps_pred.x.push_back(r.load.load_N / 1000);
     ps_pred.y.push_back(r.sinking_m * 1e3);
     pl_pred.x.push_back(r.load.load_N / 1000);
@@ -244,7 +225,7 @@ void register_validate(CLI::App& app) {
     // The config decides how the file is read (effects need every row's conditions).
     const auto config = contact::load_tyre_config(a->config, a->overrides);
     const auto measured = studies::read_validation_measurements(a->measured, config);
-    const auto rep = studies::validate_footprints(a->config, a->overrides, measured);
+    const auto rep = studies::validate_footprints(config, measured);
     if (!a->plot.empty()) plot_validation(rep, a->plot);
     if (a->json) {
       print_json(to_json(rep));

@@ -9,15 +9,15 @@
 #include <set>
 #include <sstream>
 
-#include "modaltyre/studies/validation.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/studies/validation.h"
 
 namespace modaltyre::discover {
 namespace {
 
 using contact::EffectId;
-using studies::MeasurementSet;
 using contact::TyreConfig;
+using studies::MeasurementSet;
 
 std::string percent(double rel) {
   std::ostringstream s;
@@ -194,16 +194,15 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     }
     eval.mesh.unit_length_m = opt.unit_length_mm * 1e-3;
   }
-  const contact::FootprintPredictor predictor(contact::build_tyre_model(eval));
-  const Evaluator ev(predictor, data);
+  const contact::TyreModel model = contact::build_tyre_model(eval);
+  const Evaluator ev(model, data);
   std::vector<int> all(data.rows.size());
   std::iota(all.begin(), all.end(), 0);
 
   DiscoverReport rep;
   {
     std::ostringstream s;
-    s << predictor.model().unit_length_m * 1e3 << " mm units, " << predictor.model().candidates()
-      << " candidate units";
+    s << model.unit_length_m * 1e3 << " mm units, " << model.candidates() << " candidate units";
     rep.evaluation_mesh = s.str();
   }
   const auto all_entries = ev.entries(all);

@@ -46,34 +46,19 @@ SweepRow row_from(const Prediction& p, const OperatingConditions& c) {
   return row;
 }
 
-// The model's own operator as a Prediction (what predict() computes when no effect is on).
-Prediction static_prediction(const TyreModel& model, const LoadCase& load,
-                             const std::vector<char>* warm) {
-  Prediction p;
-  p.footprint = solve_footprint(model, load, warm);
-  p.ok = p.footprint.converged;
-  p.message = p.ok ? "" : p.footprint.message;
-  p.sinking_mm = p.footprint.sinking_m * 1e3;
-  p.length_mm = p.footprint.contact_length_m * 1e3;
-  p.width_mm = model.config.tread.width_m * 1e3;
-  p.elastic_load_N = load.load_N;
-  return p;
-}
-
-// One case. With no effect on, the conditions other than the loads act on nothing and the
-// model's prebuilt operator (solve_footprint) gives the same footprint as predict() without
-// assembling an m x m operator per case: the values of `modaltyre footprint`, bit for bit.
-Prediction solve_case(const FootprintPredictor& predictor, const TyreConfig& config,
-                      const SweepCase& sc, const std::vector<char>* warm) {
-  if (!config.effects.any()) return static_prediction(predictor.model(), sc.load, warm);
-  return predictor.predict(config, sc.conditions, warm);
+// One case: the model's own parameters at the case's conditions (contact::predict: the
+// effect-free path, bit for bit the values of `modaltyre footprint`, when no effect is on).
+Prediction solve_case(const TyreModel& model, const SweepCase& sc, const std::vector<char>& warm) {
+  PredictOptions o;
+  o.warm_active = warm;
+  return predict(model, sc.conditions, o);
 }
 
 // One distinct model, built for one batch and released after it.
 struct ModelSlot {
-  std::unique_ptr<FootprintPredictor> predictor;  // read-only once built: shared by threads
-  std::vector<char> warm;                         // reference contact set (empty: cold starts)
-  std::string error;                              // reason the model could not be built
+  std::unique_ptr<const TyreModel> model;  // read-only once built: shared by threads
+  std::vector<char> warm;                  // reference contact set (empty: cold starts)
+  std::string error;                       // reason the model could not be built
   std::exception_ptr input_error;
 };
 
@@ -81,41 +66,36 @@ struct ModelSlot {
 // so that the reference does not depend on which thread gets there first.
 std::vector<char> reference_contact_set(const SweepPlan& plan,
                                         const std::vector<std::size_t>& cases,
-                                        const FootprintPredictor& predictor,
-                                        const TyreConfig& config) {
+                                        const TyreModel& model) {
   std::vector<std::size_t> by_load = cases;
   std::sort(by_load.begin(), by_load.end(), [&](std::size_t a, std::size_t b) {
     const double la = plan.cases[a].conditions.load_N, lb = plan.cases[b].conditions.load_N;
     return la != lb ? la < lb : a < b;
   });
-  const Prediction ref =
-      solve_case(predictor, config, plan.cases[by_load[by_load.size() / 2]], nullptr);
+  const Prediction ref = solve_case(model, plan.cases[by_load[by_load.size() / 2]], {});
   return ref.ok ? ref.footprint.active : std::vector<char>{};
 }
 
 void build_slot(const SweepPlan& plan, std::size_t mi, const std::vector<std::size_t>& cases,
                 bool warm_start, ModelSlot& slot) {
   try {
-    slot.predictor = std::make_unique<FootprintPredictor>(build_tyre_model(plan.models[mi]));
-    if (warm_start && !cases.empty()) {
-      slot.warm = reference_contact_set(plan, cases, *slot.predictor, plan.models[mi]);
-    }
+    slot.model = std::make_unique<const TyreModel>(build_tyre_model(plan.models[mi]));
+    if (warm_start && !cases.empty()) slot.warm = reference_contact_set(plan, cases, *slot.model);
   } catch (const InputError&) {
     slot.input_error = std::current_exception();
   } catch (const std::bad_alloc&) {
-    slot.predictor.reset();
+    slot.model.reset();
     slot.error = "model not built: out of memory";
   } catch (const std::exception& e) {
-    slot.predictor.reset();
+    slot.model.reset();
     slot.error = std::string("model not built: ") + e.what();
   }
 }
 
-SweepRow run_case(const SweepPlan& plan, const SweepCase& sc, const ModelSlot& slot) {
-  if (!slot.predictor) return failed_row(slot.error);
+SweepRow run_case(const SweepCase& sc, const ModelSlot& slot) {
+  if (!slot.model) return failed_row(slot.error);
   try {
-    const std::vector<char>* warm = slot.warm.empty() ? nullptr : &slot.warm;
-    return row_from(solve_case(*slot.predictor, plan.models[sc.model], sc, warm), sc.conditions);
+    return row_from(solve_case(*slot.model, sc, slot.warm), sc.conditions);
   } catch (const std::bad_alloc&) {
     return failed_row("out of memory");
   } catch (const std::exception& e) {
@@ -177,7 +157,7 @@ SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
     for (long t = 0; t < n_pending; ++t) {
       const std::size_t i = pending[t];
       const SweepCase& sc = plan.cases[i];
-      result.rows[i] = run_case(plan, sc, slots[slot_of[sc.model]]);
+      result.rows[i] = run_case(sc, slots[slot_of[sc.model]]);
       if (options.progress) options.progress(1);
     }
   }

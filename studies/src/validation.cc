@@ -18,61 +18,50 @@ using namespace contact;
 
 struct Calibratable {
   std::function<double(const TyreConfig&)> value;  ///< current value in config units
+  std::function<void(TyreConfig&, double)> set;    ///< as the config reader sets the key
   double min, max;  ///< physically plausible range searched by the calibration
 };
 
 /// Scalar config keys that may be calibrated.
 const std::map<std::string, Calibratable>& calibratable() {
   static const std::map<std::string, Calibratable> keys = {
-      {"modal.compliance_scale", {[](const TyreConfig& c) { return c.compliance_scale; }, 0.2, 5}},
+      {"modal.compliance_scale",
+       {[](const TyreConfig& c) { return c.compliance_scale; },
+        [](TyreConfig& c, double v) { c.compliance_scale = v; }, 0.2, 5}},
       {"tread.modulus_MPa",
-       {[](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; }, 0.1, 100}},
+       {[](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; },
+        [](TyreConfig& c, double v) { c.tread.modulus_Pa = v * 1e6; }, 0.1, 100}},
       {"tread.thickness_mm",
-       {[](const TyreConfig& c) { return c.tread.thickness_m * 1e3; }, 1, 50}},
+       {[](const TyreConfig& c) { return c.tread.thickness_m * 1e3; },
+        [](TyreConfig& c, double v) { c.tread.thickness_m = v * 1e-3; }, 1, 50}},
       {"tread.contact_width_mm",
-       {[](const TyreConfig& c) { return c.tread.width_m * 1e3; }, 20, 500}},
+       {[](const TyreConfig& c) { return c.tread.width_m * 1e3; },
+        [](TyreConfig& c, double v) { c.tread.width_m = v * 1e-3; }, 20, 500}},
       {"tyre.outer_radius_mm",
-       {[](const TyreConfig& c) { return c.outer_radius_m * 1e3; }, 100, 1500}},
+       {[](const TyreConfig& c) { return c.outer_radius_m * 1e3; },
+        [](TyreConfig& c, double v) {
+          c.outer_radius_m = v * 1e-3;
+          // The config reader's check of the key (read_tyre_config).
+          if (c.mesh.window_m > M_PI * c.outer_radius_m) {
+            throw InputError({c.source, 0, "contact.window_mm"},
+                             "candidate window longer than half the circumference");
+          }
+        },
+        100, 1500}},
       // Starts at 10 rad^2/s^2 when not stated (the fit to resolved orders may give 0).
       {"modal.extension_bending_s2_rad2_s2",
-       {[](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; }, 1e-3, 1e6}},
+       {[](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; },
+        [](TyreConfig& c, double v) { c.extension_s2 = v; }, 1e-3, 1e6}},
   };
   return keys;
 }
 
-std::string assign(const std::string& key, double value) {
-  std::ostringstream s;
-  s.precision(17);
-  s << key << "=" << value;
-  return s.str();
-}
-
-// Predicted footprints of the rows. No effect on: the model's own operator, the rows in file
-// order each warm-started from the previous (what validate computed before effects existed);
-// with effects: FootprintPredictor::predict() at each row's conditions.
+// Predicted footprints of the rows at their conditions, in file order (on the effect-free path
+// each warm-started from the previous, as validate always did).
 std::vector<Prediction> predict_rows(const TyreModel& model, const std::vector<MeasuredRow>& rows) {
-  const TyreConfig& config = model.config;
-  std::vector<Prediction> out;
-  if (!config.effects.any()) {
-    std::vector<LoadCase> cases;
-    for (const auto& r : rows) {
-      const OperatingConditions& c = r.conditions;
-      cases.push_back({c.load_N, c.horizontal_force_N});
-    }
-    for (auto& f : solve_footprints(model, cases)) {
-      out.push_back(prediction_from(std::move(f), config));
-    }
-    return out;
-  }
-  const FootprintPredictor predictor(model);
-  for (const auto& r : rows) {
-    const OperatingConditions& c = r.conditions;
-    Prediction p = predictor.predict(config, c);
-    // The applied load, not the elastic tyre's share of it (dry_friction), is the row's load.
-    p.footprint.load = {c.load_N, c.horizontal_force_N};
-    out.push_back(std::move(p));
-  }
-  return out;
+  std::vector<OperatingConditions> conditions;
+  for (const auto& r : rows) conditions.push_back(r.conditions);
+  return predict_all(model, conditions);
 }
 
 void require_converged(const std::vector<Prediction>& res, const std::string& stage) {
@@ -94,7 +83,7 @@ const std::vector<std::string>& validation_observables() {
 }
 
 bool rows_at_own_conditions(const MeasurementSet& set, const TyreConfig& config) {
-  return !set.loads_only || config.effects.any();
+  return !set.loads_only || conditions_act(config);
 }
 
 MeasurementSet read_validation_measurements(const std::string& path, const TyreConfig& config) {
@@ -130,11 +119,9 @@ std::string range_bound_side(double value, double min, double max, bool log_scal
   return "";
 }
 
-ValidationReport validate_footprints(const std::string& config_path,
-                                     const std::vector<std::string>& overrides,
-                                     const MeasurementSet& set) {
+ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSet& set) {
   const std::vector<MeasuredRow>& measured = set.rows;
-  const TyreConfig base = load_tyre_config(config_path, overrides);
+  const std::string& config_path = base.source;
   const auto ident = modal::identify_modes(modal::read_hammer_csv(base.hammer_csv));
   const auto& vs = base.validation;
   ValidationReport rep;
@@ -177,12 +164,14 @@ ValidationReport validate_footprints(const std::string& config_path,
     }
   }
 
+  // The model at calibrated values: the config with the keys set as its reader sets them (no
+  // YAML is read again), on the modes identified once.
   auto model_for = [&](const Eigen::VectorXd& log_values) {
-    std::vector<std::string> ov = overrides;
+    TyreConfig c = base;
     for (std::size_t k = 0; k < cal.keys.size(); ++k) {
-      ov.push_back(assign(cal.keys[k], std::exp(log_values(static_cast<Eigen::Index>(k)))));
+      calibratable().at(cal.keys[k]).set(c, std::exp(log_values(static_cast<Eigen::Index>(k))));
     }
-    return build_tyre_model(load_tyre_config(config_path, ov), ident);
+    return build_tyre_model(c, ident);
   };
 
   Eigen::VectorXd x(static_cast<Eigen::Index>(cal.keys.size()));

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
 #include <random>
 #include <set>
 
@@ -51,17 +52,18 @@ std::string joined(const std::vector<std::string>& v) {
 // Writes the measurement CSV of a planted data set and reads it back like the CLI would.
 studies::MeasurementSet make_data(const Planted& p, const std::string& name) {
   // One generator per tyre config, built once.
-  static std::map<std::string, std::pair<TyreConfig, contact::FootprintPredictor>> generators;
+  static std::map<std::string, std::pair<TyreConfig, std::unique_ptr<const contact::TyreModel>>>
+      generators;
   auto it = generators.find(joined(p.overrides));
   if (it == generators.end()) {
     std::vector<std::string> o = p.overrides;
     o.push_back("contact.unit_length_mm=2");
     TyreConfig c = contact::load_tyre_config(kConfig, o);
-    contact::FootprintPredictor g(contact::build_tyre_model(c));
+    auto g = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(c));
     it = generators.emplace(joined(p.overrides), std::make_pair(std::move(c), std::move(g))).first;
   }
   const TyreConfig& gen_cfg = it->second.first;
-  const contact::FootprintPredictor& gen = it->second.second;
+  const contact::TyreModel& gen = *it->second.second;
   TyreConfig truth = gen_cfg;
   if (p.truth) p.truth(truth.effects);
   std::mt19937 rng(p.seed);
@@ -73,7 +75,7 @@ studies::MeasurementSet make_data(const Planted& p, const std::string& name) {
   out << "\n";
   out.precision(10);
   for (const auto& c : p.rows) {
-    const contact::Prediction pr = gen.predict(truth, c);
+    const contact::Prediction pr = contact::predict(gen, contact::parameters_of(truth), c);
     EXPECT_TRUE(pr.ok) << pr.message;
     out << c.load_N << "," << c.pressure_kPa << "," << c.hold_s << "," << c.speed_kmh << ","
         << contact::branch_name(c.branch) << "," << contact::surface_name(c.surface);

@@ -439,9 +439,9 @@ TEST(SweepEffects, CsvReadsBackAsMeasuredDataThatThePredictorReproduces) {
   EXPECT_GT(res.rows[0].sinking_mm, res.rows[2].sinking_mm);  // 200 kPa sinks more than 260
   EXPECT_EQ(res.rows[0].sinking_mm, res.rows[4].sinking_mm);  // soil_compliance is off
   // Predicting a read row at its conditions with the sweep's model gives the written values.
-  const FootprintPredictor predictor(build_tyre_model(plan.models[1]));
+  const TyreModel model = build_tyre_model(plan.models[1]);
   for (std::size_t i = 8; i < 16; i += 3) {
-    const Prediction p = predictor.predict(plan.models[1], set.rows[i].conditions);
+    const Prediction p = predict(model, parameters_of(plan.models[1]), set.rows[i].conditions);
     ASSERT_TRUE(p.ok) << p.message;
     EXPECT_NEAR(p.sinking_mm, set.rows[i].observed.at("sinking_mm"), 1e-9 * p.sinking_mm);
     EXPECT_NEAR(p.length_mm, set.rows[i].observed.at("length_mm"), 1e-9 * p.length_mm);

@@ -28,7 +28,7 @@ TEST(Validation, Table3DeclaredCalibrationMeetsTheSinkingAndLengthTargets) {
   // Calibration declared in sf350.yaml: compliance scale and tread modulus on rows 1 and 6;
   // rows 2-5 are predictions. Issue targets over the predicted rows: sinking RMS <= 5 %,
   // length RMS <= 10 % (measured: 3.7 % and 7.8 %).
-  const auto rep = validate_footprints(kConfig, {}, table3());
+  const auto rep = validate_footprints(load_tyre_config(kConfig, {}), table3());
   ASSERT_EQ(rep.calibration.rows, (std::vector<int>{1, 6}));
   ASSERT_EQ(rep.calibration.keys.size(), 2u);
   EXPECT_EQ(rep.predicted_rows.at("sinking_mm"), 4);
@@ -47,15 +47,16 @@ TEST(Validation, CalibratedValueAtTheBoundOfItsRangeIsFlagged) {
   // 2.33 MPa) to the lower one (1e-3). Either way the value must be flagged with its side, the
   // interior tread modulus not.
   const auto rep = validate_footprints(
-      kConfig,
-      {"modal.extend_orders=true",
-       "validation.calibrate=[modal.extension_bending_s2_rad2_s2, tread.modulus_MPa]"},
+      load_tyre_config(
+          kConfig,
+          {"modal.extend_orders=true",
+           "validation.calibrate=[modal.extension_bending_s2_rad2_s2, tread.modulus_MPa]"}),
       table3());
   ASSERT_EQ(rep.calibration.values.size(), 2u);
   const double s2 = rep.calibration.values[0];
   ASSERT_TRUE(s2 < 1.01e-3 || s2 > 0.99e6) << s2;
   EXPECT_EQ(rep.calibration.at_bound, (std::vector<std::string>{s2 < 1 ? "lower" : "upper", ""}));
-  const auto plain = validate_footprints(kConfig, {}, table3());
+  const auto plain = validate_footprints(load_tyre_config(kConfig, {}), table3());
   EXPECT_EQ(plain.calibration.at_bound, (std::vector<std::string>{"", ""}));
 }
 
@@ -88,7 +89,8 @@ TEST(Validation, CalibrationRecoversPlantedParameters) {
     m.observed["length_mm"] = r.contact_length_m * 1e3;
     meas.rows.push_back(m);
   }
-  const auto rep = validate_footprints(kConfig, {"validation.calibration_rows=[1, 3]"}, meas);
+  const auto rep =
+      validate_footprints(load_tyre_config(kConfig, {"validation.calibration_rows=[1, 3]"}), meas);
   ASSERT_EQ(rep.calibration.values.size(), 2u);
   // Least-squares stopping tolerance on log-parameters is 1e-6; 1e-3 covers the finite-difference
   // Jacobian and the flat direction of the cost.

@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "modaltyre/studies/measurements.h"
 #include "modaltyre/discover/model_fit.h"
+#include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::discover {
 

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "modaltyre/studies/measurements.h"
 #include "modaltyre/contact/predictor.h"
+#include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::discover {
 
@@ -50,7 +50,8 @@ Variant make_variant(const std::vector<contact::EffectId>& effects);
 /// Evaluates relative residuals of a config on rows of a measurement set.
 class Evaluator {
  public:
-  Evaluator(const contact::FootprintPredictor& predictor, const studies::MeasurementSet& data);
+  /// Predictions on `model` (its mesh and modal basis) with each config's parameters.
+  Evaluator(const contact::TyreModel& model, const studies::MeasurementSet& data);
 
   struct Entry {
     int row = 0;         ///< index into data.rows
@@ -63,10 +64,10 @@ class Evaluator {
   std::vector<double> residuals(const contact::TyreConfig& config, const std::vector<Entry>& e,
                                 int* failures = nullptr) const;
   const studies::MeasurementSet& data() const { return data_; }
-  const contact::FootprintPredictor& predictor() const { return predictor_; }
+  const contact::TyreModel& model() const { return model_; }
 
  private:
-  const contact::FootprintPredictor& predictor_;
+  const contact::TyreModel& model_;
   const studies::MeasurementSet& data_;
 };
 

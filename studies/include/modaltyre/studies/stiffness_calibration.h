@@ -24,11 +24,11 @@ struct ScaleCalibration {
 };
 
 /// Finds modal.compliance_scale in [1e-3, 1e3] (the config's range) such that the footprint of
-/// `config` under `at` sinks `target_sinking_mm` to `relative_tolerance`. `predictor` must be
-/// built from `config`'s model (its mesh and modal basis). InputError when the target lies
-/// outside what the range can reach (names the key modal.compliance_scale).
-ScaleCalibration calibrate_compliance_scale(const contact::FootprintPredictor& predictor,
-                                            const contact::TyreConfig& config,
+/// `model` with `parameters` (other than the scale) under `at` sinks `target_sinking_mm` to
+/// `relative_tolerance`, bracketing from parameters.compliance_scale. InputError when the target
+/// lies outside what the range can reach (names the key modal.compliance_scale).
+ScaleCalibration calibrate_compliance_scale(const contact::TyreModel& model,
+                                            const contact::TyreParameters& parameters,
                                             const contact::OperatingConditions& at,
                                             double target_sinking_mm,
                                             double relative_tolerance = 1e-6);

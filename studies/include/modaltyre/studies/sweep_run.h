@@ -26,8 +26,8 @@ struct SweepRow {
 
 struct SweepOptions {
   int threads = 0;  ///< OpenMP threads; 0 = omp_get_max_threads()
-  /// false (default): every case starts cold, exactly like solve_footprint() with no effect on
-  /// and FootprintPredictor::predict() with effects (same values and iterations, bit for bit).
+  /// false (default): every case starts cold, exactly like contact::predict() (same values and
+  /// iterations, bit for bit).
   /// true: every case of a model starts from the contact set of one fixed reference case of
   /// that model (its median-load case, solved cold); deterministic for any thread count, fewer
   /// iterations (~10 % less time on the SF-350 load sweep), the same contact set, values equal
@@ -48,9 +48,9 @@ struct SweepResult {
   int threads = 1;  ///< threads actually used
 };
 
-/// Runs every case: FootprintPredictor::predict(case config, case conditions) on one predictor
-/// per distinct model, or, for a model with no effect on, solve_footprint() on its operator (the
-/// same footprint: without effects only load_N and horizontal_force_N act). A case that fails
+/// Runs every case: contact::predict(model, case conditions) on one immutable model per distinct
+/// parameter combination, shared by the threads (without effects only load_N and
+/// horizontal_force_N act: the model's own operator, as `footprint`). A case that fails
 /// (no convergence, a model that cannot be built for a computational reason) is a row with
 /// ok = false and its reason; an InputError raised while building a model (e.g. unreadable
 /// hammer data) is rethrown.

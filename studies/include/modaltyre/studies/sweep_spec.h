@@ -29,7 +29,7 @@
 // horizontal_force_N and inflation pressure, no hold, standing, loading branch, rigid road).
 // Conditions act only through the effects that use them. Every other key is a dotted config
 // key, applied like `--set key=value` in the order base < set < (command-line set) < grid.
-// Cases that differ only in their conditions share one immutable model (FootprintPredictor).
+// Cases that differ only in their conditions share one immutable model (contact::TyreModel).
 //
 // CSV columns: every condition given in set: (then --set), in the order written, then every
 // grid key in the order written; then sweep_observable_columns(). It is valid measured data for

@@ -6,8 +6,8 @@
 // branch, surface, e.g. the output of `modaltyre sweep`). With condition columns, or with an
 // effect on in the config, each row is predicted at its own conditions (missing ones: the
 // config's).
-// With an effect on (effects.h) rows are predicted by FootprintPredictor, otherwise by the
-// model's own operator (solve_footprints), as before effects existed.
+// Rows are predicted by contact::predict_all (predictor.h): the effect-free path with no effect
+// on, the effects path at each row's conditions otherwise.
 // Calibration is always declared: at most two scalar config keys fitted on at most two rows;
 // those rows are marked as calibration rows and every other row is a prediction. RMS errors are
 // reported over the predicted rows only.
@@ -75,10 +75,10 @@ struct ValidationReport {
 /// one side only, or a better optimum lies across the range. Used by validate and discover.
 std::string range_bound_side(double value, double min, double max, bool log_scale);
 
-/// Validates the config at `config_path` (with overrides) against measurements, calibrating the
-/// parameters the config's `validation:` section names on the rows it names.
-ValidationReport validate_footprints(const std::string& config_path,
-                                     const std::vector<std::string>& overrides,
+/// Validates `config` against measurements, calibrating the parameters its `validation:` section
+/// names on the rows it names (each trial value set on a copy of the config and a model built on
+/// the hammer modes identified once).
+ValidationReport validate_footprints(const contact::TyreConfig& config,
                                      const MeasurementSet& measured);
 
 }  // namespace modaltyre::studies
