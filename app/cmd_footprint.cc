@@ -47,6 +47,10 @@ void register_footprint(CLI::App& app) {
       if (!(f > 0) || !std::isfinite(f)) {
         throw InputError({"--load", 0, ""}, "vertical load must be a finite number > 0 N");
       }
+      if (config.footprint_3d && fx != 0) {
+        throw InputError({"--fx", 0, ""},
+                         "the config's 3D patch (footprint_3d) takes no horizontal force");
+      }
       // Uniform traction f_x = (F_x/F_z) f_z needs adhesion; beyond |F_x| = 1.5 F_z no tyre holds.
       if (!(std::abs(fx) <= 1.5 * f)) {
         throw InputError({"--fx", 0, ""},

@@ -211,7 +211,7 @@ void register_validate(CLI::App& app) {
       "validate",
       "Compare predicted sinking and contact length with measured footprints (e.g. seed 001 "
       "Table 3); calibration, if any, is declared in the config's validation section "
-      "(at most two parameters on at most two rows) and only the other rows count.");
+      "(at most three parameters on at most two rows) and only the other rows count.");
   cmd->add_option("CONFIG", a->config, "tyre config (YAML)")->required();
   cmd->add_option("MEASURED", a->measured,
                   "CSV with load_N and any of sinking_mm, length_mm, width_mm; optional "
