@@ -141,3 +141,38 @@ TEST_F(CliHostile, SweepSpecThatIsADevice) {
 }
 
 }  // namespace
+
+// Issue 16 item 2: "tread.modulus_MPa: 5" at the top of a config used to pass as the nested key
+// that was read (its value ignored, exit 0); a key set twice in a sweep's set: through a
+// dotted and a nested spelling kept one of them.
+TEST_F(CliHostile, DottedKeyInAConfigAndTwiceInASweepSet) {
+  const std::string text = modaltyre_test::slurp(kConfig);
+  const int lines = static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+  std::string cfg = text;
+  const std::string hammer = "hammer_csv: data/";
+  cfg.replace(cfg.find(hammer), hammer.size(), "hammer_csv: " + kSrc + "/configs/data/");
+  const std::string p = write("dotted.yaml", cfg + "tread.modulus_MPa: 5\n");
+  expect_input_error(run_limited({"footprint", p}),
+                     {p + ":" + std::to_string(lines + 1) + ": tread.modulus_MPa: ",
+                      "a key with '.' is not read in a config file"});
+  const std::string s = write("sweep.yaml", "base: " + kConfig +
+                                                "\nset:\n  tread.modulus_MPa: 3\n"
+                                                "  tread: {modulus_MPa: 4}\n"
+                                                "grid:\n  load_N: [3000]\noutput: x.csv\n");
+  expect_input_error(run_limited({"sweep", s}),
+                     {s + ":4: set.tread.modulus_MPa: ", "twice in set (first at line 3)"});
+}
+
+// Issue 16 item 4: a result printed onto a full disk (here /dev/full) is a failure, not exit 0.
+TEST_F(CliHostile, StdoutOnAFullDiskIsAnError) {
+  const std::string cmd = modaltyre_test::quote(MODALTYRE_CLI) + " footprint " +
+                          modaltyre_test::quote(kConfig) + " --load 3000 >/dev/full 2>" +
+                          modaltyre_test::quote((dir_ / "err.txt").string());
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_NE(modaltyre_test::slurp(dir_ / "err.txt")
+                .find("writing the result to standard output "
+                      "failed"),
+            std::string::npos);
+}
