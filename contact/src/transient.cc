@@ -31,6 +31,8 @@ constexpr double kRootOffset_m = 1e-12;
 /// chattering (never a hang): a located switch is normally followed by a step.
 constexpr int kZenoRootReturns = 1000;
 constexpr double kZenoWindow_s = 1e-12;
+/// Output samples of one run (memory and CSV rows): 1e6 is 2000 s at the default 2 ms.
+constexpr double kMaxTransientSamples = 1e6;
 /// Upwind stencil of the tread advection, de/dtheta ~ (c0 e_i + c1 e_{i+1} + c2 e_{i+2}) / dtheta:
 /// second-order one-sided from the front. First order (-1, 1, 0) converged the rolling resistance
 /// at O(dtheta): 59.3 / 60.6 / 61.2 / 61.5 N at 2 / 1 / 0.5 / 0.25 mm, against 61.3 / 61.6 /
@@ -381,6 +383,17 @@ ScenarioPlan plan_scenario(const TransientModel& model, Scenario s) {
   if (model.settings.output_step_s > p.duration_s) {
     throw InputError(InputLocation{src, 0, "transient.output_step_ms"},
                      "output step longer than the scenario");
+  }
+  // Every output step is a sample held in memory and a CSV row: bounded, so that a tiny step
+  // (1e-308 ms) or a long run is refused at once instead of filling the memory.
+  const double samples = p.duration_s / model.settings.output_step_s;
+  if (!(samples <= kMaxTransientSamples)) {
+    std::ostringstream msg;
+    msg << "output step " << model.settings.output_step_s * 1e3 << " ms over the scenario's "
+        << p.duration_s << " s gives " << samples << " samples; at most " << kMaxTransientSamples
+        << " are written: use an output step of at least "
+        << p.duration_s / kMaxTransientSamples * 1e3 << " ms or a shorter scenario";
+    throw InputError(InputLocation{src, 0, "transient.output_step_ms"}, msg.str());
   }
   return p;
 }

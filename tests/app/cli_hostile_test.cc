@@ -4,6 +4,8 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -175,4 +177,49 @@ TEST_F(CliHostile, StdoutOnAFullDiskIsAnError) {
                 .find("writing the result to standard output "
                       "failed"),
             std::string::npos);
+}
+
+// Issue 16 item 3: step counts and sizes from options are bounded with a message naming the
+// option and the bound (each ran for minutes or until out of memory).
+TEST_F(CliHostile, TransientOutputStepAndSampleCountAreBounded) {
+  expect_input_error(run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+                                  "transient.output_step_ms=1e-308"}),
+                     {"--set: transient.output_step_ms: ", "out of range [0.001, "});
+  // 1 us over the 121 s hold: 1.21e8 samples.
+  expect_input_error(
+      run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+                   "transient.output_step_ms=0.001"}),
+      {"transient.output_step_ms: ", "1.21e+08 samples; at most 1e+06", "at least 0.121 ms"});
+  expect_input_error(run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+                                  "transient.load_hold.hold_s=1e6"}),
+                     {"transient.output_step_ms: ", "5e+08 samples; at most 1e+06"});
+}
+
+TEST_F(CliHostile, BFactorSamplesAreBounded) {
+  expect_input_error(run_limited({"identify", "b-factors", "--samples", "2147483647"}),
+                     {"--samples: ", "need 3 to 100000 samples, got 2147483647"});
+}
+
+// Issue 16 item 3: one mode at 4000 points (a dense QR of 4000 columns took 45 s) and one at
+// 10^6 points (the reader's row limit) are fitted; orders above the fitted range are named.
+TEST_F(CliHostile, HammerFilesWithManyPointsAreFitted) {
+  for (int N : {4000, 1000000}) {
+    std::string s = modaltyre_test::hammer_lines(1, 1).front() + "\n";
+    s.reserve(static_cast<std::size_t>(N) * 48);
+    for (int i = 0; i < N; ++i) {
+      const double th = 2 * M_PI * i / N;
+      char line[160];
+      std::snprintf(line, sizeof line, "1,120,0.03,%d,%.9f,%.6f,%.6f\n", i + 1, 360.0 * i / N,
+                    0.6 * std::cos(3 * th), 0.3 * std::sin(3 * th));
+      s += line;
+    }
+    const std::string p = write("hammer.csv", s);
+    const CliRun r = run_limited({"fit-modes", p});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("1 modes at " + std::to_string(N) + " equally spaced points"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("orders above 50 are not fitted"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("radial          3  no       1.0000"), std::string::npos) << r.out;
+  }
 }
