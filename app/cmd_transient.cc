@@ -9,7 +9,7 @@
 
 #include "cli_support.h"
 #include "commands.h"
-#include "modaltyre/contact/transient.h"
+#include "modaltyre/transient/transient.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
@@ -26,7 +26,7 @@ struct TransientArgs {
   std::vector<std::string> overrides;
 };
 
-std::string transient_csv(const contact::TransientResult& r) {
+std::string transient_csv(const transient::TransientResult& r) {
   std::ostringstream o;
   o.precision(10);
   o << "t_s,load_N,hub_displacement_mm,sinking_mm,contact_length_mm,longitudinal_force_N\n";
@@ -38,7 +38,7 @@ std::string transient_csv(const contact::TransientResult& r) {
   return o.str();
 }
 
-void transient_plot(const contact::TransientResult& r, const std::string& path) {
+void transient_plot(const transient::TransientResult& r, const std::string& path) {
   PlotSeries load{"contact load", {}, {}}, sink{"sinking", {}, {}}, len{"contact length", {}, {}},
       fx{"longitudinal force", {}, {}};
   for (const auto& s : r.samples) {
@@ -50,7 +50,7 @@ void transient_plot(const contact::TransientResult& r, const std::string& path) 
   PlotFigure fig;
   fig.width_px = 1200;
   fig.height_px = 800;
-  const std::string sc = contact::to_string(r.scenario);
+  const std::string sc = transient::to_string(r.scenario);
   fig.panels.push_back({sc + ": vertical load", "t [s]", "load [N]", {load}});
   fig.panels.push_back({sc + ": sinking", "t [s]", "sinking [mm]", {sink}});
   fig.panels.push_back({sc + ": contact length", "t [s]", "length [mm]", {len}});
@@ -78,16 +78,16 @@ void register_transient(CLI::App& app) {
   cmd->add_option("--set", a->overrides,
                   "override a config key, e.g. --set transient.load_hold.hold_s=10");
   cmd->callback([a] {
-    const contact::Scenario scenario = contact::parse_scenario(a->scenario);
+    const transient::Scenario scenario = transient::parse_scenario(a->scenario);
     const auto config = contact::load_tyre_config(a->config, a->overrides);
     const auto tyre = contact::build_tyre_model(config);
-    const auto model = contact::build_transient_model(tyre);
+    const auto model = transient::build_transient_model(tyre);
 
     // Progress bar on a terminal only, once the run has taken more than a second.
     const bool tty = isatty(fileno(stderr)) != 0;
     const auto start = std::chrono::steady_clock::now();
     bool drawn = false;
-    contact::TransientRunOptions opts;
+    transient::TransientRunOptions opts;
     opts.progress = [&](double t, double total) {
       if (!tty) return true;
       const double el =
@@ -100,7 +100,7 @@ void register_transient(CLI::App& app) {
       drawn = true;
       return true;
     };
-    const contact::TransientResult r = contact::run_transient(model, scenario, &opts);
+    const transient::TransientResult r = transient::run_transient(model, scenario, &opts);
     if (drawn) std::fprintf(stderr, "\n");
     if (!r.ok()) throw ComputationError(r.message);
 
@@ -109,7 +109,7 @@ void register_transient(CLI::App& app) {
     const auto& fin = r.samples.back();
     if (a->json) {
       nlohmann::json j;
-      j["scenario"] = contact::to_string(scenario);
+      j["scenario"] = transient::to_string(scenario);
       j["simulated_s"] = round_sig(r.simulated_s);
       j["wall_s"] = round_sig(r.wall_s, 4);
       j["real_time_factor"] = round_sig(r.real_time_factor(), 4);
@@ -137,7 +137,7 @@ void register_transient(CLI::App& app) {
       j["samples"] = r.samples.size();
       print_json(j);
     } else {
-      std::cout << "scenario " << contact::to_string(scenario) << ": " << r.message << "\n"
+      std::cout << "scenario " << transient::to_string(scenario) << ": " << r.message << "\n"
                 << "simulated " << fixed(r.simulated_s, 3) << " s in " << fixed(r.wall_s, 3)
                 << " s (real-time factor " << fixed(r.real_time_factor(), 1) << ")\n"
                 << "final: load " << fixed(fin.load_N, 1) << " N, sinking "

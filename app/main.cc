@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   modaltyre::app::register_transient(app);
   modaltyre::app::register_effects(app);
   modaltyre::app::register_discover(app);
+  modaltyre::app::register_ema(app);
 
   // A file-size limit (ulimit -f) then fails the write with EFBIG, which the atomic writer
   // reports and cleans up, instead of killing the program with a half-written temporary.

@@ -1,11 +1,12 @@
 // Benchmarks of the static chain: fit-modes, kernel construction, one footprint solve versus the
-// number of candidate units m, and the six Table 3 loads as a whole process.
+// number of candidate units m, and the six Table 3 loads as a whole process (2D and 3D patch).
 // Results compare only on the same machine: see BENCHMARKS.md.
 #include <benchmark/benchmark.h>
 
 #include <string>
 
 #include "modaltyre/contact/footprint.h"
+#include "modaltyre/contact/patch3d.h"
 #include "modaltyre/modal/carcass_kernel.h"
 #include "modaltyre/modal/hammer_data.h"
 #include "modaltyre/modal/mode_identification.h"
@@ -30,7 +31,8 @@ BENCHMARK(BM_FitModes)->Unit(benchmark::kMillisecond);
 // model uses, and the direct O(terms * lags) sums for comparison.
 void kernel_bench(benchmark::State& state, bool fft) {
   const double unit_mm = 1.0 / static_cast<double>(state.range(0));
-  const auto cfg = contact::load_tyre_config(kConfig, {"contact.unit_length_mm=" + std::to_string(unit_mm)});
+  const auto cfg =
+      contact::load_tyre_config(kConfig, {"contact.unit_length_mm=" + std::to_string(unit_mm)});
   const auto ident = modal::identify_modes(modal::read_hammer_csv(cfg.hammer_csv));
   const int n = modal::fft_friendly_size(
       static_cast<int>(2 * M_PI * cfg.outer_radius_m / cfg.mesh.unit_length_m));
@@ -78,8 +80,8 @@ BENCHMARK(BM_FootprintSolve)
 void BM_Table3Process(benchmark::State& state) {
   const double unit_mm = state.range(0) / 100.0;
   for (auto _ : state) {
-    const auto model = contact::build_tyre_model(contact::load_tyre_config(
-        kConfig, {"contact.unit_length_mm=" + std::to_string(unit_mm)}));
+    const auto model = contact::build_tyre_model(
+        contact::load_tyre_config(kConfig, {"contact.unit_length_mm=" + std::to_string(unit_mm)}));
     std::vector<contact::LoadCase> loads;
     for (double F : model.config.loads_N) loads.push_back({F, 0});
     auto res = contact::solve_footprints(model, loads);
@@ -87,6 +89,19 @@ void BM_Table3Process(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_Table3Process)->Arg(50)->Arg(25)->Unit(benchmark::kMillisecond);
+
+// The same job on the 3D patch (configs/sf350_3d.yaml: 0.5 mm x 2.5 mm cells), by the
+// laterally rigid reduction; the target is < 0.5 s per process.
+void BM_Table3Process3d(benchmark::State& state) {
+  const std::string config = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_3d.yaml";
+  for (auto _ : state) {
+    const auto c = contact::load_tyre3d_config(config);
+    const auto model = contact::build_tyre_model(c.tyre);
+    auto res = contact::Patch3d(model, c.patch).solve_all(c.tyre.loads_N);
+    benchmark::DoNotOptimize(res);
+  }
+}
+BENCHMARK(BM_Table3Process3d)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -9,11 +9,12 @@
 #include <cstdlib>
 #include <string>
 
-#include "modaltyre/contact/transient.h"
+#include "modaltyre/transient/transient.h"
 
 namespace {
 
 using namespace modaltyre::contact;
+using namespace modaltyre::transient;
 
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
 

@@ -1,5 +1,5 @@
 // Seed 000 eq. (22) on a decay from the transient simulator (issue 5 item 8: free-vibration
-// data "from the transient simulator when it exists"). contact::run_transient bounces the hub
+// data "from the transient simulator when it exists"). transient::run_transient bounces the hub
 // on a nearly rigid carcass and Kelvin-Voigt tread units whose dashpots are known; the decay
 // goes through the rheology's own fit (fit_free_decay, as `identify free-vibration` reads a
 // measured t_s,deflection_mm file) and eq. (22) eta1 = 2 m delta / (T L_C) must give back
@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "modaltyre/contact/footprint.h"
-#include "modaltyre/contact/transient.h"
+#include "modaltyre/transient/transient.h"
 #include "modaltyre/rheology/free_vibration.h"
 #include "modaltyre/rheology/three_element.h"
 
@@ -29,6 +29,7 @@ constexpr double kEquilibriumTol = 0.01;
 
 TEST(rheology_FreeVibrationFromTransient, Eq22OnTheSimulatedDecayGivesTheTreadDashpots) {
   using namespace modaltyre::contact;
+  using namespace modaltyre::transient;
   const std::string config = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
   const TransientModel M = build_transient_model(build_tyre_model(load_tyre_config(
       config,

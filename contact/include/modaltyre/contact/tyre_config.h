@@ -36,7 +36,7 @@ struct ValidationSettings {
 };
 
 /// Scenarios and model settings of the transient simulation (section `transient:`, see
-/// contact/transient.h and docs/transient.md). Speeds in m/s, lengths in m, times in s.
+/// transient/transient.h and docs/transient.md). Speeds in m/s, lengths in m, times in s.
 struct TransientSettings {
   double hub_mass_kg = 20;           ///< reduced mass on the hub DOF (tyre + rim + fixture), > 0
   int dynamic_max_order = 40;        ///< orders above it respond quasi-statically (residual)

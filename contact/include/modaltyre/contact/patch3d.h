@@ -1,0 +1,183 @@
+#pragma once
+// The 3D static footprint: cells on a grid along the road (x, the 2D model's patch units, one
+// circumferential section each) and across the tread (y, columns of equal width), against a
+// rigid flat road under load control (seed 001 sections 3.2-3.3 extended across the tread).
+//
+// Geometry: before loading, cell (i, j) is sag_i + z(y_j) above the road at zero sinking, sag_i =
+// R0 (1 - cos theta_i) the arc's sag and z the crown drop of the tread profile (crown_profile.h).
+// Cells exist only within the tread width (the shoulder limit).
+//
+// Tread: a spring per cell (seed 001 eq. 6-9 per unit area): k_r = E dy ds / h radially,
+// k_t = G dy ds / h tangentially, G = E / (2 (1 + nu)); vertical compliance per cell
+// t_i = cos^2 theta_i / k_r + sin^2 theta_i / k_t.
+//
+// Carcass: the belt section at theta_i is laterally rigid; the modal transfer functions (seed
+// 001 eq. 1-5, 12; contact/tyre_model.h) act on the section resultants F_i = sum_j f_ij and move
+// the section by w_i = (C F)_i, C the carcass-only vertical compliance of the 2D model.
+//
+// Contact conditions per cell: g_ij = sag_i + z_j + (C F)_i + t_i f_ij - delta >= 0, f_ij >= 0,
+// f_ij g_ij = 0, sum f_ij = F_z.
+//
+// Reduction (exact for the laterally rigid section): with the section's approach
+// d_i = delta - sag_i - (C F)_i the cells of section i are independent springs on the crown,
+// f_ij = (d_i - z_j)_+ / t_i, so the section carries F_i = Phi_i(d_i) = sum_j (d_i - z_j)_+ / t_i,
+// convex and increasing in d_i. The cell problem becomes one unknown per section: minimise
+//   J(F) = 1/2 F^T C F + sag^T F + sum_i Psi_i(F_i),  F >= 0, sum F = F_z,
+// Psi_i' = psi_i = Phi_i^-1 (the approach at force F_i). On a fixed lateral pattern (n_i cells in
+// contact per section) Psi_i is quadratic and the problem is the 2D one with the section
+// compliance t_i / n_i and the gap offset mean(z_j over the pattern): solved exactly by the
+// 2D active-set solver. The pattern is updated from psi_i(F_i) (a Newton step on J, damped by a
+// backtracking line search on J when a full step does not decrease it) until it is consistent.
+// solve_cells() solves the cell problem directly (every cell an unknown) as the reference.
+//
+// Lateral belt (optional, LateralBelt): the section's belt strip bends across the tread, a beam
+// with compliance G between its cells (docs/footprint.md section 7); the gap gains (G f_i)_j.
+// The reduction stays exact: a section at approach d is then a small contact problem
+// (min 1/2 f^T (G + t_i I) f + z^T f, f >= 0, sum f = F_i), affine in d on a fixed lateral
+// pattern (compliance 1 / 1^T M_AA^-1 1 and offset in place of t_i / n_i and the mean drop).
+#include <string>
+#include <vector>
+
+#include "modaltyre/contact/crown_profile.h"
+#include "modaltyre/contact/tyre_model.h"
+
+namespace modaltyre::contact {
+
+/// How the belt strip of a section is held at its lateral ends.
+enum class BeltSupports {
+  shoulders,  ///< simply supported (no deflection, no moment) at +-span/2: the sidewalls
+  free,       ///< free ends at the tread edges, on a foundation; its rigid motion is the carcass's
+};
+
+/// The belt's lateral flexibility (docs/footprint.md section 7): each section's belt strip is an
+/// Euler-Bernoulli beam across the tread, loaded by its cells' forces. Disabled = laterally rigid
+/// (the sections' cells move together).
+struct LateralBelt {
+  bool enabled = false;
+  double bending_stiffness_Nm = 1.0;  ///< D, per unit circumferential length [N m], > 0
+  double tension_N_m = 0;             ///< meridional membrane tension N [N/m], >= 0 (shoulders)
+  double foundation_Pa_m = 0;         ///< Winkler foundation k [N/m^3], >= 0; > 0 when free
+  BeltSupports supports = BeltSupports::shoulders;
+  double support_span_m = 0;  ///< shoulders: distance between the supports, 0 = tread width
+  /// Throws std::invalid_argument naming what is inconsistent.
+  void validate(double tread_width_m) const;
+};
+
+/// The lateral compliance of one section's belt strip [m/N]: G(k, j) is the mean deflection of
+/// column k under a unit force spread over column j, for columns of equal width across the
+/// tread and a section of arc length ds. Symmetric positive semi-definite; columns x columns.
+Eigen::MatrixXd lateral_belt_compliance(const LateralBelt& belt, double tread_width_m, int columns,
+                                        double arc_length_m);
+
+struct Patch3dSettings {
+  double tread_width_m = 0.15;     ///< shoulder to shoulder: no cell outside +-width/2
+  double lateral_cell_m = 2.5e-3;  ///< target cell width; columns = round(width / cell)
+  CrownProfile crown;
+  LateralBelt lateral_belt;          ///< disabled: laterally rigid sections
+  int max_pattern_iterations = 200;  ///< Newton steps on the lateral pattern per load
+};
+
+/// One column's extent along the road (the contour per y).
+struct ColumnEdges {
+  bool contact = false;
+  double rear_x_m = 0, front_x_m = 0;
+};
+
+/// The pressure map as a footprint image: one row per y (pressure_kPa[j][i] at x_mm[i],
+/// y_mm[j]).
+struct PressureMap {
+  std::vector<double> x_mm, y_mm;
+  std::vector<std::vector<double>> pressure_kPa;
+};
+
+struct Patch3dResult {
+  double load_N = 0;
+  bool converged = false;
+  std::string message;
+  int pattern_iterations = 0;  ///< outer (lateral pattern) steps; 0 for solve_cells()
+  int contact_iterations = 0;  ///< active-set iterations of the contact solver, all steps
+  double sinking_m = 0;
+  double length_m = 0;  ///< longest column's extent (the centre line for a crowned tread)
+  double width_m = 0;   ///< widest section's lateral extent, 2 max_i half_width_m[i]
+  double equilibrium_residual = 0;      ///< |sum f - F_z| / F_z
+  double complementarity_residual = 0;  ///< max |f_ij g_ij| / (F_z sinking), over every cell
+  double max_penetration_m = 0;         ///< max(-g_ij, 0)
+
+  int sections = 0, columns = 0;
+  double dy_m = 0;
+  std::vector<double> x_m;              ///< deformed belt position of each section along the road
+  std::vector<double> dx_m;             ///< road length of each section (ds cos theta)
+  std::vector<double> y_m;              ///< centre of each column
+  std::vector<double> section_force_N;  ///< F_i
+  std::vector<double> section_approach_m;  ///< d_i = delta - sag_i - (C F)_i
+  std::vector<double> cell_force_N;        ///< f_ij at [i * columns + j]
+  std::vector<double> belt_deflection_m;   ///< lateral belt deflection v_ij (0: rigid belt)
+  std::vector<double> half_width_m;        ///< lateral edge |y| per section (contour per x)
+  std::vector<ColumnEdges> column_edges;   ///< longitudinal edges per column (contour per y)
+  std::vector<char> section_active;        ///< F_i > 0 (warm start of the next load)
+
+  double cell_force(int i, int j) const { return cell_force_N[std::size_t(i) * columns + j]; }
+  double belt_deflection(int i, int j) const {
+    return belt_deflection_m[std::size_t(i) * columns + j];
+  }
+  double pressure_Pa(int i, int j) const { return cell_force(i, j) / (dx_m[i] * dy_m); }
+  double vertical_stiffness_N_m() const { return load_N / sinking_m; }
+};
+
+/// The 3D patch on a tyre model's sections. Keeps a reference to the model (it must outlive
+/// this object). solve() and solve_cells() are const and build their own operators: one
+/// Patch3d may serve several threads.
+class Patch3d {
+ public:
+  /// Columns allowed with a lateral belt (its compliance is a dense columns^2 matrix).
+  static constexpr int kMaxLateralBeltColumns = 400;
+  Patch3d(const TyreModel& model, Patch3dSettings settings);
+
+  const TyreModel& model() const { return model_; }
+  const Patch3dSettings& settings() const { return settings_; }
+  int sections() const { return model_.candidates(); }
+  int columns() const { return static_cast<int>(y_m_.size()); }
+  const std::vector<double>& column_y_m() const { return y_m_; }
+  const std::vector<double>& column_drop_m() const { return z_m_; }
+  /// The lateral belt compliance of a section (lateral_belt_compliance); empty when rigid.
+  const Eigen::MatrixXd& lateral_compliance() const { return G_; }
+  /// Vertical tread compliance of one cell of section i [m/N].
+  double cell_tread_compliance(int i) const { return t_[i]; }
+
+  /// The laterally rigid reduction (see the top of this file); `warm` is a previous result's
+  /// section_active.
+  Patch3dResult solve(double load_N, const std::vector<char>* warm = nullptr) const;
+  /// The same problem with every cell an unknown (reference for the reduction; slower).
+  Patch3dResult solve_cells(double load_N) const;
+  /// Loads in order, each warm-started from the previous result.
+  std::vector<Patch3dResult> solve_all(const std::vector<double>& loads_N) const;
+
+ private:
+  double lateral_half_width(const Patch3dResult& r, int i) const;
+  Patch3dResult finish(double load_N, const std::vector<double>& cell_force, double delta,
+                       Patch3dResult r) const;
+
+  const TyreModel& model_;
+  Patch3dSettings settings_;
+  std::vector<double> y_m_, z_m_;  ///< column centres and their crown drops
+  std::vector<double> t_;          ///< cell tread compliance per section
+  double k_radial_cell_ = 0, k_tangential_cell_ = 0;
+  Eigen::MatrixXd G_;  ///< lateral belt compliance of a section (empty: laterally rigid)
+};
+
+/// The map cropped to the sections in contact and `margin` sections either side.
+PressureMap pressure_map(const Patch3dResult& r, int margin = 2);
+
+/// Settings from the `footprint_3d:` section (tread_width_mm, lateral_cell_mm, crown: ...).
+Patch3dSettings read_patch3d_settings(const ConfigSection& section);
+
+/// A tyre config with its `footprint_3d:` section: the section is read first, then the rest
+/// by read_tyre_config (which still rejects any key nobody read).
+struct Tyre3dConfig {
+  TyreConfig tyre;
+  Patch3dSettings patch;
+};
+Tyre3dConfig load_tyre3d_config(const std::string& path,
+                                const std::vector<std::string>& overrides = {});
+
+}  // namespace modaltyre::contact

@@ -1,0 +1,346 @@
+#include "modaltyre/contact/patch3d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "modaltyre/core/errors.h"
+#include "modaltyre/solvers/unilateral_contact.h"
+#include "patch3d_operators.h"
+#include "patch3d_sections.h"
+
+namespace modaltyre::contact {
+namespace {
+
+/// The carcass-only vertical compliance of the sections as an operator: the 2D model's
+/// (vertical_compliance_operator) with the tread springs made rigid, i.e. no diagonal term.
+solvers::WeightedToeplitzCompliance carcass_operator(const TyreModel& m) {
+  TyreModel carcass;
+  carcass.kernels = m.kernels;
+  carcass.theta = m.theta;
+  carcass.k_radial_N_m = carcass.k_tangential_N_m = std::numeric_limits<double>::infinity();
+  return vertical_compliance_operator(carcass);
+}
+
+/// C F over every section.
+Eigen::VectorXd carcass_product(const solvers::ComplianceOperator& C, const Eigen::VectorXd& F) {
+  const int S = C.size();
+  Eigen::MatrixXd out(S, 1);
+  C.apply(0, S, 0, S, F, out);
+  return out.col(0);
+}
+
+solvers::ContactOptions contact_options(const TyreModel& m) {
+  solvers::ContactOptions o;
+  o.max_iterations = m.config.solver.max_iterations;
+  o.gap_tolerance = m.config.solver.gap_tolerance;
+  return o;
+}
+
+}  // namespace
+
+Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings)
+    : model_(model), settings_(std::move(settings)) {
+  const auto& s = settings_;
+  if (!(s.tread_width_m > 0) || !(s.lateral_cell_m > 0)) {
+    throw std::invalid_argument("3D patch: tread width and lateral cell must be > 0");
+  }
+  const double columns = std::round(s.tread_width_m / s.lateral_cell_m);
+  if (columns > 2000) throw std::invalid_argument("3D patch: more than 2000 columns");
+  s.crown.validate();
+  const int n = std::max(1, static_cast<int>(columns));
+  const double dy = s.tread_width_m / n;
+  const double half = 0.5 * s.tread_width_m;
+  if (half >= s.crown.reach_m()) {
+    throw std::invalid_argument("3D patch: the crown profile turns vertical inside the tread");
+  }
+  for (int j = 0; j < n; ++j) {
+    y_m_.push_back(-half + (j + 0.5) * dy);
+    z_m_.push_back(s.crown.drop_m(y_m_.back()));
+  }
+  const auto& T = model_.config.tread;
+  const double G = T.modulus_Pa / (2 * (1 + T.poisson));
+  // Seed 001 eq. (6)-(9) per unit area: a cell of dy x ds.
+  k_radial_cell_ = T.modulus_Pa * dy * model_.unit_length_m / T.thickness_m;
+  k_tangential_cell_ = G * dy * model_.unit_length_m / T.thickness_m;
+  for (double th : model_.theta) {
+    const double c = std::cos(th), sn = std::sin(th);
+    t_.push_back(c * c / k_radial_cell_ + sn * sn / k_tangential_cell_);
+  }
+  if (s.lateral_belt.enabled) {
+    if (n > kMaxLateralBeltColumns) {
+      throw std::invalid_argument("3D patch: a lateral belt supports at most " +
+                                  std::to_string(kMaxLateralBeltColumns) + " columns");
+    }
+    G_ = lateral_belt_compliance(s.lateral_belt, s.tread_width_m, n, model_.unit_length_m);
+  }
+}
+
+Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const {
+  MODALTYRE_CHECK(load_N > 0, "load must be positive");
+  const int S = sections(), ny = columns();
+  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(model_);
+  const auto opt = contact_options(model_);
+  const std::unique_ptr<detail::SectionLaws> laws =
+      G_.size() ? detail::flexible_sections(t_, z_m_, G_, opt.max_iterations)
+                : detail::rigid_sections(t_, z_m_);
+  Patch3dResult r;
+  r.load_N = load_N;
+
+  // The objective J(F) of the reduction; `update` moves the lateral patterns to F's.
+  auto energies = [&](const Eigen::VectorXd& F, bool update) {
+    double e = 0;
+    for (int i = 0; i < S; ++i) e += laws->energy(i, std::max(F(i), 0.0), update);
+    return e;
+  };
+  auto objective = [&](const Eigen::VectorXd& F) {
+    return 0.5 * F.dot(carcass_product(carcass, F)) + model_.sag.dot(F) + energies(F, false);
+  };
+
+  Eigen::VectorXd F;  // current iterate (empty before the first step)
+  std::vector<char> active = warm ? *warm : std::vector<char>{};
+  const double gtol_rel = model_.config.solver.gap_tolerance;
+  for (int it = 1; it <= settings_.max_pattern_iterations; ++it) {
+    r.pattern_iterations = it;
+    std::vector<double> diag(S);
+    Eigen::VectorXd gap0(S);
+    for (int i = 0; i < S; ++i) {
+      double offset = 0;
+      laws->reduced(i, diag[i], offset);
+      gap0(i) = model_.sag(i) + offset;
+    }
+    const detail::DiagonalShifted op(carcass, std::move(diag));
+    solvers::ContactProblem p;
+    p.compliance_operator = &op;
+    p.initial_gap = gap0;
+    p.load_N = load_N;
+    const solvers::ContactSolution s =
+        solvers::solve_unilateral_contact(p, opt, active.empty() ? nullptr : &active);
+    r.contact_iterations += s.iterations;
+    if (!s.converged()) {
+      r.message = s.message;
+      return r;
+    }
+    active = s.active;
+    // Consistency of the pattern with the step's approaches d_i = delta - sag_i - (C F)_i.
+    const Eigen::VectorXd& Fh = s.force;
+    const Eigen::VectorXd CF = carcass_product(carcass, Fh);
+    Eigen::VectorXd d(S);
+    for (int i = 0; i < S; ++i) d(i) = s.approach_m - model_.sag(i) - CF(i);
+    const double tol = gtol_rel * std::max(std::abs(s.approach_m), 1e-12);
+    bool consistent = true;
+    for (int i = 0; i < S && consistent; ++i) consistent = laws->consistent(i, Fh(i), d(i), tol);
+    if (consistent) {
+      std::vector<double> f(std::size_t(S) * ny, 0.0);
+      for (int i = 0; i < S; ++i) {
+        if (Fh(i) > 0) laws->cell_forces(i, d(i), &f[std::size_t(i) * ny]);
+      }
+      std::ostringstream msg;
+      msg << "converged in " << it << " lateral-pattern steps (" << r.contact_iterations
+          << " active-set iterations)";
+      r.message = msg.str();
+      return finish(load_N, f, s.approach_m, std::move(r));
+    }
+    // Newton step on J towards the step's forces, backtracked while J does not decrease.
+    if (F.size() == 0) {
+      F = Fh;
+    } else {
+      const Eigen::VectorXd dF = Fh - F;
+      const double j0 = objective(F);
+      double alpha = 1;
+      for (int k = 0; k < 40 && objective(F + alpha * dF) > j0; ++k) alpha *= 0.5;
+      F += alpha * dF;
+    }
+    energies(F, true);
+  }
+  r.message = "lateral contact pattern did not settle in " +
+              std::to_string(settings_.max_pattern_iterations) + " steps";
+  return r;
+}
+
+Patch3dResult Patch3d::solve_cells(double load_N) const {
+  MODALTYRE_CHECK(load_N > 0, "load must be positive");
+  const int S = sections(), ny = columns();
+  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(model_);
+  const detail::CellCompliance op(carcass, ny, t_, G_.size() ? &G_ : nullptr);
+  solvers::ContactProblem p;
+  p.compliance_operator = &op;
+  p.initial_gap.resize(std::size_t(S) * ny);
+  for (int i = 0; i < S; ++i)
+    for (int j = 0; j < ny; ++j) p.initial_gap(std::size_t(i) * ny + j) = model_.sag(i) + z_m_[j];
+  p.load_N = load_N;
+  const solvers::ContactSolution s = solvers::solve_unilateral_contact(p, contact_options(model_));
+  Patch3dResult r;
+  r.load_N = load_N;
+  r.contact_iterations = s.iterations;
+  r.message = s.message;
+  if (!s.converged()) return r;
+  std::vector<double> f(s.force.data(), s.force.data() + s.force.size());
+  return finish(load_N, f, s.approach_m, std::move(r));
+}
+
+std::vector<Patch3dResult> Patch3d::solve_all(const std::vector<double>& loads_N) const {
+  std::vector<Patch3dResult> out;
+  for (double F : loads_N) {
+    const bool warm = !out.empty() && out.back().converged;
+    out.push_back(solve(F, warm ? &out.back().section_active : nullptr));
+  }
+  return out;
+}
+
+double Patch3d::lateral_half_width(const Patch3dResult& r, int i) const {
+  // The level function e_j = d_i - z_j - v_ij across the section (tread compression inside,
+  // minus the gap outside), linear between the column centres: its outermost zero on each
+  // side; the tread edge if the outermost column is in contact.
+  const int ny = columns();
+  const double half = 0.5 * settings_.tread_width_m;
+  auto level = [&](int j) { return r.section_approach_m[i] - z_m_[j] - r.belt_deflection(i, j); };
+  auto in_contact = [&](int j) { return r.cell_force(i, j) > 0; };
+  int lo = 0, hi = ny - 1;
+  while (lo < ny && !in_contact(lo)) ++lo;
+  while (hi >= 0 && !in_contact(hi)) --hi;
+  if (lo > hi) return 0;
+  auto edge = [&](int in, int out) {
+    const double ein = level(in), eout = level(out);
+    return y_m_[in] + ein / (ein - eout) * (y_m_[out] - y_m_[in]);
+  };
+  const double right = hi == ny - 1 ? half : edge(hi, hi + 1);
+  const double left = lo == 0 ? -half : edge(lo, lo - 1);
+  return 0.5 * (right - left);
+}
+
+Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, double delta,
+                              Patch3dResult r) const {
+  const int S = sections(), ny = columns();
+  const TyreModel& m = model_;
+  r.sections = S;
+  r.columns = ny;
+  r.dy_m = settings_.tread_width_m / ny;
+  r.y_m = y_m_;
+  r.cell_force_N = f;
+  r.sinking_m = delta;
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(S);
+  for (int i = 0; i < S; ++i)
+    for (int j = 0; j < ny; ++j) F(i) += f[std::size_t(i) * ny + j];
+  if (F(0) > 0 || F(S - 1) > 0) {
+    std::ostringstream msg;
+    msg << "contact reached the edge of the candidate window (+-" << 0.5e3 * m.config.mesh.window_m
+        << " mm): increase contact.window_mm";
+    r.message = msg.str();
+    return r;
+  }
+  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(m);
+  const Eigen::VectorXd CF = carcass_product(carcass, F);
+  r.section_force_N.assign(F.data(), F.data() + S);
+  r.section_approach_m.resize(S);
+  r.section_active.resize(S);
+  // The belt's lateral deflection of each cell, G f_i (zero for the laterally rigid belt).
+  r.belt_deflection_m.assign(std::size_t(S) * ny, 0.0);
+  if (G_.size()) {
+    for (int i = 0; i < S; ++i) {
+      if (!(F(i) > 0)) continue;
+      const Eigen::Map<const Eigen::VectorXd> fi(&f[std::size_t(i) * ny], ny);
+      Eigen::Map<Eigen::VectorXd>(&r.belt_deflection_m[std::size_t(i) * ny], ny) = G_ * fi;
+    }
+  }
+  double total = 0, comp = 0, pen = 0;
+  for (int i = 0; i < S; ++i) {
+    r.section_approach_m[i] = delta - m.sag(i) - CF(i);
+    r.section_active[i] = F(i) > 0;
+    for (int j = 0; j < ny; ++j) {
+      const double fij = f[std::size_t(i) * ny + j];
+      const double g = m.sag(i) + z_m_[j] + CF(i) + r.belt_deflection_m[std::size_t(i) * ny + j] +
+                       t_[i] * fij - delta;
+      total += fij;
+      comp = std::max(comp, std::abs(fij * g));
+      pen = std::max(pen, -g);
+    }
+  }
+  r.equilibrium_residual = std::abs(total - load_N) / load_N;
+  r.complementarity_residual = comp / (load_N * std::max(std::abs(delta), 1e-12));
+  r.max_penetration_m = std::max(pen, 0.0);
+
+  // Deformed positions (seed 001 eq. 1, 6, 12): the belt section moved by the carcass, each
+  // cell's surface further by its own tread.
+  const auto& K = m.kernels;
+  const solvers::LagConvolution2x2 H({K.r_from_r, K.r_from_t, K.t_from_r, K.t_from_t}, K.lags);
+  std::vector<double> fr(S), ft(S), ur(S), ut(S);
+  for (int i = 0; i < S; ++i)
+    fr[i] = F(i) * std::cos(m.theta[i]), ft[i] = F(i) * std::sin(m.theta[i]);
+  H.apply(0, S, 0, S, fr.data(), ft.data(), ur.data(), ut.data());
+  const double R0 = m.config.outer_radius_m;
+  auto cell_x = [&](int i, double fij) {
+    const double c = std::cos(m.theta[i]), sn = std::sin(m.theta[i]);
+    return (R0 - ur[i] - fij * c / k_radial_cell_) * sn +
+           (ut[i] + fij * sn / k_tangential_cell_) * c;
+  };
+  r.x_m.resize(S);
+  r.dx_m.resize(S);
+  r.half_width_m.assign(S, 0.0);
+  const double half = 0.5 * settings_.tread_width_m;
+  for (int i = 0; i < S; ++i) {
+    r.x_m[i] = cell_x(i, 0.0);
+    r.dx_m[i] = m.unit_length_m * std::cos(m.theta[i]);
+    if (!(F(i) > 0)) continue;
+    if (G_.size()) {
+      r.half_width_m[i] = lateral_half_width(r, i);
+    } else {
+      r.half_width_m[i] = std::min(settings_.crown.half_width_m(r.section_approach_m[i]), half);
+    }
+    r.width_m = std::max(r.width_m, 2 * r.half_width_m[i]);
+  }
+  // Longitudinal edges per column: the level function d_i - z_j - v_ij (the cell's tread
+  // compression inside, minus its gap outside; v the belt's lateral deflection) interpolated
+  // linearly to zero between the sections.
+  r.column_edges.assign(ny, {});
+  for (int j = 0; j < ny; ++j) {
+    int first = -1, last = -1;
+    for (int i = 0; i < S; ++i) {
+      if (f[std::size_t(i) * ny + j] > 0) {
+        if (first < 0) first = i;
+        last = i;
+      }
+    }
+    if (first < 0) continue;
+    auto edge = [&](int in, int out) {
+      const double pin = r.section_approach_m[in] - z_m_[j] - r.belt_deflection(in, j);
+      const double pout = r.section_approach_m[out] - z_m_[j] - r.belt_deflection(out, j);
+      const double xin = cell_x(in, f[std::size_t(in) * ny + j]), xout = cell_x(out, 0.0);
+      return xin + pin / (pin - pout) * (xout - xin);
+    };
+    ColumnEdges& e = r.column_edges[j];
+    e.contact = true;
+    e.rear_x_m = edge(first, first - 1);
+    e.front_x_m = edge(last, last + 1);
+    r.length_m = std::max(r.length_m, e.front_x_m - e.rear_x_m);
+  }
+  r.converged = std::isfinite(r.sinking_m) && std::isfinite(r.length_m);
+  if (!r.converged) r.message = "3D patch result is not finite";
+  return r;
+}
+
+PressureMap pressure_map(const Patch3dResult& r, int margin) {
+  PressureMap map;
+  int first = -1, last = -1;
+  for (int i = 0; i < r.sections; ++i) {
+    if (r.section_force_N[i] > 0) {
+      if (first < 0) first = i;
+      last = i;
+    }
+  }
+  if (first < 0) return map;
+  first = std::max(0, first - margin);
+  last = std::min(r.sections - 1, last + margin);
+  for (int i = first; i <= last; ++i) map.x_mm.push_back(r.x_m[i] * 1e3);
+  for (int j = 0; j < r.columns; ++j) {
+    map.y_mm.push_back(r.y_m[j] * 1e3);
+    std::vector<double> row;
+    for (int i = first; i <= last; ++i) row.push_back(r.pressure_Pa(i, j) * 1e-3);
+    map.pressure_kPa.push_back(std::move(row));
+  }
+  return map;
+}
+
+}  // namespace modaltyre::contact

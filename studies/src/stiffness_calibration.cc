@@ -1,0 +1,115 @@
+#include "modaltyre/studies/stiffness_calibration.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::studies {
+
+using namespace contact;
+namespace {
+
+constexpr double kMinScale = 1e-3, kMaxScale = 1e3;  // tyre_config.cc's range of the key
+
+std::string mm(double v) {
+  char b[48];
+  std::snprintf(b, sizeof b, "%.4g mm", v);
+  return b;
+}
+
+}  // namespace
+
+ScaleCalibration calibrate_compliance_scale(const TyreModel& model,
+                                            const TyreParameters& parameters,
+                                            const OperatingConditions& at, double target_sinking_mm,
+                                            double relative_tolerance) {
+  ScaleCalibration out;
+  out.target_mm = target_sinking_mm;
+  if (!(target_sinking_mm > 0) || !std::isfinite(target_sinking_mm)) {
+    throw InputError({"", 0, "modal.compliance_scale"},
+                     "target deflection must be a positive number, got " + mm(target_sinking_mm));
+  }
+  TyreParameters trial = parameters;
+  // f(log scale) = sinking - target; throws nothing, reports a failed solve.
+  auto residual = [&](double log_scale, double& sinking_mm) {
+    trial.compliance_scale = std::exp(log_scale);
+    const Prediction p = predict(model, trial, at);
+    ++out.evaluations;
+    if (!p.ok) {
+      out.message = "footprint at compliance_scale " + std::to_string(trial.compliance_scale) +
+                    " did not converge: " + p.message;
+      return false;
+    }
+    sinking_mm = p.sinking_mm;
+    return true;
+  };
+
+  // Bracket outwards from the config's own scale in factors of 4: the far ends of the key's
+  // range may not even be solvable (a very soft carcass outgrows the candidate window).
+  const double step = std::log(4.0);
+  double a = std::log(parameters.compliance_scale), sa = 0;
+  if (!residual(a, sa)) return out;
+  double b = a, sb = sa;
+  if (sa < target_sinking_mm) {
+    while (sb < target_sinking_mm) {
+      a = b, sa = sb;
+      if (b >= std::log(kMaxScale)) {
+        throw InputError({"", 0, "modal.compliance_scale"},
+                         "the measured deflection " + mm(target_sinking_mm) +
+                             " exceeds the model's at the softest carcass allowed (" + mm(sb) +
+                             " at compliance_scale 1e3)");
+      }
+      b = std::min(b + step, std::log(kMaxScale));
+      if (!residual(b, sb)) return out;
+    }
+  } else {
+    while (sa > target_sinking_mm) {
+      b = a, sb = sa;
+      if (a <= std::log(kMinScale)) {
+        throw InputError({"", 0, "modal.compliance_scale"},
+                         "the measured deflection " + mm(target_sinking_mm) +
+                             " is below the model's at the stiffest carcass allowed (" + mm(sa) +
+                             " at compliance_scale 1e-3, mostly the tread's): the tested tyre "
+                             "is stiffer than this config's tread and road allow");
+      }
+      a = std::max(a - step, std::log(kMinScale));
+      if (!residual(a, sa)) return out;
+    }
+  }
+  if (sa == target_sinking_mm || sb == target_sinking_mm) {
+    out.converged = true;
+    out.compliance_scale = std::exp(sa == target_sinking_mm ? a : b);
+    out.sinking_mm = target_sinking_mm;
+    return out;
+  }
+  // Illinois regula falsi: superlinear, and never leaves the bracket.
+  double fa = sa - target_sinking_mm, fb = sb - target_sinking_mm;
+  int side = 0;
+  for (int it = 0; it < 100; ++it) {
+    const double c = (a * fb - b * fa) / (fb - fa);
+    double sc = 0;
+    if (!residual(c, sc)) return out;
+    const double fc = sc - target_sinking_mm;
+    out.compliance_scale = std::exp(c);
+    out.sinking_mm = sc;
+    if (std::abs(fc) <= relative_tolerance * target_sinking_mm) {
+      out.converged = true;
+      return out;
+    }
+    if ((fc > 0) == (fb > 0)) {
+      b = c, fb = fc;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    } else {
+      a = c, fa = fc;
+      if (side == 1) fb *= 0.5;
+      side = 1;
+    }
+  }
+  out.message = "compliance_scale did not settle in 100 footprints (last sinking " +
+                mm(out.sinking_mm) + ", target " + mm(target_sinking_mm) + ")";
+  return out;
+}
+
+}  // namespace modaltyre::studies

@@ -1,0 +1,257 @@
+#include "modaltyre/studies/validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#include "modaltyre/contact/predictor.h"
+#include "modaltyre/core/errors.h"
+#include "modaltyre/modal/hammer_data.h"
+#include "modaltyre/solvers/least_squares.h"
+
+namespace modaltyre::studies {
+namespace {
+
+using namespace contact;
+
+struct Calibratable {
+  std::function<double(const TyreConfig&)> value;  ///< current value in config units
+  std::function<void(TyreConfig&, double)> set;    ///< as the config reader sets the key
+  double min, max;  ///< physically plausible range searched by the calibration
+};
+
+/// Scalar config keys that may be calibrated.
+const std::map<std::string, Calibratable>& calibratable() {
+  static const std::map<std::string, Calibratable> keys = {
+      {"modal.compliance_scale",
+       {[](const TyreConfig& c) { return c.compliance_scale; },
+        [](TyreConfig& c, double v) { c.compliance_scale = v; }, 0.2, 5}},
+      {"tread.modulus_MPa",
+       {[](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; },
+        [](TyreConfig& c, double v) { c.tread.modulus_Pa = v * 1e6; }, 0.1, 100}},
+      {"tread.thickness_mm",
+       {[](const TyreConfig& c) { return c.tread.thickness_m * 1e3; },
+        [](TyreConfig& c, double v) { c.tread.thickness_m = v * 1e-3; }, 1, 50}},
+      {"tread.contact_width_mm",
+       {[](const TyreConfig& c) { return c.tread.width_m * 1e3; },
+        [](TyreConfig& c, double v) { c.tread.width_m = v * 1e-3; }, 20, 500}},
+      {"tyre.outer_radius_mm",
+       {[](const TyreConfig& c) { return c.outer_radius_m * 1e3; },
+        [](TyreConfig& c, double v) {
+          c.outer_radius_m = v * 1e-3;
+          // The config reader's check of the key (read_tyre_config).
+          if (c.mesh.window_m > M_PI * c.outer_radius_m) {
+            throw InputError({c.source, 0, "contact.window_mm"},
+                             "candidate window longer than half the circumference");
+          }
+        },
+        100, 1500}},
+      // Starts at 10 rad^2/s^2 when not stated (the fit to resolved orders may give 0).
+      {"modal.extension_bending_s2_rad2_s2",
+       {[](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; },
+        [](TyreConfig& c, double v) { c.extension_s2 = v; }, 1e-3, 1e6}},
+  };
+  return keys;
+}
+
+// Predicted footprints of the rows at their conditions, in file order (on the effect-free path
+// each warm-started from the previous, as validate always did).
+std::vector<Prediction> predict_rows(const TyreModel& model, const std::vector<MeasuredRow>& rows) {
+  std::vector<OperatingConditions> conditions;
+  for (const auto& r : rows) conditions.push_back(r.conditions);
+  return predict_all(model, conditions);
+}
+
+void require_converged(const std::vector<Prediction>& res, const std::string& stage) {
+  for (const auto& p : res) {
+    if (!p.ok) {
+      std::ostringstream m;
+      m << stage << ": load case " << p.footprint.load.load_N
+        << " N did not converge: " << p.message;
+      throw ComputationError(m.str());
+    }
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& validation_observables() {
+  static const std::vector<std::string> names = {"sinking_mm", "length_mm", "width_mm"};
+  return names;
+}
+
+bool rows_at_own_conditions(const MeasurementSet& set, const TyreConfig& config) {
+  return !set.loads_only || conditions_act(config);
+}
+
+MeasurementSet read_validation_measurements(const std::string& path, const TyreConfig& config) {
+  MeasurementSet set = read_measurements(path, config);
+  bool compared = false;
+  for (const auto& o : set.observables) {
+    for (const auto& v : validation_observables()) compared = compared || o == v;
+  }
+  if (!compared) {
+    throw InputError(
+        {path, 1, "sinking_mm"},
+        "no observable validate compares: give any of sinking_mm, length_mm, width_mm");
+  }
+  if (rows_at_own_conditions(set, config)) return set;
+  // Rows at the config's conditions differ by their load only: one row per load.
+  for (std::size_t i = 0; i < set.rows.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (set.rows[j].conditions.load_N == set.rows[i].conditions.load_N) {
+        throw InputError({path, set.rows[i].line, "load_N"},
+                         "duplicate load (same as line " + std::to_string(set.rows[j].line) + ")");
+      }
+    }
+  }
+  return set;
+}
+
+std::string range_bound_side(double value, double min, double max, bool log_scale) {
+  const double span = log_scale ? std::log(max / min) : max - min;
+  const double lo = log_scale ? std::log(value / min) : value - min;
+  const double hi = log_scale ? std::log(max / value) : max - value;
+  if (lo < 1e-3 * span) return "lower";
+  if (hi < 1e-3 * span) return "upper";
+  return "";
+}
+
+ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSet& set) {
+  const std::vector<MeasuredRow>& measured = set.rows;
+  const std::string& config_path = base.source;
+  const auto ident = modal::identify_modes(modal::read_hammer_csv(base.hammer_csv));
+  const auto& vs = base.validation;
+  ValidationReport rep;
+  Calibration& cal = rep.calibration;
+  cal.keys = vs.calibrate;
+  cal.rows = vs.calibration_rows;
+  cal.observables = vs.observables;
+  std::vector<MeasuredRow> cal_rows;
+  for (int r : cal.rows) {
+    if (r < 1 || r > static_cast<int>(measured.size())) {
+      throw InputError({config_path, 0, "validation.calibration_rows"},
+                       "row " + std::to_string(r) + " does not exist in the measured file (" +
+                           std::to_string(measured.size()) + " rows)");
+    }
+    cal_rows.push_back(measured[r - 1]);
+  }
+  for (const auto& key : cal.keys) {
+    if (!calibratable().count(key)) {
+      std::string list;
+      for (const auto& kv : calibratable()) list += (list.empty() ? "" : ", ") + kv.first;
+      throw InputError({config_path, 0, "validation.calibrate"},
+                       "'" + key + "' cannot be calibrated; choose from: " + list);
+    }
+    cal.initial_values.push_back(calibratable().at(key).value(base));
+  }
+  const auto& known = validation_observables();
+  for (const auto& obs : cal.keys.empty() ? std::vector<std::string>{} : cal.observables) {
+    if (std::find(known.begin(), known.end(), obs) == known.end()) {
+      throw InputError(
+          {config_path, 0, "validation.calibration_observables"},
+          "'" + obs + "' cannot be fitted; choose from: sinking_mm, length_mm, width_mm");
+    }
+  }
+  for (const auto& row : cal_rows) {
+    for (const auto& obs : cal.observables) {
+      if (!row.value(obs)) {
+        throw InputError({config_path, 0, "validation.calibration_observables"},
+                         "calibration row " + std::to_string(row.row) + " has no " + obs);
+      }
+    }
+  }
+
+  // The model at calibrated values: the config with the keys set as its reader sets them (no
+  // YAML is read again), on the modes identified once.
+  auto model_for = [&](const Eigen::VectorXd& log_values) {
+    TyreConfig c = base;
+    for (std::size_t k = 0; k < cal.keys.size(); ++k) {
+      calibratable().at(cal.keys[k]).set(c, std::exp(log_values(static_cast<Eigen::Index>(k))));
+    }
+    return build_tyre_model(c, ident);
+  };
+
+  Eigen::VectorXd x(static_cast<Eigen::Index>(cal.keys.size()));
+  for (std::size_t k = 0; k < cal.keys.size(); ++k) {
+    x(static_cast<Eigen::Index>(k)) = std::log(cal.initial_values[k]);
+  }
+  if (!cal.keys.empty()) {
+    // Parameters are positive: fit their logarithms (relative steps, no sign flips).
+    const std::size_t n_res = cal_rows.size() * cal.observables.size();
+    auto residual = [&](const Eigen::VectorXd& lx) {
+      // Outside the plausible range: a large residual makes the step fail instead of the model.
+      for (std::size_t k = 0; k < cal.keys.size(); ++k) {
+        const auto& c = calibratable().at(cal.keys[k]);
+        const double v = std::exp(lx(static_cast<Eigen::Index>(k)));
+        if (!(v >= c.min && v <= c.max)) {
+          return Eigen::VectorXd::Constant(static_cast<Eigen::Index>(n_res), 1e6).eval();
+        }
+      }
+      const auto res = predict_rows(model_for(lx), cal_rows);
+      require_converged(res, "calibration");
+      std::vector<double> r;
+      for (std::size_t i = 0; i < cal_rows.size(); ++i) {
+        for (const auto& obs : cal.observables) {
+          r.push_back(res[i].observable(obs) / *cal_rows[i].value(obs) - 1.0);
+        }
+      }
+      return Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())).eval();
+    };
+    solvers::LeastSquaresOptions lso;
+    lso.relative_step = 1e-5;
+    lso.step_tolerance = 1e-6;  // 1e-6 relative in each parameter is far below its meaning
+    lso.cost_tolerance = 1e-8;
+    const auto fit = solvers::levenberg_marquardt(residual, x, lso);
+    x = fit.x;
+    cal.converged = fit.converged;
+    cal.evaluations = fit.evaluations;
+    cal.rms_rel_residual =
+        fit.residual.size() ? std::sqrt(fit.residual.squaredNorm() / fit.residual.size()) : 0.0;
+    for (std::size_t k = 0; k < cal.keys.size(); ++k) {
+      const double v = std::exp(x(static_cast<Eigen::Index>(k)));
+      const auto& range = calibratable().at(cal.keys[k]);
+      cal.values.push_back(v);
+      cal.at_bound.push_back(range_bound_side(v, range.min, range.max, true));  // log-fitted
+    }
+    if (cal.rms_rel_residual > 1e3) {
+      throw ComputationError("calibration found no parameters within their plausible ranges");
+    }
+  }
+  rep.model = model_for(x);
+  const auto predicted = predict_rows(rep.model, measured);
+  require_converged(predicted, "validation");
+  for (const auto& p : predicted) rep.footprints.push_back(p.footprint);
+  rep.with_conditions = rows_at_own_conditions(set, base);
+
+  const std::set<int> cal_set(cal.rows.begin(), cal.rows.end());
+  std::map<std::string, double> sq;
+  for (std::size_t i = 0; i < measured.size(); ++i) {
+    ValidationRow row;
+    row.measured = measured[i];
+    row.calibration = cal_set.count(measured[i].row) > 0;
+    row.sinking_mm = predicted[i].sinking_mm;
+    row.length_mm = predicted[i].length_mm;
+    row.width_mm = predicted[i].width_mm;
+    auto rel_error = [&](const std::string& obs) -> std::optional<double> {
+      const auto m = row.measured.value(obs);
+      if (!m) return std::nullopt;
+      const double e = predicted[i].observable(obs) / *m - 1;
+      if (!row.calibration) {
+        sq[obs] += e * e;
+        ++rep.predicted_rows[obs];
+      }
+      return e;
+    };
+    row.sinking_rel_error = rel_error("sinking_mm");
+    row.length_rel_error = rel_error("length_mm");
+    row.width_rel_error = rel_error("width_mm");
+    rep.rows.push_back(row);
+  }
+  for (const auto& [obs, s] : sq) rep.rms_rel_error[obs] = std::sqrt(s / rep.predicted_rows[obs]);
+  return rep;
+}
+
+}  // namespace modaltyre::studies

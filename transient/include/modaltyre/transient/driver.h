@@ -1,0 +1,59 @@
+#pragma once
+// The transient driver: runs a scenario on CVODE + KLU, stops at contact switches (model.h,
+// ode_system.h) and samples the observables at the output step.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "modaltyre/solvers/cvode_klu.h"
+#include "modaltyre/transient/model.h"
+#include "modaltyre/transient/scenario.h"
+
+namespace modaltyre::transient {
+
+struct TransientSample {
+  double t_s = 0;
+  double load_N = 0;              ///< sum of contact forces (road reaction)
+  double applied_load_N = 0;      ///< F(t) at the hub
+  double hub_displacement_m = 0;  ///< z, downward
+  double sinking_m = 0;           ///< max_i (z + h_i - s_i): deflection of the tyre at the road
+  double contact_length_m = 0;
+  double longitudinal_force_N = 0;  ///< -(sum f x)/(R0 - z) - sum f h'(x)
+  double pressure_centre_m = 0;     ///< sum f x / sum f (+ forward)
+  double speed_m_s = 0;
+  int contact_units = 0;
+};
+
+enum class TransientStatus { completed, failed };
+
+struct TransientResult {
+  Scenario scenario = Scenario::load_hold;
+  TransientStatus status = TransientStatus::failed;
+  std::string message;
+  double simulated_s = 0;  ///< time reached
+  double wall_s = 0;
+  solvers::OdeStats stats;
+  int contact_events = 0;  ///< root returns (units entering or leaving)
+  std::vector<TransientSample> samples;
+  /// Mean of -longitudinal force over the last 10 % of the run (rolling resistance) [N].
+  double rolling_resistance_N = 0;
+  bool ok() const { return status == TransientStatus::completed; }
+  double real_time_factor() const { return wall_s > 0 ? simulated_s / wall_s : 0; }
+};
+
+struct TransientRunOptions {
+  /// Called after every output sample with (t, duration); return false to stop (cancel).
+  std::function<bool(double, double)> progress;
+  std::vector<double> final_state;  ///< filled with the last state if non-null-sized request
+  bool keep_final_state = false;
+  /// Re-initialise CVODE at every contact switch (BDF history discarded) instead of continuing
+  /// over the kink; slower, kept for comparisons.
+  bool restart_at_switches = false;
+};
+
+/// Runs a scenario. Failures of the integrator are reported in the result (message and time
+/// reached), never thrown; ill-posed settings are InputErrors.
+TransientResult run_transient(const TransientModel& model, Scenario scenario,
+                              TransientRunOptions* options = nullptr);
+
+}  // namespace modaltyre::transient

@@ -1,0 +1,59 @@
+#pragma once
+// The ODE of a transient model under a scenario (state layout and equations: model.h).
+//
+// Contact switches: one CVODE root function per unit, g_i = p_i - e_i (on) or p_i (off): the
+// tip of tread unit i touches the road when g_i rises through 0 and leaves when it falls
+// through 0 (with the tread force f_i = k_g g_i this is also the force's sign). CVODE locates
+// every root and returns there; the right-hand side is continuous across a switch (a kink of
+// max(0, .)), so the driver counts the switch and continues the integration (BDF's error test
+// shortens the steps over the kink) unless TransientRunOptions::restart_at_switches asks for a
+// re-initialisation. No state jump is needed.
+#include <Eigen/Dense>
+#include <cstdint>
+#include <vector>
+
+#include "modaltyre/solvers/cvode_klu.h"
+#include "modaltyre/transient/model.h"
+#include "modaltyre/transient/scenario.h"
+
+namespace modaltyre::transient {
+
+/// The ODE of a model under a scenario (public for tests: energy, Jacobian checks).
+class TransientSystem {
+ public:
+  TransientSystem(const TransientModel& model, const ScenarioPlan& plan);
+  int size() const { return model_.state_size(); }
+  void rhs(double t, const double* y, double* ydot) const;
+  void jacobian(double t, const double* y, solvers::CscMatrix& J) const;
+  void roots(double t, const double* y, double* g) const;
+  /// Contact forces f_i at (t, y).
+  Eigen::VectorXd forces(double t, const double* y) const;
+  /// Road height and slope at unit i at time t.
+  double road(double t, int i, double* slope = nullptr) const;
+  /// State of static equilibrium under `load_N` (footprint solver, relaxed tread).
+  std::vector<double> static_state(double load_N) const;
+  /// Kinetic + elastic energy (carcass, hub, contact springs; residual and Kelvin-Voigt parts
+  /// excluded), for energy checks of undamped models without residual orders.
+  double energy(double t, const double* y) const;
+  std::vector<double> absolute_tolerances() const;
+  /// Tells the system that a unit switched (a root was located): the next Jacobian treats the
+  /// units next to the patch ends as in contact (see jacobian()).
+  void contact_switched() const { ++switches_since_jacobian_; }
+  int64_t nnz() const;
+
+ private:
+  /// g_i = z + h_i - s_i - u_i (- e_i): the tread tip's penetration (root functions).
+  void tip_penetration(double t, const double* y, Eigen::VectorXd& g) const;
+  void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
+
+  const TransientModel& model_;
+  const ScenarioPlan& plan_;
+  // Work vectors of rhs() and roots(): the integrator calls them thousands of times, so they
+  // are not allocated per call (one TransientSystem per run and thread).
+  mutable Eigen::VectorXd scratch_f_, scratch_G_, scratch_Vf_, scratch_g_;
+  /// Units in the Jacobian's sparsity pattern (ever in contact at a Jacobian evaluation).
+  mutable std::vector<char> in_pattern_;
+  mutable long switches_since_jacobian_ = 0;
+};
+
+}  // namespace modaltyre::transient

@@ -1,0 +1,11 @@
+#pragma once
+// The transient (time-domain) tyre on a rigid road: modal carcass, Kelvin-Voigt tread, hub DOF,
+// unilateral contact; integrated with CVODE (BDF) + KLU. Derivations in docs/transient.md.
+//   model.h       the transient model built from a static TyreModel (equations stated there)
+//   scenario.h    load-hold, free-vibration, rolling, cleat: F(t), V(t), road, initial state
+//   ode_system.h  right-hand side, Jacobian and contact root functions
+//   driver.h      run_transient(): integration, contact switches, output samples
+#include "modaltyre/transient/driver.h"
+#include "modaltyre/transient/model.h"
+#include "modaltyre/transient/ode_system.h"
+#include "modaltyre/transient/scenario.h"

@@ -1,0 +1,270 @@
+#include "modaltyre/transient/driver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "modaltyre/core/errors.h"
+#include "modaltyre/transient/ode_system.h"
+
+namespace modaltyre::transient {
+namespace {
+
+/// Root returns in a row within kZenoWindow_s of each other before the run is stopped as
+/// chattering (never a hang): a located switch is normally followed by a step.
+constexpr int kZenoRootReturns = 1000;
+constexpr double kZenoWindow_s = 1e-12;
+
+TransientSample observe(const TransientModel& M, const TransientSystem& sys,
+                        const ScenarioPlan& plan, double t, const double* y) {
+  TransientSample s;
+  s.t_s = t;
+  // Tip penetration once (one pass over psi and V); forces and the edge interpolation use it.
+  std::vector<double> g(M.m);
+  sys.roots(t, y, g.data());
+  Eigen::VectorXd f(M.m);
+  for (int i = 0; i < M.m; ++i) f(i) = g[i] > 0 ? M.k_contact(i) * g[i] : 0.0;
+  const double z = y[M.z_index()];
+  const double R0 = M.tyre.config.outer_radius_m;
+  s.applied_load_N = plan.load(t);
+  s.hub_displacement_m = z;
+  s.speed_m_s = plan.speed(t);
+  s.load_N = f.sum();
+  double sink = -1e300, moment = 0, slope_force = 0;
+  int first = -1, last = -1;
+  for (int i = 0; i < M.m; ++i) {
+    double slope = 0;
+    const double h = sys.road(t, i, &slope);
+    sink = std::max(sink, z + h - M.tyre.sag(i));
+    if (f(i) > 0) {
+      if (first < 0) first = i;
+      last = i;
+      ++s.contact_units;
+      moment += f(i) * M.x_road(i);
+      slope_force += f(i) * slope;
+    }
+  }
+  s.sinking_m = sink;
+  s.pressure_centre_m = s.load_N > 0 ? moment / s.load_N : 0;
+  s.longitudinal_force_N = -moment / (R0 - z) - slope_force;
+  if (first >= 0) {
+    // Deformed positions of the end units (as footprint.cc): dynamic modes from the state,
+    // residual orders and tread quasi-statically from the current forces.
+    const Eigen::Map<const Eigen::VectorXd> q(y, M.nq);
+    auto deformed_x = [&](int i) {
+      double ur = M.phi_r.row(i).dot(q), ut = M.phi_t.row(i).dot(q);
+      const double th = M.tyre.theta[i];
+      if (M.nr > 0) {
+        for (int j = first; j <= last; ++j) {
+          if (f(j) <= 0) continue;
+          const modal::Transfer2x2 h = M.residual_kernels.at(i - j);
+          const double fr = f(j) * std::cos(M.tyre.theta[j]), ft = f(j) * std::sin(M.tyre.theta[j]);
+          ur += h.r_from_r * fr + h.r_from_t * ft;
+          ut += h.t_from_r * fr + h.t_from_t * ft;
+        }
+      }
+      ur += f(i) * std::cos(th) / M.tyre.k_radial_N_m;
+      ut += f(i) * std::sin(th) / M.tyre.k_tangential_N_m;
+      return (R0 - ur) * std::sin(th) + ut * std::cos(th);
+    };
+    // Patch edges as in footprint.cc: the level function phi = f C_ii inside and -gap outside,
+    // interpolated linearly to its zero between the end unit and its outside neighbour.
+    auto edge = [&](int inside, int outside) {
+      const double x_in = deformed_x(inside);
+      if (outside < 0 || outside >= M.m) return x_in;
+      const double phi_in = f(inside) * M.tyre.vertical_compliance(inside, inside);
+      const double phi_out = g[outside];
+      const double w = phi_in / (phi_in - phi_out);
+      return x_in + w * (deformed_x(outside) - x_in);
+    };
+    s.contact_length_m = edge(last, last + 1) - edge(first, first - 1);
+  }
+  return s;
+}
+
+/// Decides whether an output sample can repeat the last computed one: every state component
+/// moved by less than kReuseFraction of its error weight (rtol |y| + atol) since then. The
+/// samples are otherwise an O(m (nq + nr)) evaluation each, which dominated long settled holds.
+class SampleReuse {
+ public:
+  SampleReuse(double rtol, std::vector<double> atol, bool allowed)
+      : rtol_(rtol), atol_(std::move(atol)), allowed_(allowed) {}
+  void remember(const std::vector<double>& y) { last_ = y; }
+  bool unchanged(const std::vector<double>& y) const {
+    if (!allowed_ || last_.size() != y.size()) return false;
+    for (std::size_t k = 0; k < y.size(); ++k) {
+      const double w = rtol_ * std::abs(last_[k]) + atol_[k];
+      if (std::abs(y[k] - last_[k]) > kReuseFraction * w) return false;
+    }
+    return true;
+  }
+
+ private:
+  /// Far below the integrator's own local error (1 in the same weighted norm).
+  static constexpr double kReuseFraction = 1e-3;
+  double rtol_;
+  std::vector<double> atol_;
+  bool allowed_;
+  std::vector<double> last_;
+};
+
+}  // namespace
+
+TransientResult run_transient(const TransientModel& M, Scenario scenario,
+                              TransientRunOptions* options) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const ScenarioPlan plan = plan_scenario(M, scenario);
+  TransientSystem sys(M, plan);
+  TransientResult res;
+  res.scenario = scenario;
+
+  solvers::OdeProblem prob;
+  prob.size = sys.size();
+  prob.rhs = [&sys](double t, const double* y, double* yd) {
+    sys.rhs(t, y, yd);
+    return 0;
+  };
+  prob.jacobian = [&sys](double t, const double* y, const double*, solvers::CscMatrix& J) {
+    sys.jacobian(t, y, J);
+    return 0;
+  };
+  prob.roots = M.m;
+  prob.root_functions = [&sys](double t, const double* y, double* g) {
+    sys.roots(t, y, g);
+    return 0;
+  };
+  solvers::OdeOptions opt;
+  opt.relative_tolerance = M.settings.relative_tolerance;
+  opt.absolute_tolerance = sys.absolute_tolerances();
+  // BDF2 at most: orders 3-5 are not A-stable, and the lightly damped carcass modes (eigenvalues
+  // near the imaginary axis, up to omega_K) made CVODE's stability-limit detection hold the order
+  // at 2-3 anyway, with many more steps (measured: 5500 steps/s of free vibration at order <= 5
+  // with detection, 1700 at order <= 2; docs/transient.md section 6).
+  opt.max_order = 2;
+  opt.stability_limit_detection = false;
+  opt.lsetup_frequency = 50;
+  opt.delta_gamma_max = 0.6;
+  // Contact switches perturb Newton's matrix by a few springs: allow more (cheap) iterations
+  // before a convergence failure forces a new Jacobian and factorisation (measured: 6 halves
+  // the factorisations of a 0.5 mm load ramp against CVODE's 3).
+  opt.max_nonlinear_iterations = 6;
+
+  std::vector<double> y = sys.static_state(plan.initial_load_N);
+  solvers::CvodeKlu ode(prob, opt, 0.0, y, sys.nnz());
+  ode.set_max_step(plan.step_limit(0.0));
+
+  const double T = plan.duration_s, dt = M.settings.output_step_s;
+  res.samples.push_back(observe(M, sys, plan, 0.0, y.data()));
+  SampleReuse reuse(opt.relative_tolerance, opt.absolute_tolerance, !plan.cleat);
+  reuse.remember(y);
+  std::vector<double> breaks = plan.breakpoints;
+  std::sort(breaks.begin(), breaks.end());
+  std::size_t next_break = 0;
+  long out_index = 1;
+  double t_out = std::min(dt, T);
+  bool failed = false, all_out = false;
+  const bool restart_at_switches = options && options->restart_at_switches;
+  int roots_in_place = 0;
+  double last_root_t = -1;
+  std::vector<double> y_out(sys.size());
+  // The output samples up to t_reached, interpolated inside the step just taken (CVodeGetDky):
+  // one internal step at a time, so that neither the output step bounds the step size nor does
+  // every output time cost an evaluation of the m root functions (advance() to each output
+  // time did: 60000 of them in a 120 s hold at 2 ms, a quarter of its run time).
+  auto emit_until = [&](double t_reached) {
+    while (!all_out && t_out <= t_reached * (1 + 1e-14)) {
+      ode.interpolate(std::min(t_out, t_reached), y_out);
+      if (reuse.unchanged(y_out)) {
+        // The state moved less than kReuseFraction of the integration tolerance since the
+        // last computed sample (a settled hold, steady rolling on a flat road): the
+        // observables are the same to that accuracy; only the time and the scenario's own
+        // functions advance.
+        TransientSample smp = res.samples.back();
+        smp.t_s = t_out;
+        smp.applied_load_N = plan.load(t_out);
+        smp.speed_m_s = plan.speed(t_out);
+        res.samples.push_back(smp);
+      } else {
+        res.samples.push_back(observe(M, sys, plan, t_out, y_out.data()));
+        reuse.remember(y_out);
+      }
+      if (options && options->progress && !options->progress(t_out, T)) {
+        res.message = "cancelled";
+        return false;
+      }
+      if (t_out >= T) {
+        all_out = true;
+        break;
+      }
+      ++out_index;
+      t_out = std::min(out_index * dt, T);
+      if (T - t_out < 1e-9 * T) t_out = T;
+    }
+    return true;
+  };
+  while (!all_out) {
+    while (next_break < breaks.size() && breaks[next_break] <= ode.time()) ++next_break;
+    // Steps run up to the next breakpoint (a kink of F(t) or V(t)) or the end.
+    const double stop = next_break < breaks.size() ? breaks[next_break] : T;
+    const solvers::OdeStatus st = ode.step(stop);
+    if (!st.ok()) {
+      std::ostringstream msg;
+      msg << "integrator failed at t = " << st.t << " s: " << st.message;
+      res.message = msg.str();
+      failed = true;
+      break;
+    }
+    if (!emit_until(st.t)) {
+      failed = true;
+      break;
+    }
+    if (st.outcome == solvers::OdeOutcome::root) {
+      // Chattering guard: root returns that no longer advance the time would loop for ever.
+      roots_in_place = std::abs(st.t - last_root_t) <= kZenoWindow_s ? roots_in_place + 1 : 0;
+      last_root_t = st.t;
+      if (roots_in_place >= kZenoRootReturns) {
+        std::ostringstream msg;
+        msg << "contact switches chatter at t = " << st.t << " s (" << kZenoRootReturns
+            << " root returns without the time advancing): a tread tip hovers at the road";
+        res.message = msg.str();
+        failed = true;
+        break;
+      }
+      sys.contact_switched();
+      // A unit's tip touched or left the road: f_i = k max(0, g_i) has a kink there, the
+      // right-hand side stays continuous. The located root is counted and the integration
+      // continues; BDF's error test shortens the step over the kink (a restart would also throw
+      // away the history for a kink of one unit among many). Optionally restart as before.
+      ++res.contact_events;
+      if (restart_at_switches) ode.reinit(st.t, ode.state());
+      continue;
+    }
+    if (next_break < breaks.size() && st.t >= breaks[next_break]) {
+      ode.reinit(st.t, ode.state());
+      ode.set_max_step(plan.step_limit(st.t));
+      ++next_break;
+    }
+  }
+  res.simulated_s = ode.time();
+  res.stats = ode.stats();
+  if (options && options->keep_final_state) options->final_state = ode.state();
+  res.status = failed ? TransientStatus::failed : TransientStatus::completed;
+  if (!failed) {
+    std::ostringstream msg;
+    msg << "completed: " << res.stats.steps << " steps, " << res.contact_events
+        << " contact switches";
+    res.message = msg.str();
+  }
+  // Rolling resistance: mean of -F_x over the last 10 % of the run.
+  const double t_from = 0.9 * res.simulated_s;
+  double sum = 0;
+  int cnt = 0;
+  for (const auto& s : res.samples)
+    if (s.t_s >= t_from) sum += -s.longitudinal_force_N, ++cnt;
+  res.rolling_resistance_N = cnt ? sum / cnt : 0;
+  res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return res;
+}
+
+}  // namespace modaltyre::transient

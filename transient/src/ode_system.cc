@@ -1,0 +1,352 @@
+#include "modaltyre/transient/ode_system.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "modaltyre/contact/footprint.h"
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::transient {
+namespace {
+
+/// Absolute tolerance of displacement-like states [m] (0.1 um, ~1e-5 of a sinking).
+constexpr double kDisplacementTolerance = 1e-7;
+/// Offset of the contact root functions [m]: a switch is located where the tip penetration
+/// crosses this, 1e4 times the rounding noise of g (~1e-16 m) and 1e5 times below
+/// kDisplacementTolerance. A unit grazing the road with zero force (g = 0 to rounding, e.g. the
+/// centre of a ladder-like static patch) otherwise makes CVODE return a root at every rounding
+/// flip of g without advancing in time. The kink of f = k max(0, g) is located to eta / |g'|.
+constexpr double kRootOffset_m = 1e-12;
+/// Upwind stencil of the tread advection, de/dtheta ~ (c0 e_i + c1 e_{i+1} + c2 e_{i+2}) / dtheta:
+/// second-order one-sided from the front. First order (-1, 1, 0) converged the rolling resistance
+/// at O(dtheta): 59.3 / 60.6 / 61.2 / 61.5 N at 2 / 1 / 0.5 / 0.25 mm, against 61.3 / 61.6 /
+/// 61.7 / 61.8 N with this one (60 km/h, docs/transient.md section 1).
+constexpr double kUpwind[3] = {-1.5, 2.0, -0.5};
+
+/// Length beyond each end of the contact patch whose units enter the Jacobian as if in contact
+/// (see TransientSystem::jacobian); 4 units at the default 0.5 mm mesh (measured best of 0-10).
+constexpr double kJacobianEdgeMargin_m = 2e-3;
+
+}  // namespace
+
+TransientSystem::TransientSystem(const TransientModel& model, const ScenarioPlan& plan)
+    : model_(model), plan_(plan) {}
+
+double TransientSystem::road(double t, int i, double* slope) const {
+  if (slope) *slope = 0;
+  if (!plan_.cleat) return 0;
+  const double L = plan_.cleat_length_m, H = plan_.cleat_height_m;
+  const double xi = model_.x_road(i) - (plan_.cleat_start_m - plan_.distance(t));
+  const double a = 0.25 * L;  // cosine edges, a quarter of the length each
+  const double ax = std::abs(xi);
+  if (ax >= 0.5 * L) return 0;
+  if (ax <= 0.5 * L - a) return H;
+  const double u = M_PI * (ax - (0.5 * L - a)) / a;
+  if (slope) *slope = -0.5 * H * std::sin(u) * M_PI / a * (xi > 0 ? 1.0 : -1.0);
+  return 0.5 * H * (1 + std::cos(u));
+}
+
+void TransientSystem::tip_penetration(double t, const double* y, Eigen::VectorXd& g) const {
+  const auto& M = model_;
+  const Eigen::Map<const Eigen::VectorXd> q(y, M.nq), r(y + 2 * M.nq, M.nr);
+  const double z = y[M.z_index()];
+  g.noalias() = M.psi * q;
+  if (M.nr > 0) g.noalias() += M.V * r;
+  // g = z + h - s - u (- e): the sign flips in place, no temporary.
+  g = -g;
+  g.array() += z;
+  g -= M.tyre.sag;
+  if (plan_.cleat)
+    for (int i = 0; i < M.m; ++i) g(i) += road(t, i);
+  if (M.settings.relaxation) g -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), M.m);
+}
+
+void TransientSystem::forces_into(double t, const double* y, Eigen::VectorXd& f) const {
+  tip_penetration(t, y, f);
+  f = (f.array() > 0).select(model_.k_contact.array() * f.array(), 0.0);
+}
+
+Eigen::VectorXd TransientSystem::forces(double t, const double* y) const {
+  Eigen::VectorXd f(model_.m);
+  forces_into(t, y, f);
+  return f;
+}
+
+void TransientSystem::roots(double t, const double* y, double* g) const {
+  Eigen::Map<Eigen::VectorXd> gm(g, model_.m);
+  scratch_g_.resize(model_.m);
+  tip_penetration(t, y, scratch_g_);
+  scratch_g_.array() -= kRootOffset_m;
+  // CVODE treats an exact 0 as a root; when its root finder lands on one, the function is still
+  // 0.0 a rounding step later, which cvRcheck2 rejects as "root found at and very near t"
+  // (CV_ILL_INPUT). An exact 0 is reported as just below (the side of no force).
+  gm = (scratch_g_.array() == 0.0).select(-std::numeric_limits<double>::min(), scratch_g_);
+}
+
+void TransientSystem::rhs(double t, const double* y, double* ydot) const {
+  const auto& M = model_;
+  const int nq = M.nq, nr = M.nr;
+  Eigen::VectorXd& f = scratch_f_;
+  Eigen::VectorXd& G = scratch_G_;
+  f.resize(M.m);
+  forces_into(t, y, f);
+  // G = psi^T f and Vf = V^T f over the units in contact only (a third of the candidates at the
+  // default load): columns of the transposed shapes, contiguous in memory.
+  G.setZero(nq);
+  Eigen::VectorXd& Vf = scratch_Vf_;
+  Vf.setZero(nr);
+  for (int i = 0; i < M.m; ++i) {
+    if (f(i) == 0.0) continue;
+    G.noalias() += f(i) * M.psi_by_unit.col(i);
+    if (nr > 0) Vf.noalias() += f(i) * M.V_by_unit.col(i);
+  }
+  const double Omega = plan_.speed(t) / M.tyre.config.outer_radius_m;
+  const double dOmega = plan_.acceleration(t) / M.tyre.config.outer_radius_m;
+  for (int j = 0; j < nq; ++j) {
+    const double qj = y[j], vj = y[nq + j], w = M.omega[j], ze = M.zeta[j];
+    ydot[j] = vj;
+    double a = G(j) - 2 * ze * w * vj - w * w * qj;
+    const int p = M.partner[j];
+    if (p >= 0 && Omega != 0) {
+      const double b = M.order[j] * Omega, al = M.order[j] * dOmega, s = M.pair_sign[j];
+      a += s * 2 * b * y[nq + p] + b * b * qj + s * (2 * ze * w * b + al) * y[p];
+    }
+    ydot[nq + j] = a;
+  }
+  if (nr > 0) {
+    for (int l = 0; l < nr; ++l)
+      ydot[2 * nq + l] = (M.lambda(l) * Vf(l) - y[2 * nq + l]) / M.tau_residual_s;
+  }
+  const int Z = M.z_index();
+  ydot[Z] = y[Z + 1];
+  ydot[Z + 1] = (plan_.load(t) - f.sum()) / M.settings.hub_mass_kg;
+  if (M.settings.relaxation) {
+    const int E = M.e_index();
+    const double adv = Omega / M.tyre.dtheta_rad;
+    // de/dtheta by the second-order one-sided (upwind) difference from the front, e = 0
+    // entering: (-3 e_i + 4 e_{i+1} - e_{i+2}) / (2 dtheta).
+    const double a0 = kUpwind[0] * adv, a1 = kUpwind[1] * adv, a2 = kUpwind[2] * adv;
+    for (int i = 0; i < M.m; ++i) {
+      const double e = y[E + i], e1 = i + 1 < M.m ? y[E + i + 1] : 0.0,
+                   e2 = i + 2 < M.m ? y[E + i + 2] : 0.0;
+      ydot[E + i] = a0 * e + a1 * e1 + a2 * e2 + (f(i) - M.k_kv(i) * e) / M.c_kv(i);
+    }
+  }
+}
+
+int64_t TransientSystem::nnz() const {
+  const auto& M = model_;
+  const int64_t N = M.nq + M.nr + 1;  // coupled columns q, r, z
+  const int64_t E = M.settings.relaxation ? M.m : 0;
+  // Room for the tread couplings of a third of the candidates (about the patch at the default
+  // load); the adapter grows the matrix if more units come into contact. A larger reserve
+  // costs time: CVODE zeroes the whole allocation at every Jacobian evaluation.
+  return N * N + 2 * N * (E / 3) + 4 * E + 4 * M.nq + 2 + N;
+}
+
+void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J) const {
+  const auto& M = model_;
+  const int nq = M.nq, nr = M.nr, m = M.m;
+  const bool relax = M.settings.relaxation;
+  const int Z = M.z_index(), E = M.e_index();
+  const int n = size();
+  // d f_i / d g_i on the units in contact.
+  const Eigen::VectorXd f = forces(t, y);
+  Eigen::VectorXd kd(m);
+  for (int i = 0; i < m; ++i) kd(i) = f(i) > 0 ? M.k_contact(i) : 0.0;
+  // While the patch is moving (units switched since the last Jacobian), units within
+  // kJacobianEdgeMargin of the patch ends enter the Jacobian as if in contact: a unit that
+  // touches between two Jacobian evaluations otherwise leaves Newton's matrix without its
+  // (stiff) spring, the iteration diverges and forces a new Jacobian and KLU factorisation per
+  // entering unit. A spring too many slows the contraction, badly so for long steps, hence not
+  // when the patch is settled (a hold, steady rolling).
+  const bool moving = switches_since_jacobian_ > 0;
+  switches_since_jacobian_ = 0;
+  if (moving) {
+    int first = -1, last = -1;
+    for (int i = 0; i < m; ++i)
+      if (kd(i) > 0) last = i, first = first < 0 ? i : first;
+    const int margin =
+        std::max(1, static_cast<int>(std::lround(kJacobianEdgeMargin_m / M.tyre.unit_length_m)));
+    if (first >= 0) {
+      for (int i = std::max(0, first - margin); i < first; ++i) kd(i) = M.k_contact(i);
+      for (int i = last + 1; i <= std::min(m - 1, last + margin); ++i) kd(i) = M.k_contact(i);
+    }
+  }
+  // B = d g / d (q, r, z) = [-psi, -V, 1]; rows of W: d(v', r', w')/d f = [psi^T; lambda/tau V^T;
+  // -1/m 1^T]. Dense block D = W diag(kd) B  ((nq + nr + 1) squared).
+  const int N = nq + nr + 1;
+  std::vector<int> active;
+  for (int i = 0; i < m; ++i)
+    if (kd(i) > 0) active.push_back(i);
+  const int na = static_cast<int>(active.size());
+  // Sparsity pattern of the tread couplings: every unit that has been in contact at a Jacobian
+  // evaluation of this run stays in it (explicit zeros once out of contact). The pattern then
+  // changes only when a unit touches for the first time, and KLU refactors with its previous
+  // ordering and pivots instead of analysing anew at every contact switch.
+  in_pattern_.resize(m, 0);
+  for (int i : active) in_pattern_[i] = 1;
+  std::vector<int> pattern;
+  if (relax)
+    for (int i = 0; i < m; ++i)
+      if (in_pattern_[i]) pattern.push_back(i);
+  Eigen::MatrixXd B(na, N), Wt(na, N);
+  const double mh = M.settings.hub_mass_kg;
+  for (int a = 0; a < na; ++a) {
+    const int i = active[a];
+    for (int j = 0; j < nq; ++j) B(a, j) = -M.psi(i, j), Wt(a, j) = M.psi(i, j);
+    for (int l = 0; l < nr; ++l) {
+      B(a, nq + l) = -M.V(i, l);
+      Wt(a, nq + l) = M.lambda(l) / M.tau_residual_s * M.V(i, l);
+    }
+    B(a, N - 1) = 1.0;
+    Wt(a, N - 1) = -1.0 / mh;
+  }
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(N, N);
+  // Coefficient-based product: Eigen's blocked GEMM would start OpenMP threads (the library is
+  // built with OpenMP for sweeps) for a product this small, and the run is meant for one core.
+  if (na > 0) D.noalias() = Wt.transpose().lazyProduct(kd(active).asDiagonal() * B);
+  // Row of the coupled block k in state numbering.
+  auto row_of = [&](int k) { return k < nq ? nq + k : (k < N - 1 ? 2 * nq + (k - nq) : Z + 1); };
+  const double Omega = plan_.speed(t) / M.tyre.config.outer_radius_m;
+  const double dOmega = plan_.acceleration(t) / M.tyre.config.outer_radius_m;
+  const double adv = Omega / M.tyre.dtheta_rad;
+
+  J.clear(n);
+  auto push = [&](int64_t r, double v) {
+    J.row.push_back(r);
+    J.value.push_back(v);
+  };
+  // Coupled column (q_j, r_l or z): k is its index in the coupled block.
+  auto coupled_column = [&](int k) {
+    for (int kk = 0; kk < N; ++kk) {
+      const int r = row_of(kk);
+      double v = D(kk, k);
+      if (k < nq) {  // modal terms of column q_j
+        const int j = k;
+        if (kk == j) {
+          v -= M.omega[j] * M.omega[j];
+          if (M.partner[j] >= 0) v += std::pow(M.order[j] * Omega, 2);
+        } else if (kk < nq && M.partner[kk] == j && Omega != 0) {
+          const double b = M.order[kk] * Omega, al = M.order[kk] * dOmega;
+          v += M.pair_sign[kk] * (2 * M.zeta[kk] * M.omega[kk] * b + al);
+        }
+      } else if (k < N - 1 && kk == k) {
+        v -= 1.0 / M.tau_residual_s;
+      }
+      // The rows are ordered v (nq.. 2nq), r (2nq..), w (Z+1) which is increasing in kk.
+      push(r, v);
+    }
+    if (relax) {
+      for (int i : pattern) {  // zero for units of the pattern out of contact
+        double bi;
+        if (k < nq)
+          bi = -M.psi(i, k);
+        else if (k < N - 1)
+          bi = -M.V(i, k - nq);
+        else
+          bi = 1.0;
+        push(E + i, kd(i) * bi / M.c_kv(i));
+      }
+    }
+  };
+  int64_t col = 0;
+  // q columns.
+  for (int j = 0; j < nq; ++j, ++col) {
+    J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+    coupled_column(j);
+  }
+  // v columns: q_j' = v_j; v_j' has -2 zeta omega; partner rows have +-2b.
+  for (int j = 0; j < nq; ++j, ++col) {
+    J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+    push(j, 1.0);
+    const int p = M.partner[j];
+    // Row nq + p (partner's acceleration) and nq + j (own), in increasing order.
+    std::vector<std::pair<int, double>> rows = {{nq + j, -2 * M.zeta[j] * M.omega[j]}};
+    if (p >= 0) rows.push_back({nq + p, M.pair_sign[p] * 2 * M.order[p] * Omega});
+    std::sort(rows.begin(), rows.end());
+    for (auto& [r, v] : rows) push(r, v);
+  }
+  // r columns.
+  for (int l = 0; l < nr; ++l, ++col) {
+    J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+    coupled_column(nq + l);
+  }
+  // z column.
+  J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+  coupled_column(N - 1);
+  ++col;
+  // w column: z' = w.
+  J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+  push(Z, 1.0);
+  ++col;
+  // e columns.
+  if (relax) {
+    for (int i = 0; i < m; ++i, ++col) {
+      J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+      const double dfde = -kd(i);
+      if (in_pattern_[i]) {
+        for (int j = 0; j < nq; ++j) push(nq + j, M.psi(i, j) * dfde);
+        for (int l = 0; l < nr; ++l)
+          push(2 * nq + l, M.lambda(l) / M.tau_residual_s * M.V(i, l) * dfde);
+        push(Z + 1, -dfde / mh);
+      }
+      // e_{i-2}' and e_{i-1}' depend on e_i (upwind from the front).
+      if (i > 1) push(E + i - 2, kUpwind[2] * adv);
+      if (i > 0) push(E + i - 1, kUpwind[1] * adv);
+      push(E + i, kUpwind[0] * adv + (dfde - M.k_kv(i)) / M.c_kv(i));
+    }
+  }
+  J.col_ptr[col] = static_cast<int64_t>(J.row.size());
+  MODALTYRE_CHECK(col == n, "Jacobian column count");
+}
+
+std::vector<double> TransientSystem::absolute_tolerances() const {
+  const auto& M = model_;
+  std::vector<double> a(size(), kDisplacementTolerance);
+  for (int j = 0; j < M.nq; ++j) {
+    const double s = std::max(M.psi.col(j).cwiseAbs().maxCoeff(), 1e-300);
+    a[j] = kDisplacementTolerance / s;
+    a[M.nq + j] = a[j] * M.omega[j];
+  }
+  // Hub velocity: displacement tolerance over a 10 ms time scale.
+  a[M.z_index() + 1] = kDisplacementTolerance * 100;
+  return a;
+}
+
+std::vector<double> TransientSystem::static_state(double load_N) const {
+  const auto& M = model_;
+  std::vector<double> y(size(), 0.0);
+  if (load_N <= 0) return y;
+  const contact::FootprintResult fr =
+      contact::solve_footprint(M.tyre, contact::LoadCase{load_N, 0});
+  if (!fr.converged) throw ComputationError("static initial state: " + fr.message);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(M.m);
+  std::size_t k = 0;
+  for (int i = 0; i < M.m; ++i)
+    if (fr.active[i]) f(i) = fr.units.at(k++).fz_N;
+  const Eigen::VectorXd G = M.psi.transpose() * f;
+  for (int j = 0; j < M.nq; ++j) y[j] = G(j) / (M.omega[j] * M.omega[j]);
+  if (M.nr > 0) {
+    const Eigen::VectorXd Vf = M.V.transpose() * f;
+    for (int l = 0; l < M.nr; ++l) y[2 * M.nq + l] = M.lambda(l) * Vf(l);
+  }
+  y[M.z_index()] = fr.sinking_m;
+  if (M.settings.relaxation)
+    for (int i = 0; i < M.m; ++i) y[M.e_index() + i] = f(i) / M.k_kv(i);
+  return y;
+}
+
+double TransientSystem::energy(double t, const double* y) const {
+  const auto& M = model_;
+  double e = 0;
+  for (int j = 0; j < M.nq; ++j)
+    e += 0.5 * (y[M.nq + j] * y[M.nq + j] + M.omega[j] * M.omega[j] * y[j] * y[j]);
+  const double w = y[M.z_index() + 1];
+  e += 0.5 * M.settings.hub_mass_kg * w * w;
+  const Eigen::VectorXd f = forces(t, y);
+  for (int i = 0; i < M.m; ++i) e += 0.5 * f(i) * f(i) / M.k_contact(i);
+  return e;
+}
+
+}  // namespace modaltyre::transient
