@@ -146,6 +146,10 @@ int main(int argc, char** argv) try {
                         : key == "footprint_3d.crown.radius_mm" ? base.patch.crown.radius_m * 1e3
                         : key == "modal.extension_bending_s2_rad2_s2"
                             ? std::max(base.tyre.extension_s2, 1.0)
+                        : key == "footprint_3d.lateral_belt.foundation_MPa_per_m"
+                            ? base.patch.lateral_belt.foundation_Pa_m * 1e-6
+                        : key == "footprint_3d.lateral_belt.bending_stiffness_Nm"
+                            ? base.patch.lateral_belt.bending_stiffness_Nm
                             : throw InputError("cannot calibrate " + key);
       x0(k) = std::log(v0);
     }
