@@ -76,24 +76,14 @@ double planted_friction_N() {
 }
 
 std::string soil_csv() {
-  const SoilOptions o{0.5, 0.3};
   std::ostringstream s;
   s.precision(10);
   s << "load_N,longitudinal_force_N,alpha1_deg,alpha2_deg,total_sinking_mm,elastic_sinking_mm,"
        "layer_mm,speed_m_s\n";
-  for (double a1 : {12.0, 16.0, 20.0, 24.0})
-    for (double V : {0.5, 1.5, 3.0}) {
-      SoilRow r;
-      r.alpha1_rad = a1 * M_PI / 180;
-      r.alpha2_rad = 0.55 * r.alpha1_rad;
-      r.total_sinking_m = o.r0_m * (1 - std::cos(r.alpha1_rad));
-      r.elastic_sinking_m = o.r0_m * (1 - std::cos(r.alpha2_rad));
-      r.layer_m = 0.30;
-      r.speed_m_s = V;
-      r = soil_forces(r, 3.0e6, 5.0e4, o);
-      s << r.load_N << "," << r.longitudinal_force_N << "," << a1 << "," << 0.55 * a1 << ","
-        << r.total_sinking_m * 1e3 << "," << r.elastic_sinking_m * 1e3 << ",300," << V << "\n";
-    }
+  for (const SoilRow& r : test::planted_soil_rows().rows)
+    s << r.load_N << "," << r.longitudinal_force_N << "," << r.alpha1_rad * 180 / M_PI << ","
+      << r.alpha2_rad * 180 / M_PI << "," << r.total_sinking_m * 1e3 << ","
+      << r.elastic_sinking_m * 1e3 << "," << r.layer_m * 1e3 << "," << r.speed_m_s << "\n";
   return s.str();
 }
 
