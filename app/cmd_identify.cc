@@ -46,12 +46,15 @@ struct Geometry {
   double r0_m = 0, tread_width_m = 0, pressure_Pa = -1;
 };
 
-// The config the tyre geometry comes from: --config, else for the methods that test the tyre
-// itself (not the rigid soil-test wheel) the --into-config target, which is the same tyre.
+// The config the tyre geometry comes from, for the methods that test the tyre itself: --config,
+// else the --into-config target, which is the same tyre (so that --config X --write-config F and
+// --into-config X --out-config F fit with the same r0, B_tr and pressure). soil-rolling tests a
+// rigid wheel, whose r0 and B_tr a tyre config does not hold: --r0-mm, --tread-width-mm only.
 std::string geometry_config(const IdentifyArgs& a) {
-  if (!a.config.empty()) return a.config;
-  const bool tests_the_tyre = a.method == "load-deflection" || a.method == "free-vibration";
-  return tests_the_tyre ? a.into_config : std::string();
+  const bool tests_the_tyre =
+      a.method == "load-deflection" || a.method == "contact-stress" || a.method == "free-vibration";
+  if (!tests_the_tyre) return "";
+  return a.config.empty() ? a.into_config : a.config;
 }
 
 Geometry resolve_geometry(const IdentifyArgs& a) {
@@ -89,8 +92,28 @@ double positive_or_zero(double v, const char* name) {
   return v > 0 ? v : 0.0;
 }
 
-bool feeds_tyre_config(const IdentifyArgs& a) {
-  return studies::unmapped_reason(a.method, !a.static_file.empty()).empty();
+// Why a tyre config has no place for what the method identifies, with what to give instead;
+// empty when it has one.
+std::string unmapped_reason(const IdentifyArgs& a) {
+  const std::string why = studies::unmapped_reason(a.method, !a.static_file.empty());
+  if (why.empty()) return why;
+  if (a.method == "free-vibration") return why + ": give --static LOOP.csv";
+  return why + " (without --config, --write-config FILE writes a standalone 'rheology:' record)";
+}
+
+// --write-config with a tyre config (--config) writes a tyre config the footprint model runs, the
+// same as --into-config CONFIG --out-config FILE; a method that cannot feed one says what is
+// missing rather than write a record that `footprint` would refuse later.
+void check_write_config_use(const IdentifyArgs& a) {
+  if (a.write_config.empty() || a.config.empty()) return;
+  if (const std::string why = unmapped_reason(a); !why.empty())
+    throw InputError({"--write-config", 0, ""},
+                     "with --config, a tyre config the footprint model runs is written, but " +
+                         why +
+                         (a.method == "free-vibration"
+                              ? " (or, for a standalone 'rheology:' record of eta1, give the "
+                                "radius as --r0-mm instead of --config)"
+                              : ""));
 }
 
 // Methods whose results the footprint model has no place for refuse --into-config (exit 2)
@@ -105,8 +128,7 @@ void check_into_config_use(const IdentifyArgs& a) {
   if (a.into_config.empty())
     throw InputError({"--into-config", 0, ""},
                      "--out-config needs --into-config TYRE.yaml, the tyre config to start from");
-  if (const std::string why = studies::unmapped_reason(a.method, !a.static_file.empty());
-      !why.empty())
+  if (const std::string why = unmapped_reason(a); !why.empty())
     throw InputError("identify " + a.method + " --into-config: " + why);
   namespace fs = std::filesystem;
   std::error_code ec_in, ec_out;
@@ -119,14 +141,15 @@ void check_into_config_use(const IdentifyArgs& a) {
                          "another file (its comments would be lost)");
 }
 
-nlohmann::json mapping_json(const IdentifyArgs& a, const studies::ConfigMapping& m) {
+nlohmann::json mapping_json(const IdentifyArgs& a, const studies::ConfigMapping& m,
+                            const studies::IdentifiedConfig& written) {
   nlohmann::json set = nlohmann::json::object();
   for (const auto& [key, value] : m.values) set[key] = value;
   return {{"tyre_config", a.into_config},
           {"out_config", a.out_config},
           {"enabled", m.enabled},
           {"set", set},
-          {"notes", m.notes}};
+          {"notes", written.notes}};
 }
 
 // ---- methods: fit, map into the target (when given), draw -----------------------------------
@@ -264,8 +287,9 @@ void register_identify(CLI::App& app) {
     // --write-config FILE with a tyre config (--config) writes a tyre config the footprint
     // model runs (the same as --into-config CONFIG --out-config FILE) for every method whose
     // results it uses; otherwise the standalone 'rheology:' record.
+    check_write_config_use(a);
     const bool tyre_config_out = !a.write_config.empty() && a.into_config.empty() &&
-                                 a.out_config.empty() && !a.config.empty() && feeds_tyre_config(a);
+                                 a.out_config.empty() && !a.config.empty();
     if (tyre_config_out) {
       a.into_config = a.config;
       a.out_config = a.write_config;
@@ -300,10 +324,11 @@ void register_identify(CLI::App& app) {
     check_finite(out);
     if (!a.write_config.empty())
       write_rheology_record(a.write_config, {a.method, a.file, a.config}, out);
+    std::optional<studies::IdentifiedConfig> written;
     if (into) {
-      write_file_atomically(a.out_config,
-                            studies::compose_identified_config(source_of(a), *into).text);
-      out["into_config"] = mapping_json(a, into->mapping);
+      written = studies::compose_identified_config(source_of(a), *into);
+      write_file_atomically(a.out_config, written->text);
+      out["into_config"] = mapping_json(a, into->mapping, *written);
     }
     if (a.json) {
       print_json(out);
@@ -313,7 +338,7 @@ void register_identify(CLI::App& app) {
     if (into) {
       std::cout << "\naugmented tyre config: " << a.out_config << " (from " << a.into_config
                 << ")\n";
-      for (const auto& n : into->mapping.notes) std::cout << "  " << n << "\n";
+      for (const auto& n : written->notes) std::cout << "  " << n << "\n";
     }
   });
 }

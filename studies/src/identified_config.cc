@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "modaltyre/contact/effects.h"
+#include "modaltyre/core/config_edit.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
@@ -109,12 +110,11 @@ void note_identified_parameters(const rh::FitReport& report, ConfigMapping& m) {
 std::string unmapped_reason(const std::string& method, bool static_loop) {
   if (method == "b-factors")
     return "the slope factors B1, B2 (eq. 6, 10) are constants of the seed's approximations; the "
-           "footprint model uses nothing they determine (use --write-config for a separate "
-           "document)";
+           "footprint model uses nothing they determine";
   if (method == "free-vibration" && !static_loop)
-    return "without --static, free-vibration identifies only the viscosity eta1 (eq. 22), which "
-           "the static footprint model does not use; give --static LOOP.csv to identify the dry "
-           "friction chi (eq. 18)";
+    return "without a static loop, free-vibration identifies only the viscosity eta1 (eq. 22), "
+           "which the static footprint model does not use; the dry friction chi (eq. 18) it uses "
+           "comes from a static loop";
   return "";
 }
 
@@ -188,6 +188,38 @@ void map_soil(const rh::SoilData& data, const rh::SoilResult& res, ConfigTarget&
   note_identified_parameters(res.report, t.mapping);
 }
 
+namespace {
+
+// A key of validation.calibrate that the mapping sets would be recalibrated by `validate`, which
+// would overwrite the identified value: it is dropped from the list (with calibration_rows when
+// nothing is left to calibrate), and the header says so.
+void drop_recalibrated_keys(const ConfigTarget& t, std::vector<std::string>& overrides,
+                            std::vector<std::string>& notes) {
+  auto set_here = [&](const std::string& key) {
+    return std::any_of(t.mapping.values.begin(), t.mapping.values.end(),
+                       [&](const auto& kv) { return kv.first == key; });
+  };
+  auto list = [](const std::vector<std::string>& keys) {
+    std::string text;
+    for (const auto& k : keys) text += (text.empty() ? "" : ", ") + k;
+    return text;
+  };
+  std::vector<std::string> kept_keys, dropped_keys;
+  for (const auto& key : t.tyre.validation.calibrate)
+    (set_here(key) ? dropped_keys : kept_keys).push_back(key);
+  if (dropped_keys.empty()) return;
+  const std::string kept = list(kept_keys), dropped = list(dropped_keys);
+  overrides.push_back("validation.calibrate=[" + kept + "]");
+  if (kept.empty()) overrides.push_back("validation.calibration_rows=[]");
+  notes.push_back("validation.calibrate: " + dropped +
+                  " removed, since it is set here and `validate` would recalibrate it, "
+                  "overwriting the identified value; " +
+                  (kept.empty() ? "nothing is calibrated (calibration_rows emptied)"
+                                : "still calibrated: " + kept));
+}
+
+}  // namespace
+
 IdentifiedConfig compose_identified_config(const IdentifiedSource& source, const ConfigTarget& t) {
   namespace fs = std::filesystem;
   std::vector<std::string> ov;
@@ -197,11 +229,25 @@ IdentifiedConfig compose_identified_config(const IdentifiedSource& source, const
   ov.push_back("modal.hammer_csv=" +
                fs::relative(fs::absolute(t.tyre.hammer_csv), folder).generic_string());
   IdentifiedConfig out;
+  out.notes = t.mapping.notes;
+  drop_recalibrated_keys(t, ov, out.notes);
   out.text = "# Written by modaltyre identify " + source.method + " from " + t.tyre_path +
              (source.data_file.empty() ? "" : " and " + source.data_file) +
              " (seed 000, docs/rheology.md).\n";
-  for (const auto& n : t.mapping.notes) out.text += "# " + n + "\n";
-  out.text += ConfigTree::load(t.tyre_path, ov).dump() + "\n";
+  for (const auto& n : out.notes) out.text += "# " + n + "\n";
+  // TYRE's own text with the keys set in place, so that its comments stay; its tree re-emitted
+  // (comments lost, said so) when a key cannot be set in place.
+  const std::string marker = "set by modaltyre identify";
+  const std::optional<std::string> edited =
+      set_keys_in_text(read_yaml_file(t.tyre_path, "a tyre config"), t.tyre_path, ov, marker);
+  if (edited) {
+    out.text += "# Below: " + t.tyre_path + " with its comments; lines marked '" + marker +
+                "' were set here.\n" + *edited;
+  } else {
+    out.text += "# Below: the keys of " + t.tyre_path +
+                " (its comments are not kept: a key set here could not be set in its text).\n" +
+                ConfigTree::load(t.tyre_path, ov).dump();
+  }
   // Read back as OUT: its re-anchored modal.hammer_csv resolves against OUT's folder to TYRE's
   // file.
   out.config = contact::read_tyre_config(ConfigTree::from_string(out.text, t.out_path));

@@ -267,9 +267,48 @@ TEST_F(studies_IdentifiedConfig, ComposedConfigSetsTheMappingAndReanchorsTheHamm
   EXPECT_TRUE(fs::path(written).is_relative()) << written;
 }
 
+// Issue 16 item 8: OUT keeps TYRE's comments; a key the mapping sets leaves
+// validation.calibrate (validate would overwrite it), with calibration_rows when none is left.
+TEST_F(studies_IdentifiedConfig, ComposedConfigKeepsCommentsAndDropsRecalibratedKeys) {
+  ConfigTarget t = target();
+  t.mapping.values = {{"modal.compliance_scale", 1.25}};
+  const IdentifiedConfig out = compose_identified_config({"load-deflection", "ld.csv"}, t);
+  EXPECT_NE(out.text.find("\n  # Nominal from the size designation"), std::string::npos);
+  EXPECT_NE(out.text.find("\n  compliance_scale: 1.25  # set by modaltyre identify\n"),
+            std::string::npos)
+      << out.text;
+  EXPECT_EQ(out.config.compliance_scale, 1.25);
+  EXPECT_EQ(out.config.validation.calibrate, std::vector<std::string>{"tread.modulus_MPa"});
+  EXPECT_EQ(out.config.validation.calibration_rows, (std::vector<int>{1, 6}));
+  ASSERT_FALSE(out.notes.empty());
+  EXPECT_NE(out.notes.back().find("modal.compliance_scale removed"), std::string::npos);
+  EXPECT_NE(out.text.find("# " + out.notes.back() + "\n"), std::string::npos);
+
+  t.mapping.values.emplace_back("tread.modulus_MPa", 2.0);
+  const IdentifiedConfig both = compose_identified_config({"load-deflection", "ld.csv"}, t);
+  EXPECT_TRUE(both.config.validation.calibrate.empty());
+  EXPECT_TRUE(both.config.validation.calibration_rows.empty());
+  EXPECT_NE(both.notes.back().find("nothing is calibrated"), std::string::npos);
+}
+
+// A key that cannot be set in TYRE's text (here inside a flow mapping): OUT is TYRE's tree
+// re-emitted, the same values, and the header says that the comments are not kept.
+TEST_F(studies_IdentifiedConfig, ComposedConfigSaysWhenCommentsCannotBeKept) {
+  std::ofstream(tyre_path_, std::ios::app) << "effects: {dry_friction: {enabled: false}}\n";
+  ConfigTarget t = target();
+  t.mapping.enabled = {"dry_friction"};
+  t.mapping.values = {{"effects.dry_friction.friction_force_N", 300}};
+  const IdentifiedConfig out = compose_identified_config({"free-vibration", "decay.csv"}, t);
+  EXPECT_NE(out.text.find("its comments are not kept"), std::string::npos) << out.text;
+  EXPECT_EQ(out.text.find("# Nominal from the size designation"), std::string::npos);
+  EXPECT_TRUE(out.config.effects.dry_friction.enabled);
+  EXPECT_EQ(out.config.effects.dry_friction.friction_force_N, 300);
+  EXPECT_EQ(out.config.tread.modulus_Pa, t.tyre.tread.modulus_Pa);
+}
+
 TEST(studies_UnmappedReason, OnlyBFactorsAndAFreeDecayWithoutItsStaticLoopHaveNoPlace) {
   EXPECT_NE(unmapped_reason("b-factors", false).find("uses nothing"), std::string::npos);
-  EXPECT_NE(unmapped_reason("free-vibration", false).find("--static"), std::string::npos);
+  EXPECT_NE(unmapped_reason("free-vibration", false).find("static loop"), std::string::npos);
   for (const char* m : {"load-deflection", "contact-stress", "soil-rolling"})
     EXPECT_EQ(unmapped_reason(m, false), "") << m;
   EXPECT_EQ(unmapped_reason("free-vibration", true), "");

@@ -77,11 +77,15 @@ void map_load_deflection(const IdentifiedSource& source, const rheology::LoadDef
 void map_contact_stress(const IdentifiedSource& source, const rheology::ContactStressResult& result,
                         double r0_m, ConfigTarget& target);
 
-/// OUT: TYRE with the mapping applied, a header of notes, modal.hammer_csv re-anchored to OUT's
-/// folder, and OUT as the tyre config reader reads it (InputError naming the key otherwise).
+/// OUT: a header of notes, then TYRE's text with the mapping's keys set in place (its comments
+/// kept; re-emitted without them, said in the header, when a key cannot be set in place),
+/// modal.hammer_csv re-anchored to OUT's folder, and every key the mapping sets removed from
+/// validation.calibrate (`validate` would overwrite the identified value; noted); and OUT as the
+/// tyre config reader reads it (InputError naming the key otherwise).
 struct IdentifiedConfig {
   std::string text;
   contact::TyreConfig config;
+  std::vector<std::string> notes;  ///< the mapping's notes and what composing changed besides
 };
 IdentifiedConfig compose_identified_config(const IdentifiedSource& source,
                                            const ConfigTarget& target);
