@@ -100,10 +100,15 @@ std::vector<std::string> split_dots(const std::string& key) {
   return parts;
 }
 
-// Sets one key in `lines`; false when it cannot be done in place.
-bool set_key(std::vector<std::string>& lines, const std::string& name, const std::string& key,
+// Sets one key in `lines`; false when it cannot be done in place. `root` is the tree of `lines`
+// with its marks, re-read only after an insertion (a value set on its line moves no other key).
+// The text was checked by parse_yaml before (set_keys_in_text), so plain YAML::Load reads it.
+bool set_key(std::vector<std::string>& lines, YAML::Node& root, bool& stale, const std::string& key,
              const std::string& value, const std::string& marker) {
-  const YAML::Node root = parse_yaml(join_lines(lines), name);
+  if (stale) {
+    root.reset(YAML::Load(join_lines(lines)));
+    stale = false;
+  }
   if (!root.IsMap() || root.size() == 0) return false;
   const std::vector<std::string> path = split_dots(key);
   const std::string comment = marker.empty() ? "" : "  # " + marker;
@@ -155,6 +160,7 @@ bool set_key(std::vector<std::string>& lines, const std::string& name, const std
       added.push_back(l);
     }
     lines.insert(lines.begin() + after + 1, added.begin(), added.end());
+    stale = true;
     return true;
   }
   return false;
@@ -168,10 +174,16 @@ std::optional<std::string> set_keys_in_text(const std::string& text, const std::
   const std::string expected = ConfigTree::from_string(text, name, overrides).dump();
   if (text.find('\r') != npos) return std::nullopt;  // keep line ends simple: \n only
   std::vector<std::string> lines = split_lines(text);
-  for (const auto& o : overrides) {
-    const std::size_t eq = o.find('=');
-    if (eq == npos) throw InputError({"--set", 0, o}, "expected key=value");
-    if (!set_key(lines, name, o.substr(0, eq), o.substr(eq + 1), marker)) return std::nullopt;
+  YAML::Node root;
+  bool stale = true;
+  try {
+    for (const auto& o : overrides) {
+      const std::size_t eq = o.find('=');
+      if (!set_key(lines, root, stale, o.substr(0, eq), o.substr(eq + 1), marker))
+        return std::nullopt;
+    }
+  } catch (const YAML::Exception&) {
+    return std::nullopt;  // an edit the YAML reader does not take: not in place
   }
   std::string edited = join_lines(lines);
   if (ConfigTree::from_string(edited, name).dump() != expected) return std::nullopt;

@@ -190,6 +190,14 @@ void map_soil(const rh::SoilData& data, const rh::SoilResult& res, ConfigTarget&
 
 namespace {
 
+// The mapping as overrides of TYRE's keys ("key=value", the form of --set).
+std::vector<std::string> mapping_overrides(const ConfigMapping& m) {
+  std::vector<std::string> ov;
+  for (const auto& e : m.enabled) ov.push_back("effects." + e + ".enabled=true");
+  for (const auto& [key, value] : m.values) ov.push_back(key + "=" + number_text(value));
+  return ov;
+}
+
 // A key of validation.calibrate that the mapping sets would be recalibrated by `validate`, which
 // would overwrite the identified value: it is dropped from the list (with calibration_rows when
 // nothing is left to calibrate), and the header says so.
@@ -222,9 +230,7 @@ void drop_recalibrated_keys(const ConfigTarget& t, std::vector<std::string>& ove
 
 IdentifiedConfig compose_identified_config(const IdentifiedSource& source, const ConfigTarget& t) {
   namespace fs = std::filesystem;
-  std::vector<std::string> ov;
-  for (const auto& e : t.mapping.enabled) ov.push_back("effects." + e + ".enabled=true");
-  for (const auto& [key, value] : t.mapping.values) ov.push_back(key + "=" + number_text(value));
+  std::vector<std::string> ov = mapping_overrides(t.mapping);
   const fs::path folder = fs::absolute(fs::path(t.out_path)).parent_path();
   ov.push_back("modal.hammer_csv=" +
                fs::relative(fs::absolute(t.tyre.hammer_csv), folder).generic_string());
@@ -257,7 +263,9 @@ IdentifiedConfig compose_identified_config(const IdentifiedSource& source, const
 CarcassLevel calibrate_carcass_level(const IdentifiedSource& source, const ConfigTarget& t,
                                      double load_N, double target_mm) {
   CarcassLevel level;
-  level.fed = compose_identified_config(source, t).config;
+  // TYRE with the mapping so far: what OUT will read as (its text is composed once, at the end).
+  level.fed =
+      contact::read_tyre_config(ConfigTree::load(t.tyre_path, mapping_overrides(t.mapping)));
   level.model = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(level.fed));
   contact::OperatingConditions at = level.fed.default_conditions(load_N);
   at.pressure_kPa = level.fed.inflation_pressure_Pa * 1e-3;
