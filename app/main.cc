@@ -44,6 +44,12 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+    // A result printed to a full disk or a closed pipe must not end with exit 0.
+    std::cout.flush();
+    if (!std::cout) {
+      std::cerr << "error: writing the result to standard output failed (disk full?)\n";
+      return 2;
+    }
   } catch (const modaltyre::app::QuietExit& e) {
     return e.code;
   } catch (const CLI::CallForHelp& e) {

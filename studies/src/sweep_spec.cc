@@ -53,6 +53,12 @@ void flatten_set(const YAML::Node& node, const std::string& prefix, const std::s
     if (!kv.second || kv.second.IsNull()) {
       throw InputError({file, line, "set." + key}, "missing value");
     }
+    for (const auto& other : out) {
+      if (other.key == key) {  // "a.b: 1" and "a: {b: 2}" name one key
+        throw InputError({file, line, "set." + key}, "key appears twice in set (first at line " +
+                                                         std::to_string(other.where.line) + ")");
+      }
+    }
     SweepAssignment a;
     a.key = key;
     a.value = scalar_value(kv.second);
