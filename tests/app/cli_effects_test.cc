@@ -10,7 +10,7 @@
 
 namespace {
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 
 class EffectsCli : public modaltyre_test::CliFixture {
  protected:
@@ -115,7 +115,7 @@ TEST_F(EffectsCli, OutOfRangeValueExitsTwoNamingTheKey) {
 
 namespace {
 
-const std::string k3dConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_3d.yaml";
+const std::string k3dConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
 
 class EffectsWith3dPatchCli : public modaltyre_test::CliFixture {};
 

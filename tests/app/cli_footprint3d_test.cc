@@ -12,7 +12,7 @@
 
 namespace {
 
-const std::string k3d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_3d.yaml";
+const std::string k3d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
 const std::string k2d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_fig5.yaml";
 const std::string kTable3 =
     std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
@@ -178,6 +178,16 @@ TEST_F(Footprint3dCli, DiscoverOnTable3RefitsTheCrownAndOffersNoRefusedEffect) {
       EXPECT_NE(c["reason"].get<std::string>().find("3D patch"), std::string::npos);
     }
   }
+}
+
+// The transient model runs the 2D patch: a 3D config is refused, not run on a patch it did not
+// ask for.
+TEST_F(Footprint3dCli, TransientRefusesA3dConfigNamingThe2dOne) {
+  const auto r = run({"transient", k3d, "--scenario", "free-vibration"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("footprint_3d"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("sf350_2d_table3.yaml"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
 }
 
 }  // namespace

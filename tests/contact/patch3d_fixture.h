@@ -12,7 +12,7 @@
 
 namespace modaltyre::contact::testing {
 
-inline const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_3d.yaml";
+inline const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
 
 // A coarse mesh keeps the full cell solve (every cell an unknown) quick.
 inline const std::vector<std::string> kCoarse = {

@@ -104,7 +104,7 @@ TEST_P(Patch3dMesh, HalvingTheSpacingChangesSinkingLengthWidthByLessThanHalfAPer
   expect_mesh_converged(GetParam().coarse, GetParam().fine);
 }
 
-// The default mesh of configs/sf350_3d.yaml (0.5 mm x 2.5 mm) against half of each spacing.
+// The default mesh of configs/sf350.yaml (0.5 mm x 2.5 mm) against half of each spacing.
 INSTANTIATE_TEST_SUITE_P(
     DefaultMesh, Patch3dMesh,
     ::testing::Values(Spacing{"AlongX", {}, {"contact.unit_length_mm=0.25"}},
