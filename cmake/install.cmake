@@ -3,7 +3,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(_modaltyre_modules core modal ema solvers contact transient studies discover)
+set(_modaltyre_modules core modal ema solvers contact transient studies discover tir)
 if(TARGET modaltyre_rheology)
   list(APPEND _modaltyre_modules rheology)
 endif()
