@@ -126,6 +126,8 @@ void plot_comparison(const tir::TirComparison& c, const std::string& path) {
       if (auto v = model_of(r)) m.x.push_back(r.rho_m * 1e3), m.y.push_back(*v);
       if (auto v = tir_of(r)) t.x.push_back(r.rho_m * 1e3), t.y.push_back(*v);
     }
+    if (m.x.empty()) p.title += " (model: none)";
+    if (t.x.empty()) p.title += " (.tir: none)";
     if (!m.x.empty()) p.series.push_back(m);
     if (!t.x.empty()) p.series.push_back(t);
     fig.panels.push_back(p);
@@ -190,9 +192,7 @@ void register_tir(CLI::App& app) {
                           "(absolute units for the same tyre size, dimensionless otherwise)");
   cmp->add_option("CONFIG", c->config, "tyre config (YAML)")->required();
   cmp->add_option("TIR", c->tir_file, "MF-Tyre/MF-Swift property file (.tir)")->required();
-  cmp->add_option("--fnomin", c->fnomin,
-                  "the model's nominal load [N] (default: middle of "
-                  "loads_N)");
+  cmp->add_option("--fnomin", c->fnomin, "the model's FNOMIN [N] (default: middle of loads_N)");
   cmp->add_option("--points", c->points, "model footprints over 0.25-2 x FNOMIN (3-200)");
   cmp->add_option("--set", c->overrides, "override a config key");
   cmp->add_flag("--json", c->json, "print JSON");

@@ -140,4 +140,59 @@ TEST(TirCompare, DimensionlessComparisonIsInvariantUnderScaling) {
   EXPECT_NEAR(*other.rms_length, *same.rms_length, 1e-12);
 }
 
+// With a predicted width (the crown-profile contact_width effect) the export carries Q_RB1 and
+// Q_RB2, and they are the least-squares optimum of the relative width residuals: moving either
+// by 1 % makes the RMS worse.
+TEST(TirRoundTrip, PredictedWidthIsExportedAsTheLeastSquaresWidthLaw) {
+  auto config =
+      contact::load_tyre_config(std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml",
+                                {"effects.contact_width.enabled=true", "contact.unit_length_mm=2"});
+  const contact::TyreModel model = contact::build_tyre_model(config);
+  TirExportOptions o;
+  o.loads_N = load_grid(5226, 0.25, 2, 8);
+  const TirFit f = fit_tir(model, o);
+  ASSERT_TRUE(f.q_rb1 && f.q_rb2 && f.width);
+  const MfTyre t = interpret_tir(parse_tir(tir_text(f, config, o), "w.tir"));
+  const auto rms = [&](double rb1, double rb2) {
+    double sum = 0;
+    for (const auto& p : f.curve.points) {
+      const double rho_z = p.load_N / f.vertical_stiffness_N_m;
+      const double w = 2 * mf_half_width_m(f.unloaded_radius_m, f.width_m, rb1, rb2, rho_z);
+      sum += std::pow(w / *p.width_m - 1, 2);
+    }
+    return std::sqrt(sum / static_cast<double>(f.curve.points.size()));
+  };
+  const double best = rms(*t.q_rb1, *t.q_rb2);
+  EXPECT_NEAR(best, f.width->rms_rel, 1e-8);
+  for (double s : {0.99, 1.01}) {
+    EXPECT_GT(rms(*t.q_rb1 * s, *t.q_rb2), best);
+    EXPECT_GT(rms(*t.q_rb1, *t.q_rb2 * s), best);
+  }
+  EXPECT_TRUE(t.width_at_m(f.fnomin_N));
+}
+
+// With the inflation_pressure effect on, PFZ1 carries the model's stiffness to other pressures
+// through (A3.5): the read-back law's C_z at 0.8 and 1.2 x the config's pressure against the
+// model's tangent stiffness there.
+TEST(TirRoundTrip, PressureEffectIsExportedAsPfz1) {
+  auto config = contact::load_tyre_config(
+      std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml",
+      {"effects.inflation_pressure.enabled=true", "contact.unit_length_mm=2"});
+  const contact::TyreModel model = contact::build_tyre_model(config);
+  TirExportOptions o;
+  o.loads_N = load_grid(5226, 0.25, 2, 8);
+  const TirFit f = fit_tir(model, o);
+  ASSERT_TRUE(f.pfz1);
+  MfTyre t = interpret_tir(parse_tir(tir_text(f, config, o), "p.tir"));
+  EXPECT_NEAR(t.vertical.pfz1, *f.pfz1, 1e-9);
+  for (double s : {0.8, 1.2}) {
+    t.inflation_pressure_Pa = s * config.inflation_pressure_Pa;
+    const double model_cz =
+        model_tangent_stiffness_N_m(model, f.fnomin_N, s * config.inflation_pressure_Pa);
+    const double rel = t.vertical_stiffness_N_m() / model_cz - 1;
+    RecordProperty(s < 1 ? "cz_rel_diff_at_0.8p" : "cz_rel_diff_at_1.2p", std::to_string(rel));
+    EXPECT_LT(std::abs(rel), 0.05) << "at " << s << " x the pressure";
+  }
+}
+
 }  // namespace
