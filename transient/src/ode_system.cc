@@ -83,6 +83,21 @@ void TransientSystem::roots(double t, const double* y, double* g) const {
   gm = (scratch_g_.array() == 0.0).select(-std::numeric_limits<double>::min(), scratch_g_);
 }
 
+int TransientSystem::update_contact_set(double t, const double* y) const {
+  scratch_g_.resize(model_.m);
+  tip_penetration(t, y, scratch_g_);
+  const bool first = in_contact_.empty();
+  in_contact_.resize(model_.m, 0);
+  int changed = 0;
+  for (int i = 0; i < model_.m; ++i) {
+    const char now = scratch_g_(i) > 0 ? 1 : 0;
+    if (now != in_contact_[i]) ++changed, in_contact_[i] = now;
+  }
+  if (first) return 0;
+  if (changed > 0) contact_switched();
+  return changed;
+}
+
 void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   const auto& M = model_;
   const int nq = M.nq, nr = M.nr;

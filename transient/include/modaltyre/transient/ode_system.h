@@ -39,6 +39,13 @@ class TransientSystem {
   /// Tells the system that a unit switched (a root was located): the next Jacobian treats the
   /// units next to the patch ends as in contact (see jacobian()).
   void contact_switched() const { ++switches_since_jacobian_; }
+  /// Contact set at an accepted step's end (units with tip penetration > 0) against the one at
+  /// the previous accepted step: returns how many units entered or left, and flags the next
+  /// Jacobian as contact_switched() does when any did. This replaces the m root functions
+  /// (the default, TransientRunOptions::locate_switches off): the kinks of max(0, g) are solved
+  /// inside the implicit steps, and the root finder's passes over m functions per step are
+  /// saved.
+  int update_contact_set(double t, const double* y) const;
   int64_t nnz() const;
 
  private:
@@ -53,6 +60,8 @@ class TransientSystem {
   mutable Eigen::VectorXd scratch_f_, scratch_G_, scratch_Vf_, scratch_g_;
   /// Units in the Jacobian's sparsity pattern (ever in contact at a Jacobian evaluation).
   mutable std::vector<char> in_pattern_;
+  /// Contact set at the last accepted step (update_contact_set()).
+  mutable std::vector<char> in_contact_;
   mutable long switches_since_jacobian_ = 0;
 };
 
