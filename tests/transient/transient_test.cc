@@ -295,6 +295,29 @@ TEST(TransientTest, RollingResistanceConvergesAtSecondOrderInTheMesh) {
 // The analytic sparse Jacobian handed to KLU equals central finite differences of the
 // right-hand side: rolling while the speed ramps (rolling and gyroscopic terms, the tread's
 // second-order advection), relaxation on, at a perturbed static state (no unit on a kink).
+// The right-hand side computes the tip penetration only where a unit can touch (a bound of the
+// carcass displacement from the modal amplitudes): its forces must equal those from the
+// penetration of every unit, on a perturbed state with the cleat in the window and the
+// extended carcass's residual coordinates.
+TEST(TransientTest, ForcesInReachEqualForcesOverTheWholeWindow) {
+  const TransientModel M = model_with(coarse({kExtended}));
+  const ScenarioPlan plan = plan_scenario(M, Scenario::cleat);
+  TransientSystem sys(M, plan);
+  std::vector<double> y = sys.static_state(4000);
+  for (int k = 0; k < M.z_index(); ++k) y[k] *= 1.0 + 0.05 * std::sin(1.7 * k);  // not static
+  const double t = 0.5 * (plan.step_limit_from_s + plan.step_limit_until_s);     // cleat inside
+  std::vector<double> g(M.m);
+  sys.roots(t, y.data(), g.data());  // every unit, offset by 1e-12 m
+  const Eigen::VectorXd f = sys.forces(t, y.data());
+  int touching = 0;
+  for (int i = 0; i < M.m; ++i) {
+    const double full = std::max(0.0, M.k_contact(i) * (g[i] + 1e-12));
+    touching += full > 0;
+    EXPECT_NEAR(f(i), full, 1e-9 * (1.0 + full)) << "unit " << i;
+  }
+  EXPECT_GT(touching, 5);
+}
+
 TEST(TransientTest, AnalyticJacobianMatchesFiniteDifferences) {
   // The extended carcass: its Jacobian has the residual orders' entries too.
   const TransientModel M = model_with(coarse({kExtended, "transient.rolling.ramp_s=1"}));
