@@ -15,7 +15,7 @@
 
 #include "cli_support.h"
 #include "commands.h"
-#include "modaltyre/contact/measurements.h"
+#include "modaltyre/studies/measurements.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
@@ -86,7 +86,7 @@ nlohmann::json candidates_json(const std::vector<discover::CandidateScore>& cs) 
 
 std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
 
-void print_text(const discover::DiscoverReport& r, const contact::MeasurementSet& data) {
+void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet& data) {
   std::cout << "discover: " << data.path << ", " << data.rows.size() << " rows; evaluated on "
             << r.evaluation_mesh << "\n\nGap (RMS of (predicted - measured) / measured):\n";
   std::cout << "  observable              config   baseline  baseline(CV)    after  after(CV)\n";
@@ -164,7 +164,7 @@ std::string axis_label(const std::string& name) {
 }
 
 void plot(const std::string& path, const discover::DiscoverReport& r,
-          const contact::MeasurementSet& data) {
+          const studies::MeasurementSet& data) {
   const std::string var = r.regimes.empty() ? "" : r.regimes.front().variable;
   PlotFigure fig;
   for (const auto& obs : data.observables) {
@@ -173,7 +173,7 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
       const auto& row = r.rows[i];
       if (!row.cv_before.count(obs)) continue;
       const double x =
-          var.empty() ? row.row : contact::condition_value(data.rows[i].conditions, var);
+          var.empty() ? row.row : studies::condition_value(data.rows[i].conditions, var);
       pts.emplace_back(x, 100 * row.cv_before.at(obs), 100 * row.cv_after.at(obs));
     }
     if (pts.empty()) continue;  // e.g. a rolling resistance measured as 0 on every row
@@ -236,7 +236,7 @@ void register_discover(CLI::App& app) {
       throw InputError({"--unit-length-mm", 0, "unit_length_mm"}, "must be a finite number");
     }
     const contact::TyreConfig cfg = contact::load_tyre_config(a->config, a->overrides);
-    const contact::MeasurementSet data = contact::read_measurements(a->measured, cfg);
+    const studies::MeasurementSet data = studies::read_measurements(a->measured, cfg);
     for (const std::string* out : {&a->plot, &a->out_config}) {
       if (out->empty()) continue;
       const fs::path folder = fs::absolute(fs::path(*out)).parent_path();

@@ -1,4 +1,5 @@
 // modaltyre fit-modes HAMMER.csv [--json] [--plot FILE]
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -67,8 +68,11 @@ nlohmann::json to_json(const modal::ModeIdentification& id) {
 
 void print_table(const modal::ModeIdentification& id, const std::string& path) {
   std::cout << "Hammer data " << path << ": " << id.modes.size() << " modes at " << id.points
-            << " equally spaced points (orders >= " << (id.points + 1) / 2
-            << " cannot be resolved)\n\n";
+            << " equally spaced points (orders >= " << (id.points + 1) / 2 << " cannot be resolved";
+  if ((id.points - 1) / 2 > modal::kMaxFittedOrder) {
+    std::cout << "; orders above " << modal::kMaxFittedOrder << " are not fitted";
+  }
+  std::cout << ")\n\n";
   std::cout << " mode  freq_Hz  damping_%  kind        order  aliased  R2      note\n";
   for (const auto& m : id.modes) {
     char line[256];
@@ -86,12 +90,28 @@ void print_table(const modal::ModeIdentification& id, const std::string& path) {
   }
 }
 
+// A figure of hundreds of panels (or of 10^6 points each) is not readable and took gnuplot
+// minutes: the first kMaxPlottedModes modes are drawn, each with at most kMaxPlottedPoints of
+// its measured points (evenly thinned).
+constexpr std::size_t kMaxPlottedModes = 24;
+constexpr std::size_t kMaxPlottedPoints = 720;
+
+std::size_t raw_points(const modal::HammerData& data) {
+  return data.modes.empty() ? 0 : data.modes.front().radial.size();
+}
+
 void plot_modes(const modal::HammerData& data, const modal::ModeIdentification& id,
                 const std::string& path) {
   PlotFigure fig;
   fig.width_px = 1200;
   fig.height_px = 300;
-  for (std::size_t i = 0; i < id.modes.size(); ++i) {
+  if (id.modes.size() > kMaxPlottedModes) {
+    std::cerr << "note: the plot shows the first " << kMaxPlottedModes << " of " << id.modes.size()
+              << " modes\n";
+  }
+  const std::size_t stride =
+      std::max<std::size_t>(1, (raw_points(data) + kMaxPlottedPoints - 1) / kMaxPlottedPoints);
+  for (std::size_t i = 0; i < std::min(id.modes.size(), kMaxPlottedModes); ++i) {
     const auto& m = id.modes[i];
     const auto& raw = data.modes[i];
     PlotPanel p;
@@ -100,10 +120,17 @@ void plot_modes(const modal::HammerData& data, const modal::ModeIdentification& 
               (m.aliased ? " (aliased)" : "");
     p.xlabel = "angle [deg]";
     p.ylabel = "shape [kg^{-1/2}]";
-    PlotSeries pts{"radial, measured", {}, raw.radial, "points"};
-    for (double a : raw.angle_rad) pts.x.push_back(a * 180 / M_PI);
-    PlotSeries fit{"fitted harmonic", {}, {}, "lines"};
     const bool rot = m.kind == modal::ModeKind::rotation;
+    PlotSeries pts{rot ? "tangential, measured" : "radial, measured", {}, {}, "points"};
+    const auto& measured = rot ? raw.tangential : raw.radial;
+    double amplitude = 0;
+    for (std::size_t j = 0; j < measured.size(); ++j) {
+      amplitude = std::max(amplitude, std::abs(measured[j]));
+      if (j % stride) continue;
+      pts.x.push_back(raw.angle_rad[j] * 180 / M_PI);
+      pts.y.push_back(measured[j]);
+    }
+    PlotSeries fit{"fitted harmonic", {}, {}, "lines"};
     const auto& series = rot ? m.tangential : m.radial;
     const int k = m.apparent_order;
     const auto c = series.coefficient(k);
@@ -112,11 +139,14 @@ void plot_modes(const modal::HammerData& data, const modal::ModeIdentification& 
       fit.x.push_back(s);
       fit.y.push_back((c * std::polar(1.0, k * th)).real());
     }
-    if (rot) pts = PlotSeries{"tangential, measured", pts.x, raw.tangential, "points"};
     p.series = {pts, fit};
     p.key = "below horizontal";
     p.xmin = 0;
     p.xmax = 360;
+    // Symmetric about zero: a breathing or rotation shape (order 0) is a constant, and an
+    // autoscaled axis would blow its few per cent of scatter up to the full panel height.
+    p.ymin = -1.15 * amplitude;
+    p.ymax = 1.15 * amplitude;
     fig.panels.push_back(p);
   }
   render_plot(fig, path);

@@ -7,7 +7,6 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "footprint_report.h"
-#include "modaltyre/contact/footprint.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/errors.h"
 
@@ -23,31 +22,6 @@ struct FootprintArgs {
   bool json = false;
   std::string plot;
 };
-
-// Footprints of the load cases. No effect on: the model's own operator, each load warm-started
-// from the previous (as always). With an effect on: FootprintPredictor at the config's default
-// conditions (its pressure, standing, loading branch, rigid road), so that the effects act on
-// what is printed exactly as they do in `sweep` and `validate`.
-std::vector<contact::Prediction> compute_cases(const contact::TyreModel& model,
-                                               const std::vector<contact::LoadCase>& cases) {
-  const contact::TyreConfig& config = model.config;
-  std::vector<contact::Prediction> out;
-  if (!config.effects.any()) {
-    for (auto& r : contact::solve_footprints(model, cases)) {
-      out.push_back(contact::prediction_from(std::move(r), config));
-    }
-    return out;
-  }
-  const contact::FootprintPredictor predictor(model);
-  for (const auto& lc : cases) {
-    contact::OperatingConditions c = config.default_conditions(lc.load_N);
-    c.horizontal_force_N = lc.horizontal_force_N;
-    contact::Prediction p = predictor.predict(config, c);
-    p.footprint.load = lc;  // the applied load (dry_friction loads the elastic tyre with less)
-    out.push_back(std::move(p));
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -67,7 +41,7 @@ void register_footprint(CLI::App& app) {
   cmd->callback([a, cmd] {
     const auto config = contact::load_tyre_config(a->config, a->overrides);
     const auto model = contact::build_tyre_model(config);
-    std::vector<contact::LoadCase> cases;
+    std::vector<contact::OperatingConditions> cases;
     const double fx = cmd->count("--fx") ? a->horizontal : config.horizontal_force_N;
     for (double f : a->loads.empty() ? config.loads_N : a->loads) {
       if (!(f > 0) || !std::isfinite(f)) {
@@ -75,12 +49,17 @@ void register_footprint(CLI::App& app) {
       }
       // Uniform traction f_x = (F_x/F_z) f_z needs adhesion; beyond |F_x| = 1.5 F_z no tyre holds.
       if (!(std::abs(fx) <= 1.5 * f)) {
-        throw InputError({"--fx", 0, ""}, "horizontal force must satisfy |F_x| <= 1.5 F_z "
-                                          "(no rubber-road adhesion carries more)");
+        throw InputError({"--fx", 0, ""},
+                         "horizontal force must satisfy |F_x| <= 1.5 F_z "
+                         "(no rubber-road adhesion carries more)");
       }
-      cases.push_back({f, fx});
+      contact::OperatingConditions c = config.default_conditions(f);
+      c.horizontal_force_N = fx;
+      cases.push_back(c);
     }
-    const auto results = compute_cases(model, cases);
+    // At the config's default conditions (its pressure, standing, loading branch, rigid road):
+    // effects act on what is printed exactly as they do in `sweep` and `validate`.
+    const auto results = contact::predict_all(model, cases);
     require_converged(results);
     if (!a->plot.empty()) plot_pressures(results, config, a->plot);
     if (a->json) {

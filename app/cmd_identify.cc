@@ -19,7 +19,6 @@
 #include "commands.h"
 #include "modaltyre/contact/effects.h"
 #include "modaltyre/contact/predictor.h"
-#include "modaltyre/contact/stiffness_calibration.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/config_tree.h"
@@ -31,6 +30,7 @@
 #include "modaltyre/rheology/slope_factors.h"
 #include "modaltyre/rheology/soil.h"
 #include "modaltyre/rheology/three_element.h"
+#include "modaltyre/studies/stiffness_calibration.h"
 
 namespace modaltyre::app {
 namespace {
@@ -399,20 +399,20 @@ struct IntoConfig {
 // `load_N` at the tyre's pressure (docs/rheology.md 6.5, 6.6). OUT is TYRE with the mapping so
 // far applied, so the effects the method switched on act during the calibration.
 struct CarcassLevel {
-  contact::TyreConfig fed;                                 ///< OUT with the calibrated scale
-  std::unique_ptr<contact::FootprintPredictor> predictor;  ///< on OUT's model
-  contact::ScaleCalibration cal;
+  contact::TyreConfig fed;                          ///< OUT with the calibrated scale
+  std::unique_ptr<const contact::TyreModel> model;  ///< OUT's model (before the calibration)
+  studies::ScaleCalibration cal;
 };
 
 CarcassLevel calibrate_carcass_level(const IdentifyArgs& a, const IntoConfig& into, double load_N,
                                      double target_mm) {
   CarcassLevel level;
   level.fed = compose_out_config(a, into.tyre, into.mapping).config;
-  level.predictor =
-      std::make_unique<contact::FootprintPredictor>(contact::build_tyre_model(level.fed));
+  level.model = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(level.fed));
   contact::OperatingConditions at = level.fed.default_conditions(load_N);
   at.pressure_kPa = level.fed.inflation_pressure_Pa * 1e-3;
-  level.cal = contact::calibrate_compliance_scale(*level.predictor, level.fed, at, target_mm);
+  level.cal = studies::calibrate_compliance_scale(*level.model, contact::parameters_of(level.fed),
+                                                  at, target_mm);
   if (!level.cal.converged)
     throw ComputationError("identify " + a.method + " --into-config: " + level.cal.message);
   level.fed.compliance_scale = level.cal.compliance_scale;
@@ -446,7 +446,8 @@ void map_stiffness_level(const IdentifyArgs& a, const rh::LoadDeflectionData& da
   for (const auto& r : data.rows) {
     contact::OperatingConditions c = level.fed.default_conditions(r.load_N);
     c.pressure_kPa = r.pressure_Pa * 1e-3;
-    const contact::Prediction p = level.predictor->predict(level.fed, c);
+    const contact::Prediction p =
+        contact::predict(*level.model, contact::parameters_of(level.fed), c);
     if (!p.ok)
       throw ComputationError("identify load-deflection --into-config: footprint at " +
                              number_text(r.load_N) + " N: " + p.message);
@@ -484,8 +485,8 @@ void map_stiffness_level(const IdentifyArgs& a, const rh::LoadDeflectionData& da
 void map_contact_stress_level(const IdentifyArgs& a, const rh::ContactStressResult& res,
                               double r0_m, IntoConfig& into) {
   const CarcassLevel level = calibrate_carcass_level(a, into, res.load_N, res.deflection_m * 1e3);
-  const contact::Prediction p =
-      level.predictor->predict(level.fed, level.fed.default_conditions(res.load_N));
+  const contact::Prediction p = contact::predict(*level.model, contact::parameters_of(level.fed),
+                                                 level.fed.default_conditions(res.load_N));
   if (!p.ok)
     throw ComputationError("identify contact-stress --into-config: footprint at " +
                            number_text(res.load_N) + " N: " + p.message);

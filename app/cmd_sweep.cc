@@ -20,7 +20,7 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "mpi_session.h"
-#include "modaltyre/contact/sweep.h"
+#include "modaltyre/studies/sweep.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/progress.h"
@@ -57,13 +57,13 @@ void check_output(const std::string& path, const InputLocation& where) {
 
 // The spec (with --output) and its plan: everything is checked before anything is computed.
 struct Prepared {
-  contact::SweepSpec spec;
-  contact::SweepPlan plan;
+  studies::SweepSpec spec;
+  studies::SweepPlan plan;
 };
 
 Prepared prepare(const SweepArgs& a) {
   Prepared p;
-  p.spec = contact::read_sweep_spec(a.sweep, a.overrides);
+  p.spec = studies::read_sweep_spec(a.sweep, a.overrides);
   if (!a.output.empty()) {
     p.spec.output = a.output;
     p.spec.output_where = {"--output", 0, ""};
@@ -72,7 +72,7 @@ Prepared prepare(const SweepArgs& a) {
     throw InputError({p.spec.file, 1, "output"}, "required: CSV path (or give --output)");
   }
   check_output(p.spec.output, p.spec.output_where);
-  p.plan = contact::plan_sweep(p.spec);
+  p.plan = studies::plan_sweep(p.spec);
   return p;
 }
 
@@ -115,7 +115,7 @@ void report(const SweepArgs& a, const Prepared& p, const Summary& s) {
   }
 }
 
-std::string first_failure(const contact::SweepResult& res, const std::vector<std::size_t>* share) {
+std::string first_failure(const studies::SweepResult& res, const std::vector<std::size_t>* share) {
   const std::size_t n = share ? share->size() : res.rows.size();
   for (std::size_t k = 0; k < n; ++k) {
     const auto& r = res.rows[share ? (*share)[k] : k];
@@ -129,13 +129,13 @@ void run_local(const SweepArgs& a) {
   const Prepared p = prepare(a);
   const auto start = std::chrono::steady_clock::now();
   ProgressBar bar(p.plan.cases.size(), "sweep");
-  contact::SweepOptions opt;
+  studies::SweepOptions opt;
   opt.threads = a.threads;
   opt.warm_start = a.warm_start;
   opt.progress = [&bar](std::size_t n) { bar.tick(n); };
-  const contact::SweepResult res = contact::run_sweep(p.plan, opt);
+  const studies::SweepResult res = studies::run_sweep(p.plan, opt);
   bar.finish();
-  write_file_atomically(p.spec.output, contact::sweep_csv(p.plan, res));
+  write_file_atomically(p.spec.output, studies::sweep_csv(p.plan, res));
   Summary s;
   s.failed = res.failed;
   s.threads = res.threads;
@@ -152,7 +152,7 @@ int threads_per_rank(const SweepArgs& a, const mpi::Session& session) {
   return std::max(1, omp_get_num_procs() / session.ranks_on_node());
 }
 
-// K ranks: each computes its share (contact::sweep_share) with OpenMP threads; rank 0 gathers
+// K ranks: each computes its share (studies::sweep_share) with OpenMP threads; rank 0 gathers
 // the rows, puts them in plan order and writes the one CSV (byte-identical to run_local's).
 // Every rank reads and plans the same sweep, so input errors are found by all; the ranks then
 // agree on the outcome so that one message is printed and every rank exits with its code.
@@ -163,22 +163,22 @@ void run_distributed(const SweepArgs& a) {
   int code = 0;
   Prepared p;
   std::vector<std::size_t> share;
-  contact::SweepResult res;
+  studies::SweepResult res;
   std::string rows;
   try {
     p = prepare(a);
-    share = contact::sweep_share(p.plan, session.rank(), session.ranks());
+    share = studies::sweep_share(p.plan, session.rank(), session.ranks());
     ProgressBar bar(share.size(),
                     "sweep, rank 0 of " + std::to_string(session.ranks()),
                     session.rank() == 0 ? ProgressBar::Mode::automatic : ProgressBar::Mode::never);
-    contact::SweepOptions opt;
+    studies::SweepOptions opt;
     opt.threads = threads_per_rank(a, session);
     opt.warm_start = a.warm_start;
     opt.only_cases = &share;
     opt.progress = [&bar](std::size_t n) { bar.tick(n); };
-    res = contact::run_sweep(p.plan, opt);
+    res = studies::run_sweep(p.plan, opt);
     bar.finish();
-    for (std::size_t i : share) rows += contact::sweep_csv_row(p.plan, res.rows[i], i);
+    for (std::size_t i : share) rows += studies::sweep_csv_row(p.plan, res.rows[i], i);
   } catch (const InputError&) {
     error = std::current_exception();
     code = 2;
@@ -208,7 +208,7 @@ void run_distributed(const SweepArgs& a) {
   // newlines in messages into spaces).
   std::vector<std::string_view> line_of(p.plan.cases.size());
   for (int r = 0; r < session.ranks(); ++r) {
-    const std::vector<std::size_t> its = contact::sweep_share(p.plan, r, session.ranks());
+    const std::vector<std::size_t> its = studies::sweep_share(p.plan, r, session.ranks());
     std::string_view text = parts[static_cast<std::size_t>(r)];
     for (std::size_t i : its) {
       const std::size_t end = text.find('\n');
@@ -218,7 +218,7 @@ void run_distributed(const SweepArgs& a) {
     }
     MODALTYRE_CHECK(text.empty(), "rank " + std::to_string(r) + " sent too many rows");
   }
-  std::string csv = contact::sweep_csv_header(p.plan);
+  std::string csv = studies::sweep_csv_header(p.plan);
   for (const auto& line : line_of) csv += line;
   write_file_atomically(p.spec.output, csv);
 

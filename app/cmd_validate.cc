@@ -5,8 +5,8 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "modaltyre/contact/predictor.h"
-#include "modaltyre/contact/validation.h"
 #include "modaltyre/core/gnuplot.h"
+#include "modaltyre/studies/validation.h"
 
 namespace modaltyre::app {
 namespace {
@@ -41,15 +41,15 @@ nlohmann::json enabled_effects_json(const contact::EffectsConfig& effects) {
   return names;
 }
 
-nlohmann::json row_json(const contact::ValidationRow& r) {
+nlohmann::json row_json(const studies::ValidationRow& r, bool with_conditions) {
   nlohmann::json row = {
       {"row", r.measured.row},
-      {"load_N", r.measured.load_N},
+      {"load_N", r.measured.conditions.load_N},
       {"calibration", r.calibration},
       {"measured",
-       {{"sinking_mm", opt_json(r.measured.sinking_mm)},
-        {"length_mm", opt_json(r.measured.length_mm)},
-        {"width_mm", opt_json(r.measured.width_mm)}}},
+       {{"sinking_mm", opt_json(r.measured.value("sinking_mm"))},
+        {"length_mm", opt_json(r.measured.value("length_mm"))},
+        {"width_mm", opt_json(r.measured.value("width_mm"))}}},
       {"predicted",
        {{"sinking_mm", round_sig(r.sinking_mm, 8)}, {"length_mm", round_sig(r.length_mm, 8)}}},
       {"rel_error",
@@ -57,17 +57,17 @@ nlohmann::json row_json(const contact::ValidationRow& r) {
         {"length_mm", opt_json(r.length_rel_error)}}}};
   // Width is compared only where it was measured (the 2D model takes it as an input unless
   // contact_width is on).
-  if (r.measured.width_mm) {
+  if (r.measured.value("width_mm")) {
     row["predicted"]["width_mm"] = round_sig(r.width_mm, 8);
     row["rel_error"]["width_mm"] = opt_json(r.width_rel_error);
   }
-  if (r.measured.conditions) row["conditions"] = conditions_json(*r.measured.conditions);
+  if (with_conditions) row["conditions"] = conditions_json(r.measured.conditions);
   return row;
 }
 
-nlohmann::json to_json(const contact::ValidationReport& rep) {
+nlohmann::json to_json(const studies::ValidationReport& rep) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : rep.rows) rows.push_back(row_json(r));
+  for (const auto& r : rep.rows) rows.push_back(row_json(r, rep.with_conditions));
   nlohmann::json rms = nlohmann::json::object();
   for (const auto& [k, v] : rep.rms_rel_error) rms[k] = round_sig(v, 8);
   nlohmann::json calibrated = nlohmann::json::object();
@@ -95,7 +95,7 @@ nlohmann::json to_json(const contact::ValidationReport& rep) {
             {"evaluations", c.evaluations}}}};
 }
 
-void print_table(const contact::ValidationReport& rep, const std::string& measured_path) {
+void print_table(const studies::ValidationReport& rep, const std::string& measured_path) {
   const auto& c = rep.calibration;
   std::cout << rep.model.config.name << " vs " << measured_path << "\n";
   if (c.keys.empty()) {
@@ -117,11 +117,9 @@ void print_table(const contact::ValidationReport& rep, const std::string& measur
       std::cout << "\n";
     }
   }
-  if (rep.model.config.effects.any()) {
+  if (const auto on = enabled_effects_json(rep.model.config.effects); !on.empty()) {
     std::cout << "Effects on:";
-    for (const auto& e : enabled_effects_json(rep.model.config.effects)) {
-      std::cout << " " << e.get<std::string>();
-    }
+    for (const auto& e : on) std::cout << " " << e.get<std::string>();
     std::cout << "\n";
   }
   if (rep.with_conditions) {
@@ -129,7 +127,7 @@ void print_table(const contact::ValidationReport& rep, const std::string& measur
                  "config's where absent).\n";
   }
   bool width = false;
-  for (const auto& r : rep.rows) width = width || r.measured.width_mm.has_value();
+  for (const auto& r : rep.rows) width = width || r.measured.value("width_mm").has_value();
   std::cout << "\n row  load_N  role         sinking_mm meas/pred    err%   length_mm meas/pred"
                "    err%"
             << (width ? "    width_mm meas/pred    err%" : "") << "\n";
@@ -144,11 +142,12 @@ void print_table(const contact::ValidationReport& rep, const std::string& measur
   };
   for (const auto& r : rep.rows) {
     char head[64];
-    std::snprintf(head, sizeof head, " %3d  %6.0f  %-11s  ", r.measured.row, r.measured.load_N,
-                  r.calibration ? "calibration" : "prediction");
-    std::cout << head << cell(r.measured.sinking_mm, r.sinking_mm, r.sinking_rel_error) << "   "
-              << cell(r.measured.length_mm, r.length_mm, r.length_rel_error);
-    if (width) std::cout << "   " << cell(r.measured.width_mm, r.width_mm, r.width_rel_error);
+    std::snprintf(head, sizeof head, " %3d  %6.0f  %-11s  ", r.measured.row,
+                  r.measured.conditions.load_N, r.calibration ? "calibration" : "prediction");
+    std::cout << head << cell(r.measured.value("sinking_mm"), r.sinking_mm, r.sinking_rel_error)
+              << "   " << cell(r.measured.value("length_mm"), r.length_mm, r.length_rel_error);
+    if (width)
+      std::cout << "   " << cell(r.measured.value("width_mm"), r.width_mm, r.width_rel_error);
     std::cout << "\n";
   }
   std::cout << "\nRMS relative error over predicted rows:";
@@ -159,40 +158,24 @@ void print_table(const contact::ValidationReport& rep, const std::string& measur
   std::cout << "\n";
 }
 
-// The model's curve at the config's conditions: through the predictor when an effect is on, so
-// that the curve shows what the rows were compared with.
-std::vector<contact::FootprintResult> model_curve(const contact::TyreModel& model,
-                                                  const std::vector<contact::LoadCase>& loads) {
-  if (!model.config.effects.any()) return contact::solve_footprints(model, loads);
-  const contact::FootprintPredictor predictor(model);
-  std::vector<contact::FootprintResult> out;
-  for (const auto& lc : loads) {
-    contact::OperatingConditions c = model.config.default_conditions(lc.load_N);
-    c.horizontal_force_N = lc.horizontal_force_N;
-    contact::Prediction p = predictor.predict(model.config, c);
-    p.footprint.converged = p.ok;  // a failed prediction is left out of the curve
-    p.footprint.load = lc;
-    out.push_back(std::move(p.footprint));
-  }
-  return out;
-}
-
-void plot_validation(const contact::ValidationReport& rep, const std::string& path) {
+void plot_validation(const studies::ValidationReport& rep, const std::string& path) {
   double lo = 1e300, hi = 0;
   for (const auto& r : rep.rows)
-    lo = std::min(lo, r.measured.load_N), hi = std::max(hi, r.measured.load_N);
-  std::vector<contact::LoadCase> curve;
+    lo = std::min(lo, r.measured.conditions.load_N),
+    hi = std::max(hi, r.measured.conditions.load_N);
+  // The model's curve at the config's conditions (effects act as on the rows).
+  std::vector<contact::OperatingConditions> curve;
   const int n = 24;
   for (int i = 0; i <= n; ++i) {
-    curve.push_back(
-        {0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n, rep.model.config.horizontal_force_N});
+    curve.push_back(rep.model.config.default_conditions(0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n));
   }
-  const auto res = model_curve(rep.model, curve);
+  const auto res = contact::predict_all(rep.model, curve);
   PlotPanel ps{"Sinking versus load", "vertical load [kN]", "sinking [mm]", {}};
   PlotPanel pl{"Contact length versus load", "vertical load [kN]", "contact length [mm]", {}};
   PlotSeries ps_pred{"model", {}, {}, "lines"}, pl_pred{"model", {}, {}, "lines"};
-  for (const auto& r : res) {
-    if (!r.converged) continue;
+  for (const auto& p : res) {
+    if (!p.ok) continue;  // a failed prediction is left out of the curve
+    const auto& r = p.footprint;
     ps_pred.x.push_back(r.load.load_N / 1000);
     ps_pred.y.push_back(r.sinking_m * 1e3);
     pl_pred.x.push_back(r.load.load_N / 1000);
@@ -205,10 +188,9 @@ void plot_validation(const contact::ValidationReport& rep, const std::string& pa
   for (const auto& r : rep.rows) {
     auto& s = r.calibration ? ps_cal : ps_meas;
     auto& l = r.calibration ? pl_cal : pl_meas;
-    if (r.measured.sinking_mm)
-      s.x.push_back(r.measured.load_N / 1000), s.y.push_back(*r.measured.sinking_mm);
-    if (r.measured.length_mm)
-      l.x.push_back(r.measured.load_N / 1000), l.y.push_back(*r.measured.length_mm);
+    const double load_kN = r.measured.conditions.load_N / 1000;
+    if (const auto v = r.measured.value("sinking_mm")) s.x.push_back(load_kN), s.y.push_back(*v);
+    if (const auto v = r.measured.value("length_mm")) l.x.push_back(load_kN), l.y.push_back(*v);
   }
   ps.series = {ps_pred, ps_meas};
   pl.series = {pl_pred, pl_meas};
@@ -242,8 +224,8 @@ void register_validate(CLI::App& app) {
   cmd->callback([a] {
     // The config decides how the file is read (effects need every row's conditions).
     const auto config = contact::load_tyre_config(a->config, a->overrides);
-    const auto measured = contact::read_validation_measurements(a->measured, config);
-    const auto rep = contact::validate_footprints(a->config, a->overrides, measured);
+    const auto measured = studies::read_validation_measurements(a->measured, config);
+    const auto rep = studies::validate_footprints(config, measured);
     if (!a->plot.empty()) plot_validation(rep, a->plot);
     if (a->json) {
       print_json(to_json(rep));

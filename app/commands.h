@@ -13,6 +13,7 @@ void register_sweep(CLI::App& app);
 void register_transient(CLI::App& app);
 void register_effects(CLI::App& app);
 void register_discover(CLI::App& app);
+void register_ema(CLI::App& app);
 
 
 }  // namespace modaltyre::app

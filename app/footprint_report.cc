@@ -84,14 +84,13 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
 void print_footprint_table(const contact::TyreModel& model,
                            const std::vector<contact::Prediction>& predictions) {
   const auto& c = model.config;
-  std::cout << c.name << " (" << c.source << "): " << model.candidates()
-            << " candidate units of " << fixed(model.unit_length_m * 1e3, 3)
-            << " mm, modal orders 0.." << model.basis.max_order << " ("
-            << model.basis.measured_terms << " measured modes)\n";
+  std::cout << c.name << " (" << c.source << "): " << model.candidates() << " candidate units of "
+            << fixed(model.unit_length_m * 1e3, 3) << " mm, modal orders 0.."
+            << model.basis.max_order << " (" << model.basis.measured_terms << " measured modes)\n";
   for (const auto& w : model.basis.warnings) std::cout << "warning: " << w << "\n";
-  if (c.effects.any()) {
+  if (const auto on = enabled_effects(c.effects); !on.empty()) {
     std::cout << "effects on:";
-    for (const auto& name : enabled_effects(c.effects)) std::cout << " " << name;
+    for (const auto& name : on) std::cout << " " << name;
     std::cout << " (at the config's conditions: " << fixed(c.inflation_pressure_Pa * 1e-3, 0)
               << " kPa, standing, loading, rigid road)\n";
   }
@@ -103,7 +102,8 @@ void print_footprint_table(const contact::TyreModel& model,
     for (const auto& u : r.units) peak = std::max(peak, u.pressure_Pa);
     const double mean = r.load.load_N / (r.contact_length_m * p.width_mm * 1e-3);
     char line[256];
-    std::snprintf(line, sizeof line, "%8.0f  %10.2f  %9.1f  %14.1f  %8.0f  %8.0f  %5d  %11.1e  %15.1e\n",
+    std::snprintf(line, sizeof line,
+                  "%8.0f  %10.2f  %9.1f  %14.1f  %8.0f  %8.0f  %5d  %11.1e  %15.1e\n",
                   r.load.load_N, r.sinking_m * 1e3, r.contact_length_m * 1e3,
                   r.vertical_stiffness_N_m() * 1e-3, peak * 1e-3, mean * 1e-3, r.iterations,
                   r.equilibrium_residual, r.complementarity_residual);
@@ -120,8 +120,8 @@ void plot_pressures(const std::vector<contact::Prediction>& predictions,
   for (const auto& prediction : predictions) {
     const auto& r = prediction.footprint;
     PlotSeries s;
-    s.title = fixed(r.load.load_N / 1000, 2) + " kN, L = " + fixed(r.contact_length_m * 1e3, 0) +
-              " mm";
+    s.title =
+        fixed(r.load.load_N / 1000, 2) + " kN, L = " + fixed(r.contact_length_m * 1e3, 0) + " mm";
     s.style = "lines";
     // Close the curve to zero at the patch edges so that the length reads off the plot.
     s.x.push_back(r.rear_edge_x_m * 1e3);

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   modaltyre::app::register_transient(app);
   modaltyre::app::register_effects(app);
   modaltyre::app::register_discover(app);
+  modaltyre::app::register_ema(app);
 
   // A file-size limit (ulimit -f) then fails the write with EFBIG, which the atomic writer
   // reports and cleans up, instead of killing the program with a half-written temporary.
@@ -43,6 +44,12 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+    // A result printed to a full disk or a closed pipe must not end with exit 0.
+    std::cout.flush();
+    if (!std::cout) {
+      std::cerr << "error: writing the result to standard output failed (disk full?)\n";
+      return 2;
+    }
   } catch (const modaltyre::app::QuietExit& e) {
     return e.code;
   } catch (const CLI::CallForHelp& e) {

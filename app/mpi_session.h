@@ -2,7 +2,7 @@
 // MPI for distributed sweeps (build option MODALTYRE_WITH_MPI): `mpirun -n K modaltyre sweep
 // SWEEP.yaml` splits the cases over the ranks, OpenMP threads inside each rank, and rank 0
 // writes the one CSV. Only the app knows about MPI; the libraries compute a share of a plan
-// (contact::sweep_share) and format its rows, whoever runs them.
+// (studies::sweep_share) and format its rows, whoever runs them.
 #include <cstddef>
 #include <string>
 #include <vector>

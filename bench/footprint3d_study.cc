@@ -27,9 +27,9 @@
 #include <vector>
 
 #include "modaltyre/contact/patch3d.h"
-#include "modaltyre/contact/validation.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/least_squares.h"
+#include "modaltyre/studies/measurements.h"
 
 using namespace modaltyre;
 using namespace modaltyre::contact;
@@ -108,7 +108,8 @@ int main(int argc, char** argv) try {
     return 2;
   }
   const std::string config = argv[1];
-  const auto table = read_footprint_measurements(argv[2]);
+  const auto set = studies::read_measurements(argv[2], load_tyre3d_config(config, {}).tyre);
+  const std::vector<studies::MeasuredRow>& table = set.rows;
   std::vector<std::string> sets, keys, observables = {"sinking_mm"};
   std::vector<int> rows;
   for (int a = 3; a < argc; ++a) {
@@ -131,7 +132,7 @@ int main(int argc, char** argv) try {
     if (row < 1 || row > int(table.size())) throw InputError("row out of range");
   }
   std::vector<double> t3_loads;
-  for (const auto& m : table) t3_loads.push_back(m.load_N);
+  for (const auto& m : table) t3_loads.push_back(m.conditions.load_N);
 
   // Declared calibration on the named rows.
   std::vector<double> values(keys.size());
@@ -145,11 +146,15 @@ int main(int argc, char** argv) try {
                         : key == "footprint_3d.crown.radius_mm" ? base.patch.crown.radius_m * 1e3
                         : key == "modal.extension_bending_s2_rad2_s2"
                             ? std::max(base.tyre.extension_s2, 1.0)
+                        : key == "footprint_3d.lateral_belt.foundation_MPa_per_m"
+                            ? base.patch.lateral_belt.foundation_Pa_m * 1e-6
+                        : key == "footprint_3d.lateral_belt.bending_stiffness_Nm"
+                            ? base.patch.lateral_belt.bending_stiffness_Nm
                             : throw InputError("cannot calibrate " + key);
       x0(k) = std::log(v0);
     }
     std::vector<double> cal_loads;
-    for (int row : rows) cal_loads.push_back(table[row - 1].load_N);
+    for (int row : rows) cal_loads.push_back(table[row - 1].conditions.load_N);
     auto with = [&](const Eigen::VectorXd& x) {
       std::vector<std::string> s = sets;
       for (std::size_t k = 0; k < keys.size(); ++k) {
@@ -166,7 +171,7 @@ int main(int argc, char** argv) try {
       int n = 0;
       for (std::size_t q = 0; q < rows.size(); ++q) {
         for (const auto& o : observables) {
-          const double meas = *measured_value(table[rows[q] - 1], o);
+          const double meas = *table[rows[q] - 1].value(o);
           r(n++) = observable(c.results[q], o) / meas - 1;
         }
       }
@@ -199,8 +204,8 @@ int main(int argc, char** argv) try {
     const auto& r = t3.results[q];
     const bool cal = std::find(rows.begin(), rows.end(), int(q + 1)) != rows.end();
     const double pred[3] = {r.sinking_m * 1e3, r.length_m * 1e3, r.width_m * 1e3};
-    const double meas[3] = {*m.sinking_mm, *m.length_mm, *m.width_mm};
-    std::printf("%3zu %7.0f  %-5s", q + 1, m.load_N, cal ? "cal" : "pred");
+    const double meas[3] = {*m.value("sinking_mm"), *m.value("length_mm"), *m.value("width_mm")};
+    std::printf("%3zu %7.0f  %-5s", q + 1, m.conditions.load_N, cal ? "cal" : "pred");
     for (int k = 0; k < 3; ++k) {
       const double e = pred[k] / meas[k] - 1;
       std::printf("  %5.0f %6.2f %+6.1f%%", meas[k], pred[k], 100 * e);
@@ -215,7 +220,8 @@ int main(int argc, char** argv) try {
               100 * std::sqrt(se[0] / np), 100 * std::sqrt(se[1] / np),
               100 * std::sqrt(se[2] / np));
   std::vector<double> t3_len, t3_wid;
-  for (const auto& m : table) t3_len.push_back(*m.length_mm), t3_wid.push_back(*m.width_mm);
+  for (const auto& m : table)
+    t3_len.push_back(*m.value("length_mm")), t3_wid.push_back(*m.value("width_mm"));
   std::printf("\nExponents over %.0f-%.0f N (least squares on ln-ln):\n", t3_loads.front(),
               t3_loads.back());
   std::printf("  length %.3f (Table 3 %.3f; real tyres 0.55-0.67; band 0.45-0.70)\n",
@@ -225,8 +231,8 @@ int main(int argc, char** argv) try {
   std::printf("  secant stiffness %.0f -> %.0f N/mm (Table 3 %.0f -> %.0f)\n",
               t3.results.front().vertical_stiffness_N_m() * 1e-3,
               t3.results.back().vertical_stiffness_N_m() * 1e-3,
-              table.front().load_N / *table.front().sinking_mm,
-              table.back().load_N / *table.back().sinking_mm);
+              table.front().conditions.load_N / *table.front().value("sinking_mm"),
+              table.back().conditions.load_N / *table.back().value("sinking_mm"));
 
   // Seed 001 Fig. 5.
   const Case f5 = run(config, sets, {2100, 5400, 8300});

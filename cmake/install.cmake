@@ -3,7 +3,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(_modaltyre_modules core modal solvers contact transient discover)
+set(_modaltyre_modules core modal ema solvers contact transient studies discover)
 if(TARGET modaltyre_rheology)
   list(APPEND _modaltyre_modules rheology)
 endif()

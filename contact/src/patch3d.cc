@@ -9,6 +9,7 @@
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/unilateral_contact.h"
 #include "patch3d_operators.h"
+#include "patch3d_sections.h"
 
 namespace modaltyre::contact {
 namespace {
@@ -37,14 +38,6 @@ solvers::ContactOptions contact_options(const TyreModel& m) {
   o.gap_tolerance = m.config.solver.gap_tolerance;
   return o;
 }
-
-/// One section's lateral law on the sorted crown drops: the approach d at which the section
-/// carries F (psi = Phi^-1), the cells n it then loads and Psi = integral of psi.
-struct SectionLaw {
-  double approach_m = 0;
-  int cells = 0;
-  double energy = 0;  ///< Psi(F) [J]
-};
 
 }  // namespace
 
@@ -76,66 +69,37 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings)
     const double c = std::cos(th), sn = std::sin(th);
     t_.push_back(c * c / k_radial_cell_ + sn * sn / k_tangential_cell_);
   }
-  z_sorted_ = z_m_;
-  std::sort(z_sorted_.begin(), z_sorted_.end());
-  z_prefix_.assign(n + 1, 0.0);
-  for (int j = 0; j < n; ++j) z_prefix_[j + 1] = z_prefix_[j] + z_sorted_[j];
-  min_pattern_ = static_cast<int>(std::count(z_sorted_.begin(), z_sorted_.end(), z_sorted_[0]));
-}
-
-namespace {
-
-/// psi_i(F) on the sorted drops: the fewest cells n (at least the tied lowest ones) whose
-/// approach d = (F t + sum of their drops) / n does not reach the next drop.
-SectionLaw section_law(double F, double t, const std::vector<double>& zs,
-                       const std::vector<double>& prefix, int min_cells) {
-  const int ny = static_cast<int>(zs.size());
-  SectionLaw law;
-  int n = min_cells;
-  double d = (F * t + prefix[n]) / n;
-  while (n < ny && d > zs[n]) {
-    ++n;
-    d = (F * t + prefix[n]) / n;
+  if (s.lateral_belt.enabled) {
+    if (n > kMaxLateralBeltColumns) {
+      throw std::invalid_argument("3D patch: a lateral belt supports at most " +
+                                  std::to_string(kMaxLateralBeltColumns) + " columns");
+    }
+    G_ = lateral_belt_compliance(s.lateral_belt, s.tread_width_m, n, model_.unit_length_m);
   }
-  law.approach_m = d;
-  law.cells = n;
-  // Psi(F) = d F - sum_j (d - z_j)_+^2 / (2 t)  (integration by parts of psi dF).
-  double sq = 0;
-  for (int j = 0; j < n; ++j) sq += (d - zs[j]) * (d - zs[j]);
-  law.energy = d * F - sq / (2 * t);
-  return law;
 }
-
-}  // namespace
 
 Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
-  const int S = sections();
+  const int S = sections(), ny = columns();
   const solvers::WeightedToeplitzCompliance carcass = carcass_operator(model_);
   const auto opt = contact_options(model_);
+  const std::unique_ptr<detail::SectionLaws> laws =
+      G_.size() ? detail::flexible_sections(t_, z_m_, G_, opt.max_iterations)
+                : detail::rigid_sections(t_, z_m_);
   Patch3dResult r;
   r.load_N = load_N;
 
-  // The objective J(F) of the reduction and its lateral patterns.
-  auto patterns = [&](const Eigen::VectorXd& F, std::vector<int>& n, double* psi_sum) {
+  // The objective J(F) of the reduction; `update` moves the lateral patterns to F's.
+  auto energies = [&](const Eigen::VectorXd& F, bool update) {
     double e = 0;
-    for (int i = 0; i < S; ++i) {
-      const SectionLaw law =
-          section_law(std::max(F(i), 0.0), t_[i], z_sorted_, z_prefix_, min_pattern_);
-      n[i] = law.cells;
-      e += law.energy;
-    }
-    if (psi_sum) *psi_sum = e;
+    for (int i = 0; i < S; ++i) e += laws->energy(i, std::max(F(i), 0.0), update);
+    return e;
   };
   auto objective = [&](const Eigen::VectorXd& F) {
-    std::vector<int> n(S);
-    double psi = 0;
-    patterns(F, n, &psi);
-    return 0.5 * F.dot(carcass_product(carcass, F)) + model_.sag.dot(F) + psi;
+    return 0.5 * F.dot(carcass_product(carcass, F)) + model_.sag.dot(F) + energies(F, false);
   };
 
-  std::vector<int> n(S, columns());  // first pattern: every cell of a loaded section
-  Eigen::VectorXd F;                 // current iterate (empty before the first step)
+  Eigen::VectorXd F;  // current iterate (empty before the first step)
   std::vector<char> active = warm ? *warm : std::vector<char>{};
   const double gtol_rel = model_.config.solver.gap_tolerance;
   for (int it = 1; it <= settings_.max_pattern_iterations; ++it) {
@@ -143,8 +107,9 @@ Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const
     std::vector<double> diag(S);
     Eigen::VectorXd gap0(S);
     for (int i = 0; i < S; ++i) {
-      diag[i] = t_[i] / n[i];
-      gap0(i) = model_.sag(i) + z_prefix_[n[i]] / n[i];
+      double offset = 0;
+      laws->reduced(i, diag[i], offset);
+      gap0(i) = model_.sag(i) + offset;
     }
     const detail::DiagonalShifted op(carcass, std::move(diag));
     solvers::ContactProblem p;
@@ -166,21 +131,11 @@ Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const
     for (int i = 0; i < S; ++i) d(i) = s.approach_m - model_.sag(i) - CF(i);
     const double tol = gtol_rel * std::max(std::abs(s.approach_m), 1e-12);
     bool consistent = true;
-    for (int i = 0; i < S && consistent; ++i) {
-      if (Fh(i) > 0) {
-        consistent = d(i) >= z_sorted_[n[i] - 1] - tol &&
-                     (n[i] == columns() || d(i) <= z_sorted_[n[i]] + tol);
-      } else {
-        consistent = d(i) <= z_sorted_[0] + tol;
-      }
-    }
+    for (int i = 0; i < S && consistent; ++i) consistent = laws->consistent(i, Fh(i), d(i), tol);
     if (consistent) {
-      std::vector<double> f(std::size_t(S) * columns(), 0.0);
+      std::vector<double> f(std::size_t(S) * ny, 0.0);
       for (int i = 0; i < S; ++i) {
-        if (!(Fh(i) > 0)) continue;
-        for (int j = 0; j < columns(); ++j) {
-          f[std::size_t(i) * columns() + j] = std::max(d(i) - z_m_[j], 0.0) / t_[i];
-        }
+        if (Fh(i) > 0) laws->cell_forces(i, d(i), &f[std::size_t(i) * ny]);
       }
       std::ostringstream msg;
       msg << "converged in " << it << " lateral-pattern steps (" << r.contact_iterations
@@ -198,7 +153,7 @@ Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const
       for (int k = 0; k < 40 && objective(F + alpha * dF) > j0; ++k) alpha *= 0.5;
       F += alpha * dF;
     }
-    patterns(F, n, nullptr);
+    energies(F, true);
   }
   r.message = "lateral contact pattern did not settle in " +
               std::to_string(settings_.max_pattern_iterations) + " steps";
@@ -209,7 +164,7 @@ Patch3dResult Patch3d::solve_cells(double load_N) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
   const solvers::WeightedToeplitzCompliance carcass = carcass_operator(model_);
-  const detail::CellCompliance op(carcass, ny, t_);
+  const detail::CellCompliance op(carcass, ny, t_, G_.size() ? &G_ : nullptr);
   solvers::ContactProblem p;
   p.compliance_operator = &op;
   p.initial_gap.resize(std::size_t(S) * ny);
@@ -233,6 +188,27 @@ std::vector<Patch3dResult> Patch3d::solve_all(const std::vector<double>& loads_N
     out.push_back(solve(F, warm ? &out.back().section_active : nullptr));
   }
   return out;
+}
+
+double Patch3d::lateral_half_width(const Patch3dResult& r, int i) const {
+  // The level function e_j = d_i - z_j - v_ij across the section (tread compression inside,
+  // minus the gap outside), linear between the column centres: its outermost zero on each
+  // side; the tread edge if the outermost column is in contact.
+  const int ny = columns();
+  const double half = 0.5 * settings_.tread_width_m;
+  auto level = [&](int j) { return r.section_approach_m[i] - z_m_[j] - r.belt_deflection(i, j); };
+  auto in_contact = [&](int j) { return r.cell_force(i, j) > 0; };
+  int lo = 0, hi = ny - 1;
+  while (lo < ny && !in_contact(lo)) ++lo;
+  while (hi >= 0 && !in_contact(hi)) --hi;
+  if (lo > hi) return 0;
+  auto edge = [&](int in, int out) {
+    const double ein = level(in), eout = level(out);
+    return y_m_[in] + ein / (ein - eout) * (y_m_[out] - y_m_[in]);
+  };
+  const double right = hi == ny - 1 ? half : edge(hi, hi + 1);
+  const double left = lo == 0 ? -half : edge(lo, lo - 1);
+  return 0.5 * (right - left);
 }
 
 Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, double delta,
@@ -260,13 +236,23 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
   r.section_force_N.assign(F.data(), F.data() + S);
   r.section_approach_m.resize(S);
   r.section_active.resize(S);
+  // The belt's lateral deflection of each cell, G f_i (zero for the laterally rigid belt).
+  r.belt_deflection_m.assign(std::size_t(S) * ny, 0.0);
+  if (G_.size()) {
+    for (int i = 0; i < S; ++i) {
+      if (!(F(i) > 0)) continue;
+      const Eigen::Map<const Eigen::VectorXd> fi(&f[std::size_t(i) * ny], ny);
+      Eigen::Map<Eigen::VectorXd>(&r.belt_deflection_m[std::size_t(i) * ny], ny) = G_ * fi;
+    }
+  }
   double total = 0, comp = 0, pen = 0;
   for (int i = 0; i < S; ++i) {
     r.section_approach_m[i] = delta - m.sag(i) - CF(i);
     r.section_active[i] = F(i) > 0;
     for (int j = 0; j < ny; ++j) {
       const double fij = f[std::size_t(i) * ny + j];
-      const double g = m.sag(i) + z_m_[j] + CF(i) + t_[i] * fij - delta;
+      const double g = m.sag(i) + z_m_[j] + CF(i) + r.belt_deflection_m[std::size_t(i) * ny + j] +
+                       t_[i] * fij - delta;
       total += fij;
       comp = std::max(comp, std::abs(fij * g));
       pen = std::max(pen, -g);
@@ -297,13 +283,17 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
   for (int i = 0; i < S; ++i) {
     r.x_m[i] = cell_x(i, 0.0);
     r.dx_m[i] = m.unit_length_m * std::cos(m.theta[i]);
-    if (F(i) > 0) {
+    if (!(F(i) > 0)) continue;
+    if (G_.size()) {
+      r.half_width_m[i] = lateral_half_width(r, i);
+    } else {
       r.half_width_m[i] = std::min(settings_.crown.half_width_m(r.section_approach_m[i]), half);
-      r.width_m = std::max(r.width_m, 2 * r.half_width_m[i]);
     }
+    r.width_m = std::max(r.width_m, 2 * r.half_width_m[i]);
   }
-  // Longitudinal edges per column: the level function d_i - z_j (the cell's tread compression
-  // inside, minus its gap outside) interpolated linearly to zero between the sections.
+  // Longitudinal edges per column: the level function d_i - z_j - v_ij (the cell's tread
+  // compression inside, minus its gap outside; v the belt's lateral deflection) interpolated
+  // linearly to zero between the sections.
   r.column_edges.assign(ny, {});
   for (int j = 0; j < ny; ++j) {
     int first = -1, last = -1;
@@ -315,8 +305,8 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
     }
     if (first < 0) continue;
     auto edge = [&](int in, int out) {
-      const double pin = r.section_approach_m[in] - z_m_[j];
-      const double pout = r.section_approach_m[out] - z_m_[j];
+      const double pin = r.section_approach_m[in] - z_m_[j] - r.belt_deflection(in, j);
+      const double pout = r.section_approach_m[out] - z_m_[j] - r.belt_deflection(out, j);
       const double xin = cell_x(in, f[std::size_t(in) * ny + j]), xout = cell_x(out, 0.0);
       return xin + pin / (pin - pout) * (xout - xin);
     };

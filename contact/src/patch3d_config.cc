@@ -1,6 +1,41 @@
+#include <cmath>
+#include <stdexcept>
+
 #include "modaltyre/contact/patch3d.h"
 
 namespace modaltyre::contact {
+
+namespace {
+
+/// The `lateral_belt:` section (its presence enables the lateral belt).
+LateralBelt read_lateral_belt(const ConfigSection& s, const Patch3dSettings& p) {
+  LateralBelt b;
+  b.enabled = true;
+  b.bending_stiffness_Nm = s.positive("bending_stiffness_Nm", b.bending_stiffness_Nm, 1e12);
+  b.tension_N_m = s.number("tension_N_per_m", 0, 0, 1e9);
+  b.foundation_Pa_m = s.number("foundation_MPa_per_m", 0, 0, 1e9) * 1e6;
+  const std::string sup = s.choice("supports", "shoulders", {"shoulders", "free"});
+  b.supports = sup == "free" ? BeltSupports::free : BeltSupports::shoulders;
+  b.support_span_m = s.number("support_span_mm", 0, 0, 1e4) * 1e-3;
+  const double columns = std::round(p.tread_width_m / p.lateral_cell_m);
+  if (columns > Patch3d::kMaxLateralBeltColumns) {
+    s.fail("bending_stiffness_Nm", "a lateral belt supports at most " +
+                                       std::to_string(Patch3d::kMaxLateralBeltColumns) +
+                                       " columns (footprint_3d.lateral_cell_mm)");
+  }
+  try {
+    b.validate(p.tread_width_m);
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    const char* key = msg.find("span") != std::string::npos         ? "support_span_mm"
+                      : msg.find("foundation") != std::string::npos ? "foundation_MPa_per_m"
+                                                                    : "tension_N_per_m";
+    s.fail(key, msg);
+  }
+  return b;
+}
+
+}  // namespace
 
 Patch3dSettings read_patch3d_settings(const ConfigSection& s) {
   Patch3dSettings p;
@@ -14,6 +49,7 @@ Patch3dSettings read_patch3d_settings(const ConfigSection& s) {
   p.max_pattern_iterations =
       static_cast<int>(s.integer("max_pattern_iterations", p.max_pattern_iterations, 1, 100000));
   p.crown = read_crown_profile(s.section("crown"));
+  if (s.has("lateral_belt")) p.lateral_belt = read_lateral_belt(s.section("lateral_belt"), p);
   // The profile must stay a graph over the tread: no vertical tangent inside the shoulders.
   if (0.5 * p.tread_width_m >= p.crown.reach_m()) {
     s.fail("tread_width_mm", "the crown profile turns vertical inside the tread width");

@@ -23,16 +23,20 @@ class DiagonalShifted final : public solvers::ComplianceOperator {
   std::vector<double> d_;
 };
 
-/// The cell compliance of the laterally rigid belt: cells indexed i * columns + j, the carcass
-/// between the sections' resultants plus each cell's own tread t_i,
-///   C_(ij)(kl) = C_carcass(i, k) + t_i [i = k, j = l].
+/// The cell compliance: cells indexed i * columns + j, the carcass between the sections'
+/// resultants, each cell's own tread t_i and, if given, the section's lateral belt compliance G,
+///   C_(ij)(kl) = C_carcass(i, k) + [i = k] (t_i [j = l] + G(j, l)).
 class CellCompliance final : public solvers::ComplianceOperator {
  public:
-  CellCompliance(const solvers::ComplianceOperator& carcass, int columns, std::vector<double> t)
-      : carcass_(carcass), columns_(columns), t_(std::move(t)) {}
+  CellCompliance(const solvers::ComplianceOperator& carcass, int columns, std::vector<double> t,
+                 const Eigen::MatrixXd* lateral = nullptr)
+      : carcass_(carcass), columns_(columns), t_(std::move(t)), G_(lateral) {}
   int size() const override { return carcass_.size() * columns_; }
   double entry(int a, int b) const override {
-    return carcass_.entry(a / columns_, b / columns_) + (a == b ? t_[a / columns_] : 0.0);
+    const int i = a / columns_, k = b / columns_;
+    double c = carcass_.entry(i, k) + (a == b ? t_[i] : 0.0);
+    if (G_ && i == k) c += (*G_)(a % columns_, b % columns_);
+    return c;
   }
   void apply(int r0, int nr, int c0, int nc, const Eigen::Ref<const Eigen::MatrixXd>& X,
              Eigen::Ref<Eigen::MatrixXd> Y) const override;
@@ -41,6 +45,7 @@ class CellCompliance final : public solvers::ComplianceOperator {
   const solvers::ComplianceOperator& carcass_;
   int columns_;
   std::vector<double> t_;
+  const Eigen::MatrixXd* G_;  ///< not owned; null for the laterally rigid belt
 };
 
 }  // namespace modaltyre::contact::detail

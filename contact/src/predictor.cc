@@ -16,6 +16,69 @@ Prediction failed(std::string why) {
   return p;
 }
 
+std::vector<char> warm_set(std::span<const char> warm) {
+  return std::vector<char>(warm.begin(), warm.end());
+}
+
+// ---- the effect-free path: the model's own operator -------------------------------------------
+
+// A plain solve_footprint() result as a Prediction: the config's width, no rolling resistance.
+Prediction from_footprint(FootprintResult result, const TyreConfig& config) {
+  Prediction p;
+  p.ok = result.converged;
+  p.message = result.message;
+  p.sinking_mm = result.sinking_m * 1e3;
+  p.length_mm = result.contact_length_m * 1e3;
+  p.width_mm = config.tread.width_m * 1e3;
+  p.elastic_load_N = result.load.load_N;
+  p.footprint = std::move(result);
+  return p;
+}
+
+Prediction effect_free(const TyreModel& model, const OperatingConditions& c,
+                       const std::vector<char>& warm) {
+  return from_footprint(
+      solve_footprint(model, {c.load_N, c.horizontal_force_N}, warm.empty() ? nullptr : &warm),
+      model.config);
+}
+
+// ---- the effects path, one step per effect ---------------------------------------------------
+
+// dry_friction (seed 000, Saint-Venant element in parallel): the element carries F_f against the
+// motion, the elastic tyre the rest. False when the load does not exceed F_f on loading.
+bool elastic_load(const EffectsConfig& E, const OperatingConditions& c, double& load_N,
+                  std::string& why) {
+  load_N = c.load_N;
+  if (!E.dry_friction.enabled) return true;
+  const double ff = E.dry_friction.friction_force_N;
+  load_N += c.branch == Branch::unloading ? ff : -ff;
+  if (load_N > 0) return true;
+  std::ostringstream msg;
+  msg << "load " << c.load_N << " N does not exceed the dry-friction force " << ff
+      << " N: the tyre does not deflect on the loading branch";
+  why = msg.str();
+  return false;
+}
+
+// The carcass compliance factor: the parameters' level against the model's, inflation_pressure
+// and load_stiffening.
+double carcass_scale(const TyreModel& m, const TyreParameters& P, const OperatingConditions& c,
+                     double elastic_load_N) {
+  const EffectsConfig& E = P.effects;
+  double scale = P.compliance_scale / m.config.compliance_scale;
+  if (E.inflation_pressure.enabled) {
+    // seed 000 eq. (3): h ~ (1 + p_W)^-1, p_W in bar (docs/rheology.md).
+    const double p_bar = c.pressure_kPa * 1e-2;
+    const double p0_bar = E.inflation_pressure.modal_test_pressure_kPa * 1e-2;
+    scale *= std::pow((1 + p0_bar) / (1 + p_bar), E.inflation_pressure.exponent);
+  }
+  if (E.load_stiffening.enabled) {
+    scale *=
+        std::pow(elastic_load_N / E.load_stiffening.reference_load_N, -E.load_stiffening.exponent);
+  }
+  return scale;
+}
+
 // Kernels of a modified basis on the model's grid, built the way build_tyre_model built the
 // static ones (FFT when the orders fit the grid).
 modal::LagKernels kernels_for(const TyreModel& m, const modal::ModalBasis& basis,
@@ -26,7 +89,122 @@ modal::LagKernels kernels_for(const TyreModel& m, const modal::ModalBasis& basis
              : modal::build_lag_kernels(basis, m.dtheta_rad, cand, rolling);
 }
 
+// The carcass kernels and their vertical compliance when rolling_speed (at a speed > 0) or
+// belt_flattening change them; otherwise the model's static ones are used.
+struct OwnCarcass {
+  modal::LagKernels kernels;
+  Eigen::MatrixXd vertical;
+};
+
+OwnCarcass rebuilt_carcass(const TyreModel& m, const EffectsConfig& E, double scale, bool rolling,
+                           bool flattening, double speed_kmh) {
+  modal::ModalBasis basis = m.basis;
+  if (flattening) {
+    // Foundation kappa on orders >= 2: c_k -> c_k / (1 + pi R kappa c_k), c_k the order's
+    // (scaled) static radial compliance; every term of the order gets the same factor.
+    const double kappa = E.belt_flattening.stiffness_MPa * 1e6;
+    const double R0 = m.config.outer_radius_m;
+    std::vector<double> factor(basis.max_order + 1, 1.0);
+    for (int k = 2; k <= basis.max_order; ++k) {
+      const double ck = scale * basis.static_rr(k);
+      factor[k] = ck > 0 ? 1.0 / (1.0 + M_PI * R0 * kappa * ck) : 1.0;
+    }
+    for (auto& t : basis.terms) {
+      if (t.order < 2 || t.order > basis.max_order) continue;
+      t.P_rr *= factor[t.order];
+      t.P_rt *= factor[t.order];
+      t.P_tt *= factor[t.order];
+    }
+  }
+  modal::RollingState rs;
+  if (rolling) {
+    // rolling_speed: steady-rolling receptance at the row's speed (seed 001 eq. 2-5).
+    for (auto& t : basis.terms) t.damping_ratio *= E.rolling_speed.damping_scale;
+    rs.speed_m_s = speed_kmh / 3.6;
+    rs.radius_m = m.config.outer_radius_m;
+  }
+  OwnCarcass own;
+  own.kernels = kernels_for(m, basis, rs);
+  own.vertical = carcass_vertical_compliance(own.kernels, m.theta);
+  return own;
+}
+
+// Horizontal force: the static cross-compliance, carcass part scaled like the vertical one; its
+// tread part (the model's springs) is swapped for this prediction's in assemble().
+Eigen::MatrixXd horizontal_coupling(const TyreModel& m, const CarcassAssembly& a, double ratio,
+                                    double scale) {
+  Eigen::MatrixXd horizontal = vertical_from_horizontal(m);
+  for (int j = 0; j < m.candidates(); ++j) {
+    const double cj = a.cos_theta[j], sj = a.sin_theta[j];
+    horizontal(j, j) -= cj * (-sj) / m.k_radial_N_m + sj * cj / m.k_tangential_N_m;
+  }
+  horizontal *= ratio * scale;
+  return horizontal;
+}
+
+// The operator of one width: tread springs per unit from the modulus and the width (seed 001
+// eq. 6-9), creeping while the load is held (tread_relaxation, `creep`), optionally
+// shear-coupled (tread_coupling); Winkler soil under rows on soil (soil_compliance).
+PatchOperator assemble(const TyreModel& m, const CarcassAssembly& a, const TyreParameters& P,
+                       const modal::LagKernels* kernels, const Eigen::MatrixXd& carcass,
+                       const Eigen::MatrixXd& horizontal, double scale, double creep, bool soil,
+                       double ratio, bool rolling, double width) {
+  const EffectsConfig& E = P.effects;
+  const auto& T = P.tread;
+  const int cand = m.candidates();
+  const double ds = m.unit_length_m;
+  const double G = T.modulus_Pa / (2 * (1 + T.poisson));
+  const double k_r = T.modulus_Pa * width * ds / T.thickness_m;
+  const double k_t = G * width * ds / T.thickness_m;
+  const std::vector<double>& cos_ = a.cos_theta;
+  const std::vector<double>& sin_ = a.sin_theta;
+  PatchOperator op;
+  op.kernels = kernels;
+  op.carcass_scale = scale;
+  op.tread_radial_lag = pasternak_tread_lags(
+      k_r / creep, E.tread_coupling.enabled ? E.tread_coupling.coupling_length_mm * 1e-3 : 0, ds,
+      cand);
+  op.tread_tangential_compliance = creep / k_t;
+  op.width_m = width;
+  op.horizontal_ratio = ratio;
+  op.symmetric = !rolling && ratio == 0.0;
+  op.compliance = scale * carcass;
+  const int lags = static_cast<int>(op.tread_radial_lag.size());
+  for (int j = 0; j < cand; ++j) {
+    const double cj = cos_[j], sj = sin_[j];
+    for (int i = std::max(0, j - lags + 1); i < std::min(cand, j + lags); ++i) {
+      op.compliance(i, j) += cos_[i] * cj * op.tread_radial_lag[std::abs(i - j)];
+    }
+    op.compliance(j, j) += sj * sj * op.tread_tangential_compliance;
+    if (soil) {
+      // Winkler soil under the unit (static part of seed 000 eq. 23): z = p H / E2.
+      op.compliance(j, j) += E.soil_compliance.layer_mm * 1e-3 /
+                             (E.soil_compliance.modulus_MPa * 1e6 * width * ds * cj);
+    }
+  }
+  if (ratio != 0.0) {
+    op.compliance += horizontal;
+    for (int j = 0; j < cand; ++j) {  // tread under the unit's own horizontal force (eq. 6)
+      const double cj = cos_[j], sj = sin_[j];
+      op.compliance(j, j) +=
+          ratio * (cj * (-sj) * op.tread_radial_lag[0] + sj * cj * op.tread_tangential_compliance);
+    }
+  }
+  if (op.symmetric) op.compliance = 0.5 * (op.compliance + op.compliance.transpose()).eval();
+  return op;
+}
+
+// contact_width: chord of the transverse crown arc pressed in by the sinking.
+double crown_width(const EffectsConfig& E, double sinking_m) {
+  return std::clamp(2 * std::sqrt(2 * E.contact_width.crown_radius_mm * 1e-3 * sinking_m), 1e-3,
+                    E.contact_width.max_width_mm * 1e-3);
+}
+
 }  // namespace
+
+TyreParameters parameters_of(const TyreConfig& config) {
+  return {config.compliance_scale, config.tread, config.effects};
+}
 
 const std::vector<std::string>& observable_names() {
   static const std::vector<std::string> names = {"sinking_mm", "length_mm", "width_mm",
@@ -42,18 +220,6 @@ double Prediction::observable(const std::string& name) const {
   throw std::invalid_argument("unknown observable " + name);
 }
 
-Prediction prediction_from(FootprintResult result, const TyreConfig& config) {
-  Prediction p;
-  p.ok = result.converged;
-  p.message = result.message;
-  p.sinking_mm = result.sinking_m * 1e3;
-  p.length_mm = result.contact_length_m * 1e3;
-  p.width_mm = config.tread.width_m * 1e3;
-  p.elastic_load_N = result.load.load_N;
-  p.footprint = std::move(result);
-  return p;
-}
-
 std::vector<double> pasternak_tread_lags(double k_r, double ell, double ds, int max_lags) {
   if (!(ell > 0)) return {1.0 / k_r};
   const double a = (ell / ds) * (ell / ds);
@@ -66,158 +232,78 @@ std::vector<double> pasternak_tread_lags(double k_r, double ell, double ds, int 
   return g;
 }
 
-FootprintPredictor::FootprintPredictor(TyreModel model) : model_(std::move(model)) {
-  carcass_vertical_ = carcass_vertical_compliance(model_.kernels, model_.theta);
-  for (double th : model_.theta) cos_.push_back(std::cos(th)), sin_.push_back(std::sin(th));
+// The one place that decides between the effect-free and the effects path.
+bool conditions_act(const TyreConfig& config) { return config.effects.any(); }
+
+Prediction predict(const TyreModel& model, const OperatingConditions& c,
+                   const PredictOptions& options) {
+  if (!conditions_act(model.config) && c.load_N > 0) {
+    return effect_free(model, c, warm_set(options.warm_active));
+  }
+  return predict(model, parameters_of(model.config), c, options);
 }
 
-Prediction FootprintPredictor::predict(const TyreConfig& params, const OperatingConditions& c,
-                                       const std::vector<char>* warm) const {
-  const TyreModel& m = model_;
-  const EffectsConfig& E = params.effects;
-  const double R0 = m.config.outer_radius_m;
-  const int cand = m.candidates();
-  const double ds = m.unit_length_m;
+std::vector<Prediction> predict_all(const TyreModel& model,
+                                    const std::vector<OperatingConditions>& conditions) {
+  std::vector<Prediction> out;
+  const bool chain = !conditions_act(model.config);
+  std::vector<char> warm;
+  for (const auto& c : conditions) {
+    PredictOptions o;
+    if (chain) o.warm_active = warm;
+    out.push_back(predict(model, c, o));
+    if (chain && out.back().footprint.converged) warm = out.back().footprint.active;
+  }
+  return out;
+}
+
+namespace {
+
+Prediction effects_path(const TyreModel& m, const TyreParameters& P, const OperatingConditions& c,
+                        const PredictOptions& options) {
+  const EffectsConfig& E = P.effects;
   if (!(c.load_N > 0)) return failed("load must be greater than 0 N");
+  double elastic = 0;
+  std::string why;
+  if (!elastic_load(E, c, elastic, why)) return failed(why);
+  const double scale = carcass_scale(m, P, c, elastic);
+  const CarcassAssembly& assembly = m.carcass_assembly();
 
-  // Dry friction (seed 000, Saint-Venant element in parallel): the element carries F_f against
-  // the motion, the elastic tyre the rest.
-  double elastic_load = c.load_N;
-  if (E.dry_friction.enabled) {
-    const double ff = E.dry_friction.friction_force_N;
-    elastic_load += c.branch == Branch::unloading ? ff : -ff;
-    if (!(elastic_load > 0)) {
-      std::ostringstream msg;
-      msg << "load " << c.load_N << " N does not exceed the dry-friction force " << ff
-          << " N: the tyre does not deflect on the loading branch";
-      return failed(msg.str());
-    }
-  }
-
-  // Carcass compliance factor.
-  double scale = params.compliance_scale / m.config.compliance_scale;
-  if (E.inflation_pressure.enabled) {
-    // seed 000 eq. (3): h ~ (1 + p_W)^-1, p_W in bar (docs/rheology.md).
-    const double p_bar = c.pressure_kPa * 1e-2;
-    const double p0_bar = E.inflation_pressure.modal_test_pressure_kPa * 1e-2;
-    scale *= std::pow((1 + p0_bar) / (1 + p_bar), E.inflation_pressure.exponent);
-  }
-  if (E.load_stiffening.enabled) {
-    scale *=
-        std::pow(elastic_load / E.load_stiffening.reference_load_N, -E.load_stiffening.exponent);
-  }
-
-  // Carcass kernels: static ones unless rolling or belt flattening change them.
   const bool rolling = E.rolling_speed.enabled && c.speed_kmh > 0;
   const bool flattening = E.belt_flattening.enabled && E.belt_flattening.stiffness_MPa > 0;
-  modal::LagKernels own_kernels;
-  Eigen::MatrixXd own_carcass;
+  OwnCarcass own;
   const modal::LagKernels* kernels = &m.kernels;
-  const Eigen::MatrixXd* carcass = &carcass_vertical_;
+  const Eigen::MatrixXd* carcass = &assembly.carcass_vertical;
   if (rolling || flattening) {
-    modal::ModalBasis basis = m.basis;
-    if (flattening) {
-      // Foundation kappa on orders >= 2: c_k -> c_k / (1 + pi R kappa c_k), c_k the order's
-      // (scaled) static radial compliance; every term of the order gets the same factor.
-      const double kappa = E.belt_flattening.stiffness_MPa * 1e6;
-      std::vector<double> factor(basis.max_order + 1, 1.0);
-      for (int k = 2; k <= basis.max_order; ++k) {
-        const double ck = scale * basis.static_rr(k);
-        factor[k] = ck > 0 ? 1.0 / (1.0 + M_PI * R0 * kappa * ck) : 1.0;
-      }
-      for (auto& t : basis.terms) {
-        if (t.order < 2 || t.order > basis.max_order) continue;
-        t.P_rr *= factor[t.order];
-        t.P_rt *= factor[t.order];
-        t.P_tt *= factor[t.order];
-      }
-    }
-    modal::RollingState rs;
-    if (rolling) {
-      for (auto& t : basis.terms) t.damping_ratio *= E.rolling_speed.damping_scale;
-      rs.speed_m_s = c.speed_kmh / 3.6;
-      rs.radius_m = R0;
-    }
-    own_kernels = kernels_for(m, basis, rs);
-    own_carcass = carcass_vertical_compliance(own_kernels, m.theta);
-    kernels = &own_kernels;
-    carcass = &own_carcass;
+    own = rebuilt_carcass(m, E, scale, rolling, flattening, c.speed_kmh);
+    kernels = &own.kernels;
+    carcass = &own.vertical;
   }
 
-  // Tread: springs per unit from the modulus and the width (seed 001 eq. 6-9), creeping while
-  // the load is held (tread_relaxation), optionally shear-coupled (tread_coupling).
-  const auto& T = params.tread;
-  double creep = 1;
+  double creep = 1;  // tread_relaxation: seed 001 eq. (10), Kelvin-Voigt creep while held
   if (E.tread_relaxation.enabled && c.hold_s > 0) {
     creep += E.tread_relaxation.creep_ratio *
              (1 - std::exp(-c.hold_s / E.tread_relaxation.time_constant_s));
   }
-  const double G = T.modulus_Pa / (2 * (1 + T.poisson));
   const bool soil = E.soil_compliance.enabled && c.surface == Surface::soil;
   const double ratio = c.horizontal_force_N / c.load_N;
-  // Horizontal force: the static cross-compliance, carcass part scaled like the vertical one;
-  // its tread part (the model's springs) is swapped for this prediction's below.
-  Eigen::MatrixXd horizontal;
-  if (ratio != 0.0) {
-    horizontal = vertical_from_horizontal(m);
-    for (int j = 0; j < cand; ++j) {
-      const double cj = cos_[j], sj = sin_[j];
-      horizontal(j, j) -= cj * (-sj) / m.k_radial_N_m + sj * cj / m.k_tangential_N_m;
-    }
-    horizontal *= ratio * scale;
-  }
+  const Eigen::MatrixXd horizontal =
+      ratio != 0.0 ? horizontal_coupling(m, assembly, ratio, scale) : Eigen::MatrixXd();
 
-  double width = T.width_m;
+  double width = P.tread.width_m;
   if (E.contact_width.enabled) width = std::min(width, E.contact_width.max_width_mm * 1e-3);
   Prediction out;
-  std::vector<char> warm_set = warm ? *warm : std::vector<char>{};
+  std::vector<char> warm = warm_set(options.warm_active);
   const int max_width_iterations = E.contact_width.enabled ? 60 : 1;
   for (int it = 0; it < max_width_iterations; ++it) {
-    const double k_r = T.modulus_Pa * width * ds / T.thickness_m;
-    const double k_t = G * width * ds / T.thickness_m;
-    PatchOperator op;
-    op.kernels = kernels;
-    op.carcass_scale = scale;
-    op.tread_radial_lag = pasternak_tread_lags(
-        k_r / creep, E.tread_coupling.enabled ? E.tread_coupling.coupling_length_mm * 1e-3 : 0, ds,
-        cand);
-    op.tread_tangential_compliance = creep / k_t;
-    op.width_m = width;
-    op.horizontal_ratio = ratio;
-    op.symmetric = !rolling && ratio == 0.0;
-    op.compliance = scale * *carcass;
-    const int lags = static_cast<int>(op.tread_radial_lag.size());
-    for (int j = 0; j < cand; ++j) {
-      const double cj = cos_[j], sj = sin_[j];
-      for (int i = std::max(0, j - lags + 1); i < std::min(cand, j + lags); ++i) {
-        op.compliance(i, j) += cos_[i] * cj * op.tread_radial_lag[std::abs(i - j)];
-      }
-      op.compliance(j, j) += sj * sj * op.tread_tangential_compliance;
-      if (soil) {
-        // Winkler soil under the unit (static part of seed 000 eq. 23): z = p H / E2.
-        op.compliance(j, j) += E.soil_compliance.layer_mm * 1e-3 /
-                               (E.soil_compliance.modulus_MPa * 1e6 * width * ds * cj);
-      }
-    }
-    if (ratio != 0.0) {
-      op.compliance += horizontal;
-      for (int j = 0; j < cand; ++j) {  // tread under the unit's own horizontal force (eq. 6)
-        const double cj = cos_[j], sj = sin_[j];
-        op.compliance(j, j) += ratio * (cj * (-sj) * op.tread_radial_lag[0] +
-                                        sj * cj * op.tread_tangential_compliance);
-      }
-    }
-    if (op.symmetric) op.compliance = 0.5 * (op.compliance + op.compliance.transpose()).eval();
-
-    LoadCase lc{elastic_load, c.horizontal_force_N * elastic_load / c.load_N};
-    out.footprint = solve_patch(m, std::move(op), lc, warm_set.empty() ? nullptr : &warm_set);
+    PatchOperator op = assemble(m, assembly, P, kernels, *carcass, horizontal, scale, creep, soil,
+                                ratio, rolling, width);
+    const LoadCase lc{elastic, c.horizontal_force_N * elastic / c.load_N};
+    out.footprint = solve_patch(m, std::move(op), lc, warm.empty() ? nullptr : &warm);
     if (!out.footprint.converged) return failed(out.footprint.message);
-    warm_set = out.footprint.active;
+    warm = out.footprint.active;
     if (!E.contact_width.enabled) break;
-    // Crown profile: chord of the transverse crown arc pressed in by the sinking.
-    const double d = out.footprint.sinking_m;
-    const double next = std::clamp(2 * std::sqrt(2 * E.contact_width.crown_radius_mm * 1e-3 * d),
-                                   1e-3, E.contact_width.max_width_mm * 1e-3);
+    const double next = crown_width(E, out.footprint.sinking_m);
     const bool done = std::abs(next - width) < 1e-7 * width;
     width = it < 8 ? next : 0.5 * (width + next);  // damped once it has not settled quickly
     if (done) break;
@@ -227,18 +313,27 @@ Prediction FootprintPredictor::predict(const TyreConfig& params, const Operating
   }
   const FootprintResult& f = out.footprint;
   out.ok = true;
-  out.elastic_load_N = elastic_load;
+  out.elastic_load_N = elastic;
   out.sinking_mm = f.sinking_m * 1e3;
   out.length_mm = f.contact_length_m * 1e3;
   out.width_mm = width * 1e3;
   double moment = 0;
   for (const auto& u : f.units) moment += u.fz_N * u.x_m;
-  out.rolling_resistance_N = rolling ? moment / (R0 - f.sinking_m) : 0.0;
+  out.rolling_resistance_N = rolling ? moment / (m.config.outer_radius_m - f.sinking_m) : 0.0;
   if (!std::isfinite(out.sinking_mm) || !std::isfinite(out.length_mm) ||
       !std::isfinite(out.rolling_resistance_N)) {
     return failed("prediction is not finite");
   }
   return out;
+}
+
+}  // namespace
+
+Prediction predict(const TyreModel& model, const TyreParameters& parameters,
+                   const OperatingConditions& c, const PredictOptions& options) {
+  Prediction p = effects_path(model, parameters, c, options);
+  p.footprint.load = {c.load_N, c.horizontal_force_N};  // the applied load, failed or not
+  return p;
 }
 
 }  // namespace modaltyre::contact

@@ -85,7 +85,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   T.instantaneous_stiffness_ratio =
       tr.number("instantaneous_stiffness_ratio", T.instantaneous_stiffness_ratio, 1.01, 1e6);
   T.modal_damping_scale = tr.number("modal_damping_scale", T.modal_damping_scale, 0, 100);
-  T.output_step_s = tr.positive("output_step_ms", T.output_step_s * 1e3, 1e6) * 1e-3;
+  T.output_step_s = tr.number("output_step_ms", T.output_step_s * 1e3, 1e-3, 1e6) * 1e-3;
   T.relative_tolerance = tr.number("relative_tolerance", T.relative_tolerance, 1e-12, 1e-2);
   const ConfigSection lh = tr.section("load_hold");
   T.load_hold.load_N = lh.positive("load_N", T.load_hold.load_N, 1e7);

@@ -168,6 +168,16 @@ Eigen::MatrixXd vertical_from_horizontal(const TyreModel& m) {
   return C;
 }
 
+const CarcassAssembly& TyreModel::carcass_assembly() const {
+  return carcass_assembly_.get([this] {
+    CarcassAssembly a;
+    a.carcass_vertical = carcass_vertical_compliance(kernels, theta);
+    for (double th : theta)
+      a.cos_theta.push_back(std::cos(th)), a.sin_theta.push_back(std::sin(th));
+    return a;
+  });
+}
+
 TyreModel build_tyre_model(const TyreConfig& config) {
   const auto data = modal::read_hammer_csv(config.hammer_csv);
   return build_tyre_model(config, modal::identify_modes(data));

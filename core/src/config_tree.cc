@@ -64,6 +64,14 @@ void collect_unconsumed(const ConfigTree::State& st, const YAML::Node& node,
     }
     const std::string key = kv.first.Scalar();
     const std::string dotted = prefix.empty() ? key : prefix + "." + key;
+    // "tread.modulus_MPa: 5" in a file would pass as the nested key that was read, its value
+    // ignored; only --set and sweeps take dotted keys.
+    if (key.find('.') != std::string::npos) {
+      const int line = kv.first.Mark().line >= 0 ? kv.first.Mark().line + 1 : 0;
+      throw InputError({st.file, line, dotted},
+                       "a key with '.' is not read in a config file; write it nested (" +
+                           key.substr(0, key.find('.')) + ":, then the rest indented below)");
+    }
     if (kv.second.IsMap() && !st.consumed.count(dotted)) {
       collect_unconsumed(st, kv.second, dotted, out, lines);
     } else if (!st.consumed.count(dotted)) {
@@ -113,7 +121,8 @@ YAML::Node parse_set_value(const std::string& value, const std::string& key) {
     throw InputError({"--set", 0, key},
                      all.rfind(prefix, 0) == 0 ? all.substr(prefix.size()) : all);
   } catch (const YAML::Exception& e) {
-    throw InputError({"--set", 0, key}, "cannot parse value '" + value + "': " + e.msg);
+    const std::string shown = value.size() > 60 ? value.substr(0, 60) + "..." : value;
+    throw InputError({"--set", 0, key}, "cannot parse value '" + shown + "': " + e.msg);
   }
 }
 

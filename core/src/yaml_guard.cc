@@ -86,6 +86,7 @@ class StructureChecker : public YAML::EventHandler {
     const auto [it, fresh] = f.keys.emplace(*scalar, line_of(mark));
     if (!fresh) {
       const std::string here = dotted(-1);
+      if (name_ == "--set") throw InputError({name_, 0, here}, "given twice in one value");
       throw InputError({name_, line_of(mark), here},
                        "given twice in the same " +
                            std::string(stack_.size() == 1 ? "file" : "section") +

@@ -9,15 +9,15 @@
 #include <set>
 #include <sstream>
 
-#include "modaltyre/contact/validation.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/studies/validation.h"
 
 namespace modaltyre::discover {
 namespace {
 
 using contact::EffectId;
-using contact::MeasurementSet;
 using contact::TyreConfig;
+using studies::MeasurementSet;
 
 std::string percent(double rel) {
   std::ostringstream s;
@@ -28,7 +28,7 @@ std::string percent(double rel) {
 
 std::size_t distinct(const MeasurementSet& d, const std::string& condition) {
   std::set<double> v;
-  for (const auto& r : d.rows) v.insert(contact::condition_value(r.conditions, condition));
+  for (const auto& r : d.rows) v.insert(studies::condition_value(r.conditions, condition));
   return v.size();
 }
 
@@ -72,7 +72,7 @@ std::map<std::string, double> named_values(const Variant& v, const std::vector<d
 std::vector<RegimeFinding> locate(const MeasurementSet& d, const FitResult& base) {
   std::vector<RegimeFinding> out;
   std::vector<std::string> vars;
-  for (const auto& c : contact::condition_names()) {
+  for (const auto& c : studies::condition_names()) {
     if (distinct(d, c) >= 2) vars.push_back(c);
   }
   for (std::size_t o = 0; o < d.observables.size(); ++o) {
@@ -90,7 +90,7 @@ std::vector<RegimeFinding> locate(const MeasurementSet& d, const FitResult& base
     f.mean_residual = std::accumulate(res.begin(), res.end(), 0.0) / res.size();
     for (const auto& var : vars) {
       std::vector<double> x;
-      for (int r : rows) x.push_back(contact::condition_value(d.rows[r].conditions, var));
+      for (int r : rows) x.push_back(studies::condition_value(d.rows[r].conditions, var));
       const double r = pearson(x, res);
       if (std::abs(r) > std::abs(f.correlation)) f.correlation = r, f.variable = var;
     }
@@ -194,16 +194,15 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     }
     eval.mesh.unit_length_m = opt.unit_length_mm * 1e-3;
   }
-  const contact::FootprintPredictor predictor(contact::build_tyre_model(eval));
-  const Evaluator ev(predictor, data);
+  const contact::TyreModel model = contact::build_tyre_model(eval);
+  const Evaluator ev(model, data);
   std::vector<int> all(data.rows.size());
   std::iota(all.begin(), all.end(), 0);
 
   DiscoverReport rep;
   {
     std::ostringstream s;
-    s << predictor.model().unit_length_m * 1e3 << " mm units, " << predictor.model().candidates()
-      << " candidate units";
+    s << model.unit_length_m * 1e3 << " mm units, " << model.candidates() << " candidate units";
     rep.evaluation_mesh = s.str();
   }
   const auto all_entries = ev.entries(all);
@@ -306,7 +305,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     for (std::size_t i = 0; i < chosen.variant.parameters.size(); ++i) {
       const auto& p = chosen.variant.parameters[i];
       if (!ne.parameters.count(p.key)) continue;
-      if (!contact::range_bound_side(chosen.fit.values[i], p.min, p.max, p.log_scale).empty())
+      if (!studies::range_bound_side(chosen.fit.values[i], p.min, p.max, p.log_scale).empty())
         ne.at_bound.push_back(p.key);
     }
     ne.delta_bic = current.fit.bic - chosen.fit.bic;

@@ -105,9 +105,8 @@ TyreConfig apply(const TyreConfig& base, const Variant& v, const std::vector<dou
   return c;
 }
 
-Evaluator::Evaluator(const contact::FootprintPredictor& predictor,
-                     const contact::MeasurementSet& data)
-    : predictor_(predictor), data_(data) {}
+Evaluator::Evaluator(const contact::TyreModel& model, const studies::MeasurementSet& data)
+    : model_(model), data_(data) {}
 
 std::vector<Evaluator::Entry> Evaluator::entries(const std::vector<int>& rows) const {
   std::vector<Entry> out;
@@ -130,7 +129,8 @@ std::vector<double> Evaluator::residuals(const TyreConfig& config, const std::ve
   while (i < e.size()) {
     const int row = e[i].row;
     const auto& mr = data_.rows[row];
-    const contact::Prediction p = predictor_.predict(config, mr.conditions);
+    const contact::Prediction p =
+        contact::predict(model_, contact::parameters_of(config), mr.conditions);
     if (!p.ok) ++failed;
     for (; i < e.size() && e[i].row == row; ++i) {
       const std::string& obs = data_.observables[e[i].observable];
@@ -160,7 +160,7 @@ double bic(const std::vector<Evaluator::Entry>& entries, const std::vector<doubl
   return b + k * std::log(static_cast<double>(std::max(total, 1)));
 }
 
-std::map<std::string, double> rms_by_observable(const contact::MeasurementSet& data,
+std::map<std::string, double> rms_by_observable(const studies::MeasurementSet& data,
                                                 const std::vector<Evaluator::Entry>& entries,
                                                 const std::vector<double>& residuals) {
   std::map<std::string, double> sum;

@@ -11,7 +11,10 @@
 namespace modaltyre::rheology {
 
 SlopeFactorResult compute_slope_factors(const SlopeFactorOptions& o) {
-  if (o.samples < 3) throw InputError({"--samples", 0, "samples"}, "need at least 3 samples");
+  if (o.samples < 3 || o.samples > kMaxSlopeSamples) {
+    throw InputError({"--samples", 0, "samples"}, "need 3 to " + std::to_string(kMaxSlopeSamples) +
+                                                      " samples, got " + std::to_string(o.samples));
+  }
   if (!(o.max_relative_deflection > 0 && o.max_relative_deflection < 1))
     throw InputError({"--max-h-r0", 0, "max_relative_deflection"},
                      "the range of h_Z/r0 must be in (0, 1)");

@@ -4,6 +4,8 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -141,3 +143,83 @@ TEST_F(CliHostile, SweepSpecThatIsADevice) {
 }
 
 }  // namespace
+
+// Issue 16 item 2: "tread.modulus_MPa: 5" at the top of a config used to pass as the nested key
+// that was read (its value ignored, exit 0); a key set twice in a sweep's set: through a
+// dotted and a nested spelling kept one of them.
+TEST_F(CliHostile, DottedKeyInAConfigAndTwiceInASweepSet) {
+  const std::string text = modaltyre_test::slurp(kConfig);
+  const int lines = static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+  std::string cfg = text;
+  const std::string hammer = "hammer_csv: data/";
+  cfg.replace(cfg.find(hammer), hammer.size(), "hammer_csv: " + kSrc + "/configs/data/");
+  const std::string p = write("dotted.yaml", cfg + "tread.modulus_MPa: 5\n");
+  expect_input_error(run_limited({"footprint", p}),
+                     {p + ":" + std::to_string(lines + 1) + ": tread.modulus_MPa: ",
+                      "a key with '.' is not read in a config file"});
+  const std::string s = write("sweep.yaml", "base: " + kConfig +
+                                                "\nset:\n  tread.modulus_MPa: 3\n"
+                                                "  tread: {modulus_MPa: 4}\n"
+                                                "grid:\n  load_N: [3000]\noutput: x.csv\n");
+  expect_input_error(run_limited({"sweep", s}),
+                     {s + ":4: set.tread.modulus_MPa: ", "twice in set (first at line 3)"});
+}
+
+// Issue 16 item 4: a result printed onto a full disk (here /dev/full) is a failure, not exit 0.
+TEST_F(CliHostile, StdoutOnAFullDiskIsAnError) {
+  const std::string cmd = modaltyre_test::quote(MODALTYRE_CLI) + " footprint " +
+                          modaltyre_test::quote(kConfig) + " --load 3000 >/dev/full 2>" +
+                          modaltyre_test::quote((dir_ / "err.txt").string());
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_NE(modaltyre_test::slurp(dir_ / "err.txt")
+                .find("writing the result to standard output "
+                      "failed"),
+            std::string::npos);
+}
+
+// Issue 16 item 3: step counts and sizes from options are bounded with a message naming the
+// option and the bound (each ran for minutes or until out of memory).
+TEST_F(CliHostile, TransientOutputStepAndSampleCountAreBounded) {
+  expect_input_error(run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+                                  "transient.output_step_ms=1e-308"}),
+                     {"--set: transient.output_step_ms: ", "out of range [0.001, "});
+  // 1 us over the 121 s hold: 1.21e8 samples.
+  expect_input_error(
+      run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+                   "transient.output_step_ms=0.001"}),
+      {"transient.output_step_ms: ", "1.21e+08 samples; at most 1e+06", "at least 0.121 ms"});
+  expect_input_error(run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+                                  "transient.load_hold.hold_s=1e6"}),
+                     {"transient.output_step_ms: ", "5e+08 samples; at most 1e+06"});
+}
+
+TEST_F(CliHostile, BFactorSamplesAreBounded) {
+  expect_input_error(run_limited({"identify", "b-factors", "--samples", "2147483647"}),
+                     {"--samples: ", "need 3 to 100000 samples, got 2147483647"});
+}
+
+// Issue 16 item 3: one mode at 4000 points (a dense QR of 4000 columns took 45 s) and one at
+// 10^6 points (the reader's row limit) are fitted; orders above the fitted range are named.
+TEST_F(CliHostile, HammerFilesWithManyPointsAreFitted) {
+  for (int N : {4000, 1000000}) {
+    std::string s = modaltyre_test::hammer_lines(1, 1).front() + "\n";
+    s.reserve(static_cast<std::size_t>(N) * 48);
+    for (int i = 0; i < N; ++i) {
+      const double th = 2 * M_PI * i / N;
+      char line[160];
+      std::snprintf(line, sizeof line, "1,120,0.03,%d,%.9f,%.6f,%.6f\n", i + 1, 360.0 * i / N,
+                    0.6 * std::cos(3 * th), 0.3 * std::sin(3 * th));
+      s += line;
+    }
+    const std::string p = write("hammer.csv", s);
+    const CliRun r = run_limited({"fit-modes", p});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("1 modes at " + std::to_string(N) + " equally spaced points"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("orders above 50 are not fitted"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("radial          3  no       1.0000"), std::string::npos) << r.out;
+  }
+}

@@ -1,4 +1,4 @@
-// The nine switchable effects of contact/effects.h as FootprintPredictor applies them to the
+// The nine switchable effects of contact/effects.h as contact::predict applies them to the
 // SF-350 model: each at its neutral setting reproduces the effect-free prediction, and each
 // changes the footprint the way its physics says (docs/effects.md).
 //
@@ -39,17 +39,15 @@ TyreConfig config_with(const std::vector<std::string>& overrides = {}) {
 
 // One model for every test: building it (hammer data, mode identification, kernels) is the
 // expensive part, and a prediction never changes it.
-const FootprintPredictor& predictor() {
-  static const FootprintPredictor p(build_tyre_model(config_with()));
-  return p;
+const TyreModel& model() {
+  static const TyreModel m = build_tyre_model(config_with());
+  return m;
 }
 
-OperatingConditions at(double load_N) {
-  return predictor().model().config.default_conditions(load_N);
-}
+OperatingConditions at(double load_N) { return model().config.default_conditions(load_N); }
 
 Prediction predict(const TyreConfig& params, const OperatingConditions& c) {
-  Prediction p = predictor().predict(params, c);
+  Prediction p = modaltyre::contact::predict(model(), parameters_of(params), c);
   EXPECT_TRUE(p.ok) << p.message;
   return p;
 }
@@ -97,7 +95,7 @@ void expect_symmetric_pressure(const Prediction& p, double tol_N) {
 // Without effects and at neutral settings
 
 TEST(Effects, WithoutEffectsThePredictorEqualsSolveFootprint) {
-  const TyreModel& m = predictor().model();
+  const TyreModel& m = model();
   for (double F : {2131.0, 5478.0, 8321.0}) {
     const Prediction p = baseline(F);
     const FootprintResult r = solve_footprint(m, {F, 0});
@@ -115,7 +113,7 @@ TEST(Effects, WithoutEffectsThePredictorEqualsSolveFootprint) {
 
 TEST(Effects, WithoutEffectsAHorizontalForceGivesSolveFootprintsResult) {
   // The predictor's horizontal part must be the static operator's F_x / F_z x cross-compliance.
-  const TyreModel& m = predictor().model();
+  const TyreModel& m = model();
   OperatingConditions c = at(kLoad_N);
   c.horizontal_force_N = 800;
   const Prediction p = predict(config_with(), c);
@@ -347,7 +345,7 @@ TEST(Effects, DryFrictionShiftsTheElasticLoadByTheFrictionForce) {
 TEST(Effects, DryFrictionAtOrAboveTheLoadIsRefusedWithItsReason) {
   const TyreConfig params = config_with(
       {"effects.dry_friction.enabled=true", "effects.dry_friction.friction_force_N=500"});
-  const Prediction p = predictor().predict(params, at(500));
+  const Prediction p = modaltyre::contact::predict(model(), parameters_of(params), at(500));
   EXPECT_FALSE(p.ok);
   EXPECT_NE(p.message.find("dry-friction"), std::string::npos) << p.message;
 }
@@ -489,7 +487,7 @@ TEST(Effects, RollingResistanceIsPositiveAndGrowsWithSpeedAndDamping) {
     const double x_m = centroid_m(p);
     EXPECT_GT(x_m, 0) << v << " km/h";
     EXPECT_NEAR(p.rolling_resistance_N,
-                kLoad_N * x_m / (predictor().model().config.outer_radius_m - p.sinking_mm * 1e-3),
+                kLoad_N * x_m / (model().config.outer_radius_m - p.sinking_mm * 1e-3),
                 1e-9 * kLoad_N);
     previous = p.rolling_resistance_N;
   }
@@ -547,7 +545,7 @@ TEST(Effects, ContactWidthFollowsTheCrownChordAndIsCappedAtTheTreadWidth) {
 // The kappa -> infinity limit: carcass orders >= 2 removed, orders 0 and 1 as measured, tread
 // and assembly as in static_operator.
 FootprintResult orders_0_and_1_only(double load_N) {
-  const TyreModel& m = predictor().model();
+  const TyreModel& m = model();
   modaltyre::modal::ModalBasis basis = m.basis;
   std::erase_if(basis.terms, [](const auto& t) { return t.order >= 2; });
   const auto kernels =
@@ -564,7 +562,7 @@ FootprintResult orders_0_and_1_only(double load_N) {
 }
 
 TEST(Effects, BeltFlatteningStiffensOrdersAboveOneOnly) {
-  ASSERT_LE(predictor().model().basis.max_order * 2, predictor().model().units_around);
+  ASSERT_LE(model().basis.max_order * 2, model().units_around);
   const Prediction base = baseline();
   double sinking = base.sinking_mm, length = base.length_mm;
   Prediction p;

@@ -10,57 +10,16 @@
 #include <string>
 
 #include "modaltyre/contact/footprint.h"
+#include "patch3d_fixture.h"
 
 namespace {
 
 using namespace modaltyre::contact;
-
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_3d.yaml";
-
-// A coarse mesh keeps the full cell solve (every cell an unknown) quick.
-const std::vector<std::string> kCoarse = {"contact.unit_length_mm=2", "contact.window_mm=300",
-                                          "footprint_3d.lateral_cell_mm=5"};
-// The mesh-convergence requirement: halving a spacing changes a result by < 0.5 %.
-constexpr double kMeshChange = 0.005;
-// Active-set solutions are exact on their contact set: agreement to rounding of the inner
-// solves (CG to 1e-13).
-constexpr double kExact = 1e-9;
-
-std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
-struct Tyre3d {
-  Tyre3dConfig config;
-  TyreModel model;
-  explicit Tyre3d(const std::vector<std::string>& overrides)
-      : config(load_tyre3d_config(kConfig, overrides)), model(build_tyre_model(config.tyre)) {}
-};
-
-double max_abs(const std::vector<double>& v) {
-  double m = 0;
-  for (double x : v) m = std::max(m, std::abs(x));
-  return m;
-}
+using namespace modaltyre::contact::testing;
 
 TEST(Patch3d, LaterallyRigidReductionEqualsTheFullCellSolve) {
   const Tyre3d s(kCoarse);
-  const Patch3d patch(s.model, s.config.patch);
-  for (double F : {2131.0, 8321.0}) {
-    const Patch3dResult red = patch.solve(F);
-    const Patch3dResult full = patch.solve_cells(F);
-    ASSERT_TRUE(red.converged) << red.message;
-    ASSERT_TRUE(full.converged) << full.message;
-    EXPECT_NEAR(red.sinking_m, full.sinking_m, kExact * full.sinking_m);
-    ASSERT_EQ(red.cell_force_N.size(), full.cell_force_N.size());
-    const double fmax = max_abs(full.cell_force_N);
-    for (std::size_t k = 0; k < red.cell_force_N.size(); ++k) {
-      EXPECT_NEAR(red.cell_force_N[k], full.cell_force_N[k], kExact * fmax) << "cell " << k;
-    }
-    EXPECT_NEAR(red.length_m, full.length_m, kExact * full.length_m);
-    EXPECT_NEAR(red.width_m, full.width_m, kExact * full.width_m);
-  }
+  expect_reduction_equals_full_cell_solve(Patch3d(s.model, s.config.patch), {2131, 8321});
 }
 
 TEST(Patch3d, FlatCrownReproducesThe2DPatchTimesWidth) {
@@ -99,39 +58,14 @@ TEST(Patch3d, FlatCrownReproducesThe2DPatchTimesWidth) {
 
 TEST(Patch3d, SymmetricAcrossTheTread) {
   const Tyre3d s(kCoarse);
-  const Patch3d patch(s.model, s.config.patch);
-  const Patch3dResult r = patch.solve(5478);
-  ASSERT_TRUE(r.converged) << r.message;
-  const int ny = r.columns;
-  for (int i = 0; i < r.sections; ++i) {
-    for (int j = 0; j < ny / 2; ++j) {
-      EXPECT_NEAR(r.cell_force(i, j), r.cell_force(i, ny - 1 - j), kExact * 5478);
-    }
-  }
-  for (int j = 0; j < ny; ++j) {
-    const ColumnEdges& a = r.column_edges[j];
-    const ColumnEdges& b = r.column_edges[ny - 1 - j];
-    ASSERT_EQ(a.contact, b.contact);
-    EXPECT_NEAR(a.rear_x_m, b.rear_x_m, 1e-12);
-    EXPECT_NEAR(a.front_x_m, b.front_x_m, 1e-12);
-    EXPECT_NEAR(r.y_m[j], -r.y_m[ny - 1 - j], 1e-15);
-  }
+  expect_symmetric_in_y(Patch3d(s.model, s.config.patch).solve(5478));
 }
 
 TEST(Patch3d, EquilibriumComplementarityNoTensionNoPenetration) {
   const Tyre3d s({});
   const Patch3d patch(s.model, s.config.patch);
   for (const Patch3dResult& r : patch.solve_all({2131, 5478, 8321})) {
-    ASSERT_TRUE(r.converged) << r.message;
-    double sum = 0;
-    for (double f : r.cell_force_N) {
-      EXPECT_GE(f, 0.0);
-      sum += f;
-    }
-    EXPECT_NEAR(sum, r.load_N, kExact * r.load_N);
-    EXPECT_LT(r.equilibrium_residual, kExact);
-    EXPECT_LT(r.complementarity_residual, kExact);
-    EXPECT_LT(r.max_penetration_m, kExact * r.sinking_m);
+    expect_equilibrium_and_complementarity(r);
   }
 }
 
@@ -167,16 +101,7 @@ struct Spacing {
 class Patch3dMesh : public ::testing::TestWithParam<Spacing> {};
 
 TEST_P(Patch3dMesh, HalvingTheSpacingChangesSinkingLengthWidthByLessThanHalfAPercent) {
-  const Tyre3d coarse(GetParam().coarse), fine(GetParam().fine);
-  const Patch3d pc(coarse.model, coarse.config.patch), pf(fine.model, fine.config.patch);
-  const auto rc = pc.solve_all({2131, 8321});
-  const auto rf = pf.solve_all({2131, 8321});
-  for (std::size_t k = 0; k < rc.size(); ++k) {
-    ASSERT_TRUE(rc[k].converged && rf[k].converged);
-    EXPECT_NEAR(rc[k].sinking_m, rf[k].sinking_m, kMeshChange * rf[k].sinking_m);
-    EXPECT_NEAR(rc[k].length_m, rf[k].length_m, kMeshChange * rf[k].length_m);
-    EXPECT_NEAR(rc[k].width_m, rf[k].width_m, kMeshChange * rf[k].width_m);
-  }
+  expect_mesh_converged(GetParam().coarse, GetParam().fine);
 }
 
 // The default mesh of configs/sf350_3d.yaml (0.5 mm x 2.5 mm) against half of each spacing.

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <memory>
 #include <random>
 #include <set>
 
@@ -49,19 +50,20 @@ std::string joined(const std::vector<std::string>& v) {
 }
 
 // Writes the measurement CSV of a planted data set and reads it back like the CLI would.
-contact::MeasurementSet make_data(const Planted& p, const std::string& name) {
+studies::MeasurementSet make_data(const Planted& p, const std::string& name) {
   // One generator per tyre config, built once.
-  static std::map<std::string, std::pair<TyreConfig, contact::FootprintPredictor>> generators;
+  static std::map<std::string, std::pair<TyreConfig, std::unique_ptr<const contact::TyreModel>>>
+      generators;
   auto it = generators.find(joined(p.overrides));
   if (it == generators.end()) {
     std::vector<std::string> o = p.overrides;
     o.push_back("contact.unit_length_mm=2");
     TyreConfig c = contact::load_tyre_config(kConfig, o);
-    contact::FootprintPredictor g(contact::build_tyre_model(c));
+    auto g = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(c));
     it = generators.emplace(joined(p.overrides), std::make_pair(std::move(c), std::move(g))).first;
   }
   const TyreConfig& gen_cfg = it->second.first;
-  const contact::FootprintPredictor& gen = it->second.second;
+  const contact::TyreModel& gen = *it->second.second;
   TyreConfig truth = gen_cfg;
   if (p.truth) p.truth(truth.effects);
   std::mt19937 rng(p.seed);
@@ -73,7 +75,7 @@ contact::MeasurementSet make_data(const Planted& p, const std::string& name) {
   out << "\n";
   out.precision(10);
   for (const auto& c : p.rows) {
-    const contact::Prediction pr = gen.predict(truth, c);
+    const contact::Prediction pr = contact::predict(gen, contact::parameters_of(truth), c);
     EXPECT_TRUE(pr.ok) << pr.message;
     out << c.load_N << "," << c.pressure_kPa << "," << c.hold_s << "," << c.speed_kmh << ","
         << contact::branch_name(c.branch) << "," << contact::surface_name(c.surface);
@@ -81,7 +83,7 @@ contact::MeasurementSet make_data(const Planted& p, const std::string& name) {
     out << "\n";
   }
   out.close();
-  return contact::read_measurements(path.string(), gen_cfg);
+  return studies::read_measurements(path.string(), gen_cfg);
 }
 
 std::vector<OperatingConditions> grid(const std::vector<double>& loads,
@@ -299,7 +301,7 @@ TEST(DiscoverTwoEffects, FindsBothHiddenEffects) {
 // named; the width gap of a fixed-width 2D patch stays), and naming never grows it.
 TEST(DiscoverTable3, MeasuredModeCarcassLeavesNoGapACandidateExplains) {
   const auto cfg = contact::load_tyre_config(kConfig);
-  const auto data = contact::read_measurements(
+  const auto data = studies::read_measurements(
       std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv", cfg);
   const DiscoverReport r = discover(cfg, data, {});
   for (const auto& [obs, before] : r.cv_gap_before)
@@ -312,7 +314,7 @@ TEST(DiscoverTable3, MeasuredModeCarcassLeavesNoGapACandidateExplains) {
 // and the length gap must shrink.
 TEST(DiscoverTable3, ExtendedCarcassLengthGapIsNamedAndShrinks) {
   const auto cfg = contact::load_tyre_config(kConfig, {kExtended});
-  const auto data = contact::read_measurements(
+  const auto data = studies::read_measurements(
       std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv", cfg);
   const DiscoverReport r = discover(cfg, data, {});
   EXPECT_GT(r.gap_before.at("length_mm"), 0.08);

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "fuzz_support.h"
-#include "modaltyre/contact/measurements.h"
+#include "modaltyre/studies/measurements.h"
 #include "modaltyre/contact/tyre_config.h"
 
 namespace {
@@ -30,10 +30,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   const auto& config = defaults();
   const std::string& path = file.write(data, size);
   modaltyre::fuzz::guarded([&] {
-    const auto set = modaltyre::contact::read_measurements(path, config);
+    const auto set = modaltyre::studies::read_measurements(path, config);
     for (const auto& row : set.rows) {
       for (const auto& c : set.conditions) {
-        (void)modaltyre::contact::condition_value(row.conditions, c);
+        (void)modaltyre::studies::condition_value(row.conditions, c);
       }
     }
   });

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "fuzz_support.h"
-#include "modaltyre/contact/sweep.h"
+#include "modaltyre/studies/sweep.h"
 
 namespace {
 
@@ -23,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   const std::string text = modaltyre::fuzz::as_text(data, size);
   const auto overrides = modaltyre::fuzz::overrides_in(text);
   modaltyre::fuzz::guarded([&] {
-    const auto spec = modaltyre::contact::parse_sweep_spec(text, name, overrides);
+    const auto spec = modaltyre::studies::parse_sweep_spec(text, name, overrides);
     std::size_t cases = 1, models = 1;
     for (const auto& axis : spec.grid) {
       cases *= axis.values.size();
@@ -31,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
       if (cases > kMaxPlannedCases) return;
     }
     if (models > kMaxPlannedModels) return;
-    const auto plan = modaltyre::contact::plan_sweep(spec);
+    const auto plan = modaltyre::studies::plan_sweep(spec);
     for (std::size_t i = 0; i < plan.cases.size(); ++i) (void)plan.cells(i);
   });
   return 0;

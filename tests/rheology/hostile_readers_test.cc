@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "../support/hammer_lines.h"
-#include "modaltyre/contact/measurements.h"
-#include "modaltyre/contact/sweep.h"
-#include "modaltyre/contact/validation.h"
+#include "modaltyre/studies/measurements.h"
+#include "modaltyre/studies/sweep.h"
+#include "modaltyre/studies/validation.h"
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
@@ -129,12 +129,12 @@ std::vector<Reader> readers() {
                 "2131,230,load,8,86,ok,converged", "3261,230,load,12,112,ok,converged",
                 "5478,230,unload,20,117,ok,\"converged, 9 iterations\""},
                "load_N",
-               [](const std::string& p) { contact::read_measurements(p, sf350()); }});
+               [](const std::string& p) { studies::read_measurements(p, sf350()); }});
   r.push_back(
       {"footprint (validate)",
        {"load_N,sinking_mm,length_mm", "2131,8,86", "3261,12,112", "5478,20,117", "6502,23,126"},
        "load_N",
-       [](const std::string& p) { contact::read_validation_measurements(p, sf350()); }});
+       [](const std::string& p) { studies::read_validation_measurements(p, sf350()); }});
   return r;
 }
 
@@ -552,14 +552,14 @@ TEST_F(HostileReaders, HammerAcceptsUnsortedPoints) {
 
 // Measured data keep their file order (calibration rows are numbered in it).
 TEST_F(HostileReaders, MeasuredRowsKeepTheirFileOrder) {
-  const auto v = contact::read_validation_measurements(
+  const auto v = studies::read_validation_measurements(
       write("load_N,sinking_mm\n5478,20\n2131,8\n3261,12\n"), sf350());
-  ASSERT_EQ(v.size(), 3u);
-  EXPECT_EQ(v[0].load_N, 5478);
-  EXPECT_EQ(v[1].row, 2);
-  EXPECT_EQ(v[1].load_N, 2131);
-  EXPECT_EQ(v[2].line, 4);
-  const auto m = contact::read_measurements(
+  ASSERT_EQ(v.rows.size(), 3u);
+  EXPECT_EQ(v.rows[0].conditions.load_N, 5478);
+  EXPECT_EQ(v.rows[1].row, 2);
+  EXPECT_EQ(v.rows[1].conditions.load_N, 2131);
+  EXPECT_EQ(v.rows[2].line, 4);
+  const auto m = studies::read_measurements(
       write("load_N,pressure_kPa,sinking_mm\n5478,230,20\n2131,200,8\n", "m.csv"), sf350());
   ASSERT_EQ(m.rows.size(), 2u);
   EXPECT_EQ(m.rows[0].conditions.load_N, 5478);
@@ -570,7 +570,7 @@ TEST_F(HostileReaders, MeasuredRowsKeepTheirFileOrder) {
 // (discover, validate), every row arrives with its numbers and the message in one piece.
 TEST_F(HostileReaders, SweepQuotedMessagesAreReadBack) {
   const std::string msg = "converged, 9 active-set iterations; \"warm\" start";
-  const std::string quoted = contact::csv_field(msg);
+  const std::string quoted = studies::csv_field(msg);
   ASSERT_EQ(quoted.front(), '"');
   const std::string content =
       "tread.modulus_MPa,load_N,branch,sinking_mm,length_mm,status,message\n"
@@ -578,20 +578,20 @@ TEST_F(HostileReaders, SweepQuotedMessagesAreReadBack) {
       quoted +
       "\n"
       "2.33,3261,load,12,112,ok," +
-      contact::csv_field("plain") +
+      studies::csv_field("plain") +
       "\n"
       "\"2.33\",5478,\"unload\",20,117,ok," +
       quoted + "\n";
   const std::string path = write(content);
-  const auto m = contact::read_measurements(path, sf350());
+  const auto m = studies::read_measurements(path, sf350());
   ASSERT_EQ(m.rows.size(), 3u);
   EXPECT_EQ(m.rows[0].observed.at("length_mm"), 86);
   EXPECT_EQ(m.rows[2].conditions.load_N, 5478);
   EXPECT_EQ(m.rows[2].conditions.branch, contact::Branch::unloading);
   EXPECT_EQ(m.rows[2].line, 4);
-  const auto v = contact::read_validation_measurements(path, sf350());
-  ASSERT_EQ(v.size(), 3u);
-  EXPECT_EQ(v[1].sinking_mm, 12);
+  const auto v = studies::read_validation_measurements(path, sf350());
+  ASSERT_EQ(v.rows.size(), 3u);
+  EXPECT_EQ(v.rows[1].value("sinking_mm"), 12);
   // The message cell, as read_csv returns it, is the text the sweep wrote.
   CsvSchema schema;
   schema.required = {"message"};

@@ -4,7 +4,7 @@
 // the CLI runs in a fresh temporary folder per test (tests/app/cli_runner.h).
 //
 // The checks that need the footprint model go through the CLI (`footprint`, `sweep`), which
-// loads OUT with contact::load_tyre_config and predicts with contact::FootprintPredictor: this
+// loads OUT with contact::load_tyre_config and predicts with contact::predict: this
 // test executable links modaltyre::rheology only.
 #include <gtest/gtest.h>
 
@@ -191,7 +191,7 @@ TEST_F(rheology_IdentifyIntoConfig, OutConfigRunsFootprintAndDryFrictionShiftsEl
 
   // Three-element model: at the same applied load F the elastic tyre carries F - F_f on the
   // loading branch and F + F_f on the unloading one, a difference of 2 F_f. The sweep predicts
-  // both branches with FootprintPredictor; they must equal the friction-free tyre at F -+ F_f.
+  // both branches with contact::predict; they must equal the friction-free tyre at F -+ F_f.
   const double ff =
       effect(ConfigTree::load(out()), "dry_friction").number("friction_force_N", 0, 0, 1e9);
   const double F = 4000;

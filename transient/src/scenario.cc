@@ -2,10 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::transient {
+namespace {
+
+/// Output samples of one run (memory and CSV rows): 1e6 is 2000 s at the default 2 ms.
+constexpr double kMaxTransientSamples = 1e6;
+
+}  // namespace
 
 Scenario parse_scenario(const std::string& name) {
   if (name == "load-hold") return Scenario::load_hold;
@@ -143,6 +150,17 @@ ScenarioPlan plan_scenario(const TransientModel& model, Scenario s) {
   if (model.settings.output_step_s > p.duration_s) {
     throw InputError(InputLocation{src, 0, "transient.output_step_ms"},
                      "output step longer than the scenario");
+  }
+  // Every output step is a sample held in memory and a CSV row: bounded, so that a tiny step
+  // or a long run is refused at once instead of filling the memory.
+  const double samples = p.duration_s / model.settings.output_step_s;
+  if (!(samples <= kMaxTransientSamples)) {
+    std::ostringstream msg;
+    msg << "output step " << model.settings.output_step_s * 1e3 << " ms over the scenario's "
+        << p.duration_s << " s gives " << samples << " samples; at most " << kMaxTransientSamples
+        << " are written: use an output step of at least "
+        << p.duration_s / kMaxTransientSamples * 1e3 << " ms or a shorter scenario";
+    throw InputError(InputLocation{src, 0, "transient.output_step_ms"}, msg.str());
   }
   return p;
 }

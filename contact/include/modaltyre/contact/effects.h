@@ -27,6 +27,7 @@
 //                       c_k -> c_k / (1 + pi R kappa c_k)
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -142,5 +143,8 @@ EffectsConfig read_effects(const ConfigSection& effects);
 
 const char* branch_name(Branch b);
 const char* surface_name(Surface s);
+/// The branch or surface that branch_name() / surface_name() call `name`; nullopt for any other.
+std::optional<Branch> branch_named(const std::string& name);
+std::optional<Surface> surface_named(const std::string& name);
 
 }  // namespace modaltyre::contact

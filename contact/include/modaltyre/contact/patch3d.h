@@ -29,6 +29,12 @@
 // 2D active-set solver. The pattern is updated from psi_i(F_i) (a Newton step on J, damped by a
 // backtracking line search on J when a full step does not decrease it) until it is consistent.
 // solve_cells() solves the cell problem directly (every cell an unknown) as the reference.
+//
+// Lateral belt (optional, LateralBelt): the section's belt strip bends across the tread, a beam
+// with compliance G between its cells (docs/footprint.md section 7); the gap gains (G f_i)_j.
+// The reduction stays exact: a section at approach d is then a small contact problem
+// (min 1/2 f^T (G + t_i I) f + z^T f, f >= 0, sum f = F_i), affine in d on a fixed lateral
+// pattern (compliance 1 / 1^T M_AA^-1 1 and offset in place of t_i / n_i and the mean drop).
 #include <string>
 #include <vector>
 
@@ -37,10 +43,37 @@
 
 namespace modaltyre::contact {
 
+/// How the belt strip of a section is held at its lateral ends.
+enum class BeltSupports {
+  shoulders,  ///< simply supported (no deflection, no moment) at +-span/2: the sidewalls
+  free,       ///< free ends at the tread edges, on a foundation; its rigid motion is the carcass's
+};
+
+/// The belt's lateral flexibility (docs/footprint.md section 7): each section's belt strip is an
+/// Euler-Bernoulli beam across the tread, loaded by its cells' forces. Disabled = laterally rigid
+/// (the sections' cells move together).
+struct LateralBelt {
+  bool enabled = false;
+  double bending_stiffness_Nm = 1.0;  ///< D, per unit circumferential length [N m], > 0
+  double tension_N_m = 0;             ///< meridional membrane tension N [N/m], >= 0 (shoulders)
+  double foundation_Pa_m = 0;         ///< Winkler foundation k [N/m^3], >= 0; > 0 when free
+  BeltSupports supports = BeltSupports::shoulders;
+  double support_span_m = 0;  ///< shoulders: distance between the supports, 0 = tread width
+  /// Throws std::invalid_argument naming what is inconsistent.
+  void validate(double tread_width_m) const;
+};
+
+/// The lateral compliance of one section's belt strip [m/N]: G(k, j) is the mean deflection of
+/// column k under a unit force spread over column j, for columns of equal width across the
+/// tread and a section of arc length ds. Symmetric positive semi-definite; columns x columns.
+Eigen::MatrixXd lateral_belt_compliance(const LateralBelt& belt, double tread_width_m, int columns,
+                                        double arc_length_m);
+
 struct Patch3dSettings {
   double tread_width_m = 0.15;     ///< shoulder to shoulder: no cell outside +-width/2
   double lateral_cell_m = 2.5e-3;  ///< target cell width; columns = round(width / cell)
   CrownProfile crown;
+  LateralBelt lateral_belt;          ///< disabled: laterally rigid sections
   int max_pattern_iterations = 200;  ///< Newton steps on the lateral pattern per load
 };
 
@@ -78,11 +111,15 @@ struct Patch3dResult {
   std::vector<double> section_force_N;  ///< F_i
   std::vector<double> section_approach_m;  ///< d_i = delta - sag_i - (C F)_i
   std::vector<double> cell_force_N;        ///< f_ij at [i * columns + j]
+  std::vector<double> belt_deflection_m;   ///< lateral belt deflection v_ij (0: rigid belt)
   std::vector<double> half_width_m;        ///< lateral edge |y| per section (contour per x)
   std::vector<ColumnEdges> column_edges;   ///< longitudinal edges per column (contour per y)
   std::vector<char> section_active;        ///< F_i > 0 (warm start of the next load)
 
   double cell_force(int i, int j) const { return cell_force_N[std::size_t(i) * columns + j]; }
+  double belt_deflection(int i, int j) const {
+    return belt_deflection_m[std::size_t(i) * columns + j];
+  }
   double pressure_Pa(int i, int j) const { return cell_force(i, j) / (dx_m[i] * dy_m); }
   double vertical_stiffness_N_m() const { return load_N / sinking_m; }
 };
@@ -92,6 +129,8 @@ struct Patch3dResult {
 /// Patch3d may serve several threads.
 class Patch3d {
  public:
+  /// Columns allowed with a lateral belt (its compliance is a dense columns^2 matrix).
+  static constexpr int kMaxLateralBeltColumns = 400;
   Patch3d(const TyreModel& model, Patch3dSettings settings);
 
   const TyreModel& model() const { return model_; }
@@ -100,6 +139,8 @@ class Patch3d {
   int columns() const { return static_cast<int>(y_m_.size()); }
   const std::vector<double>& column_y_m() const { return y_m_; }
   const std::vector<double>& column_drop_m() const { return z_m_; }
+  /// The lateral belt compliance of a section (lateral_belt_compliance); empty when rigid.
+  const Eigen::MatrixXd& lateral_compliance() const { return G_; }
   /// Vertical tread compliance of one cell of section i [m/N].
   double cell_tread_compliance(int i) const { return t_[i]; }
 
@@ -112,6 +153,7 @@ class Patch3d {
   std::vector<Patch3dResult> solve_all(const std::vector<double>& loads_N) const;
 
  private:
+  double lateral_half_width(const Patch3dResult& r, int i) const;
   Patch3dResult finish(double load_N, const std::vector<double>& cell_force, double delta,
                        Patch3dResult r) const;
 
@@ -120,8 +162,7 @@ class Patch3d {
   std::vector<double> y_m_, z_m_;  ///< column centres and their crown drops
   std::vector<double> t_;          ///< cell tread compliance per section
   double k_radial_cell_ = 0, k_tangential_cell_ = 0;
-  std::vector<double> z_sorted_, z_prefix_;  ///< drops ascending, prefix sums (size n + 1)
-  int min_pattern_ = 1;                      ///< cells tied at the lowest drop
+  Eigen::MatrixXd G_;  ///< lateral belt compliance of a section (empty: laterally rigid)
 };
 
 /// The map cropped to the sections in contact and `margin` sections either side.

@@ -1,19 +1,48 @@
 #pragma once
-// Footprint predictions for any calibrated scalars, effects (effects.h) and operating conditions
-// on one patch mesh: the evaluator behind `footprint`/`validate`/`sweep` when effects are on and
-// behind `discover`, which calls it thousands of times with changing parameters.
+// Footprint predictions: the one entry point behind `footprint`, `validate`, `sweep`, `discover`
+// and the carcass-level calibration, for any operating conditions and switchable effects
+// (effects.h) on one immutable TyreModel.
 //
-// The modal basis and static kernels are built once (TyreModel). A prediction scales the carcass
-// compliance (modal.compliance_scale relative to the model's, inflation_pressure,
-// load_stiffening), rebuilds the kernels only when an effect changes them (rolling_speed at a
-// speed > 0, belt_flattening), and assembles the tread (tread.modulus_MPa, tread_relaxation,
-// tread_coupling, contact_width) and soil (soil_compliance) parts in O(m^2).
+// predict(model, conditions) predicts with the model's own parameters. With no effect on in the
+// model's config it takes the effect-free path, bit for bit: the model's own operator
+// (solve_footprint, matrix-free), where only the load and the horizontal force act. With an
+// effect on it takes the effects path below with the model's own parameters.
+//
+// predict(model, parameters, conditions) predicts with other parameters than the model's (what
+// a calibration or a fit varies: TyreParameters) and always takes the effects path, one step per
+// effect: the applied load shared with dry friction (dry_friction), the carcass compliance level
+// (modal.compliance_scale relative to the model's, inflation_pressure, load_stiffening), the
+// carcass kernels rebuilt only when an effect changes them (rolling_speed at a speed > 0,
+// belt_flattening), the tread (tread.modulus_MPa, tread_relaxation, tread_coupling) and soil
+// (soil_compliance) assembled in O(m^2), the horizontal coupling, and the patch width
+// iterated with the sinking (contact_width).
+//
+// The model is shared read-only by every call and thread; each call's working data (the
+// assembled operator, the contact set) are its own.
+#include <span>
 #include <string>
 #include <vector>
 
 #include "modaltyre/contact/footprint.h"
 
 namespace modaltyre::contact {
+
+/// What a prediction may vary without rebuilding the model: the carcass level, the tread and the
+/// effects. Everything that defines the modal basis and the mesh (hammer data, extension,
+/// contact.*) is the model's. SI units, as in TyreConfig.
+struct TyreParameters {
+  double compliance_scale = 1.0;  ///< modal.compliance_scale, > 0
+  TreadParams tread;
+  EffectsConfig effects;
+};
+
+/// The parameters a config states.
+TyreParameters parameters_of(const TyreConfig& config);
+
+struct PredictOptions {
+  /// Contact flags of the candidate units to start the active set from (empty: cold start).
+  std::span<const char> warm_active;
+};
 
 struct Prediction {
   bool ok = false;
@@ -23,6 +52,8 @@ struct Prediction {
   double width_mm = 0;              ///< config width, or the crown-profile width (contact_width)
   double rolling_resistance_N = 0;  ///< sum f_z x / (R0 - sinking): 0 for a standing tyre
   double elastic_load_N = 0;        ///< load on the elastic tyre (dry_friction moves it)
+  /// The footprint; `footprint.load` is the applied load (the conditions'), whatever part of it
+  /// dry friction carries.
   FootprintResult footprint;
 
   /// Observable by its measurement-column name (sinking_mm, length_mm, width_mm,
@@ -30,29 +61,26 @@ struct Prediction {
   double observable(const std::string& name) const;
 };
 
-/// A plain solve_footprint() result as a Prediction (no effect on: the config's width, no
-/// rolling resistance), for callers that keep the effect-free path bit for bit.
-Prediction prediction_from(FootprintResult result, const TyreConfig& config);
-
 /// The observable columns a prediction provides, in CSV order.
 const std::vector<std::string>& observable_names();
 
-class FootprintPredictor {
- public:
-  explicit FootprintPredictor(TyreModel model);
+/// Whether operating conditions beyond the load and the horizontal force act on this config's
+/// predictions: they act only through effects.
+bool conditions_act(const TyreConfig& config);
 
-  const TyreModel& model() const { return model_; }
+/// The model's own parameters at `conditions` (see above).
+Prediction predict(const TyreModel& model, const OperatingConditions& conditions,
+                   const PredictOptions& options = {});
 
-  /// `params` supplies modal.compliance_scale, tread and effects; everything that defines the
-  /// modal basis and the mesh (hammer data, extension, contact.*) is the model's.
-  Prediction predict(const TyreConfig& params, const OperatingConditions& conditions,
-                     const std::vector<char>* warm_active = nullptr) const;
+/// Other parameters than the model's at `conditions`: always the effects path.
+Prediction predict(const TyreModel& model, const TyreParameters& parameters,
+                   const OperatingConditions& conditions, const PredictOptions& options = {});
 
- private:
-  TyreModel model_;
-  Eigen::MatrixXd carcass_vertical_;  ///< carcass-only vertical compliance, static kernels
-  std::vector<double> cos_, sin_;     ///< of each candidate unit's angle (assembly hot path)
-};
+/// The model's own parameters at several conditions in order. On the effect-free path each case
+/// starts from the previous converged contact set (as solve_footprints); with effects each
+/// starts cold (as predict).
+std::vector<Prediction> predict_all(const TyreModel& model,
+                                    const std::vector<OperatingConditions>& conditions);
 
 /// Tread radial compliance between units l apart for a Pasternak (shear-coupled) tread layer
 /// discretised with units of length ds: k_r (u_i - a (u_{i-1} - 2 u_i + u_{i+1})) = f_i with

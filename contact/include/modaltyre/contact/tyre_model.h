@@ -14,6 +14,8 @@
 // Tread springs per unit (eq. 6-9, static limit: storage modulus):
 //   k_r = E_tr b ds / h,   k_t = G_tr b ds / h,  G_tr = E_tr / (2 (1 + nu)).
 #include <Eigen/Dense>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "modaltyre/contact/tyre_config.h"
@@ -23,22 +25,57 @@
 
 namespace modaltyre::contact {
 
+/// What the effects' predictions (predictor.h) assemble from besides the kernels: the carcass-only
+/// vertical compliance with the static kernels and the projections of every candidate unit.
+struct CarcassAssembly {
+  Eigen::MatrixXd carcass_vertical;  ///< carcass_vertical_compliance(kernels, theta) [m/N]
+  std::vector<double> cos_theta, sin_theta;
+};
+
+/// Built on first use, once, under a lock: a model that only ever takes the effect-free path
+/// never pays for the m x m matrix. A copy of a model starts without it.
+class LazyCarcassAssembly {
+ public:
+  LazyCarcassAssembly() = default;
+  LazyCarcassAssembly(const LazyCarcassAssembly&) {}
+  LazyCarcassAssembly& operator=(const LazyCarcassAssembly&) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    value_.reset();
+    return *this;
+  }
+  template <class Build>
+  const CarcassAssembly& get(Build build) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (!value_) value_ = std::make_shared<const CarcassAssembly>(build());
+    return *value_;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::shared_ptr<const CarcassAssembly> value_;
+};
+
 struct TyreModel {
   TyreConfig config;
   modal::ModalBasis basis;
-  int units_around = 0;      ///< n, units on the whole circumference
-  double dtheta_rad = 0;     ///< 2 pi / n
-  double unit_length_m = 0;  ///< R0 dtheta
-  int half_window = 0;       ///< candidate units are -half_window .. +half_window
-  std::vector<double> theta; ///< angle of each candidate unit
-  modal::LagKernels kernels; ///< lags 0 .. 2 half_window
-  double k_radial_N_m = 0;   ///< tread radial stiffness per unit
+  int units_around = 0;       ///< n, units on the whole circumference
+  double dtheta_rad = 0;      ///< 2 pi / n
+  double unit_length_m = 0;   ///< R0 dtheta
+  int half_window = 0;        ///< candidate units are -half_window .. +half_window
+  std::vector<double> theta;  ///< angle of each candidate unit
+  modal::LagKernels kernels;  ///< lags 0 .. 2 half_window
+  double k_radial_N_m = 0;    ///< tread radial stiffness per unit
   double k_tangential_N_m = 0;
   /// Vertical compliance of the candidate units under vertical forces [m/N] (symmetric).
   Eigen::MatrixXd vertical_compliance;
-  Eigen::VectorXd sag;       ///< R0 (1 - cos theta): gap to the road at zero sinking [m]
+  Eigen::VectorXd sag;  ///< R0 (1 - cos theta): gap to the road at zero sinking [m]
 
   int candidates() const { return static_cast<int>(theta.size()); }
+  /// The carcass assembly of the effects' predictions (thread-safe, built on first use).
+  const CarcassAssembly& carcass_assembly() const;
+
+ private:
+  LazyCarcassAssembly carcass_assembly_;
 };
 
 /// Vertical compliance of the carcass alone (no tread) between the candidate units at angles

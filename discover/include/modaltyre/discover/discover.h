@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "modaltyre/contact/measurements.h"
 #include "modaltyre/discover/model_fit.h"
+#include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::discover {
 
@@ -103,7 +103,7 @@ struct DiscoverReport {
   long evaluations = 0;  ///< parameter sets evaluated (each on all rows of its fit)
 };
 
-DiscoverReport discover(const contact::TyreConfig& config, const contact::MeasurementSet& data,
+DiscoverReport discover(const contact::TyreConfig& config, const studies::MeasurementSet& data,
                         const DiscoverOptions& options = {});
 
 /// Pearson correlation (0 when either side has no spread).

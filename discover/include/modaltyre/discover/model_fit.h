@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "modaltyre/contact/measurements.h"
 #include "modaltyre/contact/predictor.h"
+#include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::discover {
 
@@ -50,7 +50,8 @@ Variant make_variant(const std::vector<contact::EffectId>& effects);
 /// Evaluates relative residuals of a config on rows of a measurement set.
 class Evaluator {
  public:
-  Evaluator(const contact::FootprintPredictor& predictor, const contact::MeasurementSet& data);
+  /// Predictions on `model` (its mesh and modal basis) with each config's parameters.
+  Evaluator(const contact::TyreModel& model, const studies::MeasurementSet& data);
 
   struct Entry {
     int row = 0;         ///< index into data.rows
@@ -62,12 +63,12 @@ class Evaluator {
   /// (1 = 100 %) to each of its entries and counts in `failures`.
   std::vector<double> residuals(const contact::TyreConfig& config, const std::vector<Entry>& e,
                                 int* failures = nullptr) const;
-  const contact::MeasurementSet& data() const { return data_; }
-  const contact::FootprintPredictor& predictor() const { return predictor_; }
+  const studies::MeasurementSet& data() const { return data_; }
+  const contact::TyreModel& model() const { return model_; }
 
  private:
-  const contact::FootprintPredictor& predictor_;
-  const contact::MeasurementSet& data_;
+  const contact::TyreModel& model_;
+  const studies::MeasurementSet& data_;
 };
 
 struct FitResult {
@@ -117,7 +118,7 @@ CrossValidation cross_validate(const Evaluator& ev, const contact::TyreConfig& b
                                const Variant& v, const FitResult& full);
 
 /// RMS per observable of residuals over entries.
-std::map<std::string, double> rms_by_observable(const contact::MeasurementSet& data,
+std::map<std::string, double> rms_by_observable(const studies::MeasurementSet& data,
                                                 const std::vector<Evaluator::Entry>& entries,
                                                 const std::vector<double>& residuals);
 

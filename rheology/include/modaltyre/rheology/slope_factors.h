@@ -14,9 +14,13 @@ namespace modaltyre::rheology {
 
 enum class SlopeSampling { uniform_deflection, uniform_angle };
 
+/// Bounds `--samples` (2147483647 filled the memory); from 10^3 to 10^5 samples B1 and B2
+/// change in the fourth digit only.
+constexpr int kMaxSlopeSamples = 100000;
+
 struct SlopeFactorOptions {
   double max_relative_deflection = 0.117;  ///< upper end of h_Z/r0, in (0, 1)
-  int samples = 6;                         ///< points including h = 0, >= 3
+  int samples = 6;                         ///< points including h = 0, 3..kMaxSlopeSamples
   SlopeSampling sampling = SlopeSampling::uniform_deflection;
   bool through_origin = true;  ///< fit y = B x (true) or y = B x + c (false)
 };
@@ -32,7 +36,7 @@ struct SlopeFactorResult {
   FitReport report;
 };
 
-/// InputError for samples < 3 or a range outside (0, 1).
+/// InputError for samples outside [3, kMaxSlopeSamples] or a range outside (0, 1).
 SlopeFactorResult compute_slope_factors(const SlopeFactorOptions& options = {});
 
 }  // namespace modaltyre::rheology

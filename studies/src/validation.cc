@@ -1,4 +1,4 @@
-#include "modaltyre/contact/validation.h"
+#include "modaltyre/studies/validation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,79 +6,62 @@
 #include <set>
 #include <sstream>
 
-#include "modaltyre/contact/measurements.h"
 #include "modaltyre/contact/predictor.h"
-#include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
 #include "modaltyre/solvers/least_squares.h"
 
-namespace modaltyre::contact {
+namespace modaltyre::studies {
 namespace {
+
+using namespace contact;
 
 struct Calibratable {
   std::function<double(const TyreConfig&)> value;  ///< current value in config units
+  std::function<void(TyreConfig&, double)> set;    ///< as the config reader sets the key
   double min, max;  ///< physically plausible range searched by the calibration
 };
 
 /// Scalar config keys that may be calibrated.
 const std::map<std::string, Calibratable>& calibratable() {
   static const std::map<std::string, Calibratable> keys = {
-      {"modal.compliance_scale", {[](const TyreConfig& c) { return c.compliance_scale; }, 0.2, 5}},
+      {"modal.compliance_scale",
+       {[](const TyreConfig& c) { return c.compliance_scale; },
+        [](TyreConfig& c, double v) { c.compliance_scale = v; }, 0.2, 5}},
       {"tread.modulus_MPa",
-       {[](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; }, 0.1, 100}},
+       {[](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; },
+        [](TyreConfig& c, double v) { c.tread.modulus_Pa = v * 1e6; }, 0.1, 100}},
       {"tread.thickness_mm",
-       {[](const TyreConfig& c) { return c.tread.thickness_m * 1e3; }, 1, 50}},
+       {[](const TyreConfig& c) { return c.tread.thickness_m * 1e3; },
+        [](TyreConfig& c, double v) { c.tread.thickness_m = v * 1e-3; }, 1, 50}},
       {"tread.contact_width_mm",
-       {[](const TyreConfig& c) { return c.tread.width_m * 1e3; }, 20, 500}},
+       {[](const TyreConfig& c) { return c.tread.width_m * 1e3; },
+        [](TyreConfig& c, double v) { c.tread.width_m = v * 1e-3; }, 20, 500}},
       {"tyre.outer_radius_mm",
-       {[](const TyreConfig& c) { return c.outer_radius_m * 1e3; }, 100, 1500}},
+       {[](const TyreConfig& c) { return c.outer_radius_m * 1e3; },
+        [](TyreConfig& c, double v) {
+          c.outer_radius_m = v * 1e-3;
+          // The config reader's check of the key (read_tyre_config).
+          if (c.mesh.window_m > M_PI * c.outer_radius_m) {
+            throw InputError({c.source, 0, "contact.window_mm"},
+                             "candidate window longer than half the circumference");
+          }
+        },
+        100, 1500}},
       // Starts at 10 rad^2/s^2 when not stated (the fit to resolved orders may give 0).
       {"modal.extension_bending_s2_rad2_s2",
-       {[](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; }, 1e-3, 1e6}},
+       {[](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; },
+        [](TyreConfig& c, double v) { c.extension_s2 = v; }, 1e-3, 1e6}},
   };
   return keys;
 }
 
-std::string assign(const std::string& key, double value) {
-  std::ostringstream s;
-  s.precision(17);
-  s << key << "=" << value;
-  return s.str();
-}
-
-// The conditions a row is predicted at.
-OperatingConditions conditions_of(const MeasuredFootprint& row, const TyreConfig& config) {
-  return row.conditions ? *row.conditions : config.default_conditions(row.load_N);
-}
-
-// Predicted footprints of the rows. No effect on: the model's own operator, the rows in file
-// order each warm-started from the previous (what validate computed before effects existed);
-// with effects: FootprintPredictor::predict() at each row's conditions.
-std::vector<Prediction> predict_rows(const TyreModel& model,
-                                     const std::vector<MeasuredFootprint>& rows) {
-  const TyreConfig& config = model.config;
-  std::vector<Prediction> out;
-  if (!config.effects.any()) {
-    std::vector<LoadCase> cases;
-    for (const auto& r : rows) {
-      const OperatingConditions c = conditions_of(r, config);
-      cases.push_back({c.load_N, c.horizontal_force_N});
-    }
-    for (auto& f : solve_footprints(model, cases)) {
-      out.push_back(prediction_from(std::move(f), config));
-    }
-    return out;
-  }
-  const FootprintPredictor predictor(model);
-  for (const auto& r : rows) {
-    const OperatingConditions c = conditions_of(r, config);
-    Prediction p = predictor.predict(config, c);
-    // The applied load, not the elastic tyre's share of it (dry_friction), is the row's load.
-    p.footprint.load = {c.load_N, c.horizontal_force_N};
-    out.push_back(std::move(p));
-  }
-  return out;
+// Predicted footprints of the rows at their conditions, in file order (on the effect-free path
+// each warm-started from the previous, as validate always did).
+std::vector<Prediction> predict_rows(const TyreModel& model, const std::vector<MeasuredRow>& rows) {
+  std::vector<OperatingConditions> conditions;
+  for (const auto& r : rows) conditions.push_back(r.conditions);
+  return predict_all(model, conditions);
 }
 
 void require_converged(const std::vector<Prediction>& res, const std::string& stage) {
@@ -92,85 +75,19 @@ void require_converged(const std::vector<Prediction>& res, const std::string& st
   }
 }
 
-MeasuredFootprint footprint_of(const MeasuredRow& r) {
-  MeasuredFootprint m;
-  m.row = r.row;
-  m.line = r.line;
-  m.load_N = r.conditions.load_N;
-  m.conditions = r.conditions;
-  auto value = [&](const char* name) -> std::optional<double> {
-    const auto it = r.observed.find(name);
-    return it == r.observed.end() ? std::nullopt : std::optional<double>(it->second);
-  };
-  m.sinking_mm = value("sinking_mm");
-  m.length_mm = value("length_mm");
-  m.width_mm = value("width_mm");
-  return m;
-}
-
 }  // namespace
-
-std::vector<MeasuredFootprint> read_footprint_measurements(const std::string& path) {
-  CsvSchema schema;
-  schema.required = {"load_N"};
-  schema.optional = {"sinking_mm", "length_mm", "width_mm"};
-  const CsvTable t = read_csv(path, schema);
-  if (!t.has("sinking_mm") && !t.has("length_mm")) {
-    throw InputError({path, 1, "sinking_mm"},
-                     "no observable column: give sinking_mm and/or length_mm");
-  }
-  std::vector<MeasuredFootprint> out;
-  for (std::size_t i = 0; i < t.rows(); ++i) {
-    MeasuredFootprint m;
-    m.row = static_cast<int>(i) + 1;
-    m.line = t.line(i);
-    m.load_N = t.number(i, "load_N");
-    if (!(m.load_N > 0)) throw InputError({path, m.line, "load_N"}, "load must be > 0 N");
-    // The tyre config's limit on loads_N: beyond it a unit error the solver would fail on.
-    if (m.load_N > 1e7) throw InputError({path, m.line, "load_N"}, "load must be at most 1e7 N");
-    for (const char* col : {"sinking_mm", "length_mm", "width_mm"}) {
-      if (!t.has(col)) continue;
-      const double v = t.number(i, col);
-      if (!(v > 0)) throw InputError({path, m.line, col}, "must be > 0 mm");
-      if (v > 1e4) throw InputError({path, m.line, col}, "must be at most 1e4 mm (a unit error?)");
-      if (std::string(col) == "sinking_mm") m.sinking_mm = v;
-      if (std::string(col) == "length_mm") m.length_mm = v;
-      if (std::string(col) == "width_mm") m.width_mm = v;
-    }
-    for (const auto& prev : out) {
-      if (prev.load_N == m.load_N) {
-        throw InputError({path, m.line, "load_N"},
-                         "duplicate load (same as line " + std::to_string(prev.line) + ")");
-      }
-    }
-    out.push_back(m);
-  }
-  return out;
-}
 
 const std::vector<std::string>& validation_observables() {
   static const std::vector<std::string> names = {"sinking_mm", "length_mm", "width_mm"};
   return names;
 }
 
-std::optional<double> measured_value(const MeasuredFootprint& m, const std::string& observable) {
-  if (observable == "sinking_mm") return m.sinking_mm;
-  if (observable == "length_mm") return m.length_mm;
-  if (observable == "width_mm") return m.width_mm;
-  return std::nullopt;
+bool rows_at_own_conditions(const MeasurementSet& set, const TyreConfig& config) {
+  return !set.loads_only || conditions_act(config);
 }
 
-std::vector<MeasuredFootprint> read_validation_measurements(const std::string& path,
-                                                            const TyreConfig& config) {
-  // Files of the original shape keep their reader (and its checks, e.g. one row per load);
-  // condition columns, a sweep's extra columns or effects need the conditions of every row.
-  static const std::vector<std::string> plain = {"load_N", "sinking_mm", "length_mm", "width_mm"};
-  bool conditions = config.effects.any();
-  for (const auto& c : read_csv_header(path)) {
-    conditions = conditions || std::find(plain.begin(), plain.end(), c) == plain.end();
-  }
-  if (!conditions) return read_footprint_measurements(path);
-  const MeasurementSet set = read_measurements(path, config);
+MeasurementSet read_validation_measurements(const std::string& path, const TyreConfig& config) {
+  MeasurementSet set = read_measurements(path, config);
   bool compared = false;
   for (const auto& o : set.observables) {
     for (const auto& v : validation_observables()) compared = compared || o == v;
@@ -180,9 +97,17 @@ std::vector<MeasuredFootprint> read_validation_measurements(const std::string& p
         {path, 1, "sinking_mm"},
         "no observable validate compares: give any of sinking_mm, length_mm, width_mm");
   }
-  std::vector<MeasuredFootprint> out;
-  for (const auto& r : set.rows) out.push_back(footprint_of(r));
-  return out;
+  if (rows_at_own_conditions(set, config)) return set;
+  // Rows at the config's conditions differ by their load only: one row per load.
+  for (std::size_t i = 0; i < set.rows.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      if (set.rows[j].conditions.load_N == set.rows[i].conditions.load_N) {
+        throw InputError({path, set.rows[i].line, "load_N"},
+                         "duplicate load (same as line " + std::to_string(set.rows[j].line) + ")");
+      }
+    }
+  }
+  return set;
 }
 
 std::string range_bound_side(double value, double min, double max, bool log_scale) {
@@ -194,10 +119,9 @@ std::string range_bound_side(double value, double min, double max, bool log_scal
   return "";
 }
 
-ValidationReport validate_footprints(const std::string& config_path,
-                                     const std::vector<std::string>& overrides,
-                                     const std::vector<MeasuredFootprint>& measured) {
-  const TyreConfig base = load_tyre_config(config_path, overrides);
+ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSet& set) {
+  const std::vector<MeasuredRow>& measured = set.rows;
+  const std::string& config_path = base.source;
   const auto ident = modal::identify_modes(modal::read_hammer_csv(base.hammer_csv));
   const auto& vs = base.validation;
   ValidationReport rep;
@@ -205,7 +129,7 @@ ValidationReport validate_footprints(const std::string& config_path,
   cal.keys = vs.calibrate;
   cal.rows = vs.calibration_rows;
   cal.observables = vs.observables;
-  std::vector<MeasuredFootprint> cal_rows;
+  std::vector<MeasuredRow> cal_rows;
   for (int r : cal.rows) {
     if (r < 1 || r > static_cast<int>(measured.size())) {
       throw InputError({config_path, 0, "validation.calibration_rows"},
@@ -233,19 +157,21 @@ ValidationReport validate_footprints(const std::string& config_path,
   }
   for (const auto& row : cal_rows) {
     for (const auto& obs : cal.observables) {
-      if (!measured_value(row, obs)) {
+      if (!row.value(obs)) {
         throw InputError({config_path, 0, "validation.calibration_observables"},
                          "calibration row " + std::to_string(row.row) + " has no " + obs);
       }
     }
   }
 
+  // The model at calibrated values: the config with the keys set as its reader sets them (no
+  // YAML is read again), on the modes identified once.
   auto model_for = [&](const Eigen::VectorXd& log_values) {
-    std::vector<std::string> ov = overrides;
+    TyreConfig c = base;
     for (std::size_t k = 0; k < cal.keys.size(); ++k) {
-      ov.push_back(assign(cal.keys[k], std::exp(log_values(static_cast<Eigen::Index>(k)))));
+      calibratable().at(cal.keys[k]).set(c, std::exp(log_values(static_cast<Eigen::Index>(k))));
     }
-    return build_tyre_model(load_tyre_config(config_path, ov), ident);
+    return build_tyre_model(c, ident);
   };
 
   Eigen::VectorXd x(static_cast<Eigen::Index>(cal.keys.size()));
@@ -269,7 +195,7 @@ ValidationReport validate_footprints(const std::string& config_path,
       std::vector<double> r;
       for (std::size_t i = 0; i < cal_rows.size(); ++i) {
         for (const auto& obs : cal.observables) {
-          r.push_back(res[i].observable(obs) / *measured_value(cal_rows[i], obs) - 1.0);
+          r.push_back(res[i].observable(obs) / *cal_rows[i].value(obs) - 1.0);
         }
       }
       return Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())).eval();
@@ -298,7 +224,7 @@ ValidationReport validate_footprints(const std::string& config_path,
   const auto predicted = predict_rows(rep.model, measured);
   require_converged(predicted, "validation");
   for (const auto& p : predicted) rep.footprints.push_back(p.footprint);
-  for (const auto& m : measured) rep.with_conditions = rep.with_conditions || m.conditions;
+  rep.with_conditions = rows_at_own_conditions(set, base);
 
   const std::set<int> cal_set(cal.rows.begin(), cal.rows.end());
   std::map<std::string, double> sq;
@@ -310,7 +236,7 @@ ValidationReport validate_footprints(const std::string& config_path,
     row.length_mm = predicted[i].length_mm;
     row.width_mm = predicted[i].width_mm;
     auto rel_error = [&](const std::string& obs) -> std::optional<double> {
-      const auto m = measured_value(row.measured, obs);
+      const auto m = row.measured.value(obs);
       if (!m) return std::nullopt;
       const double e = predicted[i].observable(obs) / *m - 1;
       if (!row.calibration) {
@@ -328,4 +254,4 @@ ValidationReport validate_footprints(const std::string& config_path,
   return rep;
 }
 
-}  // namespace modaltyre::contact
+}  // namespace modaltyre::studies

@@ -1,4 +1,4 @@
-#include "modaltyre/contact/measurements.h"
+#include "modaltyre/studies/measurements.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,12 +7,23 @@
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 
-namespace modaltyre::contact {
+namespace modaltyre::studies {
+
+using contact::Branch;
+using contact::observable_names;
+using contact::OperatingConditions;
+using contact::Surface;
+using contact::TyreConfig;
 
 const std::vector<std::string>& condition_names() {
   static const std::vector<std::string> names = {
       "load_N", "pressure_kPa", "hold_s", "speed_kmh", "branch", "surface", "horizontal_force_N"};
   return names;
+}
+
+std::optional<double> MeasuredRow::value(const std::string& observable) const {
+  const auto it = observed.find(observable);
+  return it == observed.end() ? std::nullopt : std::optional<double>(it->second);
 }
 
 double condition_value(const OperatingConditions& c, const std::string& name) {
@@ -49,6 +60,11 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   }
   for (const auto& c : condition_names()) {
     if (t.has(c)) set.conditions.push_back(c);
+  }
+  set.loads_only = true;
+  for (const auto& c : t.columns()) {
+    set.loads_only = set.loads_only &&
+                     (c == "load_N" || c == "sinking_mm" || c == "length_mm" || c == "width_mm");
   }
   if (set.observables.empty()) {
     throw InputError({path, 1, "sinking_mm"},
@@ -126,4 +142,4 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   return set;
 }
 
-}  // namespace modaltyre::contact
+}  // namespace modaltyre::studies

@@ -12,7 +12,7 @@
 
 #include "modaltyre/contact/predictor.h"
 
-namespace modaltyre::contact {
+namespace modaltyre::studies {
 
 struct ScaleCalibration {
   bool converged = false;
@@ -24,12 +24,13 @@ struct ScaleCalibration {
 };
 
 /// Finds modal.compliance_scale in [1e-3, 1e3] (the config's range) such that the footprint of
-/// `config` under `at` sinks `target_sinking_mm` to `relative_tolerance`. `predictor` must be
-/// built from `config`'s model (its mesh and modal basis). InputError when the target lies
-/// outside what the range can reach (names the key modal.compliance_scale).
-ScaleCalibration calibrate_compliance_scale(const FootprintPredictor& predictor,
-                                            const TyreConfig& config, const OperatingConditions& at,
+/// `model` with `parameters` (other than the scale) under `at` sinks `target_sinking_mm` to
+/// `relative_tolerance`, bracketing from parameters.compliance_scale. InputError when the target
+/// lies outside what the range can reach (names the key modal.compliance_scale).
+ScaleCalibration calibrate_compliance_scale(const contact::TyreModel& model,
+                                            const contact::TyreParameters& parameters,
+                                            const contact::OperatingConditions& at,
                                             double target_sinking_mm,
                                             double relative_tolerance = 1e-6);
 
-}  // namespace modaltyre::contact
+}  // namespace modaltyre::studies

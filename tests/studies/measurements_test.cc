@@ -1,7 +1,7 @@
 // read_measurements() against the hostile inputs of issue 9: every refusal is an InputError
 // whose message names the file, the line and the column; what is legitimate (a sweep's extra
 // columns, CRLF line endings, repeated measurements) is read, and read completely.
-#include "modaltyre/contact/measurements.h"
+#include "modaltyre/studies/measurements.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -18,6 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace modaltyre::contact;
+using namespace modaltyre::studies;
 using modaltyre::InputError;
 
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";

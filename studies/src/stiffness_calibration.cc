@@ -1,11 +1,13 @@
-#include "modaltyre/contact/stiffness_calibration.h"
+#include "modaltyre/studies/stiffness_calibration.h"
 
 #include <cmath>
 #include <cstdio>
 
 #include "modaltyre/core/errors.h"
 
-namespace modaltyre::contact {
+namespace modaltyre::studies {
+
+using namespace contact;
 namespace {
 
 constexpr double kMinScale = 1e-3, kMaxScale = 1e3;  // tyre_config.cc's range of the key
@@ -18,20 +20,21 @@ std::string mm(double v) {
 
 }  // namespace
 
-ScaleCalibration calibrate_compliance_scale(const FootprintPredictor& predictor,
-                                            const TyreConfig& config, const OperatingConditions& at,
-                                            double target_sinking_mm, double relative_tolerance) {
+ScaleCalibration calibrate_compliance_scale(const TyreModel& model,
+                                            const TyreParameters& parameters,
+                                            const OperatingConditions& at, double target_sinking_mm,
+                                            double relative_tolerance) {
   ScaleCalibration out;
   out.target_mm = target_sinking_mm;
   if (!(target_sinking_mm > 0) || !std::isfinite(target_sinking_mm)) {
     throw InputError({"", 0, "modal.compliance_scale"},
                      "target deflection must be a positive number, got " + mm(target_sinking_mm));
   }
-  TyreConfig trial = config;
+  TyreParameters trial = parameters;
   // f(log scale) = sinking - target; throws nothing, reports a failed solve.
   auto residual = [&](double log_scale, double& sinking_mm) {
     trial.compliance_scale = std::exp(log_scale);
-    const Prediction p = predictor.predict(trial, at);
+    const Prediction p = predict(model, trial, at);
     ++out.evaluations;
     if (!p.ok) {
       out.message = "footprint at compliance_scale " + std::to_string(trial.compliance_scale) +
@@ -45,7 +48,7 @@ ScaleCalibration calibrate_compliance_scale(const FootprintPredictor& predictor,
   // Bracket outwards from the config's own scale in factors of 4: the far ends of the key's
   // range may not even be solvable (a very soft carcass outgrows the candidate window).
   const double step = std::log(4.0);
-  double a = std::log(config.compliance_scale), sa = 0;
+  double a = std::log(parameters.compliance_scale), sa = 0;
   if (!residual(a, sa)) return out;
   double b = a, sb = sa;
   if (sa < target_sinking_mm) {
@@ -109,4 +112,4 @@ ScaleCalibration calibrate_compliance_scale(const FootprintPredictor& predictor,
   return out;
 }
 
-}  // namespace modaltyre::contact
+}  // namespace modaltyre::studies

@@ -1,5 +1,5 @@
 #pragma once
-// Measured footprint data with operating conditions: the input of `discover` (and `validate`).
+// Measured footprint data with operating conditions: the input of `validate` and `discover`.
 //
 // CSV columns (header names, any order):
 //   conditions   load_N (required, > 0), optional pressure_kPa (> 0), hold_s (>= 0),
@@ -12,18 +12,22 @@
 // and ignored, so that a sweep's output can be used as measured data; a row whose status is
 // not "ok" is refused. Any other column is an error (a typo must not silently drop data).
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "modaltyre/contact/tyre_config.h"
 
-namespace modaltyre::contact {
+namespace modaltyre::studies {
 
 struct MeasuredRow {
-  int row = 0;   ///< 1-based data row
-  int line = 0;  ///< line in the file
-  OperatingConditions conditions;
-  std::map<std::string, double> observed;  ///< observable name -> measured value
+  int row = 0;                              ///< 1-based data row
+  int line = 0;                             ///< line in the file
+  contact::OperatingConditions conditions;  ///< the file's, the config's where it has none
+  std::map<std::string, double> observed;   ///< observable name -> measured value
+
+  /// A measured observable by name (nullopt when this row does not measure it).
+  std::optional<double> value(const std::string& observable) const;
 };
 
 struct MeasurementSet {
@@ -32,15 +36,18 @@ struct MeasurementSet {
   std::vector<std::string>
       observables;                      ///< observable columns present, in observable_names() order
   std::vector<std::string> conditions;  ///< condition columns present in the file
+  /// The file has no column but load_N and sinking_mm, length_mm, width_mm (the shape of seed
+  /// 001 Table 3): its rows state no condition besides the load.
+  bool loads_only = false;
 };
 
 /// The condition column names, in the order discover reports them.
 const std::vector<std::string>& condition_names();
 
 /// Value of a condition as a number (branch: 0 load / 1 unload; surface: 0 rigid / 1 soil).
-double condition_value(const OperatingConditions& c, const std::string& name);
+double condition_value(const contact::OperatingConditions& c, const std::string& name);
 
 /// Reads a measurement file; every problem is an InputError naming file, line and column.
-MeasurementSet read_measurements(const std::string& path, const TyreConfig& defaults);
+MeasurementSet read_measurements(const std::string& path, const contact::TyreConfig& defaults);
 
-}  // namespace modaltyre::contact
+}  // namespace modaltyre::studies

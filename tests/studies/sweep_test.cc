@@ -1,7 +1,7 @@
 // The sweep engine: sweep-file parsing and its errors (file, line, key), grid expansion order,
 // model sharing, rows equal to individual footprint solves, thread-count independence of the
 // CSV, failed cases as rows, every shipped sweep file, and the progress bar's frames.
-#include "modaltyre/contact/sweep.h"
+#include "modaltyre/studies/sweep.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -14,13 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "modaltyre/contact/measurements.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/progress.h"
+#include "modaltyre/studies/measurements.h"
 
 namespace {
 
 using namespace modaltyre::contact;
+using namespace modaltyre::studies;
 using modaltyre::InputError;
 using modaltyre::ProgressBar;
 namespace fs = std::filesystem;
@@ -36,7 +37,8 @@ SweepSpec spec_of(const std::string& yaml, const std::vector<std::string>& overr
 
 // Runs `fn`, expecting an InputError at the sweep file's `line` that names `key`.
 template <typename Fn>
-void expect_input_error(Fn fn, int line, const std::string& key, const std::string& file = kSweepName) {
+void expect_input_error(Fn fn, int line, const std::string& key,
+                        const std::string& file = kSweepName) {
   try {
     fn();
     ADD_FAILURE() << "expected an InputError for key " << key;
@@ -48,12 +50,12 @@ void expect_input_error(Fn fn, int line, const std::string& key, const std::stri
 }
 
 TEST(Sweep, GridExpandsInWrittenOrderWithTheLastKeyFastest) {
-  const auto plan = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "grid:\n"
-      "  tread.modulus_MPa: [5, 7]\n"
-      "  load_N: [2000, 4000, 6000]\n"
-      "output: x.csv\n"));
+  const auto plan =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "grid:\n"
+                         "  tread.modulus_MPa: [5, 7]\n"
+                         "  load_N: [2000, 4000, 6000]\n"
+                         "output: x.csv\n"));
   ASSERT_EQ(plan.cases.size(), 6u);
   ASSERT_EQ(plan.models.size(), 2u);  // one model per modulus, shared by its three loads
   EXPECT_EQ(plan.columns, (std::vector<std::string>{"tread.modulus_MPa", "load_N"}));
@@ -68,12 +70,12 @@ TEST(Sweep, GridExpandsInWrittenOrderWithTheLastKeyFastest) {
   EXPECT_EQ(plan.cells(4), (std::vector<std::string>{"7", "4000"}));
 
   // Swapping the keys swaps the order: the modulus now varies fastest.
-  const auto swapped = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "grid:\n"
-      "  load_N: [2000, 4000, 6000]\n"
-      "  tread.modulus_MPa: [5, 7]\n"
-      "output: x.csv\n"));
+  const auto swapped =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "grid:\n"
+                         "  load_N: [2000, 4000, 6000]\n"
+                         "  tread.modulus_MPa: [5, 7]\n"
+                         "output: x.csv\n"));
   ASSERT_EQ(swapped.cases.size(), 6u);
   for (std::size_t i = 0; i < 6; ++i) {
     EXPECT_EQ(swapped.cases[i].model, i % 2);
@@ -82,17 +84,17 @@ TEST(Sweep, GridExpandsInWrittenOrderWithTheLastKeyFastest) {
 }
 
 TEST(Sweep, SetAppliesToEveryCaseAndItsConditionsBecomeColumns) {
-  const auto plan = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "set:\n"
-      "  tread:\n"
-      "    thickness_mm: 10\n"
-      "  load_N: 5000\n"
-      "  horizontal_force_N: 300\n"
-      "grid:\n"
-      "  modal.compliance_scale: [0.8, 1.2]\n"
-      "output: x.csv\n",
-      {"tread.modulus_MPa=7"}));
+  const auto plan =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "set:\n"
+                         "  tread:\n"
+                         "    thickness_mm: 10\n"
+                         "  load_N: 5000\n"
+                         "  horizontal_force_N: 300\n"
+                         "grid:\n"
+                         "  modal.compliance_scale: [0.8, 1.2]\n"
+                         "output: x.csv\n",
+                         {"tread.modulus_MPa=7"}));
   ASSERT_EQ(plan.cases.size(), 2u);
   // Every condition given is a column (so that the CSV states what each row was computed at),
   // set: ones first in the order written, then the grid keys.
@@ -111,13 +113,13 @@ TEST(Sweep, SetAppliesToEveryCaseAndItsConditionsBecomeColumns) {
 }
 
 TEST(Sweep, RowsEqualIndividualFootprintSolves) {
-  const auto plan = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "grid:\n"
-      "  tread.modulus_MPa: [5, 7]\n"
-      "  horizontal_force_N: [0, 600]\n"
-      "  load_N: [2131, 5478, 8321]\n"
-      "output: x.csv\n"));
+  const auto plan =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "grid:\n"
+                         "  tread.modulus_MPa: [5, 7]\n"
+                         "  horizontal_force_N: [0, 600]\n"
+                         "  load_N: [2131, 5478, 8321]\n"
+                         "output: x.csv\n"));
   SweepOptions cold;
   cold.threads = 2;
   cold.warm_start = false;
@@ -129,8 +131,8 @@ TEST(Sweep, RowsEqualIndividualFootprintSolves) {
   ASSERT_EQ(rc.failed, 0u);
   ASSERT_EQ(rw.failed, 0u);
   for (std::size_t mi = 0; mi < 2; ++mi) {
-    const TyreModel model =
-        build_tyre_model(load_tyre_config(kConfig, {mi == 0 ? "tread.modulus_MPa=5" : "tread.modulus_MPa=7"}));
+    const TyreModel model = build_tyre_model(
+        load_tyre_config(kConfig, {mi == 0 ? "tread.modulus_MPa=5" : "tread.modulus_MPa=7"}));
     for (std::size_t i = 6 * mi; i < 6 * mi + 6; ++i) {
       const auto ref = solve_footprint(model, plan.cases[i].load);
       ASSERT_TRUE(ref.converged);
@@ -155,12 +157,12 @@ TEST(Sweep, RowsEqualIndividualFootprintSolves) {
 }
 
 TEST(Sweep, CsvIsByteIdenticalForOneAndTwoThreads) {
-  const auto plan = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "grid:\n"
-      "  tread.modulus_MPa: [4, 6, 9]\n"
-      "  load_N: [1500, 2500, 3500, 4500, 5500, 6500, 7500]\n"
-      "output: x.csv\n"));
+  const auto plan =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "grid:\n"
+                         "  tread.modulus_MPa: [4, 6, 9]\n"
+                         "  load_N: [1500, 2500, 3500, 4500, 5500, 6500, 7500]\n"
+                         "output: x.csv\n"));
   std::atomic<std::size_t> ticks{0};
   SweepOptions one;
   one.threads = 1;
@@ -181,12 +183,12 @@ TEST(Sweep, CsvIsByteIdenticalForOneAndTwoThreads) {
 }
 
 TEST(Sweep, AFailedCaseIsARowWithItsReason) {
-  const auto plan = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "grid:\n"
-      "  solver.max_iterations: [1, 200]\n"
-      "  load_N: [3000, 6000]\n"
-      "output: x.csv\n"));
+  const auto plan =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "grid:\n"
+                         "  solver.max_iterations: [1, 200]\n"
+                         "  load_N: [3000, 6000]\n"
+                         "output: x.csv\n"));
   SweepOptions opt;
   opt.threads = 2;
   opt.warm_start = false;
@@ -207,12 +209,12 @@ TEST(Sweep, AFailedCaseIsARowWithItsReason) {
 // plan order. Shares must partition the plan, be balanced, touch few models, and give the rows
 // of the whole run, warm starts included (the reference case comes from the whole model).
 TEST(SweepShare, SharesPartitionThePlanAndReassembleToTheSingleProcessCsv) {
-  const auto plan = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "grid:\n"
-      "  load_N: [1500, 3000, 4500, 6000, 7500]\n"
-      "  tread.modulus_MPa: [4, 6, 9]\n"
-      "output: x.csv\n"));
+  const auto plan =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "grid:\n"
+                         "  load_N: [1500, 3000, 4500, 6000, 7500]\n"
+                         "  tread.modulus_MPa: [4, 6, 9]\n"
+                         "output: x.csv\n"));
   ASSERT_EQ(plan.models.size(), 3u);
   for (bool warm : {false, true}) {
     SweepOptions whole;
@@ -275,18 +277,18 @@ std::vector<double> column_of(const SweepResult& r, double SweepRow::*column) {
 }
 
 TEST(SweepConditions, ConditionsAreColumnsAndTakeTheBaseConfigsValuesWhenNotGiven) {
-  const auto plan = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "set:\n"
-      "  surface: soil\n"
-      "  speed_kmh: 30\n"
-      "grid:\n"
-      "  branch: [load, unload]\n"
-      "  pressure_kPa: [200, 260]\n"
-      "  load_N: [3000]\n"
-      "output: x.csv\n"));
-  EXPECT_EQ(plan.columns, (std::vector<std::string>{"surface", "speed_kmh", "branch",
-                                                     "pressure_kPa", "load_N"}));
+  const auto plan =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "set:\n"
+                         "  surface: soil\n"
+                         "  speed_kmh: 30\n"
+                         "grid:\n"
+                         "  branch: [load, unload]\n"
+                         "  pressure_kPa: [200, 260]\n"
+                         "  load_N: [3000]\n"
+                         "output: x.csv\n"));
+  EXPECT_EQ(plan.columns,
+            (std::vector<std::string>{"surface", "speed_kmh", "branch", "pressure_kPa", "load_N"}));
   ASSERT_EQ(plan.cases.size(), 4u);
   EXPECT_EQ(plan.models.size(), 1u);  // conditions do not make models
   const OperatingConditions& c = plan.cases[3].conditions;
@@ -307,10 +309,10 @@ TEST(SweepConditions, ConditionsAreColumnsAndTakeTheBaseConfigsValuesWhenNotGive
 TEST(SweepEffects, NoEffectAndDefaultConditionsGiveTheEffectFreeFootprints) {
   // Conditions act only through effects: with none on, a pressure, a hold or a branch changes
   // nothing, and the rows are the effect-free footprints.
-  const auto with_conditions = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "set:\n  hold_s: 120\n  branch: unload\n"
-      "grid:\n  pressure_kPa: [180, 280]\n  load_N: [2131, 8321]\n"));
+  const auto with_conditions =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "set:\n  hold_s: 120\n  branch: unload\n"
+                         "grid:\n  pressure_kPa: [180, 280]\n  load_N: [2131, 8321]\n"));
   const auto plain = plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [2131, 8321]\n"));
   SweepOptions opt;
   opt.threads = 2;
@@ -325,10 +327,10 @@ TEST(SweepEffects, NoEffectAndDefaultConditionsGiveTheEffectFreeFootprints) {
 }
 
 TEST(SweepEffects, InflationPressureStiffensTheCarcassAndIsNeutralAtTheModalTestPressure) {
-  const auto on = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "set:\n  effects.inflation_pressure.enabled: true\n"
-      "grid:\n  pressure_kPa: [180, 230, 280]\n  load_N: [4000]\n"));
+  const auto on =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "set:\n  effects.inflation_pressure.enabled: true\n"
+                         "grid:\n  pressure_kPa: [180, 230, 280]\n  load_N: [4000]\n"));
   const auto off = plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [4000]\n"));
   SweepOptions opt;
   opt.threads = 2;
@@ -345,10 +347,10 @@ TEST(SweepEffects, InflationPressureStiffensTheCarcassAndIsNeutralAtTheModalTest
 TEST(SweepEffects, TreadRelaxationCreepsMonotonicallyToTheRelaxedTread) {
   // Kelvin-Voigt creep of the tread under a held load: sinking grows with the hold time,
   // ever more slowly, towards the tread of compliance x (1 + creep_ratio) (defaults 0.5, 30 s).
-  const auto plan = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "set:\n  effects.tread_relaxation.enabled: true\n  load_N: 4000\n"
-      "grid:\n  hold_s: [0, 15, 30, 45, 60, 120, 10000]\n"));
+  const auto plan =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "set:\n  effects.tread_relaxation.enabled: true\n  load_N: 4000\n"
+                         "grid:\n  hold_s: [0, 15, 30, 45, 60, 120, 10000]\n"));
   SweepOptions opt;
   opt.threads = 2;
   const auto s = column_of(run_sweep(plan, opt), &SweepRow::sinking_mm);
@@ -363,10 +365,10 @@ TEST(SweepEffects, TreadRelaxationCreepsMonotonicallyToTheRelaxedTread) {
   EXPECT_NEAR(s[0], off.rows.at(0).sinking_mm, 1e-9 * s[0]);
   // Fully relaxed (exp(-10000 / 30) = 0): a tread 1.5 times softer, tread.modulus_MPa / 1.5.
   const double modulus_MPa = load_tyre_config(kConfig).tread.modulus_Pa * 1e-6;
-  const auto relaxed = run_sweep(
-      plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [4000]\n",
-                         {"tread.modulus_MPa=" + full_precision(modulus_MPa / 1.5)})),
-      opt);
+  const auto relaxed =
+      run_sweep(plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [4000]\n",
+                                   {"tread.modulus_MPa=" + full_precision(modulus_MPa / 1.5)})),
+                opt);
   EXPECT_NEAR(s.back(), relaxed.rows.at(0).sinking_mm, 1e-6 * s.back());
 }
 
@@ -397,21 +399,19 @@ TEST(SweepEffects, CsvReadsBackAsMeasuredDataThatThePredictorReproduces) {
   // The discrepancy workflow's data path: a sweep with an effect on writes a CSV that
   // read_measurements() reads unchanged, with every row's conditions, and predicting those rows
   // with the same effect reproduces the written values (to their 10 digits).
-  const auto plan = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
-      "set:\n  effects.inflation_pressure.enabled: true\n"
-      "  effects.tread_relaxation.enabled: true\n  hold_s: 45\n"
-      "grid:\n  tread.modulus_MPa: [2.329, 3]\n  surface: [rigid, soil]\n"
-      "  pressure_kPa: [200, 260]\n  load_N: [3000, 6000]\n"));
+  const auto plan =
+      plan_sweep(spec_of("base: ../sf350.yaml\n"
+                         "set:\n  effects.inflation_pressure.enabled: true\n"
+                         "  effects.tread_relaxation.enabled: true\n  hold_s: 45\n"
+                         "grid:\n  tread.modulus_MPa: [2.329, 3]\n  surface: [rigid, soil]\n"
+                         "  pressure_kPa: [200, 260]\n  load_N: [3000, 6000]\n"));
   SweepOptions opt;
   opt.threads = 2;
   const auto res = run_sweep(plan, opt);
   ASSERT_EQ(res.failed, 0u);
   const fs::path csv =
       fs::temp_directory_path() / ("sweep_roundtrip_" + std::to_string(::getpid()) + ".csv");
-  {
-    std::ofstream(csv, std::ios::binary) << sweep_csv(plan, res);
-  }
+  { std::ofstream(csv, std::ios::binary) << sweep_csv(plan, res); }
   const TyreConfig base = load_tyre_config(kConfig);
   const MeasurementSet set = read_measurements(csv.string(), base);
   fs::remove(csv);
@@ -439,9 +439,9 @@ TEST(SweepEffects, CsvReadsBackAsMeasuredDataThatThePredictorReproduces) {
   EXPECT_GT(res.rows[0].sinking_mm, res.rows[2].sinking_mm);  // 200 kPa sinks more than 260
   EXPECT_EQ(res.rows[0].sinking_mm, res.rows[4].sinking_mm);  // soil_compliance is off
   // Predicting a read row at its conditions with the sweep's model gives the written values.
-  const FootprintPredictor predictor(build_tyre_model(plan.models[1]));
+  const TyreModel model = build_tyre_model(plan.models[1]);
   for (std::size_t i = 8; i < 16; i += 3) {
-    const Prediction p = predictor.predict(plan.models[1], set.rows[i].conditions);
+    const Prediction p = predict(model, parameters_of(plan.models[1]), set.rows[i].conditions);
     ASSERT_TRUE(p.ok) << p.message;
     EXPECT_NEAR(p.sinking_mm, set.rows[i].observed.at("sinking_mm"), 1e-9 * p.sinking_mm);
     EXPECT_NEAR(p.length_mm, set.rows[i].observed.at("length_mm"), 1e-9 * p.length_mm);
@@ -455,47 +455,73 @@ TEST(Sweep, BadSweepFilesNameFileLineAndKey) {
   expect_input_error([] { spec_of("grid:\n  load_N: [1000]\noutput: x.csv\n"); }, 1, "base");
   expect_input_error([] { spec_of("base: nowhere.yaml\ngrid:\n  load_N: [1000]\n"); }, 1, "base");
   // Empty list, and a scalar where a list belongs.
-  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa: []\n"); },
-                     4, "tread.modulus_MPa");
+  expect_input_error(
+      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa: []\n"); }, 4,
+      "tread.modulus_MPa");
   expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: 1000\n"); }, 3, "load_N");
   // A non-positive load, on the line of the item.
-  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N:\n    - 1000\n    - -5\n"); }, 5,
-                     "load_N");
+  expect_input_error(
+      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N:\n    - 1000\n    - -5\n"); }, 5,
+      "load_N");
   // A key that is set and swept.
   expect_input_error(
-      [] { spec_of("base: ../sf350.yaml\nset:\n  tread.modulus_MPa: 5\ngrid:\n  tread.modulus_MPa: [6]\n  load_N: [1000]\n"); },
+      [] {
+        spec_of(
+            "base: ../sf350.yaml\nset:\n  tread.modulus_MPa: 5\ngrid:\n  tread.modulus_MPa: [6]\n  "
+            "load_N: [1000]\n");
+      },
       3, "tread.modulus_MPa");
   // No load anywhere.
-  expect_input_error([] { plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  tread.modulus_MPa: [6]\n")); }, 3,
-                     "load_N");
+  expect_input_error(
+      [] { plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  tread.modulus_MPa: [6]\n")); }, 3,
+      "load_N");
   // A grid key that is not a config key, and a value the config rejects: found while planning.
   expect_input_error(
-      [] { plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_mpa: [6, 7]\n")); },
+      [] {
+        plan_sweep(
+            spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_mpa: [6, 7]\n"));
+      },
       4, "tread.modulus_mpa");
   expect_input_error(
       [] {
-        plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa:\n    - 6\n    - -1\n"));
+        plan_sweep(
+            spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa:\n    - 6\n "
+                    "   - -1\n"));
       },
       6, "tread.modulus_MPa");
-  expect_input_error([] { plan_sweep(spec_of("base: ../sf350.yaml\nset:\n  solver.max_iter: 5\ngrid:\n  load_N: [1]\n")); },
-                     3, "solver.max_iter");
+  expect_input_error(
+      [] {
+        plan_sweep(
+            spec_of("base: ../sf350.yaml\nset:\n  solver.max_iter: 5\ngrid:\n  load_N: [1]\n"));
+      },
+      3, "solver.max_iter");
   // Condition values outside their ranges or lists, on the line of the item.
-  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  branch: [load, up]\n"); }, 4,
-                     "grid.branch");
-  expect_input_error([] { spec_of("base: ../sf350.yaml\nset:\n  surface: sand\ngrid:\n  load_N: [1]\n"); }, 3,
-                     "set.surface");
-  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  pressure_kPa: [2001]\n"); }, 4,
-                     "grid.pressure_kPa");
-  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  speed_kmh:\n    - 10\n    - -1\n"); },
-                     6, "grid.speed_kmh");
-  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  hold_s: [fast]\n"); }, 4,
-                     "grid.hold_s");
-  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n", {"branch=down"}); }, 0,
-                     "branch", "--set");
+  expect_input_error(
+      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  branch: [load, up]\n"); }, 4,
+      "grid.branch");
+  expect_input_error(
+      [] { spec_of("base: ../sf350.yaml\nset:\n  surface: sand\ngrid:\n  load_N: [1]\n"); }, 3,
+      "set.surface");
+  expect_input_error(
+      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  pressure_kPa: [2001]\n"); }, 4,
+      "grid.pressure_kPa");
+  expect_input_error(
+      [] {
+        spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  speed_kmh:\n    - 10\n    - -1\n");
+      },
+      6, "grid.speed_kmh");
+  expect_input_error(
+      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  hold_s: [fast]\n"); }, 4,
+      "grid.hold_s");
+  expect_input_error(
+      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n", {"branch=down"}); }, 0,
+      "branch", "--set");
   // Command-line overrides are named as such.
   expect_input_error(
-      [] { plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n", {"tread.bogus=1"})); }, 0,
-      "tread.bogus", "--set");
+      [] {
+        plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n", {"tread.bogus=1"}));
+      },
+      0, "tread.bogus", "--set");
 }
 
 TEST(Sweep, EveryShippedSweepFileParsesAndPlans) {

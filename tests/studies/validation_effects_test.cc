@@ -11,13 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "modaltyre/contact/sweep.h"
-#include "modaltyre/contact/validation.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/studies/sweep.h"
+#include "modaltyre/studies/validation.h"
 
 namespace {
 
 using namespace modaltyre::contact;
+using namespace modaltyre::studies;
 using modaltyre::InputError;
 namespace fs = std::filesystem;
 
@@ -61,20 +62,20 @@ class ValidationEffects : public ::testing::Test {
 TEST_F(ValidationEffects, EffectFreeFilesKeepTheirReaderAndResults) {
   const TyreConfig config = load_tyre_config(kConfig);
   const auto rows = read_validation_measurements(kTable3, config);
-  const auto plain = read_footprint_measurements(kTable3);
-  ASSERT_EQ(rows.size(), plain.size());
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    EXPECT_FALSE(rows[i].conditions.has_value());
-    EXPECT_EQ(rows[i].load_N, plain[i].load_N);
-    EXPECT_EQ(rows[i].sinking_mm, plain[i].sinking_mm);
+  const auto plain = read_measurements(kTable3, config);
+  ASSERT_EQ(rows.rows.size(), plain.rows.size());
+  for (std::size_t i = 0; i < rows.rows.size(); ++i) {
+    EXPECT_FALSE(rows_at_own_conditions(rows, config));
+    EXPECT_EQ(rows.rows[i].conditions.load_N, plain.rows[i].conditions.load_N);
+    EXPECT_EQ(rows.rows[i].value("sinking_mm"), plain.rows[i].value("sinking_mm"));
   }
-  const auto rep = validate_footprints(kConfig, kNoCalibration, rows);
+  const auto rep = validate_footprints(load_tyre_config(kConfig, kNoCalibration), rows);
   EXPECT_FALSE(rep.with_conditions);
   // The measured width is compared with the config's (the 2D model takes it as an input).
   for (const auto& r : rep.rows) {
     EXPECT_DOUBLE_EQ(r.width_mm, 130);
     ASSERT_TRUE(r.width_rel_error.has_value());
-    EXPECT_DOUBLE_EQ(*r.width_rel_error, 130 / *r.measured.width_mm - 1);
+    EXPECT_DOUBLE_EQ(*r.width_rel_error, 130 / *r.measured.value("width_mm") - 1);
   }
   EXPECT_EQ(rep.predicted_rows.at("width_mm"), 6);
 }
@@ -87,9 +88,9 @@ TEST_F(ValidationEffects, SweepOutputValidatesAtItsOwnConditions) {
   // The model with the same effect reproduces every row (to the CSV's 10 digits).
   const auto on = with(kNoCalibration, {"effects.tread_relaxation.enabled=true"});
   const auto rows = read_validation_measurements(csv, load_tyre_config(kConfig, on));
-  ASSERT_EQ(rows.size(), 6u);
-  EXPECT_EQ(rows[5].conditions->hold_s, 600);
-  const auto rep = validate_footprints(kConfig, on, rows);
+  ASSERT_EQ(rows.rows.size(), 6u);
+  EXPECT_EQ(rows.rows[5].conditions.hold_s, 600);
+  const auto rep = validate_footprints(load_tyre_config(kConfig, on), rows);
   EXPECT_TRUE(rep.with_conditions);
   for (const auto& r : rep.rows) {
     EXPECT_LT(std::abs(*r.sinking_rel_error), 1e-8) << "row " << r.measured.row;
@@ -100,8 +101,8 @@ TEST_F(ValidationEffects, SweepOutputValidatesAtItsOwnConditions) {
   // at hold 0 and grows with the hold time (the discrepancy discover looks for).
   const TyreConfig off_config = load_tyre_config(kConfig, kNoCalibration);
   const auto off_rows = read_validation_measurements(csv, off_config);
-  ASSERT_TRUE(off_rows[0].conditions.has_value());  // condition columns in the file
-  const auto off = validate_footprints(kConfig, kNoCalibration, off_rows);
+  ASSERT_TRUE(rows_at_own_conditions(off_rows, off_config));  // condition columns in the file
+  const auto off = validate_footprints(load_tyre_config(kConfig, kNoCalibration), off_rows);
   for (std::size_t load = 0; load < 2; ++load) {
     const double e0 = *off.rows[load].sinking_rel_error;
     const double e60 = *off.rows[2 + load].sinking_rel_error;
@@ -115,10 +116,11 @@ TEST_F(ValidationEffects, SweepOutputValidatesAtItsOwnConditions) {
 TEST_F(ValidationEffects, ContactWidthPredictsAWidthGrowingWithLoad) {
   const auto on = with(kNoCalibration, {"effects.contact_width.enabled=true"});
   // With an effect on, even a file without condition columns is read with the conditions.
-  const auto rows = read_validation_measurements(kTable3, load_tyre_config(kConfig, on));
-  ASSERT_TRUE(rows[0].conditions.has_value());
-  EXPECT_EQ(rows[0].conditions->pressure_kPa, 230);
-  const auto rep = validate_footprints(kConfig, on, rows);
+  const TyreConfig config_on = load_tyre_config(kConfig, on);
+  const auto rows = read_validation_measurements(kTable3, config_on);
+  ASSERT_TRUE(rows_at_own_conditions(rows, config_on));
+  EXPECT_EQ(rows.rows[0].conditions.pressure_kPa, 230);
+  const auto rep = validate_footprints(load_tyre_config(kConfig, on), rows);
   // The crown is pressed in deeper under more load, up to the tread width (max_width_mm 160).
   for (std::size_t i = 1; i < rep.rows.size(); ++i) {
     EXPECT_GE(rep.rows[i].width_mm, rep.rows[i - 1].width_mm);
@@ -138,7 +140,7 @@ TEST_F(ValidationEffects, CalibrationRunsThroughThePredictor) {
                                        "validation.calibrate=[tread.modulus_MPa]",
                                        "validation.calibration_rows=[1, 4]"};
   const auto rows = read_validation_measurements(csv, load_tyre_config(kConfig, ov));
-  const auto rep = validate_footprints(kConfig, ov, rows);
+  const auto rep = validate_footprints(load_tyre_config(kConfig, ov), rows);
   ASSERT_EQ(rep.calibration.values.size(), 1u);
   EXPECT_NEAR(rep.calibration.values[0], 3.0, 1e-3 * 3.0);
   EXPECT_LT(rep.rms_rel_error.at("sinking_mm"), 1e-4);
@@ -169,15 +171,16 @@ namespace {
 // issue's target figures; that rule against per-order scaling excludes this config from
 // counting for it, see the config's header).
 TEST(ValidationTable3, RigidBeltConfigMeetsTheFootprintTargetsOnThePredictedRows) {
-  const auto rows = read_footprint_measurements(kTable3);
-  const auto rep = validate_footprints(kSource + "/configs/sf350_rigid_belt.yaml", {}, rows);
+  const auto rows = read_validation_measurements(kTable3, load_tyre_config(kConfig));
+  const auto rep =
+      validate_footprints(load_tyre_config(kSource + "/configs/sf350_rigid_belt.yaml"), rows);
   ASSERT_TRUE(rep.calibration.converged);
   EXPECT_EQ(rep.predicted_rows.at("sinking_mm"), 4);
   EXPECT_LE(rep.rms_rel_error.at("sinking_mm"), 0.05);
   EXPECT_LE(rep.rms_rel_error.at("length_mm"), 0.10);
   // And it beats the default carcass, whose belt flattens as the measured orders 2-5 say, on
   // both observables.
-  const auto plain = validate_footprints(kConfig, {}, rows);
+  const auto plain = validate_footprints(load_tyre_config(kConfig, {}), rows);
   EXPECT_LT(rep.rms_rel_error.at("sinking_mm"), plain.rms_rel_error.at("sinking_mm"));
   EXPECT_LT(rep.rms_rel_error.at("length_mm"), plain.rms_rel_error.at("length_mm"));
 }

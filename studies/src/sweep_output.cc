@@ -1,0 +1,87 @@
+#include "modaltyre/studies/sweep_output.h"
+
+#include <cstdio>
+
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::studies {
+
+using namespace contact;
+
+const std::vector<std::string>& sweep_observable_columns() {
+  // The observables of predictor.h first (the columns read_measurements() reads), then the
+  // solver's by-products (which it ignores).
+  static const std::vector<std::string> cols = {"sinking_mm",
+                                                "length_mm",
+                                                "width_mm",
+                                                "rolling_resistance_N",
+                                                "vertical_stiffness_N_mm",
+                                                "peak_pressure_kPa",
+                                                "iterations",
+                                                "status",
+                                                "message"};
+  return cols;
+}
+
+std::string sweep_number(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.10g", v);
+  return b;
+}
+
+std::string csv_field(const std::string& text) {
+  std::string t = text;
+  for (char& c : t) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  if (t.find_first_of(",\"") == std::string::npos) return t;
+  std::string q = "\"";
+  for (char c : t) {
+    if (c == '"') q.push_back('"');
+    q.push_back(c);
+  }
+  q.push_back('"');
+  return q;
+}
+
+std::string sweep_csv_header(const SweepPlan& plan) {
+  std::string out;
+  bool first = true;
+  for (const auto& c : plan.columns) {
+    out += (first ? "" : ",") + csv_field(c);
+    first = false;
+  }
+  for (const auto& c : sweep_observable_columns()) out += "," + c;
+  out += "\n";
+  return out;
+}
+
+std::string sweep_csv_row(const SweepPlan& plan, const SweepRow& r, std::size_t i) {
+  std::string out;
+  bool first = true;
+  for (const auto& cell : plan.cells(i)) {
+    if (!first) out += ",";
+    out += cell;
+    first = false;
+  }
+  if (r.ok) {
+    for (double v : {r.sinking_mm, r.length_mm, r.width_mm, r.rolling_resistance_N,
+                     r.vertical_stiffness_N_mm, r.peak_pressure_kPa}) {
+      out += "," + sweep_number(v);
+    }
+    out += "," + std::to_string(r.iterations) + ",ok," + csv_field(r.message) + "\n";
+  } else {
+    out += ",,,,,,,,failed," + csv_field(r.message) + "\n";
+  }
+  return out;
+}
+
+std::string sweep_csv(const SweepPlan& plan, const SweepResult& result) {
+  MODALTYRE_CHECK(result.rows.size() == plan.cases.size(), "sweep rows and cases disagree");
+  std::string out = sweep_csv_header(plan);
+  out.reserve(plan.cases.size() * 96);
+  for (std::size_t i = 0; i < plan.cases.size(); ++i) out += sweep_csv_row(plan, result.rows[i], i);
+  return out;
+}
+
+}  // namespace modaltyre::studies
