@@ -1,5 +1,7 @@
 #include "modaltyre/solvers/arrow_lu.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -52,7 +54,7 @@ bool ArrowLu::factor(const CscMatrix& J, double gamma, int64_t nx) {
     if (col_used[k]) col_pos[k] = static_cast<int64_t>(cols_.size()), cols_.push_back(k);
   }
   const int64_t range = coupled_range();
-  xe_.setZero(static_cast<Eigen::Index>(rows_.size()), range);
+  xe_.setZero(range, static_cast<Eigen::Index>(rows_.size()));  // stored transposed
   ex_.setZero(range, static_cast<Eigen::Index>(cols_.size()));
   if (range > 0) {
     for (int64_t c = 0; c < n_; ++c) {
@@ -62,7 +64,7 @@ bool ArrowLu::factor(const CscMatrix& J, double gamma, int64_t nx) {
         const double v = -gamma * J.value[p];
         if (v == 0) continue;  // explicit zeros may lie outside the coupled range
         if (r < nx && row_pos[r] >= 0)
-          xe_(row_pos[r], c - nx - lo_) = v;
+          xe_(c - nx - lo_, row_pos[r]) = v;
         else if (c < nx && col_pos[c] >= 0)
           ex_(r - nx - lo_, col_pos[c]) = v;
       }
@@ -76,15 +78,23 @@ bool ArrowLu::factor(const CscMatrix& J, double gamma, int64_t nx) {
       if (i + 2 < range) y.row(i) -= s2_(e) * y.row(i + 2);
       y.row(i) /= d_(e);
     }
-    // S[rows, cols] -= M_XE Y as rank-one updates (no blocked GEMM: it would start OpenMP
-    // threads for a product this small, the library being built with OpenMP for sweeps).
-    Eigen::MatrixXd upd = Eigen::MatrixXd::Zero(xe_.rows(), y.cols());
-    for (int64_t i = 0; i < range; ++i) upd.noalias() += xe_.col(i) * y.row(i);
+    // S[rows, cols] -= M_XE Y, coefficient-based (Eigen's blocked GEMM would start OpenMP
+    // threads for a product this small).
+    // Both factors by columns: each entry is a contiguous dot product.
+    const Eigen::MatrixXd upd = xe_.transpose().lazyProduct(y);
     for (std::size_t a = 0; a < rows_.size(); ++a)
       for (std::size_t b = 0; b < cols_.size(); ++b) mxx(rows_[a], cols_[b]) -= upd(a, b);
   }
   if (!d_.allFinite() || (d_.array() == 0).any() || !mxx.allFinite()) return false;
-  lu_.compute(mxx);
+  {
+    // Eigen's blocked LU multiplies its panels by GEMM, which for a 90 x 90 matrix starts OpenMP
+    // threads (the library is built with OpenMP for sweeps): their start and spinning cost
+    // more than the factorisation. The thread count is a per-thread setting of OpenMP.
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    lu_.compute(mxx);
+    omp_set_num_threads(threads);
+  }
   const Eigen::VectorXd piv = lu_.matrixLU().diagonal();
   if (!piv.allFinite() || (piv.array() == 0).any()) return false;
   tmp_x_.resize(nx);
@@ -112,7 +122,7 @@ void ArrowLu::solve(double* x) const {
     Eigen::Map<Eigen::VectorXd> be(xe, ne_);
     tmp_e_ = be;  // keep b_E
     solve_ee(xe);
-    tmp_r_.noalias() = xe_ * be.segment(lo_, range);
+    tmp_r_.noalias() = xe_.transpose() * be.segment(lo_, range);
     for (std::size_t a = 0; a < rows_.size(); ++a) xx(rows_[a]) -= tmp_r_(a);
     tmp_x_ = lu_.solve(xx);
     xx = tmp_x_;

@@ -39,7 +39,7 @@ class ArrowLu {
   int64_t lo_ = 0, hi_ = -1;          ///< coupled range of E indices
   std::vector<int64_t> rows_, cols_;  ///< X rows of M_XE, X columns of M_EX
   Eigen::VectorXd d_, s1_, s2_;       ///< M_EE: diagonal, first and second super-diagonal
-  Eigen::MatrixXd xe_, ex_;           ///< |rows| x range, range x |cols|
+  Eigen::MatrixXd xe_, ex_;           ///< M_XE transposed (range x |rows|), M_EX (range x |cols|)
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   mutable Eigen::VectorXd tmp_x_, tmp_e_, tmp_r_, tmp_c_;  // solve()'s work vectors
 };
