@@ -33,7 +33,9 @@ struct TransientResult {
   double simulated_s = 0;  ///< time reached
   double wall_s = 0;
   solvers::OdeStats stats;
-  int contact_events = 0;  ///< root returns (units entering or leaving)
+  /// Units that entered or left the road between accepted steps (with locate_switches: root
+  /// returns).
+  int contact_events = 0;
   std::vector<TransientSample> samples;
   /// Mean of -longitudinal force over the last 10 % of the run (rolling resistance) [N].
   double rolling_resistance_N = 0;
