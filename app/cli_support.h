@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/core/number_format.h"
+
 namespace modaltyre::app {
 
 /// Ends the program with `code` and no message: the message was printed by another process
@@ -24,6 +26,6 @@ void check_finite(const nlohmann::json& j, const std::string& where = "output");
 std::string fixed(double v, int decimals);
 
 /// Rounds to a number of significant digits for JSON (keeps output stable and readable).
-double round_sig(double v, int digits = 10);
+using modaltyre::round_sig;
 
 }  // namespace modaltyre::app

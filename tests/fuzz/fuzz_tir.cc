@@ -11,8 +11,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
     modaltyre::tir::TirLimits limits;
     limits.max_entries = 4096;  // a fuzz input is small; keep one run fast
     limits.max_table_rows = 4096;
-    const auto file = modaltyre::tir::parse_tir(modaltyre::fuzz::as_text(data, size), "fuzz.tir",
-                                                limits);
+    const auto file =
+        modaltyre::tir::parse_tir(modaltyre::fuzz::as_text(data, size), "fuzz.tir", limits);
     const auto tyre = modaltyre::tir::interpret_tir(file);
     double sum = tyre.vertical_stiffness_N_m();
     for (double rho : {0.0, 1e-3, 0.01, 0.05}) {
