@@ -170,36 +170,45 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
     curve.push_back(rep.model.config.default_conditions(0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n));
   }
   const auto res = contact::predict_all(rep.model, curve);
-  PlotPanel ps{"Sinking versus load", "vertical load [kN]", "sinking [mm]", {}};
-  PlotPanel pl{"Contact length versus load", "vertical load [kN]", "contact length [mm]", {}};
-  PlotSeries ps_pred{"model", {}, {}, "lines"}, pl_pred{"model", {}, {}, "lines"};
-  for (const auto& p : res) {
-    if (!p.ok) continue;  // a failed prediction is left out of the curve
-    const auto& r = p.footprint;
-    ps_pred.x.push_back(r.load.load_N / 1000);
-    ps_pred.y.push_back(r.sinking_m * 1e3);
-    pl_pred.x.push_back(r.load.load_N / 1000);
-    pl_pred.y.push_back(r.contact_length_m * 1e3);
-  }
-  PlotSeries ps_meas{"measured (prediction rows)", {}, {}, "points"};
-  PlotSeries pl_meas{"measured (prediction rows)", {}, {}, "points"};
-  PlotSeries ps_cal{"measured (calibration rows)", {}, {}, "points"};
-  PlotSeries pl_cal{"measured (calibration rows)", {}, {}, "points"};
-  for (const auto& r : rep.rows) {
-    auto& s = r.calibration ? ps_cal : ps_meas;
-    auto& l = r.calibration ? pl_cal : pl_meas;
-    const double load_kN = r.measured.conditions.load_N / 1000;
-    if (const auto v = r.measured.value("sinking_mm")) s.x.push_back(load_kN), s.y.push_back(*v);
-    if (const auto v = r.measured.value("length_mm")) l.x.push_back(load_kN), l.y.push_back(*v);
-  }
-  ps.series = {ps_pred, ps_meas};
-  pl.series = {pl_pred, pl_meas};
-  if (!ps_cal.x.empty()) ps.series.push_back(ps_cal);
-  if (!pl_cal.x.empty()) pl.series.push_back(pl_cal);
+  // One panel per compared observable: the model's curve, the measured rows (calibration rows
+  // marked apart).
+  struct Observable {
+    const char* name;
+    const char* title;
+    const char* ylabel;
+  };
+  const Observable observables[] = {
+      {"sinking_mm", "Sinking versus load", "sinking [mm]"},
+      {"length_mm", "Contact length versus load", "contact length [mm]"},
+      {"width_mm", "Contact width versus load", "contact width [mm]"}};
   PlotFigure fig;
-  fig.width_px = 1200;
+  for (const auto& o : observables) {
+    PlotSeries model{"model", {}, {}, "lines"};
+    for (const auto& p : res) {
+      if (!p.ok) continue;  // a failed prediction is left out of the curve
+      model.x.push_back(p.footprint.load.load_N / 1000);
+      model.y.push_back(p.observable(o.name));
+    }
+    PlotSeries measured{"measured (prediction rows)", {}, {}, "points"};
+    PlotSeries calibration{"measured (calibration rows)", {}, {}, "points"};
+    for (const auto& r : rep.rows) {
+      auto& s = r.calibration ? calibration : measured;
+      if (const auto v = r.measured.value(o.name)) {
+        s.x.push_back(r.measured.conditions.load_N / 1000);
+        s.y.push_back(*v);
+      }
+    }
+    if (measured.x.empty() && calibration.x.empty()) continue;  // not measured: not compared
+    PlotPanel panel;
+    panel.title = o.title;
+    panel.xlabel = "vertical load [kN]";
+    panel.ylabel = o.ylabel;
+    panel.series = {model, measured};
+    if (!calibration.x.empty()) panel.series.push_back(calibration);
+    fig.panels.push_back(std::move(panel));
+  }
+  fig.width_px = 600 * static_cast<int>(fig.panels.size());
   fig.height_px = 480;
-  fig.panels = {ps, pl};
   render_plot(fig, path);
 }
 
@@ -211,7 +220,7 @@ void register_validate(CLI::App& app) {
       "validate",
       "Compare predicted sinking and contact length with measured footprints (e.g. seed 001 "
       "Table 3); calibration, if any, is declared in the config's validation section "
-      "(at most two parameters on at most two rows) and only the other rows count.");
+      "(at most three parameters on at most two rows) and only the other rows count.");
   cmd->add_option("CONFIG", a->config, "tyre config (YAML)")->required();
   cmd->add_option("MEASURED", a->measured,
                   "CSV with load_N and any of sinking_mm, length_mm, width_mm; optional "
@@ -220,7 +229,8 @@ void register_validate(CLI::App& app) {
       ->required();
   cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");
   cmd->add_flag("--json", a->json, "print JSON");
-  cmd->add_option("--plot", a->plot, "draw sinking and length versus load (.svg or .png)");
+  cmd->add_option("--plot", a->plot,
+                  "draw sinking, length and (where measured) width versus load (.svg or .png)");
   cmd->callback([a] {
     // The config decides how the file is read (effects need every row's conditions).
     const auto config = contact::load_tyre_config(a->config, a->overrides);

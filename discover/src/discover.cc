@@ -34,8 +34,11 @@ std::size_t distinct(const MeasurementSet& d, const std::string& condition) {
 
 // Whether the data can reveal an effect: its regime variable must vary (an effect acting as a
 // constant factor is confounded with the re-fitted baseline scalars).
-std::string untestable_reason(EffectId id, const MeasurementSet& d) {
+std::string untestable_reason(EffectId id, const MeasurementSet& d, const TyreConfig& config) {
   const auto& info = contact::effect_info(id);
+  if (config.footprint_3d && !info.refused_with_3d.empty()) {
+    return "not on the 3D patch: " + info.refused_with_3d;
+  }
   const std::size_t n = distinct(d, info.regime);
   switch (id) {
     case EffectId::load_stiffening:
@@ -210,7 +213,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   rep.gap_config =
       rms_by_observable(data, all_entries, ev.residuals(eval, all_entries, &config_failures));
 
-  Stage current{make_variant({}), {}, {}};
+  Stage current{make_variant(config, {}), {}, {}};
   current.fit = fit_variant(ev, eval, current.variant, all, nullptr, true);
   current.cv = cross_validate(ev, eval, current.variant, current.fit);
   rep.fits = 1 + current.cv.folds;
@@ -239,7 +242,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
       }
       CandidateScore s;
       s.name = info.name;
-      s.reason = untestable_reason(info.id, data);
+      s.reason = untestable_reason(info.id, data, config);
       s.testable = s.reason.empty();
       scores.push_back(s);
       ids.push_back(info.id);
@@ -253,7 +256,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
       std::vector<EffectId> effects = current.variant.effects;
       effects.push_back(ids[c]);
       Stage& st = stages[c];
-      st.variant = make_variant(effects);
+      st.variant = make_variant(config, effects);
       st.fit = fit_variant(ev, current.fit.config, st.variant, all, nullptr, true);
       st.cv = cross_validate(ev, current.fit.config, st.variant, st.fit);
       if (opt.progress) opt.progress(++done, total);

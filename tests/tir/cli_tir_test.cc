@@ -13,7 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 const std::string kData = std::string(MODALTYRE_SOURCE_DIR) + "/tests/data/tir/";
 
 class TirCli : public modaltyre_test::CliFixture {};

@@ -1,4 +1,4 @@
-// Round trips through the .tir bridge on the default config (configs/sf350.yaml):
+// Round trips through the .tir bridge on the 2D config (configs/sf350_2d_table3.yaml, the default before issue 18):
 // export -> parse the text -> evaluate the MF formulas (Pacejka 2012 App. 3) -> the model's own
 // footprints, at loads between the fitted ones over 0.5-1.5 x FNOMIN (issue 20 item 4); and
 // compare on hand-made files whose laws are known in closed form.
@@ -18,7 +18,7 @@ using namespace modaltyre::tir;
 
 const contact::TyreModel& default_model() {
   static const contact::TyreModel model = contact::build_tyre_model(
-      contact::load_tyre_config(std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml"));
+      contact::load_tyre_config(std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml"));
   return model;
 }
 
@@ -30,7 +30,7 @@ struct Exported {
 const Exported& exported() {
   static const Exported e = [] {
     TirExportOptions o;
-    o.config_label = "configs/sf350.yaml";
+    o.config_label = "configs/sf350_2d_table3.yaml";
     Exported out;
     out.fit = fit_tir(default_model(), o);
     out.read_back =
@@ -145,7 +145,7 @@ TEST(TirCompare, DimensionlessComparisonIsInvariantUnderScaling) {
 // by 1 % makes the RMS worse.
 TEST(TirRoundTrip, PredictedWidthIsExportedAsTheLeastSquaresWidthLaw) {
   auto config =
-      contact::load_tyre_config(std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml",
+      contact::load_tyre_config(std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml",
                                 {"effects.contact_width.enabled=true", "contact.unit_length_mm=2"});
   const contact::TyreModel model = contact::build_tyre_model(config);
   TirExportOptions o;
@@ -176,7 +176,7 @@ TEST(TirRoundTrip, PredictedWidthIsExportedAsTheLeastSquaresWidthLaw) {
 // model's tangent stiffness there.
 TEST(TirRoundTrip, PressureEffectIsExportedAsPfz1) {
   auto config = contact::load_tyre_config(
-      std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml",
+      std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml",
       {"effects.inflation_pressure.enabled=true", "contact.unit_length_mm=2"});
   const contact::TyreModel model = contact::build_tyre_model(config);
   TirExportOptions o;

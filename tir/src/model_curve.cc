@@ -9,9 +9,9 @@
 namespace modaltyre::tir {
 
 std::string model_width_reason(const contact::TyreConfig& config) {
-  // The 2D patch carries the config's fixed width; only the crown-profile width of the
-  // contact_width effect is a prediction.
-  if (config.effects.contact_width.enabled) return "";
+  // The 3D patch predicts the width; the 2D patch carries the config's fixed width, and only the
+  // crown-profile width of the contact_width effect is a prediction there.
+  if (config.footprint_3d || config.effects.contact_width.enabled) return "";
   return "the config's patch has a fixed width (tread.contact_width_mm), not a predicted one; "
          "a footprint_3d: section or effects.contact_width makes predictions carry a width";
 }
