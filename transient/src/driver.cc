@@ -7,6 +7,7 @@
 
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/arrow_lu.h"
+#include "modaltyre/transient/contact_newton.h"
 #include "modaltyre/transient/ode_system.h"
 
 namespace modaltyre::transient {
@@ -21,9 +22,10 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
                         const ScenarioPlan& plan, double t, const double* y) {
   TransientSample s;
   s.t_s = t;
-  // Tip penetration once (one pass over psi and V); forces and the edge interpolation use it.
-  std::vector<double> g(M.m);
-  sys.roots(t, y, g.data());
+  // Tip penetration where units can touch (the forces); the edge interpolation below needs it
+  // also at the first unit outside each end, computed there.
+  Eigen::VectorXd g(M.m);
+  sys.tip_penetration_in_reach(t, y, g);
   Eigen::VectorXd f(M.m);
   for (int i = 0; i < M.m; ++i) f(i) = g[i] > 0 ? M.k_contact(i) * g[i] : 0.0;
   const double z = y[M.z_index()];
@@ -75,7 +77,7 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
       const double x_in = deformed_x(inside);
       if (outside < 0 || outside >= M.m) return x_in;
       const double phi_in = f(inside) * M.tyre.vertical_compliance(inside, inside);
-      const double phi_out = g[outside];
+      const double phi_out = sys.tip_penetration_at(t, y, outside);
       const double w = phi_in / (phi_in - phi_out);
       return x_in + w * (deformed_x(outside) - x_in);
     };
@@ -136,12 +138,24 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
   // Newton's matrix I - gamma J has the arrow structure of solvers::ArrowLu: the carcass, residual
   // and hub states (the first e_index()) are densely coupled through the units in contact; each
   // tread state couples to its two upwind neighbours and, in contact, to that dense block.
+  using NewtonSolver = TransientRunOptions::NewtonSolver;
+  const NewtonSolver newton = options ? options->newton_solver : NewtonSolver::schur;
+  ContactNewton contact_newton(M, sys);
   solvers::ArrowLu arrow;
   solvers::CscMatrix jac;
-  if (!options || options->newton_solver == TransientRunOptions::NewtonSolver::schur) {
+  if (newton == NewtonSolver::schur) {
+    prob.linear_setup = [&](double t, const double* y, double gamma, bool jacobian_ok) {
+      // 1: CVODE retries with a smaller step.
+      return contact_newton.setup(t, y, gamma, jacobian_ok) ? 0 : 1;
+    };
+    prob.linear_solve = [&contact_newton](double* x) {
+      contact_newton.solve(x);
+      return 0;
+    };
+  } else if (newton == NewtonSolver::arrow) {
     prob.linear_setup = [&](double t, const double* y, double gamma, bool jacobian_ok) {
       if (!jacobian_ok || jac.n == 0) sys.jacobian(t, y, jac);
-      return arrow.factor(jac, gamma, M.e_index()) ? 0 : 1;  // 1: CVODE retries, smaller step
+      return arrow.factor(jac, gamma, M.e_index()) ? 0 : 1;
     };
     prob.linear_solve = [&arrow](double* x) {
       arrow.solve(x);
