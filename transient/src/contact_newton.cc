@@ -82,6 +82,7 @@ void ContactNewton::factor(double gamma) {
     ee_d_.resize(ne_);
     for (int i = 0; i < ne_; ++i)
       ee_d_(i) = 1.0 - gamma * (kUpwind[0] * adv - (kd_(i) + M.k_kv(i)) / M.c_kv(i));
+    ee_d_inv_ = ee_d_.cwiseInverse();
     if (na > 0) {
       const int lo = active_.front(), hi = active_.back();
       Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(hi - lo + 1, np_);
@@ -96,6 +97,7 @@ void ContactNewton::factor(double gamma) {
     }
   } else {
     ee_d_.resize(0);
+    ee_d_inv_.resize(0);
   }
   // K = T~^T diag(kd) (T~ - gamma Y), coefficient-based (Eigen's GEMM would start OpenMP threads
   // for a product this small; the library is built with OpenMP for sweeps).
@@ -138,11 +140,15 @@ void ContactNewton::solve_d(double* x) const {
 }
 
 void ContactNewton::solve_ee(double* y) const {
+  if (ee_s1_ == 0 && ee_s2_ == 0) {  // at rest: diagonal
+    Eigen::Map<Eigen::VectorXd>(y, ne_).array() *= ee_d_inv_.array();
+    return;
+  }
   for (int i = ne_ - 1; i >= 0; --i) {
     double v = y[i];
     if (i + 1 < ne_) v -= ee_s1_ * y[i + 1];
     if (i + 2 < ne_) v -= ee_s2_ * y[i + 2];
-    y[i] = v / ee_d_(i);
+    y[i] = v * ee_d_inv_(i);
   }
 }
 

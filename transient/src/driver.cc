@@ -34,13 +34,18 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
   s.hub_displacement_m = z;
   s.speed_m_s = plan.speed(t);
   s.load_N = f.sum();
-  double sink = -1e300, moment = 0, slope_force = 0;
+  // Sinking max_i (z + h_i - s_i): the least sag on a flat road, over the cleat's units too.
+  double sink = z - M.tyre.sag.minCoeff(), moment = 0, slope_force = 0;
+  if (plan.cleat) {
+    Eigen::VectorXd h = Eigen::VectorXd::Zero(M.m);
+    sys.add_road(t, 0, M.m - 1, h);
+    sink = std::max(sink, (z + h.array() - M.tyre.sag.array()).maxCoeff());
+  }
   int first = -1, last = -1;
   for (int i = 0; i < M.m; ++i) {
-    double slope = 0;
-    const double h = sys.road(t, i, &slope);
-    sink = std::max(sink, z + h - M.tyre.sag(i));
     if (f(i) > 0) {
+      double slope = 0;
+      if (plan.cleat) sys.road(t, i, &slope);
       if (first < 0) first = i;
       last = i;
       ++s.contact_units;

@@ -42,6 +42,10 @@ ModalRow modal_row(const TransientModel& M, int j, double Omega, double dOmega) 
 TransientSystem::TransientSystem(const TransientModel& model, const ScenarioPlan& plan)
     : model_(model), plan_(plan) {
   basis_row_norm_max_ = model.rank > 0 ? model.T.rowwise().norm().maxCoeff() : 0.0;
+  if (model.settings.relaxation) {
+    inv_c_kv_ = model.c_kv.cwiseInverse();
+    k_over_c_kv_ = model.k_kv.cwiseProduct(inv_c_kv_);
+  }
   model.tyre.sag.minCoeff(&centre_);
 }
 
@@ -64,10 +68,25 @@ void TransientSystem::reach(const double* y, int& lo, int& hi) const {
   const auto& M = model_;
   // g_i = z + h_i - s_i - T_i xi - e_i <= z + max h - s_i + max_i |T_i| |xi| - min(0, min e)
   // (Cauchy-Schwarz on the contact basis; xi from contact_coordinates()).
-  double bound = y[M.z_index()] + (plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0) +
-                 basis_row_norm_max_ * scratch_xi_.norm();
+  double lift = plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0;
   if (M.settings.relaxation)
-    bound -= std::min(0.0, Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), M.m).minCoeff());
+    lift -= std::min(0.0, Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), M.m).minCoeff());
+  if (p_ref_.size() == M.m) {
+    // Against the penetration p_ref = z_ref - s - T xi_ref of the last accepted state:
+    // g_i <= p_ref_i + (z - z_ref) + max |T_i| |xi - xi_ref| + max h - min(0, min e), a band
+    // a few units wider than the patch where the bound from rest spans twice as many units.
+    const double delta =
+        y[M.z_index()] - z_ref_ + basis_row_norm_max_ * (scratch_xi_ - xi_ref_).norm() + lift;
+    if (!std::isfinite(delta)) {
+      lo = 0, hi = M.m - 1;
+      return;
+    }
+    lo = 0, hi = M.m - 1;
+    while (lo <= hi && !(p_ref_(lo) + delta > 0)) ++lo;
+    while (hi >= lo && !(p_ref_(hi) + delta > 0)) --hi;
+    return;
+  }
+  const double bound = y[M.z_index()] + basis_row_norm_max_ * scratch_xi_.norm() + lift;
   const Eigen::VectorXd& sag = M.tyre.sag;
   if (!(sag(centre_) < bound)) {  // nothing can touch (NaN bound: everything can)
     lo = 0, hi = std::isnan(bound) ? M.m - 1 : -1;
@@ -163,7 +182,18 @@ void TransientSystem::roots(double t, const double* y, double* g) const {
 }
 
 int TransientSystem::update_contact_set(double t, const double* y) const {
-  tip_penetration_in_reach(t, y, scratch_g_);
+  // The penetration over the whole window at the accepted state becomes the reach reference
+  // of the evaluations that follow (reach()); the contact set is its sign.
+  const auto& M = model_;
+  contact_coordinates(y);
+  p_ref_.noalias() = -(M.T * scratch_xi_);
+  p_ref_.array() += y[M.z_index()];
+  p_ref_ -= M.tyre.sag;
+  xi_ref_ = scratch_xi_;
+  z_ref_ = y[M.z_index()];
+  scratch_g_ = p_ref_;
+  add_road(t, 0, M.m - 1, scratch_g_);
+  if (M.settings.relaxation) scratch_g_ -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), M.m);
   const bool first = in_contact_.empty();
   in_contact_.resize(model_.m, 0);
   int changed = 0;
@@ -211,11 +241,15 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
     const double adv = Omega / M.tyre.dtheta_rad;
     // de/dtheta by the second-order one-sided (upwind) difference from the front, e = 0
     // entering: (-3 e_i + 4 e_{i+1} - e_{i+2}) / (2 dtheta).
-    const double a0 = kUpwind[0] * adv, a1 = kUpwind[1] * adv, a2 = kUpwind[2] * adv;
-    for (int i = 0; i < M.m; ++i) {
-      const double e = y[E + i], e1 = i + 1 < M.m ? y[E + i + 1] : 0.0,
-                   e2 = i + 2 < M.m ? y[E + i + 2] : 0.0;
-      ydot[E + i] = a0 * e + a1 * e1 + a2 * e2 + (f(i) - M.k_kv(i) * e) / M.c_kv(i);
+    // c' e' = f - k' e, as whole-vector operations (one pass each, no division).
+    const int m = M.m;
+    const Eigen::Map<const Eigen::VectorXd> e(y + E, m);
+    Eigen::Map<Eigen::VectorXd> de(ydot + E, m);
+    de = f.cwiseProduct(inv_c_kv_) - e.cwiseProduct(k_over_c_kv_);
+    if (adv != 0) {
+      de += kUpwind[0] * adv * e;
+      de.head(m - 1) += kUpwind[1] * adv * e.tail(m - 1);
+      de.head(m - 2) += kUpwind[2] * adv * e.tail(m - 2);
     }
   }
 }

@@ -63,10 +63,10 @@ class ContactNewton {
     Eigen::Matrix4d inv = Eigen::Matrix4d::Zero();
   };
   std::vector<Block> blocks_;
-  double d_r_inv_ = 1, d_zw_ = 0;  ///< 1 / (1 + gamma / tau); D^-1 of (z, w) is [1 gamma; 0 1]
-  double ee_s1_ = 0, ee_s2_ = 0;   ///< M_EE's super-diagonals (uniform)
-  Eigen::VectorXd ee_d_;           ///< M_EE's diagonal
-  Eigen::MatrixXd K_;              ///< np x np
+  double d_r_inv_ = 1, d_zw_ = 0;    ///< 1 / (1 + gamma / tau); D^-1 of (z, w) is [1 gamma; 0 1]
+  double ee_s1_ = 0, ee_s2_ = 0;     ///< M_EE's super-diagonals (uniform)
+  Eigen::VectorXd ee_d_, ee_d_inv_;  ///< M_EE's diagonal and its inverse
+  Eigen::MatrixXd K_;                ///< np x np
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
   Eigen::MatrixXd Tt_active_;  ///< T~ rows of the active units (na x np)
   mutable Eigen::VectorXd eta_, work_x_, work_e_, work_a_;

@@ -70,6 +70,8 @@ class TransientSystem {
   /// |u_i| + e_i from the state (reach()) have g_i < 0 for certain. The forces need only these;
   /// the m x nq product over the whole window was a third of a step.
   void tip_penetration_in_reach(double t, const double* y, Eigen::VectorXd& g) const;
+  /// Adds the road height h(x_i, t) to g over the units [lo, hi] (cleat only).
+  void add_road(double t, int lo, int hi, Eigen::VectorXd& g) const;
   /// g_i of one unit.
   double tip_penetration_at(double t, const double* y, int i) const;
   int64_t nnz() const;
@@ -79,10 +81,9 @@ class TransientSystem {
   void tip_penetration(double t, const double* y, Eigen::VectorXd& g) const;
   /// xi = Cq q + Cr r into scratch_xi_ (u = T xi, model.h's contact basis).
   void contact_coordinates(const double* y) const;
-  /// Units [lo, hi] that can touch at y (empty if hi < lo), xi from contact_coordinates().
+  /// Units [lo, hi] that can touch at y (empty if hi < lo), xi from contact_coordinates():
+  /// bounds of g from the last accepted state (update_contact_set()) or, before one, from rest.
   void reach(const double* y, int& lo, int& hi) const;
-  /// Adds the road height h(x_i, t) to g over the units [lo, hi] (cleat only).
-  void add_road(double t, int lo, int hi, Eigen::VectorXd& g) const;
   void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
 
   const TransientModel& model_;
@@ -96,6 +97,11 @@ class TransientSystem {
   /// Contact set at the last accepted step (update_contact_set()).
   mutable std::vector<char> in_contact_;
   mutable long switches_since_jacobian_ = 0;
+  /// Reach reference (update_contact_set()): p_ref = z - s - T xi over the window at the last
+  /// accepted state, and its xi and z (empty before the first accepted step).
+  mutable Eigen::VectorXd p_ref_, xi_ref_;
+  mutable double z_ref_ = 0;
+  Eigen::VectorXd inv_c_kv_, k_over_c_kv_;  ///< 1 / c' and k' / c' per unit (relaxation on)
   /// max_i |T_i|: |u_i| <= basis_row_norm_max_ |xi| for every unit.
   double basis_row_norm_max_ = 0;
   int centre_ = 0;  ///< unit of least sag (the sag grows on both sides of it)
