@@ -96,25 +96,29 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
 /// samples are otherwise an O(m (nq + nr)) evaluation each, which dominated long settled holds.
 class SampleReuse {
  public:
-  SampleReuse(double rtol, std::vector<double> atol, bool allowed)
-      : rtol_(rtol), atol_(std::move(atol)), allowed_(allowed) {}
-  void remember(const std::vector<double>& y) { last_ = y; }
+  SampleReuse(double rtol, const std::vector<double>& atol, bool allowed)
+      : rtol_(rtol),
+        atol_(
+            Eigen::Map<const Eigen::ArrayXd>(atol.data(), static_cast<Eigen::Index>(atol.size()))),
+        allowed_(allowed) {}
+  void remember(const std::vector<double>& y) {
+    last_ = Eigen::Map<const Eigen::ArrayXd>(y.data(), static_cast<Eigen::Index>(y.size()));
+    bound_ = kReuseFraction * (rtol_ * last_.abs() + atol_);
+  }
   bool unchanged(const std::vector<double>& y) const {
-    if (!allowed_ || last_.size() != y.size()) return false;
-    for (std::size_t k = 0; k < y.size(); ++k) {
-      const double w = rtol_ * std::abs(last_[k]) + atol_[k];
-      if (std::abs(y[k] - last_[k]) > kReuseFraction * w) return false;
-    }
-    return true;
+    if (!allowed_ || last_.size() != static_cast<Eigen::Index>(y.size())) return false;
+    // One vectorised pass (a 120 s hold checks up to 60000 samples of ~800 states).
+    const Eigen::Map<const Eigen::ArrayXd> v(y.data(), last_.size());
+    return ((v - last_).abs() <= bound_).all();
   }
 
  private:
   /// Far below the integrator's own local error (1 in the same weighted norm).
   static constexpr double kReuseFraction = 1e-3;
   double rtol_;
-  std::vector<double> atol_;
+  Eigen::ArrayXd atol_;
   bool allowed_;
-  std::vector<double> last_;
+  Eigen::ArrayXd last_, bound_;  ///< last computed sample's state, kReuseFraction of its weights
 };
 
 }  // namespace
