@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   modaltyre::app::register_effects(app);
   modaltyre::app::register_discover(app);
   modaltyre::app::register_ema(app);
+  modaltyre::app::register_tir(app);
 
   // A file-size limit (ulimit -f) then fails the write with EFBIG, which the atomic writer
   // reports and cleans up, instead of killing the program with a half-written temporary.

@@ -13,6 +13,12 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   c.name = tyre.text("name", c.name);
   c.outer_radius_m = tyre.number("outer_radius_mm", 294.8, 50, 2000) * 1e-3;
   c.inflation_pressure_Pa = tyre.number("inflation_pressure_kPa", 230, 10, 2000) * 1e3;
+  c.section_width_m = tyre.number("section_width_mm", 0, 0, 2000) * 1e-3;
+  c.aspect_ratio = tyre.number("aspect_ratio", 0, 0, 2);
+  c.rim_radius_m = tyre.number("rim_radius_mm", 0, 0, 2000) * 1e-3;
+  if (c.rim_radius_m >= c.outer_radius_m) {
+    tyre.fail("rim_radius_mm", "the rim radius must be smaller than outer_radius_mm");
+  }
 
   const ConfigSection modal = root.section("modal");
   if (!modal.has("hammer_csv")) modal.fail("hammer_csv", "required: path of the hammer data CSV");

@@ -59,6 +59,11 @@ struct TyreConfig {
   std::string name = "tyre";
   double outer_radius_m = 0.2948;
   double inflation_pressure_Pa = 230e3;
+  /// From the tyre's size designation (e.g. 195/60R14), for the .tir bridge's [DIMENSION]
+  /// (tir/); 0 = not stated.
+  double section_width_m = 0;
+  double aspect_ratio = 0;
+  double rim_radius_m = 0;
   std::string hammer_csv;       ///< resolved path of the hammer data
   bool extend_orders = true;
   double compliance_scale = 1.0;
