@@ -20,6 +20,9 @@ using cd = std::complex<double>;
 /// Eigenvalues of the residual compliance below this fraction of the largest are dropped: their
 /// displacements are at the rounding level of the sum.
 constexpr double kResidualEigenCutoff = 1e-13;
+/// Singular values of the units' shapes [psi V] below this fraction of the largest span no
+/// displacement above rounding (default carcass: the 14th is 2e-16 of the first, the 13th 3e-11).
+constexpr double kContactBasisCutoff = 1e-13;
 /// Minimum damping ratio used for the relaxation time of the quasi-static residual orders.
 constexpr double kResidualMinDamping = 0.01;
 
@@ -42,6 +45,27 @@ Eigen::MatrixXd vertical_from_kernels(const TyreModel& t, const modal::LagKernel
     }
   }
   return 0.5 * (C + C.transpose());
+}
+
+/// [psi V] = T [Cq Cr] (model.h): thin SVD U S W^T, T = U S and [Cq Cr] = W^T on the singular
+/// values above kContactBasisCutoff of the largest.
+void build_contact_basis(TransientModel& M) {
+  Eigen::MatrixXd B(M.m, M.nq + M.nr);
+  B << M.psi, M.V;
+  M.rank = 0;
+  M.T.resize(M.m, 0);
+  M.Cq.resize(0, M.nq);
+  M.Cr.resize(0, M.nr);
+  if (B.cols() > 0) {
+    const Eigen::BDCSVD<Eigen::MatrixXd> svd(B, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    const Eigen::VectorXd& s = svd.singularValues();
+    while (M.rank < s.size() && s(M.rank) > kContactBasisCutoff * s(0)) ++M.rank;
+    M.T = svd.matrixU().leftCols(M.rank) * s.head(M.rank).asDiagonal();
+    const Eigen::MatrixXd C = svd.matrixV().leftCols(M.rank).transpose();
+    M.Cq = C.leftCols(M.nq);
+    M.Cr = C.rightCols(M.nr);
+  }
+  M.T_by_unit = M.T.transpose();
 }
 
 }  // namespace
@@ -191,6 +215,7 @@ TransientModel build_transient_model(const TyreModel& tyre) {
   }
   M.psi_by_unit = M.psi.transpose();
   M.V_by_unit = M.V.transpose();
+  build_contact_basis(M);
   return M;
 }
 

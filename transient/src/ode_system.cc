@@ -17,11 +17,6 @@ constexpr double kDisplacementTolerance = 1e-7;
 /// centre of a ladder-like static patch) otherwise makes CVODE return a root at every rounding
 /// flip of g without advancing in time. The kink of f = k max(0, g) is located to eta / |g'|.
 constexpr double kRootOffset_m = 1e-12;
-/// Upwind stencil of the tread advection, de/dtheta ~ (c0 e_i + c1 e_{i+1} + c2 e_{i+2}) / dtheta:
-/// second-order one-sided from the front. First order (-1, 1, 0) converged the rolling resistance
-/// at O(dtheta): 59.3 / 60.6 / 61.2 / 61.5 N at 2 / 1 / 0.5 / 0.25 mm, against 61.3 / 61.6 /
-/// 61.7 / 61.8 N with this one (60 km/h, docs/transient.md section 1).
-constexpr double kUpwind[3] = {-1.5, 2.0, -0.5};
 
 /// Length beyond each end of the contact patch whose units enter the Jacobian as if in contact
 /// (see TransientSystem::jacobian); 4 units at the default 0.5 mm mesh (measured best of 0-10).
@@ -29,27 +24,69 @@ constexpr double kJacobianEdgeMargin_m = 2e-3;
 
 }  // namespace
 
+ModalRow modal_row(const TransientModel& M, int j, double Omega, double dOmega) {
+  ModalRow d;
+  const double w = M.omega[j], ze = M.zeta[j];
+  d.dq = -w * w;
+  d.dv = -2 * ze * w;
+  if (M.partner[j] >= 0 && Omega != 0) {
+    // Ground-frame pair (docs/transient.md section 1): b = k Omega, a = k Omega'.
+    const double b = M.order[j] * Omega, al = M.order[j] * dOmega, s = M.pair_sign[j];
+    d.dq += b * b;
+    d.dq_p = s * (2 * ze * w * b + al);
+    d.dv_p = s * 2 * b;
+  }
+  return d;
+}
+
 TransientSystem::TransientSystem(const TransientModel& model, const ScenarioPlan& plan)
     : model_(model), plan_(plan) {
-  shape_max_.resize(model.nq + model.nr);
-  for (int j = 0; j < model.nq; ++j) shape_max_(j) = model.psi.col(j).cwiseAbs().maxCoeff();
-  for (int l = 0; l < model.nr; ++l)
-    shape_max_(model.nq + l) = model.V.col(l).cwiseAbs().maxCoeff();
+  basis_row_norm_max_ = model.rank > 0 ? model.T.rowwise().norm().maxCoeff() : 0.0;
+  if (model.settings.relaxation) {
+    inv_c_kv_ = model.c_kv.cwiseInverse();
+    k_over_c_kv_ = model.k_kv.cwiseProduct(inv_c_kv_);
+  }
   model.tyre.sag.minCoeff(&centre_);
 }
 
-void TransientSystem::reach(double t, const double* y, int& lo, int& hi) const {
-  (void)t;
+double TransientSystem::spin(double t) const {
+  return plan_.speed(t) / model_.tyre.config.outer_radius_m;
+}
+
+double TransientSystem::spin_rate(double t) const {
+  return plan_.acceleration(t) / model_.tyre.config.outer_radius_m;
+}
+
+void TransientSystem::contact_coordinates(const double* y) const {
   const auto& M = model_;
-  // g_i <= z + max h - s_i + sum_j max|psi_j| |q_j| + sum_l max|V_l| |r_l| - min(0, min e).
-  double bound = y[M.z_index()] + (plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0);
-  for (int j = 0; j < M.nq; ++j) bound += shape_max_(j) * std::abs(y[j]);
-  for (int l = 0; l < M.nr; ++l) bound += shape_max_(M.nq + l) * std::abs(y[2 * M.nq + l]);
-  if (M.settings.relaxation) {
-    double e_min = 0;
-    for (int i = 0; i < M.m; ++i) e_min = std::min(e_min, y[M.e_index() + i]);
-    bound -= e_min;
+  const Eigen::Map<const Eigen::VectorXd> q(y, M.nq), r(y + 2 * M.nq, M.nr);
+  scratch_xi_.noalias() = M.Cq * q;
+  if (M.nr > 0) scratch_xi_.noalias() += M.Cr * r;
+}
+
+void TransientSystem::reach(const double* y, int& lo, int& hi) const {
+  const auto& M = model_;
+  // g_i = z + h_i - s_i - T_i xi - e_i <= z + max h - s_i + max_i |T_i| |xi| - min(0, min e)
+  // (Cauchy-Schwarz on the contact basis; xi from contact_coordinates()).
+  double lift = plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0;
+  if (M.settings.relaxation)
+    lift -= std::min(0.0, Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), M.m).minCoeff());
+  if (p_ref_.size() == M.m) {
+    // Against the penetration p_ref = z_ref - s - T xi_ref of the last accepted state:
+    // g_i <= p_ref_i + (z - z_ref) + max |T_i| |xi - xi_ref| + max h - min(0, min e), a band
+    // a few units wider than the patch where the bound from rest spans twice as many units.
+    const double delta =
+        y[M.z_index()] - z_ref_ + basis_row_norm_max_ * (scratch_xi_ - xi_ref_).norm() + lift;
+    if (!std::isfinite(delta)) {
+      lo = 0, hi = M.m - 1;
+      return;
+    }
+    lo = 0, hi = M.m - 1;
+    while (lo <= hi && !(p_ref_(lo) + delta > 0)) ++lo;
+    while (hi >= lo && !(p_ref_(hi) + delta > 0)) --hi;
+    return;
   }
+  const double bound = y[M.z_index()] + basis_row_norm_max_ * scratch_xi_.norm() + lift;
   const Eigen::VectorXd& sag = M.tyre.sag;
   if (!(sag(centre_) < bound)) {  // nothing can touch (NaN bound: everything can)
     lo = 0, hi = std::isnan(bound) ? M.m - 1 : -1;
@@ -73,19 +110,27 @@ void TransientSystem::add_road(double t, int lo, int hi, Eigen::VectorXd& g) con
 void TransientSystem::tip_penetration_in_reach(double t, const double* y,
                                                Eigen::VectorXd& g) const {
   const auto& M = model_;
+  contact_coordinates(y);
   int lo = 0, hi = -1;
-  reach(t, y, lo, hi);
+  reach(y, lo, hi);
   g.setConstant(M.m, -1.0);
   if (hi < lo) return;
   const int n = hi - lo + 1;
-  const Eigen::Map<const Eigen::VectorXd> q(y, M.nq), r(y + 2 * M.nq, M.nr);
+  // u = T xi (model.h's contact basis: rank columns instead of nq + nr).
   auto seg = g.segment(lo, n);
-  seg.noalias() = -(M.psi.middleRows(lo, n) * q);
-  if (M.nr > 0) seg.noalias() -= M.V.middleRows(lo, n) * r;
+  seg.noalias() = -(M.T.middleRows(lo, n) * scratch_xi_);
   seg.array() += y[M.z_index()];
   seg -= M.tyre.sag.segment(lo, n);
   add_road(t, lo, hi, g);
   if (M.settings.relaxation) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + lo, n);
+}
+
+double TransientSystem::tip_penetration_at(double t, const double* y, int i) const {
+  const auto& M = model_;
+  contact_coordinates(y);
+  double g = y[M.z_index()] + road(t, i) - M.tyre.sag(i) - M.T_by_unit.col(i).dot(scratch_xi_);
+  if (M.settings.relaxation) g -= y[M.e_index() + i];
+  return g;
 }
 
 double TransientSystem::road(double t, int i, double* slope) const {
@@ -104,12 +149,10 @@ double TransientSystem::road(double t, int i, double* slope) const {
 
 void TransientSystem::tip_penetration(double t, const double* y, Eigen::VectorXd& g) const {
   const auto& M = model_;
-  const Eigen::Map<const Eigen::VectorXd> q(y, M.nq), r(y + 2 * M.nq, M.nr);
   const double z = y[M.z_index()];
-  g.noalias() = M.psi * q;
-  if (M.nr > 0) g.noalias() += M.V * r;
-  // g = z + h - s - u (- e): the sign flips in place, no temporary.
-  g = -g;
+  contact_coordinates(y);
+  // g = z + h - s - u (- e), u = T xi.
+  g.noalias() = -(M.T * scratch_xi_);
   g.array() += z;
   g -= M.tyre.sag;
   add_road(t, 0, M.m - 1, g);
@@ -139,7 +182,18 @@ void TransientSystem::roots(double t, const double* y, double* g) const {
 }
 
 int TransientSystem::update_contact_set(double t, const double* y) const {
-  tip_penetration_in_reach(t, y, scratch_g_);
+  // The penetration over the whole window at the accepted state becomes the reach reference
+  // of the evaluations that follow (reach()); the contact set is its sign.
+  const auto& M = model_;
+  contact_coordinates(y);
+  p_ref_.noalias() = -(M.T * scratch_xi_);
+  p_ref_.array() += y[M.z_index()];
+  p_ref_ -= M.tyre.sag;
+  xi_ref_ = scratch_xi_;
+  z_ref_ = y[M.z_index()];
+  scratch_g_ = p_ref_;
+  add_road(t, 0, M.m - 1, scratch_g_);
+  if (M.settings.relaxation) scratch_g_ -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), M.m);
   const bool first = in_contact_.empty();
   in_contact_.resize(model_.m, 0);
   int changed = 0;
@@ -159,28 +213,21 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   Eigen::VectorXd& G = scratch_G_;
   f.resize(M.m);
   forces_into(t, y, f);
-  // G = psi^T f and Vf = V^T f over the units in contact only (a third of the candidates at the
-  // default load): columns of the transposed shapes, contiguous in memory.
-  G.setZero(nq);
+  // G = psi^T f = Cq^T phi and Vf = V^T f = Cr^T phi with phi = T^T f over the units in contact
+  // only (a third of the candidates at the default load; columns of T^T, contiguous).
+  Eigen::VectorXd& phi = scratch_phi_;
+  phi.setZero(M.rank);
+  for (int i = 0; i < M.m; ++i)
+    if (f(i) != 0.0) phi.noalias() += f(i) * M.T_by_unit.col(i);
+  G.noalias() = M.Cq.transpose() * phi;
   Eigen::VectorXd& Vf = scratch_Vf_;
-  Vf.setZero(nr);
-  for (int i = 0; i < M.m; ++i) {
-    if (f(i) == 0.0) continue;
-    G.noalias() += f(i) * M.psi_by_unit.col(i);
-    if (nr > 0) Vf.noalias() += f(i) * M.V_by_unit.col(i);
-  }
-  const double Omega = plan_.speed(t) / M.tyre.config.outer_radius_m;
-  const double dOmega = plan_.acceleration(t) / M.tyre.config.outer_radius_m;
+  if (nr > 0) Vf.noalias() = M.Cr.transpose() * phi;
+  const double Omega = spin(t), dOmega = spin_rate(t);
   for (int j = 0; j < nq; ++j) {
-    const double qj = y[j], vj = y[nq + j], w = M.omega[j], ze = M.zeta[j];
-    ydot[j] = vj;
-    double a = G(j) - 2 * ze * w * vj - w * w * qj;
-    const int p = M.partner[j];
-    if (p >= 0 && Omega != 0) {
-      const double b = M.order[j] * Omega, al = M.order[j] * dOmega, s = M.pair_sign[j];
-      a += s * 2 * b * y[nq + p] + b * b * qj + s * (2 * ze * w * b + al) * y[p];
-    }
-    ydot[nq + j] = a;
+    const ModalRow d = modal_row(M, j, Omega, dOmega);
+    const int p = std::max(M.partner[j], 0);  // d.dq_p = d.dv_p = 0 without a partner
+    ydot[j] = y[nq + j];
+    ydot[nq + j] = G(j) + d.dq * y[j] + d.dv * y[nq + j] + d.dq_p * y[p] + d.dv_p * y[nq + p];
   }
   if (nr > 0) {
     for (int l = 0; l < nr; ++l)
@@ -194,11 +241,15 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
     const double adv = Omega / M.tyre.dtheta_rad;
     // de/dtheta by the second-order one-sided (upwind) difference from the front, e = 0
     // entering: (-3 e_i + 4 e_{i+1} - e_{i+2}) / (2 dtheta).
-    const double a0 = kUpwind[0] * adv, a1 = kUpwind[1] * adv, a2 = kUpwind[2] * adv;
-    for (int i = 0; i < M.m; ++i) {
-      const double e = y[E + i], e1 = i + 1 < M.m ? y[E + i + 1] : 0.0,
-                   e2 = i + 2 < M.m ? y[E + i + 2] : 0.0;
-      ydot[E + i] = a0 * e + a1 * e1 + a2 * e2 + (f(i) - M.k_kv(i) * e) / M.c_kv(i);
+    // c' e' = f - k' e, as whole-vector operations (one pass each, no division).
+    const int m = M.m;
+    const Eigen::Map<const Eigen::VectorXd> e(y + E, m);
+    Eigen::Map<Eigen::VectorXd> de(ydot + E, m);
+    de = f.cwiseProduct(inv_c_kv_) - e.cwiseProduct(k_over_c_kv_);
+    if (adv != 0) {
+      de += kUpwind[0] * adv * e;
+      de.head(m - 1) += kUpwind[1] * adv * e.tail(m - 1);
+      de.head(m - 2) += kUpwind[2] * adv * e.tail(m - 2);
     }
   }
 }
@@ -213,16 +264,11 @@ int64_t TransientSystem::nnz() const {
   return N * N + 2 * N * (E / 3) + 4 * E + 4 * M.nq + 2 + N;
 }
 
-void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J) const {
+void TransientSystem::jacobian_stiffness(double t, const double* y, Eigen::VectorXd& kd) const {
   const auto& M = model_;
-  const int nq = M.nq, nr = M.nr, m = M.m;
-  const bool relax = M.settings.relaxation;
-  const int Z = M.z_index(), E = M.e_index();
-  const int n = size();
-  // d f_i / d g_i on the units in contact.
-  const Eigen::VectorXd f = forces(t, y);
-  Eigen::VectorXd kd(m);
-  for (int i = 0; i < m; ++i) kd(i) = f(i) > 0 ? M.k_contact(i) : 0.0;
+  const int m = M.m;
+  forces_into(t, y, kd);
+  for (int i = 0; i < m; ++i) kd(i) = kd(i) > 0 ? M.k_contact(i) : 0.0;
   // While the patch is moving (units switched since the last Jacobian), units within
   // kJacobianEdgeMargin of the patch ends enter the Jacobian as if in contact: a unit that
   // touches between two Jacobian evaluations otherwise leaves Newton's matrix without its
@@ -242,6 +288,16 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
       for (int i = last + 1; i <= std::min(m - 1, last + margin); ++i) kd(i) = M.k_contact(i);
     }
   }
+}
+
+void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J) const {
+  const auto& M = model_;
+  const int nq = M.nq, nr = M.nr, m = M.m;
+  const bool relax = M.settings.relaxation;
+  const int Z = M.z_index(), E = M.e_index();
+  const int n = size();
+  Eigen::VectorXd kd;
+  jacobian_stiffness(t, y, kd);
   // B = d g / d (q, r, z) = [-psi, -V, 1]; rows of W: d(v', r', w')/d f = [psi^T; lambda/tau V^T;
   // -1/m 1^T]. Dense block D = W diag(kd) B  ((nq + nr + 1) squared).
   const int N = nq + nr + 1;
@@ -277,8 +333,7 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
   if (na > 0) D.noalias() = Wt.transpose().lazyProduct(kd(active).asDiagonal() * B);
   // Row of the coupled block k in state numbering.
   auto row_of = [&](int k) { return k < nq ? nq + k : (k < N - 1 ? 2 * nq + (k - nq) : Z + 1); };
-  const double Omega = plan_.speed(t) / M.tyre.config.outer_radius_m;
-  const double dOmega = plan_.acceleration(t) / M.tyre.config.outer_radius_m;
+  const double Omega = spin(t), dOmega = spin_rate(t);
   const double adv = Omega / M.tyre.dtheta_rad;
 
   J.clear(n);
@@ -293,13 +348,10 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
       double v = D(kk, k);
       if (k < nq) {  // modal terms of column q_j
         const int j = k;
-        if (kk == j) {
-          v -= M.omega[j] * M.omega[j];
-          if (M.partner[j] >= 0) v += std::pow(M.order[j] * Omega, 2);
-        } else if (kk < nq && M.partner[kk] == j && Omega != 0) {
-          const double b = M.order[kk] * Omega, al = M.order[kk] * dOmega;
-          v += M.pair_sign[kk] * (2 * M.zeta[kk] * M.omega[kk] * b + al);
-        }
+        if (kk == j)
+          v += modal_row(M, j, Omega, dOmega).dq;
+        else if (kk < nq && M.partner[kk] == j)
+          v += modal_row(M, kk, Omega, dOmega).dq_p;
       } else if (k < N - 1 && kk == k) {
         v -= 1.0 / M.tau_residual_s;
       }
@@ -331,8 +383,8 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
     push(j, 1.0);
     const int p = M.partner[j];
     // Row nq + p (partner's acceleration) and nq + j (own), in increasing order.
-    std::vector<std::pair<int, double>> rows = {{nq + j, -2 * M.zeta[j] * M.omega[j]}};
-    if (p >= 0) rows.push_back({nq + p, M.pair_sign[p] * 2 * M.order[p] * Omega});
+    std::vector<std::pair<int, double>> rows = {{nq + j, modal_row(M, j, Omega, dOmega).dv}};
+    if (p >= 0) rows.push_back({nq + p, modal_row(M, p, Omega, dOmega).dv_p});
     std::sort(rows.begin(), rows.end());
     for (auto& [r, v] : rows) push(r, v);
   }

@@ -56,10 +56,11 @@ struct TransientRunOptions {
   /// Re-initialise CVODE at every located contact switch (BDF history discarded) instead of
   /// continuing over the kink; implies locate_switches. Slower, kept for comparisons.
   bool restart_at_switches = false;
-  /// Newton's linear systems: the Schur complement on the carcass and hub (solvers/arrow_lu.h,
-  /// the default) or KLU on the whole sparse Jacobian (the general solver, kept for
-  /// comparisons; docs/transient.md section 6 has the measurements).
-  enum class NewtonSolver { schur, klu };
+  /// Newton's linear systems: the Schur complement through the contact's low rank
+  /// (contact_newton.h, the default), the dense Schur complement on the carcass and hub from the
+  /// sparse Jacobian (solvers/arrow_lu.h), or KLU on the whole sparse Jacobian (the general
+  /// solver); the last two kept for comparisons (docs/transient.md section 6).
+  enum class NewtonSolver { schur, arrow, klu };
   NewtonSolver newton_solver = NewtonSolver::schur;
 };
 

@@ -77,6 +77,16 @@ struct TransientModel {
   modal::LagKernels residual_kernels;  ///< radial/tangential kernels of the residual orders
   int residual_min_order = 0;
   double residual_min_omega = 0;
+  // Contact basis: the carcass's vertical displacement at the units lies in a space of small
+  // rank (the default carcass's 44 shapes are trigonometric of orders 0-6 in theta: rank 13).
+  // [psi V] = T [Cq Cr] exactly (SVD, singular values below kContactBasisCutoff of the largest
+  // dropped: rounding level), so u = T xi with xi = Cq q + Cr r, and the generalised forces are
+  // psi^T f = Cq^T (T^T f), V^T f = Cr^T (T^T f): every product over the units costs rank
+  // instead of nq + nr per unit, and the contact's coupling in Newton's matrix has that rank.
+  int rank = 0;
+  Eigen::MatrixXd T;          ///< m x rank
+  Eigen::MatrixXd T_by_unit;  ///< T^T (rank x m): a unit per column
+  Eigen::MatrixXd Cq, Cr;     ///< rank x nq, rank x nr
   // Tread.
   Eigen::VectorXd k_relaxed;         ///< k_i [N/m]
   Eigen::VectorXd k_contact;         ///< spring between penetration and force: k_i (off) or k_g

@@ -18,6 +18,19 @@
 
 namespace modaltyre::transient {
 
+/// Upwind stencil of the tread advection, de/dtheta ~ (c0 e_i + c1 e_{i+1} + c2 e_{i+2}) / dtheta:
+/// second-order one-sided from the front. First order (-1, 1, 0) converged the rolling resistance
+/// at O(dtheta): 59.3 / 60.6 / 61.2 / 61.5 N at 2 / 1 / 0.5 / 0.25 mm, against 61.3 / 61.6 /
+/// 61.7 / 61.8 N with this one (60 km/h, docs/transient.md section 1).
+inline constexpr double kUpwind[3] = {-1.5, 2.0, -0.5};
+
+/// Derivatives of the acceleration v_j' of dynamic coordinate j with respect to q_j, v_j and its
+/// pair partner's q_p, v_p (ground-frame rolling terms; 0 without a partner or at rest).
+struct ModalRow {
+  double dq = 0, dv = 0, dq_p = 0, dv_p = 0;
+};
+ModalRow modal_row(const TransientModel& M, int j, double Omega, double dOmega);
+
 /// The ODE of a model under a scenario (public for tests: energy, Jacobian checks).
 class TransientSystem {
  public:
@@ -26,6 +39,13 @@ class TransientSystem {
   void rhs(double t, const double* y, double* ydot) const;
   void jacobian(double t, const double* y, solvers::CscMatrix& J) const;
   void roots(double t, const double* y, double* g) const;
+  /// d f_i / d g_i for Newton's matrix: k_contact on the units in contact, and, while units are
+  /// switching (contact_switched() since the last call), on those within 2 mm beyond the patch
+  /// ends too; 0 elsewhere (m entries).
+  void jacobian_stiffness(double t, const double* y, Eigen::VectorXd& kd) const;
+  /// Rolling speed of the carcass Omega = V / R0 and its rate at t.
+  double spin(double t) const;
+  double spin_rate(double t) const;
   /// Contact forces f_i at (t, y).
   Eigen::VectorXd forces(double t, const double* y) const;
   /// Road height and slope at unit i at time t.
@@ -46,33 +66,44 @@ class TransientSystem {
   /// inside the implicit steps, and the root finder's passes over m functions per step are
   /// saved.
   int update_contact_set(double t, const double* y) const;
+  /// g_i where a unit can touch, -1 m elsewhere: units whose sag exceeds z + max h + a bound of
+  /// |u_i| + e_i from the state (reach()) have g_i < 0 for certain. The forces need only these;
+  /// the m x nq product over the whole window was a third of a step.
+  void tip_penetration_in_reach(double t, const double* y, Eigen::VectorXd& g) const;
+  /// Adds the road height h(x_i, t) to g over the units [lo, hi] (cleat only).
+  void add_road(double t, int lo, int hi, Eigen::VectorXd& g) const;
+  /// g_i of one unit.
+  double tip_penetration_at(double t, const double* y, int i) const;
   int64_t nnz() const;
 
  private:
   /// g_i = z + h_i - s_i - u_i (- e_i): the tread tip's penetration (root functions).
   void tip_penetration(double t, const double* y, Eigen::VectorXd& g) const;
-  /// The same where a unit can touch, -1 m elsewhere: units whose sag exceeds z + max h + a
-  /// bound of |u_i| + e_i from the state (reach_bound()) have g_i < 0 for certain. The forces
-  /// need only these; the m x nq product over the whole window was a third of a step.
-  void tip_penetration_in_reach(double t, const double* y, Eigen::VectorXd& g) const;
-  /// Units [lo, hi] that can touch at (t, y) (empty if hi < lo).
-  void reach(double t, const double* y, int& lo, int& hi) const;
-  /// Adds the road height h(x_i, t) to g over the units [lo, hi] (cleat only).
-  void add_road(double t, int lo, int hi, Eigen::VectorXd& g) const;
+  /// xi = Cq q + Cr r into scratch_xi_ (u = T xi, model.h's contact basis).
+  void contact_coordinates(const double* y) const;
+  /// Units [lo, hi] that can touch at y (empty if hi < lo), xi from contact_coordinates():
+  /// bounds of g from the last accepted state (update_contact_set()) or, before one, from rest.
+  void reach(const double* y, int& lo, int& hi) const;
   void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
 
   const TransientModel& model_;
   const ScenarioPlan& plan_;
   // Work vectors of rhs() and roots(): the integrator calls them thousands of times, so they
   // are not allocated per call (one TransientSystem per run and thread).
-  mutable Eigen::VectorXd scratch_f_, scratch_G_, scratch_Vf_, scratch_g_;
+  mutable Eigen::VectorXd scratch_f_, scratch_G_, scratch_Vf_, scratch_g_, scratch_xi_,
+      scratch_phi_;
   /// Units in the Jacobian's sparsity pattern (ever in contact at a Jacobian evaluation).
   mutable std::vector<char> in_pattern_;
   /// Contact set at the last accepted step (update_contact_set()).
   mutable std::vector<char> in_contact_;
   mutable long switches_since_jacobian_ = 0;
-  /// max_i |psi_ij| and max_i |V_il|: |u_i| <= sum_j shape_max_j |q_j| for every unit.
-  Eigen::VectorXd shape_max_;
+  /// Reach reference (update_contact_set()): p_ref = z - s - T xi over the window at the last
+  /// accepted state, and its xi and z (empty before the first accepted step).
+  mutable Eigen::VectorXd p_ref_, xi_ref_;
+  mutable double z_ref_ = 0;
+  Eigen::VectorXd inv_c_kv_, k_over_c_kv_;  ///< 1 / c' and k' / c' per unit (relaxation on)
+  /// max_i |T_i|: |u_i| <= basis_row_norm_max_ |xi| for every unit.
+  double basis_row_norm_max_ = 0;
   int centre_ = 0;  ///< unit of least sag (the sag grows on both sides of it)
 };
 

@@ -1,0 +1,87 @@
+// The transient model's contact basis ([psi V] = T [Cq Cr]) and the Newton solver built on its
+// low rank (contact_newton.h): exact reformulations, so they are checked against the plain
+// shapes and against a dense LU of Newton's matrix assembled from the sparse Jacobian.
+#include "modaltyre/transient/contact_newton.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "modaltyre/transient/transient.h"
+
+namespace modaltyre::transient {
+namespace {
+
+using namespace modaltyre::contact;
+
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+// Both are exact up to rounding: the basis drops singular values below 1e-13 of the largest,
+// the solver's Woodbury capacitance matrix is of order one.
+constexpr double kBasisTol = 1e-12;
+constexpr double kSolveTol = 1e-9;
+
+TransientModel model_with(const std::vector<std::string>& extra) {
+  std::vector<std::string> o = {"contact.unit_length_mm=5", "contact.window_mm=220",
+                                "transient.dynamic_max_order=16"};
+  o.insert(o.end(), extra.begin(), extra.end());
+  return build_transient_model(build_tyre_model(load_tyre_config(kConfig, o)));
+}
+
+struct Carcass {
+  const char* name;
+  std::vector<std::string> overrides;
+};
+const Carcass kCarcasses[] = {{"measured_orders", {}},
+                              {"extended_with_residual", {"modal.extend_orders=true"}}};
+void PrintTo(const Carcass& c, std::ostream* os) { *os << c.name; }
+
+class ContactNewtonTest : public ::testing::TestWithParam<Carcass> {};
+
+TEST_P(ContactNewtonTest, ContactBasisReproducesTheShapes) {
+  const TransientModel M = model_with(GetParam().overrides);
+  ASSERT_GT(M.rank, 0);
+  ASSERT_LE(M.rank, M.nq + M.nr);
+  const double scale = std::max(M.psi.cwiseAbs().maxCoeff(), 1e-300);
+  EXPECT_LT((M.T * M.Cq - M.psi).cwiseAbs().maxCoeff(), kBasisTol * scale);
+  if (M.nr > 0) {
+    EXPECT_LT((M.T * M.Cr - M.V).cwiseAbs().maxCoeff(), kBasisTol * M.V.cwiseAbs().maxCoeff());
+  }
+}
+
+TEST_P(ContactNewtonTest, SolvesNewtonsSystemLikeADenseLu) {
+  // Rolling during the speed ramp (advection, rolling pair terms, Omega' != 0), relaxation on,
+  // a perturbed static state: every block of Newton's matrix is non-trivial.
+  std::vector<std::string> o = GetParam().overrides;
+  o.push_back("transient.rolling.ramp_s=1");
+  const TransientModel M = model_with(o);
+  const ScenarioPlan plan = plan_scenario(M, Scenario::rolling);
+  TransientSystem sys(M, plan);
+  std::vector<double> y = sys.static_state(4000);
+  for (int k = 0; k < M.z_index(); ++k) y[k] *= 1.0 + 0.05 * std::sin(1.7 * k);
+  const double t = 0.5;
+  solvers::CscMatrix J;
+  sys.jacobian(t, y.data(), J);
+  const int n = sys.size();
+  for (const double gamma : {1e-5, 4e-4}) {
+    SCOPED_TRACE(gamma);
+    Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n, n);
+    for (int c = 0; c < n; ++c)
+      for (int64_t p = J.col_ptr[c]; p < J.col_ptr[c + 1]; ++p)
+        A(J.row[p], c) -= gamma * J.value[p];
+    ContactNewton newton(M, sys);
+    ASSERT_TRUE(newton.setup(t, y.data(), gamma, false));
+    Eigen::VectorXd b(n);
+    for (int k = 0; k < n; ++k) b(k) = std::cos(0.7 * k) * (1.0 + k % 5);
+    Eigen::VectorXd x = b;
+    newton.solve(x.data());
+    const Eigen::VectorXd want = A.partialPivLu().solve(b);
+    EXPECT_LT((x - want).cwiseAbs().maxCoeff(), kSolveTol * want.cwiseAbs().maxCoeff());
+    EXPECT_LT((A * x - b).cwiseAbs().maxCoeff(), kSolveTol * b.cwiseAbs().maxCoeff());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Carcasses, ContactNewtonTest, ::testing::ValuesIn(kCarcasses),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace modaltyre::transient

@@ -1,0 +1,208 @@
+#include "modaltyre/transient/contact_newton.h"
+
+#include <cmath>
+
+namespace modaltyre::transient {
+
+ContactNewton::ContactNewton(const TransientModel& model, const TransientSystem& system)
+    : M_(model), sys_(system) {
+  nx_ = model.e_index();
+  ne_ = model.settings.relaxation ? model.m : 0;
+  np_ = model.rank + 1;
+  const int nq = model.nq;
+  for (int j = 0; j < nq; ++j) {
+    const int p = model.partner[j];
+    if (p >= 0 && p < j) continue;  // the pair's block is the first member's
+    Block b;
+    if (p < 0) {
+      b.n = 2;
+      b.idx[0] = j, b.idx[1] = nq + j;
+    } else {
+      b.n = 4;
+      b.idx[0] = j, b.idx[1] = p, b.idx[2] = nq + j, b.idx[3] = nq + p;
+    }
+    blocks_.push_back(b);
+  }
+  eta_.resize(np_);
+  work_x_.resize(nx_);
+  work_e_.resize(ne_);
+}
+
+bool ContactNewton::setup(double t, const double* y, double gamma, bool jacobian_ok) {
+  if (!jacobian_ok || !jacobian_ready_) {
+    sys_.jacobian_stiffness(t, y, kd_);
+    active_.clear();
+    for (int i = 0; i < M_.m; ++i)
+      if (kd_(i) > 0) active_.push_back(i);
+    Tt_active_.resize(static_cast<Eigen::Index>(active_.size()), np_);
+    for (std::size_t a = 0; a < active_.size(); ++a) {
+      Tt_active_.row(a).head(M_.rank) = -M_.T.row(active_[a]);
+      Tt_active_(a, M_.rank) = 1.0;
+    }
+    Omega_ = sys_.spin(t);
+    dOmega_ = sys_.spin_rate(t);
+    jacobian_ready_ = true;
+  }
+  factor(gamma);
+  const Eigen::MatrixXd& lu = cap_.matrixLU();
+  return lu.allFinite() && (lu.diagonal().array() != 0).all() && ee_d_.allFinite() &&
+         (ee_d_.array() != 0).all();
+}
+
+void ContactNewton::factor(double gamma) {
+  const auto& M = M_;
+  const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank;
+  gamma_ = gamma;
+  // D = I - gamma A, block by block (A: q' = v and the modal rows).
+  for (Block& b : blocks_) {
+    Eigen::Matrix4d d = Eigen::Matrix4d::Identity();
+    const int h = b.n / 2;  // q entries first, then v
+    for (int a = 0; a < h; ++a) {
+      d(a, h + a) = -gamma;  // q' = v
+      const ModalRow r = modal_row(M, b.idx[a], Omega_, dOmega_);
+      const int o = h == 2 ? 1 - a : a;  // the partner's local index (itself without one)
+      d(h + a, a) -= gamma * r.dq;
+      d(h + a, h + a) -= gamma * r.dv;
+      if (h == 2) {
+        d(h + a, o) -= gamma * r.dq_p;
+        d(h + a, h + o) -= gamma * r.dv_p;
+      }
+    }
+    b.inv = d.inverse();
+  }
+  d_r_inv_ = nr > 0 ? 1.0 / (1.0 + gamma / M.tau_residual_s) : 1.0;
+  d_zw_ = gamma;
+  // M_EE and Y = M_EE^-1 diag(kd / c') T~ over the active range (zero beyond its last unit).
+  const int na = static_cast<int>(active_.size());
+  Eigen::MatrixXd Ty = Tt_active_;  // T~ - gamma Y on the active rows
+  if (ne_ > 0) {
+    const double adv = Omega_ / M.tyre.dtheta_rad;
+    ee_s1_ = -gamma * kUpwind[1] * adv;
+    ee_s2_ = -gamma * kUpwind[2] * adv;
+    ee_d_.resize(ne_);
+    for (int i = 0; i < ne_; ++i)
+      ee_d_(i) = 1.0 - gamma * (kUpwind[0] * adv - (kd_(i) + M.k_kv(i)) / M.c_kv(i));
+    ee_d_inv_ = ee_d_.cwiseInverse();
+    if (na > 0) {
+      const int lo = active_.front(), hi = active_.back();
+      Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(hi - lo + 1, np_);
+      for (int a = na - 1, i = hi; i >= lo; --i) {
+        const int k = i - lo;
+        if (a >= 0 && active_[a] == i) Y.row(k) = kd_(i) / M.c_kv(i) * Tt_active_.row(a--);
+        if (k + 1 < Y.rows()) Y.row(k) -= ee_s1_ * Y.row(k + 1);
+        if (k + 2 < Y.rows()) Y.row(k) -= ee_s2_ * Y.row(k + 2);
+        Y.row(k) /= ee_d_(i);
+      }
+      for (int a = 0; a < na; ++a) Ty.row(a) -= gamma * Y.row(active_[a] - lo);
+    }
+  } else {
+    ee_d_.resize(0);
+    ee_d_inv_.resize(0);
+  }
+  // K = T~^T diag(kd) (T~ - gamma Y), coefficient-based (Eigen's GEMM would start OpenMP threads
+  // for a product this small; the library is built with OpenMP for sweeps).
+  Eigen::VectorXd kd_active(na);
+  for (int a = 0; a < na; ++a) kd_active(a) = kd_(active_[a]);
+  K_.setZero(np_, np_);
+  if (na > 0) K_.noalias() = Tt_active_.transpose().lazyProduct(kd_active.asDiagonal() * Ty);
+  // Capacitance I - gamma (P D^-1 Q) K, column k of P D^-1 Q from the unit force on eta_k.
+  Eigen::MatrixXd H(np_, np_);
+  for (int k = 0; k < np_; ++k) {
+    work_x_.setZero();
+    if (k < rank) {
+      work_x_.segment(nq, nq) = -M.Cq.row(k).transpose();
+      if (nr > 0)
+        work_x_.segment(2 * nq, nr) =
+            -(M.lambda.array() / M.tau_residual_s * M.Cr.row(k).transpose().array()).matrix();
+    } else {
+      work_x_(Z + 1) = -1.0 / M.settings.hub_mass_kg;
+    }
+    solve_d(work_x_.data());
+    H.col(k).head(rank).noalias() = M.Cq * work_x_.head(nq);
+    if (nr > 0) H.col(k).head(rank).noalias() += M.Cr * work_x_.segment(2 * nq, nr);
+    H(rank, k) = work_x_(Z);
+  }
+  Eigen::MatrixXd cap = Eigen::MatrixXd::Identity(np_, np_);
+  cap.noalias() -= gamma * H.lazyProduct(K_);
+  cap_.compute(cap);
+}
+
+void ContactNewton::solve_d(double* x) const {
+  for (const Block& b : blocks_) {
+    Eigen::Vector4d v = Eigen::Vector4d::Zero();
+    for (int a = 0; a < b.n; ++a) v(a) = x[b.idx[a]];
+    const Eigen::Vector4d r = b.inv * v;
+    for (int a = 0; a < b.n; ++a) x[b.idx[a]] = r(a);
+  }
+  const int nq = M_.nq, Z = M_.z_index();
+  for (int l = 0; l < M_.nr; ++l) x[2 * nq + l] *= d_r_inv_;
+  x[Z] += d_zw_ * x[Z + 1];
+}
+
+void ContactNewton::solve_ee(double* y) const {
+  if (ee_s1_ == 0 && ee_s2_ == 0) {  // at rest: diagonal
+    Eigen::Map<Eigen::VectorXd>(y, ne_).array() *= ee_d_inv_.array();
+    return;
+  }
+  for (int i = ne_ - 1; i >= 0; --i) {
+    double v = y[i];
+    if (i + 1 < ne_) v -= ee_s1_ * y[i + 1];
+    if (i + 2 < ne_) v -= ee_s2_ * y[i + 2];
+    y[i] = v * ee_d_inv_(i);
+  }
+}
+
+void ContactNewton::solve(double* x) const {
+  const auto& M = M_;
+  const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank;
+  const int na = static_cast<int>(active_.size());
+  Eigen::Map<Eigen::VectorXd> xx(x, nx_);
+  // Q phi added to the X rows (phi: forces on eta).
+  auto add_q = [&](const Eigen::VectorXd& phi, Eigen::Ref<Eigen::VectorXd> out) {
+    out.segment(nq, nq).noalias() -= M.Cq.transpose() * phi.head(rank);
+    if (nr > 0)
+      out.segment(2 * nq, nr).array() -=
+          M.lambda.array() / M.tau_residual_s * (M.Cr.transpose() * phi.head(rank)).array();
+    out(Z + 1) -= phi(rank) / M.settings.hub_mass_kg;
+  };
+  auto apply_p = [&](const Eigen::Ref<const Eigen::VectorXd>& in, Eigen::VectorXd& eta) {
+    eta.head(rank).noalias() = M.Cq * in.head(nq);
+    if (nr > 0) eta.head(rank).noalias() += M.Cr * in.segment(2 * nq, nr);
+    eta(rank) = in(Z);
+  };
+  double* xe = x + nx_;
+  if (ne_ > 0 && na > 0) {
+    // b_X - M_XE M_EE^-1 b_E.
+    Eigen::Map<Eigen::VectorXd> be(xe, ne_);
+    work_e_ = be;
+    solve_ee(work_e_.data());
+    work_a_.resize(na);
+    for (int a = 0; a < na; ++a) work_a_(a) = kd_(active_[a]) * work_e_(active_[a]);
+    eta_.noalias() = Tt_active_.transpose() * work_a_;
+    eta_ *= -gamma_;
+    add_q(eta_, xx);
+  }
+  // S^-1 by Woodbury: x0 = D^-1 b, x = x0 + D^-1 gamma Q K (cap^-1 P x0).
+  solve_d(x);
+  apply_p(xx, eta_);
+  const Eigen::VectorXd w = cap_.solve(eta_);
+  eta_.noalias() = gamma_ * (K_ * w);
+  work_x_.setZero();
+  add_q(eta_, work_x_);
+  solve_d(work_x_.data());
+  xx += work_x_;
+  if (ne_ > 0) {
+    // x_E = M_EE^-1 (b_E - M_EX x_X), M_EX = -gamma diag(kd / c') T~ P.
+    if (na > 0) {
+      apply_p(xx, eta_);
+      work_a_.noalias() = Tt_active_ * eta_;
+      for (int a = 0; a < na; ++a) {
+        const int i = active_[a];
+        xe[i] += gamma_ * kd_(i) / M.c_kv(i) * work_a_(a);
+      }
+    }
+    solve_ee(xe);
+  }
+}
+
+}  // namespace modaltyre::transient
