@@ -1,5 +1,6 @@
 // modaltyre discover CONFIG MEASURED.csv [--set key=value]... [--json] [--plot FILE]
 //                   [--out-config FILE] [--threads N] [--unit-length-mm L] [--max-effects N]
+//                   [--exact-rows N]
 //
 // Locates where the model and the measurements disagree, names the missing effect (if any is
 // significant) and writes the augmented config. Exit 0 whether or not an effect is named
@@ -15,12 +16,12 @@
 
 #include "cli_support.h"
 #include "commands.h"
-#include "modaltyre/studies/measurements.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/core/progress.h"
 #include "modaltyre/discover/discover.h"
+#include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::app {
 namespace {
@@ -37,6 +38,7 @@ struct DiscoverArgs {
   int threads = 0;
   double unit_length_mm = 2;
   int max_effects = 2;
+  int exact_rows = 64;
 };
 
 nlohmann::json gaps(const std::map<std::string, double>& m) {
@@ -88,7 +90,9 @@ std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
 
 void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet& data) {
   std::cout << "discover: " << data.path << ", " << data.rows.size() << " rows; evaluated on "
-            << r.evaluation_mesh << "\n\nGap (RMS of (predicted - measured) / measured):\n";
+            << r.evaluation_mesh << "\n";
+  if (r.method != "exact") std::cout << "method: " << r.method << "\n";
+  std::cout << "\nGap (RMS of (predicted - measured) / measured):\n";
   std::cout << "  observable              config   baseline  baseline(CV)    after  after(CV)\n";
   for (const auto& kv : r.gap_before) {
     const auto& o = kv.first;
@@ -230,6 +234,10 @@ void register_discover(CLI::App& app) {
       ->check(CLI::Range(0.0, 50.0));
   cmd->add_option("--max-effects", a->max_effects, "effects to name at most (default 2)")
       ->check(CLI::Range(1, 9));
+  cmd->add_option("--exact-rows", a->exact_rows,
+                  "fit and cross-validate exactly up to this many rows, above by a subset search "
+                  "and one-step cross-validation (default 64; docs/discover.md)")
+      ->check(CLI::Range(4, 1000000));
   cmd->callback([a] {
     // CLI::Range lets NaN through (every comparison with it is false).
     if (!std::isfinite(a->unit_length_mm)) {
@@ -258,17 +266,21 @@ void register_discover(CLI::App& app) {
     opt.threads = a->threads;
     opt.unit_length_mm = a->unit_length_mm;
     opt.max_effects = a->max_effects;
+    opt.fit.exact_rows = a->exact_rows;
+    // One bar per phase on stderr (a terminal only): the baseline's fit and cross-validation,
+    // then each round's candidates, a tick per fit and per cross-validation (done = 0 opens a
+    // phase).
     std::mutex m;
     std::unique_ptr<ProgressBar> bar;
-    int round = 0;
-    opt.progress = [&](int done, int total) {
+    std::string phase;
+    opt.progress = [&](const std::string& p, int done, int total) {
       std::lock_guard<std::mutex> lock(m);
-      if (!bar || done == 1) {
+      if (!bar || p != phase) {
         if (bar) bar->finish();
-        bar = std::make_unique<ProgressBar>(static_cast<std::size_t>(total),
-                                            "discover round " + std::to_string(++round));
+        phase = p;
+        bar = std::make_unique<ProgressBar>(static_cast<std::size_t>(total), "discover " + p);
       }
-      bar->tick();
+      if (done > 0) bar->tick();
     };
     const discover::DiscoverReport r = discover::discover(cfg, data, opt);
     if (bar) bar->finish();
@@ -338,6 +350,9 @@ void register_discover(CLI::App& app) {
         {"final_parameters", values(r.final_parameters)},
         {"residuals", rows},
         {"fits", r.fits},
+        {"evaluations", r.evaluations},
+        {"footprints", r.footprints},
+        {"method", r.method},
         {"conclusion", r.conclusion}};
     if (!a->out_config.empty()) j["out_config"] = a->out_config;
     check_finite(j);
