@@ -15,6 +15,11 @@ int main(int argc, char** argv) {
       "ModalTyre: tyre-road contact from experimental modal parameters (seed 001, Guan Dihua "
       "rolling theory) and rheological parameter identification (seed 000)."};
   app.require_subcommand(1);
+  // Usage errors as one line like every other input error (exit 2): "error: --load: ...".
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "error: " + std::string(e.what()) + " (see modaltyre <command> --help)\n";
+  });
+  app.set_version_flag("--version", "modaltyre 0.1.0");
   modaltyre::app::register_fit_modes(app);
   modaltyre::app::register_footprint(app);
   modaltyre::app::register_identify(app);

@@ -15,6 +15,7 @@ constexpr double kPi = 3.14159265358979323846;
 // Angles are typed by hand in degrees; 1 % of the spacing separates a rounding from a misplacement.
 constexpr double kSpacingTolerance = 0.01;
 constexpr double kMaxShape = 1e6;  // kg^-1/2
+constexpr double kMaxFrequency_Hz = 1e5;
 
 int as_index(const CsvTable& t, std::size_t row, const std::string& col) {
   const double v = t.number(row, col);
@@ -28,13 +29,13 @@ int as_index(const CsvTable& t, std::size_t row, const std::string& col) {
 
 HammerData read_hammer_csv(const std::string& path) {
   CsvSchema schema;
-  schema.required = {"mode", "freq_hz", "damping_ratio", "point", "angle_deg", "radial",
-                     "tangential"};
+  schema.required = {"mode",      "freq_hz", "damping_ratio", "point",
+                     "angle_deg", "radial",  "tangential"};
   const CsvTable t = read_csv(path, schema);
 
   HammerData data;
   data.path = path;
-  std::map<int, std::size_t> index;  // mode id -> position in data.modes
+  std::map<int, std::size_t> index;               // mode id -> position in data.modes
   std::map<std::pair<int, int>, int> seen_point;  // (mode, point) -> line
   for (std::size_t r = 0; r < t.rows(); ++r) {
     const int line = t.line(r);
@@ -42,7 +43,11 @@ HammerData read_hammer_csv(const std::string& path) {
     const int point = as_index(t, r, "point");
     const double f = t.number(r, "freq_hz");
     const double z = t.number(r, "damping_ratio");
-    if (f <= 0) throw InputError({path, line, "freq_hz"}, "frequency must be > 0 Hz");
+    // A tyre's structural modes lie below a few kHz; 100 kHz is a unit error (and its squared
+    // circular frequency would overflow the carcass kernel long before 1e308 Hz).
+    if (!(f > 0 && f <= kMaxFrequency_Hz)) {
+      throw InputError({path, line, "freq_hz"}, "frequency must be in (0, 1e5] Hz");
+    }
     if (z < 0 || z >= 1) {
       throw InputError({path, line, "damping_ratio"},
                        "damping ratio must be in [0, 1) (a fraction, not a percentage)");
@@ -50,8 +55,8 @@ HammerData read_hammer_csv(const std::string& path) {
     if (auto it = seen_point.find({id, point}); it != seen_point.end()) {
       throw InputError({path, line, "point"}, "duplicate point " + std::to_string(point) +
                                                   " of mode " + std::to_string(id) +
-                                                  " (first at line " +
-                                                  std::to_string(it->second) + ")");
+                                                  " (first at line " + std::to_string(it->second) +
+                                                  ")");
     }
     seen_point[{id, point}] = line;
     auto [it, inserted] = index.try_emplace(id, data.modes.size());

@@ -94,7 +94,10 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
     }
     if (t.has("hold_s")) {
       c.hold_s = t.number(i, "hold_s");
-      if (!(c.hold_s >= 0)) throw InputError(at("hold_s"), "hold time must be >= 0 s");
+      // The sweep's limit on condition values: 1e7 s (116 days) is far past any creep.
+      if (!(c.hold_s >= 0 && c.hold_s <= 1e7)) {
+        throw InputError(at("hold_s"), "hold time must be in [0, 1e7] s");
+      }
     }
     if (t.has("speed_kmh")) {
       c.speed_kmh = t.number(i, "speed_kmh");
