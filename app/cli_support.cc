@@ -62,11 +62,4 @@ std::string fixed(double v, int decimals) {
   return buf;
 }
 
-double round_sig(double v, int digits) {
-  if (v == 0 || !std::isfinite(v)) return v;
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return std::strtod(buf, nullptr);
-}
-
 }  // namespace modaltyre::app

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/core/number_format.h"
+
 namespace modaltyre::app {
 
 /// Ends the program with `code` and no message: the message was printed by another process
@@ -31,6 +33,6 @@ CLI::Validator physical_range(double lo, double hi, const std::string& unit, con
 std::string fixed(double v, int decimals);
 
 /// Rounds to a number of significant digits for JSON (keeps output stable and readable).
-double round_sig(double v, int digits = 10);
+using modaltyre::round_sig;
 
 }  // namespace modaltyre::app

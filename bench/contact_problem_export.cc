@@ -1,8 +1,11 @@
 // Exports one footprint contact problem (compliance C, initial gaps s) together with this
-// project's solution and its median solve time, for bench/compare_nnls.py.
+// project's solutions and their median solve times, for bench/compare_nnls.py: the solver on
+// the exported dense matrix, and the footprint's own solve (the matrix-free Toeplitz operator of
+// the contact block, FFT products, what `modaltyre footprint` runs).
 //   contact_problem_export M FILE [REPEATS]
 // File layout (little-endian): int64 m; m*m doubles C (column-major); m doubles s;
-// m doubles f (solution); double delta (sinking); double median solve time [s].
+// m doubles f (dense solution); double delta (sinking); double median solve time [s];
+// m doubles f, double delta, double median time [s] of the footprint's solve.
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -45,6 +48,25 @@ int main(int argc, char** argv) {
   }
   std::sort(times.begin(), times.end());
   const double median = times[times.size() / 2];
+  // The footprint's own solve of the same load case (matrix-free, warm nothing).
+  std::vector<double> mf_times;
+  contact::FootprintResult fr;
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    fr = contact::solve_footprint(model, contact::LoadCase{p.load_N, 0});
+    mf_times.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  if (!fr.converged) {
+    std::fprintf(stderr, "footprint solve did not converge: %s\n", fr.message.c_str());
+    return 1;
+  }
+  std::sort(mf_times.begin(), mf_times.end());
+  const double mf_median = mf_times[mf_times.size() / 2];
+  std::vector<double> f_mf(sol.force.size(), 0.0);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < f_mf.size(); ++i)
+    if (fr.active[i]) f_mf[i] = fr.units.at(k++).fz_N;
   std::ofstream out(argv[2], std::ios::binary);
   const std::int64_t m = model.candidates();
   out.write(reinterpret_cast<const char*>(&m), sizeof m);
@@ -53,5 +75,8 @@ int main(int argc, char** argv) {
   out.write(reinterpret_cast<const char*>(sol.force.data()), sizeof(double) * m);
   out.write(reinterpret_cast<const char*>(&sol.approach_m), sizeof(double));
   out.write(reinterpret_cast<const char*>(&median), sizeof(double));
+  out.write(reinterpret_cast<const char*>(f_mf.data()), sizeof(double) * m);
+  out.write(reinterpret_cast<const char*>(&fr.sinking_m), sizeof(double));
+  out.write(reinterpret_cast<const char*>(&mf_median), sizeof(double));
   return out ? 0 : 1;
 }

@@ -10,9 +10,8 @@ namespace modaltyre::rheology {
 
 SoilData read_soil_rolling_csv(const std::string& path) {
   CsvSchema schema;
-  schema.required = {"load_N",           "longitudinal_force_N", "alpha1_deg",
-                     "alpha2_deg",       "total_sinking_mm",     "elastic_sinking_mm",
-                     "layer_mm",         "speed_m_s"};
+  schema.required = {"load_N",           "longitudinal_force_N", "alpha1_deg", "alpha2_deg",
+                     "total_sinking_mm", "elastic_sinking_mm",   "layer_mm",   "speed_m_s"};
   const CsvTable t = read_csv(path, schema);
   SoilData d;
   d.path = path;
@@ -41,7 +40,8 @@ SoilData read_soil_rolling_csv(const std::string& path) {
     if (s.total_sinking_m <= 0) bad("total_sinking_mm", "must be > 0 mm");
     if (!(s.elastic_sinking_m > 0 && s.elastic_sinking_m <= s.total_sinking_m))
       bad("elastic_sinking_mm", "must be in (0, total_sinking_mm]");
-    if (s.layer_m <= s.total_sinking_m) bad("layer_mm", "the deformed layer must be thicker than the total sinking");
+    if (s.layer_m <= s.total_sinking_m)
+      bad("layer_mm", "the deformed layer must be thicker than the total sinking");
     if (s.speed_m_s <= 0) bad("speed_m_s", "must be > 0 m/s");
     d.rows.push_back(s);
   }
@@ -63,9 +63,9 @@ SoilCoefficients soil_coefficients(const SoilRow& s, const SoilOptions& o) {
   const double Jc2 = -V / Ac * (1 - std::cos(a2));
   const double Js2 = -V / Ac * (std::atanh(std::sin(a2)) - std::sin(a2));
   SoilCoefficients c;
-  c.z_E = kE * Ic1 + Ic2;    // seed 000 eq. (25)
+  c.z_E = kE * Ic1 + Ic2;  // seed 000 eq. (25)
   c.z_eta = kE * Jc1 + Jc2;
-  c.x_E = kE * Is1 - Is2;    // seed 000 eq. (26)
+  c.x_E = kE * Is1 - Is2;  // seed 000 eq. (26)
   c.x_eta = kE * Js1 - Js2;
   return c;
 }
@@ -80,13 +80,16 @@ SoilRow soil_forces(SoilRow row, double E2, double eta2, const SoilOptions& o) {
 
 SoilResult identify_soil(const SoilData& d, const SoilOptions& o) {
   if (!(o.r0_m > 0))
-    throw InputError("soil-rolling needs the rigid wheel's radius r0 (--r0-mm or --config)");
+    throw InputError(
+        "soil-rolling needs the rigid test wheel's radius r0 (--r0-mm; a tyre config's "
+        "outer_radius_mm is the tyre's, not the test wheel's)");
   if (!(o.tread_width_m > 0))
-    throw InputError("soil-rolling needs the wheel width B_tr (--tread-width-mm or --config)");
+    throw InputError("soil-rolling needs the rigid test wheel's width B_tr (--tread-width-mm)");
   const std::size_t n = d.rows.size();
   if (n < 2)
     throw InputError({d.path, 0, ""}, "soil-rolling needs at least two rows (got " +
-                                          std::to_string(n) + ") to estimate E2 and eta2 with "
+                                          std::to_string(n) +
+                                          ") to estimate E2 and eta2 with "
                                           "standard errors");
   for (const auto& r : d.rows)
     if (r.total_sinking_m >= o.r0_m)
@@ -123,7 +126,8 @@ SoilResult identify_soil(const SoilData& d, const SoilOptions& o) {
     const SoilRow p = soil_forces(r, res.E2_Pa, res.eta2_Pa_s, o);
     res.predicted_load_N.push_back(p.load_N);
     res.predicted_longitudinal_N.push_back(p.longitudinal_force_N);
-    rss += std::pow(p.load_N - r.load_N, 2) + std::pow(p.longitudinal_force_N - r.longitudinal_force_N, 2);
+    rss += std::pow(p.load_N - r.load_N, 2) +
+           std::pow(p.longitudinal_force_N - r.longitudinal_force_N, 2);
   }
   auto& rep = res.report;
   rep.method = "soil-rolling";
@@ -134,8 +138,9 @@ SoilResult identify_soil(const SoilData& d, const SoilOptions& o) {
                     {"eta2", res.eta2_Pa_s, "Pa s", res.eta2_se},
                     {"k_E", res.k_E, "-", res.k_E_se},
                     {"relative_residual_rms", fit.residual_rms, "-", 0.0}};
-  rep.notes.push_back("E2, eta2: least squares of eq. (25)-(26) over all rows on relative "
-                      "residuals; k_E = h_E / h_G (eq. 24), mean over rows");
+  rep.notes.push_back(
+      "E2, eta2: least squares of eq. (25)-(26) over all rows on relative "
+      "residuals; k_E = h_E / h_G (eq. 24), mean over rows");
   if (!(res.E2_Pa > 0)) rep.notes.push_back("warning: E2 is not positive; check the data");
   if (!(res.eta2_Pa_s >= 0)) rep.notes.push_back("warning: eta2 is negative; check the data");
   return res;

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "modaltyre/core/errors.h"
+#include "serial_vector_ops.h"
 
 static_assert(sizeof(sunindextype) == sizeof(int64_t), "SUNDIALS must use 64-bit indices");
 static_assert(sizeof(realtype) == sizeof(double), "SUNDIALS must use double precision");
@@ -32,7 +33,8 @@ struct CvodeKlu::Impl {
   std::vector<int64_t> last_col_ptr, last_row;  // pattern KLU was analysed for
   std::string last_error;
   double stop_time = std::nan("");  // stop time CVODE currently holds (NaN: none)
-  long root_returns = 0, reinits = 0, pattern_changes = 0;
+  long root_returns = 0, reinits = 0, pattern_changes = 0, custom_setups = 0, custom_jacobians = 0;
+  double setup_gamma = 0;      // gamma of the structured solver's last setup
   std::string callback_error;  // exception text from a callback
   OdeStats before_reinit;      // CVODE's counters restart at every CVodeReInit
 
@@ -146,6 +148,83 @@ extern "C" int jac_trampoline(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, 
   }
 }
 
+// Structured linear solver (OdeProblem::linear_setup / linear_solve) as a SUNLinearSolver
+// without a matrix. CVODE sets up such a solver only through its preconditioner hooks
+// (CVodeSetPreconditioner; a matrix-embedded solver is never set up), which also pass t, y,
+// gamma and whether the last Jacobian may be reused: the solver applies that "preconditioner",
+// the exact inverse of Newton's matrix, once. Declared iterative for that reason, it does not
+// iterate (no products with J are ever asked for).
+struct CustomSolverContent {
+  void* p_data = nullptr;
+  SUNPSetupFn pset = nullptr;
+  SUNPSolveFn psol = nullptr;
+};
+
+extern "C" SUNLinearSolver_Type custom_gettype(SUNLinearSolver) {
+  return SUNLINEARSOLVER_ITERATIVE;
+}
+
+extern "C" int custom_setatimes(SUNLinearSolver, void*, SUNATimesFn) { return 0; }
+
+extern "C" int custom_setpreconditioner(SUNLinearSolver S, void* p_data, SUNPSetupFn pset,
+                                        SUNPSolveFn psol) {
+  auto* c = static_cast<CustomSolverContent*>(S->content);
+  c->p_data = p_data, c->pset = pset, c->psol = psol;
+  return 0;
+}
+
+extern "C" int custom_setup(SUNLinearSolver S, SUNMatrix) {
+  auto* c = static_cast<CustomSolverContent*>(S->content);
+  return c->pset ? c->pset(c->p_data) : -1;
+}
+
+extern "C" int custom_solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, realtype tol) {
+  auto* c = static_cast<CustomSolverContent*>(S->content);
+  return c->psol ? c->psol(c->p_data, b, x, tol, 1) : -1;
+}
+
+extern "C" int custom_free(SUNLinearSolver S) {
+  delete static_cast<CustomSolverContent*>(S->content);
+  S->content = nullptr;
+  SUNLinSolFreeEmpty(S);
+  return 0;
+}
+
+extern "C" int precond_setup(realtype t, N_Vector y, N_Vector, booleantype jok, booleantype* jcur,
+                             realtype gamma, void* user) {
+  auto* impl = static_cast<CvodeKlu::Impl*>(user);
+  try {
+    ++impl->custom_setups;
+    if (!jok) ++impl->custom_jacobians;
+    impl->setup_gamma = gamma;
+    *jcur = jok ? SUNFALSE : SUNTRUE;
+    return impl->problem.linear_setup(t, N_VGetArrayPointer(y), gamma, jok != SUNFALSE);
+  } catch (const std::exception& e) {
+    impl->callback_error = e.what();
+    return -1;
+  }
+}
+
+extern "C" int precond_solve(realtype, N_Vector, N_Vector, N_Vector r, N_Vector z, realtype gamma,
+                             realtype, int, void* user) {
+  auto* impl = static_cast<CvodeKlu::Impl*>(user);
+  try {
+    N_VScale(1.0, r, z);
+    const int flag = impl->problem.linear_solve(N_VGetArrayPointer(z));
+    // As CVODE does for its direct solvers with BDF: a matrix set up at gamma_setup, used at
+    // gamma, gives a correction too large by ~gamma / gamma_setup in the stiff components;
+    // scale it by 2 / (1 + gamma / gamma_setup). An iterative solver type gets no such
+    // correction from CVODE, and without it a very stiff tread (glassy ratio 10^4) made Newton
+    // accept growing oscillations.
+    if (flag == 0 && impl->setup_gamma > 0 && gamma != impl->setup_gamma)
+      N_VScale(2.0 / (1.0 + gamma / impl->setup_gamma), z, z);
+    return flag;
+  } catch (const std::exception& e) {
+    impl->callback_error = e.what();
+    return -1;
+  }
+}
+
 extern "C" void error_trampoline(int code, const char* module, const char* function, char* msg,
                                  void* user) {
   auto* impl = static_cast<CvodeKlu::Impl*>(user);
@@ -169,8 +248,10 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
   I.y = N_VNew_Serial(n, I.ctx);
   if (!I.y) throw ComputationError("N_VNew_Serial failed (out of memory?)");
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(I.y));
-  I.dky = N_VNew_Serial(n, I.ctx);
-  if (!I.dky) throw ComputationError("N_VNew_Serial failed (out of memory?)");
+  // CVODE clones all its work vectors from y0: they inherit the faster kernels.
+  install_serial_vector_ops(I.y);
+  I.dky = N_VClone(I.y);  // interpolate()'s output, with the same kernels
+  if (!I.dky) throw ComputationError("N_VClone failed (out of memory?)");
   I.mem = CVodeCreate(CV_BDF, I.ctx);
   if (!I.mem) throw ComputationError("CVodeCreate failed");
   check(CVodeSetErrHandlerFn(I.mem, error_trampoline, &I), "CVodeSetErrHandlerFn", I);
@@ -187,12 +268,29 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
     const double a = opt.absolute_tolerance.empty() ? 1e-10 : opt.absolute_tolerance[0];
     check(CVodeSStolerances(I.mem, opt.relative_tolerance, a), "CVodeSStolerances", I);
   }
-  I.A = SUNSparseMatrix(n, n, std::max<int64_t>(nnz_hint, n), CSC_MAT, I.ctx);
-  if (!I.A) throw ComputationError("SUNSparseMatrix failed (out of memory?)");
-  I.LS = SUNLinSol_KLU(I.y, I.A, I.ctx);
-  if (!I.LS) throw ComputationError("SUNLinSol_KLU failed");
-  check(CVodeSetLinearSolver(I.mem, I.LS, I.A), "CVodeSetLinearSolver", I);
-  check(CVodeSetJacFn(I.mem, jac_trampoline), "CVodeSetJacFn", I);
+  const bool custom = static_cast<bool>(I.problem.linear_setup);
+  MODALTYRE_CHECK(custom == static_cast<bool>(I.problem.linear_solve),
+                  "linear_setup and linear_solve go together");
+  if (custom) {
+    I.LS = SUNLinSolNewEmpty(I.ctx);
+    if (!I.LS) throw ComputationError("SUNLinSolNewEmpty failed");
+    I.LS->content = new CustomSolverContent;
+    I.LS->ops->gettype = custom_gettype;
+    I.LS->ops->setpreconditioner = custom_setpreconditioner;
+    I.LS->ops->setatimes = custom_setatimes;
+    I.LS->ops->setup = custom_setup;
+    I.LS->ops->solve = custom_solve;
+    I.LS->ops->free = custom_free;
+    check(CVodeSetLinearSolver(I.mem, I.LS, nullptr), "CVodeSetLinearSolver", I);
+    check(CVodeSetPreconditioner(I.mem, precond_setup, precond_solve), "CVodeSetPreconditioner", I);
+  } else {
+    I.A = SUNSparseMatrix(n, n, std::max<int64_t>(nnz_hint, n), CSC_MAT, I.ctx);
+    if (!I.A) throw ComputationError("SUNSparseMatrix failed (out of memory?)");
+    I.LS = SUNLinSol_KLU(I.y, I.A, I.ctx);
+    if (!I.LS) throw ComputationError("SUNLinSol_KLU failed");
+    check(CVodeSetLinearSolver(I.mem, I.LS, I.A), "CVodeSetLinearSolver", I);
+    check(CVodeSetJacFn(I.mem, jac_trampoline), "CVodeSetJacFn", I);
+  }
   check(CVodeSetMaxNumSteps(I.mem, opt.max_steps_per_call), "CVodeSetMaxNumSteps", I);
   check(CVodeSetMaxOrd(I.mem, opt.max_order), "CVodeSetMaxOrd", I);
   if (opt.max_step > 0) check(CVodeSetMaxStep(I.mem, opt.max_step), "CVodeSetMaxStep", I);
@@ -311,6 +409,8 @@ OdeStats CvodeKlu::stats() const {
   if (CVodeGetNumSteps(I.mem, &v) == CV_SUCCESS) s.steps += v;
   if (CVodeGetNumRhsEvals(I.mem, &v) == CV_SUCCESS) s.rhs_evals += v;
   if (CVodeGetNumJacEvals(I.mem, &v) == CV_SUCCESS) s.jac_evals += v;
+  // CVODE counts no Jacobian evaluations of a structured solver: its own count.
+  if (I.problem.linear_setup) s.jac_evals = I.custom_jacobians;
   if (CVodeGetNumLinSolvSetups(I.mem, &v) == CV_SUCCESS) s.lin_setups += v;
   if (CVodeGetNumNonlinSolvIters(I.mem, &v) == CV_SUCCESS) s.nonlin_iters += v;
   if (CVodeGetNumNonlinSolvConvFails(I.mem, &v) == CV_SUCCESS) s.nonlin_fails += v;

@@ -1,8 +1,7 @@
 #include "modaltyre/studies/sweep_output.h"
 
-#include <cstdio>
-
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/number_format.h"
 
 namespace modaltyre::studies {
 
@@ -23,11 +22,7 @@ const std::vector<std::string>& sweep_observable_columns() {
   return cols;
 }
 
-std::string sweep_number(double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.10g", v);
-  return b;
-}
+std::string sweep_number(double v) { return number_text(v); }
 
 std::string csv_field(const std::string& text) {
   std::string t = text;

@@ -76,24 +76,14 @@ double planted_friction_N() {
 }
 
 std::string soil_csv() {
-  const SoilOptions o{0.5, 0.3};
   std::ostringstream s;
   s.precision(10);
   s << "load_N,longitudinal_force_N,alpha1_deg,alpha2_deg,total_sinking_mm,elastic_sinking_mm,"
        "layer_mm,speed_m_s\n";
-  for (double a1 : {12.0, 16.0, 20.0, 24.0})
-    for (double V : {0.5, 1.5, 3.0}) {
-      SoilRow r;
-      r.alpha1_rad = a1 * M_PI / 180;
-      r.alpha2_rad = 0.55 * r.alpha1_rad;
-      r.total_sinking_m = o.r0_m * (1 - std::cos(r.alpha1_rad));
-      r.elastic_sinking_m = o.r0_m * (1 - std::cos(r.alpha2_rad));
-      r.layer_m = 0.30;
-      r.speed_m_s = V;
-      r = soil_forces(r, 3.0e6, 5.0e4, o);
-      s << r.load_N << "," << r.longitudinal_force_N << "," << a1 << "," << 0.55 * a1 << ","
-        << r.total_sinking_m * 1e3 << "," << r.elastic_sinking_m * 1e3 << ",300," << V << "\n";
-    }
+  for (const SoilRow& r : test::planted_soil_rows().rows)
+    s << r.load_N << "," << r.longitudinal_force_N << "," << r.alpha1_rad * 180 / M_PI << ","
+      << r.alpha2_rad * 180 / M_PI << "," << r.total_sinking_m * 1e3 << ","
+      << r.elastic_sinking_m * 1e3 << "," << r.layer_m * 1e3 << "," << r.speed_m_s << "\n";
   return s.str();
 }
 
@@ -386,6 +376,80 @@ TEST_F(rheology_IdentifyIntoConfig, BadUseExits2NamingTheFileOrOption) {
   EXPECT_EQ(self.exit_code, 2);
   EXPECT_EQ(slurp(copy), slurp(kTyre));
   EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+// Issue 16 item 8: `--config X --write-config F` is `--into-config X --out-config F`, byte for
+// byte in F and in the output; contact-stress takes r0 and B_tr from the tyre config in both.
+TEST_F(rheology_IdentifyIntoConfig, WriteConfigAndIntoConfigWriteTheSameFile) {
+  const std::string data = kSrc + "/tests/data/rheology/";
+  for (const auto& [method, file] : std::vector<std::pair<std::string, std::string>>{
+           {"contact-stress", "contact_stress.csv"}, {"load-deflection", "load_deflection.csv"}}) {
+    const auto w = run(
+        {"identify", method, data + file, "--config", kTyre, "--write-config", out(), "--json"});
+    ASSERT_EQ(w.exit_code, 0) << method << ": " << w.err;
+    const std::string written = slurp(out());
+    std::filesystem::remove(out());
+    const auto o = run(
+        {"identify", method, data + file, "--into-config", kTyre, "--out-config", out(), "--json"});
+    ASSERT_EQ(o.exit_code, 0) << method << ": " << o.err;
+    EXPECT_EQ(slurp(out()), written) << method;
+    EXPECT_EQ(o.out, w.out) << method;
+  }
+}
+
+// The written config keeps TYRE's comments, and `validate` on it no longer recalibrates the
+// identified carcass level: validation.calibrate loses modal.compliance_scale, and says so.
+TEST_F(rheology_IdentifyIntoConfig, WrittenConfigKeepsCommentsAndValidateKeepsTheIdentifiedLevel) {
+  const auto r =
+      run({"identify", "load-deflection", kSrc + "/tests/data/rheology/load_deflection.csv",
+           "--into-config", kTyre, "--out-config", out()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string text = slurp(out());
+  std::istringstream tyre(slurp(kTyre));
+  int comments = 0;
+  for (std::string line; std::getline(tyre, line);) {
+    if (line.find_first_not_of(' ') == std::string::npos ||
+        line[line.find_first_not_of(' ')] != '#')
+      continue;
+    ++comments;
+    EXPECT_NE(text.find(line + "\n"), std::string::npos) << "comment lost: " << line;
+  }
+  EXPECT_GT(comments, 10);
+  const std::string said = "validation.calibrate: modal.compliance_scale removed";
+  EXPECT_NE(text.find("# " + said), std::string::npos) << text;
+  EXPECT_NE(r.out.find(said), std::string::npos) << r.out;
+  const auto v =
+      run({"validate", out(), kSrc + "/configs/data/sf350_footprint_table3.csv", "--json"});
+  ASSERT_EQ(v.exit_code, 0) << v.err;
+  const std::string calibrated = v.out.substr(0, v.out.find('}'));
+  EXPECT_EQ(calibrated.find("modal.compliance_scale"), std::string::npos) << calibrated;
+  EXPECT_NE(calibrated.find("tread.modulus_MPa"), std::string::npos) << calibrated;
+}
+
+// free-vibration identifies only eta1 without its static loop: `--config X --write-config F`,
+// which means a tyre config, says that the static loop is missing instead of writing a record
+// that `footprint F` would refuse; without --config the record is written as before.
+TEST_F(rheology_IdentifyIntoConfig, FreeVibrationWriteConfigWithoutStaticSaysTheLoopIsMissing) {
+  const std::string decay = file("decay.csv", decay_csv());
+  const auto r = run({"identify", "free-vibration", decay, "--mass-kg", "350", "--config", kTyre,
+                      "--write-config", out()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--write-config"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("without a static loop"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("give --static LOOP.csv"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out()));
+  const auto rec = run({"identify", "free-vibration", decay, "--mass-kg", "350", "--r0-mm", "294.8",
+                        "--write-config", out()});
+  ASSERT_EQ(rec.exit_code, 0) << rec.err;
+  EXPECT_NE(slurp(out()).find("rheology:"), std::string::npos);
+}
+
+// The soil test's wheel is not the tyre: a tyre config does not give its r0 and B_tr.
+TEST_F(rheology_IdentifyIntoConfig, SoilRollingTakesTheWheelGeometryFromItsOptionsOnly) {
+  const auto r = run({"identify", "soil-rolling", file("soil.csv", soil_csv()), "--config", kTyre});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--r0-mm"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("not the test wheel's"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -2,12 +2,14 @@
 // Helpers shared by the rheology tests: temporary CSV files and running the CLI.
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <string>
 
+#include "modaltyre/rheology/soil.h"
 #include "modaltyre/rheology/three_element.h"
 
 namespace modaltyre::rheology::test {
@@ -49,6 +51,27 @@ inline ThreeElementOptions sf350_three_element_options() {
   o.section_height_m = 0.117;
   o.mass_kg = 350.0;
   return o;
+}
+
+/// Rolling tests of a planted Kelvin-Voigt soil (E2 = 3 MPa, eta2 = 50 kPa s) under a rigid
+/// wheel r0 = 500 mm, B_tr = 300 mm in a 300 mm layer: front angles 12-24 deg, rear 0.55 of it,
+/// speeds 0.5-3 m/s, forces from the model (noise-free).
+inline SoilOptions planted_soil_wheel() { return {0.5, 0.3}; }
+inline SoilData planted_soil_rows() {
+  const SoilOptions o = planted_soil_wheel();
+  SoilData data;
+  for (double a1 : {12.0, 16.0, 20.0, 24.0})
+    for (double V : {0.5, 1.5, 3.0}) {
+      SoilRow r;
+      r.alpha1_rad = a1 * M_PI / 180;
+      r.alpha2_rad = 0.55 * r.alpha1_rad;
+      r.total_sinking_m = o.r0_m * (1 - std::cos(r.alpha1_rad));
+      r.elastic_sinking_m = o.r0_m * (1 - std::cos(r.alpha2_rad));
+      r.layer_m = 0.30;
+      r.speed_m_s = V;
+      data.rows.push_back(soil_forces(r, 3.0e6, 5.0e4, o));
+    }
+  return data;
 }
 
 }  // namespace modaltyre::rheology::test

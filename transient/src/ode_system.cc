@@ -30,7 +30,63 @@ constexpr double kJacobianEdgeMargin_m = 2e-3;
 }  // namespace
 
 TransientSystem::TransientSystem(const TransientModel& model, const ScenarioPlan& plan)
-    : model_(model), plan_(plan) {}
+    : model_(model), plan_(plan) {
+  shape_max_.resize(model.nq + model.nr);
+  for (int j = 0; j < model.nq; ++j) shape_max_(j) = model.psi.col(j).cwiseAbs().maxCoeff();
+  for (int l = 0; l < model.nr; ++l)
+    shape_max_(model.nq + l) = model.V.col(l).cwiseAbs().maxCoeff();
+  model.tyre.sag.minCoeff(&centre_);
+}
+
+void TransientSystem::reach(double t, const double* y, int& lo, int& hi) const {
+  (void)t;
+  const auto& M = model_;
+  // g_i <= z + max h - s_i + sum_j max|psi_j| |q_j| + sum_l max|V_l| |r_l| - min(0, min e).
+  double bound = y[M.z_index()] + (plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0);
+  for (int j = 0; j < M.nq; ++j) bound += shape_max_(j) * std::abs(y[j]);
+  for (int l = 0; l < M.nr; ++l) bound += shape_max_(M.nq + l) * std::abs(y[2 * M.nq + l]);
+  if (M.settings.relaxation) {
+    double e_min = 0;
+    for (int i = 0; i < M.m; ++i) e_min = std::min(e_min, y[M.e_index() + i]);
+    bound -= e_min;
+  }
+  const Eigen::VectorXd& sag = M.tyre.sag;
+  if (!(sag(centre_) < bound)) {  // nothing can touch (NaN bound: everything can)
+    lo = 0, hi = std::isnan(bound) ? M.m - 1 : -1;
+    return;
+  }
+  lo = hi = centre_;
+  while (lo > 0 && sag(lo - 1) < bound) --lo;
+  while (hi + 1 < M.m && sag(hi + 1) < bound) ++hi;
+}
+
+void TransientSystem::add_road(double t, int lo, int hi, Eigen::VectorXd& g) const {
+  if (!plan_.cleat) return;
+  // The cleat covers |x - centre| < L/2 only: its units by bisection of the increasing x_i.
+  const double centre = plan_.cleat_start_m - plan_.distance(t), half = 0.5 * plan_.cleat_length_m;
+  const double* x = model_.x_road.data();
+  const int from = std::max<int>(lo, std::lower_bound(x, x + model_.m, centre - half) - x);
+  const int to = std::min<int>(hi, std::upper_bound(x, x + model_.m, centre + half) - x - 1);
+  for (int i = from; i <= to; ++i) g(i) += road(t, i);
+}
+
+void TransientSystem::tip_penetration_in_reach(double t, const double* y,
+                                               Eigen::VectorXd& g) const {
+  const auto& M = model_;
+  int lo = 0, hi = -1;
+  reach(t, y, lo, hi);
+  g.setConstant(M.m, -1.0);
+  if (hi < lo) return;
+  const int n = hi - lo + 1;
+  const Eigen::Map<const Eigen::VectorXd> q(y, M.nq), r(y + 2 * M.nq, M.nr);
+  auto seg = g.segment(lo, n);
+  seg.noalias() = -(M.psi.middleRows(lo, n) * q);
+  if (M.nr > 0) seg.noalias() -= M.V.middleRows(lo, n) * r;
+  seg.array() += y[M.z_index()];
+  seg -= M.tyre.sag.segment(lo, n);
+  add_road(t, lo, hi, g);
+  if (M.settings.relaxation) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + lo, n);
+}
 
 double TransientSystem::road(double t, int i, double* slope) const {
   if (slope) *slope = 0;
@@ -56,13 +112,12 @@ void TransientSystem::tip_penetration(double t, const double* y, Eigen::VectorXd
   g = -g;
   g.array() += z;
   g -= M.tyre.sag;
-  if (plan_.cleat)
-    for (int i = 0; i < M.m; ++i) g(i) += road(t, i);
+  add_road(t, 0, M.m - 1, g);
   if (M.settings.relaxation) g -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), M.m);
 }
 
 void TransientSystem::forces_into(double t, const double* y, Eigen::VectorXd& f) const {
-  tip_penetration(t, y, f);
+  tip_penetration_in_reach(t, y, f);
   f = (f.array() > 0).select(model_.k_contact.array() * f.array(), 0.0);
 }
 
@@ -81,6 +136,20 @@ void TransientSystem::roots(double t, const double* y, double* g) const {
   // 0.0 a rounding step later, which cvRcheck2 rejects as "root found at and very near t"
   // (CV_ILL_INPUT). An exact 0 is reported as just below (the side of no force).
   gm = (scratch_g_.array() == 0.0).select(-std::numeric_limits<double>::min(), scratch_g_);
+}
+
+int TransientSystem::update_contact_set(double t, const double* y) const {
+  tip_penetration_in_reach(t, y, scratch_g_);
+  const bool first = in_contact_.empty();
+  in_contact_.resize(model_.m, 0);
+  int changed = 0;
+  for (int i = 0; i < model_.m; ++i) {
+    const char now = scratch_g_(i) > 0 ? 1 : 0;
+    if (now != in_contact_[i]) ++changed, in_contact_[i] = now;
+  }
+  if (first) return 0;
+  if (changed > 0) contact_switched();
+  return changed;
 }
 
 void TransientSystem::rhs(double t, const double* y, double* ydot) const {

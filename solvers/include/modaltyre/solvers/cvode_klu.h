@@ -13,6 +13,9 @@
 // memory, inconsistent sizes) throw ComputationError. A callback may return a positive value to
 // request a smaller step (recoverable) or a negative one to stop the run.
 //
+// Problems with a known block structure may bring their own Newton solver (OdeProblem::
+// linear_setup/linear_solve); CVODE then sees a matrix-embedded linear solver.
+//
 // Sparsity pattern: KLU analyses the pattern once (ordering, symbolic factorisation) and then only
 // refactors numerically. If the Jacobian callback produces a different pattern, the adapter asks
 // KLU for a new analysis (SUNLinSol_KLUReInit, partial), so the pattern may change, but keeping it
@@ -45,6 +48,13 @@ struct OdeProblem {
   std::function<int(double t, const double* y, double* ydot)> rhs;
   /// Fills J = df/dy at (t, y) (fy = f(t, y) given). Same return convention.
   std::function<int(double t, const double* y, const double* fy, CscMatrix& jac)> jacobian;
+  /// Optional structured solver of Newton's linear systems, in place of KLU: linear_setup
+  /// prepares M = I - gamma J at (t, y) (evaluating its own Jacobian unless `jacobian_ok`: CVODE
+  /// judges the last one still good), linear_solve overwrites b with M^-1 b. Both or neither;
+  /// same return convention. With them CVODE runs a matrix-embedded linear solver and
+  /// `jacobian` is not called.
+  std::function<int(double t, const double* y, double gamma, bool jacobian_ok)> linear_setup;
+  std::function<int(double* x)> linear_solve;
   int roots = 0;
   /// g(t, y) for `roots` root functions; may be empty when roots == 0.
   std::function<int(double t, const double* y, double* g)> root_functions;

@@ -1,6 +1,6 @@
 #pragma once
-// The transient driver: runs a scenario on CVODE + KLU, stops at contact switches (model.h,
-// ode_system.h) and samples the observables at the output step.
+// The transient driver: runs a scenario on CVODE + KLU (model.h, ode_system.h), one internal
+// step at a time, and samples the observables at the output step.
 #include <functional>
 #include <string>
 #include <vector>
@@ -33,7 +33,9 @@ struct TransientResult {
   double simulated_s = 0;  ///< time reached
   double wall_s = 0;
   solvers::OdeStats stats;
-  int contact_events = 0;  ///< root returns (units entering or leaving)
+  /// Units that entered or left the road between accepted steps (with locate_switches: root
+  /// returns).
+  int contact_events = 0;
   std::vector<TransientSample> samples;
   /// Mean of -longitudinal force over the last 10 % of the run (rolling resistance) [N].
   double rolling_resistance_N = 0;
@@ -46,9 +48,19 @@ struct TransientRunOptions {
   std::function<bool(double, double)> progress;
   std::vector<double> final_state;  ///< filled with the last state if non-null-sized request
   bool keep_final_state = false;
-  /// Re-initialise CVODE at every contact switch (BDF history discarded) instead of continuing
-  /// over the kink; slower, kept for comparisons.
+  /// Locate every contact switch with CVODE's root finder (one root function per candidate
+  /// unit) and return there. Off by default: the kinks of f = k max(0, g) are solved inside the
+  /// implicit steps, and the contact set is compared between accepted steps instead (the root
+  /// finder's passes over the m functions were half the cost of a step without relaxation).
+  bool locate_switches = false;
+  /// Re-initialise CVODE at every located contact switch (BDF history discarded) instead of
+  /// continuing over the kink; implies locate_switches. Slower, kept for comparisons.
   bool restart_at_switches = false;
+  /// Newton's linear systems: the Schur complement on the carcass and hub (solvers/arrow_lu.h,
+  /// the default) or KLU on the whole sparse Jacobian (the general solver, kept for
+  /// comparisons; docs/transient.md section 6 has the measurements).
+  enum class NewtonSolver { schur, klu };
+  NewtonSolver newton_solver = NewtonSolver::schur;
 };
 
 /// Runs a scenario. Failures of the integrator are reported in the result (message and time

@@ -39,11 +39,26 @@ class TransientSystem {
   /// Tells the system that a unit switched (a root was located): the next Jacobian treats the
   /// units next to the patch ends as in contact (see jacobian()).
   void contact_switched() const { ++switches_since_jacobian_; }
+  /// Contact set at an accepted step's end (units with tip penetration > 0) against the one at
+  /// the previous accepted step: returns how many units entered or left, and flags the next
+  /// Jacobian as contact_switched() does when any did. This replaces the m root functions
+  /// (the default, TransientRunOptions::locate_switches off): the kinks of max(0, g) are solved
+  /// inside the implicit steps, and the root finder's passes over m functions per step are
+  /// saved.
+  int update_contact_set(double t, const double* y) const;
   int64_t nnz() const;
 
  private:
   /// g_i = z + h_i - s_i - u_i (- e_i): the tread tip's penetration (root functions).
   void tip_penetration(double t, const double* y, Eigen::VectorXd& g) const;
+  /// The same where a unit can touch, -1 m elsewhere: units whose sag exceeds z + max h + a
+  /// bound of |u_i| + e_i from the state (reach_bound()) have g_i < 0 for certain. The forces
+  /// need only these; the m x nq product over the whole window was a third of a step.
+  void tip_penetration_in_reach(double t, const double* y, Eigen::VectorXd& g) const;
+  /// Units [lo, hi] that can touch at (t, y) (empty if hi < lo).
+  void reach(double t, const double* y, int& lo, int& hi) const;
+  /// Adds the road height h(x_i, t) to g over the units [lo, hi] (cleat only).
+  void add_road(double t, int lo, int hi, Eigen::VectorXd& g) const;
   void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
 
   const TransientModel& model_;
@@ -53,7 +68,12 @@ class TransientSystem {
   mutable Eigen::VectorXd scratch_f_, scratch_G_, scratch_Vf_, scratch_g_;
   /// Units in the Jacobian's sparsity pattern (ever in contact at a Jacobian evaluation).
   mutable std::vector<char> in_pattern_;
+  /// Contact set at the last accepted step (update_contact_set()).
+  mutable std::vector<char> in_contact_;
   mutable long switches_since_jacobian_ = 0;
+  /// max_i |psi_ij| and max_i |V_il|: |u_i| <= sum_j shape_max_j |q_j| for every unit.
+  Eigen::VectorXd shape_max_;
+  int centre_ = 0;  ///< unit of least sag (the sag grows on both sides of it)
 };
 
 }  // namespace modaltyre::transient
