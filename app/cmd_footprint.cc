@@ -64,6 +64,7 @@ void register_footprint(CLI::App& app) {
     // effects act on what is printed exactly as they do in `sweep` and `validate`.
     const auto results = contact::predict_all(model, cases);
     require_converged(results);
+    warn_outside_validity(config, results);
     if (!a->plot.empty()) plot_pressures(results, config, a->plot);
     if (a->json) {
       print_json(footprint_json(model, results));

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "cli_support.h"
+#include "modaltyre/contact/validity.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
 
@@ -49,7 +50,10 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
     }
     double peak = 0;
     for (const auto& u : r.units) peak = std::max(peak, u.pressure_Pa);
+    const contact::Validity v = contact::validity(model.config, r.sinking_m, r.contact_length_m);
     cases.push_back({{"load_N", r.load.load_N},
+                     {"valid", v.valid},
+                     {"validity", v.valid ? nlohmann::json(nullptr) : nlohmann::json(v.reason)},
                      {"horizontal_force_N", r.load.horizontal_force_N},
                      {"sinking_mm", round_sig(r.sinking_m * 1e3)},
                      {"contact_length_mm", round_sig(r.contact_length_m * 1e3)},
@@ -79,6 +83,18 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
             {"measured_modal_terms", model.basis.measured_terms},
             {"contact_width_mm", c.tread.width_m * 1e3}}},
           {"cases", cases}};
+}
+
+void warn_outside_validity(const contact::TyreConfig& config,
+                           const std::vector<contact::Prediction>& predictions) {
+  for (const auto& p : predictions) {
+    const auto& r = p.footprint;
+    const contact::Validity v = contact::validity(config, r.sinking_m, r.contact_length_m);
+    if (v.valid) continue;
+    std::cerr << "warning: load " << r.load.load_N
+              << " N is outside the model's validity range: " << v.reason
+              << "; the footprint is not a prediction (README, \"Validity range\")\n";
+  }
 }
 
 void print_footprint_table(const contact::TyreModel& model,

@@ -43,12 +43,13 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   schema.optional = {
       "pressure_kPa", "hold_s", "speed_kmh", "horizontal_force_N", "branch", "surface",
       // written by `modaltyre sweep`, ignored here
-      "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations", "status", "message"};
-  schema.text = {"branch", "surface", "status", "message"};
+      "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations", "valid", "status", "message"};
+  schema.text = {"branch", "surface", "valid", "status", "message"};
   for (const auto& o : observable_names()) schema.optional.push_back(o);
   // A failed sweep row has empty number cells: the status check below names it before they
   // are read.
-  schema.may_be_empty = {"message", "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations"};
+  schema.may_be_empty = {"message", "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations",
+                         "valid"};
   for (const auto& o : observable_names()) schema.may_be_empty.push_back(o);
   // A sweep's parameter columns are dotted config keys, ignored here.
   schema.accept_text_column = [](const std::string& c) { return c.find('.') != std::string::npos; };
