@@ -88,6 +88,18 @@ nlohmann::json candidates_json(const std::vector<discover::CandidateScore>& cs) 
 
 std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
 
+// "length_mm and sinking_mm": the observables with a relative residual (a non-zero
+// measurement), which the pooled cross-validated RMS covers.
+std::string observables_text(const std::map<std::string, double>& gaps) {
+  std::string out;
+  std::size_t i = 0;
+  for (const auto& kv : gaps) {
+    out += (i == 0 ? "" : i + 1 == gaps.size() ? " and " : ", ") + kv.first;
+    ++i;
+  }
+  return out;
+}
+
 void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet& data) {
   std::cout << "discover: " << data.path << ", " << data.rows.size() << " rows; evaluated on "
             << r.evaluation_mesh << "\n";
@@ -111,7 +123,9 @@ void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet
   for (std::size_t k = 0; k < r.rounds.size(); ++k) {
     std::cout << "\nName, round " << k + 1
               << " (significant: Delta BIC > 10, CV RMS falls >= 25 % on an observable, "
-                 "grows <= 10 % on none):\n";
+                 "grows <= 10 % on none; CV = cross-validated RMS of the relative residual, "
+                 "pooled over "
+              << observables_text(r.gap_before) << "):\n";
     for (const auto& c : r.rounds[k]) {
       if (!c.testable) {
         std::cout << "  " << c.name << ": not testable (" << c.reason << ")\n";
@@ -167,6 +181,13 @@ std::string axis_label(const std::string& name) {
   return out;
 }
 
+// "sinking_mm" -> "sinking", "rolling_resistance_N" -> "rolling resistance".
+std::string observable_word(const std::string& name) {
+  std::string label = axis_label(name);
+  const auto unit = label.find(" [");
+  return unit == std::string::npos ? label : label.substr(0, unit);
+}
+
 void plot(const std::string& path, const discover::DiscoverReport& r,
           const studies::MeasurementSet& data) {
   const std::string var = r.regimes.empty() ? "" : r.regimes.front().variable;
@@ -181,9 +202,17 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
       pts.emplace_back(x, 100 * row.cv_before.at(obs), 100 * row.cv_after.at(obs));
     }
     if (pts.empty()) continue;  // e.g. a rolling resistance measured as 0 on every row
+    // An observable the model reproduces exactly on every row (e.g. a width that is the
+    // config's own, from a sweep) would be an all-zero panel: left out.
+    bool all_zero = true;
+    for (const auto& [x, b, a] : pts)
+      all_zero = all_zero && std::abs(b) < 1e-9 && std::abs(a) < 1e-9;
+    if (all_zero) continue;
     std::sort(pts.begin(), pts.end());
     PlotPanel p;
-    p.title = axis_label(obs) + (r.effects.empty() ? ": nothing named" : ": before and after");
+    // The panel's axis is a relative residual in %, so the title names the observable without
+    // its unit ("sinking", not "sinking [mm]").
+    p.title = observable_word(obs) + (r.effects.empty() ? ": nothing named" : ": before and after");
     p.xlabel = var.empty() ? "row" : axis_label(var);
     p.ylabel = "cross-validated (predicted - measured) / measured [%]";
     PlotSeries before{"baseline", {}, {}, "linespoints"};
@@ -201,7 +230,7 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
   }
   if (fig.panels.empty()) {
     throw InputError({data.path, 0, ""},
-                     "nothing to plot: no observable has a non-zero measurement");
+                     "nothing to plot: no observable has a non-zero measurement or a residual");
   }
   fig.width_px = 420 * static_cast<int>(std::min<std::size_t>(fig.panels.size(), 3)) + 60;
   fig.height_px = fig.panels.size() > 3 ? 900 : 520;

@@ -199,36 +199,40 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
     curve.push_back(rep.model.config.default_conditions(0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n));
   }
   const auto res = contact::predict_all(rep.model, curve);
-  PlotPanel ps{"Sinking versus load", "vertical load [kN]", "sinking [mm]", {}};
-  PlotPanel pl{"Contact length versus load", "vertical load [kN]", "contact length [mm]", {}};
-  PlotSeries ps_pred{"model", {}, {}, "lines"}, pl_pred{"model", {}, {}, "lines"};
-  for (const auto& p : res) {
-    if (!p.ok) continue;  // a failed prediction is left out of the curve
-    const auto& r = p.footprint;
-    ps_pred.x.push_back(r.load.load_N / 1000);
-    ps_pred.y.push_back(r.sinking_m * 1e3);
-    pl_pred.x.push_back(r.load.load_N / 1000);
-    pl_pred.y.push_back(r.contact_length_m * 1e3);
-  }
-  PlotSeries ps_meas{"measured (prediction rows)", {}, {}, "points"};
-  PlotSeries pl_meas{"measured (prediction rows)", {}, {}, "points"};
-  PlotSeries ps_cal{"measured (calibration rows)", {}, {}, "points"};
-  PlotSeries pl_cal{"measured (calibration rows)", {}, {}, "points"};
-  for (const auto& r : rep.rows) {
-    auto& s = r.calibration ? ps_cal : ps_meas;
-    auto& l = r.calibration ? pl_cal : pl_meas;
-    const double load_kN = r.measured.conditions.load_N / 1000;
-    if (const auto v = r.measured.value("sinking_mm")) s.x.push_back(load_kN), s.y.push_back(*v);
-    if (const auto v = r.measured.value("length_mm")) l.x.push_back(load_kN), l.y.push_back(*v);
-  }
-  ps.series = {ps_pred, ps_meas};
-  pl.series = {pl_pred, pl_meas};
-  if (!ps_cal.x.empty()) ps.series.push_back(ps_cal);
-  if (!pl_cal.x.empty()) pl.series.push_back(pl_cal);
+  // One panel per observable measured on some row: sinking, length, and width when measured.
+  struct Observable {
+    const char* name;
+    const char* title;
+    const char* ylabel;
+  };
+  const Observable observables[] = {
+      {"sinking_mm", "Sinking versus load", "sinking [mm]"},
+      {"length_mm", "Contact length versus load", "contact length [mm]"},
+      {"width_mm", "Contact width versus load", "contact width [mm]"}};
   PlotFigure fig;
-  fig.width_px = 1200;
+  for (const auto& o : observables) {
+    PlotSeries pred{"model", {}, {}, "lines"};
+    PlotSeries meas{"measured (prediction rows)", {}, {}, "points"};
+    PlotSeries cal{"measured (calibration rows)", {}, {}, "points"};
+    for (const auto& r : rep.rows) {
+      if (const auto v = r.measured.value(o.name)) {
+        auto& s = r.calibration ? cal : meas;
+        s.x.push_back(r.measured.conditions.load_N / 1000);
+        s.y.push_back(*v);
+      }
+    }
+    if (meas.x.empty() && cal.x.empty()) continue;
+    for (const auto& p : res) {
+      if (!p.ok) continue;  // a failed prediction is left out of the curve
+      pred.x.push_back(p.footprint.load.load_N / 1000);
+      pred.y.push_back(p.observable(o.name));
+    }
+    PlotPanel panel{o.title, "vertical load [kN]", o.ylabel, {pred, meas}};
+    if (!cal.x.empty()) panel.series.push_back(cal);
+    fig.panels.push_back(panel);
+  }
+  fig.width_px = 600 * static_cast<int>(std::max<std::size_t>(fig.panels.size(), 2));
   fig.height_px = 480;
-  fig.panels = {ps, pl};
   render_plot(fig, path);
 }
 

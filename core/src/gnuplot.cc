@@ -1,7 +1,9 @@
 #include "modaltyre/core/gnuplot.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "modaltyre/core/atomic_file.h"
@@ -65,8 +67,8 @@ std::string gnuplot_script(const PlotFigure& figure, const std::string& terminal
   const int n = static_cast<int>(figure.panels.size());
   const int cols = n <= 3 ? std::max(n, 1) : 2;
   const int rows = (std::max(n, 1) + cols - 1) / cols;
-  gp << "set terminal " << terminal << " size " << figure.width_px << ","
-     << figure.height_px * rows << "\n";
+  gp << "set terminal " << terminal << " size " << figure.width_px << "," << figure.height_px * rows
+     << "\n";
   // Data first, as inline datablocks: one per series, no file names anywhere.
   int block = 0;
   for (const auto& panel : figure.panels) {
@@ -113,6 +115,22 @@ std::string gnuplot_script(const PlotFigure& figure, const std::string& terminal
   return gp.str();
 }
 
+void ensure_min_y_span(PlotPanel& panel, double min_span) {
+  if (!(min_span > 0) || panel.ymax > panel.ymin) return;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& s : panel.series) {
+    for (double y : s.y) {
+      if (!std::isfinite(y)) continue;
+      lo = std::min(lo, y);
+      hi = std::max(hi, y);
+    }
+  }
+  if (!(hi >= lo) || hi - lo >= min_span) return;
+  const double mid = 0.5 * (lo + hi);
+  panel.ymin = mid - 0.5 * min_span;
+  panel.ymax = mid + 0.5 * min_span;
+}
+
 void render_plot(const PlotFigure& figure, const std::string& path) {
   namespace fs = std::filesystem;
   const std::string ext = fs::path(path).extension().string();
@@ -130,18 +148,19 @@ void render_plot(const PlotFigure& figure, const std::string& path) {
   }
   // gnuplot's image goes to its stdout (no `set output`): it is held in memory, checked, and
   // only then written; a failed run leaves nothing behind.
-  const SubprocessResult run =
-      run_subprocess({"gnuplot"}, gnuplot_script(figure, terminal), kGnuplotTimeout_s,
-                     kMaxImageBytes);
+  const SubprocessResult run = run_subprocess({"gnuplot"}, gnuplot_script(figure, terminal),
+                                              kGnuplotTimeout_s, kMaxImageBytes);
   if (!run.started) {
-    throw ComputationError("plotting failed: gnuplot was not found (install the Debian package "
-                           "gnuplot-nox)");
+    throw ComputationError(
+        "plotting failed: gnuplot was not found (install the Debian package "
+        "gnuplot-nox)");
   }
   if (run.timed_out || run.exit_status != 0 || !image_is_complete(run.out, ext)) {
-    std::string why = run.timed_out ? "it ran longer than 120 s"
-                      : run.exit_status != 0
-                          ? "it exited with status " + std::to_string(run.exit_status)
-                          : "its image is incomplete (" + std::to_string(run.out.size()) + " bytes)";
+    std::string why =
+        run.timed_out ? "it ran longer than 120 s"
+        : run.exit_status != 0
+            ? "it exited with status " + std::to_string(run.exit_status)
+            : "its image is incomplete (" + std::to_string(run.out.size()) + " bytes)";
     if (!run.err.empty()) why += ": " + first_line(run.err);
     throw ComputationError("plotting " + path + " failed: gnuplot " + why);
   }

@@ -68,6 +68,24 @@ TEST_F(FootprintCli, ValidateJsonNamesCalibrationAndPredictedRows) {
   EXPECT_TRUE(j["rms_rel_error"].contains("length_mm"));
 }
 
+// Issue 16: `--set validation.calibrate=[]` calibrates nothing, so no row is a calibration row
+// and every row counts (the config's calibration_rows name rows only for calibrated keys).
+TEST_F(FootprintCli, ValidateWithoutCalibrationCountsEveryRow) {
+  auto r = run({"validate", kConfig, kTable3, "--json", "--set", "validation.calibrate=[]"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["rows"].size(), 6u);
+  for (const auto& row : j["rows"]) EXPECT_FALSE(row["calibration"].get<bool>()) << row;
+  EXPECT_EQ(j["predicted_rows"]["sinking_mm"], 6);
+  EXPECT_TRUE(j["calibration"]["rows"].empty());
+  r = run({"validate", kConfig, kTable3, "--set", "validation.calibrate=[]"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("No calibration: every row is a prediction."), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("calibration "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("% (6 rows)"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("(4 rows)"), std::string::npos) << r.out;
+}
+
 // Issue 16 item 6: a footprint outside the model's validity range is computed but flagged: a
 // warning on stderr and "valid": false with the reason in JSON, in footprint and validate.
 TEST_F(FootprintCli, OutsideTheValidityRangeIsFlaggedNotAnOrdinaryResult) {
