@@ -41,8 +41,15 @@ nlohmann::json parameter_json(const EffectInfo& e, const EffectParameterInfo& p)
 nlohmann::json effect_json(const EffectInfo& e) {
   nlohmann::json params = nlohmann::json::array();
   for (const auto& p : e.parameters) params.push_back(parameter_json(e, p));
-  return {{"name", e.name},     {"description", e.description},  {"observables", e.observables},
-          {"regime", e.regime}, {"enabled_key", enabled_key(e)}, {"parameters", params}};
+  return {{"name", e.name},
+          {"description", e.description},
+          {"observables", e.observables},
+          {"regime", e.regime},
+          {"enabled_key", enabled_key(e)},
+          {"acts_on", e.acts_on},
+          {"with_footprint_3d",
+           {{"composes", e.refused_with_3d.empty()}, {"refused_because", e.refused_with_3d}}},
+          {"parameters", params}};
 }
 
 nlohmann::json catalogue_json() {
@@ -65,7 +72,9 @@ void print_effect(const EffectInfo& e, int width) {
   std::cout << e.name << "\n"
             << "  " << e.description << "\n"
             << "  regime variable: " << e.regime << "   changes: " << joined(e.observables) << "\n"
-            << "  switch on: " << enabled_key(e) << "=true\n";
+            << "  switch on: " << enabled_key(e) << "=true\n"
+            << "  acts on: " << e.acts_on << "   with the 3D patch (footprint_3d): "
+            << (e.refused_with_3d.empty() ? "composes" : "refused, " + e.refused_with_3d) << "\n";
   char line[512];
   std::snprintf(line, sizeof line, "  %-*s  %-5s %9s %9s %9s  %-7s %s\n", width, "key", "unit",
                 "default", "min", "max", "status", "meaning");

@@ -1,4 +1,5 @@
 // modaltyre footprint CONFIG [--load N]... [--set key=value]... [--json] [--plot FILE]
+//                    [--map-csv FILE]
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -6,6 +7,7 @@
 
 #include "cli_support.h"
 #include "commands.h"
+#include "footprint_map.h"
 #include "footprint_report.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/errors.h"
@@ -21,6 +23,7 @@ struct FootprintArgs {
   std::vector<std::string> overrides;
   bool json = false;
   std::string plot;
+  std::string map_csv;
 };
 
 }  // namespace
@@ -40,15 +43,32 @@ void register_footprint(CLI::App& app) {
       ->check(physical_range(-1e7, 1e7, "N", "1e7 N exceeds any tyre", true));
   cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");
   cmd->add_flag("--json", a->json, "print JSON");
-  cmd->add_option("--plot", a->plot, "draw the pressure distributions (.svg or .png)");
+  cmd->add_option("--plot", a->plot,
+                  "draw the pressure distributions (.svg or .png); with footprint_3d: the "
+                  "footprint image of each load (pressure map, contour) and the centre-line "
+                  "pressure");
+  cmd->add_option("--map-csv", a->map_csv,
+                  "write the pressure maps as CSV load_N,x_mm,y_mm,pressure_kPa (footprint_3d:)");
   cmd->callback([a, cmd] {
     const auto config = contact::load_tyre_config(a->config, a->overrides);
+    if (!a->map_csv.empty()) {
+      if (!config.footprint_3d) {
+        throw InputError({a->config, 0, "--map-csv"},
+                         "a pressure map needs the 3D patch: the config has no footprint_3d: "
+                         "section");
+      }
+      check_output_path(a->map_csv, "--map-csv");  // before anything is computed
+    }
     const auto model = contact::build_tyre_model(config);
     std::vector<contact::OperatingConditions> cases;
     const double fx = cmd->count("--fx") ? a->horizontal : config.horizontal_force_N;
     for (double f : a->loads.empty() ? config.loads_N : a->loads) {
       if (!(f > 0) || !std::isfinite(f)) {
         throw InputError({"--load", 0, ""}, "vertical load must be a finite number > 0 N");
+      }
+      if (config.footprint_3d && fx != 0) {
+        throw InputError({"--fx", 0, ""},
+                         "the config's 3D patch (footprint_3d) takes no horizontal force");
       }
       // Uniform traction f_x = (F_x/F_z) f_z needs adhesion; beyond |F_x| = 1.5 F_z no tyre holds.
       if (!(std::abs(fx) <= 1.5 * f)) {
@@ -65,7 +85,14 @@ void register_footprint(CLI::App& app) {
     const auto results = contact::predict_all(model, cases);
     require_converged(results);
     warn_outside_validity(config, results);
-    if (!a->plot.empty()) plot_pressures(results, config, a->plot);
+    if (!a->plot.empty()) {
+      if (config.footprint_3d) {
+        plot_footprint_maps(results, config, a->plot);
+      } else {
+        plot_pressures(results, config, a->plot);
+      }
+    }
+    if (!a->map_csv.empty()) write_map_csv(results, a->map_csv);
     if (a->json) {
       print_json(footprint_json(model, results));
     } else {

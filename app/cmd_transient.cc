@@ -81,7 +81,9 @@ void register_transient(CLI::App& app) {
       "Time-domain simulation (CVODE BDF + KLU): modal carcass, Kelvin-Voigt tread relaxation, "
       "hub mass, unilateral contact. Scenarios: load-hold, free-vibration, rolling, cleat "
       "(settings in the config's transient: section, see docs/transient.md).");
-  cmd->add_option("CONFIG", a->config, "tyre config (YAML), e.g. configs/sf350.yaml")->required();
+  cmd->add_option("CONFIG", a->config,
+                  "tyre config (YAML) on the 2D patch, e.g. configs/sf350_2d_table3.yaml")
+      ->required();
   cmd->add_option("--scenario", a->scenario, "load-hold | free-vibration | rolling | cleat")
       ->required();
   cmd->add_option("--csv", a->csv,
@@ -94,6 +96,12 @@ void register_transient(CLI::App& app) {
   cmd->callback([a] {
     const transient::Scenario scenario = transient::parse_scenario(a->scenario);
     const auto config = contact::load_tyre_config(a->config, a->overrides);
+    if (config.footprint_3d) {  // refused, not silently run on a patch the config did not ask for
+      throw InputError({a->config, 0, "footprint_3d"},
+                       "the transient model runs the 2D patch; a config with footprint_3d: (the "
+                       "3D patch) has no transient model yet: use a 2D config such as "
+                       "configs/sf350_2d_table3.yaml");
+    }
     const auto tyre = contact::build_tyre_model(config);
     const auto model = transient::build_transient_model(tyre);
 

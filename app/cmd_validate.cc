@@ -199,7 +199,8 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
     curve.push_back(rep.model.config.default_conditions(0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n));
   }
   const auto res = contact::predict_all(rep.model, curve);
-  // One panel per observable measured on some row: sinking, length, and width when measured.
+  // One panel per compared observable: the model's curve, the measured rows (calibration rows
+  // marked apart).
   struct Observable {
     const char* name;
     const char* title;
@@ -211,27 +212,31 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
       {"width_mm", "Contact width versus load", "contact width [mm]"}};
   PlotFigure fig;
   for (const auto& o : observables) {
-    PlotSeries pred{"model", {}, {}, "lines"};
-    PlotSeries meas{"measured (prediction rows)", {}, {}, "points"};
-    PlotSeries cal{"measured (calibration rows)", {}, {}, "points"};
+    PlotSeries model{"model", {}, {}, "lines"};
+    for (const auto& p : res) {
+      if (!p.ok) continue;  // a failed prediction is left out of the curve
+      model.x.push_back(p.footprint.load.load_N / 1000);
+      model.y.push_back(p.observable(o.name));
+    }
+    PlotSeries measured{"measured (prediction rows)", {}, {}, "points"};
+    PlotSeries calibration{"measured (calibration rows)", {}, {}, "points"};
     for (const auto& r : rep.rows) {
+      auto& s = r.calibration ? calibration : measured;
       if (const auto v = r.measured.value(o.name)) {
-        auto& s = r.calibration ? cal : meas;
         s.x.push_back(r.measured.conditions.load_N / 1000);
         s.y.push_back(*v);
       }
     }
-    if (meas.x.empty() && cal.x.empty()) continue;
-    for (const auto& p : res) {
-      if (!p.ok) continue;  // a failed prediction is left out of the curve
-      pred.x.push_back(p.footprint.load.load_N / 1000);
-      pred.y.push_back(p.observable(o.name));
-    }
-    PlotPanel panel{o.title, "vertical load [kN]", o.ylabel, {pred, meas}};
-    if (!cal.x.empty()) panel.series.push_back(cal);
-    fig.panels.push_back(panel);
+    if (measured.x.empty() && calibration.x.empty()) continue;  // not measured: not compared
+    PlotPanel panel;
+    panel.title = o.title;
+    panel.xlabel = "vertical load [kN]";
+    panel.ylabel = o.ylabel;
+    panel.series = {model, measured};
+    if (!calibration.x.empty()) panel.series.push_back(calibration);
+    fig.panels.push_back(std::move(panel));
   }
-  fig.width_px = 600 * static_cast<int>(std::max<std::size_t>(fig.panels.size(), 2));
+  fig.width_px = 600 * static_cast<int>(fig.panels.size());
   fig.height_px = 480;
   render_plot(fig, path);
 }
@@ -244,7 +249,7 @@ void register_validate(CLI::App& app) {
       "validate",
       "Compare predicted sinking and contact length with measured footprints (e.g. seed 001 "
       "Table 3); calibration, if any, is declared in the config's validation section "
-      "(at most two parameters on at most two rows) and only the other rows count.");
+      "(at most three parameters on at most two rows) and only the other rows count.");
   cmd->add_option("CONFIG", a->config, "tyre config (YAML)")->required();
   cmd->add_option("MEASURED", a->measured,
                   "CSV with load_N and any of sinking_mm, length_mm, width_mm; optional "
@@ -253,7 +258,8 @@ void register_validate(CLI::App& app) {
       ->required();
   cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");
   cmd->add_flag("--json", a->json, "print JSON");
-  cmd->add_option("--plot", a->plot, "draw sinking and length versus load (.svg or .png)");
+  cmd->add_option("--plot", a->plot,
+                  "draw sinking, length and (where measured) width versus load (.svg or .png)");
   cmd->callback([a] {
     // The config decides how the file is read (effects need every row's conditions).
     const auto config = contact::load_tyre_config(a->config, a->overrides);

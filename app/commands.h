@@ -14,6 +14,7 @@ void register_transient(CLI::App& app);
 void register_effects(CLI::App& app);
 void register_discover(CLI::App& app);
 void register_ema(CLI::App& app);
+void register_tir(CLI::App& app);
 
 
 }  // namespace modaltyre::app

@@ -5,6 +5,7 @@
 
 #include "cli_support.h"
 #include "modaltyre/contact/validity.h"
+#include "footprint_map.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
 
@@ -19,6 +20,19 @@ std::vector<std::string> enabled_effects(const contact::EffectsConfig& effects) 
     if (effects.enabled(e.id)) names.push_back(e.name);
   }
   return names;
+}
+
+// The highest pressure: of the units on the 2D patch, of the whole map on the 3D patch (off the
+// centre line with a lateral belt).
+double peak_pressure_Pa(const contact::Prediction& p) {
+  double peak = 0;
+  for (const auto& u : p.footprint.units) peak = std::max(peak, u.pressure_Pa);
+  if (p.patch3d) {
+    const auto& m = *p.patch3d;
+    for (int i = 0; i < m.sections; ++i)
+      for (int j = 0; j < m.columns; ++j) peak = std::max(peak, m.pressure_Pa(i, j));
+  }
+  return peak;
 }
 
 }  // namespace
@@ -48,8 +62,7 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
                        {"fx_N", round_sig(u.fx_N)},
                        {"pressure_kPa", round_sig(u.pressure_Pa * 1e-3)}});
     }
-    double peak = 0;
-    for (const auto& u : r.units) peak = std::max(peak, u.pressure_Pa);
+    const double peak = peak_pressure_Pa(p);
     const contact::Validity v = contact::validity(model.config, r.sinking_m, r.contact_length_m);
     cases.push_back({{"load_N", r.load.load_N},
                      {"valid", v.valid},
@@ -69,20 +82,34 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
                       {{"vertical_equilibrium", r.equilibrium_residual},
                        {"complementarity", r.complementarity_residual}}},
                      {"units", units}});
+    if (p.patch3d) {
+      cases.back()["contact_area_mm2"] = round_sig(contact_area_m2(*p.patch3d) * 1e6);
+      cases.back()["map"] = pressure_map_json(*p.patch3d);
+    }
   }
   const auto& c = model.config;
-  return {{"tyre", c.name},
-          {"config", c.source},
-          {"effects", enabled_effects(c.effects)},
-          {"model",
-           {{"outer_radius_mm", c.outer_radius_m * 1e3},
-            {"unit_length_mm", round_sig(model.unit_length_m * 1e3)},
-            {"units_around", model.units_around},
-            {"candidate_units", model.candidates()},
-            {"max_order", model.basis.max_order},
-            {"measured_modal_terms", model.basis.measured_terms},
-            {"contact_width_mm", c.tread.width_m * 1e3}}},
-          {"cases", cases}};
+  nlohmann::json out = {{"tyre", c.name},
+                        {"config", c.source},
+                        {"effects", enabled_effects(c.effects)},
+                        {"model",
+                         {{"outer_radius_mm", c.outer_radius_m * 1e3},
+                          {"unit_length_mm", round_sig(model.unit_length_m * 1e3)},
+                          {"units_around", model.units_around},
+                          {"candidate_units", model.candidates()},
+                          {"max_order", model.basis.max_order},
+                          {"measured_modal_terms", model.basis.measured_terms},
+                          {"patch", c.footprint_3d ? "3d" : "2d"}}},
+                        {"cases", cases}};
+  auto& m = out["model"];
+  if (c.footprint_3d) {  // the width is a result; units[].pressure_kPa is the centre line's
+    const auto& s = *c.footprint_3d;
+    m["tread_width_mm"] = s.tread_width_m * 1e3;
+    m["lateral_cell_mm"] = round_sig(s.lateral_cell_m * 1e3);
+    m["lateral_belt"] = s.lateral_belt.enabled;
+  } else {
+    m["contact_width_mm"] = c.tread.width_m * 1e3;
+  }
+  return out;
 }
 
 void warn_outside_validity(const contact::TyreConfig& config,
@@ -110,17 +137,26 @@ void print_footprint_table(const contact::TyreModel& model,
     std::cout << " (at the config's conditions: " << fixed(c.inflation_pressure_Pa * 1e-3, 0)
               << " kPa, standing, loading, rigid road)\n";
   }
-  std::cout << "\n  load_N  sinking_mm  length_mm  stiffness_N/mm  peak_kPa  mean_kPa  iters"
-               "  equilibrium  complementarity\n";
+  if (c.footprint_3d) {
+    const auto& s = *c.footprint_3d;
+    std::cout
+        << "3D patch: tread " << fixed(s.tread_width_m * 1e3, 0) << " mm in columns of "
+        << fixed(s.lateral_cell_m * 1e3, 2) << " mm"
+        << (s.lateral_belt.enabled ? ", lateral belt" : ", laterally rigid belt")
+        << "; width and mean pressure over the contact area from the model, peak on the map\n";
+  }
+  std::cout << "\n  load_N  sinking_mm  length_mm  width_mm  stiffness_N/mm  peak_kPa  mean_kPa"
+               "  iters  equilibrium  complementarity\n";
   for (const auto& p : predictions) {
     const auto& r = p.footprint;
-    double peak = 0;
-    for (const auto& u : r.units) peak = std::max(peak, u.pressure_Pa);
-    const double mean = r.load.load_N / (r.contact_length_m * p.width_mm * 1e-3);
+    const double peak = peak_pressure_Pa(p);
+    const double area =
+        p.patch3d ? contact_area_m2(*p.patch3d) : r.contact_length_m * p.width_mm * 1e-3;
+    const double mean = r.load.load_N / area;
     char line[256];
     std::snprintf(line, sizeof line,
-                  "%8.0f  %10.2f  %9.1f  %14.1f  %8.0f  %8.0f  %5d  %11.1e  %15.1e\n",
-                  r.load.load_N, r.sinking_m * 1e3, r.contact_length_m * 1e3,
+                  "%8.0f  %10.2f  %9.1f  %8.1f  %14.1f  %8.0f  %8.0f  %5d  %11.1e  %15.1e\n",
+                  r.load.load_N, r.sinking_m * 1e3, r.contact_length_m * 1e3, p.width_mm,
                   r.vertical_stiffness_N_m() * 1e-3, peak * 1e-3, mean * 1e-3, r.iterations,
                   r.equilibrium_residual, r.complementarity_residual);
     std::cout << line;

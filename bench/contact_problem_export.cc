@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   const int repeats = argc > 3 ? std::max(1, std::atoi(argv[3])) : 5;
   if (m_target < 10) return 2;
   using namespace modaltyre;
-  const std::string config = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+  const std::string config = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
   // A 180 mm window holds the 5478 N patch (about 124 mm) with margin.
   const auto model = contact::build_tyre_model(contact::load_tyre_config(
       config, {"contact.window_mm=180", "contact.unit_length_mm=" + std::to_string(180.0 / m_target)}));

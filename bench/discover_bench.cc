@@ -15,7 +15,7 @@ namespace {
 
 using namespace modaltyre;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 
 void BM_DiscoverTestMatrix(benchmark::State& state) {
   const int rows = static_cast<int>(state.range(0));

@@ -69,7 +69,7 @@ void compare(const std::string& title, const contact::TyreConfig& cfg,
 int main() {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);  // as the CLI (app/main.cc)
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  const std::string path = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+  const std::string path = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
   const auto cfg = contact::load_tyre_config(path);
   const auto mesh = contact::load_tyre_config(path, {"contact.unit_length_mm=2"});
   compare("creeping tread", cfg, bench::test_matrix(mesh, 10, 2, 5, false, 5));

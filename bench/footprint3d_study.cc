@@ -51,12 +51,13 @@ struct Case {
 /// Builds the model of a config (with overrides) and solves the loads.
 Case run(const std::string& config, const std::vector<std::string>& sets,
          const std::vector<double>& loads) {
-  const Tyre3dConfig c = load_tyre3d_config(config, sets);
-  const TyreModel model = build_tyre_model(c.tyre);
-  const Patch3d patch(model, c.patch);
+  const TyreConfig c = load_tyre_config(config, sets);
+  if (!c.footprint_3d) throw InputError(config + ": no footprint_3d: section");
+  const TyreModel model = build_tyre_model(c);
+  const Patch3d patch(model, *c.footprint_3d);
   Case out;
   out.results = patch.solve_all(loads);
-  out.R0_m = c.tyre.outer_radius_m;
+  out.R0_m = c.outer_radius_m;
   for (const auto& r : out.results) {
     if (!r.converged) throw ComputationError("load " + std::to_string(r.load_N) + ": " + r.message);
   }
@@ -108,7 +109,7 @@ int main(int argc, char** argv) try {
     return 2;
   }
   const std::string config = argv[1];
-  const auto set = studies::read_measurements(argv[2], load_tyre3d_config(config, {}).tyre);
+  const auto set = studies::read_measurements(argv[2], load_tyre_config(config));
   const std::vector<studies::MeasuredRow>& table = set.rows;
   std::vector<std::string> sets, keys, observables = {"sinking_mm"};
   std::vector<int> rows;
@@ -137,19 +138,21 @@ int main(int argc, char** argv) try {
   // Declared calibration on the named rows.
   std::vector<double> values(keys.size());
   if (!keys.empty()) {
-    const Tyre3dConfig base = load_tyre3d_config(config, sets);
+    const TyreConfig base = load_tyre_config(config, sets);
+    if (!base.footprint_3d) throw InputError(config + ": no footprint_3d: section");
+    const Patch3dSettings& patch = *base.footprint_3d;
     Eigen::VectorXd x0(keys.size());
     for (std::size_t k = 0; k < keys.size(); ++k) {
       const std::string& key = keys[k];
-      const double v0 = key == "modal.compliance_scale"         ? base.tyre.compliance_scale
-                        : key == "tread.modulus_MPa"            ? base.tyre.tread.modulus_Pa * 1e-6
-                        : key == "footprint_3d.crown.radius_mm" ? base.patch.crown.radius_m * 1e3
+      const double v0 = key == "modal.compliance_scale"         ? base.compliance_scale
+                        : key == "tread.modulus_MPa"            ? base.tread.modulus_Pa * 1e-6
+                        : key == "footprint_3d.crown.radius_mm" ? patch.crown.radius_m * 1e3
                         : key == "modal.extension_bending_s2_rad2_s2"
-                            ? std::max(base.tyre.extension_s2, 1.0)
+                            ? std::max(base.extension_s2, 1.0)
                         : key == "footprint_3d.lateral_belt.foundation_MPa_per_m"
-                            ? base.patch.lateral_belt.foundation_Pa_m * 1e-6
+                            ? patch.lateral_belt.foundation_Pa_m * 1e-6
                         : key == "footprint_3d.lateral_belt.bending_stiffness_Nm"
-                            ? base.patch.lateral_belt.bending_stiffness_Nm
+                            ? patch.lateral_belt.bending_stiffness_Nm
                             : throw InputError("cannot calibrate " + key);
       x0(k) = std::log(v0);
     }

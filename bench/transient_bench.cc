@@ -16,7 +16,7 @@ namespace {
 using namespace modaltyre::contact;
 using namespace modaltyre::transient;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 
 std::vector<std::string> overrides() {
   std::vector<std::string> o;

@@ -17,7 +17,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK}/consumer
 if(rc)
   message(FATAL_ERROR "building the consumer failed:\n${out}\n${err}")
 endif()
-execute_process(COMMAND ${WORK}/consumer/footprint_consumer ${SRC}/configs/sf350.yaml 5478
+execute_process(COMMAND ${WORK}/consumer/footprint_consumer ${SRC}/configs/sf350_2d_table3.yaml 5478
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(rc OR NOT out MATCHES "sinking_mm [0-9.]+ contact_length_mm [0-9.]+")
   message(FATAL_ERROR "the consumer did not solve a footprint (${rc}):\n${out}\n${err}")

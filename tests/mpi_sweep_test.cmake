@@ -11,7 +11,7 @@ set(mpirun ${MPIEXEC} -n 2 --oversubscribe)
 
 # Three models (moduli) x loads, with one model whose cases all fail: the shares cut through
 # models, and failed rows travel like the others.
-file(WRITE ${WORK}/grid.yaml "base: ${SRC}/configs/sf350.yaml
+file(WRITE ${WORK}/grid.yaml "base: ${SRC}/configs/sf350_2d_table3.yaml
 set:
   modal.compliance_scale: 0.9
 grid:
@@ -51,7 +51,7 @@ foreach(flags "" "--warm-start")
 endforeach()
 
 # A bad sweep file: exit 2 from every rank, the message once, no output file.
-file(WRITE ${WORK}/bad.yaml "base: ${SRC}/configs/sf350.yaml\ngrid:\n  load_N: [1000, -5]\noutput: ${WORK}/bad.csv\n")
+file(WRITE ${WORK}/bad.yaml "base: ${SRC}/configs/sf350_2d_table3.yaml\ngrid:\n  load_N: [1000, -5]\noutput: ${WORK}/bad.csv\n")
 run_sweep("bad sweep under mpirun" 2 ${mpirun} ${CLI} sweep ${WORK}/bad.yaml)
 string(REGEX MATCHALL "bad.yaml" mentions "${last_err}")
 list(LENGTH mentions count)

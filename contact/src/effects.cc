@@ -7,6 +7,48 @@ namespace {
 
 using E = EffectsConfig;
 
+// What each effect acts on and whether the 3D patch (patch3d.h) takes it: an effect on the
+// carcass (its kernels or their level), on the tread cells, on the applied load or under the
+// cells composes with it exactly; one that needs what its section reduction excludes is refused.
+void with_3d_patch(EffectInfo& e) {
+  switch (e.id) {
+    case EffectId::inflation_pressure:
+    case EffectId::load_stiffening:
+      e.acts_on = "carcass (compliance level)";
+      return;
+    case EffectId::belt_flattening:
+      e.acts_on = "carcass (kernels of orders >= 2)";
+      return;
+    case EffectId::tread_relaxation:
+      e.acts_on = "tread (each cell's spring)";
+      return;
+    case EffectId::dry_friction:
+      e.acts_on = "applied load";
+      return;
+    case EffectId::soil_compliance:
+      e.acts_on = "road (a Winkler layer under each cell)";
+      return;
+    case EffectId::tread_coupling:
+      e.acts_on = "tread (couples units along the road)";
+      e.refused_with_3d =
+          "the 3D patch's cells are independent springs (its exact reduction to one unknown per "
+          "section needs them); tread_coupling is a 2D-patch effect";
+      return;
+    case EffectId::rolling_speed:
+      e.acts_on = "carcass (steady-rolling kernels)";
+      e.refused_with_3d =
+          "the steady-rolling carcass is not symmetric, and the 3D patch's lateral-pattern steps "
+          "minimise an energy that needs a symmetric one; rolling_speed is a 2D-patch effect";
+      return;
+    case EffectId::contact_width:
+      e.acts_on = "patch width (2D approximation)";
+      e.refused_with_3d =
+          "superseded: the 3D patch computes the width from the crown profile "
+          "(footprint_3d.crown); contact_width is the 2D patch's approximation of it";
+      return;
+  }
+}
+
 std::vector<EffectInfo> make_catalogue() {
   std::vector<EffectInfo> c;
   c.push_back({EffectId::inflation_pressure,
@@ -78,8 +120,9 @@ std::vector<EffectInfo> make_catalogue() {
                  [](E& e) -> double& { return e.rolling_speed.damping_scale; }}}});
   c.push_back({EffectId::contact_width,
                "contact_width",
-               "patch width from the crown profile, w = min(max_width, 2 sqrt(2 R_c sinking)); "
-               "the tread stiffness per unit length follows the width",
+               "2D approximation of the patch width from the crown profile, w = min(max_width, "
+               "2 sqrt(2 R_c sinking)); the tread stiffness per unit length follows the width "
+               "(superseded by the 3D patch, footprint_3d:, which computes the width)",
                {"width_mm", "length_mm", "sinking_mm"},
                "load_N",
                {{"crown_radius_mm", "mm", 150, 10, 5000, true, "transverse crown radius R_c",
@@ -95,6 +138,7 @@ std::vector<EffectInfo> make_catalogue() {
        "load_N",
        {{"stiffness_MPa", "MPa", 1, 0.0, 1000, true, "kappa in N/mm per mm of circumference",
          [](E& e) -> double& { return e.belt_flattening.stiffness_MPa; }}}});
+  for (auto& e : c) with_3d_patch(e);
   return c;
 }
 

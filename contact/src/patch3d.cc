@@ -16,9 +16,10 @@ namespace {
 
 /// The carcass-only vertical compliance of the sections as an operator: the 2D model's
 /// (vertical_compliance_operator) with the tread springs made rigid, i.e. no diagonal term.
-solvers::WeightedToeplitzCompliance carcass_operator(const TyreModel& m) {
+solvers::WeightedToeplitzCompliance carcass_operator(const TyreModel& m,
+                                                     const modal::LagKernels& kernels) {
   TyreModel carcass;
-  carcass.kernels = m.kernels;
+  carcass.kernels = kernels;
   carcass.theta = m.theta;
   carcass.k_radial_N_m = carcass.k_tangential_N_m = std::numeric_limits<double>::infinity();
   return vertical_compliance_operator(carcass);
@@ -41,8 +42,17 @@ solvers::ContactOptions contact_options(const TyreModel& m) {
 
 }  // namespace
 
-Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings)
-    : model_(model), settings_(std::move(settings)) {
+Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3dPhysics& physics)
+    : model_(model),
+      settings_(std::move(settings)),
+      kernels_(physics.kernels ? *physics.kernels : model.kernels) {
+  if (!(physics.carcass_scale > 0) || !(physics.tread_creep > 0) || !(physics.soil_m_per_Pa >= 0)) {
+    throw std::invalid_argument("3D patch: carcass scale and tread creep must be > 0, soil >= 0");
+  }
+  if (physics.carcass_scale != 1.0) {
+    for (auto* k : {&kernels_.r_from_r, &kernels_.r_from_t, &kernels_.t_from_r, &kernels_.t_from_t})
+      for (double& v : *k) v *= physics.carcass_scale;
+  }
   const auto& s = settings_;
   if (!(s.tread_width_m > 0) || !(s.lateral_cell_m > 0)) {
     throw std::invalid_argument("3D patch: tread width and lateral cell must be > 0");
@@ -60,14 +70,19 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings)
     y_m_.push_back(-half + (j + 0.5) * dy);
     z_m_.push_back(s.crown.drop_m(y_m_.back()));
   }
-  const auto& T = model_.config.tread;
+  const TreadParams& T = physics.tread ? *physics.tread : model_.config.tread;
   const double G = T.modulus_Pa / (2 * (1 + T.poisson));
-  // Seed 001 eq. (6)-(9) per unit area: a cell of dy x ds.
-  k_radial_cell_ = T.modulus_Pa * dy * model_.unit_length_m / T.thickness_m;
-  k_tangential_cell_ = G * dy * model_.unit_length_m / T.thickness_m;
+  // Seed 001 eq. (6)-(9) per unit area: a cell of dy x ds; creeping by the given factor
+  // (seed 001 eq. 10, tread_relaxation).
+  const double ds = model_.unit_length_m;
+  k_radial_cell_ = T.modulus_Pa * dy * ds / T.thickness_m / physics.tread_creep;
+  k_tangential_cell_ = G * dy * ds / T.thickness_m / physics.tread_creep;
   for (double th : model_.theta) {
     const double c = std::cos(th), sn = std::sin(th);
-    t_.push_back(c * c / k_radial_cell_ + sn * sn / k_tangential_cell_);
+    double t = c * c / k_radial_cell_ + sn * sn / k_tangential_cell_;
+    // Winkler soil under the cell (road area dy ds cos theta), in series with the tread.
+    if (physics.soil_m_per_Pa > 0) t += physics.soil_m_per_Pa / (dy * ds * c);
+    t_.push_back(t);
   }
   if (s.lateral_belt.enabled) {
     if (n > kMaxLateralBeltColumns) {
@@ -81,7 +96,7 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings)
 Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
-  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(model_);
+  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(model_, kernels_);
   const auto opt = contact_options(model_);
   const std::unique_ptr<detail::SectionLaws> laws =
       G_.size() ? detail::flexible_sections(t_, z_m_, G_, opt.max_iterations)
@@ -163,7 +178,7 @@ Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const
 Patch3dResult Patch3d::solve_cells(double load_N) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
-  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(model_);
+  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(model_, kernels_);
   const detail::CellCompliance op(carcass, ny, t_, G_.size() ? &G_ : nullptr);
   solvers::ContactProblem p;
   p.compliance_operator = &op;
@@ -231,7 +246,7 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
     r.message = msg.str();
     return r;
   }
-  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(m);
+  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(m, kernels_);
   const Eigen::VectorXd CF = carcass_product(carcass, F);
   r.section_force_N.assign(F.data(), F.data() + S);
   r.section_approach_m.resize(S);
@@ -264,7 +279,7 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
 
   // Deformed positions (seed 001 eq. 1, 6, 12): the belt section moved by the carcass, each
   // cell's surface further by its own tread.
-  const auto& K = m.kernels;
+  const auto& K = kernels_;
   const solvers::LagConvolution2x2 H({K.r_from_r, K.r_from_t, K.t_from_r, K.t_from_t}, K.lags);
   std::vector<double> fr(S), ft(S), ur(S), ut(S);
   for (int i = 0; i < S; ++i)

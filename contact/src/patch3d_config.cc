@@ -57,13 +57,4 @@ Patch3dSettings read_patch3d_settings(const ConfigSection& s) {
   return p;
 }
 
-Tyre3dConfig load_tyre3d_config(const std::string& path,
-                                const std::vector<std::string>& overrides) {
-  const ConfigTree tree = ConfigTree::load(path, overrides);
-  Tyre3dConfig c;
-  c.patch = read_patch3d_settings(tree.root().section("footprint_3d"));
-  c.tyre = read_tyre_config(tree);
-  return c;
-}
-
 }  // namespace modaltyre::contact

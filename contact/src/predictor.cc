@@ -89,15 +89,10 @@ modal::LagKernels kernels_for(const TyreModel& m, const modal::ModalBasis& basis
              : modal::build_lag_kernels(basis, m.dtheta_rad, cand, rolling);
 }
 
-// The carcass kernels and their vertical compliance when rolling_speed (at a speed > 0) or
-// belt_flattening change them; otherwise the model's static ones are used.
-struct OwnCarcass {
-  modal::LagKernels kernels;
-  Eigen::MatrixXd vertical;
-};
-
-OwnCarcass rebuilt_carcass(const TyreModel& m, const EffectsConfig& E, double scale, bool rolling,
-                           bool flattening, double speed_kmh) {
+// The carcass kernels when rolling_speed (at a speed > 0) or belt_flattening change them;
+// otherwise the model's static ones are used.
+modal::LagKernels rebuilt_kernels(const TyreModel& m, const EffectsConfig& E, double scale,
+                                  bool rolling, bool flattening, double speed_kmh) {
   modal::ModalBasis basis = m.basis;
   if (flattening) {
     // Foundation kappa on orders >= 2: c_k -> c_k / (1 + pi R kappa c_k), c_k the order's
@@ -123,10 +118,14 @@ OwnCarcass rebuilt_carcass(const TyreModel& m, const EffectsConfig& E, double sc
     rs.speed_m_s = speed_kmh / 3.6;
     rs.radius_m = m.config.outer_radius_m;
   }
-  OwnCarcass own;
-  own.kernels = kernels_for(m, basis, rs);
-  own.vertical = carcass_vertical_compliance(own.kernels, m.theta);
-  return own;
+  return kernels_for(m, basis, rs);
+}
+
+// tread_relaxation: seed 001 eq. (10), Kelvin-Voigt creep of the tread while the load is held.
+double tread_creep(const EffectsConfig& E, const OperatingConditions& c) {
+  if (!E.tread_relaxation.enabled || !(c.hold_s > 0)) return 1;
+  return 1 + E.tread_relaxation.creep_ratio *
+                 (1 - std::exp(-c.hold_s / E.tread_relaxation.time_constant_s));
 }
 
 // Horizontal force: the static cross-compliance, carcass part scaled like the vertical one; its
@@ -203,7 +202,7 @@ double crown_width(const EffectsConfig& E, double sinking_m) {
 }  // namespace
 
 TyreParameters parameters_of(const TyreConfig& config) {
-  return {config.compliance_scale, config.tread, config.effects};
+  return {config.compliance_scale, config.tread, config.effects, config.footprint_3d};
 }
 
 const std::vector<std::string>& observable_names() {
@@ -237,7 +236,7 @@ bool conditions_act(const TyreConfig& config) { return config.effects.any(); }
 
 Prediction predict(const TyreModel& model, const OperatingConditions& c,
                    const PredictOptions& options) {
-  if (!conditions_act(model.config) && c.load_N > 0) {
+  if (!conditions_act(model.config) && c.load_N > 0 && !model.config.footprint_3d) {
     return effect_free(model, c, warm_set(options.warm_active));
   }
   return predict(model, parameters_of(model.config), c, options);
@@ -271,20 +270,17 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
 
   const bool rolling = E.rolling_speed.enabled && c.speed_kmh > 0;
   const bool flattening = E.belt_flattening.enabled && E.belt_flattening.stiffness_MPa > 0;
-  OwnCarcass own;
+  modal::LagKernels own_kernels;
+  Eigen::MatrixXd own_vertical;
   const modal::LagKernels* kernels = &m.kernels;
   const Eigen::MatrixXd* carcass = &assembly.carcass_vertical;
   if (rolling || flattening) {
-    own = rebuilt_carcass(m, E, scale, rolling, flattening, c.speed_kmh);
-    kernels = &own.kernels;
-    carcass = &own.vertical;
+    own_kernels = rebuilt_kernels(m, E, scale, rolling, flattening, c.speed_kmh);
+    own_vertical = carcass_vertical_compliance(own_kernels, m.theta);
+    kernels = &own_kernels;
+    carcass = &own_vertical;
   }
-
-  double creep = 1;  // tread_relaxation: seed 001 eq. (10), Kelvin-Voigt creep while held
-  if (E.tread_relaxation.enabled && c.hold_s > 0) {
-    creep += E.tread_relaxation.creep_ratio *
-             (1 - std::exp(-c.hold_s / E.tread_relaxation.time_constant_s));
-  }
+  const double creep = tread_creep(E, c);
   const bool soil = E.soil_compliance.enabled && c.surface == Surface::soil;
   const double ratio = c.horizontal_force_N / c.load_N;
   const Eigen::MatrixXd horizontal =
@@ -327,11 +323,112 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
   return out;
 }
 
+// ---- the 3D patch (patch3d.h) ---------------------------------------------------------------
+
+// The mean of the one or two columns nearest the centre plane.
+template <class Value>
+double centre_line(int columns, Value value) {
+  return columns % 2 ? value(columns / 2) : 0.5 * (value(columns / 2 - 1) + value(columns / 2));
+}
+
+// A 3D result as a Prediction: the footprint's units are the sections in contact (resultant,
+// centre-line pressure), its edges the longest column's, its contour the centre line's.
+Prediction from_patch3d(const Patch3d& patch, Patch3dResult r, double elastic_load_N) {
+  Prediction p;
+  FootprintResult& f = p.footprint;
+  f.converged = r.converged;
+  f.message = r.message;
+  f.iterations = r.contact_iterations;
+  f.sinking_m = r.sinking_m;
+  f.contact_length_m = r.length_m;
+  f.equilibrium_residual = r.equilibrium_residual;
+  f.complementarity_residual = r.complementarity_residual;
+  f.active = r.section_active;
+  double longest = -1;
+  for (const auto& e : r.column_edges) {
+    if (e.contact && e.front_x_m - e.rear_x_m > longest) {
+      longest = e.front_x_m - e.rear_x_m;
+      f.rear_edge_x_m = e.rear_x_m;
+      f.front_edge_x_m = e.front_x_m;
+    }
+  }
+  const auto& z = patch.column_drop_m();
+  for (int i = 0; i < r.sections; ++i) {
+    // Height of the centre line above the road: its gap, 0 in contact.
+    const double gap = centre_line(
+        r.columns, [&](int j) { return z[j] + r.belt_deflection(i, j) - r.section_approach_m[i]; });
+    f.contour_x_m.push_back(r.x_m[i]);
+    f.contour_height_m.push_back(std::max(gap, 0.0));
+    if (!(r.section_force_N[i] > 0)) continue;
+    PatchUnit u;
+    u.x_m = r.x_m[i];
+    u.dx_m = r.dx_m[i];
+    u.fz_N = r.section_force_N[i];
+    u.pressure_Pa = centre_line(r.columns, [&](int j) { return r.pressure_Pa(i, j); });
+    f.units.push_back(u);
+  }
+  p.ok = r.converged;
+  p.message = r.message;
+  p.sinking_mm = r.sinking_m * 1e3;
+  p.length_mm = r.length_m * 1e3;
+  p.width_mm = r.width_m * 1e3;
+  p.elastic_load_N = elastic_load_N;
+  p.patch3d = std::make_shared<const Patch3dResult>(std::move(r));
+  return p;
+}
+
+// The 3D patch with the parameters' carcass level and kernels, tread and soil (patch3d.h
+// Patch3dPhysics); the effects it cannot take fail with their reason.
+Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const OperatingConditions& c,
+                        const PredictOptions& options) {
+  const EffectsConfig& E = P.effects;
+  if (!(c.load_N > 0)) return failed("load must be greater than 0 N");
+  for (const auto& e : effect_catalogue()) {
+    if (E.enabled(e.id) && !e.refused_with_3d.empty()) {
+      return failed(e.name + " cannot be combined with footprint_3d: " + e.refused_with_3d);
+    }
+  }
+  if (c.horizontal_force_N != 0) {
+    return failed("the 3D patch (footprint_3d) takes no horizontal force; use a 2D config");
+  }
+  double elastic = 0;
+  std::string why;
+  if (!elastic_load(E, c, elastic, why)) return failed(why);
+  Patch3dPhysics physics;
+  physics.carcass_scale = carcass_scale(m, P, c, elastic);
+  modal::LagKernels flattened;
+  if (E.belt_flattening.enabled && E.belt_flattening.stiffness_MPa > 0) {
+    flattened = rebuilt_kernels(m, E, physics.carcass_scale, false, true, 0);
+    physics.kernels = &flattened;
+  }
+  physics.tread = &P.tread;
+  physics.tread_creep = tread_creep(E, c);
+  if (E.soil_compliance.enabled && c.surface == Surface::soil) {
+    physics.soil_m_per_Pa =
+        E.soil_compliance.layer_mm * 1e-3 / (E.soil_compliance.modulus_MPa * 1e6);
+  }
+  try {
+    const Patch3d patch(m, *P.footprint_3d, physics);
+    const std::vector<char> warm = warm_set(options.warm_active);
+    const bool warm_fits = static_cast<int>(warm.size()) == patch.sections();
+    Patch3dResult r = patch.solve(elastic, warm_fits ? &warm : nullptr);
+    if (!r.converged) return failed(r.message);
+    Prediction p = from_patch3d(patch, std::move(r), elastic);
+    if (!std::isfinite(p.sinking_mm) || !std::isfinite(p.length_mm) || !std::isfinite(p.width_mm)) {
+      return failed("prediction is not finite");
+    }
+    return p;
+  } catch (const std::invalid_argument& e) {  // settings a calibration or sweep made invalid
+    return failed(e.what());
+  }
+}
+
 }  // namespace
 
 Prediction predict(const TyreModel& model, const TyreParameters& parameters,
                    const OperatingConditions& c, const PredictOptions& options) {
-  Prediction p = effects_path(model, parameters, c, options);
+  Prediction p = parameters.footprint_3d ? patch3d_path(model, parameters, c, options)
+                                         : effects_path(model, parameters, c, options);
   p.footprint.load = {c.load_N, c.horizontal_force_N};  // the applied load, failed or not
   return p;
 }

@@ -13,6 +13,12 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   c.name = tyre.text("name", c.name);
   c.outer_radius_m = tyre.number("outer_radius_mm", 294.8, 50, 2000) * 1e-3;
   c.inflation_pressure_Pa = tyre.number("inflation_pressure_kPa", 230, 10, 2000) * 1e3;
+  c.section_width_m = tyre.number("section_width_mm", 0, 0, 2000) * 1e-3;
+  c.aspect_ratio = tyre.number("aspect_ratio", 0, 0, 2);
+  c.rim_radius_m = tyre.number("rim_radius_mm", 0, 0, 2000) * 1e-3;
+  if (c.rim_radius_m >= c.outer_radius_m) {
+    tyre.fail("rim_radius_mm", "the rim radius must be smaller than outer_radius_mm");
+  }
 
   const ConfigSection modal = root.section("modal");
   if (!modal.has("hammer_csv")) modal.fail("hammer_csv", "required: path of the hammer data CSV");
@@ -61,8 +67,8 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
     return rows;
   }();
   c.validation.observables = val.texts("calibration_observables", c.validation.observables);
-  if (c.validation.calibrate.size() > 2) {
-    val.fail("calibrate", "at most two parameters may be calibrated");
+  if (c.validation.calibrate.size() > 3) {
+    val.fail("calibrate", "at most three parameters may be calibrated");
   }
   if (c.validation.calibration_rows.size() > 2) {
     val.fail("calibration_rows", "at most two rows may be used for calibration");
@@ -71,14 +77,16 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
     val.fail("calibration_rows", "calibrated parameters need calibration rows");
   }
   for (const auto& o : c.validation.observables) {
-    if (o != "sinking_mm" && o != "length_mm") {
-      val.fail("calibration_observables", "'" + o + "' is not one of: sinking_mm, length_mm");
+    if (o != "sinking_mm" && o != "length_mm" && o != "width_mm") {
+      val.fail("calibration_observables",
+               "'" + o + "' is not one of: sinking_mm, length_mm, width_mm");
     }
   }
   const ConfigSection tr = root.section("transient");
   auto& T = c.transient;
   T.hub_mass_kg = tr.positive("hub_mass_kg", T.hub_mass_kg, 1e5);
-  T.dynamic_max_order = static_cast<int>(tr.integer("dynamic_max_order", T.dynamic_max_order, 0, 2000));
+  T.dynamic_max_order =
+      static_cast<int>(tr.integer("dynamic_max_order", T.dynamic_max_order, 0, 2000));
   T.relaxation = tr.boolean("relaxation", T.relaxation);
   T.tread_reference_frequency_hz =
       tr.positive("tread_reference_frequency_hz", T.tread_reference_frequency_hz, 1e6);
@@ -111,6 +119,20 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   T.cleat.length_m = cl.positive("length_mm", T.cleat.length_m * 1e3, 2000) * 1e-3;
   T.cleat.ramp_s = cl.number("ramp_s", T.cleat.ramp_s, 0, 1e6);
   c.effects = read_effects(root.section("effects"));
+  if (root.has("footprint_3d")) {
+    c.footprint_3d = read_patch3d_settings(root.section("footprint_3d"));
+    // What the 3D patch does not model is refused, not ignored.
+    for (const auto& e : effect_catalogue()) {
+      if (c.effects.enabled(e.id) && !e.refused_with_3d.empty()) {
+        root.section("effects").section(e.name).fail(
+            "enabled", "cannot be combined with footprint_3d: " + e.refused_with_3d);
+      }
+    }
+    if (c.horizontal_force_N != 0) {
+      root.fail("horizontal_force_N",
+                "the 3D patch (footprint_3d) takes no horizontal force; use a 2D config");
+    }
+  }
   tree.reject_unknown_keys();
   return c;
 }

@@ -83,11 +83,42 @@ std::string gnuplot_script(const PlotFigure& figure, const std::string& terminal
       gp << "EOD\n";
     }
   }
+  int image = 0;
+  for (const auto& panel : figure.panels) {
+    if (panel.image.empty()) continue;
+    gp << "$m" << image++ << " << EOD\n";
+    const auto& im = panel.image;
+    for (std::size_t j = 0; j < im.y.size() && j < im.values.size(); ++j) {
+      for (std::size_t i = 0; i < im.x.size() && i < im.values[j].size(); ++i) {
+        write_number(gp, im.x[i]);
+        gp << " ";
+        write_number(gp, im.y[j]);
+        gp << " ";
+        write_number(gp, im.values[j][i]);
+        gp << "\n";
+      }
+      gp << "\n";  // one scan line per y
+    }
+    gp << "EOD\n";
+  }
   gp << "set grid lc rgb '#dddddd'\n";
+  // Pressure-sensitive film: white where nothing pressed, deepening magenta with pressure.
+  gp << "set palette defined (0 '#ffffff', 0.15 '#fbe3ee', 0.5 '#e0529b', 1 '#6e0b40')\n";
   if (n > 1) gp << "set multiplot layout " << rows << "," << cols << "\n";
   block = 0;
+  image = 0;
   for (const auto& panel : figure.panels) {
     gp << "set title " << gnuplot_quote(panel.title) << "\n";
+    gp << (panel.equal_axes ? "set size ratio -1\n" : "set size noratio\n");
+    const auto& im = panel.image;
+    if (!im.empty()) {
+      gp << "set cblabel " << gnuplot_quote(im.cblabel) << "\n";
+      if (im.cbmax > im.cbmin) {
+        gp << "set cbrange [" << im.cbmin << ":" << im.cbmax << "]\n";
+      } else {
+        gp << "set autoscale cb\n";
+      }
+    }
     gp << "set key " << keywords_only(panel.key) << "\n";
     if (panel.xmax > panel.xmin) {
       gp << "set xrange [" << panel.xmin << ":" << panel.xmax << "]\n";
@@ -102,14 +133,15 @@ std::string gnuplot_script(const PlotFigure& figure, const std::string& terminal
     gp << "set xlabel " << gnuplot_quote(panel.xlabel) << "\nset ylabel "
        << gnuplot_quote(panel.ylabel) << "\n";
     std::string plot = "plot ";
+    if (!im.empty()) plot += "$m" + std::to_string(image++) + " with image notitle";
     for (std::size_t s = 0; s < panel.series.size(); ++s) {
       const auto& ser = panel.series[s];
       const std::string style =
           ser.style == "points" ? "points pt 7 ps 1.2" : keywords_only(ser.style) + " lw 2";
-      plot += (s ? ", " : "") + std::string("$d") + std::to_string(block++) + " with " + style +
-              " title " + gnuplot_quote(ser.title);
+      plot += (s || !im.empty() ? ", " : "") + std::string("$d") + std::to_string(block++) +
+              " with " + style + " title " + gnuplot_quote(ser.title);
     }
-    gp << (panel.series.empty() ? "plot 0 notitle" : plot) << "\n";
+    gp << (panel.series.empty() && im.empty() ? "plot 0 notitle" : plot) << "\n";
   }
   if (n > 1) gp << "unset multiplot\n";
   return gp.str();

@@ -34,8 +34,11 @@ std::size_t distinct(const MeasurementSet& d, const std::string& condition) {
 
 // Whether the data can reveal an effect: its regime variable must vary (an effect acting as a
 // constant factor is confounded with the re-fitted baseline scalars).
-std::string untestable_reason(EffectId id, const MeasurementSet& d) {
+std::string untestable_reason(EffectId id, const MeasurementSet& d, const TyreConfig& config) {
   const auto& info = contact::effect_info(id);
+  if (config.footprint_3d && !info.refused_with_3d.empty()) {
+    return "not on the 3D patch: " + info.refused_with_3d;
+  }
   const std::size_t n = distinct(d, info.regime);
   switch (id) {
     case EffectId::load_stiffening:
@@ -240,7 +243,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     };
   };
 
-  Stage current{make_variant({}), {}, {}};
+  Stage current{make_variant(config, {}), {}, {}};
   {
     auto fc = fit_and_cross_validate(ev, eval, current.variant, opt.fit, ticker("baseline", 2));
     current.fit = std::move(fc.fit);
@@ -271,7 +274,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
       }
       CandidateScore s;
       s.name = info.name;
-      s.reason = untestable_reason(info.id, data);
+      s.reason = untestable_reason(info.id, data, config);
       s.testable = s.reason.empty();
       scores.push_back(s);
       ids.push_back(info.id);
@@ -287,7 +290,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
       std::vector<EffectId> effects = current.variant.effects;
       effects.push_back(ids[c]);
       Stage& st = stages[c];
-      st.variant = make_variant(effects);
+      st.variant = make_variant(config, effects);
       auto fc = fit_and_cross_validate(ev, current.fit.config, st.variant, opt.fit, tick);
       st.fit = std::move(fc.fit);
       st.cv = std::move(fc.cv);

@@ -62,15 +62,24 @@ double search_derivative(const FreeParameter& p, double u) {
   return (p.max - p.min) * ds;
 }
 
-std::vector<FreeParameter> baseline_parameters() {
-  return {make_parameter(
-              "modal.compliance_scale", 0.05, 20,
-              [](const TyreConfig& c) { return c.compliance_scale; },
-              [](TyreConfig& c, double v) { c.compliance_scale = v; }),
-          make_parameter(
-              "tread.modulus_MPa", 0.05, 200,
-              [](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; },
-              [](TyreConfig& c, double v) { c.tread.modulus_Pa = v * 1e6; })};
+std::vector<FreeParameter> baseline_parameters(const TyreConfig& config) {
+  std::vector<FreeParameter> out = {make_parameter(
+      "modal.compliance_scale", 0.05, 20, [](const TyreConfig& c) { return c.compliance_scale; },
+      [](TyreConfig& c, double v) { c.compliance_scale = v; })};
+  if (config.footprint_3d && config.footprint_3d->crown.shape == contact::CrownShape::circular) {
+    // The 3D patch's second scalar: its crown radius (the tread modulus is a sourced compound
+    // value there, not an effective layer). Above 100 mm: the crown stays a graph over a tread.
+    out.push_back(make_parameter(
+        "footprint_3d.crown.radius_mm", 100, 1e5,
+        [](const TyreConfig& c) { return c.footprint_3d->crown.radius_m * 1e3; },
+        [](TyreConfig& c, double v) { c.footprint_3d->crown.radius_m = v * 1e-3; }));
+  } else {
+    out.push_back(make_parameter(
+        "tread.modulus_MPa", 0.05, 200,
+        [](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; },
+        [](TyreConfig& c, double v) { c.tread.modulus_Pa = v * 1e6; }));
+  }
+  return out;
 }
 
 std::vector<FreeParameter> effect_parameters(EffectId id) {
@@ -97,10 +106,10 @@ std::string Variant::name() const {
   return n;
 }
 
-Variant make_variant(const std::vector<EffectId>& effects) {
+Variant make_variant(const TyreConfig& config, const std::vector<EffectId>& effects) {
   Variant v;
   v.effects = effects;
-  v.parameters = baseline_parameters();
+  v.parameters = baseline_parameters(config);
   for (auto id : effects) {
     for (auto& p : effect_parameters(id)) v.parameters.push_back(std::move(p));
   }

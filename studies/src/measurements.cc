@@ -111,6 +111,10 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
       if (!(std::abs(c.horizontal_force_N) <= 1e7)) {
         throw InputError(at("horizontal_force_N"), "horizontal force must be in [-1e7, 1e7] N");
       }
+      if (defaults.footprint_3d && c.horizontal_force_N != 0) {
+        throw InputError(at("horizontal_force_N"),
+                         "the config's 3D patch (footprint_3d) takes no horizontal force");
+      }
     }
     if (t.has("branch")) {
       const std::string& b = t.text(i, "branch");

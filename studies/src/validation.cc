@@ -22,6 +22,26 @@ struct Calibratable {
   double min, max;  ///< physically plausible range searched by the calibration
 };
 
+// The 3D patch settings a footprint_3d.* key calibrates; InputError when the config has none.
+template <class Config>
+auto& patch3d_of(Config& c) {
+  if (!c.footprint_3d) {
+    throw InputError({c.source, 0, "validation.calibrate"},
+                     "footprint_3d.* keys need a footprint_3d: section (the 3D patch)");
+  }
+  return *c.footprint_3d;
+}
+
+template <class Config>
+auto& crown_of(Config& c) {
+  auto& crown = patch3d_of(c).crown;
+  if (crown.shape != CrownShape::circular) {
+    throw InputError({c.source, 0, "validation.calibrate"},
+                     "footprint_3d.crown.radius_mm is calibrated only on a circular crown");
+  }
+  return crown;
+}
+
 /// Scalar config keys that may be calibrated.
 const std::map<std::string, Calibratable>& calibratable() {
   static const std::map<std::string, Calibratable> keys = {
@@ -48,6 +68,13 @@ const std::map<std::string, Calibratable>& calibratable() {
           }
         },
         100, 1500}},
+      // The 3D patch's crown (footprint_3d.crown, circular): rounder crown, narrower patch.
+      {"footprint_3d.crown.radius_mm",
+       {[](const TyreConfig& c) { return crown_of(c).radius_m * 1e3; },
+        [](TyreConfig& c, double v) { crown_of(c).radius_m = v * 1e-3; }, 100, 1e5}},
+      {"footprint_3d.tread_width_mm",
+       {[](const TyreConfig& c) { return patch3d_of(c).tread_width_m * 1e3; },
+        [](TyreConfig& c, double v) { patch3d_of(c).tread_width_m = v * 1e-3; }, 20, 500}},
       // Starts at 10 rad^2/s^2 when not stated (the fit to resolved orders may give 0).
       {"modal.extension_bending_s2_rad2_s2",
        {[](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; },

@@ -10,7 +10,7 @@
 
 namespace {
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 
 class EffectsCli : public modaltyre_test::CliFixture {
  protected:
@@ -109,6 +109,43 @@ TEST_F(EffectsCli, OutOfRangeValueExitsTwoNamingTheKey) {
     EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
     EXPECT_TRUE(r.out.empty()) << key;
   }
+}
+
+}  // namespace
+
+namespace {
+
+const std::string k3dConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+
+class EffectsWith3dPatchCli : public modaltyre_test::CliFixture {};
+
+// Each effect states what it acts on and whether the 3D patch takes it; the refused ones are
+// refused by the config reader with exit 2, naming the key and the reason.
+TEST_F(EffectsWith3dPatchCli, CatalogueStatesWhichEffectsComposeAndRefusedOnesExitTwo) {
+  const auto r = run({"effects", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::set<std::string> refused;
+  const auto catalogue = nlohmann::json::parse(r.out);
+  for (const auto& e : catalogue["effects"]) {
+    EXPECT_FALSE(e["acts_on"].get<std::string>().empty()) << e["name"];
+    const auto& w = e["with_footprint_3d"];
+    if (!w["composes"].get<bool>()) {
+      refused.insert(e["name"].get<std::string>());
+      EXPECT_FALSE(w["refused_because"].get<std::string>().empty());
+    }
+  }
+  EXPECT_EQ(refused, (std::set<std::string>{"contact_width", "rolling_speed", "tread_coupling"}));
+  for (const auto& name : refused) {
+    const auto f = run({"footprint", k3dConfig, "--load", "4000", "--set",
+                        "contact.unit_length_mm=2", "--set", "effects." + name + ".enabled=true"});
+    EXPECT_EQ(f.exit_code, 2) << name;
+    EXPECT_NE(f.err.find("effects." + name + ".enabled"), std::string::npos) << f.err;
+    EXPECT_NE(f.err.find("footprint_3d"), std::string::npos) << f.err;
+    EXPECT_TRUE(f.out.empty());
+  }
+  const auto table = run({"effects"});
+  EXPECT_NE(table.out.find("refused, superseded: the 3D patch computes the width"),
+            std::string::npos);
 }
 
 }  // namespace

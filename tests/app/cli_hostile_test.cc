@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 
 const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSrc + "/configs/sf350.yaml";
+const std::string kConfig = kSrc + "/configs/sf350_2d_table3.yaml";
 
 class CliHostile : public modaltyre_test::CliFixture {
  protected:

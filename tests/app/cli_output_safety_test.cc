@@ -19,7 +19,7 @@ using modaltyre_test::CliRun;
 using modaltyre_test::quote;
 
 const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSrc + "/configs/sf350.yaml";
+const std::string kConfig = kSrc + "/configs/sf350_2d_table3.yaml";
 const std::string kHammer = kSrc + "/configs/data/sf350_hammer_12pt.csv";
 
 class CliOutputSafety : public modaltyre_test::CliFixture {

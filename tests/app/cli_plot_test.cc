@@ -20,7 +20,7 @@ using modaltyre_test::CliRun;
 using modaltyre_test::quote;
 
 const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSrc + "/configs/sf350.yaml";
+const std::string kConfig = kSrc + "/configs/sf350_2d_table3.yaml";
 const std::string kTable3 = kSrc + "/configs/data/sf350_footprint_table3.csv";
 
 struct Panel {

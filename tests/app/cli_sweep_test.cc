@@ -25,7 +25,7 @@ using modaltyre_test::CliRun;
 using modaltyre_test::slurp;
 
 const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kBase = kSource + "/configs/sf350.yaml";
+const std::string kBase = kSource + "/configs/sf350_2d_table3.yaml";
 
 class SweepCli : public modaltyre_test::CliFixture {
  protected:

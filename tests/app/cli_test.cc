@@ -179,7 +179,7 @@ TEST_F(Cli, FitModesJsonOnSf350) {
 
 // A misspelt --set key is refused, naming the key and --set.
 TEST_F(Cli, FootprintMisspeltSetKey) {
-  const std::string cfg = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+  const std::string cfg = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
   const CliRun r = run({"footprint", cfg, "--set", "tread.modolus_MPa=3"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("tread.modolus_MPa"), std::string::npos) << r.err;
@@ -188,7 +188,7 @@ TEST_F(Cli, FootprintMisspeltSetKey) {
 
 // A misspelt key in a YAML file is refused with file:line and the dotted key.
 TEST_F(Cli, FootprintMisspeltYamlKey) {
-  std::string yaml = slurp(std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml");
+  std::string yaml = slurp(std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml");
   // Point the hammer data at the bundled copy (the config is written elsewhere).
   yaml = std::regex_replace(
       yaml, std::regex("hammer_csv: .*"),
@@ -206,7 +206,7 @@ TEST_F(Cli, FootprintMisspeltYamlKey) {
 
 // A negative tread modulus is physically impossible: exit 2, naming the key.
 TEST_F(Cli, FootprintNegativeModulus) {
-  const std::string cfg = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+  const std::string cfg = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
   const CliRun r = run({"footprint", cfg, "--set", "tread.modulus_MPa=-3"});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("tread.modulus_MPa"), std::string::npos) << r.err;

@@ -19,7 +19,7 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 const std::string kCoarseMesh = "contact.unit_length_mm=2";
 constexpr double kLoad_N = 4000;
 

@@ -13,7 +13,7 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 const std::string kFig5 = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_fig5.yaml";
 
 // Sum of forces and symmetry are exact up to rounding in direct solves.

@@ -11,7 +11,7 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 // The problem's solution is unique; both routes solve it to CG/rounding accuracy.
 constexpr double kSame = 1e-9;
 

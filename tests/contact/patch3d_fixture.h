@@ -12,7 +12,7 @@
 
 namespace modaltyre::contact::testing {
 
-inline const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_3d.yaml";
+inline const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
 
 // A coarse mesh keeps the full cell solve (every cell an unknown) quick.
 inline const std::vector<std::string> kCoarse = {
@@ -30,10 +30,13 @@ inline std::vector<std::string> with(std::vector<std::string> a,
 }
 
 struct Tyre3d {
-  Tyre3dConfig config;
+  TyreConfig tyre;
+  Patch3dSettings patch;  ///< the config's footprint_3d: section
   TyreModel model;
   explicit Tyre3d(const std::vector<std::string>& overrides)
-      : config(load_tyre3d_config(kConfig, overrides)), model(build_tyre_model(config.tyre)) {}
+      : tyre(load_tyre_config(kConfig, overrides)),
+        patch(tyre.footprint_3d.value()),
+        model(build_tyre_model(tyre)) {}
 };
 
 inline double max_abs(const std::vector<double>& v) {
@@ -66,7 +69,7 @@ inline void expect_reduction_equals_full_cell_solve(const Patch3d& patch,
 inline void expect_mesh_converged(const std::vector<std::string>& coarse,
                                   const std::vector<std::string>& fine) {
   const Tyre3d c(coarse), f(fine);
-  const Patch3d pc(c.model, c.config.patch), pf(f.model, f.config.patch);
+  const Patch3d pc(c.model, c.patch), pf(f.model, f.patch);
   const auto rc = pc.solve_all({2131, 8321});
   const auto rf = pf.solve_all({2131, 8321});
   for (std::size_t k = 0; k < rc.size(); ++k) {

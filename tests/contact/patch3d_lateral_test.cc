@@ -100,9 +100,9 @@ TEST(LateralBelt, FreeStripLeavesItsRigidMotionToTheCarcass) {
 
 TEST(LateralBelt, StiffBeltEqualsTheLaterallyRigidPatch) {
   const Tyre3d s(kCoarse);
-  Patch3dSettings stiff = s.config.patch;
+  Patch3dSettings stiff = s.patch;
   stiff.lateral_belt = belt(BeltSupports::shoulders, 1e16);
-  const Patch3d rigid(s.model, s.config.patch), flex(s.model, stiff);
+  const Patch3d rigid(s.model, s.patch), flex(s.model, stiff);
   for (double F : {2131.0, 8321.0}) {
     const Patch3dResult a = rigid.solve(F), b = flex.solve(F);
     ASSERT_TRUE(a.converged && b.converged) << a.message << " / " << b.message;
@@ -122,7 +122,7 @@ TEST(LateralBelt, ReductionEqualsTheFullCellSolve) {
                                               "footprint_3d.lateral_belt.support_span_mm=170"};
   for (const auto& variant : {kFlexible, shoulders}) {
     const Tyre3d s(with(kCoarse, variant));
-    expect_reduction_equals_full_cell_solve(Patch3d(s.model, s.config.patch), {2131, 8321});
+    expect_reduction_equals_full_cell_solve(Patch3d(s.model, s.patch), {2131, 8321});
   }
 }
 
@@ -139,9 +139,9 @@ TEST(LateralBelt, FlatCrownOnARigidCarcassIsABeamOnTheTreadFoundation) {
                   &s.model.kernels.t_from_t}) {
     std::fill(k->begin(), k->end(), 0.0);
   }
-  const auto& T = s.config.tyre.tread;
+  const auto& T = s.tyre.tread;
   const double kf = T.modulus_Pa / T.thickness_m, beta = bc / c;
-  Patch3dSettings set = s.config.patch;
+  Patch3dSettings set = s.patch;
   set.lateral_belt = belt(BeltSupports::shoulders, kf / (4 * std::pow(beta, 4)));
   const Patch3d patch(s.model, set);
   const Patch3dResult r = patch.solve(3000);
@@ -170,16 +170,16 @@ TEST(LateralBelt, FlatCrownOnARigidCarcassIsABeamOnTheTreadFoundation) {
 
 TEST(LateralBelt, SymmetricAcrossTheTread) {
   const Tyre3d s(with(kCoarse, kFlexible));
-  expect_symmetric_in_y(Patch3d(s.model, s.config.patch).solve(5478));
+  expect_symmetric_in_y(Patch3d(s.model, s.patch).solve(5478));
 }
 
 TEST(LateralBelt, EquilibriumComplementarityNoTensionNoPenetration) {
   const Tyre3d s(kFlexible);
-  const Patch3d patch(s.model, s.config.patch);
+  const Patch3d patch(s.model, s.patch);
   for (const Patch3dResult& r : patch.solve_all({2131, 5478, 8321})) {
     expect_equilibrium_and_complementarity(r);
     EXPECT_GT(r.width_m, 0.0);
-    EXPECT_LT(r.width_m, s.config.patch.tread_width_m);  // the edge is inside the tread here
+    EXPECT_LT(r.width_m, s.patch.tread_width_m);  // the edge is inside the tread here
   }
 }
 

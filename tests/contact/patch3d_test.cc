@@ -20,7 +20,7 @@ using namespace modaltyre::contact::testing;
 
 TEST(Patch3d, LaterallyRigidReductionEqualsTheFullCellSolve) {
   const Tyre3d s(kCoarse);
-  expect_reduction_equals_full_cell_solve(Patch3d(s.model, s.config.patch), {2131, 8321});
+  expect_reduction_equals_full_cell_solve(Patch3d(s.model, s.patch), {2131, 8321});
 }
 
 TEST(Patch3d, FlatCrownReproducesThe2DPatchTimesWidth) {
@@ -28,7 +28,7 @@ TEST(Patch3d, FlatCrownReproducesThe2DPatchTimesWidth) {
   // section's tread is the 2D unit's (k_r = E b ds / h).
   const Tyre3d s(with(kCoarse, {"footprint_3d.crown.shape=flat", "footprint_3d.tread_width_mm=150",
                                 "tread.contact_width_mm=150"}));
-  const Patch3d patch(s.model, s.config.patch);
+  const Patch3d patch(s.model, s.patch);
   for (double F : {2131.0, 5478.0, 8321.0}) {
     const Patch3dResult r3 = patch.solve(F);
     const FootprintResult r2 = solve_footprint(s.model, {F, 0});
@@ -59,12 +59,12 @@ TEST(Patch3d, FlatCrownReproducesThe2DPatchTimesWidth) {
 
 TEST(Patch3d, SymmetricAcrossTheTread) {
   const Tyre3d s(kCoarse);
-  expect_symmetric_in_y(Patch3d(s.model, s.config.patch).solve(5478));
+  expect_symmetric_in_y(Patch3d(s.model, s.patch).solve(5478));
 }
 
 TEST(Patch3d, EquilibriumComplementarityNoTensionNoPenetration) {
   const Tyre3d s({});
-  const Patch3d patch(s.model, s.config.patch);
+  const Patch3d patch(s.model, s.patch);
   for (const Patch3dResult& r : patch.solve_all({2131, 5478, 8321})) {
     expect_equilibrium_and_complementarity(r);
   }
@@ -82,9 +82,9 @@ TEST(Patch3d, RigidTorusOnAWinklerTreadGivesTheEllipse) {
                   &s.model.kernels.t_from_t}) {
     std::fill(k->begin(), k->end(), 0.0);
   }
-  const Patch3d patch(s.model, s.config.patch);
-  const double F = 3000, R0 = s.config.tyre.outer_radius_m, Rc = 0.3;
-  const auto& T = s.config.tyre.tread;
+  const Patch3d patch(s.model, s.patch);
+  const double F = 3000, R0 = s.tyre.outer_radius_m, Rc = 0.3;
+  const auto& T = s.tyre.tread;
   const double k = T.modulus_Pa / T.thickness_m;
   const double delta = std::sqrt(F / (k * M_PI * std::sqrt(R0 * Rc)));
   const Patch3dResult r = patch.solve(F);
@@ -108,7 +108,7 @@ TEST_P(Patch3dMesh, HalvingTheSpacingChangesSinkingLengthWidthByLessThanHalfAPer
   expect_mesh_converged(GetParam().coarse, GetParam().fine);
 }
 
-// The default mesh of configs/sf350_3d.yaml (0.5 mm x 2.5 mm) against half of each spacing.
+// The default mesh of configs/sf350.yaml (0.5 mm x 2.5 mm) against half of each spacing.
 INSTANTIATE_TEST_SUITE_P(
     DefaultMesh, Patch3dMesh,
     ::testing::Values(Spacing{"AlongX", {}, {"contact.unit_length_mm=0.25"}},
@@ -117,7 +117,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Patch3d, PressureMapRowsPerYAndCroppedToTheContact) {
   const Tyre3d s(kCoarse);
-  const Patch3d patch(s.model, s.config.patch);
+  const Patch3d patch(s.model, s.patch);
   const Patch3dResult r = patch.solve(5478);
   ASSERT_TRUE(r.converged);
   const PressureMap map = pressure_map(r, 2);
@@ -143,15 +143,15 @@ TEST(Patch3d, PressureMapRowsPerYAndCroppedToTheContact) {
 
 TEST(Patch3d, WidthGrowsWithLoadUpToTheTreadWidth) {
   const Tyre3d s(with(kCoarse, {"footprint_3d.crown.radius_mm=2000"}));
-  const Patch3d patch(s.model, s.config.patch);
+  const Patch3d patch(s.model, s.patch);
   double last = 0;
   for (const auto& r : patch.solve_all({1000, 3000, 6000, 12000, 20000})) {
     ASSERT_TRUE(r.converged) << r.message;
     EXPECT_GE(r.width_m, last);
-    EXPECT_LE(r.width_m, s.config.patch.tread_width_m + 1e-15);
+    EXPECT_LE(r.width_m, s.patch.tread_width_m + 1e-15);
     last = r.width_m;
   }
-  EXPECT_DOUBLE_EQ(last, s.config.patch.tread_width_m);  // the shoulder limit
+  EXPECT_DOUBLE_EQ(last, s.patch.tread_width_m);  // the shoulder limit
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 namespace modaltyre::contact {
 namespace {
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 
 TEST(Validity, LimitsAreTwelvePercentOfR0InSinkingAndR0InContactLength) {
   TyreConfig c;

@@ -102,5 +102,32 @@ TEST_F(Gnuplot, UnknownExtensionIsAnInputError) {
   EXPECT_EQ(entries(), 0u);
 }
 
+// An image panel: its grid is an inline datablock, one scan line per y (blank line between),
+// drawn `with image` under the series; gnuplot renders it to a complete SVG.
+TEST_F(Gnuplot, ImagePanelIsAScanLineDatablockDrawnUnderTheSeries) {
+  PlotPanel p;
+  p.image.x = {0, 1, 2};
+  p.image.y = {-1, 1};
+  p.image.values = {{0, 5, 0}, {1, 9, 1}};
+  p.image.cblabel = "pressure [kPa]";
+  p.image.cbmax = 10;
+  p.equal_axes = true;
+  p.series.push_back({"contour", {0, 2, 2, 0, 0}, {-1, -1, 1, 1, -1}, "lines"});
+  const std::string gp = gnuplot_script(PlotFigure{{p}}, "svg");
+  EXPECT_NE(gp.find("$m0 << EOD\n0 -1 0\n1 -1 5\n2 -1 0\n\n0 1 1\n1 1 9\n2 1 1\n\nEOD\n"),
+            std::string::npos)
+      << gp;
+  EXPECT_NE(gp.find("plot $m0 with image notitle, $d0 with lines"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set cbrange [0:10]"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set size ratio -1"), std::string::npos) << gp;
+  const fs::path out = dir_ / "map.svg";
+  render_plot(PlotFigure{{p}}, out.string());
+  std::ifstream in(out);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("</svg>"), std::string::npos);
+  EXPECT_NE(text.str().find("<image"), std::string::npos);  // the map as a raster image
+}
+
 }  // namespace
 }  // namespace modaltyre

@@ -24,7 +24,7 @@ using contact::OperatingConditions;
 using contact::Surface;
 using contact::TyreConfig;
 
-inline const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+inline const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 // The carcass with the dispersion extension (orders up to the mesh's Nyquist order) instead of
 // the default's measured orders only.
 inline const std::string kExtended = "modal.extend_orders=true";

@@ -24,7 +24,7 @@ class CliEma : public CliFixture {
     std::ofstream(p, std::ios::binary) << modaltyre_test::uff58_file(set);
     return p.string();
   }
-  static std::string config() { return std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml"; }
+  static std::string config() { return std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml"; }
 };
 
 // Footprint of the bundled data against the footprint of its round trip through FRFs. The

@@ -14,9 +14,9 @@ const modaltyre::contact::TyreConfig& defaults() {
   static const modaltyre::contact::TyreConfig config = [] {
     try {
       return modaltyre::contact::load_tyre_config(modaltyre::fuzz::source_dir() +
-                                                  "/configs/sf350.yaml");
+                                                  "/configs/sf350_2d_table3.yaml");
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "fuzz_measurements: cannot read configs/sf350.yaml: %s\n", e.what());
+      std::fprintf(stderr, "fuzz_measurements: cannot read configs/sf350_2d_table3.yaml: %s\n", e.what());
       std::abort();  // a setup problem, not a finding
     }
   }();

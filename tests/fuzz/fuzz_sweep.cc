@@ -3,7 +3,7 @@
 // every condition) and the CSV cells of each case. No footprint is solved.
 //
 // The sweep is named configs/sweeps/fuzz.yaml inside the source tree so that
-// `base: ../sf350.yaml` resolves like the bundled sweeps'.
+// `base: ../sf350_2d_table3.yaml` resolves like the bundled sweeps'.
 #include <string>
 
 #include "fuzz_support.h"

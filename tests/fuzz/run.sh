@@ -8,7 +8,7 @@
 #   FUZZ_TARGETS="fuzz_csv fuzz_sweep" tests/fuzz/run.sh
 # Environment: FUZZ_BUILD_DIR (default build-fuzz), FUZZ_TIME (seconds per target, 60),
 # FUZZ_JOBS (build parallelism, default: Ninja's), FUZZ_PARALLEL (targets fuzzed at once,
-# default: number of cores), FUZZ_TARGETS (default: all eight), CC / CXX (default: clang-14 /
+# default: number of cores), FUZZ_TARGETS (default: all nine), CC / CXX (default: clang-14 /
 # clang++-14 if installed, else clang / clang++).
 # Findings are written to $FUZZ_BUILD_DIR/fuzz-findings/<target>/ (crash-*, timeout-*, oom-*,
 # leak-*) with the log beside them; the seed corpus in tests/fuzz/corpus is never modified
@@ -19,7 +19,7 @@ root=$PWD
 
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 time_per_target=${FUZZ_TIME:-60}
-targets=(${FUZZ_TARGETS:-fuzz_csv fuzz_config fuzz_hammer fuzz_measurements fuzz_sweep fuzz_rheology fuzz_uff58 fuzz_frf_csv})
+targets=(${FUZZ_TARGETS:-fuzz_csv fuzz_config fuzz_hammer fuzz_measurements fuzz_sweep fuzz_rheology fuzz_uff58 fuzz_frf_csv fuzz_tir})
 
 pick() { for c in "$@"; do command -v "$c" >/dev/null 2>&1 && { echo "$c"; return; }; done; echo "$1"; }
 export CC=${CC:-$(pick clang-14 clang)}
@@ -47,6 +47,7 @@ dict_of() {
   case $1 in
     fuzz_config | fuzz_sweep) echo "$root/tests/fuzz/dict/yaml.dict" ;;
     fuzz_uff58) echo "$root/tests/fuzz/dict/uff.dict" ;;
+    fuzz_tir) echo "$root/tests/fuzz/dict/tir.dict" ;;
     *) echo "$root/tests/fuzz/dict/csv.dict" ;;
   esac
 }

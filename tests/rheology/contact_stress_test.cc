@@ -124,7 +124,7 @@ TEST(rheology_ContactStress, DegenerateInputs) {
   const std::string src = MODALTYRE_SOURCE_DIR;
   const std::string ex = src + "/tests/data/rheology/contact_stress.csv";
   EXPECT_EQ(test::run_cli("identify contact-stress " + ex + " --r0-mm 294.8"), 2) << "no B_tr";
-  EXPECT_EQ(test::run_cli("identify contact-stress " + ex + " --config " + src + "/configs/sf350.yaml"), 0);
+  EXPECT_EQ(test::run_cli("identify contact-stress " + ex + " --config " + src + "/configs/sf350_2d_table3.yaml"), 0);
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ constexpr double kEquilibriumTol = 0.01;
 TEST(rheology_FreeVibrationFromTransient, Eq22OnTheSimulatedDecayGivesTheTreadDashpots) {
   using namespace modaltyre::contact;
   using namespace modaltyre::transient;
-  const std::string config = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+  const std::string config = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
   const TransientModel M = build_transient_model(build_tyre_model(load_tyre_config(
       config,
       {"contact.unit_length_mm=5", "contact.window_mm=220", "transient.dynamic_max_order=16",

@@ -40,10 +40,10 @@ namespace fs = std::filesystem;
 using Lines = std::vector<std::string>;
 
 const std::string kSrc = MODALTYRE_SOURCE_DIR;
-constexpr double kR0 = 0.2948, kTread = 0.13;  // SF-350 (configs/sf350.yaml)
+constexpr double kR0 = 0.2948, kTread = 0.13;  // SF-350 (configs/sf350_2d_table3.yaml)
 
 const contact::TyreConfig& sf350() {
-  static const contact::TyreConfig c = contact::load_tyre_config(kSrc + "/configs/sf350.yaml");
+  static const contact::TyreConfig c = contact::load_tyre_config(kSrc + "/configs/sf350_2d_table3.yaml");
   return c;
 }
 

@@ -31,7 +31,7 @@ using modaltyre_test::CliFixture;
 using modaltyre_test::slurp;
 
 const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kTyre = kSrc + "/configs/sf350.yaml";
+const std::string kTyre = kSrc + "/configs/sf350_2d_table3.yaml";
 
 ThreeElementOptions tyre_options() { return test::sf350_three_element_options(); }
 
@@ -370,7 +370,7 @@ TEST_F(rheology_IdentifyIntoConfig, BadUseExits2NamingTheFileOrOption) {
   EXPECT_EQ(bad_key.exit_code, 2);
   EXPECT_NE(bad_key.err.find("effects.dry_friction.friction_force_N"), std::string::npos)
       << bad_key.err;
-  // OUT must not be the tyre config itself (a copy: never risk configs/sf350.yaml).
+  // OUT must not be the tyre config itself (a copy: never risk configs/sf350_2d_table3.yaml).
   const std::string copy = file("copy.yaml", slurp(kTyre));
   const auto self = run(args({"--into-config", copy, "--out-config", copy}));
   EXPECT_EQ(self.exit_code, 2);

@@ -103,7 +103,7 @@ TEST(rheology_LoadDeflectionCli, ExampleFileRunsAndDegenerateExit2) {
   const auto out = test::temp_file("ld_out.json", "");
   const auto yaml = test::temp_file("ld_rheology.yaml", "");
   EXPECT_EQ(test::run_cli("identify load-deflection " + ex + " --config " + src +
-                              "/configs/sf350.yaml --json --write-config " + yaml,
+                              "/configs/sf350_2d_table3.yaml --json --write-config " + yaml,
                           out),
             0);
   const std::string j = test::slurp(out);

@@ -42,7 +42,7 @@ struct Noise {
   double operator()() { return n(rng); }
 };
 
-/// SF-350 geometry as configs/sf350.yaml gives it (r0 294.8 mm, contact width 130 mm), section
+/// SF-350 geometry as configs/sf350_2d_table3.yaml gives it (r0 294.8 mm, contact width 130 mm), section
 /// height 117 mm, and a 350 kg test mass: the three-element tests' tyre.
 inline ThreeElementOptions sf350_three_element_options() {
   ThreeElementOptions o;

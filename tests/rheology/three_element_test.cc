@@ -121,7 +121,7 @@ TEST(rheology_FreeVibrationCli, ExampleFilesAndDegenerateExit2) {
   const std::string d = src + "/tests/data/rheology/";
   const auto out = test::temp_file("fv.json", "");
   EXPECT_EQ(test::run_cli("identify free-vibration " + d + "free_vibration.csv --config " + src +
-                              "/configs/sf350.yaml --mass-kg 350 --section-height-mm 117 --static " +
+                              "/configs/sf350_2d_table3.yaml --mass-kg 350 --section-height-mm 117 --static " +
                               d + "static_loop.csv --json",
                           out),
             0);

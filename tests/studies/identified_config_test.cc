@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 
 const std::string kSrc = MODALTYRE_SOURCE_DIR;
 
-// SF-350 as configs/sf350.yaml, on a 2 mm patch mesh (the mapping does not depend on the mesh;
+// SF-350 as configs/sf350_2d_table3.yaml, on a 2 mm patch mesh (the mapping does not depend on the mesh;
 // the footprints it runs are 16x cheaper), in a scratch folder with the hammer file absolute.
 class studies_IdentifiedConfig : public ::testing::Test {
  protected:
@@ -36,7 +36,7 @@ class studies_IdentifiedConfig : public ::testing::Test {
             std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "out");
-    std::ifstream in(kSrc + "/configs/sf350.yaml");
+    std::ifstream in(kSrc + "/configs/sf350_2d_table3.yaml");
     std::string text((std::istreambuf_iterator<char>(in)), {});
     replace(text, "hammer_csv: data/", "hammer_csv: " + kSrc + "/configs/data/");
     replace(text, "unit_length_mm: 0.5", "unit_length_mm: 2");

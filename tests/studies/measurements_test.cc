@@ -21,7 +21,7 @@ using namespace modaltyre::contact;
 using namespace modaltyre::studies;
 using modaltyre::InputError;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 
 const TyreConfig& defaults() {
   static const TyreConfig c = load_tyre_config(kConfig);

@@ -27,8 +27,8 @@ using modaltyre::ProgressBar;
 namespace fs = std::filesystem;
 
 const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSource + "/configs/sf350.yaml";
-// A sweep "file" placed (by name only) in configs/sweeps, so that base: ../sf350.yaml resolves.
+const std::string kConfig = kSource + "/configs/sf350_2d_table3.yaml";
+// A sweep "file" placed (by name only) in configs/sweeps, so that base: ../sf350_2d_table3.yaml resolves.
 const std::string kSweepName = kSource + "/configs/sweeps/in_memory_test.yaml";
 
 SweepSpec spec_of(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
@@ -51,7 +51,7 @@ void expect_input_error(Fn fn, int line, const std::string& key,
 
 TEST(Sweep, GridExpandsInWrittenOrderWithTheLastKeyFastest) {
   const auto plan =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "grid:\n"
                          "  tread.modulus_MPa: [5, 7]\n"
                          "  load_N: [2000, 4000, 6000]\n"
@@ -71,7 +71,7 @@ TEST(Sweep, GridExpandsInWrittenOrderWithTheLastKeyFastest) {
 
   // Swapping the keys swaps the order: the modulus now varies fastest.
   const auto swapped =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "grid:\n"
                          "  load_N: [2000, 4000, 6000]\n"
                          "  tread.modulus_MPa: [5, 7]\n"
@@ -85,7 +85,7 @@ TEST(Sweep, GridExpandsInWrittenOrderWithTheLastKeyFastest) {
 
 TEST(Sweep, SetAppliesToEveryCaseAndItsConditionsBecomeColumns) {
   const auto plan =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "set:\n"
                          "  tread:\n"
                          "    thickness_mm: 10\n"
@@ -114,7 +114,7 @@ TEST(Sweep, SetAppliesToEveryCaseAndItsConditionsBecomeColumns) {
 
 TEST(Sweep, RowsEqualIndividualFootprintSolves) {
   const auto plan =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "grid:\n"
                          "  tread.modulus_MPa: [5, 7]\n"
                          "  horizontal_force_N: [0, 600]\n"
@@ -158,7 +158,7 @@ TEST(Sweep, RowsEqualIndividualFootprintSolves) {
 
 TEST(Sweep, CsvIsByteIdenticalForOneAndTwoThreads) {
   const auto plan =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "grid:\n"
                          "  tread.modulus_MPa: [4, 6, 9]\n"
                          "  load_N: [1500, 2500, 3500, 4500, 5500, 6500, 7500]\n"
@@ -184,7 +184,7 @@ TEST(Sweep, CsvIsByteIdenticalForOneAndTwoThreads) {
 
 TEST(Sweep, AFailedCaseIsARowWithItsReason) {
   const auto plan =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "grid:\n"
                          "  solver.max_iterations: [1, 200]\n"
                          "  load_N: [3000, 6000]\n"
@@ -210,7 +210,7 @@ TEST(Sweep, AFailedCaseIsARowWithItsReason) {
 // measured data (the column is ignored there).
 TEST(Sweep, ACaseOutsideTheValidityRangeIsMarked) {
   const auto plan =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "set:\n"
                          "  contact.unit_length_mm: 2\n"
                          "grid:\n"
@@ -242,7 +242,7 @@ TEST(Sweep, ACaseOutsideTheValidityRangeIsMarked) {
 // of the whole run, warm starts included (the reference case comes from the whole model).
 TEST(SweepShare, SharesPartitionThePlanAndReassembleToTheSingleProcessCsv) {
   const auto plan =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "grid:\n"
                          "  load_N: [1500, 3000, 4500, 6000, 7500]\n"
                          "  tread.modulus_MPa: [4, 6, 9]\n"
@@ -310,7 +310,7 @@ std::vector<double> column_of(const SweepResult& r, double SweepRow::*column) {
 
 TEST(SweepConditions, ConditionsAreColumnsAndTakeTheBaseConfigsValuesWhenNotGiven) {
   const auto plan =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "set:\n"
                          "  surface: soil\n"
                          "  speed_kmh: 30\n"
@@ -334,7 +334,7 @@ TEST(SweepConditions, ConditionsAreColumnsAndTakeTheBaseConfigsValuesWhenNotGive
   EXPECT_EQ(plan.cells(3), (std::vector<std::string>{"soil", "30", "unload", "260", "3000"}));
   // Without pressure_kPa the case takes the config's inflation pressure.
   const auto plain = plan_sweep(spec_of(
-      "base: ../sf350.yaml\ngrid:\n  load_N: [3000]\n  tyre.inflation_pressure_kPa: [180]\n"));
+      "base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [3000]\n  tyre.inflation_pressure_kPa: [180]\n"));
   EXPECT_EQ(plain.cases[0].conditions.pressure_kPa, 180);
 }
 
@@ -342,10 +342,10 @@ TEST(SweepEffects, NoEffectAndDefaultConditionsGiveTheEffectFreeFootprints) {
   // Conditions act only through effects: with none on, a pressure, a hold or a branch changes
   // nothing, and the rows are the effect-free footprints.
   const auto with_conditions =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "set:\n  hold_s: 120\n  branch: unload\n"
                          "grid:\n  pressure_kPa: [180, 280]\n  load_N: [2131, 8321]\n"));
-  const auto plain = plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [2131, 8321]\n"));
+  const auto plain = plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [2131, 8321]\n"));
   SweepOptions opt;
   opt.threads = 2;
   const auto rc = run_sweep(with_conditions, opt);
@@ -360,10 +360,10 @@ TEST(SweepEffects, NoEffectAndDefaultConditionsGiveTheEffectFreeFootprints) {
 
 TEST(SweepEffects, InflationPressureStiffensTheCarcassAndIsNeutralAtTheModalTestPressure) {
   const auto on =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "set:\n  effects.inflation_pressure.enabled: true\n"
                          "grid:\n  pressure_kPa: [180, 230, 280]\n  load_N: [4000]\n"));
-  const auto off = plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [4000]\n"));
+  const auto off = plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [4000]\n"));
   SweepOptions opt;
   opt.threads = 2;
   const auto s = column_of(run_sweep(on, opt), &SweepRow::sinking_mm);
@@ -380,7 +380,7 @@ TEST(SweepEffects, TreadRelaxationCreepsMonotonicallyToTheRelaxedTread) {
   // Kelvin-Voigt creep of the tread under a held load: sinking grows with the hold time,
   // ever more slowly, towards the tread of compliance x (1 + creep_ratio) (defaults 0.5, 30 s).
   const auto plan =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "set:\n  effects.tread_relaxation.enabled: true\n  load_N: 4000\n"
                          "grid:\n  hold_s: [0, 15, 30, 45, 60, 120, 10000]\n"));
   SweepOptions opt;
@@ -393,12 +393,12 @@ TEST(SweepEffects, TreadRelaxationCreepsMonotonicallyToTheRelaxedTread) {
   }
   // hold 0: the instantaneous tread, i.e. the effect-free footprint.
   const auto off =
-      run_sweep(plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [4000]\n")), opt);
+      run_sweep(plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [4000]\n")), opt);
   EXPECT_NEAR(s[0], off.rows.at(0).sinking_mm, 1e-9 * s[0]);
   // Fully relaxed (exp(-10000 / 30) = 0): a tread 1.5 times softer, tread.modulus_MPa / 1.5.
   const double modulus_MPa = load_tyre_config(kConfig).tread.modulus_Pa * 1e-6;
   const auto relaxed =
-      run_sweep(plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [4000]\n",
+      run_sweep(plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [4000]\n",
                                    {"tread.modulus_MPa=" + full_precision(modulus_MPa / 1.5)})),
                 opt);
   EXPECT_NEAR(s.back(), relaxed.rows.at(0).sinking_mm, 1e-6 * s.back());
@@ -406,7 +406,7 @@ TEST(SweepEffects, TreadRelaxationCreepsMonotonicallyToTheRelaxedTread) {
 
 TEST(SweepEffects, CsvIsByteIdenticalForOneAndTwoThreadsWithAnEffectOn) {
   const auto plan = plan_sweep(spec_of(
-      "base: ../sf350.yaml\n"
+      "base: ../sf350_2d_table3.yaml\n"
       "set:\n  effects.dry_friction.enabled: true\n  effects.tread_relaxation.enabled: true\n"
       "grid:\n  tread.modulus_MPa: [2, 3]\n  branch: [load, unload]\n  hold_s: [0, 60]\n"
       "  load_N: [150, 3000, 6000]\n"));
@@ -432,7 +432,7 @@ TEST(SweepEffects, CsvReadsBackAsMeasuredDataThatThePredictorReproduces) {
   // read_measurements() reads unchanged, with every row's conditions, and predicting those rows
   // with the same effect reproduces the written values (to their 10 digits).
   const auto plan =
-      plan_sweep(spec_of("base: ../sf350.yaml\n"
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "set:\n  effects.inflation_pressure.enabled: true\n"
                          "  effects.tread_relaxation.enabled: true\n  hold_s: 45\n"
                          "grid:\n  tread.modulus_MPa: [2.329, 3]\n  surface: [rigid, soil]\n"
@@ -482,76 +482,76 @@ TEST(SweepEffects, CsvReadsBackAsMeasuredDataThatThePredictorReproduces) {
 
 TEST(Sweep, BadSweepFilesNameFileLineAndKey) {
   // Unknown top-level key.
-  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrids:\n  load_N: [1]\n"); }, 2, "grids");
+  expect_input_error([] { spec_of("base: ../sf350_2d_table3.yaml\ngrids:\n  load_N: [1]\n"); }, 2, "grids");
   // Missing base, and a base that does not exist.
   expect_input_error([] { spec_of("grid:\n  load_N: [1000]\noutput: x.csv\n"); }, 1, "base");
   expect_input_error([] { spec_of("base: nowhere.yaml\ngrid:\n  load_N: [1000]\n"); }, 1, "base");
   // Empty list, and a scalar where a list belongs.
   expect_input_error(
-      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa: []\n"); }, 4,
+      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa: []\n"); }, 4,
       "tread.modulus_MPa");
-  expect_input_error([] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: 1000\n"); }, 3, "load_N");
+  expect_input_error([] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: 1000\n"); }, 3, "load_N");
   // A non-positive load, on the line of the item.
   expect_input_error(
-      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N:\n    - 1000\n    - -5\n"); }, 5,
+      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N:\n    - 1000\n    - -5\n"); }, 5,
       "load_N");
   // A key that is set and swept.
   expect_input_error(
       [] {
         spec_of(
-            "base: ../sf350.yaml\nset:\n  tread.modulus_MPa: 5\ngrid:\n  tread.modulus_MPa: [6]\n  "
+            "base: ../sf350_2d_table3.yaml\nset:\n  tread.modulus_MPa: 5\ngrid:\n  tread.modulus_MPa: [6]\n  "
             "load_N: [1000]\n");
       },
       3, "tread.modulus_MPa");
   // No load anywhere.
   expect_input_error(
-      [] { plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  tread.modulus_MPa: [6]\n")); }, 3,
+      [] { plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  tread.modulus_MPa: [6]\n")); }, 3,
       "load_N");
   // A grid key that is not a config key, and a value the config rejects: found while planning.
   expect_input_error(
       [] {
         plan_sweep(
-            spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_mpa: [6, 7]\n"));
+            spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_mpa: [6, 7]\n"));
       },
       4, "tread.modulus_mpa");
   expect_input_error(
       [] {
         plan_sweep(
-            spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa:\n    - 6\n "
+            spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa:\n    - 6\n "
                     "   - -1\n"));
       },
       6, "tread.modulus_MPa");
   expect_input_error(
       [] {
         plan_sweep(
-            spec_of("base: ../sf350.yaml\nset:\n  solver.max_iter: 5\ngrid:\n  load_N: [1]\n"));
+            spec_of("base: ../sf350_2d_table3.yaml\nset:\n  solver.max_iter: 5\ngrid:\n  load_N: [1]\n"));
       },
       3, "solver.max_iter");
   // Condition values outside their ranges or lists, on the line of the item.
   expect_input_error(
-      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  branch: [load, up]\n"); }, 4,
+      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  branch: [load, up]\n"); }, 4,
       "grid.branch");
   expect_input_error(
-      [] { spec_of("base: ../sf350.yaml\nset:\n  surface: sand\ngrid:\n  load_N: [1]\n"); }, 3,
+      [] { spec_of("base: ../sf350_2d_table3.yaml\nset:\n  surface: sand\ngrid:\n  load_N: [1]\n"); }, 3,
       "set.surface");
   expect_input_error(
-      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  pressure_kPa: [2001]\n"); }, 4,
+      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  pressure_kPa: [2001]\n"); }, 4,
       "grid.pressure_kPa");
   expect_input_error(
       [] {
-        spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  speed_kmh:\n    - 10\n    - -1\n");
+        spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  speed_kmh:\n    - 10\n    - -1\n");
       },
       6, "grid.speed_kmh");
   expect_input_error(
-      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n  hold_s: [fast]\n"); }, 4,
+      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  hold_s: [fast]\n"); }, 4,
       "grid.hold_s");
   expect_input_error(
-      [] { spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n", {"branch=down"}); }, 0,
+      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n", {"branch=down"}); }, 0,
       "branch", "--set");
   // Command-line overrides are named as such.
   expect_input_error(
       [] {
-        plan_sweep(spec_of("base: ../sf350.yaml\ngrid:\n  load_N: [1000]\n", {"tread.bogus=1"}));
+        plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n", {"tread.bogus=1"}));
       },
       0, "tread.bogus", "--set");
 }

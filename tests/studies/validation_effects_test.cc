@@ -23,7 +23,7 @@ using modaltyre::InputError;
 namespace fs = std::filesystem;
 
 const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSource + "/configs/sf350.yaml";
+const std::string kConfig = kSource + "/configs/sf350_2d_table3.yaml";
 const std::string kTable3 = kSource + "/configs/data/sf350_footprint_table3.csv";
 const std::string kSweepName = kSource + "/configs/sweeps/in_memory_test.yaml";
 // Every row is a prediction (no calibration), so that rows compare the model as configured.
@@ -43,7 +43,7 @@ class ValidationEffects : public ::testing::Test {
 
   /// Runs a sweep (YAML body after base:) and writes its CSV; returns the path.
   std::string sweep_csv_file(const std::string& body) {
-    const auto plan = plan_sweep(parse_sweep_spec("base: ../sf350.yaml\n" + body, kSweepName));
+    const auto plan = plan_sweep(parse_sweep_spec("base: ../sf350_2d_table3.yaml\n" + body, kSweepName));
     SweepOptions opt;
     opt.threads = 2;
     const auto res = run_sweep(plan, opt);
@@ -165,7 +165,7 @@ TEST_F(ValidationEffects, ConditionColumnsAreCheckedWithFileLineAndColumn) {
 namespace {
 
 // Seed Table 3 with the rigid-belt structure discover names (configs/sf350_rigid_belt.yaml):
-// the same declared calibration as sf350.yaml (two scalars on rows 1 and 6); rows 2-5 are
+// the same declared calibration as sf350_2d_table3.yaml (two scalars on rows 1 and 6); rows 2-5 are
 // predictions of the scalars (the structure itself was chosen on all six rows, see the config).
 // It reaches sinking <= 5 % and length <= 10 % RMS over the predicted rows (the footprint
 // issue's target figures; that rule against per-order scaling excludes this config from

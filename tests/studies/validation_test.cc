@@ -14,7 +14,7 @@ namespace {
 using namespace modaltyre::contact;
 using namespace modaltyre::studies;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 const std::string kTable3 =
     std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
 
@@ -25,7 +25,7 @@ TyreModel model_with(const std::vector<std::string>& overrides) {
 MeasurementSet table3() { return read_validation_measurements(kTable3, load_tyre_config(kConfig)); }
 
 TEST(Validation, Table3DeclaredCalibrationMeetsTheSinkingAndLengthTargets) {
-  // Calibration declared in sf350.yaml: compliance scale and tread modulus on rows 1 and 6;
+  // Calibration declared in sf350_2d_table3.yaml: compliance scale and tread modulus on rows 1 and 6;
   // rows 2-5 are predictions. Issue targets over the predicted rows: sinking RMS <= 5 %,
   // length RMS <= 10 % (measured: 3.7 % and 7.8 %).
   const auto rep = validate_footprints(load_tyre_config(kConfig, {}), table3());

@@ -18,7 +18,7 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 const std::string kReference =
     std::string(MODALTYRE_SOURCE_DIR) + "/tests/data/transient/reference_0p25mm.json";
 

@@ -14,7 +14,7 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 
 // The truncated residual keeps every unit's own compliance: the diagonal of the at-rest model
 // equals the static kernel's up to rounding of the eigen-decomposition.

@@ -22,9 +22,12 @@
 //                       resistance
 //   contact_width       patch width from the crown profile: w = min(max_width, 2 sqrt(2 R_c d)),
 //                       d the sinking; the tread's stiffness per unit length follows the width
+//                       (the 2D patch's approximation; the 3D patch computes the width itself)
 //   belt_flattening     extra foundation stiffness kappa of the doubly curved belt against
 //                       flattening, acting on harmonic orders >= 2 only:
 //                       c_k -> c_k / (1 + pi R kappa c_k)
+// With the 3D patch (footprint_3d:) tread_coupling, rolling_speed and contact_width are refused
+// (EffectInfo::refused_with_3d says why); the others act on it as on the 2D patch.
 #include <array>
 #include <functional>
 #include <optional>
@@ -113,6 +116,9 @@ struct EffectInfo {
   std::vector<std::string> observables;  ///< what it changes
   std::string regime;                    ///< condition variable it acts through ("load_N", ...)
   std::vector<EffectParameterInfo> parameters;
+  std::string acts_on = {};  ///< what it changes in the model: carcass, tread, applied load, road
+  /// Empty when it composes with the 3D patch (footprint_3d); else why it is refused there.
+  std::string refused_with_3d = {};
 
   std::string key(const EffectParameterInfo& p) const { return "effects." + name + "." + p.name; }
 };

@@ -38,44 +38,16 @@
 #include <string>
 #include <vector>
 
-#include "modaltyre/contact/crown_profile.h"
+#include "modaltyre/contact/patch3d_settings.h"
 #include "modaltyre/contact/tyre_model.h"
 
 namespace modaltyre::contact {
-
-/// How the belt strip of a section is held at its lateral ends.
-enum class BeltSupports {
-  shoulders,  ///< simply supported (no deflection, no moment) at +-span/2: the sidewalls
-  free,       ///< free ends at the tread edges, on a foundation; its rigid motion is the carcass's
-};
-
-/// The belt's lateral flexibility (docs/footprint.md section 7): each section's belt strip is an
-/// Euler-Bernoulli beam across the tread, loaded by its cells' forces. Disabled = laterally rigid
-/// (the sections' cells move together).
-struct LateralBelt {
-  bool enabled = false;
-  double bending_stiffness_Nm = 1.0;  ///< D, per unit circumferential length [N m], > 0
-  double tension_N_m = 0;             ///< meridional membrane tension N [N/m], >= 0 (shoulders)
-  double foundation_Pa_m = 0;         ///< Winkler foundation k [N/m^3], >= 0; > 0 when free
-  BeltSupports supports = BeltSupports::shoulders;
-  double support_span_m = 0;  ///< shoulders: distance between the supports, 0 = tread width
-  /// Throws std::invalid_argument naming what is inconsistent.
-  void validate(double tread_width_m) const;
-};
 
 /// The lateral compliance of one section's belt strip [m/N]: G(k, j) is the mean deflection of
 /// column k under a unit force spread over column j, for columns of equal width across the
 /// tread and a section of arc length ds. Symmetric positive semi-definite; columns x columns.
 Eigen::MatrixXd lateral_belt_compliance(const LateralBelt& belt, double tread_width_m, int columns,
                                         double arc_length_m);
-
-struct Patch3dSettings {
-  double tread_width_m = 0.15;     ///< shoulder to shoulder: no cell outside +-width/2
-  double lateral_cell_m = 2.5e-3;  ///< target cell width; columns = round(width / cell)
-  CrownProfile crown;
-  LateralBelt lateral_belt;          ///< disabled: laterally rigid sections
-  int max_pattern_iterations = 200;  ///< Newton steps on the lateral pattern per load
-};
 
 /// One column's extent along the road (the contour per y).
 struct ColumnEdges {
@@ -124,6 +96,19 @@ struct Patch3dResult {
   double vertical_stiffness_N_m() const { return load_N / sinking_m; }
 };
 
+/// What the effects path (predictor.h) changes in the 3D patch against the tyre model's own:
+/// the carcass (its kernels scaled, or rebuilt ones) and each cell's local compliance (tread
+/// modulus and creep, a Winkler soil under the cell). Defaults: the model's own, bit for bit.
+struct Patch3dPhysics {
+  const modal::LagKernels* kernels = nullptr;  ///< rebuilt static kernels; null: the model's
+  double carcass_scale = 1;                    ///< multiplies every carcass kernel
+  const TreadParams* tread = nullptr;          ///< null: the model config's tread
+  double tread_creep = 1;                      ///< tread compliance factor (tread_relaxation)
+  /// Soil layer depth over its modulus, H / E2 [m/Pa]: a cell of road area A sinks by
+  /// f H / (E2 A) more (static part of seed 000 eq. 23, as the 2D patch's soil_compliance).
+  double soil_m_per_Pa = 0;
+};
+
 /// The 3D patch on a tyre model's sections. Keeps a reference to the model (it must outlive
 /// this object). solve() and solve_cells() are const and build their own operators: one
 /// Patch3d may serve several threads.
@@ -131,7 +116,7 @@ class Patch3d {
  public:
   /// Columns allowed with a lateral belt (its compliance is a dense columns^2 matrix).
   static constexpr int kMaxLateralBeltColumns = 400;
-  Patch3d(const TyreModel& model, Patch3dSettings settings);
+  Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3dPhysics& physics = {});
 
   const TyreModel& model() const { return model_; }
   const Patch3dSettings& settings() const { return settings_; }
@@ -159,6 +144,7 @@ class Patch3d {
 
   const TyreModel& model_;
   Patch3dSettings settings_;
+  modal::LagKernels kernels_;      ///< the carcass kernels, scaled
   std::vector<double> y_m_, z_m_;  ///< column centres and their crown drops
   std::vector<double> t_;          ///< cell tread compliance per section
   double k_radial_cell_ = 0, k_tangential_cell_ = 0;
@@ -167,17 +153,5 @@ class Patch3d {
 
 /// The map cropped to the sections in contact and `margin` sections either side.
 PressureMap pressure_map(const Patch3dResult& r, int margin = 2);
-
-/// Settings from the `footprint_3d:` section (tread_width_mm, lateral_cell_mm, crown: ...).
-Patch3dSettings read_patch3d_settings(const ConfigSection& section);
-
-/// A tyre config with its `footprint_3d:` section: the section is read first, then the rest
-/// by read_tyre_config (which still rejects any key nobody read).
-struct Tyre3dConfig {
-  TyreConfig tyre;
-  Patch3dSettings patch;
-};
-Tyre3dConfig load_tyre3d_config(const std::string& path,
-                                const std::vector<std::string>& overrides = {});
 
 }  // namespace modaltyre::contact

@@ -17,13 +17,23 @@
 // (soil_compliance) assembled in O(m^2), the horizontal coupling, and the patch width
 // iterated with the sinking (contact_width).
 //
+// A config with a `footprint_3d:` section (TyreParameters::footprint_3d) is predicted on the 3D
+// patch (patch3d.h) on both entry points: the width, the contour and the pressure map come from
+// it. The effects act on it as on the 2D patch where they compose (carcass level and kernels,
+// tread cells, applied load, soil under the cells); tread_coupling, rolling_speed,
+// contact_width and a horizontal force are refused (the config reader refuses them; a
+// prediction asked for them anyway fails with the reason).
+//
 // The model is shared read-only by every call and thread; each call's working data (the
 // assembled operator, the contact set) are its own.
+#include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "modaltyre/contact/footprint.h"
+#include "modaltyre/contact/patch3d.h"
 
 namespace modaltyre::contact {
 
@@ -34,6 +44,8 @@ struct TyreParameters {
   double compliance_scale = 1.0;  ///< modal.compliance_scale, > 0
   TreadParams tread;
   EffectsConfig effects;
+  /// The 3D patch's settings (crown, tread width): present = predicted on the 3D patch.
+  std::optional<Patch3dSettings> footprint_3d;
 };
 
 /// The parameters a config states.
@@ -49,12 +61,17 @@ struct Prediction {
   std::string message;  ///< reason when !ok
   double sinking_mm = 0;
   double length_mm = 0;
-  double width_mm = 0;              ///< config width, or the crown-profile width (contact_width)
+  /// The 3D patch's width; on the 2D patch the config's, or the crown-profile width
+  /// (contact_width).
+  double width_mm = 0;
   double rolling_resistance_N = 0;  ///< sum f_z x / (R0 - sinking): 0 for a standing tyre
   double elastic_load_N = 0;        ///< load on the elastic tyre (dry_friction moves it)
   /// The footprint; `footprint.load` is the applied load (the conditions'), whatever part of it
-  /// dry friction carries.
+  /// dry friction carries. On the 3D patch: one unit per section in contact (its resultant, the
+  /// centre-line pressure), the longest column's edges and the centre line's contour.
   FootprintResult footprint;
+  /// The 3D patch's result (cells, contour per x and y; pressure_map()); null on the 2D patch.
+  std::shared_ptr<const Patch3dResult> patch3d;
 
   /// Observable by its measurement-column name (sinking_mm, length_mm, width_mm,
   /// rolling_resistance_N).

@@ -2,20 +2,22 @@
 // The tyre configuration: what a YAML file such as configs/sf350.yaml describes, in SI units.
 // Config keys carry their unit in the name (outer_radius_mm, modulus_MPa); conversion to SI
 // happens here and nowhere else.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "modaltyre/contact/effects.h"
+#include "modaltyre/contact/patch3d_settings.h"
 #include "modaltyre/core/config_tree.h"
 
 namespace modaltyre::contact {
 
 struct TreadParams {
-  double modulus_Pa = 6e6;      ///< storage (elastic) modulus E_tr of the tread rubber, > 0
-  double tan_delta = 0.15;      ///< loss factor G_tr / E_tr (seed 001 eq. 8), >= 0
-  double thickness_m = 0.008;   ///< radial thickness of the tread layer, > 0
-  double width_m = 0.14;        ///< contact width of the 2D model's patch, > 0
-  double poisson = 0.49;        ///< rubber Poisson ratio, shear modulus G = E / (2 (1 + nu))
+  double modulus_Pa = 6e6;     ///< storage (elastic) modulus E_tr of the tread rubber, > 0
+  double tan_delta = 0.15;     ///< loss factor G_tr / E_tr (seed 001 eq. 8), >= 0
+  double thickness_m = 0.008;  ///< radial thickness of the tread layer, > 0
+  double width_m = 0.14;       ///< contact width of the 2D model's patch, > 0
+  double poisson = 0.49;       ///< rubber Poisson ratio, shear modulus G = E / (2 (1 + nu))
 };
 
 struct Discretisation {
@@ -25,41 +27,53 @@ struct Discretisation {
 };
 
 struct SolverSettings {
-  int max_iterations = 200;     ///< active-set iterations per load case
-  double gap_tolerance = 1e-10; ///< relative gap tolerance of the complementarity check
+  int max_iterations = 200;      ///< active-set iterations per load case
+  double gap_tolerance = 1e-10;  ///< relative gap tolerance of the complementarity check
 };
 
 struct ValidationSettings {
-  std::vector<std::string> calibrate;  ///< dotted config keys to fit (at most two)
+  std::vector<std::string> calibrate;  ///< dotted config keys to fit (at most three)
   std::vector<int> calibration_rows;   ///< 1-based rows of the measured file (at most two)
-  std::vector<std::string> observables = {"sinking_mm"};  ///< fitted on those rows
+  /// Fitted on those rows: sinking_mm, length_mm, width_mm.
+  std::vector<std::string> observables = {"sinking_mm"};
 };
 
 /// Scenarios and model settings of the transient simulation (section `transient:`, see
 /// transient/transient.h and docs/transient.md). Speeds in m/s, lengths in m, times in s.
 struct TransientSettings {
-  double hub_mass_kg = 20;           ///< reduced mass on the hub DOF (tyre + rim + fixture), > 0
-  int dynamic_max_order = 40;        ///< orders above it respond quasi-statically (residual)
-  bool relaxation = true;            ///< Kelvin-Voigt tread (seed 001 eq. 10); false: eq. (6)
-  double tread_reference_frequency_hz = 10;  ///< Omega of c = K tan(delta) / Omega (eq. 9)
-  double instantaneous_stiffness_ratio = 20; ///< glassy / relaxed tread stiffness, > 1
-  double modal_damping_scale = 1;    ///< multiplies every modal damping ratio (0 = undamped)
+  double hub_mass_kg = 20;     ///< reduced mass on the hub DOF (tyre + rim + fixture), > 0
+  int dynamic_max_order = 40;  ///< orders above it respond quasi-statically (residual)
+  bool relaxation = true;      ///< Kelvin-Voigt tread (seed 001 eq. 10); false: eq. (6)
+  double tread_reference_frequency_hz = 10;   ///< Omega of c = K tan(delta) / Omega (eq. 9)
+  double instantaneous_stiffness_ratio = 20;  ///< glassy / relaxed tread stiffness, > 1
+  double modal_damping_scale = 1;  ///< multiplies every modal damping ratio (0 = undamped)
   double output_step_s = 0.01;
   double relative_tolerance = 1e-5;
-  struct LoadHold { double load_N = 4000, ramp_rate_N_s = 4000, hold_s = 120; } load_hold;
-  struct FreeVibration { double load_N = 4000, initial_load_N = 5000, duration_s = 1; } free_vibration;
-  struct Rolling { double load_N = 4000, speed_m_s = 60 / 3.6, ramp_s = 1, duration_s = 3; } rolling;
+  struct LoadHold {
+    double load_N = 4000, ramp_rate_N_s = 4000, hold_s = 120;
+  } load_hold;
+  struct FreeVibration {
+    double load_N = 4000, initial_load_N = 5000, duration_s = 1;
+  } free_vibration;
+  struct Rolling {
+    double load_N = 4000, speed_m_s = 60 / 3.6, ramp_s = 1, duration_s = 3;
+  } rolling;
   struct Cleat {
     double load_N = 4000, speed_m_s = 30 / 3.6, height_m = 0.01, length_m = 0.02, ramp_s = 0.5;
   } cleat;
 };
 
 struct TyreConfig {
-  std::string source;           ///< config file path
+  std::string source;  ///< config file path
   std::string name = "tyre";
   double outer_radius_m = 0.2948;
   double inflation_pressure_Pa = 230e3;
-  std::string hammer_csv;       ///< resolved path of the hammer data
+  /// From the tyre's size designation (e.g. 195/60R14), for the .tir bridge's [DIMENSION]
+  /// (tir/); 0 = not stated.
+  double section_width_m = 0;
+  double aspect_ratio = 0;
+  double rim_radius_m = 0;
+  std::string hammer_csv;  ///< resolved path of the hammer data
   bool extend_orders = true;
   double compliance_scale = 1.0;
   /// Bending term s2 of the dispersion extension [rad^2/s^2]; negative = as fitted to the
@@ -74,6 +88,9 @@ struct TyreConfig {
   ValidationSettings validation;
   TransientSettings transient;
   EffectsConfig effects;  ///< section effects:, every effect off by default
+  /// Section footprint_3d: when present the footprint is predicted on the 3D patch (width,
+  /// contour and pressure map; patch3d.h); absent: the 2D patch of width tread.width_m.
+  std::optional<Patch3dSettings> footprint_3d;
 
   /// The conditions a row takes when it does not state them: the config's load, horizontal
   /// force and inflation pressure, no hold, standing, loading branch, rigid road.
@@ -81,10 +98,12 @@ struct TyreConfig {
 };
 
 /// Reads every key of the tree into a TyreConfig; unknown keys, wrong types and out-of-range
-/// values are InputErrors naming file, line and key.
+/// values are InputErrors naming file, line and key. With `footprint_3d:` the effects that the
+/// 3D patch cannot take (effect_refused_with_3d) and a horizontal force are refused too.
 TyreConfig read_tyre_config(const ConfigTree& tree);
 
 /// Convenience: load a YAML file with --set overrides and read it.
-TyreConfig load_tyre_config(const std::string& path, const std::vector<std::string>& overrides = {});
+TyreConfig load_tyre_config(const std::string& path,
+                            const std::vector<std::string>& overrides = {});
 
 }  // namespace modaltyre::contact

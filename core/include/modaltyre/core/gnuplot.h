@@ -15,6 +15,17 @@ struct PlotSeries {
   std::string style = "lines";  ///< gnuplot style: "lines", "points", "linespoints", "steps"
 };
 
+/// A map drawn as an image, one pixel per grid point coloured by its value (gnuplot `with
+/// image`), e.g. a contact-pressure map printed like a pressure-sensitive film. The grids must be
+/// uniform: values[j][i] at (x[i], y[j]); white at cbmin, darkest at cbmax.
+struct PlotImage {
+  std::vector<double> x, y;
+  std::vector<std::vector<double>> values;
+  std::string cblabel;          ///< colour-bar label with unit
+  double cbmin = 0, cbmax = 0;  ///< fixed colour range when cbmax > cbmin
+  bool empty() const { return x.empty() || y.empty(); }
+};
+
 struct PlotPanel {
   std::string title;
   std::string xlabel;  ///< with unit, e.g. "x along the road [mm]"
@@ -23,6 +34,8 @@ struct PlotPanel {
   std::string key = "top left box opaque";  ///< gnuplot legend placement, e.g. "below"
   double xmin = 0, xmax = 0;                ///< fixed x range when xmax > xmin
   double ymin = 0, ymax = 0;                ///< fixed y range when ymax > ymin
+  PlotImage image = {};                     ///< drawn under the series when not empty
+  bool equal_axes = false;  ///< one unit as long on both axes (a footprint's true shape)
 };
 
 struct PlotFigure {

@@ -3,11 +3,12 @@
 // data disagree, name the missing effect, add it to the model and show the gap shrink.
 //
 //  1. Locate: fit the baseline (the config's calibrated scalars, modal.compliance_scale and
-//     tread.modulus_MPa, re-fitted on all rows) and correlate the relative residual of every
-//     observable with every condition variable that varies in the data (branch and surface as
-//     0/1); report the strongest and the rows worst off.
-//  2. Name: for every candidate effect the data can reveal (its regime variable varies), fit its
-//     parameters together with the baseline scalars, score it by Delta BIC against the current
+//     tread.modulus_MPa, or footprint_3d.crown.radius_mm on the 3D patch, re-fitted on all rows)
+//     and correlate the relative residual of every observable with every condition variable that
+//     varies in the data (branch and surface as 0/1); report the strongest and the rows worst off.
+//  2. Name: for every candidate effect the data can reveal (its regime variable varies; on the
+//     3D patch not the effects it refuses, contact_width among them: its width is the model's), fit
+//     its parameters together with the baseline scalars, score it by Delta BIC against the current
 //     model and by the cross-validated RMS (leave-one-out up to 8 rows, else 6-fold). It is
 //     named only if Delta BIC > min_delta_bic AND the cross-validated RMS falls by at least
 //     min_cv_gain (relative) on at least one observable while it grows by no more than

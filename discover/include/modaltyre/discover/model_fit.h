@@ -34,9 +34,10 @@ struct FreeParameter {
   std::function<void(contact::TyreConfig&, double)> set;
 };
 
-/// The baseline's calibrated scalars that every variant re-fits: modal.compliance_scale and
-/// tread.modulus_MPa (the two the SF-350 config declares).
-std::vector<FreeParameter> baseline_parameters();
+/// The baseline's calibrated scalars that every variant re-fits: modal.compliance_scale and, on
+/// the 2D patch, tread.modulus_MPa (the two the 2D SF-350 configs declare), on the 3D patch with
+/// a circular crown footprint_3d.crown.radius_mm (the two the 3D config declares).
+std::vector<FreeParameter> baseline_parameters(const contact::TyreConfig& config);
 
 /// The fitted parameters of an effect (catalogue entries with fitted = true).
 std::vector<FreeParameter> effect_parameters(contact::EffectId id);
@@ -47,7 +48,8 @@ struct Variant {
   std::vector<FreeParameter> parameters;   ///< baseline scalars, then each effect's
   std::string name() const;                ///< "baseline" or "effect+effect"
 };
-Variant make_variant(const std::vector<contact::EffectId>& effects);
+Variant make_variant(const contact::TyreConfig& config,
+                     const std::vector<contact::EffectId>& effects);
 
 /// Evaluates relative residuals of a config on rows of a measurement set.
 class Evaluator {

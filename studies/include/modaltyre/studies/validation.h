@@ -8,7 +8,7 @@
 // config's).
 // Rows are predicted by contact::predict_all (predictor.h): the effect-free path with no effect
 // on, the effects path at each row's conditions otherwise.
-// Calibration is always declared: at most two scalar config keys fitted on at most two rows;
+// Calibration is always declared: at most three scalar config keys fitted on at most two rows;
 // those rows are marked as calibration rows and every other row is a prediction. RMS errors are
 // reported over the predicted rows only.
 #include <map>
@@ -41,7 +41,7 @@ struct ValidationRow {
   bool calibration = false;
   double sinking_mm = 0;  ///< predicted
   double length_mm = 0;   ///< predicted
-  double width_mm = 0;    ///< predicted: the config's, or the crown-profile width (contact_width)
+  double width_mm = 0;    ///< predicted: the 3D patch's, the config's (2D), or contact_width's
   std::optional<double> sinking_rel_error, length_rel_error,
       width_rel_error;  ///< (pred - meas) / meas, where measured
 };

@@ -1,0 +1,203 @@
+// modaltyre tir export CONFIG --output FILE.tir [--loads N...] [--fnomin N] [--set k=v]...
+// modaltyre tir compare CONFIG FILE.tir [--json] [--plot FILE] [--fnomin N] [--points K]
+// The MF-Tyre/MF-Swift .tir bridge (tir/, docs/tir.md).
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "cli_support.h"
+#include "commands.h"
+#include "modaltyre/core/atomic_file.h"
+#include "modaltyre/core/gnuplot.h"
+#include "modaltyre/tir/tir_compare.h"
+#include "modaltyre/tir/tir_export.h"
+
+namespace modaltyre::app {
+namespace {
+
+struct TirArgs {
+  std::string config, tir_file, output, plot;
+  std::vector<double> loads;
+  double fnomin = 0;
+  int points = 12;
+  std::vector<std::string> overrides;
+  bool json = false;
+};
+
+nlohmann::json opt(const std::optional<double>& v, double scale = 1) {
+  return v ? nlohmann::json(round_sig(*v * scale, 6)) : nlohmann::json(nullptr);
+}
+
+std::string pct(const std::optional<double>& v) { return v ? fixed(100 * *v, 2) + " %" : "-"; }
+
+void run_export(const TirArgs& a, CLI::App* cmd) {
+  const auto config = contact::load_tyre_config(a.config, a.overrides);
+  const auto model = contact::build_tyre_model(config);
+  tir::TirExportOptions o;
+  if (cmd->count("--fnomin")) o.fnomin_N = a.fnomin;
+  o.loads_N = a.loads;
+  o.config_label = a.config;
+  const tir::TirFit f = tir::fit_tir(model, o);
+  write_file_atomically(a.output, tir::tir_text(f, config, o));
+  std::cout << "wrote " << a.output << " (MF-Tyre 6.2, FITTYP 62, SI units)\n"
+            << "  FNOMIN              " << fixed(f.fnomin_N, 1) << " N\n"
+            << "  VERTICAL_STIFFNESS  " << fixed(f.vertical_stiffness_N_m * 1e-3, 2)
+            << " N/mm (model's tangent stiffness at FNOMIN "
+            << fixed(f.model_tangent_stiffness_N_m * 1e-3, 2) << " N/mm, "
+            << fixed(100 * (f.vertical_stiffness_N_m / f.model_tangent_stiffness_N_m - 1), 2)
+            << " %)\n"
+            << "  Q_FZ2 " << f.q_fz2 << ", Q_RA1 " << f.q_ra1 << ", Q_RA2 " << f.q_ra2;
+  if (f.q_rb1) std::cout << ", Q_RB1 " << *f.q_rb1 << ", Q_RB2 " << *f.q_rb2;
+  if (f.pfz1) std::cout << ", PFZ1 " << *f.pfz1;
+  std::cout << "\n  fit to " << f.curve.points.size() << " footprints (relative residuals):"
+            << " load RMS " << pct(f.load.rms_rel) << ", sinking RMS " << pct(f.sinking.rms_rel)
+            << ", length RMS " << pct(f.length.rms_rel) << ", width "
+            << (f.width ? "RMS " + pct(f.width->rms_rel) : "not fitted: " + f.curve.width_reason)
+            << "\n";
+  if (!f.pfz1) std::cout << "  " << f.pfz1_reason << "\n";
+}
+
+nlohmann::json comparison_json(const tir::TirComparison& c) {
+  const tir::MfTyre& t = c.tir;
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& r : c.rows) {
+    rows.push_back({{"rho_mm", round_sig(r.rho_m * 1e3, 6)},
+                    {"load_N", round_sig(r.load_N, 6)},
+                    {"tir_load_N", opt(r.tir_load_N)},
+                    {"model_length_mm", round_sig(r.model_length_m * 1e3, 6)},
+                    {"tir_length_mm", opt(r.tir_length_m, 1e3)},
+                    {"model_width_mm", opt(r.model_width_m, 1e3)},
+                    {"tir_width_mm", opt(r.tir_width_m, 1e3)}});
+  }
+  return {{"tir",
+           {{"path", t.path},
+            {"model", t.model_name},
+            {"fittyp", t.fittyp ? nlohmann::json(t.fittyp) : nlohmann::json(nullptr)},
+            {"unloaded_radius_mm", round_sig(t.unloaded_radius_m * 1e3, 6)},
+            {"width_mm", opt(t.width_m, 1e3)},
+            {"fnomin_N", round_sig(t.vertical.fnomin_N, 6)},
+            {"vertical_stiffness_N_per_mm", round_sig(t.vertical_stiffness_N_m() * 1e-3, 6)},
+            {"vertical_law", t.vertical_source}}},
+          {"model", {{"fnomin_N", round_sig(c.model_fnomin_N, 6)}}},
+          {"dimensionless", c.dimensionless},
+          {"basis", c.basis},
+          {"rows", rows},
+          {"rms_rel_diff",
+           {{"load", opt(c.rms_load)}, {"length", opt(c.rms_length)}, {"width", opt(c.rms_width)}}},
+          {"reasons",
+           {{"load", c.load_reason}, {"length", c.length_reason}, {"width", c.width_reason}}}};
+}
+
+void print_comparison(const tir::TirComparison& c) {
+  const tir::MfTyre& t = c.tir;
+  std::cout << t.path << ": " << t.model_name << ", R0 " << fixed(t.unloaded_radius_m * 1e3, 1)
+            << " mm, FNOMIN " << fixed(t.vertical.fnomin_N, 0) << " N, C_z "
+            << fixed(t.vertical_stiffness_N_m() * 1e-3, 2)
+            << " N/mm; vertical law: " << t.vertical_source << "\n"
+            << c.basis << "; the model's FNOMIN " << fixed(c.model_fnomin_N, 0) << " N\n\n"
+            << "  rho_mm    load_N  tir_load_N  length_mm  tir_length_mm  width_mm  tir_width_mm\n";
+  const auto cell = [](const std::optional<double>& v, double scale, int w, int d) {
+    const std::string s = v ? fixed(*v * scale, d) : "-";
+    return std::string(s.size() < std::size_t(w) ? w - s.size() : 1, ' ') + s;
+  };
+  for (const auto& r : c.rows) {
+    std::cout << cell(r.rho_m, 1e3, 8, 2) << cell(r.load_N, 1, 10, 0)
+              << cell(r.tir_load_N, 1, 12, 0) << cell(r.model_length_m, 1e3, 11, 1)
+              << cell(r.tir_length_m, 1e3, 15, 1) << cell(r.model_width_m, 1e3, 10, 1)
+              << cell(r.tir_width_m, 1e3, 14, 1) << "\n";
+  }
+  std::cout << "\nRMS relative difference (.tir - model) / model:\n";
+  const auto line = [](const char* q, const std::optional<double>& v, const std::string& why) {
+    std::cout << "  " << q << (v ? pct(v) : "null: " + why) << "\n";
+  };
+  line("load    ", c.rms_load, c.load_reason);
+  line("length  ", c.rms_length, c.length_reason);
+  line("width   ", c.rms_width, c.width_reason);
+}
+
+void plot_comparison(const tir::TirComparison& c, const std::string& path) {
+  PlotFigure fig;
+  fig.width_px = 1350;
+  fig.height_px = 480;
+  const auto panel = [&](const char* title, const char* ylabel, auto model_of, auto tir_of) {
+    PlotPanel p{title, "deflection rho [mm]", ylabel, {}};
+    PlotSeries m{"model", {}, {}, "linespoints"}, t{".tir law", {}, {}, "linespoints"};
+    for (const auto& r : c.rows) {
+      if (auto v = model_of(r)) m.x.push_back(r.rho_m * 1e3), m.y.push_back(*v);
+      if (auto v = tir_of(r)) t.x.push_back(r.rho_m * 1e3), t.y.push_back(*v);
+    }
+    if (m.x.empty()) p.title += " (model: none)";
+    if (t.x.empty()) p.title += " (.tir: none)";
+    if (!m.x.empty()) p.series.push_back(m);
+    if (!t.x.empty()) p.series.push_back(t);
+    fig.panels.push_back(p);
+  };
+  using R = tir::CompareRow;
+  using O = std::optional<double>;
+  const auto mm = [](const O& v) { return v ? O(*v * 1e3) : O(); };
+  panel(
+      "vertical load", "load [N]", [](const R& r) { return O(r.load_N); },
+      [](const R& r) { return r.tir_load_N; });
+  panel(
+      "contact length", "2a [mm]", [](const R& r) { return O(r.model_length_m * 1e3); },
+      [&](const R& r) { return mm(r.tir_length_m); });
+  panel(
+      "contact width", "2b [mm]", [&](const R& r) { return mm(r.model_width_m); },
+      [&](const R& r) { return mm(r.tir_width_m); });
+  render_plot(fig, path);
+}
+
+void run_compare(const TirArgs& a, CLI::App* cmd) {
+  // The .tir first: a wrong file is refused before the model is built.
+  const tir::MfTyre t = tir::read_mf_tyre(a.tir_file);
+  const auto config = contact::load_tyre_config(a.config, a.overrides);
+  const auto model = contact::build_tyre_model(config);
+  tir::CompareOptions o;
+  if (cmd->count("--fnomin")) o.fnomin_N = a.fnomin;
+  o.points = a.points;
+  const auto c = tir::compare_tir(model, t, o);
+  if (!a.plot.empty()) plot_comparison(c, a.plot);
+  if (a.json) {
+    print_json(comparison_json(c));
+  } else {
+    print_comparison(c);
+  }
+}
+
+}  // namespace
+
+void register_tir(CLI::App& app) {
+  CLI::App* tir = app.add_subcommand(
+      "tir",
+      "MF-Tyre/MF-Swift .tir bridge: export the model's vertical and contact-patch laws, "
+      "or compare any .tir with the model (docs/tir.md)");
+  tir->require_subcommand(1);
+
+  auto e = std::make_shared<TirArgs>();
+  CLI::App* ex = tir->add_subcommand(
+      "export",
+      "write an MF-Tyre 6.2 .tir whose [VERTICAL] and [CONTACT_PATCH] are fitted to "
+      "the model's footprints over 0.25-2 x FNOMIN");
+  ex->add_option("CONFIG", e->config, "tyre config (YAML)")->required();
+  ex->add_option("--output", e->output, "the .tir file to write")->required();
+  ex->add_option("--loads", e->loads, "loads to fit [N] (default: 12 over 0.25-2 x FNOMIN)");
+  ex->add_option("--fnomin", e->fnomin, "nominal load FNOMIN [N] (default: middle of loads_N)");
+  ex->add_option("--set", e->overrides, "override a config key");
+  ex->callback([e, ex] { run_export(*e, ex); });
+
+  auto c = std::make_shared<TirArgs>();
+  CLI::App* cmp =
+      tir->add_subcommand("compare",
+                          "a .tir's vertical and contact-patch laws against the model's footprints "
+                          "(absolute units for the same tyre size, dimensionless otherwise)");
+  cmp->add_option("CONFIG", c->config, "tyre config (YAML)")->required();
+  cmp->add_option("TIR", c->tir_file, "MF-Tyre/MF-Swift property file (.tir)")->required();
+  cmp->add_option("--fnomin", c->fnomin, "the model's FNOMIN [N] (default: middle of loads_N)");
+  cmp->add_option("--points", c->points, "model footprints over 0.25-2 x FNOMIN (3-200)");
+  cmp->add_option("--set", c->overrides, "override a config key");
+  cmp->add_flag("--json", c->json, "print JSON");
+  cmp->add_option("--plot", c->plot, "draw load, length and width against deflection (.svg/.png)");
+  cmp->callback([c, cmp] { run_compare(*c, cmp); });
+}
+
+}  // namespace modaltyre::app

@@ -1,0 +1,152 @@
+#include "footprint_map.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli_support.h"
+#include "modaltyre/core/atomic_file.h"
+#include "modaltyre/core/errors.h"
+#include "modaltyre/core/gnuplot.h"
+
+namespace modaltyre::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The map of a case (every case of `footprint` on a 3D config has one).
+const contact::Patch3dResult& patch_of(const contact::Prediction& p) {
+  if (!p.patch3d) throw ComputationError("the pressure map needs the 3D patch (footprint_3d:)");
+  return *p.patch3d;
+}
+
+// The image needs uniform pixels; the sections' deformed positions are not quite (ds cos theta
+// and the belt's own motion): each row of the map is interpolated linearly onto as many
+// equally spaced x.
+PlotImage uniform_image(const contact::PressureMap& map) {
+  PlotImage im;
+  im.y = map.y_mm;
+  const std::size_t n = map.x_mm.size();
+  if (n < 2) return im;
+  const double x0 = map.x_mm.front(), x1 = map.x_mm.back();
+  for (std::size_t i = 0; i < n; ++i) im.x.push_back(x0 + (x1 - x0) * i / (n - 1));
+  for (const auto& row : map.pressure_kPa) {
+    std::vector<double> out;
+    std::size_t k = 0;
+    for (double x : im.x) {
+      while (k + 2 < n && map.x_mm[k + 1] < x) ++k;
+      const double t = (x - map.x_mm[k]) / (map.x_mm[k + 1] - map.x_mm[k]);
+      out.push_back(row[k] + std::clamp(t, 0.0, 1.0) * (row[k + 1] - row[k]));
+    }
+    im.values.push_back(std::move(out));
+  }
+  return im;
+}
+
+// The outline: front edges of the columns in contact across the tread, back along their rear
+// edges, closed.
+PlotSeries contour(const contact::Patch3dResult& r) {
+  PlotSeries s{"contour", {}, {}, "lines lc 8"};
+  std::vector<int> cols;
+  for (int j = 0; j < r.columns; ++j)
+    if (r.column_edges[j].contact) cols.push_back(j);
+  for (int j : cols)
+    s.x.push_back(r.column_edges[j].front_x_m * 1e3), s.y.push_back(r.y_m[j] * 1e3);
+  for (auto it = cols.rbegin(); it != cols.rend(); ++it) {
+    s.x.push_back(r.column_edges[*it].rear_x_m * 1e3);
+    s.y.push_back(r.y_m[*it] * 1e3);
+  }
+  if (!s.x.empty()) s.x.push_back(s.x.front()), s.y.push_back(s.y.front());
+  return s;
+}
+
+}  // namespace
+
+nlohmann::json pressure_map_json(const contact::Patch3dResult& r) {
+  const contact::PressureMap map = contact::pressure_map(r);
+  auto rounded = [](const std::vector<double>& v) {
+    std::vector<double> out;
+    for (double x : v) out.push_back(round_sig(x, 6));
+    return out;
+  };
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& row : map.pressure_kPa) rows.push_back(rounded(row));
+  return {{"x_mm", rounded(map.x_mm)}, {"y_mm", rounded(map.y_mm)}, {"pressure_kPa", rows}};
+}
+
+double contact_area_m2(const contact::Patch3dResult& r) {
+  double area = 0;
+  for (int i = 0; i < r.sections; ++i)
+    for (int j = 0; j < r.columns; ++j)
+      if (r.cell_force(i, j) > 0) area += r.dx_m[i] * r.dy_m;
+  return area;
+}
+
+void check_output_path(const std::string& path, const std::string& option) {
+  const fs::path folder = fs::absolute(fs::path(path)).parent_path();
+  if (!fs::is_directory(folder)) {
+    throw InputError({path, 0, option}, "output folder '" + folder.string() + "' does not exist");
+  }
+  if (fs::is_directory(fs::path(path))) {
+    throw InputError({path, 0, option}, "output path is a directory, not a file");
+  }
+}
+
+void write_map_csv(const std::vector<contact::Prediction>& cases, const std::string& path) {
+  std::string text = "load_N,x_mm,y_mm,pressure_kPa\n";
+  char line[128];
+  for (const auto& p : cases) {
+    const contact::PressureMap map = contact::pressure_map(patch_of(p));
+    for (std::size_t j = 0; j < map.y_mm.size(); ++j) {
+      for (std::size_t i = 0; i < map.x_mm.size(); ++i) {
+        std::snprintf(line, sizeof line, "%.10g,%.6f,%.6f,%.6g\n", p.footprint.load.load_N,
+                      map.x_mm[i], map.y_mm[j], map.pressure_kPa[j][i]);
+        text += line;
+      }
+    }
+  }
+  write_file_atomically(path, text);
+}
+
+void plot_footprint_maps(const std::vector<contact::Prediction>& cases,
+                         const contact::TyreConfig& config, const std::string& path) {
+  PlotFigure fig;
+  PlotPanel centre{config.name + ": centre-line contact pressure",
+                   "x along the road from the contact centre [mm]",
+                   "pressure on the centre line [kPa]",
+                   {}};
+  double cbmax = 0;
+  std::vector<PlotPanel> maps;
+  for (const auto& p : cases) {
+    const auto& r = patch_of(p);
+    PlotPanel m;
+    m.title = fixed(p.footprint.load.load_N / 1000, 2) + " kN: L = " + fixed(p.length_mm, 0) +
+              " mm, W = " + fixed(p.width_mm, 0) + " mm";
+    m.xlabel = "x along the road [mm]";
+    m.ylabel = "y across the tread [mm]";
+    m.image = uniform_image(contact::pressure_map(r));
+    m.image.cblabel = "pressure [kPa]";
+    for (const auto& row : m.image.values)
+      for (double v : row) cbmax = std::max(cbmax, v);
+    m.series.push_back(contour(r));
+    m.key = "off";
+    m.equal_axes = true;
+    maps.push_back(std::move(m));
+    PlotSeries s{fixed(p.footprint.load.load_N / 1000, 2) + " kN", {}, {}, "lines"};
+    s.x.push_back(p.footprint.rear_edge_x_m * 1e3), s.y.push_back(0);
+    for (const auto& u : p.footprint.units)
+      s.x.push_back(u.x_m * 1e3), s.y.push_back(u.pressure_Pa * 1e-3);
+    s.x.push_back(p.footprint.front_edge_x_m * 1e3), s.y.push_back(0);
+    centre.series.push_back(std::move(s));
+  }
+  // One colour scale for every load, as on films of one sensitivity.
+  for (auto& m : maps) m.image.cbmax = cbmax;
+  fig.panels = std::move(maps);
+  fig.panels.push_back(std::move(centre));
+  const int n = static_cast<int>(fig.panels.size());
+  fig.width_px = n <= 3 ? 520 * n : 1100;
+  fig.height_px = 420;
+  render_plot(fig, path);
+}
+
+}  // namespace modaltyre::app

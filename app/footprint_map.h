@@ -1,0 +1,32 @@
+#pragma once
+// The 3D patch's outputs of `footprint` (contact/patch3d.h): the pressure map in JSON and CSV,
+// the contact area, and the footprint image (the map printed like a pressure-sensitive film,
+// with its contour, beside the centre-line pressure).
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "modaltyre/contact/predictor.h"
+
+namespace modaltyre::app {
+
+/// `map: {x_mm: [...], y_mm: [...], pressure_kPa: [[... one row per y ...]]}` of a 3D case:
+/// the sections in contact and two either side, every column of the tread.
+nlohmann::json pressure_map_json(const contact::Patch3dResult& r);
+
+/// Road area of the cells in contact [m^2].
+double contact_area_m2(const contact::Patch3dResult& r);
+
+/// Throws InputError (exit 2) before anything is computed when `path` cannot take an output:
+/// its folder does not exist or it is a directory. `option` names the flag in the message.
+void check_output_path(const std::string& path, const std::string& option);
+
+/// load_N,x_mm,y_mm,pressure_kPa: one line per cell of each case's map, written atomically.
+void write_map_csv(const std::vector<contact::Prediction>& cases, const std::string& path);
+
+/// The footprint image of each case (map, contour) and a last panel with the centre-line
+/// pressure of every case (.svg or .png).
+void plot_footprint_maps(const std::vector<contact::Prediction>& cases,
+                         const contact::TyreConfig& config, const std::string& path);
+
+}  // namespace modaltyre::app
