@@ -149,11 +149,11 @@ TyreConfig* ManyRows::config_ = nullptr;
 contact::TyreModel* ManyRows::model_ = nullptr;
 
 TEST_F(ManyRows, ApproximationsMatchTheExactFitAndRefitsWithThePlantedEffect) {
-  compare(make_variant({contact::EffectId::tread_relaxation}));
+  compare(make_variant(*config_, {contact::EffectId::tread_relaxation}));
 }
 
 TEST_F(ManyRows, ApproximationsMatchTheExactFitAndRefitsOfTheBaselineThatMissesIt) {
-  compare(make_variant({}));
+  compare(make_variant(*config_, {}));
 }
 
 // 120 rows (above the exact limit of 64): the workflow names the planted effect, halves the
