@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers shared by the subcommands: output routing and number formatting.
 // The library never prints; only the app does.
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -21,6 +22,12 @@ void print_json(const nlohmann::json& j);
 
 /// Throws ComputationError if any number in the document is not finite.
 void check_finite(const nlohmann::json& j, const std::string& where = "output");
+
+/// A CLI11 check of a number option: finite and in (lo, hi] (or [lo, hi] with `lo_inclusive`).
+/// The message states the range, the unit and why the range is physical (`why`); CLI::Range
+/// lets NaN through and says neither. Exit 2 through CLI11's ValidationError.
+CLI::Validator physical_range(double lo, double hi, const std::string& unit, const std::string& why,
+                              bool lo_inclusive = false);
 
 /// Fixed-point formatting for tables.
 std::string fixed(double v, int decimals);

@@ -1,5 +1,6 @@
 // modaltyre discover CONFIG MEASURED.csv [--set key=value]... [--json] [--plot FILE]
 //                   [--out-config FILE] [--threads N] [--unit-length-mm L] [--max-effects N]
+//                   [--exact-rows N]
 //
 // Locates where the model and the measurements disagree, names the missing effect (if any is
 // significant) and writes the augmented config. Exit 0 whether or not an effect is named
@@ -15,12 +16,12 @@
 
 #include "cli_support.h"
 #include "commands.h"
-#include "modaltyre/studies/measurements.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/core/progress.h"
 #include "modaltyre/discover/discover.h"
+#include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::app {
 namespace {
@@ -37,6 +38,7 @@ struct DiscoverArgs {
   int threads = 0;
   double unit_length_mm = 2;
   int max_effects = 2;
+  int exact_rows = 64;
 };
 
 nlohmann::json gaps(const std::map<std::string, double>& m) {
@@ -86,9 +88,23 @@ nlohmann::json candidates_json(const std::vector<discover::CandidateScore>& cs) 
 
 std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
 
+// "length_mm and sinking_mm": the observables with a relative residual (a non-zero
+// measurement), which the pooled cross-validated RMS covers.
+std::string observables_text(const std::map<std::string, double>& gaps) {
+  std::string out;
+  std::size_t i = 0;
+  for (const auto& kv : gaps) {
+    out += (i == 0 ? "" : i + 1 == gaps.size() ? " and " : ", ") + kv.first;
+    ++i;
+  }
+  return out;
+}
+
 void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet& data) {
   std::cout << "discover: " << data.path << ", " << data.rows.size() << " rows; evaluated on "
-            << r.evaluation_mesh << "\n\nGap (RMS of (predicted - measured) / measured):\n";
+            << r.evaluation_mesh << "\n";
+  if (r.method != "exact") std::cout << "method: " << r.method << "\n";
+  std::cout << "\nGap (RMS of (predicted - measured) / measured):\n";
   std::cout << "  observable              config   baseline  baseline(CV)    after  after(CV)\n";
   for (const auto& kv : r.gap_before) {
     const auto& o = kv.first;
@@ -107,7 +123,9 @@ void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet
   for (std::size_t k = 0; k < r.rounds.size(); ++k) {
     std::cout << "\nName, round " << k + 1
               << " (significant: Delta BIC > 10, CV RMS falls >= 25 % on an observable, "
-                 "grows <= 10 % on none):\n";
+                 "grows <= 10 % on none; CV = cross-validated RMS of the relative residual, "
+                 "pooled over "
+              << observables_text(r.gap_before) << "):\n";
     for (const auto& c : r.rounds[k]) {
       if (!c.testable) {
         std::cout << "  " << c.name << ": not testable (" << c.reason << ")\n";
@@ -163,6 +181,13 @@ std::string axis_label(const std::string& name) {
   return out;
 }
 
+// "sinking_mm" -> "sinking", "rolling_resistance_N" -> "rolling resistance".
+std::string observable_word(const std::string& name) {
+  std::string label = axis_label(name);
+  const auto unit = label.find(" [");
+  return unit == std::string::npos ? label : label.substr(0, unit);
+}
+
 void plot(const std::string& path, const discover::DiscoverReport& r,
           const studies::MeasurementSet& data) {
   const std::string var = r.regimes.empty() ? "" : r.regimes.front().variable;
@@ -177,9 +202,17 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
       pts.emplace_back(x, 100 * row.cv_before.at(obs), 100 * row.cv_after.at(obs));
     }
     if (pts.empty()) continue;  // e.g. a rolling resistance measured as 0 on every row
+    // An observable the model reproduces exactly on every row (e.g. a width that is the
+    // config's own, from a sweep) would be an all-zero panel: left out.
+    bool all_zero = true;
+    for (const auto& [x, b, a] : pts)
+      all_zero = all_zero && std::abs(b) < 1e-9 && std::abs(a) < 1e-9;
+    if (all_zero) continue;
     std::sort(pts.begin(), pts.end());
     PlotPanel p;
-    p.title = axis_label(obs) + (r.effects.empty() ? ": nothing named" : ": before and after");
+    // The panel's axis is a relative residual in %, so the title names the observable without
+    // its unit ("sinking", not "sinking [mm]").
+    p.title = observable_word(obs) + (r.effects.empty() ? ": nothing named" : ": before and after");
     p.xlabel = var.empty() ? "row" : axis_label(var);
     p.ylabel = "cross-validated (predicted - measured) / measured [%]";
     PlotSeries before{"baseline", {}, {}, "linespoints"};
@@ -197,7 +230,7 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
   }
   if (fig.panels.empty()) {
     throw InputError({data.path, 0, ""},
-                     "nothing to plot: no observable has a non-zero measurement");
+                     "nothing to plot: no observable has a non-zero measurement or a residual");
   }
   fig.width_px = 420 * static_cast<int>(std::min<std::size_t>(fig.panels.size(), 3)) + 60;
   fig.height_px = fig.panels.size() > 3 ? 900 : 520;
@@ -230,6 +263,10 @@ void register_discover(CLI::App& app) {
       ->check(CLI::Range(0.0, 50.0));
   cmd->add_option("--max-effects", a->max_effects, "effects to name at most (default 2)")
       ->check(CLI::Range(1, 9));
+  cmd->add_option("--exact-rows", a->exact_rows,
+                  "fit and cross-validate exactly up to this many rows, above by a subset search "
+                  "and one-step cross-validation (default 64; docs/discover.md)")
+      ->check(CLI::Range(4, 1000000));
   cmd->callback([a] {
     // CLI::Range lets NaN through (every comparison with it is false).
     if (!std::isfinite(a->unit_length_mm)) {
@@ -258,17 +295,21 @@ void register_discover(CLI::App& app) {
     opt.threads = a->threads;
     opt.unit_length_mm = a->unit_length_mm;
     opt.max_effects = a->max_effects;
+    opt.fit.exact_rows = a->exact_rows;
+    // One bar per phase on stderr (a terminal only): the baseline's fit and cross-validation,
+    // then each round's candidates, a tick per fit and per cross-validation (done = 0 opens a
+    // phase).
     std::mutex m;
     std::unique_ptr<ProgressBar> bar;
-    int round = 0;
-    opt.progress = [&](int done, int total) {
+    std::string phase;
+    opt.progress = [&](const std::string& p, int done, int total) {
       std::lock_guard<std::mutex> lock(m);
-      if (!bar || done == 1) {
+      if (!bar || p != phase) {
         if (bar) bar->finish();
-        bar = std::make_unique<ProgressBar>(static_cast<std::size_t>(total),
-                                            "discover round " + std::to_string(++round));
+        phase = p;
+        bar = std::make_unique<ProgressBar>(static_cast<std::size_t>(total), "discover " + p);
       }
-      bar->tick();
+      if (done > 0) bar->tick();
     };
     const discover::DiscoverReport r = discover::discover(cfg, data, opt);
     if (bar) bar->finish();
@@ -338,6 +379,9 @@ void register_discover(CLI::App& app) {
         {"final_parameters", values(r.final_parameters)},
         {"residuals", rows},
         {"fits", r.fits},
+        {"evaluations", r.evaluations},
+        {"footprints", r.footprints},
+        {"method", r.method},
         {"conclusion", r.conclusion}};
     if (!a->out_config.empty()) j["out_config"] = a->out_config;
     check_finite(j);

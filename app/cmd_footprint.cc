@@ -36,8 +36,11 @@ void register_footprint(CLI::App& app) {
       "for each vertical load (load control, carcass and tread in series, seed 001); effects "
       "switched on in the config act at its default conditions.");
   cmd->add_option("CONFIG", a->config, "tyre config (YAML), e.g. configs/sf350.yaml")->required();
-  cmd->add_option("--load", a->loads, "vertical load [N]; repeat for several (default: loads_N)");
-  cmd->add_option("--fx", a->horizontal, "horizontal force at the axle [N], forward positive");
+  // The ranges of the config's loads_N and horizontal_force_N (README, "Input ranges").
+  cmd->add_option("--load", a->loads, "vertical load [N]; repeat for several (default: loads_N)")
+      ->check(physical_range(0, 1e7, "N", "1e7 N (1000 t on one wheel) exceeds any tyre"));
+  cmd->add_option("--fx", a->horizontal, "horizontal force at the axle [N], forward positive")
+      ->check(physical_range(-1e7, 1e7, "N", "1e7 N exceeds any tyre", true));
   cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");
   cmd->add_flag("--json", a->json, "print JSON");
   cmd->add_option("--plot", a->plot,
@@ -81,6 +84,7 @@ void register_footprint(CLI::App& app) {
     // effects act on what is printed exactly as they do in `sweep` and `validate`.
     const auto results = contact::predict_all(model, cases);
     require_converged(results);
+    warn_outside_validity(config, results);
     if (!a->plot.empty()) {
       if (config.footprint_3d) {
         plot_footprint_maps(results, config, a->plot);

@@ -252,18 +252,28 @@ void register_identify(CLI::App& app) {
   cmd->add_option("--config", args->config,
                   "tyre config: tyre.outer_radius_mm, tyre.inflation_pressure_kPa, "
                   "tread.contact_width_mm");
-  cmd->add_option("--r0-mm", args->r0_mm, "free (outer) radius r0 [mm]");
-  cmd->add_option("--tread-width-mm", args->tread_width_mm, "tread / contact width B_tr [mm]");
-  cmd->add_option("--mass-kg", args->mass_kg, "reduced oscillating mass m (free-vibration) [kg]");
+  // Ranges of the numbers (README, "Input ranges"): wider than any tyre or test rig, so
+  // that only a unit error or a typo falls outside.
+  cmd->add_option("--r0-mm", args->r0_mm, "free (outer) radius r0 [mm]")
+      ->check(physical_range(0, 5000, "mm", "no tyre or test wheel has a free radius above 5 m"));
+  cmd->add_option("--tread-width-mm", args->tread_width_mm, "tread / contact width B_tr [mm]")
+      ->check(physical_range(0, 5000, "mm", "no tread or test wheel is wider than 5 m"));
+  cmd->add_option("--mass-kg", args->mass_kg, "reduced oscillating mass m (free-vibration) [kg]")
+      ->check(physical_range(0, 1e5, "kg",
+                             "a wheel with rim and fixture; 100 t exceeds any tyre test rig"));
   cmd->add_option("--contact-length-mm", args->contact_length_mm,
-                  "contact length L_C (free-vibration; fixes the deflection in contact-stress)");
+                  "contact length L_C (free-vibration; fixes the deflection in contact-stress)")
+      ->check(physical_range(0, 10000, "mm", "a contact is shorter than the tyre's diameter"));
   cmd->add_option("--section-height-mm", args->section_height_mm,
-                  "section height H of eps1 = Delta_P / H (free-vibration with --static)");
+                  "section height H of eps1 = Delta_P / H (free-vibration with --static)")
+      ->check(physical_range(0, 5000, "mm", "a section is lower than the free radius"));
   cmd->add_option("--static", args->static_file,
                   "static loop CSV load_N,deflection_mm,branch for E1 and chi (free-vibration)");
   cmd->add_option("--pressure-kPa", args->pressure_kPa,
                   "gauge pressure at which load-deflection reports C_P (default: the config's, "
-                  "else the median of the data)");
+                  "else the median of the data)")
+      ->check(physical_range(
+          0, 10000, "kPa", "a gauge pressure; aircraft tyres, the hardest, run at ~1.5 MPa", true));
   cmd->add_option("--samples", args->samples, "b-factors: points over the range (default 6)");
   cmd->add_option("--sampling", args->sampling, "b-factors: uniform in 'deflection' or 'angle'")
       ->check(CLI::IsMember({"deflection", "angle"}));

@@ -1,29 +1,29 @@
-// modaltyre sweep SWEEP.yaml [--threads N] [--set key=value]... [--output FILE] [--json] [--warm-start]
+// modaltyre sweep SWEEP.yaml [--threads N] [--set key=value]... [--output FILE] [--json]
+//                            [--warm-start]
 // mpirun -n K modaltyre sweep SWEEP.yaml ...   (built with -DMODALTYRE_WITH_MPI=ON)
 //
 // Exit codes: 0 when at least one case succeeded (failed cases are rows marked failed in the
 // CSV); 1 when every case failed (the CSV is still written, so the reasons can be read); 2 for a
 // bad sweep file, config or output path, before anything is computed.
+#include <omp.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string_view>
 
-#include <omp.h>
-
 #include "cli_support.h"
 #include "commands.h"
-#include "mpi_session.h"
-#include "modaltyre/studies/sweep.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/progress.h"
+#include "modaltyre/studies/sweep.h"
+#include "mpi_session.h"
 
 namespace modaltyre::app {
 namespace {
@@ -78,6 +78,7 @@ Prepared prepare(const SweepArgs& a) {
 
 struct Summary {
   std::size_t failed = 0;
+  std::size_t invalid = 0;  // ok cases outside the model's validity range
   int threads = 1;
   int ranks = 1;
   double wall_s = 0;
@@ -88,20 +89,27 @@ void report(const SweepArgs& a, const Prepared& p, const Summary& s) {
   const std::size_t n = p.plan.cases.size();
   const double rate = s.wall_s > 0 ? static_cast<double>(n) / s.wall_s : 0.0;
   char line[640];
-  std::snprintf(line, sizeof line,
-                "sweep: %zu cases (%zu model%s), %zu failed, %.3f s wall, %.1f cases/s, %d "
-                "thread%s%s -> %s\n",
-                n, p.plan.models.size(), p.plan.models.size() == 1 ? "" : "s", s.failed, s.wall_s,
-                rate, s.threads, s.threads == 1 ? "" : "s",
-                s.ranks > 1 ? (" per rank x " + std::to_string(s.ranks) + " MPI ranks").c_str() : "",
-                p.spec.output.c_str());
+  std::snprintf(
+      line, sizeof line,
+      "sweep: %zu cases (%zu model%s), %zu failed, %.3f s wall, %.1f cases/s, %d "
+      "thread%s%s -> %s\n",
+      n, p.plan.models.size(), p.plan.models.size() == 1 ? "" : "s", s.failed, s.wall_s, rate,
+      s.threads, s.threads == 1 ? "" : "s",
+      s.ranks > 1 ? (" per rank x " + std::to_string(s.ranks) + " MPI ranks").c_str() : "",
+      p.spec.output.c_str());
   std::cerr << line;
+  if (s.invalid > 0) {
+    std::cerr << "warning: " << s.invalid << " of " << n - s.failed
+              << " cases are outside the model's validity range (column valid = false, the "
+                 "reason in message): they are not predictions (README, \"Validity range\")\n";
+  }
   if (a.json) {
     print_json({{"sweep", p.spec.file},
                 {"output", p.spec.output},
                 {"cases", n},
                 {"ok", n - s.failed},
                 {"failed", s.failed},
+                {"outside_validity_range", s.invalid},
                 {"models", p.plan.models.size()},
                 {"threads", s.threads},
                 {"mpi_ranks", s.ranks},
@@ -138,6 +146,7 @@ void run_local(const SweepArgs& a) {
   write_file_atomically(p.spec.output, studies::sweep_csv(p.plan, res));
   Summary s;
   s.failed = res.failed;
+  s.invalid = res.invalid;
   s.threads = res.threads;
   s.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (s.failed == p.plan.cases.size()) s.first_failure = first_failure(res, nullptr);
@@ -168,8 +177,7 @@ void run_distributed(const SweepArgs& a) {
   try {
     p = prepare(a);
     share = studies::sweep_share(p.plan, session.rank(), session.ranks());
-    ProgressBar bar(share.size(),
-                    "sweep, rank 0 of " + std::to_string(session.ranks()),
+    ProgressBar bar(share.size(), "sweep, rank 0 of " + std::to_string(session.ranks()),
                     session.rank() == 0 ? ProgressBar::Mode::automatic : ProgressBar::Mode::never);
     studies::SweepOptions opt;
     opt.threads = threads_per_rank(a, session);
@@ -193,6 +201,7 @@ void run_distributed(const SweepArgs& a) {
   }
 
   const std::size_t failed = session.sum(res.failed);
+  const std::size_t invalid = session.sum(res.invalid);
   std::vector<std::string> parts;
   try {
     parts = session.gather(rows);
@@ -212,7 +221,8 @@ void run_distributed(const SweepArgs& a) {
     std::string_view text = parts[static_cast<std::size_t>(r)];
     for (std::size_t i : its) {
       const std::size_t end = text.find('\n');
-      MODALTYRE_CHECK(end != std::string_view::npos, "rank " + std::to_string(r) + " sent too few rows");
+      MODALTYRE_CHECK(end != std::string_view::npos,
+                      "rank " + std::to_string(r) + " sent too few rows");
       line_of[i] = text.substr(0, end + 1);
       text.remove_prefix(end + 1);
     }
@@ -224,6 +234,7 @@ void run_distributed(const SweepArgs& a) {
 
   Summary s;
   s.failed = failed;
+  s.invalid = invalid;
   s.threads = res.threads;
   s.ranks = session.ranks();
   s.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -245,8 +256,9 @@ void register_sweep(CLI::App& app) {
       "marked failed; readable as measured data by discover and validate). Under mpirun (build "
       "option MODALTYRE_WITH_MPI) the cases are split over the ranks and rank 0 writes the same "
       "CSV.");
-  cmd->add_option("SWEEP", a->sweep,
-                  "sweep file (YAML: base, set, grid, output), e.g. configs/sweeps/table3_loads.yaml")
+  cmd->add_option(
+         "SWEEP", a->sweep,
+         "sweep file (YAML: base, set, grid, output), e.g. configs/sweeps/table3_loads.yaml")
       ->required();
   cmd->add_option("--threads", a->threads, "OpenMP threads (default: OMP_NUM_THREADS or all cores)")
       ->check(CLI::Range(1, 4096));

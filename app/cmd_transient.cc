@@ -1,7 +1,9 @@
 // modaltyre transient CONFIG --scenario NAME [--csv FILE] [--json] [--plot FILE] [--set k=v]...
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -54,6 +56,19 @@ void transient_plot(const transient::TransientResult& r, const std::string& path
   fig.panels.push_back({sc + ": sinking", "t [s]", "sinking [mm]", {sink}});
   fig.panels.push_back({sc + ": contact length", "t [s]", "length [mm]", {len}});
   fig.panels.push_back({sc + ": longitudinal force", "t [s]", "F_x [N]", {fx}});
+  // Each panel spans at least 1 % of its signal's scale (forces: the largest vertical load):
+  // a constant with solver noise, such as F_x = +-1e-11 N while the load is held, is drawn
+  // flat instead of being auto-scaled into a signal.
+  auto largest = [](const PlotSeries& s) {
+    double m = 0;
+    for (double y : s.y) m = std::max(m, std::abs(y));
+    return m;
+  };
+  const double force_scale = largest(load);
+  const double scales[] = {force_scale, largest(sink), largest(len), force_scale};
+  for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+    ensure_min_y_span(fig.panels[i], 0.01 * scales[i]);
+  }
   render_plot(fig, path);
 }
 

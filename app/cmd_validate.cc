@@ -5,6 +5,7 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "modaltyre/contact/predictor.h"
+#include "modaltyre/contact/validity.h"
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/studies/validation.h"
 
@@ -41,7 +42,13 @@ nlohmann::json enabled_effects_json(const contact::EffectsConfig& effects) {
   return names;
 }
 
-nlohmann::json row_json(const studies::ValidationRow& r, bool with_conditions) {
+// A predicted row outside the model's validity range (contact/validity.h) is flagged.
+contact::Validity row_validity(const contact::TyreConfig& config, const studies::ValidationRow& r) {
+  return contact::validity(config, r.sinking_mm * 1e-3, r.length_mm * 1e-3);
+}
+
+nlohmann::json row_json(const studies::ValidationRow& r, bool with_conditions,
+                        const contact::Validity& v) {
   nlohmann::json row = {
       {"row", r.measured.row},
       {"load_N", r.measured.conditions.load_N},
@@ -62,12 +69,16 @@ nlohmann::json row_json(const studies::ValidationRow& r, bool with_conditions) {
     row["rel_error"]["width_mm"] = opt_json(r.width_rel_error);
   }
   if (with_conditions) row["conditions"] = conditions_json(r.measured.conditions);
+  row["valid"] = v.valid;
+  if (!v.valid) row["validity"] = v.reason;
   return row;
 }
 
 nlohmann::json to_json(const studies::ValidationReport& rep) {
   nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : rep.rows) rows.push_back(row_json(r, rep.with_conditions));
+  for (const auto& r : rep.rows) {
+    rows.push_back(row_json(r, rep.with_conditions, row_validity(rep.model.config, r)));
+  }
   nlohmann::json rms = nlohmann::json::object();
   for (const auto& [k, v] : rep.rms_rel_error) rms[k] = round_sig(v, 8);
   nlohmann::json calibrated = nlohmann::json::object();
@@ -148,6 +159,7 @@ void print_table(const studies::ValidationReport& rep, const std::string& measur
               << "   " << cell(r.measured.value("length_mm"), r.length_mm, r.length_rel_error);
     if (width)
       std::cout << "   " << cell(r.measured.value("width_mm"), r.width_mm, r.width_rel_error);
+    if (!row_validity(rep.model.config, r).valid) std::cout << "   outside the validity range";
     std::cout << "\n";
   }
   std::cout << "\nRMS relative error over predicted rows:";
@@ -156,6 +168,23 @@ void print_table(const studies::ValidationReport& rep, const std::string& measur
               << " rows)";
   }
   std::cout << "\n";
+}
+
+// One warning on stderr per row outside the validity range, the first five of them.
+void warn_outside_validity(const studies::ValidationReport& rep) {
+  int outside = 0;
+  for (const auto& r : rep.rows) {
+    const contact::Validity v = row_validity(rep.model.config, r);
+    if (v.valid) continue;
+    if (++outside <= 5) {
+      std::cerr << "warning: row " << r.measured.row << " (load " << r.measured.conditions.load_N
+                << " N) is outside the model's validity range: " << v.reason
+                << "; its prediction is not one (README, \"Validity range\")\n";
+    }
+  }
+  if (outside > 5) {
+    std::cerr << "warning: " << outside - 5 << " more rows are outside the validity range\n";
+  }
 }
 
 void plot_validation(const studies::ValidationReport& rep, const std::string& path) {
@@ -236,6 +265,7 @@ void register_validate(CLI::App& app) {
     const auto config = contact::load_tyre_config(a->config, a->overrides);
     const auto measured = studies::read_validation_measurements(a->measured, config);
     const auto rep = studies::validate_footprints(config, measured);
+    warn_outside_validity(rep);
     if (!a->plot.empty()) plot_validation(rep, a->plot);
     if (a->json) {
       print_json(to_json(rep));

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "cli_support.h"
+#include "modaltyre/contact/validity.h"
 #include "footprint_map.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
@@ -62,7 +63,10 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
                        {"pressure_kPa", round_sig(u.pressure_Pa * 1e-3)}});
     }
     const double peak = peak_pressure_Pa(p);
+    const contact::Validity v = contact::validity(model.config, r.sinking_m, r.contact_length_m);
     cases.push_back({{"load_N", r.load.load_N},
+                     {"valid", v.valid},
+                     {"validity", v.valid ? nlohmann::json(nullptr) : nlohmann::json(v.reason)},
                      {"horizontal_force_N", r.load.horizontal_force_N},
                      {"sinking_mm", round_sig(r.sinking_m * 1e3)},
                      {"contact_length_mm", round_sig(r.contact_length_m * 1e3)},
@@ -106,6 +110,18 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
     m["contact_width_mm"] = c.tread.width_m * 1e3;
   }
   return out;
+}
+
+void warn_outside_validity(const contact::TyreConfig& config,
+                           const std::vector<contact::Prediction>& predictions) {
+  for (const auto& p : predictions) {
+    const auto& r = p.footprint;
+    const contact::Validity v = contact::validity(config, r.sinking_m, r.contact_length_m);
+    if (v.valid) continue;
+    std::cerr << "warning: load " << r.load.load_N
+              << " N is outside the model's validity range: " << v.reason
+              << "; the footprint is not a prediction (README, \"Validity range\")\n";
+  }
 }
 
 void print_footprint_table(const contact::TyreModel& model,

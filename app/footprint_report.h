@@ -12,7 +12,10 @@ namespace modaltyre::app {
 
 /// Throws ComputationError naming the first load case that did not converge.
 void require_converged(const std::vector<contact::Prediction>& cases);
-/// `footprint.load` of each case is the applied load.
+/// Every case outside the model's validity range (contact/validity.h) as a warning on stderr.
+void warn_outside_validity(const contact::TyreConfig& config,
+                           const std::vector<contact::Prediction>& cases);
+/// `footprint.load` of each case is the applied load; "valid" and its reason per case.
 nlohmann::json footprint_json(const contact::TyreModel& model,
                               const std::vector<contact::Prediction>& cases);
 void print_footprint_table(const contact::TyreModel& model,

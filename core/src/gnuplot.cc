@@ -1,7 +1,9 @@
 #include "modaltyre/core/gnuplot.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "modaltyre/core/atomic_file.h"
@@ -143,6 +145,22 @@ std::string gnuplot_script(const PlotFigure& figure, const std::string& terminal
   }
   if (n > 1) gp << "unset multiplot\n";
   return gp.str();
+}
+
+void ensure_min_y_span(PlotPanel& panel, double min_span) {
+  if (!(min_span > 0) || panel.ymax > panel.ymin) return;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& s : panel.series) {
+    for (double y : s.y) {
+      if (!std::isfinite(y)) continue;
+      lo = std::min(lo, y);
+      hi = std::max(hi, y);
+    }
+  }
+  if (!(hi >= lo) || hi - lo >= min_span) return;
+  const double mid = 0.5 * (lo + hi);
+  panel.ymin = mid - 0.5 * min_span;
+  panel.ymax = mid + 0.5 * min_span;
 }
 
 void render_plot(const PlotFigure& figure, const std::string& path) {

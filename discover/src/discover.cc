@@ -186,6 +186,14 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
                          " given): fewer cannot be "
                          "cross-validated against a 2-parameter baseline");
   }
+  if (static_cast<int>(data.rows.size()) > kMaxRows) {
+    throw InputError({data.path, 0, "load_N"},
+                     "discover takes at most " + std::to_string(kMaxRows) + " measured rows (" +
+                         std::to_string(data.rows.size()) +
+                         " given): every candidate evaluates the model about 15 times on every "
+                         "row (a 1000-row matrix takes about 20 s of CPU time); average repeated "
+                         "measurements or thin the test matrix");
+  }
   TyreConfig eval = config;
   if (opt.unit_length_mm > 0) {
     // The same limit the config reader puts on contact.unit_length_mm.
@@ -198,7 +206,9 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     eval.mesh.unit_length_m = opt.unit_length_mm * 1e-3;
   }
   const contact::TyreModel model = contact::build_tyre_model(eval);
-  const Evaluator ev(model, data);
+  const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
+  Evaluator ev(model, data);
+  ev.set_threads(threads);
   std::vector<int> all(data.rows.size());
   std::iota(all.begin(), all.end(), 0);
 
@@ -213,10 +223,33 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   rep.gap_config =
       rms_by_observable(data, all_entries, ev.residuals(eval, all_entries, &config_failures));
 
+  if (static_cast<int>(data.rows.size()) <= opt.fit.exact_rows) {
+    rep.method = "exact";
+  } else {
+    std::ostringstream s;
+    s << "approximate on " << data.rows.size() << " rows (more than " << opt.fit.exact_rows
+      << "): search on " << opt.fit.subset_rows
+      << " evenly spread rows (at least 4 per parameter), finished by Gauss-Newton on all "
+         "rows; cross-validation by one Gauss-Newton step per fold";
+    rep.method = s.str();
+  }
+  std::atomic<int> done{0};
+  // A phase starts with (phase, 0, total), then counts each fit and each cross-validation.
+  auto ticker = [&](const std::string& phase, int total) {
+    done = 0;
+    if (opt.progress) opt.progress(phase, 0, total);
+    return [&opt, &done, phase, total] {
+      if (opt.progress) opt.progress(phase, ++done, total);
+    };
+  };
+
   Stage current{make_variant(config, {}), {}, {}};
-  current.fit = fit_variant(ev, eval, current.variant, all, nullptr, true);
-  current.cv = cross_validate(ev, eval, current.variant, current.fit);
-  rep.fits = 1 + current.cv.folds;
+  {
+    auto fc = fit_and_cross_validate(ev, eval, current.variant, opt.fit, ticker("baseline", 2));
+    current.fit = std::move(fc.fit);
+    current.cv = std::move(fc.cv);
+  }
+  rep.fits = 1 + (current.cv.one_step ? 0 : current.cv.folds);
   rep.evaluations = current.fit.evaluations + current.cv.evaluations;
   if (current.fit.failures > 0) {
     throw ComputationError(
@@ -230,7 +263,6 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   rep.regimes = locate(data, baseline.fit);
   rep.worst_rows = worst_rows(data, baseline.fit);
 
-  const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
   for (int round = 0; round < opt.max_effects; ++round) {
     std::vector<EffectId> ids;
     std::vector<CandidateScore> scores;
@@ -248,8 +280,10 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
       ids.push_back(info.id);
     }
     std::vector<Stage> stages(ids.size());
-    std::atomic<int> done{0};
     const int total = static_cast<int>(ids.size());
+    int testable = 0;
+    for (const auto& s : scores) testable += s.testable;
+    const auto tick = ticker("round " + std::to_string(round + 1), 2 * testable);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
     for (int c = 0; c < total; ++c) {
       if (!scores[c].testable) continue;
@@ -257,15 +291,15 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
       effects.push_back(ids[c]);
       Stage& st = stages[c];
       st.variant = make_variant(config, effects);
-      st.fit = fit_variant(ev, current.fit.config, st.variant, all, nullptr, true);
-      st.cv = cross_validate(ev, current.fit.config, st.variant, st.fit);
-      if (opt.progress) opt.progress(++done, total);
+      auto fc = fit_and_cross_validate(ev, current.fit.config, st.variant, opt.fit, tick);
+      st.fit = std::move(fc.fit);
+      st.cv = std::move(fc.cv);
     }
     int best = -1;
     for (int c = 0; c < total; ++c) {
       CandidateScore& s = scores[c];
       if (!s.testable) continue;
-      rep.fits += 1 + stages[c].cv.folds;
+      rep.fits += 1 + (stages[c].cv.one_step ? 0 : stages[c].cv.folds);
       rep.evaluations += stages[c].fit.evaluations + stages[c].cv.evaluations;
       s.parameters = named_values(stages[c].variant, stages[c].fit.values, false);
       s.delta_bic = current.fit.bic - stages[c].fit.bic;
@@ -322,6 +356,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     if (left.empty() || std::abs(left.front().correlation) < opt.structure_correlation) break;
   }
 
+  rep.footprints = ev.predictions();
   rep.gap_after = current.fit.rms;
   rep.cv_gap_after = current.cv.rms;
   rep.final_parameters = named_values(current.variant, current.fit.values, false);

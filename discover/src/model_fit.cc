@@ -1,5 +1,7 @@
 #include "modaltyre/discover/model_fit.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -18,20 +20,6 @@ using contact::TyreConfig;
 constexpr double kNoiseFloor = 1e-4;
 constexpr double kFailureResidual = 1.0;
 
-// Bounded transform: value = lo + (hi - lo) sigma(u) (in ln value when log_scale).
-double to_value(const FreeParameter& p, double u) {
-  const double s = 1.0 / (1.0 + std::exp(-u));
-  if (p.log_scale) return std::exp(std::log(p.min) + (std::log(p.max) - std::log(p.min)) * s);
-  return p.min + (p.max - p.min) * s;
-}
-
-double to_u(const FreeParameter& p, double value) {
-  double s = p.log_scale ? (std::log(value) - std::log(p.min)) / (std::log(p.max) - std::log(p.min))
-                         : (value - p.min) / (p.max - p.min);
-  s = std::clamp(s, 1e-6, 1 - 1e-6);
-  return std::log(s / (1 - s));
-}
-
 FreeParameter make_parameter(std::string key, double lo, double hi,
                              std::function<double(const TyreConfig&)> get,
                              std::function<void(TyreConfig&, double)> set) {
@@ -47,11 +35,32 @@ FreeParameter make_parameter(std::string key, double lo, double hi,
 
 std::vector<double> values_of(const std::vector<FreeParameter>& ps, const Eigen::VectorXd& u) {
   std::vector<double> v(ps.size());
-  for (std::size_t i = 0; i < ps.size(); ++i) v[i] = to_value(ps[i], u(static_cast<int>(i)));
+  for (std::size_t i = 0; i < ps.size(); ++i) v[i] = from_search(ps[i], u(static_cast<int>(i)));
   return v;
 }
 
 }  // namespace
+
+// Bounded transform: value = lo + (hi - lo) sigma(u) (in ln value when log_scale).
+double from_search(const FreeParameter& p, double u) {
+  const double s = 1.0 / (1.0 + std::exp(-u));
+  if (p.log_scale) return std::exp(std::log(p.min) + (std::log(p.max) - std::log(p.min)) * s);
+  return p.min + (p.max - p.min) * s;
+}
+
+double to_search(const FreeParameter& p, double value) {
+  double s = p.log_scale ? (std::log(value) - std::log(p.min)) / (std::log(p.max) - std::log(p.min))
+                         : (value - p.min) / (p.max - p.min);
+  s = std::clamp(s, 1e-6, 1 - 1e-6);
+  return std::log(s / (1 - s));
+}
+
+double search_derivative(const FreeParameter& p, double u) {
+  const double s = 1.0 / (1.0 + std::exp(-u));
+  const double ds = s * (1 - s);
+  if (p.log_scale) return from_search(p, u) * (std::log(p.max) - std::log(p.min)) * ds;
+  return (p.max - p.min) * ds;
+}
 
 std::vector<FreeParameter> baseline_parameters(const TyreConfig& config) {
   std::vector<FreeParameter> out = {make_parameter(
@@ -132,21 +141,32 @@ std::vector<Evaluator::Entry> Evaluator::entries(const std::vector<int>& rows) c
 
 std::vector<double> Evaluator::residuals(const TyreConfig& config, const std::vector<Entry>& e,
                                          int* failures) const {
+  std::vector<std::size_t> starts;  // first entry of each row's group
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    if (i == 0 || e[i].row != e[i - 1].row) starts.push_back(i);
+  }
+  starts.push_back(e.size());
+  const int groups = static_cast<int>(starts.size()) - 1;
+  const contact::TyreParameters parameters = contact::parameters_of(config);
   std::vector<double> out(e.size());
   int failed = 0;
-  std::size_t i = 0;
-  while (i < e.size()) {
-    const int row = e[i].row;
+  const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
+  // Rows in parallel only at the top level (a candidate's fit inside discover's parallel loop
+  // runs its rows in order) and when there are enough of them to pay for the threads.
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 4) reduction(+ : failed) \
+    if (groups >= 16 && !omp_in_parallel())
+  for (int g = 0; g < groups; ++g) {
+    const int row = e[starts[g]].row;
     const auto& mr = data_.rows[row];
-    const contact::Prediction p =
-        contact::predict(model_, contact::parameters_of(config), mr.conditions);
+    const contact::Prediction p = contact::predict(model_, parameters, mr.conditions);
     if (!p.ok) ++failed;
-    for (; i < e.size() && e[i].row == row; ++i) {
+    for (std::size_t i = starts[g]; i < starts[g + 1]; ++i) {
       const std::string& obs = data_.observables[e[i].observable];
       const double meas = mr.observed.at(obs);
       out[i] = p.ok ? (p.observable(obs) - meas) / std::abs(meas) : kFailureResidual;
     }
   }
+  predictions_.fetch_add(groups, std::memory_order_relaxed);
   if (failures) *failures = failed;
   return out;
 }
@@ -192,30 +212,37 @@ double rms_of(const std::vector<double>& r) {
   return std::sqrt(s / static_cast<double>(r.size()));
 }
 
-// Gauss-Newton covariance (J^T W J)^-1 with W = 1 / sigma_o^2 per observable (sigma_o the RMS
-// residual of the observable at the optimum), J by central differences in config units.
-std::vector<double> standard_errors(const Evaluator& ev, const TyreConfig& base, const Variant& v,
-                                    const FitResult& fr) {
+}  // namespace
+
+Eigen::MatrixXd jacobian(const Evaluator& ev, const TyreConfig& base, const Variant& v,
+                         const std::vector<double>& values,
+                         const std::vector<Evaluator::Entry>& entries) {
   const int k = static_cast<int>(v.parameters.size());
-  const int m = static_cast<int>(fr.entries.size());
-  std::vector<double> sigma(ev.data().observables.size(), 1.0);
-  for (std::size_t o = 0; o < sigma.size(); ++o) {
-    const auto it = fr.rms.find(ev.data().observables[o]);
-    if (it != fr.rms.end()) sigma[o] = std::max(it->second, 1e-4);
-  }
+  const int m = static_cast<int>(entries.size());
   Eigen::MatrixXd J(m, k);
   for (int j = 0; j < k; ++j) {
     const auto& p = v.parameters[j];
-    const double h = 1e-4 * std::max(std::abs(fr.values[j]), 1e-3 * (p.max - p.min));
-    std::vector<double> up = fr.values, down = fr.values;
+    const double h = 1e-4 * std::max(std::abs(values[j]), 1e-3 * (p.max - p.min));
+    std::vector<double> up = values, down = values;
     up[j] = std::min(up[j] + h, p.max);
     down[j] = std::max(down[j] - h, p.min);
-    const auto ru = ev.residuals(apply(base, v, up), fr.entries);
-    const auto rd = ev.residuals(apply(base, v, down), fr.entries);
-    for (int i = 0; i < m; ++i) {
-      J(i, j) = (ru[i] - rd[i]) / (up[j] - down[j]) / sigma[fr.entries[i].observable];
-    }
+    const auto ru = ev.residuals(apply(base, v, up), entries);
+    const auto rd = ev.residuals(apply(base, v, down), entries);
+    for (int i = 0; i < m; ++i) J(i, j) = (ru[i] - rd[i]) / (up[j] - down[j]);
   }
+  return J;
+}
+
+std::vector<double> standard_errors(const studies::MeasurementSet& data, const FitResult& fr,
+                                    const Eigen::MatrixXd& jacobian) {
+  const int k = static_cast<int>(jacobian.cols());
+  std::vector<double> sigma(data.observables.size(), 1.0);
+  for (std::size_t o = 0; o < sigma.size(); ++o) {
+    const auto it = fr.rms.find(data.observables[o]);
+    if (it != fr.rms.end()) sigma[o] = std::max(it->second, 1e-4);
+  }
+  Eigen::MatrixXd J = jacobian;
+  for (int i = 0; i < J.rows(); ++i) J.row(i) /= sigma[fr.entries[i].observable];
   const Eigen::MatrixXd info = J.transpose() * J;
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(info);
   std::vector<double> se(k, std::numeric_limits<double>::infinity());
@@ -225,7 +252,21 @@ std::vector<double> standard_errors(const Evaluator& ev, const TyreConfig& base,
   return se;
 }
 
-}  // namespace
+FitResult evaluate_fit(const Evaluator& ev, const TyreConfig& base, const Variant& v,
+                       const std::vector<double>& values,
+                       const std::vector<Evaluator::Entry>& entries) {
+  FitResult fr;
+  fr.values = values;
+  fr.config = apply(base, v, fr.values);
+  fr.entries = entries;
+  fr.residuals = ev.residuals(fr.config, entries, &fr.failures);
+  fr.rms = rms_by_observable(ev.data(), entries, fr.residuals);
+  fr.rms_all = rms_of(fr.residuals);
+  fr.bic = bic(entries, fr.residuals, static_cast<int>(ev.data().observables.size()),
+               static_cast<int>(v.parameters.size()));
+  fr.evaluations = 1;
+  return fr;
+}
 
 FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant& v,
                       const std::vector<int>& rows, const std::vector<double>* start,
@@ -242,7 +283,7 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
 
   Eigen::VectorXd u0(k);
   if (start) {
-    for (int i = 0; i < k; ++i) u0(i) = to_u(ps[i], (*start)[i]);
+    for (int i = 0; i < k; ++i) u0(i) = to_search(ps[i], (*start)[i]);
   } else {
     // Baseline scalars from the config; effect parameters from the best point of a small grid
     // (default, and two steps either side in the transformed variable) - one cheap evaluation
@@ -251,7 +292,7 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
     const TyreConfig defaults{};  // catalogue defaults live in a default-constructed config
     for (int i = 0; i < k; ++i) {
       const bool is_new = ps[i].of_effect && !base.effects.enabled(ps[i].effect);
-      u0(i) = to_u(ps[i], ps[i].get(is_new ? defaults : base));
+      u0(i) = to_search(ps[i], ps[i].get(is_new ? defaults : base));
       if (is_new) fresh.push_back(i);
     }
     if (!fresh.empty()) {
@@ -282,16 +323,11 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
   opt.step_tolerance = 1e-7;
   const auto lm = solvers::levenberg_marquardt(residual, u0, opt);
 
-  FitResult fr;
-  fr.values = values_of(ps, lm.x);
-  fr.config = apply(base, v, fr.values);
-  fr.entries = entries;
-  fr.residuals = ev.residuals(fr.config, entries, &fr.failures);
-  fr.rms = rms_by_observable(ev.data(), entries, fr.residuals);
-  fr.rms_all = rms_of(fr.residuals);
-  fr.bic = bic(entries, fr.residuals, static_cast<int>(ev.data().observables.size()), k);
-  fr.evaluations = evaluations + 1;
-  if (with_errors) fr.standard_errors = standard_errors(ev, base, v, fr);
+  FitResult fr = evaluate_fit(ev, base, v, values_of(ps, lm.x), entries);
+  fr.evaluations += evaluations;
+  if (with_errors) {
+    fr.standard_errors = standard_errors(ev.data(), fr, jacobian(ev, base, v, fr.values, entries));
+  }
   fr.converged = lm.converged;
   return fr;
 }

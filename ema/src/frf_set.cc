@@ -73,10 +73,11 @@ void check_frf_set(const FrfSet& set, const FrfLimits& limits) {
                          " lines, " + std::to_string(limits.max_values) + " values)");
   }
   for (std::size_t f = 0; f < n; ++f) {
-    if (!std::isfinite(set.freq_hz[f]) || set.freq_hz[f] < 0 ||
+    // Up to 1e5 Hz, the hammer data's limit: a tyre's modes lie below a few kHz.
+    if (!std::isfinite(set.freq_hz[f]) || set.freq_hz[f] < 0 || set.freq_hz[f] > 1e5 ||
         (f > 0 && !(set.freq_hz[f] > set.freq_hz[f - 1]))) {
       throw InputError({set.path, set.channels.front().line, "freq_hz"},
-                       "frequencies must be >= 0 Hz and strictly increasing (line " +
+                       "frequencies must be in [0, 1e5] Hz and strictly increasing (line " +
                            std::to_string(f + 1) + " of the FRF)");
     }
   }
@@ -98,6 +99,11 @@ void check_frf_set(const FrfSet& set, const FrfLimits& limits) {
     for (const auto& v : c.values) {
       if (!std::isfinite(v.real()) || !std::isfinite(v.imag())) {
         throw InputError({set.path, c.line, ""}, "non-finite FRF value");
+      }
+      // Tyre FRFs are ~1e-6 m/N (receptance) to ~1e2 (m/s^2)/N; 1e12 is a unit error, and
+      // converting it by (2 pi f)^2 must stay finite.
+      if (std::abs(v) > 1e12) {
+        throw InputError({set.path, c.line, ""}, "FRF value beyond 1e12 in magnitude");
       }
     }
   }

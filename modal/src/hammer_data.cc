@@ -4,6 +4,9 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
+#include <sstream>
+#include <string>
 
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
@@ -15,6 +18,7 @@ constexpr double kPi = 3.14159265358979323846;
 // Angles are typed by hand in degrees; 1 % of the spacing separates a rounding from a misplacement.
 constexpr double kSpacingTolerance = 0.01;
 constexpr double kMaxShape = 1e6;  // kg^-1/2
+constexpr double kMaxFrequency_Hz = 1e5;
 
 int as_index(const CsvTable& t, std::size_t row, const std::string& col) {
   const double v = t.number(row, col);
@@ -24,25 +28,96 @@ int as_index(const CsvTable& t, std::size_t row, const std::string& col) {
   return static_cast<int>(v);
 }
 
+using PointLines = std::map<std::pair<int, int>, int>;  // (mode, point) -> line
+
+std::set<int> points_of(const PointLines& seen, int mode) {
+  std::set<int> out;
+  for (const auto& [key, line] : seen) {
+    if (key.first == mode) out.insert(key.second);
+  }
+  return out;
+}
+
+// ": point 7 is missing (mode 1 has it on line 8)" when `mode` lacks points `reference` has,
+// or the other way round; empty when the point numbers do not tell.
+std::string missing_rows(const PointLines& seen, int mode, int reference) {
+  const std::set<int> mine = points_of(seen, mode), theirs = points_of(seen, reference);
+  std::string out;
+  for (int p : theirs) {
+    if (mine.count(p)) continue;
+    out += (out.empty() ? ": point " : ", point ") + std::to_string(p) + " is missing (mode " +
+           std::to_string(reference) + " has it on line " +
+           std::to_string(seen.at({reference, p})) + ")";
+  }
+  for (int p : mine) {
+    if (theirs.count(p)) continue;
+    out += (out.empty() ? ": mode " : ", mode ") + std::to_string(reference) + " lacks point " +
+           std::to_string(p) + " (line " + std::to_string(seen.at({mode, p})) + ")";
+  }
+  return out;
+}
+
+// A row left out of an equally spaced set shows as gaps that are whole multiples of the
+// smallest one: ": no point at 300 deg (point 11?) - the others are 30 deg apart, 12 expected,
+// 11 given". Empty when the gaps do not look like that.
+std::string missing_angles(const std::vector<double>& sorted, const PointLines& seen, int mode) {
+  const int n = static_cast<int>(sorted.size());
+  std::vector<double> gaps(n);
+  for (int i = 0; i < n; ++i) {
+    gaps[i] = (i + 1 < n ? sorted[i + 1] : sorted[0] + 2 * kPi) - sorted[i];
+  }
+  const double base = *std::min_element(gaps.begin(), gaps.end());
+  if (!(base > 1e-9)) return "";
+  const long expected = std::lround(2 * kPi / base);
+  if (expected <= n || std::abs(expected * base - 2 * kPi) > kSpacingTolerance * base) return "";
+  std::vector<double> holes;
+  for (int i = 0; i < n; ++i) {
+    const long k = std::lround(gaps[i] / base);
+    if (k < 1 || std::abs(gaps[i] - k * base) > kSpacingTolerance * base) return "";
+    for (long j = 1; j < k; ++j) holes.push_back(std::fmod(sorted[i] + j * base, 2 * kPi));
+  }
+  std::ostringstream s;
+  s.precision(4);
+  s << ": no point at";
+  for (std::size_t h = 0; h < holes.size(); ++h) s << (h ? ", " : " ") << holes[h] * 180 / kPi;
+  s << " deg";
+  // Points numbered 1..expected: name the numbers that are not there.
+  const std::set<int> ids = points_of(seen, mode);
+  if (!ids.empty() && *ids.begin() >= 1 && *ids.rbegin() <= expected) {
+    std::string numbers;
+    for (int p = 1; p <= expected; ++p) {
+      if (!ids.count(p)) numbers += (numbers.empty() ? "" : ", ") + std::to_string(p);
+    }
+    s << " (point " << numbers << "?)";
+  }
+  s << " - the others are " << base * 180 / kPi << " deg apart: " << expected
+    << " points expected, " << n << " given (a row left out?)";
+  return s.str();
+}
+
 }  // namespace
 
 HammerData read_hammer_csv(const std::string& path) {
   CsvSchema schema;
-  schema.required = {"mode", "freq_hz", "damping_ratio", "point", "angle_deg", "radial",
-                     "tangential"};
+  schema.required = {"mode",      "freq_hz", "damping_ratio", "point",
+                     "angle_deg", "radial",  "tangential"};
   const CsvTable t = read_csv(path, schema);
 
   HammerData data;
   data.path = path;
   std::map<int, std::size_t> index;  // mode id -> position in data.modes
-  std::map<std::pair<int, int>, int> seen_point;  // (mode, point) -> line
+  PointLines seen_point;
   for (std::size_t r = 0; r < t.rows(); ++r) {
     const int line = t.line(r);
     const int id = as_index(t, r, "mode");
     const int point = as_index(t, r, "point");
     const double f = t.number(r, "freq_hz");
     const double z = t.number(r, "damping_ratio");
-    if (f <= 0) throw InputError({path, line, "freq_hz"}, "frequency must be > 0 Hz");
+    // A tyre's structural modes lie below a few kHz; 100 kHz is a unit error (and its squared
+    // circular frequency would overflow the carcass kernel long before 1e308 Hz).
+    if (!(f > 0 && f <= kMaxFrequency_Hz)) {
+      throw InputError({path, line, "freq_hz"}, "frequency must be in (0, 1e5] Hz");
+    }
     if (z < 0 || z >= 1) {
       throw InputError({path, line, "damping_ratio"},
                        "damping ratio must be in [0, 1) (a fraction, not a percentage)");
@@ -50,8 +125,8 @@ HammerData read_hammer_csv(const std::string& path) {
     if (auto it = seen_point.find({id, point}); it != seen_point.end()) {
       throw InputError({path, line, "point"}, "duplicate point " + std::to_string(point) +
                                                   " of mode " + std::to_string(id) +
-                                                  " (first at line " +
-                                                  std::to_string(it->second) + ")");
+                                                  " (first at line " + std::to_string(it->second) +
+                                                  ")");
     }
     seen_point[{id, point}] = line;
     auto [it, inserted] = index.try_emplace(id, data.modes.size());
@@ -96,10 +171,12 @@ HammerData read_hammer_csv(const std::string& path) {
     }
     if (data.points == 0) data.points = n;
     if (n != data.points) {
-      throw InputError({path, m.first_line, "point"},
-                       who + " has " + std::to_string(n) + " points, mode " +
-                           std::to_string(data.modes.front().id) + " has " +
-                           std::to_string(data.points) + "; every mode needs the same points");
+      const int first = data.modes.front().id;
+      throw InputError({path, m.first_line, "point"}, who + " has " + std::to_string(n) +
+                                                          " points, mode " + std::to_string(first) +
+                                                          " has " + std::to_string(data.points) +
+                                                          "; every mode needs the same points" +
+                                                          missing_rows(seen_point, m.id, first));
     }
     std::vector<std::size_t> order(n);
     std::iota(order.begin(), order.end(), 0);
@@ -112,6 +189,8 @@ HammerData read_hammer_csv(const std::string& path) {
       sorted.tangential[i] = m.tangential[order[i]];
     }
     const double spacing = 2 * kPi / n;
+    const std::string missing = missing_angles(sorted.angle_rad, seen_point, m.id);
+    if (!missing.empty()) throw InputError({path, m.first_line, "angle_deg"}, who + missing);
     for (int i = 0; i < n; ++i) {
       const double next = i + 1 < n ? sorted.angle_rad[i + 1] : sorted.angle_rad[0] + 2 * kPi;
       const double gap = next - sorted.angle_rad[i];

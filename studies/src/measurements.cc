@@ -43,12 +43,13 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   schema.optional = {
       "pressure_kPa", "hold_s", "speed_kmh", "horizontal_force_N", "branch", "surface",
       // written by `modaltyre sweep`, ignored here
-      "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations", "status", "message"};
-  schema.text = {"branch", "surface", "status", "message"};
+      "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations", "valid", "status", "message"};
+  schema.text = {"branch", "surface", "valid", "status", "message"};
   for (const auto& o : observable_names()) schema.optional.push_back(o);
   // A failed sweep row has empty number cells: the status check below names it before they
   // are read.
-  schema.may_be_empty = {"message", "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations"};
+  schema.may_be_empty = {"message", "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations",
+                         "valid"};
   for (const auto& o : observable_names()) schema.may_be_empty.push_back(o);
   // A sweep's parameter columns are dotted config keys, ignored here.
   schema.accept_text_column = [](const std::string& c) { return c.find('.') != std::string::npos; };
@@ -94,7 +95,10 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
     }
     if (t.has("hold_s")) {
       c.hold_s = t.number(i, "hold_s");
-      if (!(c.hold_s >= 0)) throw InputError(at("hold_s"), "hold time must be >= 0 s");
+      // The sweep's limit on condition values: 1e7 s (116 days) is far past any creep.
+      if (!(c.hold_s >= 0 && c.hold_s <= 1e7)) {
+        throw InputError(at("hold_s"), "hold time must be in [0, 1e7] s");
+      }
     }
     if (t.has("speed_kmh")) {
       c.speed_kmh = t.number(i, "speed_kmh");

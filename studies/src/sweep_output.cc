@@ -18,7 +18,8 @@ const std::vector<std::string>& sweep_observable_columns() {
                                                 "peak_pressure_kPa",
                                                 "iterations",
                                                 "status",
-                                                "message"};
+                                                "message",
+                                                "valid"};
   return cols;
 }
 
@@ -64,9 +65,10 @@ std::string sweep_csv_row(const SweepPlan& plan, const SweepRow& r, std::size_t 
                      r.vertical_stiffness_N_mm, r.peak_pressure_kPa}) {
       out += "," + sweep_number(v);
     }
-    out += "," + std::to_string(r.iterations) + ",ok," + csv_field(r.message) + "\n";
+    out += "," + std::to_string(r.iterations) + ",ok," + csv_field(r.message) +
+           (r.valid ? ",true\n" : ",false\n");
   } else {
-    out += ",,,,,,,,failed," + csv_field(r.message) + "\n";
+    out += ",,,,,,,,failed," + csv_field(r.message) + ",\n";
   }
   return out;
 }

@@ -10,6 +10,7 @@
 
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_model.h"
+#include "modaltyre/contact/validity.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::studies {
@@ -95,7 +96,13 @@ void build_slot(const SweepPlan& plan, std::size_t mi, const std::vector<std::si
 SweepRow run_case(const SweepCase& sc, const ModelSlot& slot) {
   if (!slot.model) return failed_row(slot.error);
   try {
-    return row_from(solve_case(*slot.model, sc, slot.warm), sc.conditions);
+    SweepRow row = row_from(solve_case(*slot.model, sc, slot.warm), sc.conditions);
+    if (row.ok) {
+      const Validity v = validity(slot.model->config, row.sinking_mm * 1e-3, row.length_mm * 1e-3);
+      row.valid = v.valid;
+      if (!v.valid) row.message = "outside the validity range: " + v.reason;
+    }
+    return row;
   } catch (const std::bad_alloc&) {
     return failed_row("out of memory");
   } catch (const std::exception& e) {
@@ -162,7 +169,10 @@ SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
     }
   }
   for (const auto& cases : run_of) {
-    for (std::size_t i : cases) result.failed += result.rows[i].ok ? 0 : 1;
+    for (std::size_t i : cases) {
+      result.failed += result.rows[i].ok ? 0 : 1;
+      result.invalid += result.rows[i].ok && !result.rows[i].valid ? 1 : 0;
+    }
   }
   return result;
 }

@@ -154,7 +154,9 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
   ValidationReport rep;
   Calibration& cal = rep.calibration;
   cal.keys = vs.calibrate;
-  cal.rows = vs.calibration_rows;
+  // Rows are calibration rows only when something is calibrated on them: with
+  // `--set validation.calibrate=[]` every row is a prediction and counts.
+  if (!cal.keys.empty()) cal.rows = vs.calibration_rows;
   cal.observables = vs.observables;
   std::vector<MeasuredRow> cal_rows;
   for (int r : cal.rows) {

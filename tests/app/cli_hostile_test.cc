@@ -223,3 +223,54 @@ TEST_F(CliHostile, HammerFilesWithManyPointsAreFitted) {
     EXPECT_NE(r.out.find("radial          3  no       1.0000"), std::string::npos) << r.out;
   }
 }
+
+// Issue 16 item 5: extreme numbers are input errors naming the option, file or column and the
+// range, in every command (README, "Input ranges"), not failed computations or results.
+TEST_F(CliHostile, ExtremeNumbersAreInputErrorsWithTheirRange) {
+  const std::string rh = kSrc + "/tests/data/rheology/";
+  expect_input_error(run_limited({"footprint", kConfig, "--load", "1e308"}),
+                     {"--load", "1e308 is outside (0, 1e7] N"});
+  expect_input_error(run_limited({"footprint", kConfig, "--load", "nan"}),
+                     {"--load", "is not a finite number"});
+  expect_input_error(run_limited({"footprint", kConfig, "--load", "5000", "--fx", "-1e308"}),
+                     {"--fx", "-1e308 is outside [-1e7, 1e7] N"});
+  expect_input_error(
+      run_limited({"footprint", kConfig, "--set", "tyre.inflation_pressure_kPa=1e308"}),
+      {"tyre.inflation_pressure_kPa", "out of range"});
+  expect_input_error(run_limited({"identify", "load-deflection", rh + "load_deflection.csv",
+                                  "--r0-mm", "294.8", "--pressure-kPa", "1e308"}),
+                     {"--pressure-kPa", "outside [0, 10000] kPa", "gauge pressure"});
+  expect_input_error(
+      run_limited({"identify", "load-deflection", rh + "load_deflection.csv", "--r0-mm", "1e308"}),
+      {"--r0-mm", "outside (0, 5000] mm"});
+  expect_input_error(run_limited({"identify", "free-vibration", rh + "free_vibration.csv",
+                                  "--mass-kg", "1e308", "--contact-length-mm", "120"}),
+                     {"--mass-kg", "outside (0, 100000] kg", "test rig"});
+  expect_input_error(run_limited({"identify", "free-vibration", rh + "free_vibration.csv",
+                                  "--mass-kg", "30", "--contact-length-mm", "1e308"}),
+                     {"--contact-length-mm", "outside (0, 10000] mm"});
+  expect_input_error(run_limited({"identify", "contact-stress", rh + "contact_stress.csv",
+                                  "--r0-mm", "294.8", "--tread-width-mm", "1e308"}),
+                     {"--tread-width-mm", "outside (0, 5000] mm"});
+  expect_input_error(run_limited({"identify", "b-factors", "--r0-mm", "1e308"}),
+                     {"--r0-mm", "outside (0, 5000] mm"});
+  expect_input_error(
+      run_limited({"discover", kConfig, kSrc + "/configs/data/sf350_footprint_table3.csv",
+                   "--unit-length-mm", "1e308"}),
+      {"--unit-length-mm"});
+
+  // A hammer frequency of 1e308 Hz (fit-modes, and footprint through the config's hammer file).
+  std::vector<std::string> lines = modaltyre_test::hammer_lines();
+  modaltyre_test::set_field(lines, 2, 1, "1e308");
+  std::string text;
+  for (const auto& l : lines) text += l + "\n";
+  const std::string hammer = write("hammer.csv", text);
+  expect_input_error(run_limited({"fit-modes", hammer}), {hammer, ":2", "freq_hz", "(0, 1e5] Hz"});
+  expect_input_error(run_limited({"footprint", kConfig, "--set", "modal.hammer_csv=" + hammer}),
+                     {hammer, ":2", "freq_hz", "(0, 1e5] Hz"});
+
+  // Measured rows: a hold time of 1e308 s.
+  const std::string held = write("held.csv", "load_N,hold_s,sinking_mm\n2000,0,8\n3000,1e308,12\n");
+  expect_input_error(run_limited({"validate", kConfig, held}),
+                     {held, ":3", "hold_s", "[0, 1e7] s"});
+}

@@ -61,7 +61,7 @@ TEST_F(SweepCli, OneAndTwoThreadsWriteByteIdenticalCsv) {
   EXPECT_EQ(ca.substr(0, ca.find('\n')),
             "horizontal_force_N,tread.modulus_MPa,load_N,sinking_mm,length_mm,width_mm,"
             "rolling_resistance_N,vertical_stiffness_N_mm,peak_pressure_kPa,iterations,status,"
-            "message");
+            "message,valid");
   EXPECT_EQ(std::count(ca.begin(), ca.end(), '\n'), 13);
   EXPECT_NE(ca.find("\n0,4,2000,"), std::string::npos);
   EXPECT_NE(ca.find("\n0,8,8000,"), std::string::npos);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
 #include <string>
 
 #include "modaltyre/contact/footprint.h"
@@ -97,6 +98,9 @@ struct Spacing {
   std::string name;
   std::vector<std::string> coarse, fine;
 };
+
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const Spacing& c, std::ostream* os) { *os << c.name; }
 
 class Patch3dMesh : public ::testing::TestWithParam<Spacing> {};
 

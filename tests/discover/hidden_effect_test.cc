@@ -9,100 +9,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <functional>
-#include <map>
-#include <memory>
-#include <random>
 #include <set>
 
 #include "modaltyre/discover/discover.h"
+#include "planted_data.h"
 
 namespace modaltyre::discover {
 namespace {
 
-using contact::Branch;
-using contact::OperatingConditions;
-using contact::Surface;
-using contact::TyreConfig;
-
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-// The carcass with the dispersion extension (orders up to the mesh's Nyquist order) instead of
-// the default's measured orders only.
-const std::string kExtended = "modal.extend_orders=true";
-
-struct Planted {
-  std::string effect;                                  // name; "" = none
-  std::function<void(contact::EffectsConfig&)> truth;  // switches it on with hidden values
-  std::map<std::string, double> hidden;                // key -> planted value
-  std::vector<OperatingConditions> rows;
-  std::vector<std::string> observables = {"sinking_mm", "length_mm"};
-  double noise = 0.015;
-  unsigned seed = 1;
-  std::vector<std::string> overrides;  // of the tyre config, for data and discover alike
-};
-
-std::string joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const auto& x : v) s += x + ";";
-  return s;
-}
-
-// Writes the measurement CSV of a planted data set and reads it back like the CLI would.
-studies::MeasurementSet make_data(const Planted& p, const std::string& name) {
-  // One generator per tyre config, built once.
-  static std::map<std::string, std::pair<TyreConfig, std::unique_ptr<const contact::TyreModel>>>
-      generators;
-  auto it = generators.find(joined(p.overrides));
-  if (it == generators.end()) {
-    std::vector<std::string> o = p.overrides;
-    o.push_back("contact.unit_length_mm=2");
-    TyreConfig c = contact::load_tyre_config(kConfig, o);
-    auto g = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(c));
-    it = generators.emplace(joined(p.overrides), std::make_pair(std::move(c), std::move(g))).first;
-  }
-  const TyreConfig& gen_cfg = it->second.first;
-  const contact::TyreModel& gen = *it->second.second;
-  TyreConfig truth = gen_cfg;
-  if (p.truth) p.truth(truth.effects);
-  std::mt19937 rng(p.seed);
-  std::normal_distribution<double> unit(0.0, 1.0);
-  const auto path = std::filesystem::temp_directory_path() / ("modaltyre_hidden_" + name + ".csv");
-  std::ofstream out(path);
-  out << "load_N,pressure_kPa,hold_s,speed_kmh,branch,surface";
-  for (const auto& o : p.observables) out << "," << o;
-  out << "\n";
-  out.precision(10);
-  for (const auto& c : p.rows) {
-    const contact::Prediction pr = contact::predict(gen, contact::parameters_of(truth), c);
-    EXPECT_TRUE(pr.ok) << pr.message;
-    out << c.load_N << "," << c.pressure_kPa << "," << c.hold_s << "," << c.speed_kmh << ","
-        << contact::branch_name(c.branch) << "," << contact::surface_name(c.surface);
-    for (const auto& o : p.observables) out << "," << pr.observable(o) * (1 + p.noise * unit(rng));
-    out << "\n";
-  }
-  out.close();
-  return studies::read_measurements(path.string(), gen_cfg);
-}
-
-std::vector<OperatingConditions> grid(const std::vector<double>& loads,
-                                      const std::function<void(OperatingConditions&, int)>& vary,
-                                      int levels) {
-  static const TyreConfig cfg = contact::load_tyre_config(kConfig);
-  std::vector<OperatingConditions> rows;
-  for (int l = 0; l < levels; ++l) {
-    for (double f : loads) {
-      OperatingConditions c = cfg.default_conditions(f);
-      if (vary) vary(c, l);
-      rows.push_back(c);
-    }
-  }
-  return rows;
-}
-
-const std::vector<double> kLoads5 = {2000, 3500, 5000, 6500, 8000};
-const std::vector<double> kLoads9 = {1500, 2500, 3500, 4500, 5500, 6500, 7500, 8500, 9500};
+using namespace planted;
 
 std::vector<Planted> planted_cases() {
   std::vector<Planted> v;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <ostream>
 #include <string>
 
 #include "ema_test_support.h"
@@ -69,6 +70,9 @@ struct CsvDefect {
   int error_line;
   std::string column;
 };
+
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const CsvDefect& c, std::ostream* os) { *os << c.name; }
 
 class FrfCsvDefect : public modaltyre_test::ScratchDir,
                      public ::testing::WithParamInterface<CsvDefect> {};

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 #include <string>
 
 #include "ema_match.h"
@@ -38,6 +39,9 @@ struct NoiseCase {
   std::string name;
   double noise;
 };
+
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const NoiseCase& c, std::ostream* os) { *os << c.name; }
 
 class RingModel : public ::testing::TestWithParam<NoiseCase> {};
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,9 @@ struct RoundTripCase {
   std::string name;
   UffOptions options;
 };
+
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const RoundTripCase& c, std::ostream* os) { *os << c.name; }
 
 class UffRoundTrip : public modaltyre_test::ScratchDir,
                      public ::testing::WithParamInterface<RoundTripCase> {};
@@ -169,6 +173,9 @@ struct Defect {
   int error_line;
   std::string field;
 };
+
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const Defect& c, std::ostream* os) { *os << c.name; }
 
 class UffDefect : public modaltyre_test::ScratchDir,
                   public ::testing::WithParamInterface<Defect> {};

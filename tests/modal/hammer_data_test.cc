@@ -1,6 +1,5 @@
 // Hammer-file validation: every defect a researcher's file can have is an InputError naming the
 // file, and the line and column where they apply; a good file reads back sorted by angle.
-#include "../support/hammer_lines.h"
 #include "modaltyre/modal/hammer_data.h"
 
 #include <gtest/gtest.h>
@@ -14,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/hammer_lines.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::modal {
@@ -24,8 +24,6 @@ using modaltyre_test::set_field;
 
 namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
-
-
 
 class HammerData : public ::testing::Test {
  protected:
@@ -146,6 +144,22 @@ TEST_F(HammerData, ModeWithFewerPointsThanOthers) {
   auto l = hammer_lines(12, 3);
   l.erase(l.begin() + 14 + 5);  // mode 2 (lines 14-25) loses one point
   expect_error(write(l), 14, "point", "mode 2 has 11 points");
+}
+
+// Issue 16: one row left out names the missing point instead of an unequal spacing. Mode 2
+// (lines 14-25, point i at 30 (i - 1) deg) without point 6: the point and the first mode's line
+// of it; the first mode without point 11: the angle and the number.
+TEST_F(HammerData, OneMissingRowNamesThePoint) {
+  auto l = hammer_lines(12, 3);
+  l.erase(l.begin() + 13 + 5);  // line 19: mode 2 point 6
+  expect_error(write(l), 14, "point",
+               "mode 2 has 11 points, mode 1 has 12; every mode needs the same points: point 6 is "
+               "missing (mode 1 has it on line 7)");
+  l = hammer_lines(12, 3);
+  l.erase(l.begin() + 11);  // line 12: mode 1 point 11 at 300 deg
+  expect_error(write(l), 2, "angle_deg",
+               "mode 1: no point at 300 deg (point 11?) - the others are 30 deg apart: 12 points "
+               "expected, 11 given");
 }
 
 // Damping written as a percentage is refused (seed 001 Table 2 gives percentages).

@@ -183,7 +183,12 @@ TEST_P(HeldOutTyre, OrdersKindsAndAliasing) {
 INSTANTIATE_TEST_SUITE_P(Points, HeldOutTyre,
                          ::testing::Combine(::testing::Values(12, 18),
                                             ::testing::Values(1u, 2u, 3u),
-                                            ::testing::Values(1, 3, 7)));
+                                            ::testing::Values(1, 3, 7)),
+                         [](const auto& info) {
+                           return std::to_string(std::get<0>(info.param)) + "Points_Seed" +
+                                  std::to_string(std::get<1>(info.param)) + "_BreathingAfterOrder" +
+                                  std::to_string(std::get<2>(info.param));
+                         });
 
 // Bundled SF-350 data (seed 001 Table 2 frequencies): orders 1,1,0,2,2,3,3,4,4,5,5 for modes
 // 1-11; modes 12, 13, 15, 16 aliased with likely orders 6, 6, 7, 8; mode 14 rigid rotation.

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <random>
 
 namespace modaltyre::solvers {
@@ -54,6 +55,9 @@ struct ArrowCase {
   const char* name;
   int nx, ne, lo, hi;
 };
+
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const ArrowCase& c, std::ostream* os) { *os << c.name; }
 
 class ArrowLuTest : public ::testing::TestWithParam<ArrowCase> {};
 

@@ -203,7 +203,8 @@ TEST_F(Measurements, ZeroOrNegativeSinkingLengthWidth) {
 TEST_F(Measurements, ConditionRanges) {
   const std::string h = "load_N,pressure_kPa,hold_s,speed_kmh,sinking_mm\n";
   const std::string r = "4000,230,0,0,15\n";
-  expect_refused(with_cell(h, r, "4000,230,-1,0,15\n"), 3, "hold_s", ">= 0");
+  expect_refused(with_cell(h, r, "4000,230,-1,0,15\n"), 3, "hold_s", "[0, 1e7] s");
+  expect_refused(with_cell(h, r, "4000,230,1e308,0,15\n"), 3, "hold_s", "[0, 1e7] s");
   expect_refused(with_cell(h, r, "4000,0,0,0,15\n"), 3, "pressure_kPa", "(0, 2000]");
   expect_refused(with_cell(h, r, "4000,-230,0,0,15\n"), 3, "pressure_kPa", "(0, 2000]");
   expect_refused(with_cell(h, r, "4000,2000.5,0,0,15\n"), 3, "pressure_kPa", "(0, 2000]");

@@ -178,7 +178,7 @@ TEST(Sweep, CsvIsByteIdenticalForOneAndTwoThreads) {
   EXPECT_EQ(sweep_csv(plan, run_sweep(plan, one)), sweep_csv(plan, run_sweep(plan, two)));
   EXPECT_EQ(a.substr(0, a.find('\n')),
             "tread.modulus_MPa,load_N,sinking_mm,length_mm,width_mm,rolling_resistance_N,"
-            "vertical_stiffness_N_mm,peak_pressure_kPa,iterations,status,message");
+            "vertical_stiffness_N_mm,peak_pressure_kPa,iterations,status,message,valid");
   EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 22);
 }
 
@@ -203,6 +203,38 @@ TEST(Sweep, AFailedCaseIsARowWithItsReason) {
   const std::string csv = sweep_csv(plan, res);
   EXPECT_NE(csv.find("\n1,3000,,,,,,,,failed,active set did not settle"), std::string::npos) << csv;
   EXPECT_NE(csv.find("\n200,6000,"), std::string::npos);
+}
+
+// Issue 16 item 6: a case outside the model's validity range is an ok row (the solver
+// converges) marked valid = false with the reason as its message; the CSV still reads back as
+// measured data (the column is ignored there).
+TEST(Sweep, ACaseOutsideTheValidityRangeIsMarked) {
+  const auto plan =
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
+                         "set:\n"
+                         "  contact.unit_length_mm: 2\n"
+                         "grid:\n"
+                         "  load_N: [5000, 30000]\n"
+                         "output: x.csv\n"));
+  const auto res = run_sweep(plan, {});
+  ASSERT_EQ(res.rows.size(), 2u);
+  EXPECT_EQ(res.failed, 0u);
+  EXPECT_EQ(res.invalid, 1u);
+  EXPECT_TRUE(res.rows[0].valid);
+  EXPECT_FALSE(res.rows[1].valid);
+  EXPECT_EQ(res.rows[1].message.rfind("outside the validity range: sinking", 0), 0u)
+      << res.rows[1].message;
+  const std::string csv = sweep_csv(plan, res);
+  EXPECT_NE(csv.find(",ok,converged in"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",true\n30000,"), std::string::npos) << csv;
+  EXPECT_EQ(csv.substr(csv.size() - 7), ",false\n") << csv;
+  const fs::path path =
+      fs::temp_directory_path() / ("modaltyre_valid_" + std::to_string(getpid()) + ".csv");
+  std::ofstream(path) << csv;
+  const auto back = read_measurements(path.string(), load_tyre_config(kConfig));
+  fs::remove(path);
+  ASSERT_EQ(back.rows.size(), 2u);
+  EXPECT_EQ(back.rows[1].conditions.load_N, 30000);
 }
 
 // Distributed sweeps (MPI) run each rank's share with only_cases; rank 0 puts the rows back in

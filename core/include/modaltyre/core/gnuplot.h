@@ -44,6 +44,12 @@ struct PlotFigure {
   int height_px = 560;
 };
 
+/// Fixes the panel's y range to span at least `min_span` around its data when the data span
+/// less: a constant signal with numerical noise (+-1e-11 N) is then drawn flat at its level
+/// instead of being auto-scaled into what looks like a signal. No change when the data span
+/// enough, when min_span <= 0, or when the range is already fixed.
+void ensure_min_y_span(PlotPanel& panel, double min_span);
+
 /// Renders the figure to `path` (.svg or .png). Throws InputError for an unknown extension or
 /// an unwritable path, ComputationError when gnuplot is missing or fails.
 void render_plot(const PlotFigure& figure, const std::string& path);

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/discover/large_fit.h"
 #include "modaltyre/discover/model_fit.h"
 #include "modaltyre/studies/measurements.h"
 
@@ -43,8 +44,13 @@ struct DiscoverOptions {
   /// condition at least this strongly.
   double structure_correlation = 0.5;
   int threads = 0;  ///< 0: OpenMP default
-  /// Called after each candidate fit with (done, total) of the current round; thread-safe.
-  std::function<void(int, int)> progress;
+  /// Exact fitting and cross-validation up to fit.exact_rows rows, approximations above
+  /// (large_fit.h).
+  FitOptions fit;
+  /// Called with (phase, done, total) after each fit and each cross-validation: phase
+  /// "baseline" (total 2), then "round 1", "round 2", ... (total 2 per testable candidate).
+  /// Thread-safe; done counts up from 1 within a phase.
+  std::function<void(const std::string&, int, int)> progress;
 };
 
 struct RegimeFinding {
@@ -102,7 +108,14 @@ struct DiscoverReport {
   std::string conclusion;                  ///< one paragraph in words
   int fits = 0;
   long evaluations = 0;  ///< parameter sets evaluated (each on all rows of its fit)
+  long footprints = 0;   ///< footprints predicted (one per row and evaluation)
+  /// "exact" or the approximations used on many rows (large_fit.h), in words.
+  std::string method;
 };
+
+/// Rows discover accepts at most (InputError above: a 1000-row matrix costs ~20 s of CPU time,
+/// growing in proportion to the rows).
+inline constexpr int kMaxRows = 10000;
 
 DiscoverReport discover(const contact::TyreConfig& config, const studies::MeasurementSet& data,
                         const DiscoverOptions& options = {});

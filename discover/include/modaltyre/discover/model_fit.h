@@ -11,6 +11,8 @@
 // Parameters are searched in a bounded transform (logistic in the value, or in its logarithm
 // when the range spans two decades or more), so Levenberg-Marquardt never leaves the
 // catalogue's [min, max].
+#include <Eigen/Dense>
+#include <atomic>
 #include <functional>
 #include <map>
 #include <string>
@@ -62,15 +64,23 @@ class Evaluator {
   /// Entries of the given rows (all observed, non-zero measurements).
   std::vector<Entry> entries(const std::vector<int>& rows) const;
   /// Relative residuals of the entries; a row whose prediction fails contributes `failure`
-  /// (1 = 100 %) to each of its entries and counts in `failures`.
+  /// (1 = 100 %) to each of its entries and counts in `failures`. Entries must be grouped by
+  /// row (as entries() gives them). The rows are predicted in parallel (set_threads) when the
+  /// call is not already inside a parallel region; the result does not depend on it.
   std::vector<double> residuals(const contact::TyreConfig& config, const std::vector<Entry>& e,
                                 int* failures = nullptr) const;
   const studies::MeasurementSet& data() const { return data_; }
   const contact::TyreModel& model() const { return model_; }
+  /// Threads over rows for calls outside a parallel region (0: OpenMP default).
+  void set_threads(int threads) { threads_ = threads; }
+  /// Footprints predicted so far (one per row and residuals() call), over all threads.
+  long predictions() const { return predictions_.load(std::memory_order_relaxed); }
 
  private:
   const contact::TyreModel& model_;
   const studies::MeasurementSet& data_;
+  int threads_ = 0;
+  mutable std::atomic<long> predictions_{0};
 };
 
 struct FitResult {
@@ -89,6 +99,26 @@ struct FitResult {
   bool converged = false;
 };
 
+/// Jacobian of the relative residuals of `entries` with respect to the variant's parameters in
+/// config units at `values`, by central differences (2 k evaluations; steps 1e-4 relative,
+/// clipped to the parameter's range).
+Eigen::MatrixXd jacobian(const Evaluator& ev, const contact::TyreConfig& base, const Variant& v,
+                         const std::vector<double>& values,
+                         const std::vector<Evaluator::Entry>& entries);
+
+/// Standard errors from a Jacobian in config units at a fit's optimum: the Gauss-Newton
+/// covariance (J^T W J)^-1, W = 1 / sigma_o^2 per observable (sigma_o the fit's RMS residual of
+/// the observable); infinite when the parameters are not identifiable.
+std::vector<double> standard_errors(const studies::MeasurementSet& data, const FitResult& fit,
+                                    const Eigen::MatrixXd& jacobian);
+
+/// The search variable of a parameter (bounded logistic transform, in the logarithm when
+/// log_scale) and back.
+double to_search(const FreeParameter& p, double value);
+double from_search(const FreeParameter& p, double u);
+/// d value / d u at u.
+double search_derivative(const FreeParameter& p, double u);
+
 /// Applies a variant's effects and parameter values to a config.
 contact::TyreConfig apply(const contact::TyreConfig& base, const Variant& v,
                           const std::vector<double>& values);
@@ -101,12 +131,19 @@ FitResult fit_variant(const Evaluator& ev, const contact::TyreConfig& base, cons
                       const std::vector<int>& rows, const std::vector<double>* start = nullptr,
                       bool standard_errors = false);
 
+/// The FitResult of a variant at given values on given entries (residuals, RMS, BIC; one
+/// evaluation; no standard errors).
+FitResult evaluate_fit(const Evaluator& ev, const contact::TyreConfig& base, const Variant& v,
+                       const std::vector<double>& values,
+                       const std::vector<Evaluator::Entry>& entries);
+
 /// BIC of residuals grouped by observable, k free parameters.
 double bic(const std::vector<Evaluator::Entry>& entries, const std::vector<double>& residuals,
            int observables, int k);
 
 struct CrossValidation {
   int folds = 0;
+  bool one_step = false;          ///< folds re-fitted by one Gauss-Newton step (large_fit.h)
   int evaluations = 0;            ///< model evaluations (all rows of a fold each)
   std::vector<double> residuals;  ///< held-out relative residual per entry of all rows
   std::vector<Evaluator::Entry> entries;

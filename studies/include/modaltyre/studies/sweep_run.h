@@ -19,6 +19,9 @@ struct SweepRow {
   double vertical_stiffness_N_mm = 0;  ///< applied load / sinking
   double peak_pressure_kPa = 0;
   int iterations = 0;
+  /// ok rows: inside the model's validity range (contact/validity.h); if not, the message says
+  /// why instead of the solver's note.
+  bool valid = true;
   /// ok: the solver's note ("converged in N active-set iterations"), never empty so that the
   /// CSV reads back as measured data; failed: the reason.
   std::string message;
@@ -45,7 +48,8 @@ struct SweepOptions {
 struct SweepResult {
   std::vector<SweepRow> rows;  ///< one per case, in plan order
   std::size_t failed = 0;
-  int threads = 1;  ///< threads actually used
+  std::size_t invalid = 0;  ///< ok rows outside the validity range
+  int threads = 1;          ///< threads actually used
 };
 
 /// Runs every case: contact::predict(model, case conditions) on one immutable model per distinct

@@ -1,0 +1,53 @@
+// The discrepancy workflow on a measured test matrix of N rows (issue 16: a 1000-row matrix
+// must cost less than a minute): loads x pressures x hold times, sinking and length with 1.5 %
+// noise, generated on the 2 mm mesh with a creeping tread and the pressure effect hidden;
+// discover names both. Above 64 rows it uses the approximations of discover/large_fit.h.
+//   build/bench/discover_bench --benchmark_repetitions=3
+#include <benchmark/benchmark.h>
+#include <malloc.h>
+
+#include <string>
+
+#include "modaltyre/discover/discover.h"
+#include "test_matrix.h"
+
+namespace {
+
+using namespace modaltyre;
+
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+
+void BM_DiscoverTestMatrix(benchmark::State& state) {
+  const int rows = static_cast<int>(state.range(0));
+  const auto cfg = contact::load_tyre_config(kConfig, {"contact.unit_length_mm=2"});
+  const int holds = rows >= 1000 ? 10 : 5;
+  const int pressures = rows >= 1000 ? 5 : 2;
+  const auto data = bench::test_matrix(cfg, rows / (holds * pressures), pressures, holds);
+  discover::DiscoverReport r;
+  for (auto _ : state) {
+    r = discover::discover(contact::load_tyre_config(kConfig), data);
+    benchmark::DoNotOptimize(r);
+  }
+  state.counters["rows"] = static_cast<double>(data.rows.size());
+  state.counters["named"] = static_cast<double>(r.effects.size());
+  state.counters["footprints"] = static_cast<double>(r.footprints);
+}
+BENCHMARK(BM_DiscoverTestMatrix)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // As the CLI does (app/main.cc): keep freed matrices in the heap instead of page-faulting
+  // them back on every footprint.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

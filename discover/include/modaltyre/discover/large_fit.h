@@ -1,0 +1,63 @@
+#pragma once
+// Fitting and cross-validating a model variant on many rows at an affordable cost.
+//
+// The exact procedure (model_fit.h: a multi-start search, then Levenberg-Marquardt, then one
+// re-fit per cross-validation fold) evaluates the model ~350 times per candidate, each on every
+// row: minutes for a test matrix of a few hundred rows. Above `exact_rows` rows two
+// approximations take its place (docs/discover.md, "Many rows", checks them against the exact
+// computation):
+//
+//  - Fit: the search runs on an evenly spread subset of the rows (farthest-point sampling in
+//    the rank-scaled condition space), then finishes on all rows by Gauss-Newton steps with the
+//    central-difference Jacobian of all rows at the subset's optimum (chord steps, each accepted
+//    only when it lowers the cost). Standard errors use the same Jacobian.
+//  - Cross-validation: the same 6 folds (rows i mod 6), each fold's re-fit replaced by one
+//    Gauss-Newton step from the full fit on its training rows (the influence approximation of
+//    the refit), and its held-out rows predicted exactly with the stepped parameters.
+//
+// Up to `exact_rows` rows, fit_and_cross_validate() is the exact procedure, bit for bit.
+#include <functional>
+#include <vector>
+
+#include "modaltyre/discover/model_fit.h"
+
+namespace modaltyre::discover {
+
+struct FitOptions {
+  int exact_rows = 64;   ///< up to this many rows: the exact procedure
+  int subset_rows = 40;  ///< rows of the search subset above it (at least 4 per parameter)
+  int max_chord_steps = 6;
+};
+
+/// `rows` of the data, up to `count` of them spread evenly over the conditions that vary and
+/// over which observables each row measures: greedy farthest-point sampling where every
+/// condition is scaled by the rank of its value among the distinct values (0..1), so that the
+/// levels of a test matrix count alike however they are spaced. Deterministic; sorted.
+std::vector<int> spread_subset(const studies::MeasurementSet& data, const std::vector<int>& rows,
+                               int count);
+
+struct FitAndCv {
+  FitResult fit;
+  CrossValidation cv;
+};
+
+/// A variant's fit on all rows with standard errors, and its cross-validation: exact up to
+/// options.exact_rows rows, else the approximations above. `tick` (optional) is called once
+/// after the fit and once after the cross-validation.
+FitAndCv fit_and_cross_validate(const Evaluator& ev, const contact::TyreConfig& base,
+                                const Variant& v, const FitOptions& options = {},
+                                const std::function<void()>& tick = nullptr);
+
+/// The approximate fit on `rows` (subset search, chord Gauss-Newton finish on all of `rows`);
+/// `jacobian_search` receives the Jacobian of fit.entries in the search variables.
+FitResult fit_variant_many_rows(const Evaluator& ev, const contact::TyreConfig& base,
+                                const Variant& v, const std::vector<int>& rows,
+                                const FitOptions& options, Eigen::MatrixXd* jacobian_search);
+
+/// The one-step cross-validation of a fit on all rows (`jacobian_search` of its entries in the
+/// search variables, as fit_variant_many_rows() gives it).
+CrossValidation cross_validate_one_step(const Evaluator& ev, const contact::TyreConfig& base,
+                                        const Variant& v, const FitResult& full,
+                                        const Eigen::MatrixXd& jacobian_search);
+
+}  // namespace modaltyre::discover

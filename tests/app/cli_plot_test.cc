@@ -1,0 +1,137 @@
+// What the plots show (issue 16 item 9): each command's figure is checked in the gnuplot script
+// it sends, captured by a stand-in `gnuplot` first on the PATH (it answers with an empty SVG).
+// Transient panels do not stretch numerical noise into a signal, fit-modes panels are symmetric
+// about zero, validate draws width when it is measured, and discover's panels label their %
+// axis and leave out an observable the model reproduces exactly.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using modaltyre_test::CliRun;
+using modaltyre_test::quote;
+
+const std::string kSrc = MODALTYRE_SOURCE_DIR;
+const std::string kConfig = kSrc + "/configs/sf350_2d_table3.yaml";
+const std::string kTable3 = kSrc + "/configs/data/sf350_footprint_table3.csv";
+
+struct Panel {
+  std::string title, ylabel;
+  bool fixed_y = false;
+  double ymin = 0, ymax = 0;
+};
+
+class PlotCli : public modaltyre_test::CliFixture {
+ protected:
+  // Runs the CLI with the stand-in gnuplot; returns the panels of the script it received.
+  std::vector<Panel> plot(const std::vector<std::string>& args, CliRun* run_out = nullptr) {
+    const fs::path bin = dir_ / "bin", script = dir_ / "script.gp";
+    fs::create_directories(bin);
+    const fs::path fake = bin / "gnuplot";
+    std::ofstream(fake) << "#!/bin/sh\ncat > " << quote(script.string())
+                        << "\nprintf '<svg xmlns=\"http://www.w3.org/2000/svg\"></svg>\\n'\n";
+    fs::permissions(fake, fs::perms::owner_all);
+    std::string cmd = "PATH=" + quote(bin.string()) + ":\"$PATH\" " + quote(MODALTYRE_CLI);
+    for (const auto& a : args) cmd += " " + quote(a);
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    cmd += " >" + quote(out.string()) + " 2>" + quote(err.string());
+    const int status = std::system(cmd.c_str());
+    CliRun r;
+    if (status != -1 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+    r.out = modaltyre_test::slurp(out);
+    r.err = modaltyre_test::slurp(err);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    if (run_out) *run_out = r;
+    std::vector<Panel> panels;
+    std::ifstream in(script);
+    std::string line;
+    auto quoted = [](const std::string& l) {
+      const auto a = l.find('\''), b = l.rfind('\'');
+      return a == std::string::npos || b <= a ? std::string() : l.substr(a + 1, b - a - 1);
+    };
+    while (std::getline(in, line)) {
+      if (line.rfind("set title ", 0) == 0) {
+        panels.emplace_back();
+        panels.back().title = quoted(line);
+      }
+      if (panels.empty()) continue;
+      if (line.rfind("set ylabel ", 0) == 0) panels.back().ylabel = quoted(line);
+      if (line.rfind("set yrange [", 0) == 0) {
+        panels.back().fixed_y = true;
+        const auto colon = line.find(':');
+        panels.back().ymin = std::stod(line.substr(12, colon - 12));
+        panels.back().ymax = std::stod(line.substr(colon + 1));
+      }
+    }
+    return panels;
+  }
+};
+
+// While the load is held the longitudinal force is 0 up to solver noise (~1e-11 N): its panel
+// spans at least 1 % of the load instead of auto-scaling the noise to the panel's height.
+TEST_F(PlotCli, TransientNoiseIsDrawnFlatNotAutoScaled) {
+  const auto panels = plot({"transient", kConfig, "--scenario", "load-hold", "--set",
+                            "transient.load_hold.hold_s=1", "--plot", (dir_ / "t.svg").string()});
+  ASSERT_EQ(panels.size(), 4u);
+  const Panel& fx = panels[3];
+  EXPECT_NE(fx.title.find("longitudinal force"), std::string::npos) << fx.title;
+  ASSERT_TRUE(fx.fixed_y);
+  EXPECT_GE(fx.ymax - fx.ymin, 10.0);  // 1 % of a load of some kN
+  EXPECT_LE(fx.ymin, 0.0);
+  EXPECT_GE(fx.ymax, 0.0);
+  // The load itself varies (ramp, hold): auto-scaled.
+  EXPECT_FALSE(panels[0].fixed_y);
+}
+
+TEST_F(PlotCli, FitModesPanelsAreSymmetricAboutZero) {
+  const auto panels = plot({"fit-modes", kSrc + "/configs/data/sf350_hammer_12pt.csv", "--plot",
+                            (dir_ / "m.svg").string()});
+  ASSERT_GE(panels.size(), 3u);
+  for (const auto& p : panels) {
+    ASSERT_TRUE(p.fixed_y) << p.title;
+    EXPECT_GT(p.ymax, 0) << p.title;
+    EXPECT_DOUBLE_EQ(p.ymin, -p.ymax) << p.title;
+  }
+}
+
+TEST_F(PlotCli, ValidateDrawsWidthWhenItIsMeasured) {
+  auto panels = plot({"validate", kConfig, kTable3, "--plot", (dir_ / "v.svg").string()});
+  ASSERT_EQ(panels.size(), 3u);
+  EXPECT_EQ(panels[2].title, "Contact width versus load");
+  EXPECT_EQ(panels[2].ylabel, "contact width [mm]");
+  const std::string no_width = (dir_ / "no_width.csv").string();
+  std::ofstream(no_width) << "load_N,sinking_mm,length_mm\n2131,8,86\n5478,20,117\n8321,29,135\n";
+  panels = plot({"validate", kConfig, no_width, "--set", "validation.calibrate=[]", "--plot",
+                 (dir_ / "v2.svg").string()});
+  ASSERT_EQ(panels.size(), 2u);
+  for (const auto& p : panels) EXPECT_EQ(p.title.find("width"), std::string::npos) << p.title;
+}
+
+// discover's panels show relative residuals in %: the title names the observable without a
+// unit, and a width equal to the config's on every row (a residual of 0) gets no panel. Its
+// candidate table says what its CV column is.
+TEST_F(PlotCli, DiscoverPanelsLabelThePercentAxisAndSkipAnAllZeroObservable) {
+  const std::string data = (dir_ / "same_width.csv").string();
+  std::ofstream(data) << "load_N,sinking_mm,width_mm\n2131,8,130\n3261,12,130\n5478,20,130\n"
+                         "6502,23,130\n7322,26,130\n8321,29,130\n";
+  CliRun r;
+  const auto panels = plot({"discover", kConfig, data, "--plot", (dir_ / "d.svg").string()}, &r);
+  ASSERT_EQ(panels.size(), 1u);
+  EXPECT_EQ(panels[0].title.rfind("sinking: ", 0), 0u) << panels[0].title;
+  EXPECT_EQ(panels[0].title.find("[mm]"), std::string::npos) << panels[0].title;
+  EXPECT_NE(panels[0].ylabel.find("[%]"), std::string::npos) << panels[0].ylabel;
+  EXPECT_NE(r.out.find("CV = cross-validated RMS of the relative residual, pooled over "
+                       "sinking_mm and width_mm"),
+            std::string::npos)
+      << r.out;
+}
+
+}  // namespace
