@@ -77,7 +77,8 @@ nlohmann::json comparison_json(const tir::TirComparison& c) {
             {"width_mm", opt(t.width_m, 1e3)},
             {"fnomin_N", round_sig(t.vertical.fnomin_N, 6)},
             {"vertical_stiffness_N_per_mm", round_sig(t.vertical_stiffness_N_m() * 1e-3, 6)},
-            {"vertical_law", t.vertical_source}}},
+            {"vertical_law", t.vertical_source},
+            {"notes", t.notes}}},
           {"model", {{"fnomin_N", round_sig(c.model_fnomin_N, 6)}}},
           {"dimensionless", c.dimensionless},
           {"basis", c.basis},
@@ -94,7 +95,9 @@ void print_comparison(const tir::TirComparison& c) {
             << " mm, FNOMIN " << fixed(t.vertical.fnomin_N, 0) << " N, C_z "
             << fixed(t.vertical_stiffness_N_m() * 1e-3, 2)
             << " N/mm; vertical law: " << t.vertical_source << "\n"
-            << c.basis << "; the model's FNOMIN " << fixed(c.model_fnomin_N, 0) << " N\n\n"
+            << c.basis << "; the model's FNOMIN " << fixed(c.model_fnomin_N, 0) << " N\n";
+  for (const auto& n : t.notes) std::cout << "note: " << n << "\n";
+  std::cout << "\n"
             << "  rho_mm    load_N  tir_load_N  length_mm  tir_length_mm  width_mm  tir_width_mm\n";
   const auto cell = [](const std::optional<double>& v, double scale, int w, int d) {
     const std::string s = v ? fixed(*v * scale, d) : "-";

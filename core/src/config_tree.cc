@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "modaltyre/core/csv.h"
+#include "modaltyre/core/input_file.h"
 #include "modaltyre/core/yaml_guard.h"
 
 namespace modaltyre {
@@ -44,8 +45,8 @@ void apply_override(ConfigTree::State& st, const std::string& assignment) {
   st.overridden.insert(key);
 }
 
-void init_state(YAML::Node root, const std::string& name,
-                const std::vector<std::string>& overrides, ConfigTree::State* st) {
+void init_state(YAML::Node root, const std::string& name, const std::vector<std::string>& overrides,
+                ConfigTree::State* st) {
   if (!root || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   if (!root.IsMap()) throw InputError({name, 1, ""}, "top level must be a mapping of keys");
   st->file = name;
@@ -84,28 +85,9 @@ void collect_unconsumed(const ConfigTree::State& st, const YAML::Node& node,
 }  // namespace
 
 std::string read_yaml_file(const std::string& path, const std::string& what) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError({path, 0, ""}, "file not found");
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError({path, 0, ""}, "is a directory, not " + what);
-  }
-  // A named pipe or device would block the read (or never end); a config is a few kB, so a
-  // file of megabytes is the wrong file, not a config to parse into memory.
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw InputError({path, 0, ""}, "is not a regular file (a pipe or device?)");
-  }
+  // A config is a few kB: a file of megabytes is the wrong file, not a config to parse.
   constexpr std::uintmax_t kMaxConfigBytes = 16u << 20;
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kMaxConfigBytes) {
-    throw InputError({path, 0, ""}, "is " + std::to_string(size >> 20) +
-                                        " MB; refusing YAML files over 16 MB (is it the right "
-                                        "file?)");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, ""}, "cannot open file for reading");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return buf.str();
+  return read_input_file(path, what, "YAML files", kMaxConfigBytes);
 }
 
 ConfigTree ConfigTree::load(const std::string& path, const std::vector<std::string>& overrides) {

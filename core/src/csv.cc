@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/input_file.h"
 
 namespace modaltyre {
 namespace {
@@ -135,22 +136,8 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
 
-std::string file_size_text(std::uintmax_t bytes) {
-  if (bytes < (1u << 20)) return std::to_string(bytes) + " bytes";
-  return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MB";
-}
-
-// Refuses what is not a readable regular file, before anything is read from it.
-void check_is_regular_file(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto st = fs::status(path, ec);
-  if (!fs::exists(st)) throw InputError({path, 0, ""}, "file not found");
-  if (fs::is_directory(st)) throw InputError({path, 0, ""}, "is a directory, not a CSV file");
-  // A named pipe or device would block the read (or never end): refuse it.
-  if (!fs::is_regular_file(st)) {
-    throw InputError({path, 0, ""}, "is not a regular file (a pipe or device?)");
-  }
+void check_csv_file(const std::string& path, std::uintmax_t max_bytes) {
+  check_input_file(path, "a CSV file", "CSV files", max_bytes);
 }
 
 // The next line that is neither blank nor a comment, trimmed; false at the end of the file.
@@ -221,15 +208,7 @@ const std::string& CsvTable::text(std::size_t row, const std::string& column) co
 }
 
 CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
-  namespace fs = std::filesystem;
-  check_is_regular_file(path);
-  std::error_code ec;
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (!ec && size > schema.max_bytes) {
-    throw InputError({path, 0, ""}, "is " + file_size_text(size) + "; refusing CSV files over " +
-                                        file_size_text(schema.max_bytes) +
-                                        " (is it the right file?)");
-  }
+  check_csv_file(path, schema.max_bytes);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, ""}, "cannot open file for reading");
 
@@ -340,9 +319,7 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
 
 std::vector<std::string> read_csv_header(const std::string& path) {
   try {
-    check_is_regular_file(path);
-    std::error_code ec;
-    if (std::filesystem::file_size(path, ec) > CsvSchema{}.max_bytes || ec) return {};
+    check_csv_file(path, CsvSchema{}.max_bytes);
     std::ifstream in(path, std::ios::binary);
     std::string line;
     int line_no = 0;

@@ -5,13 +5,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <optional>
 #include <sstream>
 
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/input_file.h"
 
 namespace modaltyre::ema {
 namespace {
@@ -115,22 +114,7 @@ class Reader {
     throw InputError({path_, line, field}, message);
   }
 
-  void load() {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (!fs::is_regular_file(path_, ec)) fail(0, "", "is not a readable regular file");
-    const auto size = fs::file_size(path_, ec);
-    if (ec || size > limits_.max_bytes) {
-      fail(0, "",
-           "is larger than " + std::to_string(limits_.max_bytes >> 20) +
-               " MB; refusing (is it the right file?)");
-    }
-    std::ifstream in(path_, std::ios::binary);
-    if (!in) fail(0, "", "cannot open file for reading");
-    std::ostringstream s;
-    s << in.rdbuf();
-    text_ = s.str();
-  }
+  void load() { text_ = read_input_file(path_, "a UFF file", "UFF files", limits_.max_bytes); }
 
   bool next_line(std::string& out) {
     if (pos_ >= text_.size()) return false;

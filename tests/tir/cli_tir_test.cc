@@ -14,6 +14,7 @@ namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+const std::string kConfig3d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
 const std::string kData = std::string(MODALTYRE_SOURCE_DIR) + "/tests/data/tir/";
 
 class TirCli : public modaltyre_test::CliFixture {};
@@ -52,6 +53,66 @@ TEST_F(TirCli, OtherTyreSizeIsComparedDimensionless) {
   const CliRun c = run({"tir", "compare", kConfig, kData + "mfswift62_mm_kN.tir", "--points", "4"});
   ASSERT_EQ(c.exit_code, 0) << c.err;
   EXPECT_NE(c.out.find("dimensionless"), std::string::npos) << c.out;
+}
+
+// Public files of other tyres (tests/data/tir/README.md): each is read and compared in
+// dimensionless form, with the quantities its laws carry.
+struct PublicFile {
+  const char* name;
+  const char* file;
+  bool has_length_law;  ///< Q_RA1/Q_RA2 (MF 6.x)
+  bool has_width_law;   ///< Q_RB1/Q_RB2 and WIDTH
+  const char* vertical_law;
+};
+
+class TirCliPublic : public modaltyre_test::CliFixture,
+                     public ::testing::WithParamInterface<PublicFile> {};
+
+TEST_P(TirCliPublic, ComparedDimensionless) {
+  const PublicFile& p = GetParam();
+  const CliRun c = run({"tir", "compare", kConfig3d, kData + p.file, "--json", "--points", "4"});
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  const auto j = nlohmann::json::parse(c.out);
+  EXPECT_TRUE(j["dimensionless"].get<bool>()) << j["basis"];
+  EXPECT_NE(j["tir"]["vertical_law"].get<std::string>().find(p.vertical_law), std::string::npos)
+      << j["tir"]["vertical_law"];
+  ASSERT_EQ(j["rows"].size(), 4u);
+  // The model's own load at each deflection, and the file's at least at the lightest one.
+  EXPECT_GT(j["rows"][0]["load_N"].get<double>(), 0);
+  EXPECT_GT(j["rows"][0]["tir_load_N"].get<double>(), 0);
+  EXPECT_TRUE(j["rms_rel_diff"]["load"].is_number());
+  EXPECT_EQ(j["rms_rel_diff"]["length"].is_number(), p.has_length_law);
+  EXPECT_EQ(j["rms_rel_diff"]["width"].is_number(), p.has_width_law);
+  if (!p.has_length_law) {
+    EXPECT_NE(j["reasons"]["length"], "");
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Files, TirCliPublic,
+    ::testing::Values(PublicFile{"ChronoFedaMf05", "chrono_feda_335_65R22_5_40psi_mf05.tir", false,
+                                 false, "[DEFLECTION_LOAD_CURVE] table (3 points)"},
+                      PublicFile{"ChronoFedaPac2002", "chrono_feda_335_65R22_5_60psi_pac2002.tir",
+                                 false, false, "[DEFLECTION_LOAD_CURVE] table (21 points)"},
+                      PublicFile{"ChronoVwPac2002", "chrono_vw_microbus_185_80R14_pac2002.tir",
+                                 false, false, "VERTICAL_STIFFNESS"},
+                      PublicFile{"ChronoGenericMf52", "chrono_generic_mf52.tir", false, false,
+                                 "VERTICAL_STIFFNESS"},
+                      PublicFile{"ChronoGenericMf61", "chrono_generic_mf61.tir", true, true,
+                                 "VERTICAL_STIFFNESS, Q_FZ2, PFZ1"},
+                      PublicFile{"ChronoGenericMf62", "chrono_generic_mf62.tir", true, true,
+                                 "VERTICAL_STIFFNESS, Q_FZ2, PFZ1"}),
+    [](const ::testing::TestParamInfo<PublicFile>& info) { return info.param.name; });
+
+// The Goodyear file repeats [DEFLECTION_LOAD_CURVE]: the first (21 rows) is used, and said so.
+TEST_F(TirCli, RepeatedSectionIsNoted) {
+  const CliRun c =
+      run({"tir", "compare", kConfig3d, kData + "chrono_feda_335_65R22_5_60psi_pac2002.tir"});
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_NE(c.out.find("pac2002.tir:261: section [DEFLECTION_LOAD_CURVE] given again (first on "
+                       "line 90); the first is used"),
+            std::string::npos)
+      << c.out;
 }
 
 struct Refusal {

@@ -71,6 +71,34 @@ TEST(TirReader, UnitsConvertToSi) {
   EXPECT_FALSE(read_units(parse_tir("[MODEL]\n", "mem.tir")).stated);
 }
 
+// Goodyear's files in Project Chrono repeat [DEFLECTION_LOAD_CURVE] at their end
+// (tests/data/tir/chrono_feda_*): the first is used, as Chrono's reader uses it, with a note.
+TEST(TirReader, RepeatedSectionKeepsTheFirstWithANote) {
+  const TirFile f = parse_tir(
+      "[DEFLECTION_LOAD_CURVE]\n{pen fz}\n0 0\n0.01 1000\n[VERTICAL]\nFNOMIN = 900\n"
+      "[deflection_load_curve]\n{pen fz}\n0 0\n0.02 1000\n0.03 2000\n",
+      "rep.tir");
+  EXPECT_EQ(f.sections.size(), 3u);
+  ASSERT_EQ(f.section("DEFLECTION_LOAD_CURVE")->table.rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(f.section("DEFLECTION_LOAD_CURVE")->table.rows[1][0], 0.01);
+  ASSERT_EQ(f.notes.size(), 1u);
+  EXPECT_NE(f.notes[0].find("rep.tir:7: section [DEFLECTION_LOAD_CURVE] given again (first on "
+                            "line 1); the first is used"),
+            std::string::npos)
+      << f.notes[0];
+}
+
+// `KEY =` with nothing after it: a parameter its writer left unset (MATLAB tyre libraries write
+// every MF 6.1 key so), kept and read as absent.
+TEST(TirReader, EmptyValueIsAbsent) {
+  const TirFile f = parse_tir("[DIMENSION]\nWIDTH =\nUNLOADED_RADIUS = 0.3\nTAG = ''\n", "e.tir");
+  EXPECT_EQ(f.section("DIMENSION")->entries.count("WIDTH"), 1u);
+  EXPECT_EQ(f.value("DIMENSION", "WIDTH"), nullptr);
+  EXPECT_DOUBLE_EQ(*f.value("DIMENSION", "UNLOADED_RADIUS")->number, 0.3);
+  ASSERT_NE(f.value("DIMENSION", "TAG"), nullptr);  // an empty quoted string is a value
+  EXPECT_EQ(f.value("DIMENSION", "TAG")->text, "");
+}
+
 struct BadTir {
   const char* name;
   const char* text;
@@ -101,9 +129,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadTir{"UnterminatedQuote", "[A]\nK = 'abc\n", 2, "A.K", "unterminated"},
         BadTir{"TextAfterQuote", "[A]\nK = 'abc' def\n", 2, "A.K", "after the closing quote"},
         BadTir{"DuplicateKey", "[A]\nK = 1\nk = 2\n", 3, "A.K", "given twice"},
-        BadTir{"DuplicateSection", "[A]\n[B]\n[a]\n", 3, "A", "given twice"},
         BadTir{"KeyBeforeSection", "K = 1\n", 1, "", "before the first [SECTION]"},
-        BadTir{"EmptyValue", "[A]\nK =\n", 2, "A.K", "no value"},
+        BadTir{"BadKeyInRepeatedSection", "[A]\nK = 1\n[A]\nK = 1\nK = 2\n", 5, "A.K",
+               "given twice"},
         BadTir{"Infinite", "[A]\nK = 1e999\n", 2, "A.K", "not a finite number"},
         BadTir{"NotANumberWord", "[A]\nK = two words\n", 2, "A.K", "one word"},
         BadTir{"BadSectionName", "[A B]\n", 1, "", "not a section name"},

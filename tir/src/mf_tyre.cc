@@ -172,8 +172,13 @@ void read_vertical(const TirFile& f, const Reader& r, MfTyre& t) {
     }
     v.vertical_stiffness_N_m = *stiffness;
     v.q_fz1 = *q1;
-    if (!t.table_law)
-      t.vertical_source = "VERTICAL_STIFFNESS, Q_FZ2, PFZ1 (Pacejka 2012 A3.3-A3.5)";
+    if (!t.table_law) {
+      // Name only the keys the file gives: without Q_FZ2 the law is linear.
+      t.vertical_source = std::string("VERTICAL_STIFFNESS") +
+                          (f.value("VERTICAL", "Q_FZ2") ? ", Q_FZ2" : " (linear: no Q_FZ2)") +
+                          (f.value("VERTICAL", "PFZ1") ? ", PFZ1" : "") +
+                          " (Pacejka 2012 A3.3-A3.5)";
+    }
   } else if (q_fz1) {
     const auto cz = stiffness_from_q_fz(*q_fz1, v.q_fz2, v.unloaded_radius_m, v.fnomin_N);
     if (!cz) r.fail("VERTICAL", "Q_FZ2", "Q_FZ1 and Q_FZ2 give no positive stiffness at FNOMIN");
@@ -257,6 +262,7 @@ std::optional<double> MfTyre::width_at_m(double load) const {
 MfTyre interpret_tir(const TirFile& file) {
   MfTyre t;
   t.path = file.path;
+  t.notes = file.notes;
   identify_model(file, t);
   const Reader r(file);
   t.units = r.units();

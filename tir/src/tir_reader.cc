@@ -3,12 +3,11 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/input_file.h"
 #include "modaltyre/tir/tir_file.h"
 
 namespace modaltyre::tir {
@@ -69,6 +68,8 @@ std::string strip_comment(const std::string& line, std::string* comment) {
   return line;
 }
 
+constexpr std::size_t kMaxNotes = 100;
+
 class Parser {
  public:
   Parser(const std::string& name, const TirLimits& limits) : limits_(limits) { file_.path = name; }
@@ -111,10 +112,15 @@ class Parser {
     if (!is_name(name)) {
       fail("", "'" + printable(content) + "' is not a section name (letters, digits, '_')");
     }
+    // A section given twice: the first is the one used, as Project Chrono's reader (a linear
+    // search from the top of the file) uses it; Goodyear's files for Chrono repeat
+    // [DEFLECTION_LOAD_CURVE] at their end. The repeat is still read (and checked), then ignored.
     for (const auto& s : file_.sections) {
-      if (s.name == name) {
-        fail(name,
-             "section [" + name + "] given twice (first on line " + std::to_string(s.line) + ")");
+      if (s.name == name && file_.notes.size() < kMaxNotes) {
+        file_.notes.push_back(file_.path + ":" + std::to_string(no_) + ": section [" + name +
+                              "] given again (first on line " + std::to_string(s.line) +
+                              "); the first is used");
+        break;
       }
     }
     if (file_.sections.size() >= limits_.max_sections) {
@@ -161,7 +167,7 @@ class Parser {
   TirValue value(const std::string& v, const std::string& key) const {
     TirValue out;
     out.line = no_;
-    if (v.empty()) fail(key, "no value after '='");
+    if (v.empty()) return out;  // `KEY =`: written for a parameter that is not set
     if (v[0] == '\'' || v[0] == '"') {
       const std::size_t close = v.find(v[0], 1);
       if (close == std::string::npos) fail(key, "unterminated quoted string");
@@ -236,7 +242,9 @@ const TirValue* TirFile::value(const std::string& section_name, const std::strin
   const TirSection* s = section(section_name);
   if (!s) return nullptr;
   const auto it = s->entries.find(key);
-  return it == s->entries.end() ? nullptr : &it->second;
+  // `KEY =` is a parameter the writer left unset: the same as no key for whoever asks for it.
+  if (it == s->entries.end() || (it->second.text.empty() && !it->second.quoted)) return nullptr;
+  return &it->second;
 }
 
 TirFile parse_tir(const std::string& text, const std::string& name, const TirLimits& limits) {
@@ -262,25 +270,8 @@ TirFile parse_tir(const std::string& text, const std::string& name, const TirLim
 }
 
 TirFile read_tir(const std::string& path, const TirLimits& limits) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const auto st = fs::status(path, ec);
-  if (!fs::exists(st)) throw InputError({path, 0, ""}, "file not found");
-  if (fs::is_directory(st)) throw InputError({path, 0, ""}, "is a directory, not a .tir file");
-  if (!fs::is_regular_file(st)) {
-    throw InputError({path, 0, ""}, "is not a regular file (a pipe or device?)");
-  }
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (!ec && size > limits.max_bytes) {
-    throw InputError({path, 0, ""}, "is " + std::to_string(size >> 20) +
-                                        " MB; refusing .tir files over " +
-                                        std::to_string(limits.max_bytes >> 20) + " MB");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({path, 0, ""}, "cannot open file for reading");
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return parse_tir(buf.str(), path, limits);
+  return parse_tir(read_input_file(path, "a .tir file", ".tir files", limits.max_bytes), path,
+                   limits);
 }
 
 }  // namespace modaltyre::tir

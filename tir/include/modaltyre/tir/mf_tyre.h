@@ -21,8 +21,9 @@ namespace modaltyre::tir {
 
 struct MfTyre {
   std::string path;
-  int fittyp = 0;          ///< [MODEL] FITTYP, 0 when the file has none
-  std::string model_name;  ///< e.g. "MF-Tyre 6.2 (FITTYP 62)", "PAC2002"
+  int fittyp = 0;                  ///< [MODEL] FITTYP, 0 when the file has none
+  std::vector<std::string> notes;  ///< the reader's notes (TirFile::notes)
+  std::string model_name;          ///< e.g. "MF-Tyre 6.2 (FITTYP 62)", "PAC2002"
   TirUnits units;
   double unloaded_radius_m = 0;   ///< UNLOADED_RADIUS
   std::optional<double> width_m;  ///< WIDTH, nominal section width

@@ -11,8 +11,10 @@
 //   {col1 col2 ...}  names the columns of a table section such as [DEFLECTION_LOAD_CURVE]
 //   1.0  2.0 ...     a table row (numbers only), with or without a {...} header
 // Section and key names are compared case-insensitively (stored upper-case). Sections and keys
-// the bridge does not use are kept, not rejected. A key or a section given twice is refused
-// (which value would a simulator take?), as is a key outside any section.
+// the bridge does not use are kept, not rejected. A key given twice in a section is refused
+// (which value would a simulator take?), as is a key outside any section; a section given twice
+// is read, and the first one is used (as Project Chrono's reader does), with a note. `KEY =` with
+// nothing after it (written by some tools for a parameter that is not set) has no value.
 //
 // Every problem is an InputError naming the file, the line and the key (SECTION.KEY); sizes are
 // bounded (TirLimits). The reader knows nothing about which tyre model a file holds: mf_tyre.h
@@ -35,7 +37,7 @@ struct TirLimits {
 };
 
 struct TirValue {
-  std::string text;              ///< as written (quotes removed for strings)
+  std::string text;              ///< as written (quotes removed); empty for `KEY =`
   std::optional<double> number;  ///< set when the value is a finite number
   bool quoted = false;
   int line = 0;
@@ -57,11 +59,14 @@ struct TirSection {
 
 struct TirFile {
   std::string path;                  ///< as given, for messages
-  std::vector<TirSection> sections;  ///< in file order
+  std::vector<TirSection> sections;  ///< in file order (a repeated section after its first)
   /// Every comment's text (without '$'/'!'), for recognising files by their header lines.
   std::vector<std::string> comments;
+  /// What the reader accepted but a user should know ("file:line: ..."), e.g. a repeated section.
+  std::vector<std::string> notes;
 
   const TirSection* section(const std::string& name) const;
+  /// SECTION.KEY in the first [SECTION]; nullptr when absent or written `KEY =` (no value).
   const TirValue* value(const std::string& section, const std::string& key) const;
 };
 
