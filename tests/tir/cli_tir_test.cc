@@ -101,8 +101,21 @@ INSTANTIATE_TEST_SUITE_P(
                       PublicFile{"ChronoGenericMf61", "chrono_generic_mf61.tir", true, true,
                                  "VERTICAL_STIFFNESS, Q_FZ2, PFZ1"},
                       PublicFile{"ChronoGenericMf62", "chrono_generic_mf62.tir", true, true,
+                                 "VERTICAL_STIFFNESS, Q_FZ2, PFZ1"},
+                      PublicFile{"TyreDynCarMf62", "tyredyn_car205_60R19_mf62.tir", true, true,
+                                 "VERTICAL_STIFFNESS, Q_FZ2, PFZ1"},
+                      PublicFile{"TyreDynTruckMf62", "tyredyn_truck430_50R38_mf62.tir", true, false,
                                  "VERTICAL_STIFFNESS, Q_FZ2, PFZ1"}),
     [](const ::testing::TestParamInfo<PublicFile>& info) { return info.param.name; });
+
+// The truck file has Q_RB1 without Q_RB2: the width is null, and the reason names the missing key.
+TEST_F(TirCli, HalfAWidthLawSaysWhichKeyIsMissing) {
+  const CliRun c = run({"tir", "compare", kConfig3d, kData + "tyredyn_truck430_50R38_mf62.tir"});
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_NE(c.out.find("width   null: the file has [CONTACT_PATCH] Q_RB1 but no Q_RB2"),
+            std::string::npos)
+      << c.out;
+}
 
 // The Goodyear file repeats [DEFLECTION_LOAD_CURVE]: the first (21 rows) is used, and said so.
 TEST_F(TirCli, RepeatedSectionIsNoted) {

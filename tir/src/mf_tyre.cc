@@ -197,13 +197,19 @@ void read_patch(const Reader& r, MfTyre& t) {
   t.q_ra2 = r.number("CONTACT_PATCH", "Q_RA2", Dimension::none, -1e3, 1e3, "");
   t.q_rb1 = r.number("CONTACT_PATCH", "Q_RB1", Dimension::none, -1e3, 1e3, "");
   t.q_rb2 = r.number("CONTACT_PATCH", "Q_RB2", Dimension::none, -1e3, 1e3, "");
+  // Which of a pair is missing: "no Q_RA1 and Q_RA2", or "Q_RB1 but no Q_RB2".
+  const auto missing = [](const std::optional<double>& a, const std::optional<double>& b,
+                          const std::string& na, const std::string& nb) {
+    if (!a && !b) return "the file has no [CONTACT_PATCH] " + na + " and " + nb;
+    return "the file has [CONTACT_PATCH] " + (a ? na : nb) + " but no " + (a ? nb : na);
+  };
   if (!t.q_ra1 || !t.q_ra2) {
-    t.length_reason = "the file has no [CONTACT_PATCH] Q_RA1 and Q_RA2 (the MF 6.x length law)";
+    t.length_reason = missing(t.q_ra1, t.q_ra2, "Q_RA1", "Q_RA2") + " (the MF 6.x length law)";
     t.q_ra1.reset();
     t.q_ra2.reset();
   }
   if (!t.q_rb1 || !t.q_rb2) {
-    t.width_reason = "the file has no [CONTACT_PATCH] Q_RB1 and Q_RB2 (the MF 6.x width law)";
+    t.width_reason = missing(t.q_rb1, t.q_rb2, "Q_RB1", "Q_RB2") + " (the MF 6.x width law)";
     t.q_rb1.reset();
     t.q_rb2.reset();
   } else if (!t.width_m) {
