@@ -65,6 +65,8 @@ struct PublicFile {
   const char* vertical_law;
 };
 
+void PrintTo(const PublicFile& c, std::ostream* os) { *os << c.name; }
+
 class TirCliPublic : public modaltyre_test::CliFixture,
                      public ::testing::WithParamInterface<PublicFile> {};
 
