@@ -16,6 +16,7 @@
 
 #include "cli_support.h"
 #include "commands.h"
+#include "discover_limits.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
@@ -41,11 +42,6 @@ struct DiscoverArgs {
   int exact_rows = 64;
 };
 
-nlohmann::json gaps(const std::map<std::string, double>& m) {
-  nlohmann::json j = nlohmann::json::object();
-  for (const auto& kv : m) j[kv.first] = round_sig(kv.second, 6);
-  return j;
-}
 
 nlohmann::json values(const std::map<std::string, double>& m) {
   nlohmann::json j = nlohmann::json::object();
@@ -63,10 +59,11 @@ nlohmann::json errors(const std::map<std::string, double>& m) {
   return j;
 }
 
-nlohmann::json candidates_json(const std::vector<discover::CandidateScore>& cs) {
+nlohmann::json candidates_json(const std::vector<discover::CandidateScore>& cs, bool with_limits) {
   nlohmann::json a = nlohmann::json::array();
   for (const auto& c : cs) {
     nlohmann::json j = {{"name", c.name}, {"testable", c.testable}};
+    if (with_limits) put_limit(c, j);
     if (c.testable) {
       j["delta_bic"] = round_sig(c.delta_bic, 6);
       j["cv_rms_before"] = round_sig(c.cv_rms_before, 6);
@@ -139,6 +136,7 @@ void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet
     }
   }
   std::cout << "\n" << r.conclusion << "\n";
+  print_limits(r);
   for (const auto& e : r.effects) {
     std::cout << "  " << e.name << ":";
     for (const auto& kv : e.parameters) {
@@ -344,7 +342,8 @@ void register_discover(CLI::App& app) {
                          {"summary", f.summary}});
     }
     nlohmann::json rounds = nlohmann::json::array();
-    for (const auto& rd : r.rounds) rounds.push_back(candidates_json(rd));
+    for (std::size_t k = 0; k < r.rounds.size(); ++k)
+      rounds.push_back(candidates_json(r.rounds[k], k + 1 == r.rounds.size()));
     nlohmann::json rows = nlohmann::json::array();
     for (const auto& row : r.rows) {
       rows.push_back({{"row", row.row},
@@ -372,8 +371,8 @@ void register_discover(CLI::App& app) {
         {"regimes", regimes},
         {"worst_rows", r.worst_rows},
         {"effects", effects},
-        {"candidates",
-         r.rounds.empty() ? nlohmann::json::array() : candidates_json(r.rounds.front())},
+        {"candidates", r.rounds.empty() ? nlohmann::json::array()
+                                        : candidates_json(r.rounds.front(), r.rounds.size() == 1)},
         {"rounds", rounds},
         {"baseline_parameters", values(r.baseline_parameters)},
         {"final_parameters", values(r.final_parameters)},
@@ -383,6 +382,7 @@ void register_discover(CLI::App& app) {
         {"footprints", r.footprints},
         {"method", r.method},
         {"conclusion", r.conclusion}};
+    if (!r.more_rows.effect.empty()) j["more_rows"] = more_rows_json(r.more_rows);
     if (!a->out_config.empty()) j["out_config"] = a->out_config;
     check_finite(j);
     write_outputs();

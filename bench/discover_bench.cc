@@ -2,6 +2,7 @@
 // must cost less than a minute): loads x pressures x hold times, sinking and length with 1.5 %
 // noise, generated on the 2 mm mesh with a creeping tread and the pressure effect hidden;
 // discover names both. Above 64 rows it uses the approximations of discover/large_fit.h.
+// And a 24-row set on the default 3D config with detection limits (issue 23: < 2 min).
 //   build/bench/discover_bench --benchmark_repetitions=3
 #include <benchmark/benchmark.h>
 #include <malloc.h>
@@ -38,6 +39,27 @@ BENCHMARK(BM_DiscoverTestMatrix)
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
+
+// Issue 23's budget: a 24-row set on the default config (the 3D patch) with the detection
+// limits of every candidate left unnamed, under 2 minutes. 6 loads x 2 pressures x 2 hold
+// times, the creeping tread hidden (1.5 % noise).
+void BM_Discover24RowsWithLimits(benchmark::State& state) {
+  const std::string config = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+  const auto cfg = contact::load_tyre_config(config, {"contact.unit_length_mm=2"});
+  const auto data = bench::test_matrix(cfg, 6, 2, 2, false);
+  discover::DiscoverReport r;
+  for (auto _ : state) {
+    r = discover::discover(contact::load_tyre_config(config), data);
+    benchmark::DoNotOptimize(r);
+  }
+  int limits = 0;
+  for (const auto& c : r.rounds.back()) limits += c.limit.computed() && !c.limit.effect.empty();
+  state.counters["rows"] = static_cast<double>(data.rows.size());
+  state.counters["named"] = static_cast<double>(r.effects.size());
+  state.counters["limits"] = limits;
+  state.counters["footprints"] = static_cast<double>(r.footprints);
+}
+BENCHMARK(BM_Discover24RowsWithLimits)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -153,6 +154,62 @@ void fill_rows(const MeasurementSet& d, const Stage& before, const Stage& after,
   put(after.cv.entries, after.cv.residuals, &RowResidual::cv_after);
 }
 
+// Detection limits (issue 23) of every testable candidate of the last round that the final
+// model does not carry, against the final model; when the last round named nothing, the rows
+// that would bring the candidate most likely to be named at its default over its limit.
+void add_detection_limits(const Evaluator& ev, const Stage& current, const NamingRule& rule,
+                          const DiscoverOptions& opt, int threads,
+                          const std::function<std::function<void()>(int)>& phase,
+                          DiscoverReport& rep) {
+  auto& last = rep.rounds.back();
+  std::vector<int> todo;
+  std::vector<EffectId> ids;
+  for (int c = 0; c < static_cast<int>(last.size()); ++c) {
+    const contact::EffectInfo* info = contact::find_effect(last[c].name);
+    const auto& on = current.variant.effects;
+    if (!last[c].testable || !info || std::find(on.begin(), on.end(), info->id) != on.end())
+      continue;
+    todo.push_back(c);
+    ids.push_back(info->id);
+  }
+  const LimitFinder finder(ev, current.fit.config, current.variant, current.fit, rule, opt.limits);
+  const int n = static_cast<int>(todo.size());
+  const auto tick = phase(n);
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
+  for (int t = 0; t < n; ++t) {
+    last[todo[t]].limit = finder.limit(ids[t]);
+    tick();
+  }
+  if (rep.effects.size() >= rep.rounds.size() || n == 0) return;  // the last round named one
+  int best = -1;
+  for (int t = 0; t < n; ++t) {
+    const DetectionLimit& l = last[todo[t]].limit;
+    if (l.parameter.empty() || l.reason.rfind("no value", 0) == 0) continue;
+    if (best < 0 || l.power_at_default > last[todo[best]].limit.power_at_default) best = t;
+  }
+  if (best < 0) return;
+  MoreRows& m = rep.more_rows;
+  m.effect = last[todo[best]].name;
+  m.condition = contact::effect_info(ids[best]).regime;
+  m.power_at_default = last[todo[best]].limit.power_at_default;
+  m.replicas = finder.replicas_for_default(ids[best]);
+  const int rows = static_cast<int>(ev.data().rows.size());
+  m.extra_rows = m.replicas > 0 ? (m.replicas - 1) * rows : 0;
+  std::ostringstream s;
+  s << m.effect << " at its catalogue default would be named with probability "
+    << std::lround(100 * m.power_at_default) << " % on these rows; ";
+  if (m.replicas == 1) {
+    s << "no more rows are needed for 80 %";
+  } else if (m.replicas > 1) {
+    s << m.extra_rows << " more rows at this noise (the " << rows << " rows' " << m.condition
+      << " levels repeated " << m.replicas << " times in all) would name it with 80 %";
+  } else {
+    s << "repeating the rows " << opt.limits.max_replicas << " times at this noise would not "
+      << "reach 80 %: widen the range of " << m.condition << " or measure more precisely";
+  }
+  m.text = s.str();
+}
+
 std::string number_text(double v) {
   std::ostringstream s;
   s.precision(10);
@@ -243,6 +300,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     };
   };
 
+  const NamingRule rule{opt.min_delta_bic, opt.min_cv_gain, opt.max_cv_loss};
   Stage current{make_variant(config, {}), {}, {}};
   {
     auto fc = fit_and_cross_validate(ev, eval, current.variant, opt.fit, ticker("baseline", 2));
@@ -310,16 +368,13 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
       s.cv_before = current.cv.rms;
       s.cv_after = stages[c].cv.rms;
       s.standard_errors = named_values(stages[c].variant, stages[c].fit.standard_errors, false);
-      double best_gain = 0, worst_loss = 0;
+      std::vector<double> cv_before, cv_after;
       for (const auto& kv : s.cv_before) {
-        const double after = s.cv_after.at(kv.first);
-        if (kv.second <= 0) continue;
-        best_gain = std::max(best_gain, 1 - after / kv.second);
-        worst_loss = std::max(worst_loss, after / kv.second - 1);
+        cv_before.push_back(kv.second);
+        cv_after.push_back(s.cv_after.at(kv.first));
       }
-      s.significant = s.failures == 0 && s.delta_bic > opt.min_delta_bic &&
-                      best_gain >= opt.min_cv_gain && worst_loss <= opt.max_cv_loss &&
-                      s.cv_rms_after <= s.cv_rms_before;
+      s.significant = s.failures == 0 &&
+                      rule.names(s.delta_bic, cv_before, cv_after, s.cv_rms_before, s.cv_rms_after);
       if (s.significant && (best < 0 || s.delta_bic > scores[best].delta_bic)) best = c;
     }
     std::stable_sort(scores.begin(), scores.end(),
@@ -356,6 +411,11 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     if (left.empty() || std::abs(left.front().correlation) < opt.structure_correlation) break;
   }
 
+  if (opt.detection_limits && !rep.rounds.empty()) {
+    add_detection_limits(
+        ev, current, rule, opt, threads,
+        [&](int total) { return ticker("detection limits", total); }, rep);
+  }
   rep.footprints = ev.predictions();
   rep.gap_after = current.fit.rms;
   rep.cv_gap_after = current.cv.rms;

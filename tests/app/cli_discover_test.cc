@@ -52,8 +52,8 @@ class DiscoverCli : public modaltyre_test::CliFixture {
 
   /// discover on `measured` with the fast settings, then `extra`.
   CliRun discover(const std::string& measured, const std::vector<std::string>& extra = {}) {
-    std::vector<std::string> args{"discover",      kConfig, measured,  "--unit-length-mm",
-                                  "4",             "--max-effects", "1", "--threads",
+    std::vector<std::string> args{"discover", kConfig,         measured, "--unit-length-mm",
+                                  "4",        "--max-effects", "1",      "--threads",
                                   "2"};
     args.insert(args.end(), extra.begin(), extra.end());
     return run(args);
@@ -92,8 +92,8 @@ TEST_F(DiscoverCli, BadMeasuredFileNamesFileLineAndColumn) {
       {h + ok + "5478,20,-142,117\n" + ok, "4", "width_mm"},
       {"load_N,sinkng_mm,width_mm,length_mm\n" + ok + ok, "1", "sinkng_mm"},
       {"sinking_mm,width_mm,length_mm\n8,104,86\n", "1", "load_N"},
-      {"load_N,branch,sinking_mm\n2131,load,8\n3261,sideways,12\n5478,load,20\n6502,load,23\n",
-       "3", "branch"},
+      {"load_N,branch,sinking_mm\n2131,load,8\n3261,sideways,12\n5478,load,20\n6502,load,23\n", "3",
+       "branch"},
       {"load_N,sinking_mm,status,message\n2131,8,ok,converged\n150,,failed,did not converge\n"
        "5478,20,ok,converged\n6502,23,ok,converged\n",
        "3", "status"},
@@ -176,7 +176,8 @@ TEST_F(DiscoverCli, JsonOnASmallDataSetAndTheAugmentedConfigRuns) {
   const CliRun r = discover(p, {"--json", "--out-config", cfg});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // Numbers only: a NaN or inf would not parse as JSON (nor be printed as a bare word).
-  EXPECT_FALSE(std::regex_search(r.out, std::regex(R"(\b-?(nan|inf|infinity)\b)", std::regex::icase)))
+  EXPECT_FALSE(
+      std::regex_search(r.out, std::regex(R"(\b-?(nan|inf|infinity)\b)", std::regex::icase)))
       << r.out;
   nlohmann::json j;
   ASSERT_NO_THROW(j = nlohmann::json::parse(r.out)) << r.out;
@@ -204,6 +205,23 @@ TEST_F(DiscoverCli, JsonOnASmallDataSetAndTheAugmentedConfigRuns) {
       EXPECT_TRUE(c["delta_bic"].is_number()) << c;
     } else {
       EXPECT_FALSE(c["reason"].get<std::string>().empty()) << c;
+    }
+    // One round: every candidate carries its detection limit, or null and the reason.
+    ASSERT_TRUE(c.contains("detection_limit")) << c;
+    if (c["detection_limit"].is_null()) {
+      EXPECT_FALSE(c["detection_limit_reason"].get<std::string>().empty()) << c;
+    } else {
+      const auto& l = c["detection_limit"];
+      EXPECT_EQ(l["parameter"].get<std::string>().rfind(
+                    "effects." + c["name"].get<std::string>() + ".", 0),
+                0u)
+          << c;
+      EXPECT_GT(l["value"].get<double>(), 0) << c;
+      ASSERT_FALSE(l["observable_rms_rel"].empty()) << c;
+      for (const auto& kv : l["observable_rms_rel"].items())
+        EXPECT_GE(kv.value().get<double>(), 0) << c;
+      EXPECT_GE(c["power_at_default"].get<double>(), 0) << c;
+      EXPECT_LE(c["power_at_default"].get<double>(), 1) << c;
     }
   }
   EXPECT_EQ(j["out_config"], cfg);

@@ -196,7 +196,8 @@ TEST(DiscoverManyRows, NamesThePlantedEffectAtAFractionOfTheCost) {
   EXPECT_LT(r.footprints, 500L * 120) << r.footprints << " footprints";
 
   // Phases: "baseline" (fit, cross-validation), then each round with two ticks per testable
-  // candidate; each opens with done = 0 and ends at its total.
+  // candidate, then "detection limits" (one tick per candidate left unnamed); each opens with
+  // done = 0 and ends at its total.
   ASSERT_GE(events.size(), 3u);
   EXPECT_EQ(events.front(), std::make_tuple(std::string("baseline"), 0, 2));
   std::map<std::string, std::pair<int, int>> last;  // phase -> (max done, total)
@@ -205,7 +206,10 @@ TEST(DiscoverManyRows, NamesThePlantedEffectAtAFractionOfTheCost) {
     l.first = std::max(l.first, done);
     l.second = total;
   }
-  ASSERT_EQ(last.size(), 1 + r.rounds.size());
+  ASSERT_EQ(last.size(), 2 + r.rounds.size());
+  int left = 0;
+  for (const auto& c : r.rounds.back()) left += !c.limit.effect.empty();
+  EXPECT_EQ(last.at("detection limits"), std::make_pair(left, left));
   EXPECT_EQ(last.at("baseline"), std::make_pair(2, 2));
   for (std::size_t k = 0; k < r.rounds.size(); ++k) {
     int testable = 0;

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/discover/detection_limit.h"
 #include "modaltyre/discover/large_fit.h"
 #include "modaltyre/discover/model_fit.h"
 #include "modaltyre/studies/measurements.h"
@@ -44,11 +45,15 @@ struct DiscoverOptions {
   /// condition at least this strongly.
   double structure_correlation = 0.5;
   int threads = 0;  ///< 0: OpenMP default
+  /// Detection limits of the candidates left unnamed (detection_limit.h) and the rows to add.
+  bool detection_limits = true;
+  LimitOptions limits;
   /// Exact fitting and cross-validation up to fit.exact_rows rows, approximations above
   /// (large_fit.h).
   FitOptions fit;
   /// Called with (phase, done, total) after each fit and each cross-validation: phase
-  /// "baseline" (total 2), then "round 1", "round 2", ... (total 2 per testable candidate).
+  /// "baseline" (total 2), then "round 1", "round 2", ... (total 2 per testable candidate),
+  /// then "detection limits" (one per candidate left unnamed).
   /// Thread-safe; done counts up from 1 within a phase.
   std::function<void(const std::string&, int, int)> progress;
 };
@@ -73,6 +78,20 @@ struct CandidateScore {
   double rms_after = 0;
   int failures = 0;
   bool significant = false;
+  /// In the last round, for a testable candidate the final model does not carry: what these
+  /// data could have revealed (detection_limit.h); limit.effect is empty where not computed.
+  DetectionLimit limit;
+};
+
+/// When the last round names nothing: the rows to add for the candidate most likely to be
+/// named at its catalogue default (highest power there).
+struct MoreRows {
+  std::string effect;
+  std::string condition;  ///< the condition column its regime runs through
+  double power_at_default = 0;
+  int replicas = 0;    ///< times the rows must be repeated (0: more than LimitOptions allow)
+  int extra_rows = 0;  ///< rows to add: (replicas - 1) x the rows given
+  std::string text;    ///< in words
 };
 
 struct NamedEffect {
@@ -104,6 +123,7 @@ struct DiscoverReport {
   std::vector<std::vector<CandidateScore>> rounds;  ///< candidates of each search round
   std::map<std::string, double> baseline_parameters, final_parameters;
   std::vector<RowResidual> rows;
+  MoreRows more_rows;                      ///< effect empty when not computed
   std::vector<std::string> out_overrides;  ///< "key=value" that turn the config into the final one
   std::string conclusion;                  ///< one paragraph in words
   int fits = 0;

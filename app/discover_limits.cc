@@ -1,0 +1,92 @@
+// Detection limits of discover's report (issue 23) in text and JSON.
+#include "discover_limits.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "cli_support.h"
+
+namespace modaltyre::app {
+namespace {
+
+std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
+
+
+}  // namespace
+
+nlohmann::json gaps(const std::map<std::string, double>& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& kv : m) j[kv.first] = round_sig(kv.second, 6);
+  return j;
+}
+
+// The candidate's detection limit (issue 23), null with a reason where there is none: an
+// untestable or named candidate, or one whose limit cannot be computed.
+void put_limit(const discover::CandidateScore& c, nlohmann::json& j) {
+  const discover::DetectionLimit& l = c.limit;
+  std::string reason = !c.testable        ? "not testable: " + c.reason
+                       : l.effect.empty() ? "named"
+                       : !l.computed()    ? l.reason
+                                          : "";
+  if (!reason.empty()) {
+    j["detection_limit"] = nullptr;
+    j["detection_limit_reason"] = reason;
+    if (!l.effect.empty()) j["power_at_default"] = round_sig(l.power_at_default, 3);
+    return;
+  }
+  j["detection_limit"] = {{"parameter", l.parameter},
+                          {"value", round_sig(l.value, 4)},
+                          {"unit", l.unit},
+                          {"times_default", round_sig(l.magnitude, 3)},
+                          {"bound", l.at_most ? "at most" : "at least"},
+                          {"probability", 0.8},
+                          {"observable_rms_rel", gaps(l.observable_rms_rel)}};
+  j["power_at_default"] = round_sig(l.power_at_default, 3);
+}
+
+// "tread_relaxation: not named; these data would reveal creep_ratio >= 0.21 (sinking_mm RMS
+// >= 2.1 %) with 80 % probability", for the last round's candidates left unnamed.
+void print_limits(const discover::DiscoverReport& r) {
+  if (r.rounds.empty()) return;
+  bool header = false;
+  for (const auto& c : r.rounds.back()) {
+    const discover::DetectionLimit& l = c.limit;
+    if (l.effect.empty()) continue;
+    if (!header) std::cout << "\nDetection limits (what these rows at their noise would name):\n";
+    header = true;
+    std::cout << "  " << c.name << ": not named; ";
+    if (!l.computed()) {
+      std::cout << "no limit: " << l.reason << "\n";
+      continue;
+    }
+    std::vector<std::pair<double, std::string>> obs;
+    for (const auto& kv : l.observable_rms_rel) obs.emplace_back(kv.second, kv.first);
+    std::sort(obs.rbegin(), obs.rend());
+    const std::string name = l.parameter.substr(l.parameter.rfind('.') + 1);
+    std::ostringstream value;
+    value.precision(3);
+    value << l.value;
+    std::cout << "these data would reveal " << name << " " << (l.at_most ? "<=" : ">=") << " "
+              << value.str() << (l.unit == "-" ? "" : " " + l.unit) << " (";
+    for (std::size_t i = 0; i < obs.size(); ++i) {
+      std::cout << (i ? ", " : "") << obs[i].second << " RMS " << (i ? "" : ">= ")
+                << pct(obs[i].first);
+    }
+    std::cout << ") with 80 % probability; at its default: "
+              << std::lround(100 * l.power_at_default) << " %\n";
+  }
+  if (!r.more_rows.effect.empty()) std::cout << "Rows to add: " << r.more_rows.text << ".\n";
+}
+
+nlohmann::json more_rows_json(const discover::MoreRows& m) {
+  return {{"effect", m.effect},
+          {"condition", m.condition},
+          {"power_at_default", round_sig(m.power_at_default, 3)},
+          {"replicas", m.replicas > 0 ? nlohmann::json(m.replicas) : nullptr},
+          {"extra_rows", m.replicas > 0 ? nlohmann::json(m.extra_rows) : nullptr},
+          {"text", m.text}};
+}
+
+}  // namespace modaltyre::app
