@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -13,17 +12,6 @@
 
 namespace modaltyre::contact {
 namespace {
-
-/// The carcass-only vertical compliance of the sections as an operator: the 2D model's
-/// (vertical_compliance_operator) with the tread springs made rigid, i.e. no diagonal term.
-solvers::WeightedToeplitzCompliance carcass_operator(const TyreModel& m,
-                                                     const modal::LagKernels& kernels) {
-  TyreModel carcass;
-  carcass.kernels = kernels;
-  carcass.theta = m.theta;
-  carcass.k_radial_N_m = carcass.k_tangential_N_m = std::numeric_limits<double>::infinity();
-  return vertical_compliance_operator(carcass);
-}
 
 /// C F over every section.
 Eigen::VectorXd carcass_product(const solvers::ComplianceOperator& C, const Eigen::VectorXd& F) {
@@ -53,6 +41,11 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
     for (auto* k : {&kernels_.r_from_r, &kernels_.r_from_t, &kernels_.t_from_r, &kernels_.t_from_t})
       for (double& v : *k) v *= physics.carcass_scale;
   }
+  // The carcass-only vertical compliance of the sections (the 2D model's with the tread springs
+  // rigid); on the model's own kernels the model's operator, whose spectra every load shares.
+  const bool own = physics.kernels == nullptr && physics.carcass_scale == 1.0;
+  carcass_ = std::make_shared<const solvers::WeightedToeplitzCompliance>(
+      carcass_compliance_operator(model_, own ? nullptr : &kernels_));
   const auto& s = settings_;
   if (!(s.tread_width_m > 0) || !(s.lateral_cell_m > 0)) {
     throw std::invalid_argument("3D patch: tread width and lateral cell must be > 0");
@@ -96,7 +89,7 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
 Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
-  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(model_, kernels_);
+  const solvers::WeightedToeplitzCompliance carcass = *carcass_;
   const auto opt = contact_options(model_);
   const std::unique_ptr<detail::SectionLaws> laws =
       G_.size() ? detail::flexible_sections(t_, z_m_, G_, opt.max_iterations)
@@ -178,7 +171,7 @@ Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const
 Patch3dResult Patch3d::solve_cells(double load_N) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
-  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(model_, kernels_);
+  const solvers::WeightedToeplitzCompliance carcass = *carcass_;
   const detail::CellCompliance op(carcass, ny, t_, G_.size() ? &G_ : nullptr);
   solvers::ContactProblem p;
   p.compliance_operator = &op;
@@ -246,7 +239,7 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
     r.message = msg.str();
     return r;
   }
-  const solvers::WeightedToeplitzCompliance carcass = carcass_operator(m, kernels_);
+  const solvers::WeightedToeplitzCompliance carcass = *carcass_;
   const Eigen::VectorXd CF = carcass_product(carcass, F);
   r.section_force_N.assign(F.data(), F.data() + S);
   r.section_approach_m.resize(S);

@@ -117,17 +117,44 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
   return m;
 }
 
-solvers::WeightedToeplitzCompliance vertical_compliance_operator(const TyreModel& m) {
-  std::vector<double> cosv(m.theta.size()), sinv(m.theta.size());
-  for (std::size_t i = 0; i < m.theta.size(); ++i) {
-    cosv[i] = std::cos(m.theta[i]);
-    sinv[i] = std::sin(m.theta[i]);
+namespace {
+
+/// C_ij = sum_ab w_a(i) Ks_ab(i - j) w_b(j) + d_i delta_ij, Ks the symmetrised kernels.
+solvers::WeightedToeplitzCompliance weighted_operator(const modal::LagKernels& kernels,
+                                                      const std::vector<double>& theta,
+                                                      std::vector<double> diagonal) {
+  std::vector<double> cosv(theta.size()), sinv(theta.size());
+  for (std::size_t i = 0; i < theta.size(); ++i) {
+    cosv[i] = std::cos(theta[i]);
+    sinv[i] = std::sin(theta[i]);
   }
   // Projections of seed 001 eq. (12): a vertical force has radial part f cos theta and
   // tangential part f sin theta; the upward displacement is u_r cos theta + u_t sin theta.
   return solvers::WeightedToeplitzCompliance(
-      solvers::LagConvolution2x2(symmetrised_kernels(m.kernels), m.kernels.lags), std::move(cosv),
-      std::move(sinv), tread_diagonal(m));
+      solvers::LagConvolution2x2(symmetrised_kernels(kernels), kernels.lags), std::move(cosv),
+      std::move(sinv), std::move(diagonal));
+}
+
+}  // namespace
+
+const solvers::WeightedToeplitzCompliance& TyreModel::vertical_operator_prototype() const {
+  return vertical_operator_.get(
+      [this] { return weighted_operator(kernels, theta, tread_diagonal(*this)); });
+}
+
+const solvers::WeightedToeplitzCompliance& TyreModel::carcass_operator_prototype() const {
+  return carcass_operator_.get(
+      [this] { return weighted_operator(kernels, theta, std::vector<double>(theta.size(), 0.0)); });
+}
+
+solvers::WeightedToeplitzCompliance vertical_compliance_operator(const TyreModel& m) {
+  return m.vertical_operator_prototype();
+}
+
+solvers::WeightedToeplitzCompliance carcass_compliance_operator(const TyreModel& m,
+                                                                const modal::LagKernels* kernels) {
+  if (kernels == nullptr) return m.carcass_operator_prototype();
+  return weighted_operator(*kernels, m.theta, std::vector<double>(m.theta.size(), 0.0));
 }
 
 Eigen::MatrixXd carcass_vertical_compliance(const modal::LagKernels& K,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unsupported/Eigen/FFT>
 #include <utility>
 
 #include "modaltyre/core/errors.h"
@@ -16,6 +17,18 @@ bool smooth(int v) {
   for (int f : {2, 3, 5})
     while (v % f == 0) v /= f;
   return v == 1;
+}
+
+/// Real half-spectrum transforms, unscaled; kissfft keeps a plan per length: one set per thread,
+/// reused by every convolution the thread applies (plans depend on the length only).
+Eigen::FFT<double>& thread_fft() {
+  thread_local Eigen::FFT<double> fft = [] {
+    Eigen::FFT<double> f;
+    f.SetFlag(Eigen::FFT<double>::HalfSpectrum);
+    f.SetFlag(Eigen::FFT<double>::Unscaled);
+    return f;
+  }();
+  return fft;
 }
 
 }  // namespace
@@ -45,33 +58,39 @@ void DenseCompliance::apply(int r0, int nr, int c0, int nc,
 }
 
 LagConvolution2x2::LagConvolution2x2(std::array<std::vector<double>, 4> kernels, int lags)
-    : k_(std::move(kernels)), lags_(lags) {
+    : k_(std::move(kernels)), lags_(lags), cache_(std::make_shared<SpectraCache>()) {
   MODALTYRE_CHECK(lags >= 1, "convolution needs at least one lag");
   for (const auto& k : k_) {
     MODALTYRE_CHECK(k.size() == 2 * static_cast<std::size_t>(lags) - 1, "kernel length");
   }
-  fft_.SetFlag(Eigen::FFT<double>::HalfSpectrum);
-  fft_.SetFlag(Eigen::FFT<double>::Unscaled);
 }
 
 const LagConvolution2x2::Spectra& LagConvolution2x2::spectra(int n) const {
-  for (const auto& s : spectra_)
-    if (s.n == n) return s;
+  for (const auto& s : seen_)
+    if (s->n == n) return *s;
+  const std::lock_guard<std::mutex> lock(cache_->mutex);
+  for (const auto& s : cache_->all) {
+    if (s->n == n) {
+      seen_.push_back(s);
+      return *s;
+    }
+  }
   // Circular embedding of length n: index p holds lag p for p < n/2 and lag p - n above, so
   // every lag in [-n/2, n/2 - 1] is represented once (zero beyond the kernels' reach).
-  Spectra s;
-  s.n = n;
-  real_.assign(static_cast<std::size_t>(n), 0.0);
+  auto s = std::make_shared<Spectra>();
+  s->n = n;
+  std::vector<double> real(static_cast<std::size_t>(n), 0.0);
   for (int ab = 0; ab < 4; ++ab) {
     for (int p = 0; p < n; ++p) {
       const int l = p < n / 2 ? p : p - n;
-      real_[p] = std::abs(l) < lags_ ? k_[ab][static_cast<std::size_t>(l + lags_ - 1)] / n : 0.0;
+      real[p] = std::abs(l) < lags_ ? k_[ab][static_cast<std::size_t>(l + lags_ - 1)] / n : 0.0;
     }
-    s.h[ab].resize(static_cast<std::size_t>(n / 2 + 1));
-    fft_.fwd(s.h[ab].data(), real_.data(), n);
+    s->h[ab].resize(static_cast<std::size_t>(n / 2 + 1));
+    thread_fft().fwd(s->h[ab].data(), real.data(), n);
   }
-  spectra_.push_back(std::move(s));
-  return spectra_.back();
+  cache_->all.push_back(s);
+  seen_.push_back(std::move(s));
+  return *seen_.back();
 }
 
 void LagConvolution2x2::apply(int r0, int nr, int c0, int nc, const double* v0, const double* v1,
@@ -125,7 +144,7 @@ void LagConvolution2x2::apply_fft(int r0, int nr, int c0, int nc, const double* 
   auto forward = [&](const double* v, std::vector<cd>& x) {
     std::copy(v, v + nc, real_.begin());
     std::fill(real_.begin() + nc, real_.end(), 0.0);
-    fft_.fwd(x.data(), real_.data(), n);
+    thread_fft().fwd(x.data(), real_.data(), n);
   };
   forward(v0, x0_);
   forward(v1, x1_);
@@ -140,7 +159,7 @@ void LagConvolution2x2::apply_fft(int r0, int nr, int c0, int nc, const double* 
       const double xr = x0_[k].real(), xi = x0_[k].imag(), zr = x1_[k].real(), zi = x1_[k].imag();
       y_[k] = cd(ar * xr - ai * xi + br * zr - bi * zi, ar * xi + ai * xr + br * zi + bi * zr);
     }
-    fft_.inv(real_.data(), y_.data(), n);
+    thread_fft().inv(real_.data(), y_.data(), n);
     std::copy(real_.begin() + start, real_.begin() + start + first_run, u);
     std::copy(real_.begin(), real_.begin() + (nr - first_run), u + first_run);
   };

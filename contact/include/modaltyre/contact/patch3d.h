@@ -35,6 +35,7 @@
 // The reduction stays exact: a section at approach d is then a small contact problem
 // (min 1/2 f^T (G + t_i I) f + z^T f, f >= 0, sum f = F_i), affine in d on a fixed lateral
 // pattern (compliance 1 / 1^T M_AA^-1 1 and offset in place of t_i / n_i and the mean drop).
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -144,7 +145,9 @@ class Patch3d {
 
   const TyreModel& model_;
   Patch3dSettings settings_;
-  modal::LagKernels kernels_;      ///< the carcass kernels, scaled
+  modal::LagKernels kernels_;  ///< the carcass kernels, scaled
+  /// The carcass operator on kernels_; solves use copies (they share its FFT spectra).
+  std::shared_ptr<const solvers::WeightedToeplitzCompliance> carcass_;
   std::vector<double> y_m_, z_m_;  ///< column centres and their crown drops
   std::vector<double> t_;          ///< cell tread compliance per section
   double k_radial_cell_ = 0, k_tangential_cell_ = 0;

@@ -33,26 +33,28 @@ struct CarcassAssembly {
 };
 
 /// Built on first use, once, under a lock: a model that only ever takes the effect-free path
-/// never pays for the m x m matrix. A copy of a model starts without it.
-class LazyCarcassAssembly {
+/// never pays for the m x m matrix. A copy of a model starts without it (a copy may change the
+/// members it was built from).
+template <class T>
+class LazyValue {
  public:
-  LazyCarcassAssembly() = default;
-  LazyCarcassAssembly(const LazyCarcassAssembly&) {}
-  LazyCarcassAssembly& operator=(const LazyCarcassAssembly&) {
+  LazyValue() = default;
+  LazyValue(const LazyValue&) {}
+  LazyValue& operator=(const LazyValue&) {
     const std::lock_guard<std::mutex> lock(mutex_);
     value_.reset();
     return *this;
   }
   template <class Build>
-  const CarcassAssembly& get(Build build) const {
+  const T& get(Build build) const {
     const std::lock_guard<std::mutex> lock(mutex_);
-    if (!value_) value_ = std::make_shared<const CarcassAssembly>(build());
+    if (!value_) value_ = std::make_shared<const T>(build());
     return *value_;
   }
 
  private:
   mutable std::mutex mutex_;
-  mutable std::shared_ptr<const CarcassAssembly> value_;
+  mutable std::shared_ptr<const T> value_;
 };
 
 struct TyreModel {
@@ -73,9 +75,14 @@ struct TyreModel {
   int candidates() const { return static_cast<int>(theta.size()); }
   /// The carcass assembly of the effects' predictions (thread-safe, built on first use).
   const CarcassAssembly& carcass_assembly() const;
+  /// The operators below are copies of one instance per model (built on first use): the
+  /// copies share the kernels' FFT spectra, so successive solves do not transform them again.
+  const solvers::WeightedToeplitzCompliance& vertical_operator_prototype() const;
+  const solvers::WeightedToeplitzCompliance& carcass_operator_prototype() const;
 
  private:
-  LazyCarcassAssembly carcass_assembly_;
+  LazyValue<CarcassAssembly> carcass_assembly_;
+  LazyValue<solvers::WeightedToeplitzCompliance> vertical_operator_, carcass_operator_;
 };
 
 /// Vertical compliance of the carcass alone (no tread) between the candidate units at angles
@@ -85,9 +92,15 @@ Eigen::MatrixXd carcass_vertical_compliance(const modal::LagKernels& kernels,
 
 /// TyreModel::vertical_compliance as a matrix-free operator: the carcass kernels (symmetrised,
 /// as the matrix is) between the candidates' cos/sin projections plus the tread diagonal. Equal
-/// to the matrix to rounding; block products by FFT in O(m log m). Not thread-safe (it caches FFT
-/// plans): one per solve.
+/// to the matrix to rounding; block products by FFT in O(m log m). Not thread-safe (work
+/// arrays): one per solve; a copy of the model's prototype (its spectra are shared).
 solvers::WeightedToeplitzCompliance vertical_compliance_operator(const TyreModel& model);
+
+/// The same with the tread springs rigid (no diagonal): the carcass alone between the
+/// candidates' vertical forces, on `kernels` (the model's when null, then sharing the model's
+/// spectra).
+solvers::WeightedToeplitzCompliance carcass_compliance_operator(
+    const TyreModel& model, const modal::LagKernels* kernels = nullptr);
 
 /// Vertical displacement at i per unit horizontal (+x) force at j [m/N]; built on demand (only
 /// load cases with a horizontal force need it).

@@ -12,7 +12,8 @@
 #include <array>
 #include <complex>
 #include <cstdlib>
-#include <unsupported/Eigen/FFT>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "modaltyre/solvers/compliance_operator.h"
@@ -20,7 +21,9 @@
 namespace modaltyre::solvers {
 
 /// u_a(i) = sum_b sum_j K_ab(i - j) v_b(j) for a, b in {0, 1}: a 2 x 2 block-Toeplitz product.
-/// Not thread-safe (FFT plans and work arrays are cached): one instance per thread.
+/// Not thread-safe (work arrays): one instance per thread. Copies share the kernels' spectra
+/// (computed once per FFT length, under a lock), so a copy per solve or thread costs no
+/// transforms of the kernels; the FFT plans are per thread and live as long as it.
 class LagConvolution2x2 {
  public:
   /// kernels = {K_00, K_01, K_10, K_11}, each sampled at lags -(lags-1) .. lags-1 (lag l at
@@ -46,14 +49,19 @@ class LagConvolution2x2 {
     int n = 0;
     std::array<std::vector<std::complex<double>>, 4> h;  ///< half spectra, scaled by 1/n
   };
+  /// The spectra of every FFT length used so far, shared by the copies of one convolution.
+  struct SpectraCache {
+    std::mutex mutex;
+    std::vector<std::shared_ptr<const Spectra>> all;
+  };
   const Spectra& spectra(int n) const;
   void apply_fft(int r0, int nr, int c0, int nc, const double* v0, const double* v1, double* u0,
                  double* u1) const;
 
   std::array<std::vector<double>, 4> k_;
   int lags_ = 0;
-  mutable Eigen::FFT<double> fft_;
-  mutable std::vector<Spectra> spectra_;
+  std::shared_ptr<SpectraCache> cache_;
+  mutable std::vector<std::shared_ptr<const Spectra>> seen_;  ///< this copy's lock-free view
   mutable std::vector<double> real_;
   mutable std::vector<std::complex<double>> x0_, x1_, y_;
 };
