@@ -11,7 +11,8 @@ namespace {
 std::vector<ConditionInfo> make_catalogue() {
   using Id = ConditionId;
   return {
-      {Id::load_N, "load_N", "N", "load", 0, 1e7, true},
+      // [1e-6, 1e7] N: contact::kMinLoad_N, kMaxLoad_N (below 1e-6 N the 3D patch divides by 0).
+      {Id::load_N, "load_N", "N", "load", 1e-6, 1e7},
       {Id::pressure_kPa, "pressure_kPa", "kPa", "gauge inflation pressure", 0, 2000, true},
       {Id::hold_s, "hold_s", "s", "hold time", 0, 1e7},
       {Id::speed_kmh, "speed_kmh", "km/h", "speed", 0, 400},
@@ -37,6 +38,7 @@ std::string limit_text(double v) {
   if (e != std::string::npos) {
     std::size_t k = e + 1;
     if (s[k] == '+') s.erase(k, 1);
+    if (s[k] == '-') ++k;
     while (k + 1 < s.size() && s[k] == '0') s.erase(k, 1);
   }
   return s;

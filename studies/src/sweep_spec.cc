@@ -144,8 +144,12 @@ SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
       spec.base_config = resolve(kv.second.Scalar());
       spec.base_where = where;
       std::error_code ec;
-      if (!fs::is_regular_file(spec.base_config, ec)) {
+      if (!fs::exists(spec.base_config, ec)) {
         throw InputError(where, "tyre config '" + spec.base_config + "' not found");
+      }
+      if (!fs::is_regular_file(spec.base_config, ec)) {
+        throw InputError(where, "tyre config '" + spec.base_config +
+                                    "' is not a regular file (a folder or device?)");
       }
       have_base = true;
     } else if (key == "set") {

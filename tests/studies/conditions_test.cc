@@ -84,6 +84,7 @@ TEST(ConditionCatalogue, NamesAreUniqueInIdOrderAndAreTheMeasurementColumns) {
   EXPECT_EQ(condition_info(ConditionId::horizontal_force_N).range_text(), "[-1e7, 1e7] N");
   EXPECT_EQ(condition_info(ConditionId::pressure_kPa).range_text(), "(0, 2000] kPa");
   EXPECT_EQ(condition_info(ConditionId::branch).range_text(), "load, unload");
+  EXPECT_EQ(condition_info(ConditionId::load_N).range_text(), "[1e-6, 1e7] N");
 }
 
 TEST(ConditionCatalogue, MeasurementsAndSweepsAcceptTheRangeAndRefuseBeyondWithOneMessage) {

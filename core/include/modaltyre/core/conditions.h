@@ -6,7 +6,7 @@
 // (its branch column). The values act on the tyre through contact::OperatingConditions
 // (contact/effects.h), which binds each entry to its field; this table is vocabulary only.
 //
-//   load_N              vertical load [N], in (0, 1e7]
+//   load_N              vertical load [N], in [1e-6, 1e7]
 //   pressure_kPa        gauge inflation pressure [kPa], in (0, 2000]
 //   hold_s              time the load has been held [s], in [0, 1e7] (1e7 s, 116 days, is far
 //                       past any creep)
