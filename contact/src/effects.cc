@@ -206,21 +206,4 @@ EffectsConfig read_effects(const ConfigSection& section) {
   return out;
 }
 
-const char* branch_name(Branch b) { return b == Branch::loading ? "load" : "unload"; }
-const char* surface_name(Surface s) { return s == Surface::rigid ? "rigid" : "soil"; }
-
-std::optional<Branch> branch_named(const std::string& name) {
-  for (Branch b : {Branch::loading, Branch::unloading}) {
-    if (name == branch_name(b)) return b;
-  }
-  return std::nullopt;
-}
-
-std::optional<Surface> surface_named(const std::string& name) {
-  for (Surface s : {Surface::rigid, Surface::soil}) {
-    if (name == surface_name(s)) return s;
-  }
-  return std::nullopt;
-}
-
 }  // namespace modaltyre::contact

@@ -2,8 +2,10 @@
 
 #include <cmath>
 
+#include "modaltyre/core/conditions.h"
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/number_format.h"
 #include "modaltyre/rheology/contact_geometry.h"
 #include "modaltyre/rheology/least_squares.h"
 
@@ -36,19 +38,18 @@ StaticLoop read_static_loop_csv(const std::string& path) {
     row.line = t.line(r);
     row.load_N = t.number(r, "load_N");
     row.deflection_m = t.number(r, "deflection_mm") * 1e-3;
+    // Load, pressure and branch words as every reader of conditions (core/conditions.h).
+    const ConditionInfo& branch = condition_info(ConditionId::branch);
     const std::string& br = t.text(r, "branch");
-    if (br != "loading" && br != "unloading")
-      throw InputError({path, row.line, "branch"},
-                       "must be 'loading' or 'unloading', got '" + printable(br) + "'");
-    row.loading = br == "loading";
-    // Upper bound as the tyre config's loads_N: beyond it the fit overflows.
-    if (!(row.load_N > 0 && row.load_N <= 1e7))
-      throw InputError({path, row.line, "load_N"}, "load must be in (0, 1e7] N");
-    // Not used by the fit, but a recorded pressure must still be an inflation pressure.
-    if (t.has("pressure_kPa") &&
-        !(t.number(r, "pressure_kPa") > 0 && t.number(r, "pressure_kPa") <= 2000))
-      throw InputError({path, row.line, "pressure_kPa"},
-                       "gauge inflation pressure must be in (0, 2000] kPa");
+    const auto branch_value = branch.value_of(br);
+    if (!branch_value) throw InputError({path, row.line, "branch"}, branch.refusal(br));
+    row.loading = *branch_value == 0;
+    for (const ConditionId id : {ConditionId::load_N, ConditionId::pressure_kPa}) {
+      // The pressure is not used by the fit, but a recorded one must still be in range.
+      const ConditionInfo& c = condition_info(id);
+      if (t.has(c.name) && !c.in_range(t.number(r, c.name)))
+        throw InputError({path, row.line, c.name}, c.refusal(number_text(t.number(r, c.name))));
+    }
     if (row.deflection_m <= 0)
       throw InputError({path, row.line, "deflection_mm"}, "deflection must be > 0 mm");
     loop.rows.push_back(row);
@@ -56,7 +57,8 @@ StaticLoop read_static_loop_csv(const std::string& path) {
   return loop;
 }
 
-double static_loop_load(double E1, double chi, double h, bool loading, const ThreeElementOptions& o) {
+double static_loop_load(double E1, double chi, double h, bool loading,
+                        const ThreeElementOptions& o) {
   return E1 * elastic_coef(h, o) + (loading ? 1.0 : -1.0) * chi * E1 * friction_coef(h, o);
 }
 
@@ -68,11 +70,13 @@ StaticLoopFit identify_static_loop(const StaticLoop& loop, const ThreeElementOpt
   if (!(o.r0_m > 0))
     throw InputError("the static loop needs the free radius r0 (--r0-mm or tyre.outer_radius_mm)");
   if (!(o.tread_width_m > 0))
-    throw InputError("the static loop needs the tread width B_tr (--tread-width-mm or "
-                     "tread.contact_width_mm)");
+    throw InputError(
+        "the static loop needs the tread width B_tr (--tread-width-mm or "
+        "tread.contact_width_mm)");
   if (!(o.section_height_m > 0))
-    throw InputError("the static loop needs the section height H that eps1 = Delta_P / H "
-                     "refers to (--section-height-mm)");
+    throw InputError(
+        "the static loop needs the section height H that eps1 = Delta_P / H "
+        "refers to (--section-height-mm)");
   int nl = 0, nu = 0;
   for (const auto& r : loop.rows) {
     (r.loading ? nl : nu)++;
@@ -99,8 +103,9 @@ StaticLoopFit identify_static_loop(const StaticLoop& loop, const ThreeElementOpt
   s.E1_se = fit.std_error(0);
   s.chi = fit.coef(1) / fit.coef(0);
   // delta method for chi = c2 / c1 (neglecting the c1-c2 covariance, small for a closed loop)
-  s.chi_se = std::abs(s.chi) * std::sqrt(std::pow(fit.std_error(1) / std::max(1e-300, std::abs(fit.coef(1))), 2) +
-                                         std::pow(s.E1_se / s.E1_Pa, 2));
+  s.chi_se = std::abs(s.chi) *
+             std::sqrt(std::pow(fit.std_error(1) / std::max(1e-300, std::abs(fit.coef(1))), 2) +
+                       std::pow(s.E1_se / s.E1_Pa, 2));
   if (fit.coef(1) == 0) s.chi_se = fit.std_error(1) / s.E1_Pa;
   s.residual_rms_N = fit.residual_rms;
   s.rows = static_cast<int>(n);
@@ -112,8 +117,9 @@ FreeVibrationResult identify_free_vibration(const DecaySignal& signal, const Sta
   if (!(o.mass_kg > 0))
     throw InputError("free-vibration needs the reduced mass m (--mass-kg): tyre + rim + fixture");
   if (!(o.contact_length_m > 0) && !(o.r0_m > 0))
-    throw InputError("free-vibration needs the contact length L_C (--contact-length-mm) or the "
-                     "free radius r0 (--r0-mm or --config) to compute it from h_Z0");
+    throw InputError(
+        "free-vibration needs the contact length L_C (--contact-length-mm) or the "
+        "free radius r0 (--r0-mm or --config) to compute it from h_Z0");
   FreeVibrationResult res;
   res.decay = fit_free_decay(signal);
   const auto& d = res.decay;
@@ -130,8 +136,8 @@ FreeVibrationResult identify_free_vibration(const DecaySignal& signal, const Sta
     lc_note = "L_C = 2 r0 sin(phi1) at the decay's equilibrium deflection h_Z0";
   }
   res.eta1_Pa_s = eta1_eq22(o.mass_kg, d.log_decrement, d.period_s, res.contact_length_m);
-  res.eta1_se = res.eta1_Pa_s * std::hypot(d.log_decrement_se / d.log_decrement,
-                                           d.period_se_s / d.period_s);
+  res.eta1_se =
+      res.eta1_Pa_s * std::hypot(d.log_decrement_se / d.log_decrement, d.period_se_s / d.period_s);
 
   auto& rep = res.report;
   rep.method = "free-vibration";
@@ -148,16 +154,19 @@ FreeVibrationResult identify_free_vibration(const DecaySignal& signal, const Sta
       {"damping_coefficient", 2 * o.mass_kg * d.log_decrement / d.period_s, "N s/m",
        2 * o.mass_kg * d.log_decrement / d.period_s *
            std::hypot(d.log_decrement_se / d.log_decrement, d.period_se_s / d.period_s)}};
-  rep.notes.push_back("period and log decrement from a damped-sine fit to the whole decay; "
-                      "log_decrement_peaks = mean ln(a_i/a_(i+1)) over measured peaks");
+  rep.notes.push_back(
+      "period and log decrement from a damped-sine fit to the whole decay; "
+      "log_decrement_peaks = mean ln(a_i/a_(i+1)) over measured peaks");
   rep.notes.push_back(lc_note);
   if (loop) {
     res.static_fit = identify_static_loop(*loop, o);
     rep.parameters.push_back({"E1", res.static_fit->E1_Pa, "Pa", res.static_fit->E1_se});
     rep.parameters.push_back({"chi", res.static_fit->chi, "-", res.static_fit->chi_se});
     rep.parameters.push_back({"static_residual_rms", res.static_fit->residual_rms_N, "N", 0.0});
-    rep.notes.push_back("E1, chi: least squares of eq. (14) at dh/dt = 0 over both branches of "
-                        "the static loop (" + std::to_string(res.static_fit->rows) + " rows)");
+    rep.notes.push_back(
+        "E1, chi: least squares of eq. (14) at dh/dt = 0 over both branches of "
+        "the static loop (" +
+        std::to_string(res.static_fit->rows) + " rows)");
   }
   return res;
 }

@@ -4,21 +4,23 @@
 #include <cmath>
 
 #include "modaltyre/contact/predictor.h"
-#include "modaltyre/contact/tyre_config.h"
+#include "modaltyre/core/conditions.h"
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/number_format.h"
 
 namespace modaltyre::studies {
 
-using contact::Branch;
 using contact::observable_names;
 using contact::OperatingConditions;
-using contact::Surface;
 using contact::TyreConfig;
 
 const std::vector<std::string>& condition_names() {
-  static const std::vector<std::string> names = {
-      "load_N", "pressure_kPa", "hold_s", "speed_kmh", "branch", "surface", "horizontal_force_N"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& c : condition_catalogue()) n.push_back(c.name);
+    return n;
+  }();
   return names;
 }
 
@@ -28,24 +30,27 @@ std::optional<double> MeasuredRow::value(const std::string& observable) const {
 }
 
 double condition_value(const OperatingConditions& c, const std::string& name) {
-  if (name == "load_N") return c.load_N;
-  if (name == "pressure_kPa") return c.pressure_kPa;
-  if (name == "hold_s") return c.hold_s;
-  if (name == "speed_kmh") return c.speed_kmh;
-  if (name == "branch") return c.branch == Branch::unloading ? 1.0 : 0.0;
-  if (name == "surface") return c.surface == Surface::soil ? 1.0 : 0.0;
-  if (name == "horizontal_force_N") return c.horizontal_force_N;
-  throw std::invalid_argument("unknown condition " + name);
+  const ConditionInfo* info = find_condition(name);
+  if (info == nullptr) throw std::invalid_argument("unknown condition " + name);
+  return contact::condition_value(c, info->id);
 }
 
 MeasurementSet read_measurements(const std::string& path, const TyreConfig& defaults) {
   CsvSchema schema;
   schema.required = {"load_N"};
-  schema.optional = {
-      "pressure_kPa", "hold_s", "speed_kmh", "horizontal_force_N", "branch", "surface",
-      // written by `modaltyre sweep`, ignored here
-      "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations", "valid", "status", "message"};
-  schema.text = {"branch", "surface", "valid", "status", "message"};
+  // Numbers first, then words: the order the "expected:" list of an unknown column shows.
+  for (const bool text : {false, true}) {
+    for (const auto& c : condition_catalogue()) {
+      if (c.id == ConditionId::load_N || c.is_text() != text) continue;
+      schema.optional.push_back(c.name);
+      if (text) schema.text.push_back(c.name);
+    }
+  }
+  // written by `modaltyre sweep`, ignored here
+  for (const char* c :
+       {"vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations", "valid", "status", "message"})
+    schema.optional.push_back(c);
+  for (const char* c : {"valid", "status", "message"}) schema.text.push_back(c);
   for (const auto& o : observable_names()) schema.optional.push_back(o);
   // A failed sweep row has empty number cells: the status check below names it before they
   // are read.
@@ -84,59 +89,23 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
     }
     r.conditions = defaults.default_conditions(t.number(i, "load_N"));
     OperatingConditions& c = r.conditions;
-    // The tyre config's limits (loads_N, horizontal_force_N): beyond them a unit error, and the
-    // solver would fail on it instead of the reader saying so.
-    if (!(c.load_N >= contact::kMinLoad_N && c.load_N <= contact::kMaxLoad_N)) {
-      throw InputError(at("load_N"), "load must be in [1e-6, 1e7] N");
-    }
-    if (t.has("pressure_kPa")) {
-      c.pressure_kPa = t.number(i, "pressure_kPa");
-      if (!(c.pressure_kPa > 0 && c.pressure_kPa <= 2000)) {
-        throw InputError(at("pressure_kPa"), "inflation pressure must be in (0, 2000] kPa");
-      }
-    }
-    if (t.has("hold_s")) {
-      c.hold_s = t.number(i, "hold_s");
-      // The sweep's limit on condition values: 1e7 s (116 days) is far past any creep.
-      if (!(c.hold_s >= 0 && c.hold_s <= 1e7)) {
-        throw InputError(at("hold_s"), "hold time must be in [0, 1e7] s");
-      }
-    }
-    if (t.has("speed_kmh")) {
-      c.speed_kmh = t.number(i, "speed_kmh");
-      if (!(c.speed_kmh >= 0 && c.speed_kmh <= 400)) {
-        throw InputError(at("speed_kmh"), "speed must be in [0, 400] km/h");
-      }
-    }
-    if (t.has("horizontal_force_N")) {
-      c.horizontal_force_N = t.number(i, "horizontal_force_N");
-      if (!(std::abs(c.horizontal_force_N) <= 1e7)) {
-        throw InputError(at("horizontal_force_N"), "horizontal force must be in [-1e7, 1e7] N");
-      }
-      if (defaults.footprint_3d && c.horizontal_force_N != 0) {
-        throw InputError(at("horizontal_force_N"),
-                         "the config's 3D patch (footprint_3d) takes no horizontal force");
-      }
-    }
-    if (t.has("branch")) {
-      const std::string& b = t.text(i, "branch");
-      if (b == "load" || b == "loading") {
-        c.branch = Branch::loading;
-      } else if (b == "unload" || b == "unloading") {
-        c.branch = Branch::unloading;
+    for (const auto& info : condition_catalogue()) {
+      if (!t.has(info.name)) continue;
+      double v = 0;
+      if (info.is_text()) {
+        const std::string& word = t.text(i, info.name);
+        const auto value = info.value_of(word);
+        if (!value) throw InputError(at(info.name), info.refusal(word));
+        v = *value;
       } else {
-        throw InputError(at("branch"), "'" + printable(b) + "' is not one of: load, unload");
+        v = t.number(i, info.name);
+        if (!info.in_range(v)) throw InputError(at(info.name), info.refusal(number_text(v)));
       }
+      contact::set_condition(c, info.id, v);
     }
-    if (t.has("surface")) {
-      const std::string& s = t.text(i, "surface");
-      if (s == "rigid") {
-        c.surface = Surface::rigid;
-      } else if (s == "soil") {
-        c.surface = Surface::soil;
-      } else {
-        throw InputError(at("surface"), "'" + printable(s) + "' is not one of: rigid, soil");
-      }
+    if (defaults.footprint_3d && t.has("horizontal_force_N") && c.horizontal_force_N != 0) {
+      throw InputError(at("horizontal_force_N"),
+                       "the config's 3D patch (footprint_3d) takes no horizontal force");
     }
     for (const auto& o : set.observables) {
       const double v = t.number(i, o);

@@ -19,21 +19,8 @@ constexpr std::size_t kMaxCases = 10'000'000;
 
 // Sets one (checked) condition of a case.
 void apply_condition(const std::string& key, const SweepValue& v, OperatingConditions& c) {
-  if (key == "branch") {
-    c.branch = *branch_named(v.text);
-  } else if (key == "surface") {
-    c.surface = *surface_named(v.text);
-  } else if (key == "load_N") {
-    c.load_N = *v.number;
-  } else if (key == "horizontal_force_N") {
-    c.horizontal_force_N = *v.number;
-  } else if (key == "pressure_kPa") {
-    c.pressure_kPa = *v.number;
-  } else if (key == "hold_s") {
-    c.hold_s = *v.number;
-  } else if (key == "speed_kmh") {
-    c.speed_kmh = *v.number;
-  }
+  const ConditionInfo& info = *find_condition(key);
+  set_condition(c, info.id, info.is_text() ? *info.value_of(v.text) : *v.number);
 }
 
 // A cell of the CSV as read_measurements() reads it back: numbers with %.10g, text as written.

@@ -2,20 +2,15 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <utility>
 
-#include "modaltyre/contact/effects.h"
-#include "modaltyre/contact/tyre_config.h"
+#include "modaltyre/core/conditions.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/csv.h"
 
 namespace modaltyre::studies {
-
-using namespace contact;
 
 namespace {
 
@@ -106,45 +101,22 @@ void flatten_grid(const YAML::Node& node, const std::string& prefix, const std::
   }
 }
 
-// A numeric condition: a finite number within the range read_measurements() accepts, so that a
-// sweep never writes a file that cannot be read back as measured data.
-void check_number(const std::string& key, const SweepValue& v, const InputLocation& at) {
-  if (!v.number) throw InputError(at, "expected a finite number, got '" + v.text + "'");
-  const double x = *v.number;
-  if (key == "load_N" && !(x >= contact::kMinLoad_N && x <= contact::kMaxLoad_N)) {
-    throw InputError(at, "every load must be in [1e-6, 1e7] N, got " + v.text);
-  }
-  if (key == "pressure_kPa" && !(x > 0 && x <= 2000)) {
-    throw InputError(at, "inflation pressure must be in (0, 2000] kPa, got " + v.text);
-  }
-  if (key == "hold_s" && !(x >= 0)) throw InputError(at, "hold time must be >= 0 s, got " + v.text);
-  if (key == "speed_kmh" && !(x >= 0 && x <= 400)) {
-    throw InputError(at, "speed must be in [0, 400] km/h, got " + v.text);
-  }
-  if (std::abs(x) > 1e7) {
-    throw InputError(at, "value " + v.text + " is out of range [-1e7, 1e7]");
-  }
-}
-
-// A condition value, named at the line of the value itself when it has one.
-void check_condition(const std::string& key, const SweepValue& v, const InputLocation& where) {
+// A condition value, named at the line of the value itself when it has one: a word of the
+// catalogue's, or a finite number within its range (the range read_measurements() accepts, so
+// that a sweep never writes a file that cannot be read back as measured data).
+void check_condition(const ConditionInfo& info, const SweepValue& v, const InputLocation& where) {
   const InputLocation at{where.file, v.line > 0 ? v.line : where.line, where.key};
-  if (key == "branch") {
-    if (!branch_named(v.text)) throw InputError(at, "'" + v.text + "' is not one of: load, unload");
-  } else if (key == "surface") {
-    if (!surface_named(v.text)) throw InputError(at, "'" + v.text + "' is not one of: rigid, soil");
-  } else {
-    check_number(key, v, at);
+  if (info.is_text()) {
+    if (!info.value_of(v.text)) throw InputError(at, info.refusal(v.text));
+    return;
   }
+  if (!v.number) throw InputError(at, "expected a finite number, got '" + v.text + "'");
+  if (!info.in_range(*v.number)) throw InputError(at, info.refusal(v.text));
 }
 
 }  // namespace
 
-bool is_sweep_condition(const std::string& key) {
-  static const std::vector<std::string> keys = {
-      "load_N", "horizontal_force_N", "pressure_kPa", "hold_s", "speed_kmh", "branch", "surface"};
-  return std::find(keys.begin(), keys.end(), key) != keys.end();
-}
+bool is_sweep_condition(const std::string& key) { return find_condition(key) != nullptr; }
 
 SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
                            const std::vector<std::string>& overrides) {
@@ -226,11 +198,11 @@ SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
                                       "); give it in one place only");
       }
     }
-    if (is_sweep_condition(a.key)) check_condition(a.key, a.value, a.where);
+    if (const ConditionInfo* info = find_condition(a.key)) check_condition(*info, a.value, a.where);
   }
   for (const auto& axis : spec.grid) {
     if (!axis.condition) continue;
-    for (const auto& v : axis.values) check_condition(axis.key, v, axis.where);
+    for (const auto& v : axis.values) check_condition(*find_condition(axis.key), v, axis.where);
   }
   return spec;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// Switchable model effects (section `effects:` of the tyre config) and the operating conditions
-// a measurement row or sweep case is taken at.
+// Switchable model effects (section `effects:` of the tyre config); the operating conditions
+// they act through are in operating_conditions.h.
 //
 // Every effect is off by default; `effects.NAME.enabled: true` switches it on. Parameters are
 // stored in the units their keys name (kPa, mm, s, N, MPa). What each effect does to the static
@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/contact/operating_conditions.h"
 #include "modaltyre/core/config_tree.h"
 
 namespace modaltyre::contact {
@@ -129,28 +130,8 @@ const EffectInfo& effect_info(EffectId id);
 /// nullptr if no effect has that name.
 const EffectInfo* find_effect(const std::string& name);
 
-/// Conditions of one measurement row or sweep case (defaults: the config's).
-enum class Branch { loading, unloading };
-enum class Surface { rigid, soil };
-
-struct OperatingConditions {
-  double load_N = 0;
-  double horizontal_force_N = 0;
-  double pressure_kPa = 230;
-  double hold_s = 0;     ///< time the load has been held (0: measured right after loading)
-  double speed_kmh = 0;  ///< rolling speed (0: standing)
-  Branch branch = Branch::loading;
-  Surface surface = Surface::rigid;
-};
-
 /// Reads section `effects:` (unknown effect or parameter names, values outside the catalogue's
 /// [min, max] -> InputError naming file, line and key).
 EffectsConfig read_effects(const ConfigSection& effects);
-
-const char* branch_name(Branch b);
-const char* surface_name(Surface s);
-/// The branch or surface that branch_name() / surface_name() call `name`; nullopt for any other.
-std::optional<Branch> branch_named(const std::string& name);
-std::optional<Surface> surface_named(const std::string& name);
 
 }  // namespace modaltyre::contact

@@ -8,7 +8,8 @@
 // A static loop (loading and unloading branches, dh/dt ~ 0) gives E1 (eq. 17) and chi (eq. 18);
 // a free damped vibration gives eta1 = 2 m ln(a_i/a_(i+1)) / (T L_C)               eq. (22).
 //
-// Static file format: load_N,deflection_mm,branch with branch "loading" or "unloading".
+// Static file format: load_N,deflection_mm,branch with branch "loading" or "unloading" (or
+// "load", "unload": the words of core/conditions.h), optional pressure_kPa.
 #include <optional>
 #include <string>
 #include <vector>

@@ -2,9 +2,9 @@
 // Measured footprint data with operating conditions: the input of `validate` and `discover`.
 //
 // CSV columns (header names, any order):
-//   conditions   load_N (required, > 0), optional pressure_kPa (> 0), hold_s (>= 0),
-//                speed_kmh (>= 0), horizontal_force_N, branch (load | unload),
-//                surface (rigid | soil)
+//   conditions   load_N (required), optional pressure_kPa, hold_s, speed_kmh,
+//                horizontal_force_N, branch (load | unload), surface (rigid | soil): units,
+//                ranges and words of the condition catalogue (core/conditions.h)
 //   observables  any of sinking_mm, length_mm, width_mm (> 0), rolling_resistance_N
 // Missing optional condition columns take the config's values (TyreConfig::default_conditions).
 // Columns `modaltyre sweep` writes beside them (vertical_stiffness_N_mm, peak_pressure_kPa,
@@ -41,7 +41,8 @@ struct MeasurementSet {
   bool loads_only = false;
 };
 
-/// The condition column names, in the order discover reports them.
+/// The condition column names (the catalogue's, core/conditions.h), in the order discover
+/// reports them.
 const std::vector<std::string>& condition_names();
 
 /// Value of a condition as a number (branch: 0 load / 1 unload; surface: 0 rigid / 1 soil).

@@ -17,13 +17,14 @@
 //     load_N: [2131, 3261, 5478]
 //   output: table3_loads.csv            # CSV path (required unless the caller gives one)
 //
-// Condition keys (the operating conditions of effects.h, the columns of measurements.h):
-//   load_N              vertical load [N], > 0; required in grid or set
-//   horizontal_force_N  horizontal force at the axle [N]
+// Condition keys (the catalogue of core/conditions.h: the columns of measurements.h, the
+// fields of contact::OperatingConditions; ranges and words checked against it):
+//   load_N              vertical load [N], in (0, 1e7]; required in grid or set
+//   horizontal_force_N  horizontal force at the axle [N], in [-1e7, 1e7]
 //   pressure_kPa        inflation pressure [kPa], in (0, 2000]
-//   hold_s              time the load has been held [s], >= 0
+//   hold_s              time the load has been held [s], in [0, 1e7]
 //   speed_kmh           rolling speed [km/h], in [0, 400]
-//   branch              load | unload (text)
+//   branch              load | unload (text; also loading | unloading)
 //   surface             rigid | soil (text)
 // A condition not given takes the base config's value (TyreConfig::default_conditions: its
 // horizontal_force_N and inflation pressure, no hold, standing, loading branch, rigid road).
@@ -80,8 +81,8 @@ struct SweepSpec {
   InputLocation output_where;
 };
 
-/// The condition columns a sweep understands (load_N, horizontal_force_N, pressure_kPa, hold_s,
-/// speed_kmh, branch, surface).
+/// An operating condition of the catalogue (load_N, horizontal_force_N, pressure_kPa, hold_s,
+/// speed_kmh, branch, surface), not a config key.
 bool is_sweep_condition(const std::string& key);
 
 /// Reads a sweep file; `overrides` ("dotted.key=value", e.g. from --set) apply to every case
