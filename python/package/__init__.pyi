@@ -58,3 +58,20 @@ def discover(
     overrides: dict[str, Any] = ...,
     threads: Optional[int] = None,
 ) -> dict[str, Any]: ...
+def identify(
+    method: str,
+    path: Optional[str] = None,
+    *,
+    config: Optional[str] = None,
+    r0_mm: Optional[float] = None,
+    tread_width_mm: Optional[float] = None,
+    mass_kg: Optional[float] = None,
+    contact_length_mm: Optional[float] = None,
+    section_height_mm: Optional[float] = None,
+    pressure_kPa: Optional[float] = None,
+    static: Optional[str] = None,
+    samples: int = 6,
+    sampling: str = "deflection",
+    intercept: bool = False,
+    max_h_r0: float = 0.117,
+) -> dict[str, Any]: ...

@@ -7,7 +7,8 @@ namespace modaltyre::python {
 
 namespace py = pybind11;
 
-void bind_tyre(py::module_& m);     // Tyre, Footprint, fit_modes
-void bind_studies(py::module_& m);  // validate, sweep, transient, effects, discover, identify
+void bind_tyre(py::module_& m);      // Tyre, Footprint, fit_modes
+void bind_studies(py::module_& m);   // validate, sweep, transient, effects, discover
+void bind_identify(py::module_& m);  // identify
 
 }  // namespace modaltyre::python
