@@ -8,6 +8,7 @@
 #include "footprint_map.h"
 #include "footprint_report.h"
 #include "modaltyre/contact/predictor.h"
+#include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/report/footprint_json.h"
 
@@ -37,7 +38,10 @@ void register_footprint(CLI::App& app) {
   cmd->add_option("CONFIG", a->config, "tyre config (YAML), e.g. configs/sf350.yaml")->required();
   // The ranges of the config's loads_N and horizontal_force_N (README, "Input ranges").
   cmd->add_option("--load", a->loads, "vertical load [N]; repeat for several (default: loads_N)")
-      ->check(physical_range(0, 1e7, "N", "1e7 N (1000 t on one wheel) exceeds any tyre"));
+      ->check(physical_range(contact::kMinLoad_N, contact::kMaxLoad_N, "N",
+                             "below 1e-6 N no contact forms; 1e7 N (1000 t on one wheel) "
+                             "exceeds any tyre",
+                             true));
   cmd->add_option("--fx", a->horizontal, "horizontal force at the axle [N], forward positive")
       ->check(physical_range(-1e7, 1e7, "N", "1e7 N exceeds any tyre", true));
   cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");

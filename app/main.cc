@@ -57,22 +57,26 @@ int main(int argc, char** argv) {
     }
   }
 
-  try {
-    app.parse(argc, argv);
-    // A result printed to a full disk or a closed pipe must not end with exit 0.
+  // A result (or the help text) printed to a full disk or a closed pipe must not end with exit 0.
+  auto stdout_written = [](int code) {
     std::cout.flush();
-    if (!std::cout) {
+    if (code == 0 && !std::cout) {
       std::cerr << "error: writing the result to standard output failed (disk full?)\n";
       return 2;
     }
+    return code;
+  };
+  try {
+    app.parse(argc, argv);
+    return stdout_written(0);
   } catch (const modaltyre::app::QuietExit& e) {
     return e.code;
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return stdout_written(app.exit(e));
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return stdout_written(app.exit(e));
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return stdout_written(app.exit(e));
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return 2;
@@ -89,5 +93,4 @@ int main(int argc, char** argv) {
     std::cerr << "internal error: " << e.what() << "\n";
     return 1;
   }
-  return 0;
 }

@@ -1,6 +1,7 @@
 #include "modaltyre/contact/tyre_config.h"
 
 #include <cmath>
+#include <filesystem>
 
 namespace modaltyre::contact {
 
@@ -53,7 +54,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   c.solver.max_iterations = static_cast<int>(solver.integer("max_iterations", 200, 1, 100000));
   c.solver.gap_tolerance = solver.number("gap_tolerance", 1e-10, 1e-15, 1e-2);
 
-  c.loads_N = root.numbers("loads_N", {2131, 3261, 5478, 6502, 7322, 8321}, 1e-6, 1e7);
+  c.loads_N = root.numbers("loads_N", {2131, 3261, 5478, 6502, 7322, 8321}, kMinLoad_N, kMaxLoad_N);
   for (double f : c.loads_N) {
     if (!(f > 0)) root.fail("loads_N", "every load must be greater than 0 N");
   }
@@ -134,6 +135,17 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
     }
   }
   tree.reject_unknown_keys();
+  // Named at the config's line (the hammer reader alone could only name the path), after every
+  // key is read so that a bad key is reported first.
+  std::error_code ec;
+  const auto hammer_type = std::filesystem::status(c.hammer_csv, ec).type();
+  if (hammer_type == std::filesystem::file_type::not_found) {
+    modal.fail("hammer_csv", "'" + c.hammer_csv +
+                                 "' not found (a relative path is taken from the config's folder)");
+  }
+  if (hammer_type != std::filesystem::file_type::regular) {
+    modal.fail("hammer_csv", "'" + c.hammer_csv + "' is not a regular file (a folder or device?)");
+  }
   return c;
 }
 

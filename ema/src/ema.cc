@@ -112,9 +112,11 @@ void drop_insignificant(EmaResult& res, const EmaOptions& options) {
 }  // namespace
 
 void EmaOptions::validate() const {
+  // Up to 1e5 Hz, the FRF lines' limit (frf_set.cc): a band beyond any line is a typing error.
   if (band_lo_hz < 0 || band_hi_hz < 0 || (band_hi_hz > 0 && band_hi_hz <= band_lo_hz) ||
-      !std::isfinite(band_lo_hz) || !std::isfinite(band_hi_hz)) {
-    throw InputError({"--band", 0, ""}, "the band must be LO:HI with 0 <= LO < HI [Hz]");
+      !std::isfinite(band_lo_hz) || !std::isfinite(band_hi_hz) || band_hi_hz > 1e5) {
+    throw InputError({"--band", 0, ""},
+                     "the band must be LO:HI with 0 <= LO < HI <= 1e5 [Hz] (the FRF lines' range)");
   }
   if (max_order < 4 || max_order > kMaxOrder) {
     throw InputError({"--max-order", 0, ""},

@@ -15,9 +15,11 @@ SlopeFactorResult compute_slope_factors(const SlopeFactorOptions& o) {
     throw InputError({"--samples", 0, "samples"}, "need 3 to " + std::to_string(kMaxSlopeSamples) +
                                                       " samples, got " + std::to_string(o.samples));
   }
-  if (!(o.max_relative_deflection > 0 && o.max_relative_deflection < 1))
+  // Below 1e-4 (0.03 mm on a 300 mm tyre) the samples' powers of phi underflow towards zero and
+  // the fit's design loses its columns: an input error, not a failed computation.
+  if (!(o.max_relative_deflection >= kMinRelativeDeflection && o.max_relative_deflection < 1))
     throw InputError({"--max-h-r0", 0, "max_relative_deflection"},
-                     "the range of h_Z/r0 must be in (0, 1)");
+                     "the range of h_Z/r0 must be in [1e-4, 1)");
   SlopeFactorResult res;
   const double phi_max = std::acos(1.0 - o.max_relative_deflection);
   for (int i = 0; i < o.samples; ++i) {
@@ -27,8 +29,8 @@ SlopeFactorResult compute_slope_factors(const SlopeFactorOptions& o) {
                            : u * phi_max;
     res.phi1.push_back(phi);
     res.y.push_back(deflection_power(phi));
-    res.x1.push_back(kelvin_voigt_load_function(phi));   // seed 000 eq. (6)
-    res.x2.push_back(arc_stress_load_function(phi));     // seed 000 eq. (10)
+    res.x1.push_back(kelvin_voigt_load_function(phi));  // seed 000 eq. (6)
+    res.x2.push_back(arc_stress_load_function(phi));    // seed 000 eq. (10)
   }
   const int n = o.samples;
   const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(res.y.data(), n);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "modaltyre/contact/predictor.h"
+#include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 
@@ -83,10 +84,11 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
     }
     r.conditions = defaults.default_conditions(t.number(i, "load_N"));
     OperatingConditions& c = r.conditions;
-    if (!(c.load_N > 0)) throw InputError(at("load_N"), "load must be > 0 N");
     // The tyre config's limits (loads_N, horizontal_force_N): beyond them a unit error, and the
     // solver would fail on it instead of the reader saying so.
-    if (c.load_N > 1e7) throw InputError(at("load_N"), "load must be at most 1e7 N");
+    if (!(c.load_N >= contact::kMinLoad_N && c.load_N <= contact::kMaxLoad_N)) {
+      throw InputError(at("load_N"), "load must be in [1e-6, 1e7] N");
+    }
     if (t.has("pressure_kPa")) {
       c.pressure_kPa = t.number(i, "pressure_kPa");
       if (!(c.pressure_kPa > 0 && c.pressure_kPa <= 2000)) {

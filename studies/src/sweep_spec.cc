@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "modaltyre/contact/effects.h"
+#include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/csv.h"
 
@@ -110,8 +111,8 @@ void flatten_grid(const YAML::Node& node, const std::string& prefix, const std::
 void check_number(const std::string& key, const SweepValue& v, const InputLocation& at) {
   if (!v.number) throw InputError(at, "expected a finite number, got '" + v.text + "'");
   const double x = *v.number;
-  if (key == "load_N" && !(x > 0)) {
-    throw InputError(at, "every load must be greater than 0 N, got " + v.text);
+  if (key == "load_N" && !(x >= contact::kMinLoad_N && x <= contact::kMaxLoad_N)) {
+    throw InputError(at, "every load must be in [1e-6, 1e7] N, got " + v.text);
   }
   if (key == "pressure_kPa" && !(x > 0 && x <= 2000)) {
     throw InputError(at, "inflation pressure must be in (0, 2000] kPa, got " + v.text);
@@ -171,8 +172,12 @@ SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
       spec.base_config = resolve(kv.second.Scalar());
       spec.base_where = where;
       std::error_code ec;
-      if (!fs::is_regular_file(spec.base_config, ec)) {
+      if (!fs::exists(spec.base_config, ec)) {
         throw InputError(where, "tyre config '" + spec.base_config + "' not found");
+      }
+      if (!fs::is_regular_file(spec.base_config, ec)) {
+        throw InputError(where, "tyre config '" + spec.base_config +
+                                    "' is not a regular file (a folder or device?)");
       }
       have_base = true;
     } else if (key == "set") {

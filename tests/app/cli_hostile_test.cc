@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -165,18 +166,23 @@ TEST_F(CliHostile, DottedKeyInAConfigAndTwiceInASweepSet) {
                      {s + ":4: set.tread.modulus_MPa: ", "twice in set (first at line 3)"});
 }
 
-// Issue 16 item 4: a result printed onto a full disk (here /dev/full) is a failure, not exit 0.
+// Issue 16 item 4: a result printed onto a full disk (here /dev/full) is a failure, not exit 0;
+// so is the help text (the audit found --help and --version exiting 0 there).
 TEST_F(CliHostile, StdoutOnAFullDiskIsAnError) {
-  const std::string cmd = modaltyre_test::quote(MODALTYRE_CLI) + " footprint " +
-                          modaltyre_test::quote(kConfig) + " --load 3000 >/dev/full 2>" +
-                          modaltyre_test::quote((dir_ / "err.txt").string());
-  const int status = std::system(cmd.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 2);
-  EXPECT_NE(modaltyre_test::slurp(dir_ / "err.txt")
-                .find("writing the result to standard output "
-                      "failed"),
-            std::string::npos);
+  const std::vector<std::string> commands = {
+      " footprint " + modaltyre_test::quote(kConfig) + " --load 3000", " --help",
+      " footprint --help", " --version"};
+  for (const std::string& args : commands) {
+    const std::string cmd = modaltyre_test::quote(MODALTYRE_CLI) + args + " >/dev/full 2>" +
+                            modaltyre_test::quote((dir_ / "err.txt").string());
+    const int status = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 2) << args;
+    EXPECT_NE(modaltyre_test::slurp(dir_ / "err.txt")
+                  .find("writing the result to standard output failed"),
+              std::string::npos)
+        << args;
+  }
 }
 
 // Issue 16 item 3: step counts and sizes from options are bounded with a message naming the
@@ -229,7 +235,7 @@ TEST_F(CliHostile, HammerFilesWithManyPointsAreFitted) {
 TEST_F(CliHostile, ExtremeNumbersAreInputErrorsWithTheirRange) {
   const std::string rh = kSrc + "/tests/data/rheology/";
   expect_input_error(run_limited({"footprint", kConfig, "--load", "1e308"}),
-                     {"--load", "1e308 is outside (0, 1e7] N"});
+                     {"--load", "1e308 is outside [1e-6, 1e7] N"});
   expect_input_error(run_limited({"footprint", kConfig, "--load", "nan"}),
                      {"--load", "is not a finite number"});
   expect_input_error(run_limited({"footprint", kConfig, "--load", "5000", "--fx", "-1e308"}),
@@ -273,4 +279,47 @@ TEST_F(CliHostile, ExtremeNumbersAreInputErrorsWithTheirRange) {
   const std::string held = write("held.csv", "load_N,hold_s,sinking_mm\n2000,0,8\n3000,1e308,12\n");
   expect_input_error(run_limited({"validate", kConfig, held}),
                      {held, ":3", "hold_s", "[0, 1e7] s"});
+}
+
+// Issue 16 audit ("Done when", checked at check time): the other end of the ranges and the
+// inputs that only the config names. A load of 1e-300 N printed a mean pressure of inf on the 3D
+// patch (exit 0); --max-h-r0 1e-308 failed as a computation (exit 1); --band 80:1e308 was taken;
+// a config's hammer file that is a device or missing, and a sweep's base: that is a device, were
+// named without the config's line and key (or as "not found").
+TEST_F(CliHostile, TinyAndOutOfRangeNumbersAreInputErrors) {
+  const std::string sweep = write("tiny.yaml", "base: " + kConfig +
+                                                   "\ngrid:\n  load_N: [2000, 1e-300]\n"
+                                                   "output: o.csv\n");
+  expect_input_error(run_limited({"footprint", kSrc + "/configs/sf350.yaml", "--load", "1e-300"}),
+                     {"--load", "1e-300 is outside [1e-6, 1e7] N", "no contact"});
+  expect_input_error(run_limited({"sweep", sweep}),
+                     {sweep + ":3", "grid.load_N", "[1e-6, 1e7] N, got 1e-300"});
+  expect_input_error(run_limited({"identify", "b-factors", "--max-h-r0", "1e-308"}),
+                     {"--max-h-r0", "[1e-4, 1)"});
+  // The bundled hammer data as FRFs: three lines are enough to reach the band check.
+  const std::string frf = write("frf.csv",
+                                "response_point,response_dir,reference_point,reference_dir,"
+                                "freq_hz,re,im\n1,radial,1,radial,100,1,0\n"
+                                "1,radial,1,radial,101,1,0\n1,radial,1,radial,102,1,0\n");
+  expect_input_error(run_limited({"ema", frf, "--band", "80:1e308"}), {"--band", "1e5"});
+}
+
+TEST_F(CliHostile, ANonFileThatTheConfigNamesIsRefusedAtItsKey) {
+  std::ifstream in(kConfig);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find("hammer_csv: ");
+  ASSERT_NE(at, std::string::npos);
+  const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+  const auto eol = text.find('\n', at);
+  const std::vector<std::string> targets = {"/dev/zero", (dir_ / "missing.csv").string()};
+  for (const std::string& target : targets) {
+    const std::string cfg =
+        write("device.yaml", text.substr(0, at) + "hammer_csv: " + target + text.substr(eol));
+    expect_input_error(run_limited({"footprint", cfg}),
+                       {cfg + ":" + std::to_string(line), "modal.hammer_csv", target});
+  }
+  const std::string sweep =
+      write("base_device.yaml", "base: /dev/zero\ngrid:\n  load_N: [2000]\noutput: o.csv\n");
+  expect_input_error(run_limited({"sweep", sweep}),
+                     {sweep + ":1", "base", "/dev/zero' is not a regular file"});
 }

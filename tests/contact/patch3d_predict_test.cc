@@ -122,6 +122,9 @@ struct RefusedCase {
   std::string key;  ///< the key the error must name
 };
 
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const RefusedCase& c, std::ostream* os) { *os << c.name; }
+
 class Patch3dRefuses : public ::testing::TestWithParam<RefusedCase> {};
 
 TEST_P(Patch3dRefuses, TheConfigReaderNamesTheKeyAndTheReason) {

@@ -187,8 +187,9 @@ TEST_F(Measurements, NaNAndInfinity) {
 }
 
 TEST_F(Measurements, ZeroOrNegativeLoad) {
-  expect_refused(with_cell(kHeader, kRow, "0,15,110,130\n"), 3, "load_N", "> 0");
-  expect_refused(with_cell(kHeader, kRow, "-4000,15,110,130\n"), 3, "load_N", "> 0");
+  expect_refused(with_cell(kHeader, kRow, "0,15,110,130\n"), 3, "load_N", "[1e-6, 1e7] N");
+  expect_refused(with_cell(kHeader, kRow, "-4000,15,110,130\n"), 3, "load_N", "[1e-6, 1e7] N");
+  expect_refused(with_cell(kHeader, kRow, "1e-300,15,110,130\n"), 3, "load_N", "[1e-6, 1e7] N");
 }
 
 TEST_F(Measurements, ZeroOrNegativeSinkingLengthWidth) {

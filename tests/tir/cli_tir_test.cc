@@ -60,6 +60,9 @@ struct Refusal {
   const char* says;  ///< the expected "file:line: key" or sentence
 };
 
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const Refusal& c, std::ostream* os) { *os << c.name; }
+
 class TirCliRefuses : public modaltyre_test::CliFixture,
                       public ::testing::WithParamInterface<Refusal> {};
 

@@ -128,6 +128,9 @@ struct BadMf {
   const char* says;
 };
 
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const BadMf& c, std::ostream* os) { *os << c.name; }
+
 class MfTyreRefuses : public ::testing::TestWithParam<BadMf> {};
 
 TEST_P(MfTyreRefuses, NamingLineAndKey) {

@@ -79,6 +79,9 @@ struct BadTir {
   const char* says;
 };
 
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const BadTir& c, std::ostream* os) { *os << c.name; }
+
 class TirReaderRefuses : public ::testing::TestWithParam<BadTir> {};
 
 TEST_P(TirReaderRefuses, NamingFileLineAndKey) {

@@ -63,6 +63,12 @@ struct TransientSettings {
   } cleat;
 };
 
+/// The vertical loads every input takes [N] (loads_N, --load, measured and swept load_N): below
+/// 1e-6 N a footprint is numerically no contact (the 3D patch's equilibrium fails under ~1e-12 N:
+/// a mean pressure of inf), above 1e7 N (1000 t on one wheel) no tyre.
+constexpr double kMinLoad_N = 1e-6;
+constexpr double kMaxLoad_N = 1e7;
+
 struct TyreConfig {
   std::string source;  ///< config file path
   std::string name = "tyre";
