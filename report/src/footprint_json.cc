@@ -15,8 +15,12 @@ std::vector<contact::OperatingConditions> footprint_cases(
   std::vector<contact::OperatingConditions> cases;
   const double fx = horizontal_force_N ? *horizontal_force_N : config.horizontal_force_N;
   for (double f : loads_N.empty() ? config.loads_N : loads_N) {
-    if (!(f > 0) || !std::isfinite(f)) {
-      throw InputError({"--load", 0, ""}, "vertical load must be a finite number > 0 N");
+    // The range of the config's loads_N (contact/tyre_config.h), for callers without the CLI's
+    // check of --load.
+    if (!(f >= contact::kMinLoad_N && f <= contact::kMaxLoad_N)) {
+      throw InputError({"--load", 0, ""},
+                       "vertical load must be a number in [1e-06, 1e+07] N (below 1e-6 N no "
+                       "contact forms; 1e7 N exceeds any tyre)");
     }
     if (config.footprint_3d && fx != 0) {
       throw InputError({"--fx", 0, ""},

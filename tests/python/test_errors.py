@@ -30,8 +30,9 @@ def test_bad_override_and_bad_load(modaltyre):
     with pytest.raises(modaltyre.InputError, match=re.escape("tread.modulus_MPa")):
         modaltyre.Tyre(src("configs", "sf350_2d_table3.yaml"), {"tread.modulus_MPa": -1})
     tyre = modaltyre.Tyre(src("configs", "sf350_2d_table3.yaml"))
-    with pytest.raises(modaltyre.InputError, match="--load"):
-        tyre.footprint(-5.0)
+    for load in (-5.0, 1e-9, 2e7, float("nan")):
+        with pytest.raises(modaltyre.InputError, match="--load"):
+            tyre.footprint(load)
     with pytest.raises(modaltyre.InputError, match="1.5 F_z"):
         tyre.footprint(1000.0, 5000.0)
 

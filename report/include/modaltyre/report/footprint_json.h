@@ -13,8 +13,9 @@
 namespace modaltyre::report {
 
 /// One case per load at the config's default conditions, with `horizontal_force_N` (the
-/// config's when absent). InputError (naming --load or --fx) for a load that is not finite and
-/// > 0, a horizontal force on the 3D patch, or |F_x| > 1.5 F_z (no adhesion carries more).
+/// config's when absent). InputError (naming --load or --fx) for a load outside
+/// [kMinLoad_N, kMaxLoad_N], a horizontal force on the 3D patch, or |F_x| > 1.5 F_z (no adhesion
+/// carries more).
 std::vector<contact::OperatingConditions> footprint_cases(const contact::TyreConfig& config,
                                                           const std::vector<double>& loads_N,
                                                           std::optional<double> horizontal_force_N);
