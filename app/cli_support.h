@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "modaltyre/core/number_format.h"
+#include "modaltyre/report/check_finite.h"
 
 namespace modaltyre::app {
 
@@ -21,7 +22,7 @@ struct QuietExit {
 void print_json(const nlohmann::json& j);
 
 /// Throws ComputationError if any number in the document is not finite.
-void check_finite(const nlohmann::json& j, const std::string& where = "output");
+using report::check_finite;
 
 /// A CLI11 check of a number option: finite and in (lo, hi] (or [lo, hi] with `lo_inclusive`).
 /// The message states the range, the unit and why the range is physical (`why`); CLI::Range

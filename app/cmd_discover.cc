@@ -22,6 +22,7 @@
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/core/progress.h"
 #include "modaltyre/discover/discover.h"
+#include "modaltyre/report/discover_json.h"
 #include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::app {
@@ -41,47 +42,6 @@ struct DiscoverArgs {
   int max_effects = 2;
   int exact_rows = 64;
 };
-
-
-nlohmann::json values(const std::map<std::string, double>& m) {
-  nlohmann::json j = nlohmann::json::object();
-  for (const auto& kv : m) j[kv.first] = round_sig(kv.second, 8);
-  return j;
-}
-
-// Standard errors: null when a parameter is not identifiable from the data.
-nlohmann::json errors(const std::map<std::string, double>& m) {
-  nlohmann::json j = nlohmann::json::object();
-  for (const auto& kv : m) {
-    j[kv.first] = std::isfinite(kv.second) ? nlohmann::json(round_sig(kv.second, 4))
-                                           : nlohmann::json(nullptr);
-  }
-  return j;
-}
-
-nlohmann::json candidates_json(const std::vector<discover::CandidateScore>& cs, bool with_limits) {
-  nlohmann::json a = nlohmann::json::array();
-  for (const auto& c : cs) {
-    nlohmann::json j = {{"name", c.name}, {"testable", c.testable}};
-    if (with_limits) put_limit(c, j);
-    if (c.testable) {
-      j["delta_bic"] = round_sig(c.delta_bic, 6);
-      j["cv_rms_before"] = round_sig(c.cv_rms_before, 6);
-      j["cv_rms_after"] = round_sig(c.cv_rms_after, 6);
-      j["rms_after"] = round_sig(c.rms_after, 6);
-      j["significant"] = c.significant;
-      j["parameters"] = values(c.parameters);
-      j["standard_errors"] = errors(c.standard_errors);
-      j["cv_before"] = gaps(c.cv_before);
-      j["cv_after"] = gaps(c.cv_after);
-      if (c.failures) j["failed_rows"] = c.failures;
-    } else {
-      j["reason"] = c.reason;
-    }
-    a.push_back(j);
-  }
-  return a;
-}
 
 std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
 
@@ -323,66 +283,7 @@ void register_discover(CLI::App& app) {
       if (!a->out_config.empty()) std::cout << "augmented config: " << a->out_config << "\n";
       return;
     }
-    nlohmann::json effects = nlohmann::json::array();
-    for (const auto& e : r.effects) {
-      effects.push_back({{"name", e.name},
-                         {"parameters", values(e.parameters)},
-                         {"standard_errors", errors(e.standard_errors)},
-                         {"at_bound", e.at_bound},
-                         {"delta_bic", round_sig(e.delta_bic, 6)},
-                         {"cv_rms_before", round_sig(e.cv_rms_before, 6)},
-                         {"cv_rms_after", round_sig(e.cv_rms_after, 6)}});
-    }
-    nlohmann::json regimes = nlohmann::json::array();
-    for (const auto& f : r.regimes) {
-      regimes.push_back({{"observable", f.observable},
-                         {"variable", f.variable},
-                         {"correlation", round_sig(f.correlation, 4)},
-                         {"mean_residual", round_sig(f.mean_residual, 4)},
-                         {"summary", f.summary}});
-    }
-    nlohmann::json rounds = nlohmann::json::array();
-    for (std::size_t k = 0; k < r.rounds.size(); ++k)
-      rounds.push_back(candidates_json(r.rounds[k], k + 1 == r.rounds.size()));
-    nlohmann::json rows = nlohmann::json::array();
-    for (const auto& row : r.rows) {
-      rows.push_back({{"row", row.row},
-                      {"before", gaps(row.before)},
-                      {"after", gaps(row.after)},
-                      {"cv_before", gaps(row.cv_before)},
-                      {"cv_after", gaps(row.cv_after)}});
-    }
-    nlohmann::json j = {
-        {"measured", a->measured},
-        {"rows", data.rows.size()},
-        {"evaluation_mesh", r.evaluation_mesh},
-        {"gap_unit", "relative RMS of (predicted - measured) / measured"},
-        {"gap_config", gaps(r.gap_config)},
-        {"gap_before", gaps(r.gap_before)},
-        {"gap_after", gaps(r.gap_after)},
-        {"cv_gap_before", gaps(r.cv_gap_before)},
-        {"cv_gap_after", gaps(r.cv_gap_after)},
-        {"regime",
-         r.regimes.empty()
-             ? nlohmann::json{{"variable", ""}, {"correlation", 0}}
-             : nlohmann::json{{"variable", r.regimes.front().variable},
-                              {"correlation", round_sig(r.regimes.front().correlation, 4)},
-                              {"observable", r.regimes.front().observable}}},
-        {"regimes", regimes},
-        {"worst_rows", r.worst_rows},
-        {"effects", effects},
-        {"candidates", r.rounds.empty() ? nlohmann::json::array()
-                                        : candidates_json(r.rounds.front(), r.rounds.size() == 1)},
-        {"rounds", rounds},
-        {"baseline_parameters", values(r.baseline_parameters)},
-        {"final_parameters", values(r.final_parameters)},
-        {"residuals", rows},
-        {"fits", r.fits},
-        {"evaluations", r.evaluations},
-        {"footprints", r.footprints},
-        {"method", r.method},
-        {"conclusion", r.conclusion}};
-    if (!r.more_rows.effect.empty()) j["more_rows"] = more_rows_json(r.more_rows);
+    nlohmann::json j = report::discover_json(r, a->measured, data.rows.size());
     if (!a->out_config.empty()) j["out_config"] = a->out_config;
     check_finite(j);
     write_outputs();

@@ -11,6 +11,7 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "modaltyre/contact/effects.h"
+#include "modaltyre/report/effects_json.h"
 
 namespace modaltyre::app {
 namespace {
@@ -18,7 +19,7 @@ namespace {
 using contact::EffectInfo;
 using contact::EffectParameterInfo;
 
-std::string enabled_key(const EffectInfo& e) { return "effects." + e.name + ".enabled"; }
+using report::enabled_key;
 
 std::string joined(const std::vector<std::string>& words) {
   std::string s;
@@ -31,31 +32,6 @@ std::string number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
-}
-
-nlohmann::json parameter_json(const EffectInfo& e, const EffectParameterInfo& p) {
-  return {{"key", e.key(p)}, {"unit", p.unit},     {"default", p.default_value}, {"min", p.min},
-          {"max", p.max},    {"fitted", p.fitted}, {"meaning", p.meaning}};
-}
-
-nlohmann::json effect_json(const EffectInfo& e) {
-  nlohmann::json params = nlohmann::json::array();
-  for (const auto& p : e.parameters) params.push_back(parameter_json(e, p));
-  return {{"name", e.name},
-          {"description", e.description},
-          {"observables", e.observables},
-          {"regime", e.regime},
-          {"enabled_key", enabled_key(e)},
-          {"acts_on", e.acts_on},
-          {"with_footprint_3d",
-           {{"composes", e.refused_with_3d.empty()}, {"refused_because", e.refused_with_3d}}},
-          {"parameters", params}};
-}
-
-nlohmann::json catalogue_json() {
-  nlohmann::json effects = nlohmann::json::array();
-  for (const auto& e : contact::effect_catalogue()) effects.push_back(effect_json(e));
-  return {{"effects", effects}};
 }
 
 // Width of the key column: the longest key of the whole catalogue, so that every effect's
@@ -110,7 +86,7 @@ void register_effects(CLI::App& app) {
   cmd->add_flag("--json", *json, "print JSON instead of a table");
   cmd->callback([json] {
     if (*json) {
-      print_json(catalogue_json());
+      print_json(report::effects_json());
     } else {
       print_table();
     }

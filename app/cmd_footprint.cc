@@ -1,9 +1,7 @@
 // modaltyre footprint CONFIG [--load N]... [--set key=value]... [--json] [--plot FILE]
 //                    [--map-csv FILE]
-#include <cmath>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "cli_support.h"
 #include "commands.h"
@@ -12,6 +10,7 @@
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/report/footprint_json.h"
 
 namespace modaltyre::app {
 namespace {
@@ -64,30 +63,12 @@ void register_footprint(CLI::App& app) {
       check_output_path(a->map_csv, "--map-csv");  // before anything is computed
     }
     const auto model = contact::build_tyre_model(config);
-    std::vector<contact::OperatingConditions> cases;
-    const double fx = cmd->count("--fx") ? a->horizontal : config.horizontal_force_N;
-    for (double f : a->loads.empty() ? config.loads_N : a->loads) {
-      if (!(f > 0) || !std::isfinite(f)) {
-        throw InputError({"--load", 0, ""}, "vertical load must be a finite number > 0 N");
-      }
-      if (config.footprint_3d && fx != 0) {
-        throw InputError({"--fx", 0, ""},
-                         "the config's 3D patch (footprint_3d) takes no horizontal force");
-      }
-      // Uniform traction f_x = (F_x/F_z) f_z needs adhesion; beyond |F_x| = 1.5 F_z no tyre holds.
-      if (!(std::abs(fx) <= 1.5 * f)) {
-        throw InputError({"--fx", 0, ""},
-                         "horizontal force must satisfy |F_x| <= 1.5 F_z "
-                         "(no rubber-road adhesion carries more)");
-      }
-      contact::OperatingConditions c = config.default_conditions(f);
-      c.horizontal_force_N = fx;
-      cases.push_back(c);
-    }
+    const auto cases = report::footprint_cases(
+        config, a->loads, cmd->count("--fx") ? std::optional<double>(a->horizontal) : std::nullopt);
     // At the config's default conditions (its pressure, standing, loading branch, rigid road):
     // effects act on what is printed exactly as they do in `sweep` and `validate`.
     const auto results = contact::predict_all(model, cases);
-    require_converged(results);
+    report::require_converged(results);
     warn_outside_validity(config, results);
     if (!a->plot.empty()) {
       if (config.footprint_3d) {
@@ -98,7 +79,7 @@ void register_footprint(CLI::App& app) {
     }
     if (!a->map_csv.empty()) write_map_csv(results, a->map_csv);
     if (a->json) {
-      print_json(footprint_json(model, results));
+      print_json(report::footprint_json(model, results));
     } else {
       print_footprint_table(model, results);
     }

@@ -7,21 +7,19 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <variant>
 
 #include "cli_support.h"
 #include "commands.h"
 #include "identify_output.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/atomic_file.h"
-#include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
-#include "modaltyre/rheology/contact_geometry.h"
+#include "modaltyre/report/identify_run.h"
 #include "modaltyre/studies/identified_config.h"
 
 namespace modaltyre::app {
 namespace {
-
-namespace rh = modaltyre::rheology;
 
 struct IdentifyArgs {
   std::string method;
@@ -40,56 +38,27 @@ struct IdentifyArgs {
   double max_h_r0 = 0.117;
 };
 
-// Geometry in SI from the options, falling back to the tyre config (read directly: rheology
-// does not depend on contact/). 0 = not given.
-struct Geometry {
-  double r0_m = 0, tread_width_m = 0, pressure_Pa = -1;
-};
-
-// The config the tyre geometry comes from, for the methods that test the tyre itself: --config,
-// else the --into-config target, which is the same tyre (so that --config X --write-config F and
-// --into-config X --out-config F fit with the same r0, B_tr and pressure). soil-rolling tests a
-// rigid wheel, whose r0 and B_tr a tyre config does not hold: --r0-mm, --tread-width-mm only.
-std::string geometry_config(const IdentifyArgs& a) {
-  const bool tests_the_tyre =
-      a.method == "load-deflection" || a.method == "contact-stress" || a.method == "free-vibration";
-  if (!tests_the_tyre) return "";
-  return a.config.empty() ? a.into_config : a.config;
-}
-
-Geometry resolve_geometry(const IdentifyArgs& a) {
-  Geometry g;
-  const std::string config = geometry_config(a);
-  if (!config.empty()) {
-    const ConfigTree tree = ConfigTree::load(config);
-    const ConfigSection root = tree.root();
-    if (root.has("tyre")) {
-      const ConfigSection tyre = root.section("tyre");
-      if (tyre.has("outer_radius_mm")) g.r0_m = tyre.positive("outer_radius_mm", 0, 5000) * 1e-3;
-      if (tyre.has("inflation_pressure_kPa"))
-        g.pressure_Pa = tyre.number("inflation_pressure_kPa", 0, 0, 1e5) * 1e3;
-    }
-    if (root.has("tread")) {
-      const ConfigSection tread = root.section("tread");
-      if (tread.has("contact_width_mm"))
-        g.tread_width_m = tread.positive("contact_width_mm", 0, 5000) * 1e-3;
-    }
-  }
-  auto opt = [](double v, const char* name) {
-    if (v < 0) return -1.0;
-    if (!(v > 0)) throw InputError({name, 0, ""}, "must be > 0");
-    return v;
-  };
-  if (opt(a.r0_mm, "--r0-mm") > 0) g.r0_m = a.r0_mm * 1e-3;
-  if (opt(a.tread_width_mm, "--tread-width-mm") > 0) g.tread_width_m = a.tread_width_mm * 1e-3;
-  if (a.pressure_kPa >= 0) g.pressure_Pa = a.pressure_kPa * 1e3;
-  return g;
-}
-
-double positive_or_zero(double v, const char* name) {
-  if (v < 0 && v != -1) throw InputError({name, 0, ""}, "must be > 0");
-  if (v == 0) throw InputError({name, 0, ""}, "must be > 0");
-  return v > 0 ? v : 0.0;
+// The library's inputs of the fit (report/identify_run.h) from the options.
+report::IdentifyInputs inputs_of(const IdentifyArgs& a) {
+  report::IdentifyInputs in;
+  in.method = a.method;
+  in.file = a.file;
+  // --config, else the --into-config target, which is the same tyre (so that --config X
+  // --write-config F and --into-config X --out-config F fit with the same r0, B_tr and pressure).
+  in.geometry_config =
+      report::identify_geometry_config(a.method, a.config.empty() ? a.into_config : a.config);
+  in.r0_mm = a.r0_mm;
+  in.tread_width_mm = a.tread_width_mm;
+  in.mass_kg = a.mass_kg;
+  in.contact_length_mm = a.contact_length_mm;
+  in.section_height_mm = a.section_height_mm;
+  in.pressure_kPa = a.pressure_kPa;
+  in.static_file = a.static_file;
+  in.samples = a.samples;
+  in.sampling = a.sampling;
+  in.intercept = a.intercept;
+  in.max_h_r0 = a.max_h_r0;
+  return in;
 }
 
 // Why a tyre config has no place for what the method identifies, with what to give instead;
@@ -158,79 +127,25 @@ using Target = std::optional<studies::ConfigTarget>;
 
 studies::IdentifiedSource source_of(const IdentifyArgs& a) { return {a.method, a.file}; }
 
-nlohmann::json run_load_deflection(const IdentifyArgs& a, const Geometry& g, Target& into) {
-  const auto data = rh::read_load_deflection_csv(a.file);
-  rh::LoadDeflectionOptions o;
-  o.r0_m = g.r0_m;
-  o.reference_pressure_Pa = g.pressure_Pa;
-  const auto res = rh::identify_load_deflection(data, o);
-  nlohmann::json out = report_json(res.report);
-  out["pressure_unit"] = rh::kPressureUnitName;
-  out["reference_pressure_kPa"] = round_sig(res.reference_pressure_Pa * 1e-3);
-  out["law"] = "h_Z[mm] = K_Z P_Z[N]^(3/4) / (1 + p_W[bar, gauge])";
-  if (into) studies::map_load_deflection(source_of(a), data, res, *into);
-  if (!a.plot.empty()) plot_load_deflection(data, res, a.plot);
-  return out;
-}
-
-nlohmann::json run_b_factors(const IdentifyArgs& a) {
-  rh::SlopeFactorOptions o;
-  o.samples = a.samples;
-  o.max_relative_deflection = a.max_h_r0;
-  o.through_origin = !a.intercept;
-  o.sampling = a.sampling == "angle" ? rh::SlopeSampling::uniform_angle
-                                     : rh::SlopeSampling::uniform_deflection;
-  const auto res = rh::compute_slope_factors(o);
-  nlohmann::json out = report_json(res.report);
-  out["seed"] = {{"B1", rh::kSeedB1}, {"B2", rh::kSeedB2}, {"R", 0.995}};
-  if (!a.plot.empty()) plot_b_factors(res, a.plot);
-  return out;
-}
-
-nlohmann::json run_contact_stress(const IdentifyArgs& a, const Geometry& g, Target& into) {
-  const auto data = rh::read_contact_stress_csv(a.file);
-  rh::ContactStressOptions o;
-  o.r0_m = g.r0_m;
-  o.tread_width_m = g.tread_width_m;
-  o.contact_length_m = positive_or_zero(a.contact_length_mm, "--contact-length-mm") * 1e-3;
-  const auto res = rh::identify_contact_stress(data, o);
-  if (into) studies::map_contact_stress(source_of(a), res, o.r0_m, *into);
-  nlohmann::json out = report_json(res.report);
-  out["pressure_unit"] = rh::kPressureUnitName;
-  if (!a.plot.empty()) plot_contact_stress(data, res, o.r0_m, a.plot);
-  return out;
-}
-
-nlohmann::json run_free_vibration(const IdentifyArgs& a, const Geometry& g, Target& into) {
-  const auto signal = rh::read_free_vibration_csv(a.file);
-  rh::ThreeElementOptions o;
-  o.r0_m = g.r0_m;
-  o.tread_width_m = g.tread_width_m;
-  o.mass_kg = positive_or_zero(a.mass_kg, "--mass-kg");
-  o.contact_length_m = positive_or_zero(a.contact_length_mm, "--contact-length-mm") * 1e-3;
-  o.section_height_m = positive_or_zero(a.section_height_mm, "--section-height-mm") * 1e-3;
-  std::optional<rh::StaticLoop> loop;
-  if (!a.static_file.empty()) loop = rh::read_static_loop_csv(a.static_file);
-  const auto res = rh::identify_free_vibration(signal, loop ? &*loop : nullptr, o);
-  if (into) studies::map_three_element(res, *loop, o, *into);  // --static: check_into_config_use
-  nlohmann::json out = report_json(res.report);
-  nlohmann::json amps = nlohmann::json::array();
-  for (std::size_t i = 0; i < res.decay.amplitude_m.size(); ++i)
-    amps.push_back({{"t_s", round_sig(res.decay.extremum_t_s[i])},
-                    {"amplitude_mm", round_sig(res.decay.amplitude_m[i] * 1e3, 6)}});
-  out["amplitudes"] = amps;
-  if (!a.plot.empty()) plot_free_vibration(signal, loop ? &*loop : nullptr, res, o, a.plot);
-  return out;
-}
-
-nlohmann::json run_soil(const IdentifyArgs& a, const Geometry& g, Target& into) {
-  const auto data = rh::read_soil_rolling_csv(a.file);
-  rh::SoilOptions o{g.r0_m, g.tread_width_m};
-  const auto res = rh::identify_soil(data, o);
-  if (into) studies::map_soil(data, res, *into);
-  nlohmann::json out = report_json(res.report);
-  if (!a.plot.empty()) plot_soil(data, res, a.plot);
-  return out;
+// Maps the fit into the tyre config (when given) and draws it (when asked).
+void map_and_draw(const IdentifyArgs& a, const report::IdentifyRun& run, Target& into) {
+  if (const auto* r = std::get_if<report::LoadDeflectionRun>(&run.fit)) {
+    if (into) studies::map_load_deflection(source_of(a), r->data, r->result, *into);
+    if (!a.plot.empty()) plot_load_deflection(r->data, r->result, a.plot);
+  } else if (const auto* r = std::get_if<report::SlopeFactorRun>(&run.fit)) {
+    if (!a.plot.empty()) plot_b_factors(r->result, a.plot);
+  } else if (const auto* r = std::get_if<report::ContactStressRun>(&run.fit)) {
+    if (into) studies::map_contact_stress(source_of(a), r->result, r->options.r0_m, *into);
+    if (!a.plot.empty()) plot_contact_stress(r->data, r->result, r->options.r0_m, a.plot);
+  } else if (const auto* r = std::get_if<report::FreeVibrationRun>(&run.fit)) {
+    // --into-config needs --static here (check_into_config_use), so the loop is there.
+    if (into) studies::map_three_element(r->result, *r->loop, r->options, *into);
+    const rheology::StaticLoop* loop = r->loop ? &*r->loop : nullptr;
+    if (!a.plot.empty()) plot_free_vibration(r->signal, loop, r->result, r->options, a.plot);
+  } else if (const auto* r = std::get_if<report::SoilRun>(&run.fit)) {
+    if (into) studies::map_soil(r->data, r->result, *into);
+    if (!a.plot.empty()) plot_soil(r->data, r->result, a.plot);
+  }
 }
 
 }  // namespace
@@ -305,32 +220,16 @@ void register_identify(CLI::App& app) {
       a.out_config = a.write_config;
       a.write_config.clear();
     }
-    if (a.method == "b-factors") {
-      if (!a.file.empty())
-        throw InputError({a.file, 0, ""}, "b-factors takes no FILE (it samples eq. 6 and 10)");
-    } else if (a.file.empty()) {
-      throw InputError("identify " + a.method + " needs a measurement FILE (docs/rheology.md)");
-    }
-    if (!a.static_file.empty() && a.method != "free-vibration")
-      throw InputError({"--static", 0, ""}, "--static is only used by free-vibration");
+    const report::IdentifyInputs inputs = inputs_of(a);
+    report::check_identify_inputs(inputs);
     check_into_config_use(a);
     Target into;  // read before any fitting: a bad tyre config fails fast
     if (!a.into_config.empty())
       into = studies::ConfigTarget{
           a.into_config, a.out_config, contact::load_tyre_config(a.into_config), {}};
-    const Geometry g = resolve_geometry(a);
-    nlohmann::json out;
-    if (a.method == "load-deflection")
-      out = run_load_deflection(a, g, into);
-    else if (a.method == "b-factors")
-      out = run_b_factors(a);
-    else if (a.method == "contact-stress")
-      out = run_contact_stress(a, g, into);
-    else if (a.method == "free-vibration")
-      out = run_free_vibration(a, g, into);
-    else
-      out = run_soil(a, g, into);
-    if (!a.file.empty()) out["file"] = a.file;
+    const report::IdentifyRun run = report::run_identify(inputs);
+    map_and_draw(a, run, into);
+    nlohmann::json out = run.document;
     check_finite(out);
     if (!a.write_config.empty())
       write_rheology_record(a.write_config, {a.method, a.file, a.config}, out);

@@ -14,6 +14,7 @@
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
+#include "modaltyre/report/transient_json.h"
 #include "modaltyre/transient/transient.h"
 
 namespace modaltyre::app {
@@ -28,13 +29,16 @@ struct TransientArgs {
   std::vector<std::string> overrides;
 };
 
+// The CSV of the series report::transient_series gives (one line per sample, 10 digits).
 std::string transient_csv(const transient::TransientResult& r) {
+  const auto cols = report::transient_series(r);
   std::ostringstream o;
   o.precision(10);
-  o << "t_s,load_N,hub_displacement_mm,sinking_mm,contact_length_mm,longitudinal_force_N\n";
-  for (const auto& s : r.samples) {
-    o << s.t_s << ',' << s.load_N << ',' << s.hub_displacement_m * 1e3 << ',' << s.sinking_m * 1e3
-      << ',' << s.contact_length_m * 1e3 << ',' << s.longitudinal_force_N << '\n';
+  for (std::size_t c = 0; c < cols.size(); ++c) o << (c ? "," : "") << cols[c].first;
+  o << '\n';
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    for (std::size_t c = 0; c < cols.size(); ++c) o << (c ? "," : "") << cols[c].second[i];
+    o << '\n';
   }
   return o.str();
 }
@@ -96,12 +100,7 @@ void register_transient(CLI::App& app) {
   cmd->callback([a] {
     const transient::Scenario scenario = transient::parse_scenario(a->scenario);
     const auto config = contact::load_tyre_config(a->config, a->overrides);
-    if (config.footprint_3d) {  // refused, not silently run on a patch the config did not ask for
-      throw InputError({a->config, 0, "footprint_3d"},
-                       "the transient model runs the 2D patch; a config with footprint_3d: (the "
-                       "3D patch) has no transient model yet: use a 2D config such as "
-                       "configs/sf350_2d_table3.yaml");
-    }
+    report::require_2d_patch(config, a->config);
     const auto tyre = contact::build_tyre_model(config);
     const auto model = transient::build_transient_model(tyre);
 
@@ -130,34 +129,7 @@ void register_transient(CLI::App& app) {
     if (!a->plot.empty()) transient_plot(r, a->plot);
     const auto& fin = r.samples.back();
     if (a->json) {
-      nlohmann::json j;
-      j["scenario"] = transient::to_string(scenario);
-      j["simulated_s"] = round_sig(r.simulated_s);
-      j["wall_s"] = round_sig(r.wall_s, 4);
-      j["real_time_factor"] = round_sig(r.real_time_factor(), 4);
-      j["steps"] = r.stats.steps;
-      j["final"] = {{"load_N", round_sig(fin.load_N)},
-                    {"sinking_mm", round_sig(fin.sinking_m * 1e3)},
-                    {"contact_length_mm", round_sig(fin.contact_length_m * 1e3)},
-                    {"rolling_resistance_N", round_sig(r.rolling_resistance_N)},
-                    {"hub_displacement_mm", round_sig(fin.hub_displacement_m * 1e3)},
-                    {"pressure_centre_mm", round_sig(fin.pressure_centre_m * 1e3)},
-                    {"contact_units", fin.contact_units}};
-      j["contact_switches"] = r.contact_events;
-      j["solver"] = {{"rhs_evals", r.stats.rhs_evals},
-                     {"jacobian_evals", r.stats.jac_evals},
-                     {"linear_setups", r.stats.lin_setups},
-                     {"nonlinear_iterations", r.stats.nonlin_iters},
-                     {"error_test_fails", r.stats.error_test_fails},
-                     {"restarts", r.stats.reinits}};
-      j["model"] = {{"dynamic_coordinates", model.nq},
-                    {"residual_coordinates", model.nr},
-                    {"candidate_units", model.m},
-                    {"states", model.state_size()},
-                    {"tread_time_constant_s", round_sig(model.tread_time_constant_s)},
-                    {"residual_time_constant_s", round_sig(model.tau_residual_s)}};
-      j["samples"] = r.samples.size();
-      print_json(j);
+      print_json(report::transient_json(model, r));
     } else {
       std::cout << "scenario " << transient::to_string(scenario) << ": " << r.message << "\n"
                 << "simulated " << fixed(r.simulated_s, 3) << " s in " << fixed(r.wall_s, 3)

@@ -7,6 +7,8 @@
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/validity.h"
 #include "modaltyre/core/gnuplot.h"
+#include "modaltyre/report/footprint_json.h"
+#include "modaltyre/report/validation_json.h"
 #include "modaltyre/studies/validation.h"
 
 namespace modaltyre::app {
@@ -20,91 +22,7 @@ struct ValidateArgs {
   std::string plot;
 };
 
-nlohmann::json opt_json(const std::optional<double>& v, double scale = 1.0) {
-  return v ? nlohmann::json(round_sig(*v * scale, 8)) : nlohmann::json();
-}
-
-nlohmann::json conditions_json(const contact::OperatingConditions& c) {
-  return {{"load_N", c.load_N},
-          {"horizontal_force_N", c.horizontal_force_N},
-          {"pressure_kPa", c.pressure_kPa},
-          {"hold_s", c.hold_s},
-          {"speed_kmh", c.speed_kmh},
-          {"branch", contact::branch_name(c.branch)},
-          {"surface", contact::surface_name(c.surface)}};
-}
-
-nlohmann::json enabled_effects_json(const contact::EffectsConfig& effects) {
-  nlohmann::json names = nlohmann::json::array();
-  for (const auto& e : contact::effect_catalogue()) {
-    if (effects.enabled(e.id)) names.push_back(e.name);
-  }
-  return names;
-}
-
-// A predicted row outside the model's validity range (contact/validity.h) is flagged.
-contact::Validity row_validity(const contact::TyreConfig& config, const studies::ValidationRow& r) {
-  return contact::validity(config, r.sinking_mm * 1e-3, r.length_mm * 1e-3);
-}
-
-nlohmann::json row_json(const studies::ValidationRow& r, bool with_conditions,
-                        const contact::Validity& v) {
-  nlohmann::json row = {
-      {"row", r.measured.row},
-      {"load_N", r.measured.conditions.load_N},
-      {"calibration", r.calibration},
-      {"measured",
-       {{"sinking_mm", opt_json(r.measured.value("sinking_mm"))},
-        {"length_mm", opt_json(r.measured.value("length_mm"))},
-        {"width_mm", opt_json(r.measured.value("width_mm"))}}},
-      {"predicted",
-       {{"sinking_mm", round_sig(r.sinking_mm, 8)}, {"length_mm", round_sig(r.length_mm, 8)}}},
-      {"rel_error",
-       {{"sinking_mm", opt_json(r.sinking_rel_error)},
-        {"length_mm", opt_json(r.length_rel_error)}}}};
-  // Width is compared only where it was measured (the 2D model takes it as an input unless
-  // contact_width is on).
-  if (r.measured.value("width_mm")) {
-    row["predicted"]["width_mm"] = round_sig(r.width_mm, 8);
-    row["rel_error"]["width_mm"] = opt_json(r.width_rel_error);
-  }
-  if (with_conditions) row["conditions"] = conditions_json(r.measured.conditions);
-  row["valid"] = v.valid;
-  if (!v.valid) row["validity"] = v.reason;
-  return row;
-}
-
-nlohmann::json to_json(const studies::ValidationReport& rep) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : rep.rows) {
-    rows.push_back(row_json(r, rep.with_conditions, row_validity(rep.model.config, r)));
-  }
-  nlohmann::json rms = nlohmann::json::object();
-  for (const auto& [k, v] : rep.rms_rel_error) rms[k] = round_sig(v, 8);
-  nlohmann::json calibrated = nlohmann::json::object();
-  nlohmann::json initial = nlohmann::json::object();
-  nlohmann::json at_bound = nlohmann::json::object();
-  const auto& c = rep.calibration;
-  for (std::size_t i = 0; i < c.keys.size(); ++i) {
-    calibrated[c.keys[i]] = round_sig(c.values[i], 8);
-    initial[c.keys[i]] = c.initial_values[i];
-    if (!c.at_bound[i].empty()) at_bound[c.keys[i]] = c.at_bound[i];
-  }
-  return {{"config", rep.model.config.source},
-          {"effects", enabled_effects_json(rep.model.config.effects)},
-          {"rows", rows},
-          {"rms_rel_error", rms},
-          {"predicted_rows", rep.predicted_rows},
-          {"calibrated", calibrated},
-          {"calibration",
-           {{"rows", c.rows},
-            {"observables", c.observables},
-            {"initial", initial},
-            {"at_bound", at_bound},
-            {"rms_rel_residual", round_sig(c.rms_rel_residual, 8)},
-            {"converged", c.converged},
-            {"evaluations", c.evaluations}}}};
-}
+using report::row_validity;
 
 void print_table(const studies::ValidationReport& rep, const std::string& measured_path) {
   const auto& c = rep.calibration;
@@ -128,9 +46,9 @@ void print_table(const studies::ValidationReport& rep, const std::string& measur
       std::cout << "\n";
     }
   }
-  if (const auto on = enabled_effects_json(rep.model.config.effects); !on.empty()) {
+  if (const auto on = report::enabled_effects(rep.model.config.effects); !on.empty()) {
     std::cout << "Effects on:";
-    for (const auto& e : on) std::cout << " " << e.get<std::string>();
+    for (const auto& e : on) std::cout << " " << e;
     std::cout << "\n";
   }
   if (rep.with_conditions) {
@@ -268,7 +186,7 @@ void register_validate(CLI::App& app) {
     warn_outside_validity(rep);
     if (!a->plot.empty()) plot_validation(rep, a->plot);
     if (a->json) {
-      print_json(to_json(rep));
+      print_json(report::validation_json(rep));
     } else {
       print_table(rep, a->measured);
     }

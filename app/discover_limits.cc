@@ -13,38 +13,7 @@ namespace {
 
 std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
 
-
 }  // namespace
-
-nlohmann::json gaps(const std::map<std::string, double>& m) {
-  nlohmann::json j = nlohmann::json::object();
-  for (const auto& kv : m) j[kv.first] = round_sig(kv.second, 6);
-  return j;
-}
-
-// The candidate's detection limit (issue 23), null with a reason where there is none: an
-// untestable or named candidate, or one whose limit cannot be computed.
-void put_limit(const discover::CandidateScore& c, nlohmann::json& j) {
-  const discover::DetectionLimit& l = c.limit;
-  std::string reason = !c.testable        ? "not testable: " + c.reason
-                       : l.effect.empty() ? "named"
-                       : !l.computed()    ? l.reason
-                                          : "";
-  if (!reason.empty()) {
-    j["detection_limit"] = nullptr;
-    j["detection_limit_reason"] = reason;
-    if (!l.effect.empty()) j["power_at_default"] = round_sig(l.power_at_default, 3);
-    return;
-  }
-  j["detection_limit"] = {{"parameter", l.parameter},
-                          {"value", round_sig(l.value, 4)},
-                          {"unit", l.unit},
-                          {"times_default", round_sig(l.magnitude, 3)},
-                          {"bound", l.at_most ? "at most" : "at least"},
-                          {"probability", 0.8},
-                          {"observable_rms_rel", gaps(l.observable_rms_rel)}};
-  j["power_at_default"] = round_sig(l.power_at_default, 3);
-}
 
 // "tread_relaxation: not named; these data would reveal creep_ratio >= 0.21 (sinking_mm RMS
 // >= 2.1 %) with 80 % probability", for the last round's candidates left unnamed.
@@ -78,15 +47,6 @@ void print_limits(const discover::DiscoverReport& r) {
               << std::lround(100 * l.power_at_default) << " %\n";
   }
   if (!r.more_rows.effect.empty()) std::cout << "Rows to add: " << r.more_rows.text << ".\n";
-}
-
-nlohmann::json more_rows_json(const discover::MoreRows& m) {
-  return {{"effect", m.effect},
-          {"condition", m.condition},
-          {"power_at_default", round_sig(m.power_at_default, 3)},
-          {"replicas", m.replicas > 0 ? nlohmann::json(m.replicas) : nullptr},
-          {"extra_rows", m.replicas > 0 ? nlohmann::json(m.extra_rows) : nullptr},
-          {"text", m.text}};
 }
 
 }  // namespace modaltyre::app

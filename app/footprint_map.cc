@@ -62,26 +62,6 @@ PlotSeries contour(const contact::Patch3dResult& r) {
 
 }  // namespace
 
-nlohmann::json pressure_map_json(const contact::Patch3dResult& r) {
-  const contact::PressureMap map = contact::pressure_map(r);
-  auto rounded = [](const std::vector<double>& v) {
-    std::vector<double> out;
-    for (double x : v) out.push_back(round_sig(x, 6));
-    return out;
-  };
-  nlohmann::json rows = nlohmann::json::array();
-  for (const auto& row : map.pressure_kPa) rows.push_back(rounded(row));
-  return {{"x_mm", rounded(map.x_mm)}, {"y_mm", rounded(map.y_mm)}, {"pressure_kPa", rows}};
-}
-
-double contact_area_m2(const contact::Patch3dResult& r) {
-  double area = 0;
-  for (int i = 0; i < r.sections; ++i)
-    for (int j = 0; j < r.columns; ++j)
-      if (r.cell_force(i, j) > 0) area += r.dx_m[i] * r.dy_m;
-  return area;
-}
-
 void check_output_path(const std::string& path, const std::string& option) {
   const fs::path folder = fs::absolute(fs::path(path)).parent_path();
   if (!fs::is_directory(folder)) {

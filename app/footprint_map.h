@@ -1,21 +1,13 @@
 #pragma once
-// The 3D patch's outputs of `footprint` (contact/patch3d.h): the pressure map in JSON and CSV,
-// the contact area, and the footprint image (the map printed like a pressure-sensitive film,
+// The 3D patch's outputs of `footprint` (contact/patch3d.h): the pressure map in CSV and the
+// footprint image (the map printed like a pressure-sensitive film,
 // with its contour, beside the centre-line pressure).
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "modaltyre/contact/predictor.h"
 
 namespace modaltyre::app {
-
-/// `map: {x_mm: [...], y_mm: [...], pressure_kPa: [[... one row per y ...]]}` of a 3D case:
-/// the sections in contact and two either side, every column of the tread.
-nlohmann::json pressure_map_json(const contact::Patch3dResult& r);
-
-/// Road area of the cells in contact [m^2].
-double contact_area_m2(const contact::Patch3dResult& r);
 
 /// Throws InputError (exit 2) before anything is computed when `path` cannot take an output:
 /// its folder does not exist or it is a directory. `option` names the flag in the message.

@@ -1,116 +1,18 @@
 #include "footprint_report.h"
 
 #include <iostream>
-#include <sstream>
 
 #include "cli_support.h"
 #include "modaltyre/contact/validity.h"
-#include "footprint_map.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
+#include "modaltyre/report/footprint_json.h"
 
 namespace modaltyre::app {
 
-namespace {
-
-// Names of the effects switched on, in catalogue order.
-std::vector<std::string> enabled_effects(const contact::EffectsConfig& effects) {
-  std::vector<std::string> names;
-  for (const auto& e : contact::effect_catalogue()) {
-    if (effects.enabled(e.id)) names.push_back(e.name);
-  }
-  return names;
-}
-
-// The highest pressure: of the units on the 2D patch, of the whole map on the 3D patch (off the
-// centre line with a lateral belt).
-double peak_pressure_Pa(const contact::Prediction& p) {
-  double peak = 0;
-  for (const auto& u : p.footprint.units) peak = std::max(peak, u.pressure_Pa);
-  if (p.patch3d) {
-    const auto& m = *p.patch3d;
-    for (int i = 0; i < m.sections; ++i)
-      for (int j = 0; j < m.columns; ++j) peak = std::max(peak, m.pressure_Pa(i, j));
-  }
-  return peak;
-}
-
-}  // namespace
-
-void require_converged(const std::vector<contact::Prediction>& cases) {
-  for (const auto& p : cases) {
-    if (!p.ok) {
-      const auto& r = p.footprint;
-      std::ostringstream msg;
-      msg << "load case " << r.load.load_N << " N did not converge after " << r.iterations
-          << " iterations: " << p.message;
-      throw ComputationError(msg.str());
-    }
-  }
-}
-
-nlohmann::json footprint_json(const contact::TyreModel& model,
-                              const std::vector<contact::Prediction>& predictions) {
-  nlohmann::json cases = nlohmann::json::array();
-  for (const auto& p : predictions) {
-    const auto& r = p.footprint;
-    nlohmann::json units = nlohmann::json::array();
-    for (const auto& u : r.units) {
-      units.push_back({{"x_mm", round_sig(u.x_m * 1e3)},
-                       {"dx_mm", round_sig(u.dx_m * 1e3)},
-                       {"fz_N", round_sig(u.fz_N)},
-                       {"fx_N", round_sig(u.fx_N)},
-                       {"pressure_kPa", round_sig(u.pressure_Pa * 1e-3)}});
-    }
-    const double peak = peak_pressure_Pa(p);
-    const contact::Validity v = contact::validity(model.config, r.sinking_m, r.contact_length_m);
-    cases.push_back({{"load_N", r.load.load_N},
-                     {"valid", v.valid},
-                     {"validity", v.valid ? nlohmann::json(nullptr) : nlohmann::json(v.reason)},
-                     {"horizontal_force_N", r.load.horizontal_force_N},
-                     {"sinking_mm", round_sig(r.sinking_m * 1e3)},
-                     {"contact_length_mm", round_sig(r.contact_length_m * 1e3)},
-                     {"rear_edge_x_mm", round_sig(r.rear_edge_x_m * 1e3)},
-                     {"front_edge_x_mm", round_sig(r.front_edge_x_m * 1e3)},
-                     {"vertical_stiffness_N_mm", round_sig(r.vertical_stiffness_N_m() * 1e-3)},
-                     {"peak_pressure_kPa", round_sig(peak * 1e-3)},
-                     {"width_mm", round_sig(p.width_mm)},
-                     {"rolling_resistance_N", round_sig(p.rolling_resistance_N)},
-                     {"converged", r.converged},
-                     {"iterations", r.iterations},
-                     {"residuals",
-                      {{"vertical_equilibrium", r.equilibrium_residual},
-                       {"complementarity", r.complementarity_residual}}},
-                     {"units", units}});
-    if (p.patch3d) {
-      cases.back()["contact_area_mm2"] = round_sig(contact_area_m2(*p.patch3d) * 1e6);
-      cases.back()["map"] = pressure_map_json(*p.patch3d);
-    }
-  }
-  const auto& c = model.config;
-  nlohmann::json out = {{"tyre", c.name},
-                        {"config", c.source},
-                        {"effects", enabled_effects(c.effects)},
-                        {"model",
-                         {{"outer_radius_mm", c.outer_radius_m * 1e3},
-                          {"unit_length_mm", round_sig(model.unit_length_m * 1e3)},
-                          {"units_around", model.units_around},
-                          {"candidate_units", model.candidates()},
-                          {"max_order", model.basis.max_order},
-                          {"measured_modal_terms", model.basis.measured_terms},
-                          {"patch", c.footprint_3d ? "3d" : "2d"}}},
-                        {"cases", cases}};
-  auto& m = out["model"];
-  if (c.footprint_3d) {  // the width is a result; units[].pressure_kPa is the centre line's
-    const auto& s = *c.footprint_3d;
-    m["tread_width_mm"] = s.tread_width_m * 1e3;
-    m["lateral_cell_mm"] = round_sig(s.lateral_cell_m * 1e3);
-    m["lateral_belt"] = s.lateral_belt.enabled;
-  } else {
-    m["contact_width_mm"] = c.tread.width_m * 1e3;
-  }
-  return out;
-}
+using report::contact_area_m2;
+using report::enabled_effects;
+using report::peak_pressure_Pa;
 
 void warn_outside_validity(const contact::TyreConfig& config,
                            const std::vector<contact::Prediction>& predictions) {

@@ -17,19 +17,6 @@ namespace modaltyre::app {
 
 namespace rh = modaltyre::rheology;
 
-nlohmann::json report_json(const rh::FitReport& r) {
-  nlohmann::json params = nlohmann::json::object();
-  for (const auto& p : r.parameters)
-    params[p.name] = {
-        {"value", round_sig(p.value)}, {"unit", p.unit}, {"std_error", round_sig(p.std_error, 6)}};
-  return {{"method", r.method},
-          {"parameters", params},
-          {"residual_rms", round_sig(r.residual_rms, 6)},
-          {"residual_unit", r.residual_unit},
-          {"rows", r.rows},
-          {"notes", r.notes}};
-}
-
 void print_report(const nlohmann::json& out, const std::string& source) {
   rh::FitReport r;
   r.method = out["method"];

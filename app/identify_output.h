@@ -12,10 +12,8 @@
 
 namespace modaltyre::app {
 
-/// The JSON of a fit: method, parameters (value, unit, std_error), residual, rows, notes.
-nlohmann::json report_json(const rheology::FitReport& r);
-
-/// The table of `out` (report_json plus the command's additions) as `identify` prints it.
+/// The table of `out` (report::run_identify's document plus the command's additions) as
+/// `identify` prints it.
 void print_report(const nlohmann::json& out, const std::string& source);
 
 /// The 'rheology:' YAML record of the parameters in `out`, written atomically to `path`.

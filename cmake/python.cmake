@@ -1,0 +1,47 @@
+# Decides whether the Python module (python/) is built: MODALTYRE_PYTHON is ON when pybind11,
+# the Python headers and NumPy are found (Debian: pybind11-dev python3-dev python3-numpy), and
+# the build is not instrumented. Sanitizer and fuzz builds leave it out: an ASan-instrumented
+# extension cannot be loaded into the uninstrumented python3.
+set(MODALTYRE_PYTHON OFF)
+if(NOT MODALTYRE_BUILD_PYTHON)
+  message(STATUS "Python module: not built (MODALTYRE_BUILD_PYTHON=OFF)")
+  return()
+endif()
+if(MODALTYRE_SANITIZE OR MODALTYRE_FUZZ)
+  message(STATUS "Python module: not built in a sanitizer or fuzz build (an instrumented "
+                 "extension cannot be loaded into the uninstrumented python3)")
+  return()
+endif()
+# The first python3 on the PATH may be a separate interpreter without Debian's NumPy (pyenv):
+# unless Python3_EXECUTABLE is given, take the first of the PATH's and Debian's that has NumPy,
+# so that the module is built for, and tested with, an interpreter that can use it.
+if(NOT Python3_EXECUTABLE)
+  find_program(_modaltyre_path_python3 NAMES python3 NO_CACHE)
+  foreach(candidate IN ITEMS ${_modaltyre_path_python3} /usr/bin/python3)
+    execute_process(COMMAND ${candidate} -c "import numpy" RESULT_VARIABLE rc OUTPUT_QUIET
+                    ERROR_QUIET)
+    if(rc EQUAL 0)
+      set(Python3_EXECUTABLE ${candidate} CACHE FILEPATH "python3 the module is built for")
+      break()
+    endif()
+  endforeach()
+endif()
+find_package(Python3 COMPONENTS Interpreter Development.Module NumPy)
+if(Python3_FOUND)
+  find_package(pybind11 2.6 CONFIG QUIET)
+endif()
+if(NOT Python3_FOUND OR NOT pybind11_FOUND)
+  message(WARNING "Python module: not built: needs pybind11, the Python headers and NumPy "
+                  "(Debian: pybind11-dev python3-dev python3-numpy; scripts/install-deps.sh)")
+  return()
+endif()
+# Where `cmake --install` puts the package: the interpreter's site directory relative to its
+# prefix (Debian: lib/python3/dist-packages), under CMAKE_INSTALL_PREFIX.
+execute_process(COMMAND ${Python3_EXECUTABLE} -c "import sys; print(sys.prefix)"
+                OUTPUT_VARIABLE _modaltyre_python_prefix OUTPUT_STRIP_TRAILING_WHITESPACE)
+file(RELATIVE_PATH _modaltyre_site ${_modaltyre_python_prefix} ${Python3_SITEARCH})
+set(MODALTYRE_PYTHON_INSTALL_DIR ${_modaltyre_site} CACHE STRING
+    "Python package directory under the install prefix")
+set(MODALTYRE_PYTHON ON)
+message(STATUS "Python module: built for ${Python3_EXECUTABLE} (${Python3_VERSION}); "
+               "installed into PREFIX/${MODALTYRE_PYTHON_INSTALL_DIR}")

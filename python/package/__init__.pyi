@@ -1,0 +1,77 @@
+# Type stubs of the modaltyre package (the extension modaltyre._modaltyre). Units are in the
+# names: _N newton, _mm millimetre, _kPa kilopascal, _s second, _hz hertz.
+from typing import Any, Optional, Sequence
+
+import numpy as np
+import numpy.typing as npt
+
+class InputError(ValueError):
+    file: str
+    line: int
+    key: str
+
+class ComputationError(RuntimeError): ...
+
+class Footprint:
+    load_N: float
+    sinking_mm: float
+    length_mm: float
+    width_mm: Optional[float]
+    converged: bool
+    iterations: int
+    valid: bool
+    x_mm: npt.NDArray[np.float64]
+    pressure_kPa: npt.NDArray[np.float64]
+    map: Optional[dict[str, npt.NDArray[np.float64]]]
+    data: dict[str, Any]
+
+class Tyre:
+    name: str
+    patch: str
+    loads_N: list[float]
+    def __init__(self, config_path: str, overrides: dict[str, Any] = ...) -> None: ...
+    def footprint(self, load_N: float, horizontal_force_N: Optional[float] = None) -> Footprint: ...
+    def footprints(
+        self, loads_N: Sequence[float], horizontal_force_N: Optional[float] = None
+    ) -> list[Footprint]: ...
+    def report(
+        self, loads_N: Sequence[float] = ..., horizontal_force_N: Optional[float] = None
+    ) -> dict[str, Any]: ...
+
+def fit_modes(path: str) -> dict[str, Any]: ...
+def validate(
+    config_path: str, measured_csv: str, overrides: dict[str, Any] = ...
+) -> dict[str, Any]: ...
+def sweep(
+    sweep_yaml: str,
+    threads: Optional[int] = None,
+    overrides: dict[str, Any] = ...,
+    warm_start: bool = False,
+) -> dict[str, npt.NDArray[Any]]: ...
+def transient(
+    config_path: str, scenario: str, overrides: dict[str, Any] = ...
+) -> dict[str, Any]: ...
+def effects() -> list[dict[str, Any]]: ...
+def discover(
+    config_path: str,
+    measured_csv: str,
+    overrides: dict[str, Any] = ...,
+    threads: Optional[int] = None,
+) -> dict[str, Any]: ...
+def identify(
+    method: str,
+    path: Optional[str] = None,
+    *,
+    config: Optional[str] = None,
+    r0_mm: Optional[float] = None,
+    tread_width_mm: Optional[float] = None,
+    mass_kg: Optional[float] = None,
+    contact_length_mm: Optional[float] = None,
+    section_height_mm: Optional[float] = None,
+    pressure_kPa: Optional[float] = None,
+    static: Optional[str] = None,
+    samples: int = 6,
+    sampling: str = "deflection",
+    intercept: bool = False,
+    max_h_r0: float = 0.117,
+) -> dict[str, Any]: ...

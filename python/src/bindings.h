@@ -1,0 +1,14 @@
+#pragma once
+// The parts of the Python module, each registering its functions and classes.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+namespace modaltyre::python {
+
+namespace py = pybind11;
+
+void bind_tyre(py::module_& m);      // Tyre, Footprint, fit_modes
+void bind_studies(py::module_& m);   // validate, sweep, transient, effects, discover
+void bind_identify(py::module_& m);  // identify
+
+}  // namespace modaltyre::python

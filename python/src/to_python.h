@@ -1,0 +1,37 @@
+#pragma once
+// Conversions between the library's JSON documents and Python objects, and the NumPy arrays the
+// module returns. Every array owns its memory (a copy): no view outlives the C++ object it
+// would point into.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace modaltyre::python {
+
+namespace py = pybind11;
+
+/// The JSON document as Python objects: dict, list, str, int, float, bool, None.
+py::object to_python(const nlohmann::json& j);
+
+/// A float64 array owning a copy of `values`.
+py::array_t<double> owned_array(const std::vector<double>& values);
+
+/// A float64 array of one member of every element of a JSON array of objects
+/// (e.g. the units' x_mm of a footprint case).
+py::array_t<double> column_of(const nlohmann::json& rows, const std::string& key);
+
+/// A float64 array of a JSON array of numbers, or a 2D array of a JSON array of equal-length
+/// arrays of numbers (a pressure map).
+py::array numeric_array(const nlohmann::json& j);
+
+/// `{key: value}` as the "key=value" overrides of the command line's --set (YAML text:
+/// true/false, numbers as Python writes them, lists as [a, b]).
+std::vector<std::string> overrides_of(const py::dict& overrides);
+
+/// Checks the document for non-finite numbers (as the CLI does) and converts it.
+py::object checked(const nlohmann::json& j);
+
+}  // namespace modaltyre::python

@@ -1,0 +1,155 @@
+#include "modaltyre/report/discover_json.h"
+
+#include <cmath>
+
+#include "modaltyre/core/number_format.h"
+
+namespace modaltyre::report {
+namespace {
+
+nlohmann::json gaps(const std::map<std::string, double>& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& kv : m) j[kv.first] = round_sig(kv.second, 6);
+  return j;
+}
+
+nlohmann::json values(const std::map<std::string, double>& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& kv : m) j[kv.first] = round_sig(kv.second, 8);
+  return j;
+}
+
+// Standard errors: null when a parameter is not identifiable from the data.
+nlohmann::json errors(const std::map<std::string, double>& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& kv : m) {
+    j[kv.first] = std::isfinite(kv.second) ? nlohmann::json(round_sig(kv.second, 4))
+                                           : nlohmann::json(nullptr);
+  }
+  return j;
+}
+
+// The candidate's detection limit (issue 23), null with a reason where there is none: an
+// untestable or named candidate, or one whose limit cannot be computed.
+void put_limit(const discover::CandidateScore& c, nlohmann::json& j) {
+  const discover::DetectionLimit& l = c.limit;
+  std::string reason = !c.testable        ? "not testable: " + c.reason
+                       : l.effect.empty() ? "named"
+                       : !l.computed()    ? l.reason
+                                          : "";
+  if (!reason.empty()) {
+    j["detection_limit"] = nullptr;
+    j["detection_limit_reason"] = reason;
+    if (!l.effect.empty()) j["power_at_default"] = round_sig(l.power_at_default, 3);
+    return;
+  }
+  j["detection_limit"] = {{"parameter", l.parameter},
+                          {"value", round_sig(l.value, 4)},
+                          {"unit", l.unit},
+                          {"times_default", round_sig(l.magnitude, 3)},
+                          {"bound", l.at_most ? "at most" : "at least"},
+                          {"probability", 0.8},
+                          {"observable_rms_rel", gaps(l.observable_rms_rel)}};
+  j["power_at_default"] = round_sig(l.power_at_default, 3);
+}
+
+nlohmann::json more_rows_json(const discover::MoreRows& m) {
+  return {{"effect", m.effect},
+          {"condition", m.condition},
+          {"power_at_default", round_sig(m.power_at_default, 3)},
+          {"replicas", m.replicas > 0 ? nlohmann::json(m.replicas) : nullptr},
+          {"extra_rows", m.replicas > 0 ? nlohmann::json(m.extra_rows) : nullptr},
+          {"text", m.text}};
+}
+
+nlohmann::json candidates_json(const std::vector<discover::CandidateScore>& cs, bool with_limits) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& c : cs) {
+    nlohmann::json j = {{"name", c.name}, {"testable", c.testable}};
+    if (with_limits) put_limit(c, j);
+    if (c.testable) {
+      j["delta_bic"] = round_sig(c.delta_bic, 6);
+      j["cv_rms_before"] = round_sig(c.cv_rms_before, 6);
+      j["cv_rms_after"] = round_sig(c.cv_rms_after, 6);
+      j["rms_after"] = round_sig(c.rms_after, 6);
+      j["significant"] = c.significant;
+      j["parameters"] = values(c.parameters);
+      j["standard_errors"] = errors(c.standard_errors);
+      j["cv_before"] = gaps(c.cv_before);
+      j["cv_after"] = gaps(c.cv_after);
+      if (c.failures) j["failed_rows"] = c.failures;
+    } else {
+      j["reason"] = c.reason;
+    }
+    a.push_back(j);
+  }
+  return a;
+}
+
+}  // namespace
+
+nlohmann::json discover_json(const discover::DiscoverReport& r, const std::string& measured_path,
+                             std::size_t rows) {
+  nlohmann::json effects = nlohmann::json::array();
+  for (const auto& e : r.effects) {
+    effects.push_back({{"name", e.name},
+                       {"parameters", values(e.parameters)},
+                       {"standard_errors", errors(e.standard_errors)},
+                       {"at_bound", e.at_bound},
+                       {"delta_bic", round_sig(e.delta_bic, 6)},
+                       {"cv_rms_before", round_sig(e.cv_rms_before, 6)},
+                       {"cv_rms_after", round_sig(e.cv_rms_after, 6)}});
+  }
+  nlohmann::json regimes = nlohmann::json::array();
+  for (const auto& f : r.regimes) {
+    regimes.push_back({{"observable", f.observable},
+                       {"variable", f.variable},
+                       {"correlation", round_sig(f.correlation, 4)},
+                       {"mean_residual", round_sig(f.mean_residual, 4)},
+                       {"summary", f.summary}});
+  }
+  nlohmann::json rounds = nlohmann::json::array();
+  for (std::size_t k = 0; k < r.rounds.size(); ++k)
+    rounds.push_back(candidates_json(r.rounds[k], k + 1 == r.rounds.size()));
+  nlohmann::json residuals = nlohmann::json::array();
+  for (const auto& row : r.rows) {
+    residuals.push_back({{"row", row.row},
+                         {"before", gaps(row.before)},
+                         {"after", gaps(row.after)},
+                         {"cv_before", gaps(row.cv_before)},
+                         {"cv_after", gaps(row.cv_after)}});
+  }
+  nlohmann::json j = {
+      {"measured", measured_path},
+      {"rows", rows},
+      {"evaluation_mesh", r.evaluation_mesh},
+      {"gap_unit", "relative RMS of (predicted - measured) / measured"},
+      {"gap_config", gaps(r.gap_config)},
+      {"gap_before", gaps(r.gap_before)},
+      {"gap_after", gaps(r.gap_after)},
+      {"cv_gap_before", gaps(r.cv_gap_before)},
+      {"cv_gap_after", gaps(r.cv_gap_after)},
+      {"regime", r.regimes.empty()
+                     ? nlohmann::json{{"variable", ""}, {"correlation", 0}}
+                     : nlohmann::json{{"variable", r.regimes.front().variable},
+                                      {"correlation", round_sig(r.regimes.front().correlation, 4)},
+                                      {"observable", r.regimes.front().observable}}},
+      {"regimes", regimes},
+      {"worst_rows", r.worst_rows},
+      {"effects", effects},
+      {"candidates", r.rounds.empty() ? nlohmann::json::array()
+                                      : candidates_json(r.rounds.front(), r.rounds.size() == 1)},
+      {"rounds", rounds},
+      {"baseline_parameters", values(r.baseline_parameters)},
+      {"final_parameters", values(r.final_parameters)},
+      {"residuals", residuals},
+      {"fits", r.fits},
+      {"evaluations", r.evaluations},
+      {"footprints", r.footprints},
+      {"method", r.method},
+      {"conclusion", r.conclusion}};
+  if (!r.more_rows.effect.empty()) j["more_rows"] = more_rows_json(r.more_rows);
+  return j;
+}
+
+}  // namespace modaltyre::report

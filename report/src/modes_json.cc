@@ -1,0 +1,56 @@
+#include "modaltyre/report/modes_json.h"
+
+#include <cmath>
+
+#include "modaltyre/core/number_format.h"
+
+namespace modaltyre::report {
+
+nlohmann::json modes_json(const modal::ModeIdentification& id) {
+  nlohmann::json modes = nlohmann::json::array();
+  for (const auto& m : id.modes) {
+    nlohmann::json A = nlohmann::json::array(), B = nlohmann::json::array();
+    for (double a : m.radial.A) A.push_back(round_sig(a));
+    for (double b : m.radial.B) B.push_back(round_sig(b));
+    nlohmann::json tA = nlohmann::json::array(), tB = nlohmann::json::array();
+    for (double a : m.tangential.A) tA.push_back(round_sig(a));
+    for (double b : m.tangential.B) tB.push_back(round_sig(b));
+    nlohmann::json j = {
+        {"mode", m.id},
+        {"freq_hz", m.freq_hz},
+        {"damping_ratio", m.damping_ratio},
+        {"kind", modal::to_string(m.kind)},
+        {"order", m.apparent_order},
+        {"aliased", m.aliased},
+        {"r2", round_sig(m.r2, 6)},
+        {"A", A},
+        {"B", B},
+        {"A_nyquist", round_sig(m.radial.nyquist)},
+        {"tangential_A", tA},
+        {"tangential_B", tB},
+        {"amplitude", round_sig(std::abs(m.c_radial))},
+        {"phase_deg", m.apparent_order > 0
+                          ? round_sig(-std::arg(m.c_radial) * 180 / M_PI / m.apparent_order, 6)
+                          : 0.0},
+        {"note", m.note}};
+    if (m.aliased) {
+      j["alias_candidates"] = m.alias_candidates;
+      j["likely_order"] = m.likely_order >= 0 ? nlohmann::json(m.likely_order) : nlohmann::json();
+    }
+    modes.push_back(j);
+  }
+  nlohmann::json disp = {{"valid", id.dispersion.valid}};
+  if (id.dispersion.valid) {
+    disp["model"] = "omega^2 = s0 + s1 k^2 + s2 k^4 (orders >= 2)";
+    disp["s0_rad2_s2"] = round_sig(id.dispersion.s0);
+    disp["s1_rad2_s2"] = round_sig(id.dispersion.s1);
+    disp["s2_rad2_s2"] = round_sig(id.dispersion.s2);
+    disp["orders_used"] = id.dispersion.orders_used;
+    disp["rms_rel_error"] = round_sig(id.dispersion.rms_rel_error, 6);
+  } else {
+    disp["reason"] = id.dispersion.reason;
+  }
+  return {{"points", id.points}, {"modes", modes}, {"dispersion", disp}};
+}
+
+}  // namespace modaltyre::report

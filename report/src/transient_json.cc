@@ -1,0 +1,70 @@
+#include "modaltyre/report/transient_json.h"
+
+#include "modaltyre/core/errors.h"
+#include "modaltyre/core/number_format.h"
+
+namespace modaltyre::report {
+
+void require_2d_patch(const contact::TyreConfig& config, const std::string& config_path) {
+  if (config.footprint_3d) {
+    throw InputError({config_path, 0, "footprint_3d"},
+                     "the transient model runs the 2D patch; a config with footprint_3d: (the "
+                     "3D patch) has no transient model yet: use a 2D config such as "
+                     "configs/sf350_2d_table3.yaml");
+  }
+}
+
+nlohmann::json transient_json(const transient::TransientModel& model,
+                              const transient::TransientResult& r) {
+  const auto& fin = r.samples.back();
+  nlohmann::json j;
+  j["scenario"] = transient::to_string(r.scenario);
+  j["simulated_s"] = round_sig(r.simulated_s);
+  j["wall_s"] = round_sig(r.wall_s, 4);
+  j["real_time_factor"] = round_sig(r.real_time_factor(), 4);
+  j["steps"] = r.stats.steps;
+  j["final"] = {{"load_N", round_sig(fin.load_N)},
+                {"sinking_mm", round_sig(fin.sinking_m * 1e3)},
+                {"contact_length_mm", round_sig(fin.contact_length_m * 1e3)},
+                {"rolling_resistance_N", round_sig(r.rolling_resistance_N)},
+                {"hub_displacement_mm", round_sig(fin.hub_displacement_m * 1e3)},
+                {"pressure_centre_mm", round_sig(fin.pressure_centre_m * 1e3)},
+                {"contact_units", fin.contact_units}};
+  j["contact_switches"] = r.contact_events;
+  j["solver"] = {{"rhs_evals", r.stats.rhs_evals},
+                 {"jacobian_evals", r.stats.jac_evals},
+                 {"linear_setups", r.stats.lin_setups},
+                 {"nonlinear_iterations", r.stats.nonlin_iters},
+                 {"error_test_fails", r.stats.error_test_fails},
+                 {"restarts", r.stats.reinits}};
+  j["model"] = {{"dynamic_coordinates", model.nq},
+                {"residual_coordinates", model.nr},
+                {"candidate_units", model.m},
+                {"states", model.state_size()},
+                {"tread_time_constant_s", round_sig(model.tread_time_constant_s)},
+                {"residual_time_constant_s", round_sig(model.tau_residual_s)}};
+  j["samples"] = r.samples.size();
+  return j;
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> transient_series(
+    const transient::TransientResult& r) {
+  std::vector<std::pair<std::string, std::vector<double>>> cols = {{"t_s", {}},
+                                                                   {"load_N", {}},
+                                                                   {"hub_displacement_mm", {}},
+                                                                   {"sinking_mm", {}},
+                                                                   {"contact_length_mm", {}},
+                                                                   {"longitudinal_force_N", {}}};
+  for (const auto& s : r.samples) {
+    const double row[] = {s.t_s,
+                          s.load_N,
+                          s.hub_displacement_m * 1e3,
+                          s.sinking_m * 1e3,
+                          s.contact_length_m * 1e3,
+                          s.longitudinal_force_N};
+    for (std::size_t c = 0; c < cols.size(); ++c) cols[c].second.push_back(row[c]);
+  }
+  return cols;
+}
+
+}  // namespace modaltyre::report

@@ -1,0 +1,45 @@
+"""Bad input raises modaltyre.InputError (a ValueError) with the CLI's file/line/key message."""
+import re
+
+import pytest
+
+from conftest import run_cli, src
+
+
+def misspelt_config(tmp_path):
+    text = open(src("configs", "sf350.yaml")).read()
+    text = text.replace("hammer_csv: data/", "hammer_csv: " + src("configs", "data") + "/")
+    assert "  modulus_MPa: 3.0" in text
+    path = tmp_path / "misspelt.yaml"
+    path.write_text(text.replace("  modulus_MPa: 3.0", "  modulus_MPz: 3.0"))
+    return str(path)
+
+
+def test_misspelt_key_raises_input_error_with_the_cli_message(modaltyre, tmp_path):
+    path = misspelt_config(tmp_path)
+    with pytest.raises(modaltyre.InputError) as e:
+        modaltyre.Tyre(path)
+    assert isinstance(e.value, ValueError)
+    assert "modulus_MPz" in str(e.value) and path in str(e.value)
+    assert e.value.file == path and e.value.line > 0 and "modulus_MPz" in e.value.key
+    _, err = run_cli("footprint", path, expect=2)
+    assert err.strip() == "error: " + str(e.value)
+
+
+def test_bad_override_and_bad_load(modaltyre):
+    with pytest.raises(modaltyre.InputError, match=re.escape("tread.modulus_MPa")):
+        modaltyre.Tyre(src("configs", "sf350_2d_table3.yaml"), {"tread.modulus_MPa": -1})
+    tyre = modaltyre.Tyre(src("configs", "sf350_2d_table3.yaml"))
+    for load in (-5.0, 1e-9, 2e7, float("nan")):
+        with pytest.raises(modaltyre.InputError, match="--load"):
+            tyre.footprint(load)
+    with pytest.raises(modaltyre.InputError, match="1.5 F_z"):
+        tyre.footprint(1000.0, 5000.0)
+
+
+def test_missing_files_and_error_classes(modaltyre, tmp_path):
+    with pytest.raises(modaltyre.InputError):
+        modaltyre.fit_modes(str(tmp_path / "absent.csv"))
+    with pytest.raises(modaltyre.InputError):
+        modaltyre.Tyre(str(tmp_path / "absent.yaml"))
+    assert issubclass(modaltyre.ComputationError, RuntimeError)

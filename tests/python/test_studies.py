@@ -1,0 +1,88 @@
+"""validate, sweep, transient, effects and discover equal their commands' output: --json to
+1e-12 (the same JSON-building code), the sweep's columns and the transient series cell for
+cell against the CSV the command writes."""
+import csv
+import math
+
+import numpy as np
+
+from conftest import assert_same, cli_json, run_cli, src
+
+SF350_2D = src("configs", "sf350_2d_table3.yaml")
+TABLE3 = src("configs", "data", "sf350_footprint_table3.csv")
+
+
+def cell(v):
+    """A number as the CSVs write it (%.10g)."""
+    return "%.10g" % v
+
+
+def test_validate_equals_the_cli(modaltyre):
+    for config in (SF350_2D, src("configs", "sf350.yaml")):
+        got = modaltyre.validate(config, TABLE3)
+        assert_same(got, cli_json("validate", config, TABLE3))
+        assert got["calibration"]["rows"] == [1, 6]
+
+
+def test_effects_equal_the_cli(modaltyre):
+    got = modaltyre.effects()
+    assert_same(got, cli_json("effects")["effects"])
+    assert "belt_flattening" in [e["name"] for e in got]
+
+
+def test_sweep_columns_equal_the_cli_csv(modaltyre, tmp_path):
+    sweep = src("configs", "sweeps", "modulus_load_grid.yaml")
+    out = tmp_path / "grid.csv"
+    run_cli("sweep", sweep, "--set", "contact.unit_length_mm=1", "--output", str(out))
+    rows = list(csv.DictReader(open(out)))
+    got = modaltyre.sweep(sweep, threads=2, overrides={"contact.unit_length_mm": 1})
+    assert list(got) == list(rows[0])
+    for name, column in got.items():
+        assert len(column) == len(rows)
+        if column.dtype == np.float64:
+            assert [cell(v) for v in column] == [r[name] for r in rows], name
+        else:
+            assert list(column) == [r[name] for r in rows], name
+    serial = modaltyre.sweep(sweep, threads=1, overrides={"contact.unit_length_mm": 1})
+    np.testing.assert_array_equal(serial["sinking_mm"], got["sinking_mm"])
+    assert (got["status"] == "ok").all()
+
+
+def test_transient_equals_the_cli(modaltyre, tmp_path):
+    sets = {"contact.unit_length_mm": 4, "transient.load_hold.hold_s": 0.5}
+    args = ["transient", SF350_2D, "--scenario", "load-hold"]
+    for k, v in sets.items():
+        args += ["--set", f"{k}={v}"]
+    series_csv = tmp_path / "hold.csv"
+    cli = cli_json(*args, "--csv", str(series_csv))
+    got = modaltyre.transient(SF350_2D, "load-hold", sets)
+    series = got.pop("series")
+    for timing in ("wall_s", "real_time_factor"):  # the machine's, not the model's
+        assert got.pop(timing) > 0 and cli.pop(timing) > 0
+    assert_same(got, cli)
+    rows = list(csv.DictReader(open(series_csv)))
+    assert list(series) == list(rows[0])
+    for name, column in series.items():
+        assert column.flags["OWNDATA"] and len(column) == got["samples"]
+        assert [cell(v) for v in column] == [r[name] for r in rows], name
+    # After the ramp the contact carries the load, up to the hub's lightly damped bounce
+    # (0.1 % after half a second of hold).
+    assert math.isclose(series["load_N"][-1], 4000, rel_tol=1e-2)
+
+
+def test_transient_refuses_the_3d_patch(modaltyre):
+    config = src("configs", "sf350.yaml")
+    try:
+        modaltyre.transient(config, "load-hold")
+    except modaltyre.InputError as e:
+        assert e.key == "footprint_3d"
+        _, err = run_cli("transient", config, "--scenario", "load-hold", expect=2)
+        assert err.strip() == "error: " + str(e)
+    else:
+        raise AssertionError("no InputError")
+
+
+def test_discover_equals_the_cli(modaltyre):
+    got = modaltyre.discover(SF350_2D, TABLE3, threads=1)
+    assert_same(got, cli_json("discover", SF350_2D, TABLE3, "--threads", "1"))
+    assert got["rows"] == 6
