@@ -5,12 +5,14 @@
 
 #include "cli_support.h"
 #include "commands.h"
+#include "condition_settings.h"
 #include "footprint_map.h"
 #include "footprint_report.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/report/footprint_json.h"
+#include "modaltyre/report/validation_json.h"
 
 namespace modaltyre::app {
 namespace {
@@ -44,7 +46,10 @@ void register_footprint(CLI::App& app) {
                              true));
   cmd->add_option("--fx", a->horizontal, "horizontal force at the axle [N], forward positive")
       ->check(physical_range(-1e7, 1e7, "N", "1e7 N exceeds any tyre", true));
-  cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");
+  cmd->add_option("--set", a->overrides,
+                  "override a config key, e.g. --set tread.modulus_MPa=8, or state a condition "
+                  "for every load: pressure_kPa, hold_s, speed_kmh, branch, surface (as in a "
+                  "sweep), e.g. --set hold_s=60 --set surface=soil");
   cmd->add_flag("--json", a->json, "print JSON");
   cmd->add_option("--plot", a->plot,
                   "draw the pressure distributions (.svg or .png); with footprint_3d: the "
@@ -53,7 +58,13 @@ void register_footprint(CLI::App& app) {
   cmd->add_option("--map-csv", a->map_csv,
                   "write the pressure maps as CSV load_N,x_mm,y_mm,pressure_kPa (footprint_3d:)");
   cmd->callback([a, cmd] {
-    const auto config = contact::load_tyre_config(a->config, a->overrides);
+    auto overrides = a->overrides;
+    const auto settings = take_condition_settings(overrides);
+    refuse_condition_setting(settings, ConditionId::load_N,
+                             "footprint takes its loads from --load");
+    refuse_condition_setting(settings, ConditionId::horizontal_force_N,
+                             "footprint takes the horizontal force from --fx");
+    const auto config = contact::load_tyre_config(a->config, overrides);
     if (!a->map_csv.empty()) {
       if (!config.footprint_3d) {
         throw InputError({a->config, 0, "--map-csv"},
@@ -63,10 +74,14 @@ void register_footprint(CLI::App& app) {
       check_output_path(a->map_csv, "--map-csv");  // before anything is computed
     }
     const auto model = contact::build_tyre_model(config);
-    const auto cases = report::footprint_cases(
+    auto cases = report::footprint_cases(
         config, a->loads, cmd->count("--fx") ? std::optional<double>(a->horizontal) : std::nullopt);
-    // At the config's default conditions (its pressure, standing, loading branch, rigid road):
-    // effects act on what is printed exactly as they do in `sweep` and `validate`.
+    // At the config's default conditions (its pressure, standing, loading branch, rigid road)
+    // but those stated with --set: effects act on what is printed exactly as they do in `sweep`
+    // and `validate`.
+    for (auto& c : cases) apply_condition_settings(settings, c);
+    auto shown = config.default_conditions(0);
+    apply_condition_settings(settings, shown);
     const auto results = contact::predict_all(model, cases);
     report::require_converged(results);
     warn_outside_validity(config, results);
@@ -79,9 +94,14 @@ void register_footprint(CLI::App& app) {
     }
     if (!a->map_csv.empty()) write_map_csv(results, a->map_csv);
     if (a->json) {
-      print_json(report::footprint_json(model, results));
+      auto j = report::footprint_json(model, results);
+      j["conditions"] = report::conditions_json(shown);
+      // The load and horizontal force are stated per case.
+      j["conditions"].erase("load_N");
+      j["conditions"].erase("horizontal_force_N");
+      print_json(j);
     } else {
-      print_footprint_table(model, results);
+      print_footprint_table(model, results, shown);
     }
   });
 }

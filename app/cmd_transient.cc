@@ -11,6 +11,7 @@
 
 #include "cli_support.h"
 #include "commands.h"
+#include "condition_settings.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
@@ -76,6 +77,41 @@ void transient_plot(const transient::TransientResult& r, const std::string& path
   render_plot(fig, path);
 }
 
+// The scenario key a condition stated with --set stands for (load_N, hold_s of load-hold,
+// speed_kmh of rolling and cleat), appended to `overrides` so that the config reader checks it
+// like the key itself. Any other condition: InputError naming it (the transient model runs the
+// config's tyre on a rigid road and has no other condition).
+void map_conditions(const std::vector<ConditionSetting>& settings, transient::Scenario scenario,
+                    std::vector<std::string>& overrides) {
+  using transient::Scenario;
+  const std::string section = scenario == Scenario::load_hold        ? "load_hold"
+                              : scenario == Scenario::free_vibration ? "free_vibration"
+                              : scenario == Scenario::rolling        ? "rolling"
+                                                                     : "cleat";
+  const std::string sc = transient::to_string(scenario);
+  for (const auto& c : settings) {
+    std::string key;
+    if (c.id == ConditionId::load_N) key = "load_N";
+    if (c.id == ConditionId::hold_s && scenario == Scenario::load_hold) key = "hold_s";
+    if (c.id == ConditionId::speed_kmh &&
+        (scenario == Scenario::rolling || scenario == Scenario::cleat)) {
+      key = "speed_km_h";
+    }
+    if (key.empty()) {
+      refuse_condition_setting(
+          {c}, c.id,
+          c.id == ConditionId::pressure_kPa
+              ? "transient runs at the tyre's pressure: set tyre.inflation_pressure_kPa"
+              : "scenario " + sc + " takes load_N" +
+                    (scenario == Scenario::load_hold ? ", hold_s" : "") +
+                    (scenario == Scenario::rolling || scenario == Scenario::cleat ? ", speed_kmh"
+                                                                                  : "") +
+                    " (the transient model runs on a rigid road, loading, without effects)");
+    }
+    overrides.push_back("transient." + section + "." + key + "=" + c.text);
+  }
+}
+
 }  // namespace
 
 void register_transient(CLI::App& app) {
@@ -96,10 +132,15 @@ void register_transient(CLI::App& app) {
   cmd->add_flag("--json", a->json, "print a JSON summary");
   cmd->add_option("--plot", a->plot, "draw the time series (.svg or .png)");
   cmd->add_option("--set", a->overrides,
-                  "override a config key, e.g. --set transient.load_hold.hold_s=10");
+                  "override a config key, e.g. --set transient.load_hold.hold_s=10, or state a "
+                  "condition of the scenario: load_N; hold_s (load-hold); speed_kmh (rolling, "
+                  "cleat), e.g. --set hold_s=60");
   cmd->callback([a] {
     const transient::Scenario scenario = transient::parse_scenario(a->scenario);
-    const auto config = contact::load_tyre_config(a->config, a->overrides);
+    auto overrides = a->overrides;
+    const auto settings = take_condition_settings(overrides);
+    map_conditions(settings, scenario, overrides);
+    const auto config = contact::load_tyre_config(a->config, overrides);
     report::require_2d_patch(config, a->config);
     const auto tyre = contact::build_tyre_model(config);
     const auto model = transient::build_transient_model(tyre);
@@ -129,10 +170,13 @@ void register_transient(CLI::App& app) {
     if (!a->plot.empty()) transient_plot(r, a->plot);
     const auto& fin = r.samples.back();
     if (a->json) {
-      print_json(report::transient_json(model, r));
+      auto j = report::transient_json(model, r);
+      j["conditions"] = settings_json(settings);
+      print_json(j);
     } else {
-      std::cout << "scenario " << transient::to_string(scenario) << ": " << r.message << "\n"
-                << "simulated " << fixed(r.simulated_s, 3) << " s in " << fixed(r.wall_s, 3)
+      std::cout << "scenario " << transient::to_string(scenario) << ": " << r.message << "\n";
+      if (!settings.empty()) std::cout << "conditions: " << settings_text(settings) << "\n";
+      std::cout << "simulated " << fixed(r.simulated_s, 3) << " s in " << fixed(r.wall_s, 3)
                 << " s (real-time factor " << fixed(r.real_time_factor(), 1) << ")\n"
                 << "final: load " << fixed(fin.load_N, 1) << " N, sinking "
                 << fixed(fin.sinking_m * 1e3, 3) << " mm, contact length "

@@ -1,9 +1,11 @@
 // modaltyre validate CONFIG MEASURED.csv [--set key=value]... [--json] [--plot FILE]
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
 #include "cli_support.h"
 #include "commands.h"
+#include "condition_settings.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/validity.h"
 #include "modaltyre/core/gnuplot.h"
@@ -24,9 +26,14 @@ struct ValidateArgs {
 
 using report::row_validity;
 
-void print_table(const studies::ValidationReport& rep, const std::string& measured_path) {
+void print_table(const studies::ValidationReport& rep, const std::string& measured_path,
+                 const std::vector<ConditionSetting>& settings) {
   const auto& c = rep.calibration;
   std::cout << rep.model.config.name << " vs " << measured_path << "\n";
+  if (!settings.empty()) {
+    std::cout << "conditions: " << settings_text(settings)
+              << " (--set, on every row; the file has no such column)\n";
+  }
   if (c.keys.empty()) {
     std::cout << "No calibration: every row is a prediction.\n";
   } else {
@@ -174,21 +181,39 @@ void register_validate(CLI::App& app) {
                   "condition columns pressure_kPa, hold_s, speed_kmh, horizontal_force_N, branch, "
                   "surface (e.g. a sweep's output)")
       ->required();
-  cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.modulus_MPa=8");
+  cmd->add_option("--set", a->overrides,
+                  "override a config key, e.g. --set tread.modulus_MPa=8, or state a condition "
+                  "the file has no column of for every row: pressure_kPa, hold_s, speed_kmh, "
+                  "branch, surface, horizontal_force_N (e.g. --set hold_s=60)");
   cmd->add_flag("--json", a->json, "print JSON");
   cmd->add_option("--plot", a->plot,
                   "draw sinking, length and (where measured) width versus load (.svg or .png)");
   cmd->callback([a] {
     // The config decides how the file is read (effects need every row's conditions).
-    const auto config = contact::load_tyre_config(a->config, a->overrides);
-    const auto measured = studies::read_validation_measurements(a->measured, config);
+    auto overrides = a->overrides;
+    const auto settings = take_condition_settings(overrides);
+    refuse_condition_setting(settings, ConditionId::load_N, "each row states its load");
+    const auto config = contact::load_tyre_config(a->config, overrides);
+    auto measured = studies::read_validation_measurements(a->measured, config);
+    for (const auto& s : settings) {
+      const auto& name = condition_info(s.id).name;
+      if (std::find(measured.conditions.begin(), measured.conditions.end(), name) !=
+          measured.conditions.end()) {
+        refuse_condition_setting(settings, s.id,
+                                 "the file '" + a->measured + "' has a " + name + " column");
+      }
+    }
+    for (auto& row : measured.rows) apply_condition_settings(settings, row.conditions);
+    if (!settings.empty()) measured.loads_only = false;  // the rows now state conditions
     const auto rep = studies::validate_footprints(config, measured);
     warn_outside_validity(rep);
     if (!a->plot.empty()) plot_validation(rep, a->plot);
     if (a->json) {
-      print_json(report::validation_json(rep));
+      auto j = report::validation_json(rep);
+      j["conditions"] = settings_json(settings);
+      print_json(j);
     } else {
-      print_table(rep, a->measured);
+      print_table(rep, a->measured, settings);
     }
   });
 }

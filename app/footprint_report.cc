@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli_support.h"
+#include "condition_settings.h"
 #include "modaltyre/contact/validity.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
@@ -27,7 +28,8 @@ void warn_outside_validity(const contact::TyreConfig& config,
 }
 
 void print_footprint_table(const contact::TyreModel& model,
-                           const std::vector<contact::Prediction>& predictions) {
+                           const std::vector<contact::Prediction>& predictions,
+                           const contact::OperatingConditions& conditions) {
   const auto& c = model.config;
   std::cout << c.name << " (" << c.source << "): " << model.candidates() << " candidate units of "
             << fixed(model.unit_length_m * 1e3, 3) << " mm, modal orders 0.."
@@ -36,9 +38,10 @@ void print_footprint_table(const contact::TyreModel& model,
   if (const auto on = enabled_effects(c.effects); !on.empty()) {
     std::cout << "effects on:";
     for (const auto& name : on) std::cout << " " << name;
-    std::cout << " (at the config's conditions: " << fixed(c.inflation_pressure_Pa * 1e-3, 0)
-              << " kPa, standing, loading, rigid road)\n";
+    std::cout << "\n";
   }
+  // Conditions act only through effects; stated always so that a run says what it assumed.
+  std::cout << "conditions: " << describe_conditions(conditions) << "\n";
   if (c.footprint_3d) {
     const auto& s = *c.footprint_3d;
     std::cout

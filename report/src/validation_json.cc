@@ -15,16 +15,6 @@ nlohmann::json opt_json(const std::optional<double>& v, double scale = 1.0) {
   return v ? nlohmann::json(round_sig(*v * scale, 8)) : nlohmann::json();
 }
 
-nlohmann::json conditions_json(const contact::OperatingConditions& c) {
-  return {{"load_N", c.load_N},
-          {"horizontal_force_N", c.horizontal_force_N},
-          {"pressure_kPa", c.pressure_kPa},
-          {"hold_s", c.hold_s},
-          {"speed_kmh", c.speed_kmh},
-          {"branch", contact::branch_name(c.branch)},
-          {"surface", contact::surface_name(c.surface)}};
-}
-
 nlohmann::json row_json(const studies::ValidationRow& r, bool with_conditions,
                         const contact::Validity& v) {
   nlohmann::json row = {
@@ -53,6 +43,16 @@ nlohmann::json row_json(const studies::ValidationRow& r, bool with_conditions,
 }
 
 }  // namespace
+
+nlohmann::json conditions_json(const contact::OperatingConditions& c) {
+  return {{"load_N", c.load_N},
+          {"horizontal_force_N", c.horizontal_force_N},
+          {"pressure_kPa", c.pressure_kPa},
+          {"hold_s", c.hold_s},
+          {"speed_kmh", c.speed_kmh},
+          {"branch", contact::branch_name(c.branch)},
+          {"surface", contact::surface_name(c.surface)}};
+}
 
 nlohmann::json validation_json(const studies::ValidationReport& rep) {
   nlohmann::json rows = nlohmann::json::array();

@@ -14,6 +14,9 @@ SF350_2D = src("configs", "sf350_2d_table3.yaml")
 def test_3d_footprint_equals_the_cli(modaltyre):
     tyre = modaltyre.Tyre(SF350)
     cli = cli_json("footprint", SF350, "--load", "4000")
+    # The CLI's header of the run's conditions: the config's defaults without --set.
+    assert cli.pop("conditions") == {"pressure_kPa": 230.0, "hold_s": 0.0, "speed_kmh": 0.0,
+                                     "branch": "load", "surface": "rigid"}
     assert_same(tyre.report([4000]), cli)
     f = tyre.footprint(4000)
     case = cli["cases"][0]
@@ -34,6 +37,7 @@ def test_2d_footprints_with_a_horizontal_force_equal_the_cli(modaltyre):
     for load in loads:
         args += ["--load", str(load)]
     cli = cli_json(*args)
+    assert cli.pop("conditions")["hold_s"] == 0.0  # the CLI's header: the config's defaults
     assert_same(tyre.report(loads, 500.0), cli)
     for f, case in zip(tyre.footprints(loads, 500.0), cli["cases"]):
         assert f.width_mm is None and f.map is None  # the 2D patch's width is an input

@@ -11,6 +11,11 @@ namespace modaltyre::report {
 /// conditions, validity), RMS over the predicted rows, the declared calibration's result.
 nlohmann::json validation_json(const studies::ValidationReport& rep);
 
+/// One row's or run's conditions by catalogue name (core/conditions.h), words as words:
+/// {"load_N": .., "horizontal_force_N": .., "pressure_kPa": .., "hold_s": .., "speed_kmh": ..,
+/// "branch": "load", "surface": "rigid"}.
+nlohmann::json conditions_json(const contact::OperatingConditions& c);
+
 /// A predicted row outside the model's validity range (contact/validity.h) is flagged.
 contact::Validity row_validity(const contact::TyreConfig& config, const studies::ValidationRow& r);
 

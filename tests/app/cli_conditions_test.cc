@@ -1,0 +1,108 @@
+// Operating conditions stated with --set (`--set hold_s=60`, `--set surface=soil`) in
+// `footprint`, `validate` and `transient`: the catalogue's names and ranges as in a sweep, the
+// conditions in the output header, exit 2 naming the condition where it does not apply.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_runner.h"
+
+namespace {
+
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+const std::string kTable3 =
+    std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
+
+class ConditionsCli : public modaltyre_test::CliFixture {
+ protected:
+  // A coarse mesh with tread relaxation (seed 001 eq. (10)) on: the hold time acts.
+  modaltyre_test::CliRun footprint(std::vector<std::string> extra, bool json = true) {
+    std::vector<std::string> args{"footprint", kConfig,
+                                  "--load",    "4000",
+                                  "--set",     "contact.unit_length_mm=2",
+                                  "--set",     "effects.tread_relaxation.enabled=true"};
+    if (json) args.push_back("--json");
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run(args);
+  }
+};
+
+TEST_F(ConditionsCli, HoldTimeRelaxesTheTreadSoTheTyreSinksDeeper) {
+  const auto base = footprint({});
+  const auto held = footprint({"--set", "hold_s=60"});
+  ASSERT_EQ(base.exit_code, 0) << base.err;
+  ASSERT_EQ(held.exit_code, 0) << held.err;
+  const auto b = nlohmann::json::parse(base.out), h = nlohmann::json::parse(held.out);
+  EXPECT_EQ(b["conditions"]["hold_s"], 0.0);
+  EXPECT_EQ(h["conditions"]["hold_s"], 60.0);
+  // The relaxed tread is softer: at the same load the held tyre sinks deeper.
+  EXPECT_GT(h["cases"][0]["sinking_mm"].get<double>(),
+            b["cases"][0]["sinking_mm"].get<double>() * 1.01);
+}
+
+TEST_F(ConditionsCli, FootprintHeaderStatesTheConditionsAndSoilIsAccepted) {
+  const auto r = footprint({"--set", "hold_s=60", "--set", "surface=soil"}, false);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("conditions: 230 kPa, held 60 s, standing, loading branch, soil"),
+            std::string::npos)
+      << r.out;
+  const auto j = nlohmann::json::parse(footprint({"--set", "surface=soil"}).out);
+  EXPECT_EQ(j["conditions"]["surface"], "soil");
+}
+
+TEST_F(ConditionsCli, ValueOutsideTheCatalogueExitsTwoStatingTheRange) {
+  const auto r = footprint({"--set", "hold_s=-1"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("hold_s"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[0, 1e7] s"), std::string::npos) << r.err;
+  const auto w = footprint({"--set", "surface=mud"});
+  EXPECT_EQ(w.exit_code, 2);
+  EXPECT_NE(w.err.find("rigid"), std::string::npos) << w.err;
+}
+
+TEST_F(ConditionsCli, LoadAndHorizontalForceComeFromTheirOptions) {
+  const auto r = footprint({"--set", "load_N=3000"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--load"), std::string::npos) << r.err;
+  const auto f = footprint({"--set", "horizontal_force_N=100"});
+  EXPECT_EQ(f.exit_code, 2);
+  EXPECT_NE(f.err.find("--fx"), std::string::npos) << f.err;
+}
+
+TEST_F(ConditionsCli, ValidateAppliesAConditionTheFileDoesNotGive) {
+  const auto r = run({"validate", kConfig, kTable3, "--set", "contact.unit_length_mm=2", "--set",
+                      "effects.tread_relaxation.enabled=true", "--set", "hold_s=60"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("conditions: hold_s=60"), std::string::npos) << r.out;
+  const auto j = run({"validate", kConfig, kTable3, "--json", "--set", "contact.unit_length_mm=2",
+                      "--set", "effects.tread_relaxation.enabled=true", "--set", "hold_s=60"});
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const auto doc = nlohmann::json::parse(j.out);
+  EXPECT_EQ(doc["conditions"]["hold_s"], 60.0);
+  for (const auto& row : doc["rows"]) EXPECT_EQ(row["conditions"]["hold_s"], 60.0) << row;
+}
+
+TEST_F(ConditionsCli, ValidateRefusesAConditionTheFileGivesAsAColumn) {
+  const auto csv = (dir_ / "held.csv").string();
+  std::ofstream(csv) << "load_N,hold_s,sinking_mm\n2131,0,8\n3261,0,12\n";
+  const auto r = run({"validate", kConfig, csv, "--set", "hold_s=60"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("hold_s column"), std::string::npos) << r.err;
+}
+
+TEST_F(ConditionsCli, TransientRefusesAConditionItsScenarioHasNot) {
+  const auto r = run({"transient", kConfig, "--scenario", "rolling", "--set", "hold_s=60"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("scenario rolling takes load_N, speed_kmh"), std::string::npos) << r.err;
+  const auto s = run({"transient", kConfig, "--scenario", "load-hold", "--set", "surface=soil"});
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("surface"), std::string::npos) << s.err;
+  // load-hold's hold_s is its scenario key, checked by the config reader (at most 1e6 s there).
+  const auto h = run({"transient", kConfig, "--scenario", "load-hold", "--set", "hold_s=5e6"});
+  EXPECT_EQ(h.exit_code, 2);
+  EXPECT_NE(h.err.find("transient.load_hold.hold_s"), std::string::npos) << h.err;
+}
+
+}  // namespace
