@@ -162,36 +162,36 @@ void add_detection_limits(const Evaluator& ev, const Stage& current, const Namin
                           const std::function<std::function<void()>(int)>& phase,
                           DiscoverReport& rep) {
   auto& last = rep.rounds.back();
-  std::vector<int> todo;
+  std::vector<int> unnamed;
   std::vector<EffectId> ids;
   for (int c = 0; c < static_cast<int>(last.size()); ++c) {
     const contact::EffectInfo* info = contact::find_effect(last[c].name);
     const auto& on = current.variant.effects;
     if (!last[c].testable || !info || std::find(on.begin(), on.end(), info->id) != on.end())
       continue;
-    todo.push_back(c);
+    unnamed.push_back(c);
     ids.push_back(info->id);
   }
   const LimitFinder finder(ev, current.fit.config, current.variant, current.fit, rule, opt.limits);
-  const int n = static_cast<int>(todo.size());
+  const int n = static_cast<int>(unnamed.size());
   const auto tick = phase(n);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
   for (int t = 0; t < n; ++t) {
-    last[todo[t]].limit = finder.limit(ids[t]);
+    last[unnamed[t]].limit = finder.limit(ids[t]);
     tick();
   }
   if (rep.effects.size() >= rep.rounds.size() || n == 0) return;  // the last round named one
   int best = -1;
   for (int t = 0; t < n; ++t) {
-    const DetectionLimit& l = last[todo[t]].limit;
+    const DetectionLimit& l = last[unnamed[t]].limit;
     if (l.parameter.empty() || l.reason.rfind("no value", 0) == 0) continue;
-    if (best < 0 || l.power_at_default > last[todo[best]].limit.power_at_default) best = t;
+    if (best < 0 || l.power_at_default > last[unnamed[best]].limit.power_at_default) best = t;
   }
   if (best < 0) return;
   MoreRows& m = rep.more_rows;
-  m.effect = last[todo[best]].name;
+  m.effect = last[unnamed[best]].name;
   m.condition = contact::effect_info(ids[best]).regime;
-  m.power_at_default = last[todo[best]].limit.power_at_default;
+  m.power_at_default = last[unnamed[best]].limit.power_at_default;
   m.replicas = finder.replicas_for_default(ids[best]);
   const int rows = static_cast<int>(ev.data().rows.size());
   m.extra_rows = m.replicas > 0 ? (m.replicas - 1) * rows : 0;
