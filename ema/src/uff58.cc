@@ -122,7 +122,7 @@ class Reader {
     if (end == std::string::npos) end = text_.size();
     out = text_.substr(pos_, end - pos_);
     if (!out.empty() && out.back() == '\r') out.pop_back();
-    pos_ = end + 1;
+    pos_ = std::min(end + 1, text_.size());  // a last line without '\n' must not step past the end
     ++line_;
     return true;
   }
@@ -334,9 +334,10 @@ class Reader {
   std::vector<double> read_binary_values(const Header& h, bool little, int start) {
     const bool single = h.ordinate_type == 2 || h.ordinate_type == 5;
     const std::size_t n = value_count(h), size = single ? 4 : 8;
-    if (text_.size() - pos_ < n * size) {
+    const std::size_t left = text_.size() - pos_;  // pos_ <= size: next_line clamps it
+    if (n > left / size) {
       fail(start, "record 12 (binary)",
-           "the file ends after " + std::to_string(text_.size() - pos_) + " bytes of the " +
+           "the file ends after " + std::to_string(left) + " bytes of the " +
                std::to_string(n * size) + " that record 7 promises");
     }
     std::vector<double> v(n);

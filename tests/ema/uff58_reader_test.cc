@@ -248,6 +248,15 @@ TEST_F(Uff58, TruncatedAndEmptyFilesAndLimits) {
   const std::string b = modaltyre_test::uff58_file(small_set(), bin);
   const std::string bcut = write(b.substr(0, b.find("    -1", 10) - 20), "bcut.uff");
   expect_input_error([&] { read_uff58(bcut); }, bcut, 2, "record 12 (binary)");
+
+  // A 58b file that ends on record 11 without its newline: the data block is empty, not
+  // read past the end of the file (a fuzzing finding: the byte count went negative).
+  std::size_t at = b.find("58b");
+  for (int k = 0; k < 12 && at != std::string::npos; ++k) at = b.find('\n', at + 1);
+  ASSERT_NE(at, std::string::npos);
+  const std::string bend = write(b.substr(0, at), "bend.uff");
+  const auto m3 = expect_input_error([&] { read_uff58(bend); }, bend, 2, "record 12 (binary)");
+  EXPECT_NE(m3.find("ends after 0 bytes"), std::string::npos) << m3;
 }
 
 TEST_F(Uff58, SkipsOtherDatasetsAndCoherence) {
