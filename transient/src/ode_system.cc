@@ -109,18 +109,23 @@ void TransientSystem::add_road(double t, int lo, int hi, Eigen::VectorXd& g) con
 
 void TransientSystem::tip_penetration_in_reach(double t, const double* y,
                                                Eigen::VectorXd& g) const {
+  int lo = 0, hi = -1;
+  g.setConstant(model_.m, -1.0);
+  penetration_band(t, y, g, lo, hi);
+}
+
+void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo,
+                                       int& hi) const {
   const auto& M = model_;
   contact_coordinates(y);
-  int lo = 0, hi = -1;
+  lo = 0, hi = -1;
   reach(y, lo, hi);
-  g.setConstant(M.m, -1.0);
   if (hi < lo) return;
   const int n = hi - lo + 1;
   // u = T xi (model.h's contact basis: rank columns instead of nq + nr).
   auto seg = g.segment(lo, n);
-  seg.noalias() = -(M.T.middleRows(lo, n) * scratch_xi_);
-  seg.array() += y[M.z_index()];
-  seg -= M.tyre.sag.segment(lo, n);
+  seg.noalias() = M.T.middleRows(lo, n) * scratch_xi_;
+  seg = (y[M.z_index()] - M.tyre.sag.segment(lo, n).array() - seg.array()).matrix();
   add_road(t, lo, hi, g);
   if (M.settings.relaxation) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + lo, n);
 }
@@ -160,8 +165,19 @@ void TransientSystem::tip_penetration(double t, const double* y, Eigen::VectorXd
 }
 
 void TransientSystem::forces_into(double t, const double* y, Eigen::VectorXd& f) const {
-  tip_penetration_in_reach(t, y, f);
-  f = (f.array() > 0).select(model_.k_contact.array() * f.array(), 0.0);
+  int lo = 0, hi = -1;
+  forces_band(t, y, f, lo, hi);
+}
+
+void TransientSystem::forces_band(double t, const double* y, Eigen::VectorXd& f, int& lo,
+                                  int& hi) const {
+  // f = 0 outside the reach [lo, hi] (g < 0 there for certain), k max(0, g) inside.
+  f.setZero(model_.m);
+  penetration_band(t, y, f, lo, hi);
+  if (hi < lo) return;
+  const int n = hi - lo + 1;
+  auto seg = f.segment(lo, n).array();
+  seg = (seg > 0).select(model_.k_contact.segment(lo, n).array() * seg, 0.0);
 }
 
 Eigen::VectorXd TransientSystem::forces(double t, const double* y) const {
@@ -186,9 +202,8 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   // of the evaluations that follow (reach()); the contact set is its sign.
   const auto& M = model_;
   contact_coordinates(y);
-  p_ref_.noalias() = -(M.T * scratch_xi_);
-  p_ref_.array() += y[M.z_index()];
-  p_ref_ -= M.tyre.sag;
+  p_ref_.noalias() = M.T * scratch_xi_;
+  p_ref_ = (y[M.z_index()] - M.tyre.sag.array() - p_ref_.array()).matrix();
   xi_ref_ = scratch_xi_;
   z_ref_ = y[M.z_index()];
   scratch_g_ = p_ref_;
@@ -211,14 +226,15 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   const int nq = M.nq, nr = M.nr;
   Eigen::VectorXd& f = scratch_f_;
   Eigen::VectorXd& G = scratch_G_;
-  f.resize(M.m);
-  forces_into(t, y, f);
+  int lo = 0, hi = -1;
+  forces_band(t, y, f, lo, hi);
   // G = psi^T f = Cq^T phi and Vf = V^T f = Cr^T phi with phi = T^T f over the units in contact
   // only (a third of the candidates at the default load; columns of T^T, contiguous).
   Eigen::VectorXd& phi = scratch_phi_;
   phi.setZero(M.rank);
-  for (int i = 0; i < M.m; ++i)
-    if (f(i) != 0.0) phi.noalias() += f(i) * M.T_by_unit.col(i);
+  double load = 0;
+  for (int i = lo; i <= hi; ++i)
+    if (f(i) != 0.0) phi.noalias() += f(i) * M.T_by_unit.col(i), load += f(i);
   G.noalias() = M.Cq.transpose() * phi;
   Eigen::VectorXd& Vf = scratch_Vf_;
   if (nr > 0) Vf.noalias() = M.Cr.transpose() * phi;
@@ -235,7 +251,7 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   }
   const int Z = M.z_index();
   ydot[Z] = y[Z + 1];
-  ydot[Z + 1] = (plan_.load(t) - f.sum()) / M.settings.hub_mass_kg;
+  ydot[Z + 1] = (plan_.load(t) - load) / M.settings.hub_mass_kg;
   if (M.settings.relaxation) {
     const int E = M.e_index();
     const double adv = Omega / M.tyre.dtheta_rad;
@@ -430,6 +446,9 @@ std::vector<double> TransientSystem::absolute_tolerances() const {
     a[j] = kDisplacementTolerance / s;
     a[M.nq + j] = a[j] * M.omega[j];
   }
+  // Tread states (relaxation on): their own tolerance (TransientSettings::tread_tolerance_m).
+  if (M.settings.relaxation)
+    std::fill(a.begin() + M.e_index(), a.begin() + M.e_index() + M.m, M.settings.tread_tolerance_m);
   // Hub velocity: displacement tolerance over a 10 ms time scale.
   a[M.z_index() + 1] = kDisplacementTolerance * 100;
   return a;

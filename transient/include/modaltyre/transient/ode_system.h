@@ -85,6 +85,10 @@ class TransientSystem {
   /// bounds of g from the last accepted state (update_contact_set()) or, before one, from rest.
   void reach(const double* y, int& lo, int& hi) const;
   void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
+  /// forces_into() that also returns the reach [lo, hi] (f = 0 outside; empty if hi < lo).
+  void forces_band(double t, const double* y, Eigen::VectorXd& f, int& lo, int& hi) const;
+  /// g over the reach [lo, hi] (entries outside untouched), as tip_penetration_in_reach().
+  void penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo, int& hi) const;
 
   const TransientModel& model_;
   const ScenarioPlan& plan_;
