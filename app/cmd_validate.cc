@@ -112,17 +112,21 @@ void warn_outside_validity(const studies::ValidationReport& rep) {
   }
 }
 
-void plot_validation(const studies::ValidationReport& rep, const std::string& path) {
+void plot_validation(const studies::ValidationReport& rep, const std::string& path,
+                     const std::vector<ConditionSetting>& settings) {
   double lo = 1e300, hi = 0;
   for (const auto& r : rep.rows)
     lo = std::min(lo, r.measured.conditions.load_N),
     hi = std::max(hi, r.measured.conditions.load_N);
-  // The model's curve at the config's conditions (effects act as on the rows).
+  // The model's curve at the config's conditions and those stated with --set, as every row
+  // (effects act as on the rows).
   std::vector<contact::OperatingConditions> curve;
   const int n = 24;
   for (int i = 0; i <= n; ++i) {
     curve.push_back(rep.model.config.default_conditions(0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n));
+    apply_condition_settings(settings, curve.back());
   }
+  const std::string stated = settings.empty() ? "" : " (" + settings_text(settings) + ")";
   const auto res = contact::predict_all(rep.model, curve);
   // One panel per compared observable: the model's curve, the measured rows (calibration rows
   // marked apart).
@@ -154,7 +158,7 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
     }
     if (measured.x.empty() && calibration.x.empty()) continue;  // not measured: not compared
     PlotPanel panel;
-    panel.title = o.title;
+    panel.title = o.title + stated;
     panel.xlabel = "vertical load [kN]";
     panel.ylabel = o.ylabel;
     panel.series = {model, measured};
@@ -207,7 +211,7 @@ void register_validate(CLI::App& app) {
     if (!settings.empty()) measured.loads_only = false;  // the rows now state conditions
     const auto rep = studies::validate_footprints(config, measured);
     warn_outside_validity(rep);
-    if (!a->plot.empty()) plot_validation(rep, a->plot);
+    if (!a->plot.empty()) plot_validation(rep, a->plot, settings);
     if (a->json) {
       auto j = report::validation_json(rep);
       j["conditions"] = settings_json(settings);
