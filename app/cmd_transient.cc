@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "condition_settings.h"
 #include "modaltyre/core/atomic_file.h"
+#include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/report/transient_json.h"
@@ -140,6 +141,7 @@ void register_transient(CLI::App& app) {
     auto overrides = a->overrides;
     const auto settings = take_condition_settings(overrides);
     map_conditions(settings, scenario, overrides);
+    refuse_repeated_overrides(overrides);  // e.g. hold_s=60 and transient.load_hold.hold_s=10
     const auto config = contact::load_tyre_config(a->config, overrides);
     report::require_2d_patch(config, a->config);
     const auto tyre = contact::build_tyre_model(config);

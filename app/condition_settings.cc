@@ -10,6 +10,7 @@
 namespace modaltyre::app {
 
 std::vector<ConditionSetting> take_condition_settings(std::vector<std::string>& overrides) {
+  refuse_repeated_overrides(overrides);
   std::vector<ConditionSetting> out;
   std::vector<std::string> config_keys;
   for (const auto& o : overrides) {
@@ -39,7 +40,6 @@ std::vector<ConditionSetting> take_condition_settings(std::vector<std::string>& 
       if (!info->in_range(*v)) throw InputError(at, info->refusal(s.text));
       s.value = *v;
     }
-    std::erase_if(out, [&](const ConditionSetting& e) { return e.id == s.id; });
     out.push_back(std::move(s));
   }
   overrides = std::move(config_keys);

@@ -19,9 +19,9 @@ struct ConditionSetting {
 };
 
 /// Takes the assignments "name=value" whose name is a condition of the catalogue out of
-/// `overrides`, checks each value against the catalogue and returns them in order (a later one
-/// for the same name replaces the earlier); config keys stay in `overrides`.
-/// InputError at "--set", name (exit 2): a value out of range (the message states the range) or
+/// `overrides`, checks each value against the catalogue and returns them in order; config keys
+/// stay in `overrides`. InputError at "--set", name (exit 2): a key given twice (both values
+/// named, refuse_repeated_overrides), a value out of range (the message states the range) or
 /// not one of the words.
 std::vector<ConditionSetting> take_condition_settings(std::vector<std::string>& overrides);
 
