@@ -5,15 +5,21 @@
 
 #include "cli_support.h"
 #include "commands.h"
-#include "condition_settings.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/validity.h"
 #include "modaltyre/core/gnuplot.h"
+#include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/footprint_json.h"
 #include "modaltyre/report/validation_json.h"
 #include "modaltyre/studies/validation.h"
 
 namespace modaltyre::app {
+
+using report::apply_condition_settings;
+using report::ConditionSetting;
+using report::settings_json;
+using report::settings_text;
+using report::take_condition_settings;
 namespace {
 
 struct ValidateArgs {
@@ -196,19 +202,9 @@ void register_validate(CLI::App& app) {
     // The config decides how the file is read (effects need every row's conditions).
     auto overrides = a->overrides;
     const auto settings = take_condition_settings(overrides);
-    refuse_condition_setting(settings, ConditionId::load_N, "each row states its load");
     const auto config = contact::load_tyre_config(a->config, overrides);
     auto measured = studies::read_validation_measurements(a->measured, config);
-    for (const auto& s : settings) {
-      const auto& name = condition_info(s.id).name;
-      if (std::find(measured.conditions.begin(), measured.conditions.end(), name) !=
-          measured.conditions.end()) {
-        refuse_condition_setting(settings, s.id,
-                                 "the file '" + a->measured + "' has a " + name + " column");
-      }
-    }
-    for (auto& row : measured.rows) apply_condition_settings(settings, row.conditions);
-    if (!settings.empty()) measured.loads_only = false;  // the rows now state conditions
+    report::apply_to_measurements(settings, measured, a->measured);
     const auto rep = studies::validate_footprints(config, measured);
     warn_outside_validity(rep);
     if (!a->plot.empty()) plot_validation(rep, a->plot, settings);
