@@ -18,6 +18,7 @@
 #include "commands.h"
 #include "discover_limits.h"
 #include "modaltyre/core/atomic_file.h"
+#include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/core/progress.h"
@@ -230,6 +231,7 @@ void register_discover(CLI::App& app) {
     if (!std::isfinite(a->unit_length_mm)) {
       throw InputError({"--unit-length-mm", 0, "unit_length_mm"}, "must be a finite number");
     }
+    refuse_repeated_overrides(a->overrides);
     const contact::TyreConfig cfg = contact::load_tyre_config(a->config, a->overrides);
     const studies::MeasurementSet data = studies::read_measurements(a->measured, cfg);
     for (const std::string* out : {&a->plot, &a->out_config}) {

@@ -5,16 +5,18 @@
 
 #include "cli_support.h"
 #include "commands.h"
-#include "condition_settings.h"
 #include "footprint_map.h"
 #include "footprint_report.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/footprint_json.h"
 #include "modaltyre/report/validation_json.h"
 
 namespace modaltyre::app {
+
+using report::take_condition_settings;
 namespace {
 
 struct FootprintArgs {
@@ -60,10 +62,7 @@ void register_footprint(CLI::App& app) {
   cmd->callback([a, cmd] {
     auto overrides = a->overrides;
     const auto settings = take_condition_settings(overrides);
-    refuse_condition_setting(settings, ConditionId::load_N,
-                             "footprint takes its loads from --load");
-    refuse_condition_setting(settings, ConditionId::horizontal_force_N,
-                             "footprint takes the horizontal force from --fx");
+    report::refuse_footprint_settings(settings, "--load", "--fx");
     const auto config = contact::load_tyre_config(a->config, overrides);
     if (!a->map_csv.empty()) {
       if (!config.footprint_3d) {
@@ -76,12 +75,7 @@ void register_footprint(CLI::App& app) {
     const auto model = contact::build_tyre_model(config);
     auto cases = report::footprint_cases(
         config, a->loads, cmd->count("--fx") ? std::optional<double>(a->horizontal) : std::nullopt);
-    // At the config's default conditions (its pressure, standing, loading branch, rigid road)
-    // but those stated with --set: effects act on what is printed exactly as they do in `sweep`
-    // and `validate`.
-    for (auto& c : cases) apply_condition_settings(settings, c);
-    auto shown = config.default_conditions(0);
-    apply_condition_settings(settings, shown);
+    const auto shown = report::apply_to_footprint_cases(settings, config, cases);
     const auto results = contact::predict_all(model, cases);
     report::require_converged(results);
     warn_outside_validity(config, results);
@@ -95,10 +89,7 @@ void register_footprint(CLI::App& app) {
     if (!a->map_csv.empty()) write_map_csv(results, a->map_csv);
     if (a->json) {
       auto j = report::footprint_json(model, results);
-      j["conditions"] = report::conditions_json(shown);
-      // The load and horizontal force are stated per case.
-      j["conditions"].erase("load_N");
-      j["conditions"].erase("horizontal_force_N");
+      j["conditions"] = report::footprint_conditions_json(shown);
       print_json(j);
     } else {
       print_footprint_table(model, results, shown);

@@ -20,6 +20,7 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "modaltyre/core/atomic_file.h"
+#include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/progress.h"
 #include "modaltyre/studies/sweep.h"
@@ -63,6 +64,7 @@ struct Prepared {
 
 Prepared prepare(const SweepArgs& a) {
   Prepared p;
+  refuse_repeated_overrides(a.overrides);
   p.spec = studies::read_sweep_spec(a.sweep, a.overrides);
   if (!a.output.empty()) {
     p.spec.output = a.output;

@@ -8,6 +8,7 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "modaltyre/core/atomic_file.h"
+#include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/tir/tir_compare.h"
 #include "modaltyre/tir/tir_export.h"
@@ -31,6 +32,7 @@ nlohmann::json opt(const std::optional<double>& v, double scale = 1) {
 std::string pct(const std::optional<double>& v) { return v ? fixed(100 * *v, 2) + " %" : "-"; }
 
 void run_export(const TirArgs& a, CLI::App* cmd) {
+  refuse_repeated_overrides(a.overrides);
   const auto config = contact::load_tyre_config(a.config, a.overrides);
   const auto model = contact::build_tyre_model(config);
   tir::TirExportOptions o;
@@ -153,6 +155,7 @@ void plot_comparison(const tir::TirComparison& c, const std::string& path) {
 void run_compare(const TirArgs& a, CLI::App* cmd) {
   // The .tir first: a wrong file is refused before the model is built.
   const tir::MfTyre t = tir::read_mf_tyre(a.tir_file);
+  refuse_repeated_overrides(a.overrides);
   const auto config = contact::load_tyre_config(a.config, a.overrides);
   const auto model = contact::build_tyre_model(config);
   tir::CompareOptions o;

@@ -11,14 +11,19 @@
 
 #include "cli_support.h"
 #include "commands.h"
-#include "condition_settings.h"
 #include "modaltyre/core/atomic_file.h"
+#include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
+#include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/transient_json.h"
 #include "modaltyre/transient/transient.h"
 
 namespace modaltyre::app {
+
+using report::settings_json;
+using report::settings_text;
+using report::take_condition_settings;
 namespace {
 
 struct TransientArgs {
@@ -77,41 +82,6 @@ void transient_plot(const transient::TransientResult& r, const std::string& path
   render_plot(fig, path);
 }
 
-// The scenario key a condition stated with --set stands for (load_N, hold_s of load-hold,
-// speed_kmh of rolling and cleat), appended to `overrides` so that the config reader checks it
-// like the key itself. Any other condition: InputError naming it (the transient model runs the
-// config's tyre on a rigid road and has no other condition).
-void map_conditions(const std::vector<ConditionSetting>& settings, transient::Scenario scenario,
-                    std::vector<std::string>& overrides) {
-  using transient::Scenario;
-  const std::string section = scenario == Scenario::load_hold        ? "load_hold"
-                              : scenario == Scenario::free_vibration ? "free_vibration"
-                              : scenario == Scenario::rolling        ? "rolling"
-                                                                     : "cleat";
-  const std::string sc = transient::to_string(scenario);
-  for (const auto& c : settings) {
-    std::string key;
-    if (c.id == ConditionId::load_N) key = "load_N";
-    if (c.id == ConditionId::hold_s && scenario == Scenario::load_hold) key = "hold_s";
-    if (c.id == ConditionId::speed_kmh &&
-        (scenario == Scenario::rolling || scenario == Scenario::cleat)) {
-      key = "speed_km_h";
-    }
-    if (key.empty()) {
-      refuse_condition_setting(
-          {c}, c.id,
-          c.id == ConditionId::pressure_kPa
-              ? "transient runs at the tyre's pressure: set tyre.inflation_pressure_kPa"
-              : "scenario " + sc + " takes load_N" +
-                    (scenario == Scenario::load_hold ? ", hold_s" : "") +
-                    (scenario == Scenario::rolling || scenario == Scenario::cleat ? ", speed_kmh"
-                                                                                  : "") +
-                    " (the transient model runs on a rigid road, loading, without effects)");
-    }
-    overrides.push_back("transient." + section + "." + key + "=" + c.text);
-  }
-}
-
 }  // namespace
 
 void register_transient(CLI::App& app) {
@@ -139,7 +109,8 @@ void register_transient(CLI::App& app) {
     const transient::Scenario scenario = transient::parse_scenario(a->scenario);
     auto overrides = a->overrides;
     const auto settings = take_condition_settings(overrides);
-    map_conditions(settings, scenario, overrides);
+    report::map_transient_conditions(settings, scenario, overrides);
+    refuse_repeated_overrides(overrides);  // e.g. hold_s=60 and transient.load_hold.hold_s=10
     const auto config = contact::load_tyre_config(a->config, overrides);
     report::require_2d_patch(config, a->config);
     const auto tyre = contact::build_tyre_model(config);

@@ -5,15 +5,21 @@
 
 #include "cli_support.h"
 #include "commands.h"
-#include "condition_settings.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/validity.h"
 #include "modaltyre/core/gnuplot.h"
+#include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/footprint_json.h"
 #include "modaltyre/report/validation_json.h"
 #include "modaltyre/studies/validation.h"
 
 namespace modaltyre::app {
+
+using report::apply_condition_settings;
+using report::ConditionSetting;
+using report::settings_json;
+using report::settings_text;
+using report::take_condition_settings;
 namespace {
 
 struct ValidateArgs {
@@ -112,17 +118,21 @@ void warn_outside_validity(const studies::ValidationReport& rep) {
   }
 }
 
-void plot_validation(const studies::ValidationReport& rep, const std::string& path) {
+void plot_validation(const studies::ValidationReport& rep, const std::string& path,
+                     const std::vector<ConditionSetting>& settings) {
   double lo = 1e300, hi = 0;
   for (const auto& r : rep.rows)
     lo = std::min(lo, r.measured.conditions.load_N),
     hi = std::max(hi, r.measured.conditions.load_N);
-  // The model's curve at the config's conditions (effects act as on the rows).
+  // The model's curve at the config's conditions and those stated with --set, as every row
+  // (effects act as on the rows).
   std::vector<contact::OperatingConditions> curve;
   const int n = 24;
   for (int i = 0; i <= n; ++i) {
     curve.push_back(rep.model.config.default_conditions(0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n));
+    apply_condition_settings(settings, curve.back());
   }
+  const std::string stated = settings.empty() ? "" : " (" + settings_text(settings) + ")";
   const auto res = contact::predict_all(rep.model, curve);
   // One panel per compared observable: the model's curve, the measured rows (calibration rows
   // marked apart).
@@ -154,7 +164,7 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
     }
     if (measured.x.empty() && calibration.x.empty()) continue;  // not measured: not compared
     PlotPanel panel;
-    panel.title = o.title;
+    panel.title = o.title + stated;
     panel.xlabel = "vertical load [kN]";
     panel.ylabel = o.ylabel;
     panel.series = {model, measured};
@@ -192,22 +202,12 @@ void register_validate(CLI::App& app) {
     // The config decides how the file is read (effects need every row's conditions).
     auto overrides = a->overrides;
     const auto settings = take_condition_settings(overrides);
-    refuse_condition_setting(settings, ConditionId::load_N, "each row states its load");
     const auto config = contact::load_tyre_config(a->config, overrides);
     auto measured = studies::read_validation_measurements(a->measured, config);
-    for (const auto& s : settings) {
-      const auto& name = condition_info(s.id).name;
-      if (std::find(measured.conditions.begin(), measured.conditions.end(), name) !=
-          measured.conditions.end()) {
-        refuse_condition_setting(settings, s.id,
-                                 "the file '" + a->measured + "' has a " + name + " column");
-      }
-    }
-    for (auto& row : measured.rows) apply_condition_settings(settings, row.conditions);
-    if (!settings.empty()) measured.loads_only = false;  // the rows now state conditions
+    report::apply_to_measurements(settings, measured, a->measured);
     const auto rep = studies::validate_footprints(config, measured);
     warn_outside_validity(rep);
-    if (!a->plot.empty()) plot_validation(rep, a->plot);
+    if (!a->plot.empty()) plot_validation(rep, a->plot, settings);
     if (a->json) {
       auto j = report::validation_json(rep);
       j["conditions"] = settings_json(settings);

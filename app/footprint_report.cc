@@ -3,13 +3,15 @@
 #include <iostream>
 
 #include "cli_support.h"
-#include "condition_settings.h"
 #include "modaltyre/contact/validity.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
+#include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/footprint_json.h"
 
 namespace modaltyre::app {
+
+using report::describe_conditions;
 
 using report::contact_area_m2;
 using report::enabled_effects;

@@ -11,7 +11,10 @@ namespace {
 LateralBelt read_lateral_belt(const ConfigSection& s, const Patch3dSettings& p) {
   LateralBelt b;
   b.enabled = true;
-  b.bending_stiffness_Nm = s.positive("bending_stiffness_Nm", b.bending_stiffness_Nm, 1e12);
+  // The cord laminate's lateral D_y = D_x tan^4(theta) >= 10 N m x 0.018 for belt angles >= 20
+  // degrees (docs/validation.md, "Lateral belt bending"); softer, the belt is a membrane that
+  // lets the patch run out of the candidate window (0.1 N m: exit 1).
+  b.bending_stiffness_Nm = s.number("bending_stiffness_Nm", b.bending_stiffness_Nm, 0.18, 1e12);
   b.tension_N_m = s.number("tension_N_per_m", 0, 0, 1e9);
   b.foundation_Pa_m = s.number("foundation_MPa_per_m", 0, 0, 1e9) * 1e6;
   const std::string sup = s.choice("supports", "shoulders", {"shoulders", "free"});
@@ -39,7 +42,9 @@ LateralBelt read_lateral_belt(const ConfigSection& s, const Patch3dSettings& p) 
 
 Patch3dSettings read_patch3d_settings(const ConfigSection& s) {
   Patch3dSettings p;
-  p.tread_width_m = s.positive("tread_width_mm", p.tread_width_m * 1e3, 2000) * 1e-3;
+  // A tread narrower than 20 mm (a racing bicycle's) is no tyre; 1 mm ran the patch out of its
+  // candidate window (exit 1).
+  p.tread_width_m = s.number("tread_width_mm", p.tread_width_m * 1e3, 20, 2000) * 1e-3;
   p.lateral_cell_m = s.positive("lateral_cell_mm", p.lateral_cell_m * 1e3, 200) * 1e-3;
   const double columns = p.tread_width_m / p.lateral_cell_m;
   if (columns > 2000) {

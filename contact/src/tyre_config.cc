@@ -2,8 +2,89 @@
 
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 namespace modaltyre::contact {
+
+namespace {
+
+/// A value that is 0 (the feature off) or inside the physical range [min, max]; anything else
+/// is an InputError naming the key and both choices (`what_zero_or` says what they mean).
+double zero_or_number(const ConfigSection& s, const std::string& key, double fallback, double min,
+                      double max, const std::string& what_zero_or) {
+  const double v = s.number(key, fallback, 0, max);
+  if (v != 0 && v < min) {
+    std::ostringstream msg;
+    msg << "value " << v << " is out of range: " << what_zero_or << " in [" << min << ", " << max
+        << "]";
+    s.fail(key, msg.str());
+  }
+  return v;
+}
+
+/// The section `transient:` (transient/transient.h). The lower bounds are physical: below them
+/// a run failed (exit 1) or stepped without end instead of describing a tyre.
+TransientSettings read_transient_settings(const ConfigSection& tr, double unit_length_m) {
+  TransientSettings T;
+  // Hub = wheel (rim + tyre) + fixture: no wheel with a pneumatic tyre weighs under 0.1 kg (a
+  // 12-inch bicycle wheel ~0.5 kg); 1e-308 kg made the hub bounce sqrt(k / m) unbounded.
+  T.hub_mass_kg = tr.number("hub_mass_kg", T.hub_mass_kg, 0.1, 1e5);
+  T.dynamic_max_order =
+      static_cast<int>(tr.integer("dynamic_max_order", T.dynamic_max_order, 0, 2000));
+  T.relaxation = tr.boolean("relaxation", T.relaxation);
+  // Loss factors are measured at 0.01-100 Hz and road excitation reaches kHz; above 1e4 Hz the
+  // tread's time constant tan(delta) / (2 pi Omega) falls under 1e-7 s, stiffer than the
+  // integrator resolves (1e6 Hz: exit 1).
+  T.tread_reference_frequency_hz =
+      tr.number("tread_reference_frequency_hz", T.tread_reference_frequency_hz, 1e-3, 1e4);
+  T.instantaneous_stiffness_ratio =
+      tr.number("instantaneous_stiffness_ratio", T.instantaneous_stiffness_ratio, 1.01, 1e6);
+  T.modal_damping_scale = tr.number("modal_damping_scale", T.modal_damping_scale, 0, 100);
+  T.output_step_s = tr.number("output_step_ms", T.output_step_s * 1e3, 1e-3, 1e6) * 1e-3;
+  T.relative_tolerance = tr.number("relative_tolerance", T.relative_tolerance, 1e-12, 1e-2);
+  T.tread_tolerance_m =
+      tr.number("tread_tolerance_um", T.tread_tolerance_m * 1e6, 1e-6, 100) * 1e-6;
+  // 1e-308 N made the load-hold ramp end at a denormal time that CVODE refused (exit 1).
+  const auto load = [](const ConfigSection& s, const char* key, double fallback) {
+    return s.number(key, fallback, kMinTransientLoad_N, kMaxLoad_N);
+  };
+  // A speed ramp is 0 (a step from rest) or at least one output step: a shorter one is not
+  // seen in the output and its acceleration 1.5 V / ramp_s is unbounded (1e-308 s: exit 1).
+  const auto ramp = [&T](const ConfigSection& s, double fallback) {
+    return zero_or_number(
+        s, "ramp_s", fallback, T.output_step_s, 1e6,
+        "0 (a speed step) or at least one output step (transient.output_step_ms)");
+  };
+  const ConfigSection lh = tr.section("load_hold");
+  T.load_hold.load_N = load(lh, "load_N", T.load_hold.load_N);
+  T.load_hold.ramp_rate_N_s = lh.positive("ramp_rate_N_s", T.load_hold.ramp_rate_N_s, 1e12);
+  T.load_hold.hold_s = lh.number("hold_s", T.load_hold.hold_s, 0, 1e6);
+  const ConfigSection fv = tr.section("free_vibration");
+  T.free_vibration.load_N = load(fv, "load_N", T.free_vibration.load_N);
+  T.free_vibration.initial_load_N = load(fv, "initial_load_N", T.free_vibration.initial_load_N);
+  T.free_vibration.duration_s = fv.positive("duration_s", T.free_vibration.duration_s, 1e6);
+  const ConfigSection ro = tr.section("rolling");
+  T.rolling.load_N = load(ro, "load_N", T.rolling.load_N);
+  T.rolling.speed_m_s = ro.number("speed_km_h", T.rolling.speed_m_s * 3.6, 0, 1000) / 3.6;
+  T.rolling.ramp_s = ramp(ro, T.rolling.ramp_s);
+  T.rolling.duration_s = ro.positive("duration_s", T.rolling.duration_s, 1e6);
+  if (T.rolling.duration_s < T.rolling.ramp_s) {
+    ro.fail("duration_s", "must be at least ramp_s (the speed ramp is part of the run)");
+  }
+  const ConfigSection cl = tr.section("cleat");
+  T.cleat.load_N = load(cl, "load_N", T.cleat.load_N);
+  T.cleat.speed_m_s = cl.positive("speed_km_h", T.cleat.speed_m_s * 3.6, 1000) / 3.6;
+  T.cleat.height_m = cl.positive("height_mm", T.cleat.height_m * 1e3, 200) * 1e-3;
+  // Each cosine edge (a quarter of the length) spans at least one candidate unit, or the road
+  // falls between the units and the integrator's step limit L / (8 V) shrinks without end
+  // (1e-3 mm ran for minutes).
+  T.cleat.length_m =
+      cl.number("length_mm", T.cleat.length_m * 1e3, 4 * unit_length_m * 1e3, 2000) * 1e-3;
+  T.cleat.ramp_s = ramp(cl, T.cleat.ramp_s);
+  return T;
+}
+
+}  // namespace
 
 TyreConfig read_tyre_config(const ConfigTree& tree) {
   TyreConfig c;
@@ -33,7 +114,11 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
 
   const ConfigSection tread = root.section("tread");
   c.tread.modulus_Pa = tread.number("modulus_MPa", 6.0, 1e-3, 1e4) * 1e6;
-  c.tread.tan_delta = tread.number("tan_delta", c.tread.tan_delta, 0, 5);
+  // 0 = an elastic tread; a rubber compound's loss factor is 0.02-0.3 at 1-100 Hz, so 0.01 is
+  // below any tread (1e-6 made the transient's Kelvin-Voigt time constant tan(delta) / Omega so
+  // short that CVODE failed, exit 1).
+  c.tread.tan_delta = zero_or_number(tread, "tan_delta", c.tread.tan_delta, 0.01, 5,
+                                     "0 (an elastic tread) or a rubber's loss factor");
   c.tread.thickness_m = tread.number("thickness_mm", 8, 0.1, 200) * 1e-3;
   c.tread.width_m = tread.number("contact_width_mm", 140, 1, 2000) * 1e-3;
   c.tread.poisson = tread.number("poisson_ratio", c.tread.poisson, 0.0, 0.5);
@@ -83,44 +168,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
                "'" + o + "' is not one of: sinking_mm, length_mm, width_mm");
     }
   }
-  const ConfigSection tr = root.section("transient");
-  auto& T = c.transient;
-  T.hub_mass_kg = tr.positive("hub_mass_kg", T.hub_mass_kg, 1e5);
-  T.dynamic_max_order =
-      static_cast<int>(tr.integer("dynamic_max_order", T.dynamic_max_order, 0, 2000));
-  T.relaxation = tr.boolean("relaxation", T.relaxation);
-  T.tread_reference_frequency_hz =
-      tr.positive("tread_reference_frequency_hz", T.tread_reference_frequency_hz, 1e6);
-  T.instantaneous_stiffness_ratio =
-      tr.number("instantaneous_stiffness_ratio", T.instantaneous_stiffness_ratio, 1.01, 1e6);
-  T.modal_damping_scale = tr.number("modal_damping_scale", T.modal_damping_scale, 0, 100);
-  T.output_step_s = tr.number("output_step_ms", T.output_step_s * 1e3, 1e-3, 1e6) * 1e-3;
-  T.relative_tolerance = tr.number("relative_tolerance", T.relative_tolerance, 1e-12, 1e-2);
-  T.tread_tolerance_m =
-      tr.number("tread_tolerance_um", T.tread_tolerance_m * 1e6, 1e-6, 100) * 1e-6;
-  const ConfigSection lh = tr.section("load_hold");
-  T.load_hold.load_N = lh.positive("load_N", T.load_hold.load_N, 1e7);
-  T.load_hold.ramp_rate_N_s = lh.positive("ramp_rate_N_s", T.load_hold.ramp_rate_N_s, 1e12);
-  T.load_hold.hold_s = lh.number("hold_s", T.load_hold.hold_s, 0, 1e6);
-  const ConfigSection fv = tr.section("free_vibration");
-  T.free_vibration.load_N = fv.positive("load_N", T.free_vibration.load_N, 1e7);
-  T.free_vibration.initial_load_N =
-      fv.positive("initial_load_N", T.free_vibration.initial_load_N, 1e7);
-  T.free_vibration.duration_s = fv.positive("duration_s", T.free_vibration.duration_s, 1e6);
-  const ConfigSection ro = tr.section("rolling");
-  T.rolling.load_N = ro.positive("load_N", T.rolling.load_N, 1e7);
-  T.rolling.speed_m_s = ro.number("speed_km_h", T.rolling.speed_m_s * 3.6, 0, 1000) / 3.6;
-  T.rolling.ramp_s = ro.number("ramp_s", T.rolling.ramp_s, 0, 1e6);
-  T.rolling.duration_s = ro.positive("duration_s", T.rolling.duration_s, 1e6);
-  if (T.rolling.duration_s < T.rolling.ramp_s) {
-    ro.fail("duration_s", "must be at least ramp_s (the speed ramp is part of the run)");
-  }
-  const ConfigSection cl = tr.section("cleat");
-  T.cleat.load_N = cl.positive("load_N", T.cleat.load_N, 1e7);
-  T.cleat.speed_m_s = cl.positive("speed_km_h", T.cleat.speed_m_s * 3.6, 1000) / 3.6;
-  T.cleat.height_m = cl.positive("height_mm", T.cleat.height_m * 1e3, 200) * 1e-3;
-  T.cleat.length_m = cl.positive("length_mm", T.cleat.length_m * 1e3, 2000) * 1e-3;
-  T.cleat.ramp_s = cl.number("ramp_s", T.cleat.ramp_s, 0, 1e6);
+  c.transient = read_transient_settings(root.section("transient"), c.mesh.unit_length_m);
   c.effects = read_effects(root.section("effects"));
   if (root.has("footprint_3d")) {
     c.footprint_3d = read_patch3d_settings(root.section("footprint_3d"));

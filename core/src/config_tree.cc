@@ -94,6 +94,20 @@ ConfigTree ConfigTree::load(const std::string& path, const std::vector<std::stri
   return from_string(read_yaml_file(path, "a YAML config"), path, overrides);
 }
 
+void refuse_repeated_overrides(const std::vector<std::string>& overrides) {
+  std::map<std::string, std::string> seen;  // key -> value as first given
+  for (const auto& o : overrides) {
+    const auto eq = o.find('=');
+    if (eq == std::string::npos) continue;  // refused with its own message where it is applied
+    const std::string key = o.substr(0, eq), value = o.substr(eq + 1);
+    const auto [it, fresh] = seen.emplace(key, value);
+    if (!fresh) {
+      throw InputError({"--set", 0, key}, "given twice ('" + printable(it->second) + "' and '" +
+                                              printable(value) + "'); state it once");
+    }
+  }
+}
+
 YAML::Node parse_set_value(const std::string& value, const std::string& key) {
   try {
     check_yaml_structure(value, "--set");

@@ -40,23 +40,21 @@ class StructureChecker : public YAML::EventHandler {
   }
   void OnSequenceStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
                        YAML::EmitterStyle::value) override {
-    child(mark, nullptr);
-    stack_.push_back(Frame{false, 0, {}, {}});
+    open(mark, false);
   }
   void OnSequenceEnd() override { stack_.pop_back(); }
   void OnMapStart(const YAML::Mark& mark, const std::string&, YAML::anchor_t,
                   YAML::EmitterStyle::value) override {
-    child(mark, nullptr);
-    stack_.push_back(Frame{true, 0, {}, {}});
+    open(mark, true);
   }
   void OnMapEnd() override { stack_.pop_back(); }
 
  private:
   struct Frame {
     bool is_map;
-    long children;                     // events seen directly inside
-    std::map<std::string, int> keys;   // scalar key -> line (mappings)
-    std::string last_key;              // the key whose value comes next (mappings)
+    long children;                    // events seen directly inside
+    std::map<std::string, int> keys;  // scalar key -> line (mappings)
+    std::string last_key;             // the key whose value comes next (mappings)
   };
 
   // The dotted key of the open mappings (for messages), up to frame `upto` (-1: all).
@@ -68,6 +66,18 @@ class StructureChecker : public YAML::EventHandler {
       d += (d.empty() ? "" : ".") + stack_[i].last_key;
     }
     return d;
+  }
+
+  // A list or mapping starts: the events come as the parser descends, so the depth is refused
+  // before yaml-cpp's own limit (or the stack) is reached.
+  void open(const YAML::Mark& mark, bool is_map) {
+    child(mark, nullptr);
+    if (static_cast<int>(stack_.size()) >= kMaxYamlDepth) {
+      throw InputError({name_, line_of(mark), dotted(-1)},
+                       "nesting deeper than " + std::to_string(kMaxYamlDepth) +
+                           " levels (lists and sections inside each other); a config needs a few");
+    }
+    stack_.push_back(Frame{is_map, 0, {}, {}});
   }
 
   void child(const YAML::Mark& mark, const std::string* scalar) {

@@ -30,17 +30,31 @@ class Tyre:
     patch: str
     loads_N: list[float]
     def __init__(self, config_path: str, overrides: dict[str, Any] = ...) -> None: ...
-    def footprint(self, load_N: float, horizontal_force_N: Optional[float] = None) -> Footprint: ...
+    def footprint(
+        self,
+        load_N: float,
+        horizontal_force_N: Optional[float] = None,
+        conditions: dict[str, Any] = ...,
+    ) -> Footprint: ...
     def footprints(
-        self, loads_N: Sequence[float], horizontal_force_N: Optional[float] = None
+        self,
+        loads_N: Sequence[float],
+        horizontal_force_N: Optional[float] = None,
+        conditions: dict[str, Any] = ...,
     ) -> list[Footprint]: ...
     def report(
-        self, loads_N: Sequence[float] = ..., horizontal_force_N: Optional[float] = None
+        self,
+        loads_N: Sequence[float] = ...,
+        horizontal_force_N: Optional[float] = None,
+        conditions: dict[str, Any] = ...,
     ) -> dict[str, Any]: ...
 
 def fit_modes(path: str) -> dict[str, Any]: ...
 def validate(
-    config_path: str, measured_csv: str, overrides: dict[str, Any] = ...
+    config_path: str,
+    measured_csv: str,
+    overrides: dict[str, Any] = ...,
+    conditions: dict[str, Any] = ...,
 ) -> dict[str, Any]: ...
 def sweep(
     sweep_yaml: str,
@@ -49,7 +63,10 @@ def sweep(
     warm_start: bool = False,
 ) -> dict[str, npt.NDArray[Any]]: ...
 def transient(
-    config_path: str, scenario: str, overrides: dict[str, Any] = ...
+    config_path: str,
+    scenario: str,
+    overrides: dict[str, Any] = ...,
+    conditions: dict[str, Any] = ...,
 ) -> dict[str, Any]: ...
 def effects() -> list[dict[str, Any]]: ...
 def discover(

@@ -3,8 +3,10 @@
 #include <optional>
 
 #include "bindings.h"
+#include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/discover/discover.h"
+#include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/discover_json.h"
 #include "modaltyre/report/effects_json.h"
 #include "modaltyre/report/sweep_columns.h"
@@ -20,14 +22,17 @@ namespace modaltyre::python {
 namespace {
 
 py::object validate(const std::string& config_path, const std::string& measured,
-                    const py::dict& overrides) {
+                    const py::dict& overrides, const py::dict& conditions) {
   const auto sets = overrides_of(overrides);
+  const auto settings = conditions_of(conditions);
   nlohmann::json j;
   {
     py::gil_scoped_release release;
     const auto config = contact::load_tyre_config(config_path, sets);
-    const auto rows = studies::read_validation_measurements(measured, config);
+    auto rows = studies::read_validation_measurements(measured, config);
+    report::apply_to_measurements(settings, rows, measured, "conditions");
     j = report::validation_json(studies::validate_footprints(config, rows));
+    j["conditions"] = report::settings_json(settings);
   }
   return checked(j);
 }
@@ -57,19 +62,23 @@ py::dict sweep(const std::string& path, std::optional<int> threads, const py::di
 }
 
 py::object run_transient(const std::string& config_path, const std::string& scenario,
-                         const py::dict& overrides) {
-  const auto sets = overrides_of(overrides);
+                         const py::dict& overrides, const py::dict& conditions) {
+  auto sets = overrides_of(overrides);
+  const auto settings = conditions_of(conditions);
   nlohmann::json j;
   std::vector<std::pair<std::string, std::vector<double>>> series;
   {
     py::gil_scoped_release release;
     const transient::Scenario sc = transient::parse_scenario(scenario);
+    report::map_transient_conditions(settings, sc, sets, "conditions");
+    refuse_repeated_overrides(sets);  // hold_s and transient.load_hold.hold_s both given
     const auto config = contact::load_tyre_config(config_path, sets);
     report::require_2d_patch(config, config_path);
     const auto model = transient::build_transient_model(contact::build_tyre_model(config));
     const transient::TransientResult r = transient::run_transient(model, sc);
     if (!r.ok()) throw ComputationError(r.message);
     j = report::transient_json(model, r);
+    j["conditions"] = report::settings_json(settings);
     series = report::transient_series(r);
   }
   py::dict out = checked(j).cast<py::dict>();
@@ -98,10 +107,11 @@ py::object run_discover(const std::string& config_path, const std::string& measu
 
 void bind_studies(py::module_& m) {
   m.def("validate", &validate, py::arg("config_path"), py::arg("measured_csv"),
-        py::arg("overrides") = py::dict(),
+        py::arg("overrides") = py::dict(), py::arg("conditions") = py::dict(),
         "Measured against predicted footprints with the config's declared calibration: the "
         "dict of `modaltyre validate CONFIG MEASURED --json` (sinking, length, width [mm], "
-        "relative errors [-], RMS over the predicted rows).");
+        "relative errors [-], RMS over the predicted rows). `conditions`: {'hold_s': 60} = "
+        "--set hold_s=60, a condition the file has no column of, on every row.");
   m.def("sweep", &sweep, py::arg("sweep_yaml"), py::arg("threads") = py::none(),
         py::arg("overrides") = py::dict(), py::arg("warm_start") = false,
         "Runs a sweep file (`modaltyre sweep`): {column: NumPy array} with the columns of its "
@@ -109,11 +119,12 @@ void bind_studies(py::module_& m) {
         "rolling_resistance_N, vertical_stiffness_N_mm, peak_pressure_kPa, iterations; NaN "
         "where a case failed; status, message, valid as str). No CSV is written.");
   m.def("transient", &run_transient, py::arg("config_path"), py::arg("scenario"),
-        py::arg("overrides") = py::dict(),
+        py::arg("overrides") = py::dict(), py::arg("conditions") = py::dict(),
         "Time-domain scenario (load-hold | free-vibration | rolling | cleat) on a 2D config: "
         "the dict of `modaltyre transient --json` plus 'series': {t_s, load_N, "
         "hub_displacement_mm, sinking_mm, contact_length_mm, longitudinal_force_N} as NumPy "
-        "arrays (the columns of --csv).");
+        "arrays (the columns of --csv). `conditions`: the scenario's, {'load_N': 3000, "
+        "'hold_s': 60} = --set load_N=3000 --set hold_s=60.");
   m.def(
       "effects", [] { return py::object(checked(report::effects_json())["effects"]); },
       "The switchable model effects (`modaltyre effects --json`'s list): name, description, "

@@ -1,5 +1,6 @@
 #include "to_python.h"
 
+#include "modaltyre/core/conditions.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/report/check_finite.h"
 
@@ -78,6 +79,20 @@ std::vector<std::string> overrides_of(const py::dict& overrides) {
   for (const auto& [k, v] : overrides)
     out.push_back(py::str(k).cast<std::string>() + "=" + yaml_text(v));
   return out;
+}
+
+std::vector<report::ConditionSetting> conditions_of(const py::dict& conditions) {
+  std::vector<std::string> assignments = overrides_of(conditions);
+  auto settings = report::take_condition_settings(assignments, "conditions");
+  if (!assignments.empty()) {
+    const std::string& a = assignments.front();
+    std::string names;
+    for (const auto& c : condition_catalogue()) names += (names.empty() ? "" : ", ") + c.name;
+    throw InputError({"conditions", 0, a.substr(0, a.find('='))},
+                     "not an operating condition; the conditions are " + names +
+                         " (config keys go in overrides)");
+  }
+  return settings;
 }
 
 py::object checked(const nlohmann::json& j) {

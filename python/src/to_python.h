@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/report/condition_settings.h"
+
 namespace modaltyre::python {
 
 namespace py = pybind11;
@@ -30,6 +32,11 @@ py::array numeric_array(const nlohmann::json& j);
 /// `{key: value}` as the "key=value" overrides of the command line's --set (YAML text:
 /// true/false, numbers as Python writes them, lists as [a, b]).
 std::vector<std::string> overrides_of(const py::dict& overrides);
+
+/// `{name: value}` operating conditions (hold_s=60, surface='soil'): the names, ranges and words
+/// of the catalogue (core/conditions.h) and the CLI's checks of `--set name=value`, errors at
+/// "conditions" (InputError, a name that is no condition included).
+std::vector<report::ConditionSetting> conditions_of(const py::dict& conditions);
 
 /// Checks the document for non-finite numbers (as the CLI does) and converts it.
 py::object checked(const nlohmann::json& j);

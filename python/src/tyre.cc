@@ -58,21 +58,27 @@ class Tyre {
         contact::build_tyre_model(contact::load_tyre_config(config_path, sets)));
   }
 
-  // The document of `footprint --json` (checked for non-finite numbers, as the CLI does).
-  nlohmann::json document(const std::vector<double>& loads, std::optional<double> fx) const {
+  // The document of `footprint --json` (checked for non-finite numbers, as the CLI does) at
+  // the config's conditions with those stated (`--set hold_s=60`).
+  nlohmann::json document(const std::vector<double>& loads, std::optional<double> fx,
+                          const py::dict& conditions) const {
+    const auto settings = conditions_of(conditions);
+    report::refuse_footprint_settings(settings, "load_N", "horizontal_force_N", "conditions");
     py::gil_scoped_release release;
-    const auto cases = report::footprint_cases(model_->config, loads, fx);
+    auto cases = report::footprint_cases(model_->config, loads, fx);
+    const auto shown = report::apply_to_footprint_cases(settings, model_->config, cases);
     const auto results = contact::predict_all(*model_, cases);
     report::require_converged(results);
     nlohmann::json j = report::footprint_json(*model_, results);
+    j["conditions"] = report::footprint_conditions_json(shown);
     report::check_finite(j);
     return j;
   }
 
-  std::vector<Footprint> footprints(const std::vector<double>& loads,
-                                    std::optional<double> fx) const {
+  std::vector<Footprint> footprints(const std::vector<double>& loads, std::optional<double> fx,
+                                    const py::dict& conditions) const {
     if (loads.empty()) throw InputError({"loads", 0, ""}, "give at least one load [N]");
-    const nlohmann::json j = document(loads, fx);
+    const nlohmann::json j = document(loads, fx, conditions);
     std::vector<Footprint> out;
     for (const auto& c : j.at("cases")) out.push_back(footprint_of(c, patch3d()));
     return out;
@@ -125,23 +131,26 @@ void bind_tyre(py::module_& m) {
            "and builds the model. InputError names file, line and key.")
       .def(
           "footprint",
-          [](const Tyre& t, double load_N, std::optional<double> fx) {
-            return t.footprints({load_N}, fx).front();
+          [](const Tyre& t, double load_N, std::optional<double> fx, const py::dict& conditions) {
+            return t.footprints({load_N}, fx, conditions).front();
           },
           py::arg("load_N"), py::arg("horizontal_force_N") = py::none(),
+          py::arg("conditions") = py::dict(),
           "The static footprint at `load_N` [N] with `horizontal_force_N` [N] at the axle "
-          "(default: the config's) = `modaltyre footprint CONFIG --load N --json`.")
+          "(default: the config's) = `modaltyre footprint CONFIG --load N --json`. "
+          "`conditions`: {'hold_s': 60, 'surface': 'soil'} = --set hold_s=60 --set surface=soil "
+          "(pressure_kPa, hold_s, speed_kmh, branch, surface; README, \"Conditions with --set\").")
       .def("footprints", &Tyre::footprints, py::arg("loads_N"),
-           py::arg("horizontal_force_N") = py::none(),
-           "One Footprint per load [N], in order (one solve per load).")
+           py::arg("horizontal_force_N") = py::none(), py::arg("conditions") = py::dict(),
+           "One Footprint per load [N], in order (one solve per load), at `conditions`.")
       .def(
           "report",
-          [](const Tyre& t, const std::vector<double>& loads, std::optional<double> fx) {
-            return to_python(t.document(loads, fx));
-          },
+          [](const Tyre& t, const std::vector<double>& loads, std::optional<double> fx,
+             const py::dict& conditions) { return to_python(t.document(loads, fx, conditions)); },
           py::arg("loads_N") = std::vector<double>{}, py::arg("horizontal_force_N") = py::none(),
+          py::arg("conditions") = py::dict(),
           "The whole document of `footprint --json` as a dict (default loads: the config's "
-          "loads_N).")
+          "loads_N), at `conditions` (stated in its 'conditions' object).")
       .def_property_readonly(
           "name", [](const Tyre& t) { return t.config().name; }, "the config's tyre name")
       .def_property_readonly(

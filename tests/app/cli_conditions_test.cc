@@ -5,7 +5,10 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "cli_runner.h"
 
@@ -103,6 +106,58 @@ TEST_F(ConditionsCli, TransientRefusesAConditionItsScenarioHasNot) {
   const auto h = run({"transient", kConfig, "--scenario", "load-hold", "--set", "hold_s=5e6"});
   EXPECT_EQ(h.exit_code, 2);
   EXPECT_NE(h.err.find("transient.load_hold.hold_s"), std::string::npos) << h.err;
+}
+
+// Issue 16: a key given twice on one command line is refused naming both values (the first
+// one used to be taken silently for a config key, the last for a condition), in every command
+// that takes --set.
+struct Repeated {
+  std::string name;
+  std::vector<std::string> args;  // up to the --set options
+};
+
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const Repeated& r, std::ostream* os) { *os << r.name; }
+
+class RepeatedSetCli : public modaltyre_test::CliFixture,
+                       public ::testing::WithParamInterface<Repeated> {};
+
+TEST_P(RepeatedSetCli, KeyTwiceIsRefusedNamingBothValues) {
+  for (const auto& [key, a, b] :
+       {std::tuple<std::string, std::string, std::string>{"tread.modulus_MPa", "3", "4"},
+        {"hold_s", "10", "60"}}) {
+    auto args = GetParam().args;
+    for (const auto& v : {a, b}) args.insert(args.end(), {"--set", key + "=" + v});
+    const auto r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << key << ": " << r.err;
+    EXPECT_NE(r.err.find("--set: " + key + ": given twice ('" + a + "' and '" + b + "')"),
+              std::string::npos)
+        << r.err;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Commands, RepeatedSetCli,
+    ::testing::Values(Repeated{"Footprint", {"footprint", kConfig}},
+                      Repeated{"Validate", {"validate", kConfig, kTable3}},
+                      Repeated{"Transient", {"transient", kConfig, "--scenario", "load-hold"}},
+                      Repeated{"Sweep", {"sweep", "no_such_sweep.yaml"}},
+                      Repeated{"TirExport", {"tir", "export", kConfig, "--output", "x.tir"}},
+                      Repeated{"TirCompare",
+                               {"tir", "compare", kConfig,
+                                std::string(MODALTYRE_SOURCE_DIR) +
+                                    "/tests/data/tir/chrono_generic_mf61.tir"}},
+                      Repeated{"Discover", {"discover", kConfig, kTable3}}),
+    [](const ::testing::TestParamInfo<Repeated>& info) { return info.param.name; });
+
+// transient maps hold_s onto its scenario's key: both given is the same key twice.
+TEST_F(ConditionsCli, TransientConditionAndItsScenarioKeyTogetherAreRefused) {
+  const auto r = run({"transient", kConfig, "--scenario", "load-hold", "--set", "hold_s=60",
+                      "--set", "transient.load_hold.hold_s=10"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("transient.load_hold.hold_s: given twice ('10' and '60')"),
+            std::string::npos)
+      << r.err;
 }
 
 }  // namespace

@@ -115,6 +115,49 @@ TEST_F(PlotCli, ValidateDrawsWidthWhenItIsMeasured) {
   for (const auto& p : panels) EXPECT_EQ(p.title.find("width"), std::string::npos) << p.title;
 }
 
+// The model's curve in validate's plot is drawn at the conditions stated with --set, as the
+// rows are predicted (issue 16): held 60 s, the relaxed tread (seed 001 eq. (10)) sinks deeper
+// at every load of the curve, and the titles state the condition.
+TEST_F(PlotCli, ValidateDrawsTheModelAtTheConditionsStatedWithSet) {
+  // The first data block of the script: the model's sinking curve (load kN, sinking mm).
+  auto model_curve = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"validate",
+                                     kConfig,
+                                     kTable3,
+                                     "--set",
+                                     "validation.calibrate=[]",
+                                     "--set",
+                                     "contact.unit_length_mm=2",
+                                     "--set",
+                                     "effects.tread_relaxation.enabled=true",
+                                     "--plot",
+                                     (dir_ / "v.svg").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto panels = plot(args);
+    std::ifstream in(dir_ / "script.gp");
+    std::string line;
+    while (std::getline(in, line) && line != "$d0 << EOD") {
+    }
+    std::vector<std::pair<double, double>> xy;
+    while (std::getline(in, line) && line != "EOD") {
+      const auto space = line.find(' ');
+      xy.emplace_back(std::stod(line.substr(0, space)), std::stod(line.substr(space + 1)));
+    }
+    return std::make_pair(panels, xy);
+  };
+  const auto [base_panels, base] = model_curve({});
+  const auto [held_panels, held] = model_curve({"--set", "hold_s=60"});
+  ASSERT_EQ(base.size(), 25u);
+  ASSERT_EQ(held.size(), base.size());
+  for (std::size_t i = 0; i < base.size(); ++i) {
+    EXPECT_DOUBLE_EQ(held[i].first, base[i].first);
+    EXPECT_GT(held[i].second, base[i].second * 1.01) << "load " << base[i].first << " kN";
+  }
+  ASSERT_FALSE(held_panels.empty());
+  EXPECT_EQ(base_panels[0].title, "Sinking versus load");
+  EXPECT_EQ(held_panels[0].title, "Sinking versus load (hold_s=60)");
+}
+
 // discover's panels show relative residuals in %: the title names the observable without a
 // unit, and a width equal to the config's on every row (a residual of 0) gets no panel. Its
 // candidate table says what its CV column is.

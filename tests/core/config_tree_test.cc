@@ -194,7 +194,6 @@ TEST(ConfigTree, NonScalarKeysAreInputErrors) {
   EXPECT_EQ(where.key, "modal.hammer_csv");
 }
 
-
 // A pipe would block the read forever and a huge file would be parsed into memory: both are
 // refused before anything is read, naming the file.
 TEST(ConfigTree, PipeAndHugeFileAreRefusedBeforeReading) {
@@ -214,6 +213,19 @@ TEST(ConfigTree, PipeAndHugeFileAreRefusedBeforeReading) {
   EXPECT_EQ(h.where().file, big);
   EXPECT_NE(std::string(h.what()).find("over 16 MB"), std::string::npos) << h.what();
   std::filesystem::remove_all(dir);
+}
+
+// Issue 16: the same --set key twice is refused naming both values; different keys, and a key
+// inside a section set whole (not the same key), pass.
+TEST(ConfigTree, RepeatedOverrideIsRefusedNamingBothValues) {
+  const InputError e = error_of([] {
+    refuse_repeated_overrides({"tread.modulus_MPa=3", "a=1", "tread.modulus_MPa=4"});
+  });
+  EXPECT_EQ(e.where().file, "--set");
+  EXPECT_EQ(e.where().key, "tread.modulus_MPa");
+  EXPECT_NE(std::string(e.what()).find("given twice ('3' and '4')"), std::string::npos) << e.what();
+  EXPECT_NO_THROW(refuse_repeated_overrides({"tread.modulus_MPa=3", "tread.tan_delta=0.1"}));
+  EXPECT_NO_THROW(refuse_repeated_overrides({"tread={modulus_MPa: 3}", "tread.tan_delta=0.1"}));
 }
 
 }  // namespace

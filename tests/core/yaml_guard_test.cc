@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <ostream>
 #include <string>
 
 #include "modaltyre/core/config_tree.h"
@@ -25,7 +26,8 @@ InputError error_of(const std::string& yaml) {
 }
 
 TEST(YamlGuard, KeyTwiceInASectionNamesBothLines) {
-  const InputError e = error_of("tread:\n  modulus_MPa: 1.0\n  thickness_mm: 8\n  modulus_MPa: 9\n");
+  const InputError e =
+      error_of("tread:\n  modulus_MPa: 1.0\n  thickness_mm: 8\n  modulus_MPa: 9\n");
   EXPECT_EQ(e.where().file, "c.yaml");
   EXPECT_EQ(e.where().line, 4);
   EXPECT_EQ(e.where().key, "tread.modulus_MPa");
@@ -100,6 +102,64 @@ TEST(YamlGuard, ConfigTreeRefusesDuplicates) {
   EXPECT_THROW(ConfigTree::from_string("tread:\n  modulus_MPa: 1\n  modulus_MPa: 2\n", "c.yaml"),
                InputError);
 }
+
+// Deep nesting (issue 16): 10 000 nested lists or mappings, flow or block, are refused naming
+// the line and the depth limit, before yaml-cpp's parser gives up with "bad file" (or its
+// recursion exhausts the stack); the limit itself is accepted.
+struct Nesting {
+  std::string name;
+  std::string open, close;  // one level
+  bool block = false;       // a block value starts on the next line
+};
+
+// Test names and the "GetParam() =" note print the case's name, not its bytes.
+void PrintTo(const Nesting& n, std::ostream* os) { *os << n.name; }
+
+// The value nested `depth` levels deep.
+std::string nested_value(const Nesting& n, int depth) {
+  std::string text;
+  for (int i = 0; i < depth; ++i) text += n.open;
+  text += "1";
+  for (int i = 0; i < depth; ++i) text += n.close;
+  return text;
+}
+
+// A config with that value at tread.x (line 2, or 3 for a block value).
+std::string nested_config(const Nesting& n, int depth) {
+  return "tread:\n  x:" + std::string(n.block ? "\n    " : " ") + nested_value(n, depth) + "\n";
+}
+
+class YamlNesting : public ::testing::TestWithParam<Nesting> {};
+
+TEST_P(YamlNesting, TenThousandLevelsAreRefusedAtTheirLine) {
+  const InputError e = error_of(nested_config(GetParam(), 10000));
+  EXPECT_EQ(e.where().file, "c.yaml");
+  EXPECT_EQ(e.where().line, GetParam().block ? 3 : 2);
+  EXPECT_NE(std::string(e.what()).find("nesting deeper than 64 levels"), std::string::npos)
+      << e.what();
+  // In a --set value too.
+  try {
+    (void)parse_set_value(nested_value(GetParam(), 10000), "tread.x");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& s) {
+    EXPECT_EQ(s.where().file, "--set");
+    EXPECT_NE(std::string(s.what()).find("nesting deeper than 64"), std::string::npos) << s.what();
+  }
+}
+
+TEST_P(YamlNesting, TheLimitItselfIsAccepted) {
+  // The root mapping and tread: are two levels.
+  EXPECT_NO_THROW(parse_yaml(nested_config(GetParam(), kMaxYamlDepth - 2), "c.yaml"));
+  EXPECT_THROW(parse_yaml(nested_config(GetParam(), kMaxYamlDepth - 1), "c.yaml"), InputError);
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, YamlNesting,
+                         ::testing::Values(Nesting{"FlowLists", "[", "]"},
+                                           Nesting{"FlowMappings", "{a: ", "}"},
+                                           Nesting{"BlockLists", "- ", "", true}),
+                         [](const ::testing::TestParamInfo<Nesting>& info) {
+                           return info.param.name;
+                         });
 
 }  // namespace
 }  // namespace modaltyre

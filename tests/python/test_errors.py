@@ -43,3 +43,20 @@ def test_missing_files_and_error_classes(modaltyre, tmp_path):
     with pytest.raises(modaltyre.InputError):
         modaltyre.Tyre(str(tmp_path / "absent.yaml"))
     assert issubclass(modaltyre.ComputationError, RuntimeError)
+
+
+def test_conditions_are_checked_as_the_cli_checks_them(modaltyre):
+    """Names, ranges and words of the catalogue (core/conditions.h), errors at 'conditions'."""
+    tyre = modaltyre.Tyre(src("configs", "sf350_2d_table3.yaml"))
+    with pytest.raises(modaltyre.InputError, match=re.escape("[0, 1e7] s")) as e:
+        tyre.footprint(4000, conditions={"hold_s": -1})
+    assert e.value.key == "hold_s" and e.value.file == "conditions"
+    with pytest.raises(modaltyre.InputError, match="surface"):
+        tyre.footprint(4000, conditions={"surface": "mud"})
+    with pytest.raises(modaltyre.InputError, match="does not apply here"):
+        tyre.footprint(4000, conditions={"load_N": 3000})  # the load is the argument
+    with pytest.raises(modaltyre.InputError, match="not an operating condition"):
+        tyre.footprint(4000, conditions={"tread.modulus_MPa": 3})
+    with pytest.raises(modaltyre.InputError, match="does not apply here"):
+        modaltyre.transient(src("configs", "sf350_2d_table3.yaml"), "rolling",
+                            conditions={"hold_s": 60})

@@ -14,9 +14,9 @@ SF350_2D = src("configs", "sf350_2d_table3.yaml")
 def test_3d_footprint_equals_the_cli(modaltyre):
     tyre = modaltyre.Tyre(SF350)
     cli = cli_json("footprint", SF350, "--load", "4000")
-    # The CLI's header of the run's conditions: the config's defaults without --set.
-    assert cli.pop("conditions") == {"pressure_kPa": 230.0, "hold_s": 0.0, "speed_kmh": 0.0,
-                                     "branch": "load", "surface": "rigid"}
+    # The run's conditions: the config's defaults without --set.
+    assert cli["conditions"] == {"pressure_kPa": 230.0, "hold_s": 0.0, "speed_kmh": 0.0,
+                                 "branch": "load", "surface": "rigid"}
     assert_same(tyre.report([4000]), cli)
     f = tyre.footprint(4000)
     case = cli["cases"][0]
@@ -37,7 +37,7 @@ def test_2d_footprints_with_a_horizontal_force_equal_the_cli(modaltyre):
     for load in loads:
         args += ["--load", str(load)]
     cli = cli_json(*args)
-    assert cli.pop("conditions")["hold_s"] == 0.0  # the CLI's header: the config's defaults
+    assert cli["conditions"]["hold_s"] == 0.0  # the config's defaults
     assert_same(tyre.report(loads, 500.0), cli)
     for f, case in zip(tyre.footprints(loads, 500.0), cli["cases"]):
         assert f.width_mm is None and f.map is None  # the 2D patch's width is an input
@@ -76,3 +76,21 @@ def test_two_threads_on_two_tyres_give_the_serial_results(modaltyre):
     for t in threads:
         t.join()
     assert parallel[0] == serial[0] and parallel[1] == serial[1]
+
+
+def test_conditions_equal_the_cli_set(modaltyre):
+    """conditions={'hold_s': 60, 'surface': 'soil'} = --set hold_s=60 --set surface=soil: the
+    held, relaxed tread (seed 001 eq. (10)) on soil sinks deeper than at rest on a rigid road."""
+    sets = {"contact.unit_length_mm": 2, "effects.tread_relaxation.enabled": True,
+            "effects.soil_compliance.enabled": True}
+    tyre = modaltyre.Tyre(SF350_2D, sets)
+    args = ["footprint", SF350_2D, "--load", "4000"]
+    for k, v in sets.items():
+        args += ["--set", f"{k}={str(v).lower()}"]
+    cli = cli_json(*args, "--set", "hold_s=60", "--set", "surface=soil")
+    got = tyre.report([4000], conditions={"hold_s": 60, "surface": "soil"})
+    assert got["conditions"]["hold_s"] == 60.0 and got["conditions"]["surface"] == "soil"
+    assert_same(got, cli)
+    held = tyre.footprint(4000, conditions={"hold_s": 60, "surface": "soil"})
+    assert held.sinking_mm == cli["cases"][0]["sinking_mm"]
+    assert held.sinking_mm > 1.01 * tyre.footprint(4000).sinking_mm

@@ -21,9 +21,37 @@ def test_validate_equals_the_cli(modaltyre):
     for config in (SF350_2D, src("configs", "sf350.yaml")):
         got = modaltyre.validate(config, TABLE3)
         cli = cli_json("validate", config, TABLE3)
-        assert cli.pop("conditions") == {}  # the CLI's conditions stated with --set: none here
+        assert cli["conditions"] == {}  # conditions stated with --set: none here
         assert_same(got, cli)
         assert got["calibration"]["rows"] == [1, 6]
+
+
+def test_validate_with_conditions_equals_the_cli_set(modaltyre):
+    sets = {"contact.unit_length_mm": 2, "validation.calibrate": [],
+            "effects.tread_relaxation.enabled": True}
+    args = ["validate", SF350_2D, TABLE3, "--set", "contact.unit_length_mm=2", "--set",
+            "validation.calibrate=[]", "--set", "effects.tread_relaxation.enabled=true"]
+    got = modaltyre.validate(SF350_2D, TABLE3, sets, conditions={"hold_s": 60})
+    cli = cli_json(*args, "--set", "hold_s=60")
+    assert got["conditions"] == {"hold_s": 60.0}
+    assert_same(got, cli)
+    base = modaltyre.validate(SF350_2D, TABLE3, sets)
+    # Held 60 s, every row's predicted sinking is deeper.
+    for h, b in zip(got["rows"], base["rows"]):
+        assert h["predicted"]["sinking_mm"] > b["predicted"]["sinking_mm"]
+
+
+def test_transient_with_conditions_equals_the_cli_set(modaltyre):
+    sets = {"contact.unit_length_mm": 4}
+    cli = cli_json("transient", SF350_2D, "--scenario", "load-hold", "--set",
+                   "contact.unit_length_mm=4", "--set", "load_N=3000", "--set", "hold_s=0.5")
+    got = modaltyre.transient(SF350_2D, "load-hold", sets,
+                              conditions={"load_N": 3000, "hold_s": 0.5})
+    got.pop("series")
+    for timing in ("wall_s", "real_time_factor"):
+        got.pop(timing), cli.pop(timing)
+    assert got["conditions"] == {"load_N": 3000.0, "hold_s": 0.5}
+    assert_same(got, cli)
 
 
 def test_effects_equal_the_cli(modaltyre):
@@ -61,7 +89,7 @@ def test_transient_equals_the_cli(modaltyre, tmp_path):
     series = got.pop("series")
     for timing in ("wall_s", "real_time_factor"):  # the machine's, not the model's
         assert got.pop(timing) > 0 and cli.pop(timing) > 0
-    assert cli.pop("conditions") == {}  # the CLI's conditions stated with --set: none here
+    assert cli["conditions"] == {}  # conditions stated with --set: none here
     assert_same(got, cli)
     rows = list(csv.DictReader(open(series_csv)))
     assert list(series) == list(rows[0])

@@ -172,6 +172,14 @@ TEST_F(TirCli, BadExportArgumentsWriteNothing) {
   c = run({"tir", "export", kConfig, "--output", out, "--fnomin", "-5"});
   EXPECT_EQ(c.exit_code, 2);
   EXPECT_NE(c.err.find("--fnomin"), std::string::npos) << c.err;
+  // Issue 16: below a road tyre's rated load (1 N degenerated the sinking-load fit, exit 1).
+  for (const char* tiny : {"1e-308", "99"}) {
+    c = run({"tir", "export", kConfig, "--output", out, "--fnomin", tiny});
+    EXPECT_EQ(c.exit_code, 2) << tiny;
+    EXPECT_NE(c.err.find("--fnomin: the nominal load must be a number in [100, 1e7] N"),
+              std::string::npos)
+        << c.err;
+  }
   EXPECT_FALSE(fs::exists(out));
 }
 

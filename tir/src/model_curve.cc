@@ -17,9 +17,12 @@ std::string model_width_reason(const contact::TyreConfig& config) {
 }
 
 double model_fnomin_N(const contact::TyreConfig& config, std::optional<double> fnomin_N) {
+  // FNOMIN is the tyre's rated load (a passenger tyre's ~4000 N): below 100 N (10 kg) no road
+  // tyre, and the sinking-load fit around it degenerates (1 N: exit 1).
+  constexpr double kMin_N = 100, kMax_N = 1e7;
   if (fnomin_N) {
-    if (!(*fnomin_N > 0) || !std::isfinite(*fnomin_N) || *fnomin_N > 1e7) {
-      throw InputError({"--fnomin", 0, ""}, "the nominal load must be a number in (0, 1e7] N");
+    if (!(*fnomin_N >= kMin_N) || !(*fnomin_N <= kMax_N)) {
+      throw InputError({"--fnomin", 0, ""}, "the nominal load must be a number in [100, 1e7] N");
     }
     return *fnomin_N;
   }
@@ -27,7 +30,12 @@ double model_fnomin_N(const contact::TyreConfig& config, std::optional<double> f
   if (lo == config.loads_N.end()) {
     throw InputError({config.source, 0, "loads_N"}, "no loads: give --fnomin");
   }
-  return 0.5 * (*lo + *hi);
+  const double middle_N = 0.5 * (*lo + *hi);
+  if (middle_N < kMin_N) {
+    throw InputError({config.source, 0, "loads_N"},
+                     "the nominal load (the middle of loads_N) is below 100 N: give --fnomin");
+  }
+  return middle_N;
 }
 
 std::vector<double> load_grid(double fnomin_N, double lo, double hi, int count) {

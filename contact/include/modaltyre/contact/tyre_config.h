@@ -14,7 +14,7 @@ namespace modaltyre::contact {
 
 struct TreadParams {
   double modulus_Pa = 6e6;     ///< storage (elastic) modulus E_tr of the tread rubber, > 0
-  double tan_delta = 0.15;     ///< loss factor G_tr / E_tr (seed 001 eq. 8), >= 0
+  double tan_delta = 0.15;     ///< loss factor G_tr / E_tr (seed 001 eq. 8), 0 or >= 0.01
   double thickness_m = 0.008;  ///< radial thickness of the tread layer, > 0
   double width_m = 0.14;       ///< contact width of the 2D model's patch, > 0
   double poisson = 0.49;       ///< rubber Poisson ratio, shear modulus G = E / (2 (1 + nu))
@@ -41,7 +41,7 @@ struct ValidationSettings {
 /// Scenarios and model settings of the transient simulation (section `transient:`, see
 /// transient/transient.h and docs/transient.md). Speeds in m/s, lengths in m, times in s.
 struct TransientSettings {
-  double hub_mass_kg = 20;     ///< reduced mass on the hub DOF (tyre + rim + fixture), > 0
+  double hub_mass_kg = 20;     ///< reduced mass on the hub DOF (tyre + rim + fixture), >= 0.1
   int dynamic_max_order = 40;  ///< orders above it respond quasi-statically (residual)
   bool relaxation = true;      ///< Kelvin-Voigt tread (seed 001 eq. 10); false: eq. (6)
   double tread_reference_frequency_hz = 10;   ///< Omega of c = K tan(delta) / Omega (eq. 9)
@@ -72,6 +72,9 @@ struct TransientSettings {
 /// a mean pressure of inf), above 1e7 N (1000 t on one wheel) no tyre.
 constexpr double kMinLoad_N = 1e-6;
 constexpr double kMaxLoad_N = 1e7;
+/// The transient scenarios' loads [N]: at least the weight of 1 kg (a patch 13 mm long on the
+/// SF-350); a near-zero load ramps up in a denormal time that the integrator refuses.
+constexpr double kMinTransientLoad_N = 10;
 
 struct TyreConfig {
   std::string source;  ///< config file path

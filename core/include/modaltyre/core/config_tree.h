@@ -31,6 +31,10 @@ std::string read_yaml_file(const std::string& path, const std::string& what);
 /// Parses the value of "--set key=value" with the same checks; errors name "--set" and `key`.
 YAML::Node parse_set_value(const std::string& value, const std::string& key);
 
+/// Refuses the same key twice among "--set key=value" assignments as given on one command line
+/// (InputError at "--set", key, naming both values; exit 2): which one was meant is unknown.
+void refuse_repeated_overrides(const std::vector<std::string>& overrides);
+
 class ConfigTree {
  public:
   /// Loads a YAML file and applies overrides of the form "a.b.c=value" (value parsed as YAML).
@@ -51,8 +55,8 @@ class ConfigTree {
   struct State {
     std::string file;
     YAML::Node root;
-    std::set<std::string> consumed;      // dotted keys that were read
-    std::set<std::string> overridden;    // dotted keys set on the command line
+    std::set<std::string> consumed;    // dotted keys that were read
+    std::set<std::string> overridden;  // dotted keys set on the command line
   };
 
  private:

@@ -26,7 +26,8 @@ struct ModelCurve {
 std::string model_width_reason(const contact::TyreConfig& config);
 
 /// The nominal load: `fnomin_N` when given, else the middle of the config's loads_N
-/// ((min + max) / 2). Throws InputError (key --fnomin) for a value that is not > 0.
+/// ((min + max) / 2). Throws InputError (key --fnomin, or loads_N) for a nominal load outside
+/// [100, 1e7] N.
 double model_fnomin_N(const contact::TyreConfig& config, std::optional<double> fnomin_N);
 
 /// `count` loads evenly spaced over [lo, hi] x fnomin (count >= 2).
