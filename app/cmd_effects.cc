@@ -47,7 +47,8 @@ int key_width() {
 void print_effect(const EffectInfo& e, int width) {
   std::cout << e.name << "\n"
             << "  " << e.description << "\n"
-            << "  regime variable: " << e.regime << "   changes: " << joined(e.observables) << "\n"
+            << "  regime variable: " << condition_info(e.regime).name
+            << "   changes: " << joined(e.observables) << "\n"
             << "  switch on: " << enabled_key(e) << "=true\n"
             << "  acts on: " << e.acts_on << "   with the 3D patch (footprint_3d): "
             << (e.refused_with_3d.empty() ? "composes" : "refused, " + e.refused_with_3d) << "\n";

@@ -133,7 +133,7 @@ void register_transient(CLI::App& app) {
       drawn = true;
       return true;
     };
-    const transient::TransientResult r = transient::run_transient(model, scenario, &opts);
+    const transient::TransientResult r = transient::run_transient(model, scenario, opts);
     if (drawn) std::fprintf(stderr, "\n");
     if (!r.ok()) throw ComputationError(r.message);
 

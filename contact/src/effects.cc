@@ -56,88 +56,89 @@ std::vector<EffectInfo> make_catalogue() {
                "carcass compliance scales as ((1 + p_test) / (1 + p))^exponent with the row's "
                "inflation pressure p (bar), seed 000 eq. (3)",
                {"sinking_mm", "length_mm"},
-               "pressure_kPa",
+               ConditionId::pressure_kPa,
                {{"exponent", "-", 1.0, 0.0, 4.0, true, "1 = seed 000 eq. (3)",
-                 [](E& e) -> double& { return e.inflation_pressure.exponent; }},
+                 parameter_ref<&E::inflation_pressure, &E::InflationPressure::exponent>()},
                 {"modal_test_pressure_kPa", "kPa", 230, 10, 2000, false,
                  "pressure at which the hammer test was made",
-                 [](E& e) -> double& { return e.inflation_pressure.modal_test_pressure_kPa; }}}});
+                 parameter_ref<&E::inflation_pressure,
+                               &E::InflationPressure::modal_test_pressure_kPa>()}}});
   c.push_back(
       {EffectId::tread_relaxation,
        "tread_relaxation",
        "tread creep while the load is held: tread compliance x (1 + creep_ratio "
        "(1 - exp(-hold_s / time_constant_s))), seed 001 eq. (10)",
        {"sinking_mm", "length_mm"},
-       "hold_s",
+       ConditionId::hold_s,
        {{"creep_ratio", "-", 0.5, 0.0, 5.0, true, "long-term over instantaneous compliance - 1",
-         [](E& e) -> double& { return e.tread_relaxation.creep_ratio; }},
+         parameter_ref<&E::tread_relaxation, &E::TreadRelaxation::creep_ratio>()},
         {"time_constant_s", "s", 30, 0.1, 1e4, true, "retardation time tan(delta)/Omega",
-         [](E& e) -> double& { return e.tread_relaxation.time_constant_s; }}}});
+         parameter_ref<&E::tread_relaxation, &E::TreadRelaxation::time_constant_s>()}}});
   c.push_back({EffectId::dry_friction,
                "dry_friction",
                "Saint-Venant dry friction in parallel with the tyre: the elastic part carries "
                "F - F_f when loading and F + F_f when unloading, seed 000 three-element model",
                {"sinking_mm", "length_mm"},
-               "branch",
+               ConditionId::branch,
                {{"friction_force_N", "N", 200, 0, 5000, true, "internal friction force F_f",
-                 [](E& e) -> double& { return e.dry_friction.friction_force_N; }}}});
+                 parameter_ref<&E::dry_friction, &E::DryFriction::friction_force_N>()}}});
   c.push_back({EffectId::load_stiffening,
                "load_stiffening",
                "nonlinear sidewall: carcass compliance x (F / F_ref)^-exponent, seed 000 eq. (3) "
                "(h ~ P^3/4: exponent 1/4)",
                {"sinking_mm", "length_mm"},
-               "load_N",
+               ConditionId::load_N,
                {{"exponent", "-", 0.25, -0.9, 0.9, true, "gamma; > 0 stiffens with load",
-                 [](E& e) -> double& { return e.load_stiffening.exponent; }},
+                 parameter_ref<&E::load_stiffening, &E::LoadStiffening::exponent>()},
                 {"reference_load_N", "N", 4000, 1, 1e6, false,
                  "load at which the carcass has its modal-test compliance",
-                 [](E& e) -> double& { return e.load_stiffening.reference_load_N; }}}});
+                 parameter_ref<&E::load_stiffening, &E::LoadStiffening::reference_load_N>()}}});
   c.push_back({EffectId::tread_coupling,
                "tread_coupling",
                "shear coupling of neighbouring tread units (Pasternak layer) instead of "
                "independent springs",
                {"length_mm", "sinking_mm"},
-               "load_N",
+               ConditionId::load_N,
                {{"coupling_length_mm", "mm", 10, 0, 100, true, "Pasternak length sqrt(G h / k)",
-                 [](E& e) -> double& { return e.tread_coupling.coupling_length_mm; }}}});
+                 parameter_ref<&E::tread_coupling, &E::TreadCoupling::coupling_length_mm>()}}});
   c.push_back({EffectId::soil_compliance,
                "soil_compliance",
                "Kelvin-Voigt soil under rows with surface = soil (static part: Winkler modulus "
                "E2 / layer), seed 000 eq. (23)-(28)",
                {"sinking_mm", "length_mm"},
-               "surface",
+               ConditionId::surface,
                {{"modulus_MPa", "MPa", 2, 0.01, 1000, true, "soil deformation modulus E2",
-                 [](E& e) -> double& { return e.soil_compliance.modulus_MPa; }},
+                 parameter_ref<&E::soil_compliance, &E::SoilCompliance::modulus_MPa>()},
                 {"layer_mm", "mm", 200, 1, 5000, false, "depth of the deformable layer",
-                 [](E& e) -> double& { return e.soil_compliance.layer_mm; }}}});
+                 parameter_ref<&E::soil_compliance, &E::SoilCompliance::layer_mm>()}}});
   c.push_back({EffectId::rolling_speed,
                "rolling_speed",
                "steady-rolling modal receptance at the row's speed, seed 001 eq. (2)-(5): "
                "asymmetric pressure and rolling resistance from modal damping",
                {"rolling_resistance_N", "sinking_mm", "length_mm"},
-               "speed_kmh",
+               ConditionId::speed_kmh,
                {{"damping_scale", "-", 1, 0, 20, true, "multiplies the measured modal damping",
-                 [](E& e) -> double& { return e.rolling_speed.damping_scale; }}}});
+                 parameter_ref<&E::rolling_speed, &E::RollingSpeed::damping_scale>()}}});
   c.push_back({EffectId::contact_width,
                "contact_width",
                "2D approximation of the patch width from the crown profile, w = min(max_width, "
                "2 sqrt(2 R_c sinking)); the tread stiffness per unit length follows the width "
                "(superseded by the 3D patch, footprint_3d:, which computes the width)",
                {"width_mm", "length_mm", "sinking_mm"},
-               "load_N",
+               ConditionId::load_N,
                {{"crown_radius_mm", "mm", 150, 10, 5000, true, "transverse crown radius R_c",
-                 [](E& e) -> double& { return e.contact_width.crown_radius_mm; }},
+                 parameter_ref<&E::contact_width, &E::ContactWidth::crown_radius_mm>()},
                 {"max_width_mm", "mm", 160, 1, 2000, false, "tread width",
-                 [](E& e) -> double& { return e.contact_width.max_width_mm; }}}});
+                 parameter_ref<&E::contact_width, &E::ContactWidth::max_width_mm>()}}});
   c.push_back(
       {EffectId::belt_flattening,
        "belt_flattening",
        "stiffness of the doubly curved belt against flattening that in-plane modes do "
        "not carry: foundation kappa on harmonic orders >= 2, c_k / (1 + pi R kappa c_k)",
        {"length_mm", "sinking_mm"},
-       "load_N",
+       ConditionId::load_N,
        {{"stiffness_MPa", "MPa", 1, 0.0, 1000, true, "kappa in N/mm per mm of circumference",
-         [](E& e) -> double& { return e.belt_flattening.stiffness_MPa; }}}});
+         parameter_ref<&E::belt_flattening, &E::BeltFlattening::stiffness_MPa>()}}});
   for (auto& e : c) with_3d_patch(e);
   return c;
 }

@@ -41,7 +41,8 @@ std::string untestable_reason(EffectId id, const MeasurementSet& d, const TyreCo
   if (config.footprint_3d && !info.refused_with_3d.empty()) {
     return "not on the 3D patch: " + info.refused_with_3d;
   }
-  const std::size_t n = distinct(d, info.regime);
+  const std::string& regime = condition_info(info.regime).name;
+  const std::size_t n = distinct(d, regime);
   switch (id) {
     case EffectId::load_stiffening:
     case EffectId::tread_coupling:
@@ -54,7 +55,7 @@ std::string untestable_reason(EffectId id, const MeasurementSet& d, const TyreCo
       return rolling ? "" : "no row is rolling (speed_kmh > 0)";
     }
     default:
-      return n >= 2 ? "" : info.regime + " does not vary in the data";
+      return n >= 2 ? "" : regime + " does not vary in the data";
   }
 }
 
@@ -191,7 +192,7 @@ void add_detection_limits(const Evaluator& ev, const Stage& current, const Namin
   if (best < 0) return;
   MoreRows& m = rep.more_rows;
   m.effect = last[unnamed[best]].name;
-  m.condition = contact::effect_info(ids[best]).regime;
+  m.condition = condition_info(contact::effect_info(ids[best]).regime).name;
   m.power_at_default = last[unnamed[best]].limit.power_at_default;
   m.replicas = finder.replicas_for_default(ids[best]);
   const int rows = static_cast<int>(ev.data().rows.size());

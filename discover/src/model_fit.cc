@@ -8,6 +8,7 @@
 #include <map>
 #include <numeric>
 
+#include "modaltyre/contact/parameter_spec.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/levenberg_marquardt.h"
 
@@ -20,16 +21,18 @@ using contact::TyreConfig;
 constexpr double kNoiseFloor = 1e-4;
 constexpr double kFailureResidual = 1.0;
 
-FreeParameter make_parameter(std::string key, double lo, double hi,
-                             std::function<double(const TyreConfig&)> get,
-                             std::function<void(TyreConfig&, double)> set) {
+// A fitted parameter from its specification (parameter_spec.h): discover's search range and
+// transform, the config accessors.
+FreeParameter make_parameter(const std::string& key) {
+  const contact::ParameterSpec* spec = contact::find_parameter(key);
+  MODALTYRE_CHECK(spec && spec->fit, "discover: " + key + " has no fit range");
   FreeParameter p;
-  p.key = std::move(key);
-  p.min = lo;
-  p.max = hi;
-  p.log_scale = lo > 0 && hi / lo >= 100;
-  p.get = std::move(get);
-  p.set = std::move(set);
+  p.key = key;
+  p.min = spec->fit->min;
+  p.max = spec->fit->max;
+  p.log_scale = spec->fit->transform == contact::SearchTransform::log_logistic;
+  p.get = spec->get;
+  p.set = spec->set;
   return p;
 }
 
@@ -63,21 +66,13 @@ double search_derivative(const FreeParameter& p, double u) {
 }
 
 std::vector<FreeParameter> baseline_parameters(const TyreConfig& config) {
-  std::vector<FreeParameter> out = {make_parameter(
-      "modal.compliance_scale", 0.05, 20, [](const TyreConfig& c) { return c.compliance_scale; },
-      [](TyreConfig& c, double v) { c.compliance_scale = v; })};
+  std::vector<FreeParameter> out = {make_parameter("modal.compliance_scale")};
   if (config.footprint_3d && config.footprint_3d->crown.shape == contact::CrownShape::circular) {
     // The 3D patch's second scalar: its crown radius (the tread modulus is a sourced compound
-    // value there, not an effective layer). Above 100 mm: the crown stays a graph over a tread.
-    out.push_back(make_parameter(
-        "footprint_3d.crown.radius_mm", 100, 1e5,
-        [](const TyreConfig& c) { return c.footprint_3d->crown.radius_m * 1e3; },
-        [](TyreConfig& c, double v) { c.footprint_3d->crown.radius_m = v * 1e-3; }));
+    // value there, not an effective layer).
+    out.push_back(make_parameter("footprint_3d.crown.radius_mm"));
   } else {
-    out.push_back(make_parameter(
-        "tread.modulus_MPa", 0.05, 200,
-        [](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; },
-        [](TyreConfig& c, double v) { c.tread.modulus_Pa = v * 1e6; }));
+    out.push_back(make_parameter("tread.modulus_MPa"));
   }
   return out;
 }
@@ -87,11 +82,7 @@ std::vector<FreeParameter> effect_parameters(EffectId id) {
   std::vector<FreeParameter> out;
   for (const auto& p : info.parameters) {
     if (!p.fitted) continue;
-    auto ref = p.ref;
-    FreeParameter fp = make_parameter(
-        info.key(p), p.min, p.max,
-        [ref](const TyreConfig& c) { return ref(const_cast<TyreConfig&>(c).effects); },
-        [ref](TyreConfig& c, double v) { ref(c.effects) = v; });
+    FreeParameter fp = make_parameter(info.key(p));
     fp.of_effect = true;
     fp.effect = id;
     out.push_back(std::move(fp));

@@ -20,7 +20,7 @@ nlohmann::json effect_json(const EffectInfo& e) {
   return {{"name", e.name},
           {"description", e.description},
           {"observables", e.observables},
-          {"regime", e.regime},
+          {"regime", condition_info(e.regime).name},
           {"enabled_key", enabled_key(e)},
           {"acts_on", e.acts_on},
           {"with_footprint_3d",

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "modaltyre/contact/parameter_spec.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
@@ -16,71 +17,20 @@ namespace {
 
 using namespace contact;
 
-struct Calibratable {
-  std::function<double(const TyreConfig&)> value;  ///< current value in config units
-  std::function<void(TyreConfig&, double)> set;    ///< as the config reader sets the key
-  double min, max;  ///< physically plausible range searched by the calibration
-};
-
-// The 3D patch settings a footprint_3d.* key calibrates; InputError when the config has none.
-template <class Config>
-auto& patch3d_of(Config& c) {
-  if (!c.footprint_3d) {
-    throw InputError({c.source, 0, "validation.calibrate"},
-                     "footprint_3d.* keys need a footprint_3d: section (the 3D patch)");
+// The parameter a `validation.calibrate` key names (parameter_spec.h: those with a calibration
+// range); InputError listing the calibratable keys otherwise.
+const ParameterSpec& calibratable(const std::string& key, const std::string& config_path) {
+  const ParameterSpec* p = find_parameter(key);
+  if (p && p->calibration) return *p;
+  std::vector<std::string> keys;
+  for (const auto& q : parameter_catalogue()) {
+    if (q.calibration) keys.push_back(q.key);
   }
-  return *c.footprint_3d;
-}
-
-template <class Config>
-auto& crown_of(Config& c) {
-  auto& crown = patch3d_of(c).crown;
-  if (crown.shape != CrownShape::circular) {
-    throw InputError({c.source, 0, "validation.calibrate"},
-                     "footprint_3d.crown.radius_mm is calibrated only on a circular crown");
-  }
-  return crown;
-}
-
-/// Scalar config keys that may be calibrated.
-const std::map<std::string, Calibratable>& calibratable() {
-  static const std::map<std::string, Calibratable> keys = {
-      {"modal.compliance_scale",
-       {[](const TyreConfig& c) { return c.compliance_scale; },
-        [](TyreConfig& c, double v) { c.compliance_scale = v; }, 0.2, 5}},
-      {"tread.modulus_MPa",
-       {[](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; },
-        [](TyreConfig& c, double v) { c.tread.modulus_Pa = v * 1e6; }, 0.1, 100}},
-      {"tread.thickness_mm",
-       {[](const TyreConfig& c) { return c.tread.thickness_m * 1e3; },
-        [](TyreConfig& c, double v) { c.tread.thickness_m = v * 1e-3; }, 1, 50}},
-      {"tread.contact_width_mm",
-       {[](const TyreConfig& c) { return c.tread.width_m * 1e3; },
-        [](TyreConfig& c, double v) { c.tread.width_m = v * 1e-3; }, 20, 500}},
-      {"tyre.outer_radius_mm",
-       {[](const TyreConfig& c) { return c.outer_radius_m * 1e3; },
-        [](TyreConfig& c, double v) {
-          c.outer_radius_m = v * 1e-3;
-          // The config reader's check of the key (read_tyre_config).
-          if (c.mesh.window_m > M_PI * c.outer_radius_m) {
-            throw InputError({c.source, 0, "contact.window_mm"},
-                             "candidate window longer than half the circumference");
-          }
-        },
-        100, 1500}},
-      // The 3D patch's crown (footprint_3d.crown, circular): rounder crown, narrower patch.
-      {"footprint_3d.crown.radius_mm",
-       {[](const TyreConfig& c) { return crown_of(c).radius_m * 1e3; },
-        [](TyreConfig& c, double v) { crown_of(c).radius_m = v * 1e-3; }, 100, 1e5}},
-      {"footprint_3d.tread_width_mm",
-       {[](const TyreConfig& c) { return patch3d_of(c).tread_width_m * 1e3; },
-        [](TyreConfig& c, double v) { patch3d_of(c).tread_width_m = v * 1e-3; }, 20, 500}},
-      // Starts at 10 rad^2/s^2 when not stated (the fit to resolved orders may give 0).
-      {"modal.extension_bending_s2_rad2_s2",
-       {[](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; },
-        [](TyreConfig& c, double v) { c.extension_s2 = v; }, 1e-3, 1e6}},
-  };
-  return keys;
+  std::sort(keys.begin(), keys.end());
+  std::string list;
+  for (const auto& k : keys) list += (list.empty() ? "" : ", ") + k;
+  throw InputError({config_path, 0, "validation.calibrate"},
+                   "'" + key + "' cannot be calibrated; choose from: " + list);
 }
 
 // Predicted footprints of the rows at their conditions, in file order (on the effect-free path
@@ -167,14 +117,10 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
     }
     cal_rows.push_back(measured[r - 1]);
   }
+  std::vector<const ParameterSpec*> specs;
   for (const auto& key : cal.keys) {
-    if (!calibratable().count(key)) {
-      std::string list;
-      for (const auto& kv : calibratable()) list += (list.empty() ? "" : ", ") + kv.first;
-      throw InputError({config_path, 0, "validation.calibrate"},
-                       "'" + key + "' cannot be calibrated; choose from: " + list);
-    }
-    cal.initial_values.push_back(calibratable().at(key).value(base));
+    specs.push_back(&calibratable(key, config_path));
+    cal.initial_values.push_back(specs.back()->get(base));
   }
   const auto& known = validation_observables();
   for (const auto& obs : cal.keys.empty() ? std::vector<std::string>{} : cal.observables) {
@@ -198,7 +144,7 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
   auto model_for = [&](const Eigen::VectorXd& log_values) {
     TyreConfig c = base;
     for (std::size_t k = 0; k < cal.keys.size(); ++k) {
-      calibratable().at(cal.keys[k]).set(c, std::exp(log_values(static_cast<Eigen::Index>(k))));
+      specs[k]->set(c, std::exp(log_values(static_cast<Eigen::Index>(k))));
     }
     return build_tyre_model(c, ident);
   };
@@ -213,7 +159,7 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
     auto residual = [&](const Eigen::VectorXd& lx) {
       // Outside the plausible range: a large residual makes the step fail instead of the model.
       for (std::size_t k = 0; k < cal.keys.size(); ++k) {
-        const auto& c = calibratable().at(cal.keys[k]);
+        const SearchRange& c = *specs[k]->calibration;
         const double v = std::exp(lx(static_cast<Eigen::Index>(k)));
         if (!(v >= c.min && v <= c.max)) {
           return Eigen::VectorXd::Constant(static_cast<Eigen::Index>(n_res), 1e6).eval();
@@ -241,7 +187,7 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
         fit.residual.size() ? std::sqrt(fit.residual.squaredNorm() / fit.residual.size()) : 0.0;
     for (std::size_t k = 0; k < cal.keys.size(); ++k) {
       const double v = std::exp(x(static_cast<Eigen::Index>(k)));
-      const auto& range = calibratable().at(cal.keys[k]);
+      const SearchRange& range = *specs[k]->calibration;
       cal.values.push_back(v);
       cal.at_bound.push_back(range_bound_side(v, range.min, range.max, true));  // log-fitted
     }

@@ -92,7 +92,7 @@ TEST(TransientTest, ContinuingOverContactSwitchesMatchesRestarting) {
   TransientRunOptions restart;
   restart.restart_at_switches = true;
   const TransientResult a = run_transient(M, Scenario::load_hold);
-  const TransientResult b = run_transient(M, Scenario::load_hold, &restart);
+  const TransientResult b = run_transient(M, Scenario::load_hold, restart);
   ASSERT_TRUE(a.ok()) << a.message;
   ASSERT_TRUE(b.ok()) << b.message;
   ASSERT_EQ(a.samples.size(), b.samples.size());
@@ -227,13 +227,13 @@ TEST(TransientTest, EnergyIsConservedWithoutDamping) {
   const std::vector<double> y0 = sys.static_state(plan.initial_load_N);
   TransientRunOptions opt;
   opt.keep_final_state = true;
-  const TransientResult r = run_transient(M, Scenario::free_vibration, &opt);
+  const TransientResult r = run_transient(M, Scenario::free_vibration, opt);
   ASSERT_TRUE(r.ok()) << r.message;
   const double F = plan.load(0);
   const int Z = M.z_index();
   // Work of the constant hub load F enters as -F z (potential of a constant force).
   const double E0 = sys.energy(0, y0.data()) - F * y0[Z];
-  const double E1 = sys.energy(r.simulated_s, opt.final_state.data()) - F * opt.final_state[Z];
+  const double E1 = sys.energy(r.simulated_s, r.final_state.data()) - F * r.final_state[Z];
   const double scale = sys.energy(0, y0.data());
   EXPECT_NEAR((E1 - E0) / scale, 0.0, kEnergyTol);
 }
@@ -261,7 +261,7 @@ TEST(TransientTest, GrazingUnitNeitherStopsNorChattersTheIntegrator) {
   for (const char* order : {"transient.dynamic_max_order=6", "transient.dynamic_max_order=10"}) {
     const TransientModel M = model_with(
         {order, "transient.free_vibration.duration_s=0.01", "transient.output_step_ms=1"});
-    const TransientResult r = run_transient(M, Scenario::free_vibration, &locate);
+    const TransientResult r = run_transient(M, Scenario::free_vibration, locate);
     ASSERT_TRUE(r.ok()) << order << ": " << r.message;
     EXPECT_NEAR(r.simulated_s, 0.01, 1e-12) << order;
     // The patch breathes by a few units per side in 10 ms; chattering gave thousands.
@@ -416,7 +416,7 @@ TEST(TransientTest, SchurNewtonSolverMatchesKlu) {
   TransientRunOptions klu;
   klu.newton_solver = TransientRunOptions::NewtonSolver::klu;
   const TransientResult a = run_transient(M, Scenario::rolling);
-  const TransientResult b = run_transient(M, Scenario::rolling, &klu);
+  const TransientResult b = run_transient(M, Scenario::rolling, klu);
   ASSERT_TRUE(a.ok()) << a.message;
   ASSERT_TRUE(b.ok()) << b.message;
   ASSERT_EQ(a.samples.size(), b.samples.size());

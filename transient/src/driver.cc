@@ -124,7 +124,7 @@ class SampleReuse {
 }  // namespace
 
 TransientResult run_transient(const TransientModel& M, Scenario scenario,
-                              TransientRunOptions* options) {
+                              const TransientRunOptions& options) {
   const auto wall0 = std::chrono::steady_clock::now();
   const ScenarioPlan plan = plan_scenario(M, scenario);
   TransientSystem sys(M, plan);
@@ -141,14 +141,14 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
     sys.jacobian(t, y, J);
     return 0;
   };
-  const bool restart_at_switches = options && options->restart_at_switches;
-  const bool locate_switches = restart_at_switches || (options && options->locate_switches);
+  const bool restart_at_switches = options.restart_at_switches;
+  const bool locate_switches = restart_at_switches || options.locate_switches;
   prob.roots = locate_switches ? M.m : 0;
   // Newton's matrix I - gamma J has the arrow structure of solvers::ArrowLu: the carcass, residual
   // and hub states (the first e_index()) are densely coupled through the units in contact; each
   // tread state couples to its two upwind neighbours and, in contact, to that dense block.
   using NewtonSolver = TransientRunOptions::NewtonSolver;
-  const NewtonSolver newton = options ? options->newton_solver : NewtonSolver::schur;
+  const NewtonSolver newton = options.newton_solver;
   ContactNewton contact_newton(M, sys);
   solvers::ArrowLu arrow;
   solvers::CscMatrix jac;
@@ -236,7 +236,7 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
         res.samples.push_back(observe(M, sys, plan, t_out, y_out.data()));
         reuse.remember(y_out);
       }
-      if (options && options->progress && !options->progress(t_out, T)) {
+      if (options.progress && !options.progress(t_out, T)) {
         res.message = "cancelled";
         return false;
       }
@@ -297,7 +297,7 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
   }
   res.simulated_s = ode.time();
   res.stats = ode.stats();
-  if (options && options->keep_final_state) options->final_state = ode.state();
+  if (options.keep_final_state) res.final_state = ode.state();
   res.status = failed ? TransientStatus::failed : TransientStatus::completed;
   if (!failed) {
     std::ostringstream msg;

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "modaltyre/contact/operating_conditions.h"
+#include "modaltyre/core/conditions.h"
 #include "modaltyre/core/config_tree.h"
 
 namespace modaltyre::contact {
@@ -100,14 +101,31 @@ struct EffectsConfig {
   bool any() const;
 };
 
-/// One parameter of an effect as listed by `modaltyre effects`.
+/// Where an effect parameter lives in an EffectsConfig, for reading (const) and writing.
+struct EffectParameterRef {
+  double& (*field)(EffectsConfig&) = nullptr;
+  const double& (*const_field)(const EffectsConfig&) = nullptr;
+  double& operator()(EffectsConfig& e) const { return field(e); }
+  const double& operator()(const EffectsConfig& e) const { return const_field(e); }
+};
+
+/// The EffectParameterRef of member `Parameter` of effect member `Effect`, e.g.
+/// parameter_ref<&EffectsConfig::dry_friction, &EffectsConfig::DryFriction::friction_force_N>().
+template <auto Effect, auto Parameter>
+EffectParameterRef parameter_ref() {
+  return {[](EffectsConfig& e) -> double& { return (e.*Effect).*Parameter; },
+          [](const EffectsConfig& e) -> const double& { return (e.*Effect).*Parameter; }};
+}
+
+/// One parameter of an effect as listed by `modaltyre effects`. Its fit range for discover and
+/// its transform are in the parameter specification (parameter_spec.h), built from this entry.
 struct EffectParameterInfo {
   std::string name;  ///< e.g. "exponent"; the config key is effects.EFFECT.name
   std::string unit;  ///< "-" for dimensionless
-  double default_value = 0, min = 0, max = 0;
+  double default_value = 0, min = 0, max = 0;  ///< [min, max]: what the config reader accepts
   bool fitted = true;  ///< false: a stated reference value that `discover` does not fit
   std::string meaning;
-  std::function<double&(EffectsConfig&)> ref;
+  EffectParameterRef ref;
 };
 
 struct EffectInfo {
@@ -115,7 +133,7 @@ struct EffectInfo {
   std::string name;
   std::string description;
   std::vector<std::string> observables;  ///< what it changes
-  std::string regime;                    ///< condition variable it acts through ("load_N", ...)
+  ConditionId regime;                    ///< condition it acts through (core/conditions.h)
   std::vector<EffectParameterInfo> parameters;
   std::string acts_on = {};  ///< what it changes in the model: carcass, tread, applied load, road
   /// Empty when it composes with the 3D patch (footprint_3d); else why it is refused there.

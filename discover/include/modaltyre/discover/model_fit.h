@@ -23,11 +23,12 @@
 
 namespace modaltyre::discover {
 
-/// One free parameter of a model variant, in the units of its config key.
+/// One free parameter of a model variant, in the units of its config key; its range and
+/// transform are the specification's fit range (contact/parameter_spec.h).
 struct FreeParameter {
   std::string key;  ///< dotted config key, e.g. "tread.modulus_MPa"
   double min = 0, max = 0;
-  bool log_scale = false;
+  bool log_scale = false;  ///< SearchTransform::log_logistic, else logistic
   bool of_effect = false;  ///< an effect's parameter (else a baseline scalar)
   contact::EffectId effect = contact::EffectId::inflation_pressure;  ///< when of_effect
   std::function<double(const contact::TyreConfig&)> get;

@@ -39,6 +39,8 @@ struct TransientResult {
   std::vector<TransientSample> samples;
   /// Mean of -longitudinal force over the last 10 % of the run (rolling resistance) [N].
   double rolling_resistance_N = 0;
+  /// The state at simulated_s (TransientSystem's layout), when the options asked for it.
+  std::vector<double> final_state;
   bool ok() const { return status == TransientStatus::completed; }
   double real_time_factor() const { return wall_s > 0 ? simulated_s / wall_s : 0; }
 };
@@ -46,8 +48,7 @@ struct TransientResult {
 struct TransientRunOptions {
   /// Called after every output sample with (t, duration); return false to stop (cancel).
   std::function<bool(double, double)> progress;
-  std::vector<double> final_state;  ///< filled with the last state if non-null-sized request
-  bool keep_final_state = false;
+  bool keep_final_state = false;  ///< return the last state in TransientResult::final_state
   /// Locate every contact switch with CVODE's root finder (one root function per candidate
   /// unit) and return there. Off by default: the kinks of f = k max(0, g) are solved inside the
   /// implicit steps, and the contact set is compared between accepted steps instead (the root
@@ -67,6 +68,6 @@ struct TransientRunOptions {
 /// Runs a scenario. Failures of the integrator are reported in the result (message and time
 /// reached), never thrown; ill-posed settings are InputErrors.
 TransientResult run_transient(const TransientModel& model, Scenario scenario,
-                              TransientRunOptions* options = nullptr);
+                              const TransientRunOptions& options = {});
 
 }  // namespace modaltyre::transient

@@ -1,0 +1,116 @@
+// The parameter specification: every entry sets a key as the config reader sets it (a round
+// trip through the reader), the effect entries are the effect catalogue's, and the search
+// ranges and transforms are consistent with their users' assumptions.
+#include "modaltyre/contact/parameter_spec.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "modaltyre/contact/effects.h"
+
+namespace {
+
+using namespace modaltyre::contact;
+
+const std::string kConfig2d = MODALTYRE_SOURCE_DIR "/configs/sf350_2d_table3.yaml";
+const std::string kConfig3d = MODALTYRE_SOURCE_DIR "/configs/sf350.yaml";
+
+// A value inside a search range: its geometric mean when positive, else its midpoint.
+double inside(const SearchRange& r) {
+  return r.min > 0 ? std::sqrt(r.min * r.max) : 0.5 * (r.min + r.max);
+}
+
+std::string exact(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", v);
+  return b;
+}
+
+TEST(ParameterSpec, SetAndGetAgreeWithTheConfigReaderForEverySearchedKey) {
+  for (const auto& p : parameter_catalogue()) {
+    const auto& range = p.calibration ? p.calibration : p.fit;
+    if (!range) continue;
+    const double v = inside(*range);
+    const std::string& path = p.key.rfind("footprint_3d.", 0) == 0 ? kConfig3d : kConfig2d;
+    const TyreConfig read = load_tyre_config(path, {p.key + "=" + exact(v)});
+    EXPECT_NEAR(p.get(read), v, 1e-12 * std::abs(v)) << p.key;
+    TyreConfig set = load_tyre_config(path);
+    p.set(set, v);
+    EXPECT_NEAR(p.get(set), p.get(read), 1e-12 * std::abs(v)) << p.key;
+  }
+}
+
+TEST(ParameterSpec, ThreeDimensionalKeysRefuseATwoDimensionalConfig) {
+  TyreConfig c = load_tyre_config(kConfig2d);
+  for (const char* key : {"footprint_3d.crown.radius_mm", "footprint_3d.tread_width_mm"}) {
+    const ParameterSpec* p = find_parameter(key);
+    ASSERT_NE(p, nullptr) << key;
+    EXPECT_THROW(p->get(c), modaltyre::InputError) << key;
+    EXPECT_THROW(p->set(c, 150), modaltyre::InputError) << key;
+  }
+}
+
+TEST(ParameterSpec, EffectEntriesAreTheEffectCatalogues) {
+  for (const auto& e : effect_catalogue()) {
+    for (const auto& ep : e.parameters) {
+      const ParameterSpec* p = find_parameter(e.key(ep));
+      ASSERT_NE(p, nullptr) << e.key(ep);
+      EXPECT_EQ(p->unit, ep.unit) << p->key;
+      EXPECT_FALSE(p->calibration) << p->key;
+      ASSERT_EQ(p->fit.has_value(), ep.fitted) << p->key;
+      if (ep.fitted) {
+        EXPECT_EQ(p->fit->min, ep.min) << p->key;
+        EXPECT_EQ(p->fit->max, ep.max) << p->key;
+      }
+      // The entry reads and writes the catalogue's field.
+      TyreConfig c;
+      p->set(c, 0.5 * (ep.min + ep.max));
+      EXPECT_EQ(ep.ref(static_cast<const EffectsConfig&>(c.effects)), 0.5 * (ep.min + ep.max));
+      EXPECT_EQ(p->get(c), 0.5 * (ep.min + ep.max)) << p->key;
+    }
+  }
+}
+
+TEST(ParameterSpec, SearchRangesAreOrderedAndLogarithmicOnlyWhenPositive) {
+  int keys = 0;
+  for (const auto& p : parameter_catalogue()) {
+    ++keys;
+    EXPECT_EQ(find_parameter(p.key), &p) << "duplicate key " << p.key;
+    for (const auto& r : {p.calibration, p.fit}) {
+      if (!r) continue;
+      EXPECT_LT(r->min, r->max) << p.key;
+      if (r->transform != SearchTransform::logistic) {
+        EXPECT_GT(r->min, 0) << p.key;
+      }
+    }
+    if (p.calibration) {
+      EXPECT_EQ(p.calibration->transform, SearchTransform::log) << p.key;
+    }
+    if (p.fit) {
+      EXPECT_NE(p.fit->transform, SearchTransform::log) << p.key;
+    }
+  }
+  EXPECT_GT(keys, 8);
+  EXPECT_EQ(find_parameter("tread.no_such_key"), nullptr);
+}
+
+TEST(ParameterSpec, DiscoverSearchesInLogarithmsFromAFactorOfOneHundred) {
+  EXPECT_EQ(logistic_search(0.05, 20).transform, SearchTransform::log_logistic);  // 400x
+  EXPECT_EQ(logistic_search(1, 100).transform, SearchTransform::log_logistic);
+  EXPECT_EQ(logistic_search(1, 99).transform, SearchTransform::logistic);
+  EXPECT_EQ(logistic_search(0, 4).transform, SearchTransform::logistic);
+  EXPECT_EQ(logistic_search(-0.9, 0.9).transform, SearchTransform::logistic);
+}
+
+TEST(ParameterSpec, EveryEffectActsThroughACatalogueCondition) {
+  EXPECT_EQ(effect_info(EffectId::dry_friction).regime, modaltyre::ConditionId::branch);
+  EXPECT_EQ(effect_info(EffectId::soil_compliance).regime, modaltyre::ConditionId::surface);
+  for (const auto& e : effect_catalogue()) {
+    EXPECT_FALSE(modaltyre::condition_info(e.regime).name.empty()) << e.name;
+  }
+}
+
+}  // namespace
