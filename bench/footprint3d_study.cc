@@ -28,7 +28,7 @@
 
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/core/errors.h"
-#include "modaltyre/solvers/least_squares.h"
+#include "modaltyre/solvers/levenberg_marquardt.h"
 #include "modaltyre/studies/measurements.h"
 
 using namespace modaltyre;

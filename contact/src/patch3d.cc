@@ -64,12 +64,12 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
     z_m_.push_back(s.crown.drop_m(y_m_.back()));
   }
   const TreadParams& T = physics.tread ? *physics.tread : model_.config.tread;
-  const double G = T.modulus_Pa / (2 * (1 + T.poisson));
-  // Seed 001 eq. (6)-(9) per unit area: a cell of dy x ds; creeping by the given factor
+  // Seed 001 eq. (6)-(9) for a cell of dy x ds; creeping by the given factor
   // (seed 001 eq. 10, tread_relaxation).
   const double ds = model_.unit_length_m;
-  k_radial_cell_ = T.modulus_Pa * dy * ds / T.thickness_m / physics.tread_creep;
-  k_tangential_cell_ = G * dy * ds / T.thickness_m / physics.tread_creep;
+  const TreadSprings k = tread_springs(T, dy, ds);
+  k_radial_cell_ = k.radial_N_m / physics.tread_creep;
+  k_tangential_cell_ = k.tangential_N_m / physics.tread_creep;
   for (double th : model_.theta) {
     const double c = std::cos(th), sn = std::sin(th);
     double t = c * c / k_radial_cell_ + sn * sn / k_tangential_cell_;

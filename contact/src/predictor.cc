@@ -152,9 +152,8 @@ PatchOperator assemble(const TyreModel& m, const CarcassAssembly& a, const TyreP
   const auto& T = P.tread;
   const int cand = m.candidates();
   const double ds = m.unit_length_m;
-  const double G = T.modulus_Pa / (2 * (1 + T.poisson));
-  const double k_r = T.modulus_Pa * width * ds / T.thickness_m;
-  const double k_t = G * width * ds / T.thickness_m;
+  const TreadSprings k = tread_springs(T, width, ds);
+  const double k_r = k.radial_N_m, k_t = k.tangential_N_m;
   const std::vector<double>& cos_ = a.cos_theta;
   const std::vector<double>& sin_ = a.sin_theta;
   PatchOperator op;

@@ -67,6 +67,12 @@ Eigen::MatrixXd assembled_vertical_compliance(const TyreModel& m) {
 
 }  // namespace
 
+TreadSprings tread_springs(const TreadParams& tread, double width_m, double length_m) {
+  const double G = tread.modulus_Pa / (2 * (1 + tread.poisson));
+  return {tread.modulus_Pa * width_m * length_m / tread.thickness_m,
+          G * width_m * length_m / tread.thickness_m};
+}
+
 TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentification& modes) {
   TyreModel m;
   m.config = config;
@@ -99,10 +105,9 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
                   ? modal::build_periodic_kernels(m.basis, m.units_around, cand)
                   : modal::build_lag_kernels(m.basis, m.dtheta_rad, cand);
 
-  const auto& t = config.tread;
-  const double G = t.modulus_Pa / (2 * (1 + t.poisson));
-  m.k_radial_N_m = t.modulus_Pa * t.width_m * m.unit_length_m / t.thickness_m;
-  m.k_tangential_N_m = G * t.width_m * m.unit_length_m / t.thickness_m;
+  const TreadSprings k = tread_springs(config.tread, config.tread.width_m, m.unit_length_m);
+  m.k_radial_N_m = k.radial_N_m;
+  m.k_tangential_N_m = k.tangential_N_m;
 
   m.theta.resize(cand);
   m.sag.resize(cand);

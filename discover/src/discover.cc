@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/solvers/correlation.h"
 #include "modaltyre/studies/validation.h"
 
 namespace modaltyre::discover {
@@ -95,7 +96,7 @@ std::vector<RegimeFinding> locate(const MeasurementSet& d, const FitResult& base
     for (const auto& var : vars) {
       std::vector<double> x;
       for (int r : rows) x.push_back(studies::condition_value(d.rows[r].conditions, var));
-      const double r = pearson(x, res);
+      const double r = solvers::pearson_correlation(x, res);
       if (std::abs(r) > std::abs(f.correlation)) f.correlation = r, f.variable = var;
     }
     std::ostringstream s;
@@ -218,21 +219,6 @@ std::string number_text(double v) {
 }
 
 }  // namespace
-
-double pearson(const std::vector<double>& x, const std::vector<double>& y) {
-  const std::size_t n = std::min(x.size(), y.size());
-  if (n < 2) return 0;
-  const double mx = std::accumulate(x.begin(), x.begin() + n, 0.0) / n;
-  const double my = std::accumulate(y.begin(), y.begin() + n, 0.0) / n;
-  double sxy = 0, sxx = 0, syy = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    sxy += (x[i] - mx) * (y[i] - my);
-    sxx += (x[i] - mx) * (x[i] - mx);
-    syy += (y[i] - my) * (y[i] - my);
-  }
-  if (sxx <= 0 || syy <= 0) return 0;
-  return sxy / std::sqrt(sxx * syy);
-}
 
 DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
                         const DiscoverOptions& opt) {

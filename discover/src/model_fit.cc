@@ -9,7 +9,7 @@
 #include <numeric>
 
 #include "modaltyre/core/errors.h"
-#include "modaltyre/solvers/least_squares.h"
+#include "modaltyre/solvers/levenberg_marquardt.h"
 
 namespace modaltyre::discover {
 namespace {

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Dense>
+
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/rheology/contact_geometry.h"
-#include "modaltyre/rheology/least_squares.h"
 
 namespace modaltyre::rheology {
 namespace {
@@ -68,8 +69,9 @@ ContactStressResult identify_contact_stress(const StressData& d, const ContactSt
   if (!(o.r0_m > 0))
     throw InputError("contact-stress needs the free radius r0 (--r0-mm or tyre.outer_radius_mm)");
   if (!(o.tread_width_m > 0))
-    throw InputError("contact-stress needs the tread width B_tr (--tread-width-mm or "
-                     "tread.contact_width_mm) for eq. (8) and (12)");
+    throw InputError(
+        "contact-stress needs the tread width B_tr (--tread-width-mm or "
+        "tread.contact_width_mm) for eq. (8) and (12)");
   if (d.rows.size() < 3)
     throw InputError({d.path, 0, ""}, "contact-stress needs at least three rows (got " +
                                           std::to_string(d.rows.size()) + ")");
@@ -101,7 +103,10 @@ ContactStressResult identify_contact_stress(const StressData& d, const ContactSt
     const double g = (std::sqrt(5.0) - 1) / 2;
     for (int it = 0; it < 200 && hi - lo > 1e-13; ++it) {
       const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-      if (project(d, a, o.r0_m).rss < project(d, b, o.r0_m).rss) hi = b; else lo = a;
+      if (project(d, a, o.r0_m).rss < project(d, b, o.r0_m).rss)
+        hi = b;
+      else
+        lo = a;
     }
     res.deflection_m = (lo + hi) / 2;
   }
@@ -132,8 +137,8 @@ ContactStressResult identify_contact_stress(const StressData& d, const ContactSt
     throw InputError({d.path, 0, "x_mm"},
                      "the stress profile does not determine K1 and the deflection (too few "
                      "points inside the contact patch)");
-  const Eigen::MatrixXd cov = s2 * scale.cwiseInverse().asDiagonal() * lu.inverse() *
-                              scale.cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd cov =
+      s2 * scale.cwiseInverse().asDiagonal() * lu.inverse() * scale.cwiseInverse().asDiagonal();
   res.K1_se = std::sqrt(std::max(0.0, cov(0, 0)));
   res.deflection_se_m = fixed_h ? 0.0 : std::sqrt(std::max(0.0, cov(1, 1)));
 

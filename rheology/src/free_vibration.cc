@@ -1,14 +1,13 @@
 #include "modaltyre/rheology/free_vibration.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
-#include <Eigen/Dense>
-
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
-#include "modaltyre/rheology/least_squares.h"
+#include "modaltyre/solvers/linear_least_squares.h"
 
 namespace modaltyre::rheology {
 namespace {
@@ -72,8 +71,10 @@ double decay_value(const DecayFit& f, double t_s) {
 DecayFit fit_free_decay(const DecaySignal& s) {
   const std::size_t n = s.t_s.size();
   if (n < 10)
-    throw InputError({s.path, 0, ""}, "free-vibration needs a sampled decay signal (at least 10 "
-                                      "rows, got " + std::to_string(n) + ")");
+    throw InputError({s.path, 0, ""},
+                     "free-vibration needs a sampled decay signal (at least 10 "
+                     "rows, got " +
+                         std::to_string(n) + ")");
   if (s.deflection_m.size() != n) throw InputError({s.path, 0, ""}, "t_s and deflection differ");
   DecayFit f;
   f.samples = static_cast<int>(n);
@@ -81,9 +82,9 @@ DecayFit fit_free_decay(const DecaySignal& s) {
 
   // 1. Extrema above the noise: lobes separated by hysteresis at 10 % of the largest swing
   //    about the mean of the second half (a first guess of h_Z0).
-  const double h0g =
-      std::accumulate(s.deflection_m.begin() + static_cast<long>(n / 2), s.deflection_m.end(), 0.0) /
-      static_cast<double>(n - n / 2);
+  const double h0g = std::accumulate(s.deflection_m.begin() + static_cast<long>(n / 2),
+                                     s.deflection_m.end(), 0.0) /
+                     static_cast<double>(n - n / 2);
   double amax = 0;
   for (double y : s.deflection_m) amax = std::max(amax, std::abs(y - h0g));
   if (amax <= 0) throw InputError({s.path, 0, "deflection_mm"}, "the signal is constant");
@@ -108,8 +109,8 @@ DecayFit fit_free_decay(const DecaySignal& s) {
     throw InputError({s.path, 0, "deflection_mm"},
                      "fewer than two oscillation cycles above 10 % of the largest swing: cannot "
                      "find the period and the decrement (is this a free damped vibration?)");
-  const double T_guess = 2.0 * (s.t_s[ext.back()] - s.t_s[ext.front()]) /
-                         static_cast<double>(ext.size() - 1);
+  const double T_guess =
+      2.0 * (s.t_s[ext.back()] - s.t_s[ext.front()]) / static_cast<double>(ext.size() - 1);
   // Peak-to-peak ranges decay as exp(-alpha t) whatever the equilibrium: slope of ln(range).
   Eigen::MatrixXd A(ext.size() - 1, 2);
   Eigen::VectorXd b(ext.size() - 1);
@@ -119,7 +120,7 @@ DecayFit fit_free_decay(const DecaySignal& s) {
     A(static_cast<Eigen::Index>(k), 1) = 1.0;
     b(static_cast<Eigen::Index>(k)) = std::log(std::max(r, 1e-300));
   }
-  const double alpha_guess = -solve_least_squares(A, b).coef(0);
+  const double alpha_guess = -solvers::solve_linear_least_squares(A, b).coef(0);
   if (!(alpha_guess * T_guess >= kMinLogDecrement))
     throw InputError({s.path, 0, "deflection_mm"},
                      "the oscillation does not decay (log decrement " +
@@ -134,7 +135,7 @@ DecayFit fit_free_decay(const DecaySignal& s) {
   p << 0, 0, 0, alpha_guess, 2 * M_PI / T_guess;
   {
     Eigen::MatrixXd L = jacobian(p, tau).leftCols(3);
-    p.head(3) = solve_least_squares(L, y).coef;
+    p.head(3) = solvers::solve_linear_least_squares(L, y).coef;
   }
   double lambda = 1e-3;
   Eigen::VectorXd r = model(p, tau) - y;
@@ -153,8 +154,10 @@ DecayFit fit_free_decay(const DecaySignal& s) {
       const Eigen::VectorXd rq = model(q, tau) - y;
       const double cq = rq.squaredNorm();
       if (std::isfinite(cq) && cq <= cost) {
-        converged = (cost - cq) <= 1e-14 * cost ||
-                    step.cwiseAbs().cwiseQuotient(p.cwiseAbs().array().max(1e-12).matrix()).maxCoeff() < 1e-10;
+        converged =
+            (cost - cq) <= 1e-14 * cost ||
+            step.cwiseAbs().cwiseQuotient(p.cwiseAbs().array().max(1e-12).matrix()).maxCoeff() <
+                1e-10;
         p = q, r = rq, cost = cq;
         lambda = std::max(lambda / 10, 1e-12);
         improved = true;
@@ -180,8 +183,7 @@ DecayFit fit_free_decay(const DecaySignal& s) {
                          std::to_string(f.log_decrement) + "): eq. (22) needs a damped vibration");
   f.residual_rms_m = std::sqrt(cost / static_cast<double>(n));
   const Eigen::MatrixXd J = jacobian(p, tau);
-  const Eigen::MatrixXd cov =
-      cost / static_cast<double>(n - 5) * (J.transpose() * J).inverse();
+  const Eigen::MatrixXd cov = cost / static_cast<double>(n - 5) * (J.transpose() * J).inverse();
   f.equilibrium_se_m = std::sqrt(std::max(0.0, cov(0, 0)));
   f.period_se_s = 2 * M_PI / (p(4) * p(4)) * std::sqrt(std::max(0.0, cov(4, 4)));
   // delta = 2 pi alpha / omega: gradient (2 pi / omega, -2 pi alpha / omega^2)

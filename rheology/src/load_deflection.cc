@@ -4,18 +4,18 @@
 #include <cmath>
 #include <map>
 
+#include "measured_ranges.h"
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/rheology/contact_geometry.h"
-#include "modaltyre/rheology/least_squares.h"
+#include "modaltyre/solvers/linear_least_squares.h"
 
 namespace modaltyre::rheology {
 namespace {
 
 constexpr double kMmPerM = 1e3;
-// Plausible ranges, as the tyre config has them (loads_N, tyre.inflation_pressure_kPa): beyond
-// them a typo or a wrong unit, and the fit would overflow instead of saying so.
-constexpr double kMaxLoad_N = 1e7;
+// Plausible pressures, as the tyre config has them (tyre.inflation_pressure_kPa): beyond them a
+// typo or a wrong unit, and the fit would overflow instead of saying so (loads: measured_ranges.h).
 constexpr double kMaxPressure_kPa = 2000;
 
 // Groups rows by a key rounded to a tolerance (equal within it = "one value").
@@ -23,8 +23,7 @@ std::map<long long, std::vector<std::size_t>> group_by(const std::vector<LoadDef
                                                        double LoadDeflectionRow::*field,
                                                        double step) {
   std::map<long long, std::vector<std::size_t>> g;
-  for (std::size_t i = 0; i < rows.size(); ++i)
-    g[std::llround(rows[i].*field / step)].push_back(i);
+  for (std::size_t i = 0; i < rows.size(); ++i) g[std::llround(rows[i].*field / step)].push_back(i);
   return g;
 }
 
@@ -42,8 +41,7 @@ LoadDeflectionData read_load_deflection_csv(const std::string& path) {
     row.load_N = t.number(r, "load_N");
     row.pressure_Pa = t.number(r, "pressure_kPa") * 1e3;
     row.deflection_m = t.number(r, "deflection_mm") / kMmPerM;
-    if (!(row.load_N > 0 && row.load_N <= kMaxLoad_N))
-      throw InputError({path, row.line, "load_N"}, "load must be in (0, 1e7] N");
+    require_measured_load(path, row.line, row.load_N);
     // Eq. (3) is a law of the inflated tyre: at zero gauge pressure the carcass alone carries
     // the load, which (1 + p_W) does not describe.
     if (!(row.pressure_Pa > 0 && row.pressure_Pa <= kMaxPressure_kPa * 1e3))
@@ -70,8 +68,8 @@ double k_z_two_loads(double load1_N, double defl1_m, double load2_N, double defl
   return (defl2_m - defl1_m) * pressure_factor(pressure_Pa) / den;
 }
 
-double k_z_two_pressures(double pressure1_Pa, double defl1_m, double pressure2_Pa,
-                         double defl2_m, double load_N) {
+double k_z_two_pressures(double pressure1_Pa, double defl1_m, double pressure2_Pa, double defl2_m,
+                         double load_N) {
   // seed 000: K_Z = dh_Z (1 + p_W1)(1 + p_W2) / (P_Z^(3/4) (p_W1 - p_W2)), dh_Z = h2 - h1
   const double dp = (pressure1_Pa - pressure2_Pa) / kPressureUnit_Pa;
   if (dp == 0) throw InputError("two-pressure formula: the two pressures are equal");
@@ -98,12 +96,13 @@ LoadDeflectionResult identify_load_deflection(const LoadDeflectionData& data,
   const auto& rows = data.rows;
   const std::string& path = data.path;
   if (rows.size() < 2)
-    throw InputError({path, 0, ""}, "load-deflection needs at least two rows (got " +
-                                        std::to_string(rows.size()) +
-                                        "): two loads at one pressure or two pressures at one load");
+    throw InputError({path, 0, ""},
+                     "load-deflection needs at least two rows (got " + std::to_string(rows.size()) +
+                         "): two loads at one pressure or two pressures at one load");
   if (!(options.r0_m > 0))
-    throw InputError("load-deflection needs the free radius r0 (--r0-mm or tyre.outer_radius_mm "
-                     "in --config) for C_P");
+    throw InputError(
+        "load-deflection needs the free radius r0 (--r0-mm or tyre.outer_radius_mm "
+        "in --config) for C_P");
   if (!(options.B1 > 0)) throw InputError("B1 must be > 0");
 
   const std::size_t n = rows.size();
@@ -122,12 +121,13 @@ LoadDeflectionResult identify_load_deflection(const LoadDeflectionData& data,
                          "): eq. (3) needs two loads at one pressure or two pressures at one load");
 
   LoadDeflectionResult res;
-  const LinearFit fit = solve_least_squares(A, b);
+  const solvers::LinearFit fit = solvers::solve_linear_least_squares(A, b);
   res.K_Z_m = fit.coef(0);
   res.K_Z_se_m = fit.std_error(0);
   if (!(res.K_Z_m > 0))
-    throw ComputationError("K_Z from least squares is not positive; deflection does not grow "
-                           "with load / fall with pressure in these data");
+    throw ComputationError(
+        "K_Z from least squares is not positive; deflection does not grow "
+        "with load / fall with pressure in these data");
 
   auto& rep = res.report;
   rep.method = "load-deflection";
@@ -144,12 +144,10 @@ LoadDeflectionResult identify_load_deflection(const LoadDeflectionData& data,
     double k = 0;
     for (const auto& [key, idx] : groups) {
       if (idx.size() < 2) continue;
-      auto lo = *std::min_element(idx.begin(), idx.end(), [&](auto a, auto c) {
-        return rows[a].load_N < rows[c].load_N;
-      });
-      auto hi = *std::max_element(idx.begin(), idx.end(), [&](auto a, auto c) {
-        return rows[a].load_N < rows[c].load_N;
-      });
+      auto lo = *std::min_element(idx.begin(), idx.end(),
+                                  [&](auto a, auto c) { return rows[a].load_N < rows[c].load_N; });
+      auto hi = *std::max_element(idx.begin(), idx.end(),
+                                  [&](auto a, auto c) { return rows[a].load_N < rows[c].load_N; });
       const double span = rows[hi].load_N - rows[lo].load_N;
       if (span > best_span * (1 + 1e-12) && span > 1e-9 * rows[hi].load_N) {
         best_span = span;
@@ -179,8 +177,7 @@ LoadDeflectionResult identify_load_deflection(const LoadDeflectionData& data,
                               rows[lo].deflection_m, rows[lo].load_N);
       }
     }
-    if (best_span > 0)
-      rep.parameters.push_back({"K_Z_two_pressures", k * kMmPerM, "mm N^-3/4", 0});
+    if (best_span > 0) rep.parameters.push_back({"K_Z_two_pressures", k * kMmPerM, "mm N^-3/4", 0});
   }
 
   // Reference pressure for C_P: given, else the median pressure of the rows.
@@ -202,8 +199,8 @@ LoadDeflectionResult identify_load_deflection(const LoadDeflectionData& data,
   }
   res.C_P_eq5 = sum / static_cast<double>(n);
   const double var = std::max(0.0, sum2 / static_cast<double>(n) - res.C_P_eq5 * res.C_P_eq5);
-  res.C_P_eq5_se = std::sqrt(std::pow(4.0 / 3.0 * rel_k * res.C_P_eq5, 2) +
-                             var / static_cast<double>(n));
+  res.C_P_eq5_se =
+      std::sqrt(std::pow(4.0 / 3.0 * rel_k * res.C_P_eq5, 2) + var / static_cast<double>(n));
   res.C_P_eq7 = c_p_eq7(res.K_Z_m, options.r0_m, res.reference_pressure_Pa, options.B1);
   res.C_P_eq7_se = 4.0 / 3.0 * rel_k * res.C_P_eq7;
   rep.parameters.push_back({"C_P", res.C_P_eq7, "N/(m rad)", res.C_P_eq7_se});

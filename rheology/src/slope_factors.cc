@@ -5,8 +5,9 @@
 
 #include "modaltyre/core/errors.h"
 #include "modaltyre/rheology/contact_geometry.h"
-#include "modaltyre/rheology/least_squares.h"
 #include "modaltyre/rheology/load_deflection.h"
+#include "modaltyre/solvers/correlation.h"
+#include "modaltyre/solvers/linear_least_squares.h"
 
 namespace modaltyre::rheology {
 
@@ -39,11 +40,11 @@ SlopeFactorResult compute_slope_factors(const SlopeFactorOptions& o) {
     Eigen::MatrixXd A(n, o.through_origin ? 1 : 2);
     A.col(0) = x;
     if (!o.through_origin) A.col(1).setOnes();
-    const LinearFit f = solve_least_squares(A, y);
+    const solvers::LinearFit f = solvers::solve_linear_least_squares(A, y);
     B = f.coef(0);
     se = f.std_error(0);
     c = o.through_origin ? 0.0 : f.coef(1);
-    R = correlation(x, y);
+    R = solvers::pearson_correlation(xs, res.y);
     return f.residual_rms;
   };
   const double rms1 = fit(res.x1, res.B1, res.B1_se, res.R1, res.intercept1);

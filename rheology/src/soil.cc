@@ -2,9 +2,10 @@
 
 #include <cmath>
 
+#include "measured_ranges.h"
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
-#include "modaltyre/rheology/least_squares.h"
+#include "modaltyre/solvers/linear_least_squares.h"
 
 namespace modaltyre::rheology {
 
@@ -30,9 +31,8 @@ SoilData read_soil_rolling_csv(const std::string& path) {
     auto bad = [&](const char* col, const std::string& msg) {
       throw InputError({path, s.line, col}, msg);
     };
-    // Upper bounds as the tyre config's loads_N: beyond them the fit overflows.
-    if (!(s.load_N > 0 && s.load_N <= 1e7)) bad("load_N", "load must be in (0, 1e7] N");
-    if (!(std::abs(s.longitudinal_force_N) <= 1e7))
+    require_measured_load(path, s.line, s.load_N);
+    if (!(std::abs(s.longitudinal_force_N) <= kMaxMeasuredForce_N))
       bad("longitudinal_force_N", "must be in [-1e7, 1e7] N");
     if (!(s.alpha1_rad > 0 && s.alpha1_rad < M_PI / 2)) bad("alpha1_deg", "must be in (0, 90) deg");
     if (!(s.alpha2_rad > 0 && s.alpha2_rad <= s.alpha1_rad))
@@ -109,9 +109,9 @@ SoilResult identify_soil(const SoilData& d, const SoilOptions& o) {
     const double kE = r.elastic_sinking_m / r.total_sinking_m;
     kE_sum += kE, kE_sum2 += kE * kE;
   }
-  LinearFit fit;
+  solvers::LinearFit fit;
   try {
-    fit = solve_least_squares(A, b);
+    fit = solvers::solve_linear_least_squares(A, b);
   } catch (const ComputationError&) {
     throw InputError({d.path, 0, ""}, "these rows cannot separate E2 from eta2");
   }

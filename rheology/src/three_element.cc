@@ -7,7 +7,7 @@
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
 #include "modaltyre/rheology/contact_geometry.h"
-#include "modaltyre/rheology/least_squares.h"
+#include "modaltyre/solvers/linear_least_squares.h"
 
 namespace modaltyre::rheology {
 namespace {
@@ -96,7 +96,7 @@ StaticLoopFit identify_static_loop(const StaticLoop& loop, const ThreeElementOpt
     A(i, 1) = (r.loading ? 1.0 : -1.0) * friction_coef(r.deflection_m, o);
     b(i) = r.load_N;
   }
-  const LinearFit fit = solve_least_squares(A, b);
+  const solvers::LinearFit fit = solvers::solve_linear_least_squares(A, b);
   StaticLoopFit s;
   s.E1_Pa = fit.coef(0);
   if (!(s.E1_Pa > 0)) throw ComputationError("static loop: E1 is not positive");

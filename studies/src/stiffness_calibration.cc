@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/solvers/bracketed_root.h"
 
 namespace modaltyre::studies {
 
@@ -83,29 +85,23 @@ ScaleCalibration calibrate_compliance_scale(const TyreModel& model,
     out.sinking_mm = target_sinking_mm;
     return out;
   }
-  // Illinois regula falsi: superlinear, and never leaves the bracket.
-  double fa = sa - target_sinking_mm, fb = sb - target_sinking_mm;
-  int side = 0;
-  for (int it = 0; it < 100; ++it) {
-    const double c = (a * fb - b * fa) / (fb - fa);
+  // Illinois regula falsi in log(scale): superlinear, and never leaves the bracket.
+  auto f = [&](double log_scale) -> std::optional<double> {
     double sc = 0;
-    if (!residual(c, sc)) return out;
-    const double fc = sc - target_sinking_mm;
-    out.compliance_scale = std::exp(c);
+    if (!residual(log_scale, sc)) return std::nullopt;
+    out.compliance_scale = std::exp(log_scale);
     out.sinking_mm = sc;
-    if (std::abs(fc) <= relative_tolerance * target_sinking_mm) {
-      out.converged = true;
-      return out;
-    }
-    if ((fc > 0) == (fb > 0)) {
-      b = c, fb = fc;
-      if (side == -1) fa *= 0.5;
-      side = -1;
-    } else {
-      a = c, fa = fc;
-      if (side == 1) fb *= 0.5;
-      side = 1;
-    }
+    return sc - target_sinking_mm;
+  };
+  solvers::IllinoisOptions io;
+  io.tolerance = relative_tolerance * target_sinking_mm;
+  io.max_iterations = 100;
+  const solvers::RootResult root =
+      solvers::illinois_root(f, a, sa - target_sinking_mm, b, sb - target_sinking_mm, io);
+  if (root.status == solvers::RootStatus::aborted) return out;
+  if (root.ok()) {
+    out.converged = true;
+    return out;
   }
   out.message = "compliance_scale did not settle in 100 footprints (last sinking " +
                 mm(out.sinking_mm) + ", target " + mm(target_sinking_mm) + ")";

@@ -9,7 +9,7 @@
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
-#include "modaltyre/solvers/least_squares.h"
+#include "modaltyre/solvers/levenberg_marquardt.h"
 
 namespace modaltyre::studies {
 namespace {

@@ -57,6 +57,18 @@ class LazyValue {
   mutable std::shared_ptr<const T> value_;
 };
 
+/// The radial (compression) and tangential (shear) springs of a tread block.
+struct TreadSprings {
+  double radial_N_m = 0;
+  double tangential_N_m = 0;
+};
+
+/// Tread springs of a block of area width_m x length_m (seed 001 eq. 6-9, static limit:
+/// storage modulus): k_r = E_tr A / h, k_t = G_tr A / h, G_tr = E_tr / (2 (1 + nu)). The 2D
+/// model's unit (tread width x unit length), the effects path's unit at the contact width and
+/// the 3D patch's cell all take their springs from here.
+TreadSprings tread_springs(const TreadParams& tread, double width_m, double length_m);
+
 struct TyreModel {
   TyreConfig config;
   modal::ModalBasis basis;

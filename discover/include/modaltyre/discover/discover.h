@@ -141,7 +141,4 @@ inline constexpr int kMaxRows = 10000;
 DiscoverReport discover(const contact::TyreConfig& config, const studies::MeasurementSet& data,
                         const DiscoverOptions& options = {});
 
-/// Pearson correlation (0 when either side has no spread).
-double pearson(const std::vector<double>& x, const std::vector<double>& y);
-
 }  // namespace modaltyre::discover

@@ -1,8 +1,9 @@
 #pragma once
-// Linear least squares with standard errors (Eigen, column-pivoted QR).
+// Linear least squares with standard errors (Eigen, column-pivoted QR on scaled columns).
+// The nonlinear counterpart is levenberg_marquardt.h.
 #include <Eigen/Dense>
 
-namespace modaltyre::rheology {
+namespace modaltyre::solvers {
 
 struct LinearFit {
   Eigen::VectorXd coef;       ///< minimiser of |A c - b|
@@ -13,9 +14,6 @@ struct LinearFit {
 
 /// Solves A c ~ b. Throws ComputationError if A is rank deficient (callers reject degenerate
 /// inputs first, with an InputError that names the cause).
-LinearFit solve_least_squares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b);
+LinearFit solve_linear_least_squares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b);
 
-/// Pearson correlation coefficient of two equally long samples (0 if either is constant).
-double correlation(const Eigen::VectorXd& x, const Eigen::VectorXd& y);
-
-}  // namespace modaltyre::rheology
+}  // namespace modaltyre::solvers

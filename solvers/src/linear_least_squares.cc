@@ -1,12 +1,12 @@
-#include "modaltyre/rheology/least_squares.h"
+#include "modaltyre/solvers/linear_least_squares.h"
 
 #include <cmath>
 
 #include "modaltyre/core/errors.h"
 
-namespace modaltyre::rheology {
+namespace modaltyre::solvers {
 
-LinearFit solve_least_squares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
+LinearFit solve_linear_least_squares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
   MODALTYRE_CHECK(A.rows() == b.size() && A.rows() >= A.cols() && A.cols() > 0,
                   "least squares: bad dimensions");
   // Scale columns so that the rank decision does not depend on the units of the unknowns.
@@ -36,11 +36,4 @@ LinearFit solve_least_squares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b
   return fit;
 }
 
-double correlation(const Eigen::VectorXd& x, const Eigen::VectorXd& y) {
-  const Eigen::VectorXd dx = x.array() - x.mean();
-  const Eigen::VectorXd dy = y.array() - y.mean();
-  const double d = std::sqrt(dx.squaredNorm() * dy.squaredNorm());
-  return d > 0 ? dx.dot(dy) / d : 0.0;
-}
-
-}  // namespace modaltyre::rheology
+}  // namespace modaltyre::solvers

@@ -1,4 +1,4 @@
-#include "modaltyre/solvers/least_squares.h"
+#include "modaltyre/solvers/levenberg_marquardt.h"
 
 #include <cmath>
 
