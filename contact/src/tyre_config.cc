@@ -96,6 +96,8 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   T.modal_damping_scale = tr.number("modal_damping_scale", T.modal_damping_scale, 0, 100);
   T.output_step_s = tr.number("output_step_ms", T.output_step_s * 1e3, 1e-3, 1e6) * 1e-3;
   T.relative_tolerance = tr.number("relative_tolerance", T.relative_tolerance, 1e-12, 1e-2);
+  T.tread_tolerance_m =
+      tr.number("tread_tolerance_um", T.tread_tolerance_m * 1e6, 1e-6, 100) * 1e-6;
   const ConfigSection lh = tr.section("load_hold");
   T.load_hold.load_N = lh.positive("load_N", T.load_hold.load_N, 1e7);
   T.load_hold.ramp_rate_N_s = lh.positive("ramp_rate_N_s", T.load_hold.ramp_rate_N_s, 1e12);

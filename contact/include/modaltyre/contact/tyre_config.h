@@ -49,6 +49,10 @@ struct TransientSettings {
   double modal_damping_scale = 1;  ///< multiplies every modal damping ratio (0 = undamped)
   double output_step_s = 0.01;
   double relative_tolerance = 1e-5;
+  /// Absolute error tolerance of the tread's Kelvin-Voigt states [m] (the carcass and hub
+  /// displacements have 0.1 um). One unit's state moves one unit's force (k_g de), where the
+  /// hub's moves every unit's in contact; docs/transient.md section 2 gives the measurements.
+  double tread_tolerance_m = 1e-6;
   struct LoadHold {
     double load_N = 4000, ramp_rate_N_s = 4000, hold_s = 120;
   } load_hold;

@@ -85,6 +85,10 @@ class TransientSystem {
   /// bounds of g from the last accepted state (update_contact_set()) or, before one, from rest.
   void reach(const double* y, int& lo, int& hi) const;
   void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
+  /// forces_into() that also returns the reach [lo, hi] (f = 0 outside; empty if hi < lo).
+  void forces_band(double t, const double* y, Eigen::VectorXd& f, int& lo, int& hi) const;
+  /// g over the reach [lo, hi] (entries outside untouched), as tip_penetration_in_reach().
+  void penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo, int& hi) const;
 
   const TransientModel& model_;
   const ScenarioPlan& plan_;
@@ -96,9 +100,12 @@ class TransientSystem {
   mutable std::vector<char> in_pattern_;
   /// Contact set at the last accepted step (update_contact_set()).
   mutable std::vector<char> in_contact_;
+  /// First and last unit of in_contact_ (empty: first > last).
+  mutable int contact_first_ = 0, contact_last_ = -1;
   mutable long switches_since_jacobian_ = 0;
-  /// Reach reference (update_contact_set()): p_ref = z - s - T xi over the window at the last
-  /// accepted state, and its xi and z (empty before the first accepted step).
+  /// Reach reference (update_contact_set()): p_ref = z - s - T xi over the window at an accepted
+  /// state (refreshed when the state has moved by kReachRefresh_m), and its xi and z (empty
+  /// before the first accepted step).
   mutable Eigen::VectorXd p_ref_, xi_ref_;
   mutable double z_ref_ = 0;
   Eigen::VectorXd inv_c_kv_, k_over_c_kv_;  ///< 1 / c' and k' / c' per unit (relaxation on)
