@@ -7,9 +7,16 @@
 //     1.0 x (the limit is the 80 % point by its definition).
 //  2. False-name rate: noise-only data sets with six testable candidates and different noise
 //     levels per observable (sinking 1 %, length 3 %); the fraction that names anything.
+//  3. The naming rule's review: on 24-row sets (six testable candidates, 2.5 % noise), noise-only
+//     and with tread_relaxation or dry_friction planted, the first round of discover scored
+//     under the current rule (a 25 % cross-validated gain at any number of rows) and under rules
+//     whose gain threshold falls with the rows (NamingRule::cv_gain_z = 2, 1.5, 1): the fraction
+//     of sets each names anything (noise-only) or the planted effect first. One discover run per
+//     set serves every rule: the first round's candidates do not depend on the rule.
 // On the 2D variant (configs/sf350_2d_table3.yaml), data generated on discover's 2 mm mesh;
 // draws in parallel (each discover on one thread). A few minutes on 2 cores.
 //   build/bench/discover_power_study [draws per point, default 20] [noise-only sets, default 50]
+//                                    [rule-review sets per case, default 0] [1: simulated review]
 #include <malloc.h>
 
 #include <algorithm>
@@ -39,6 +46,11 @@ const contact::TyreConfig& config() {
   static const contact::TyreConfig c =
       contact::load_tyre_config(kConfig, {"contact.unit_length_mm=2"});
   return c;
+}
+
+const contact::TyreModel* model_for_review() {
+  static const contact::TyreModel model = contact::build_tyre_model(config());
+  return &model;
 }
 
 // Rows predicted with the effect at `times` x its catalogue default strength (0: off), noise.
@@ -171,6 +183,112 @@ void false_names(int sets) {
   for (const auto& kv : by) std::printf("  %s: %d\n", kv.first.c_str(), kv.second);
 }
 
+// The effect a rule names first in discover's first round (empty: none).
+std::string first_named(const discover::DiscoverReport& r, const discover::NamingRule& rule,
+                        const std::map<std::string, int>& entries) {
+  const discover::CandidateScore* best = nullptr;
+  for (const auto& c : r.rounds.front()) {
+    if (!c.testable || c.failures > 0) continue;
+    std::vector<double> before, after;
+    std::vector<int> n;
+    for (const auto& kv : c.cv_before) {
+      before.push_back(kv.second);
+      after.push_back(c.cv_after.at(kv.first));
+      n.push_back(entries.at(kv.first));
+    }
+    if (!rule.names(c.delta_bic, before, after, n, c.cv_rms_before, c.cv_rms_after)) continue;
+    if (!best || c.delta_bic > best->delta_bic) best = &c;
+  }
+  return best ? best->name : "";
+}
+
+const std::vector<double> kRuleZ = {0, 2, 1.5, 1};  // NamingRule::cv_gain_z; 0: the current rule
+
+std::vector<contact::OperatingConditions> review_rows() {
+  const double hold[] = {0, 120}, kpa[] = {200, 260};
+  return grid({2500, 5500, 8500}, 8, [&](auto& c, int l) {
+    c.hold_s = hold[l % 2];
+    c.pressure_kPa = kpa[(l / 2) % 2];
+    c.branch = l / 4 ? contact::Branch::unloading : contact::Branch::loading;
+  });
+}
+
+// The same rules in the detection-limit simulation (the model linearised at the fit of one
+// noise-only set): the probability of naming tread_relaxation and dry_friction at their
+// catalogue defaults with the rows repeated 1, 4 and 16 times (24, 96, 384 rows).
+void rule_review_simulated() {
+  const Design d{"", review_rows(), {{"sinking_mm", 0.025}, {"length_mm", 0.025}}};
+  const auto data = make(d, 0, 7000);
+  const discover::Evaluator ev(*model_for_review(), data);
+  std::vector<int> all(data.rows.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  const auto base = discover::make_variant(config(), {});
+  const auto fit = discover::fit_variant(ev, config(), base, all);
+  std::printf("\nrule review, simulated (24-row design repeated r times): power at the default\n");
+  for (double z : kRuleZ) {
+    const discover::LimitFinder f(ev, fit.config, base, fit, {10, 0.25, 0.1, z});
+    std::printf("  z=%g:", z);
+    for (auto id : {contact::EffectId::tread_relaxation, contact::EffectId::dry_friction}) {
+      for (double m : {0.5, 1.0}) {
+        std::printf("  %s %.1fx r=1/4/16: %.0f/%.0f/%.0f %%", contact::effect_info(id).name.c_str(),
+                    m, 100 * f.power(id, m, 1), 100 * f.power(id, m, 4), 100 * f.power(id, m, 16));
+      }
+    }
+    std::printf("\n");
+  }
+}
+
+void rule_review(int sets) {
+  const std::vector<double>& zs = kRuleZ;
+  const auto rows = review_rows();
+  const std::map<std::string, double> noise = {{"sinking_mm", 0.025}, {"length_mm", 0.025}};
+  struct Case {
+    std::string effect;
+    double times;
+  };
+  // Planted near the current rule's limits on these rows (rule_review_simulated: the current
+  // rule names tread_relaxation at 0.5 x with 88 %, dry_friction at 0.5 x with 14 %).
+  const std::vector<Case> cases = {{"", 0}, {"tread_relaxation", 0.5}, {"dry_friction", 0.6}};
+  std::printf(
+      "\nrule review: %zu rows (3 loads x 2 pressures x 2 hold times x 2 branches), "
+      "2.5 %% noise, %d sets per case\n",
+      rows.size(), sets);
+  std::printf("  gain needed on 24 entries: z=0 (current) %.3f",
+              discover::NamingRule{}.gain_needed(24));
+  for (double z : zs) {
+    if (z > 0)
+      std::printf(", z=%g %.3f", z, discover::NamingRule{10, 0.25, 0.1, z}.gain_needed(24));
+  }
+  std::printf("\n");
+  for (const auto& cs : cases) {
+    Design d{cs.effect, rows, noise};
+    std::vector<std::vector<std::string>> firsts(sets);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int k = 0; k < sets; ++k) {
+      auto data = make(d, cs.times, 7000 + k);
+      discover::DiscoverOptions opt;
+      opt.threads = 1;
+      opt.detection_limits = false;
+      opt.max_effects = 1;
+      const auto r = discover::discover(contact::load_tyre_config(kConfig), data, opt);
+      std::map<std::string, int> entries = {{"sinking_mm", 0}, {"length_mm", 0}};
+      for (const auto& row : data.rows) {
+        for (const auto& kv : row.observed) ++entries[kv.first];
+      }
+      for (double z : zs) firsts[k].push_back(first_named(r, {10, 0.25, 0.1, z}, entries));
+    }
+    std::printf("  %s%s:", cs.effect.empty() ? "noise only" : cs.effect.c_str(),
+                cs.effect.empty() ? "" : (" at " + std::to_string(cs.times) + " x").c_str());
+    for (std::size_t z = 0; z < zs.size(); ++z) {
+      int hits = 0;
+      for (const auto& f : firsts) hits += cs.effect.empty() ? !f[z].empty() : f[z] == cs.effect;
+      std::printf("  z=%g: %d of %d (%.0f %%)", zs[z], hits, sets, 100.0 * hits / sets);
+    }
+    std::printf("\n");
+    std::fflush(stdout);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -178,6 +296,8 @@ int main(int argc, char** argv) {
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
   const int draws = argc > 1 ? std::atoi(argv[1]) : 20;
   const int sets = argc > 2 ? std::atoi(argv[2]) : 50;
+  const int review = argc > 3 ? std::atoi(argv[3]) : 0;
+  const bool simulated = argc > 4 && std::atoi(argv[4]) > 0;
   const double hold[] = {0, 20, 60, 300};
   Design creep{"tread_relaxation",
                grid(
@@ -196,5 +316,7 @@ int main(int argc, char** argv) {
     power_curve(friction, draws);
   }
   if (sets > 0) false_names(sets);
+  if (simulated) rule_review_simulated();
+  if (review > 0) rule_review(review);
   return 0;
 }

@@ -11,16 +11,27 @@ namespace modaltyre::discover {
 
 using contact::EffectId;
 
+// A signal of RMS s over noise sigma on n held-out entries lowers their mean squared error by
+// s^2, with a sampling spread of about 2 sigma s / sqrt(n) (the cross term of each entry,
+// d_i = (e_i + s_i)^2 - e_i^2): the paired test reaches z at s / sigma = 2 z / sqrt(n), where
+// the RMS falls by 1 - 1 / sqrt(1 + (s / sigma)^2).
+double NamingRule::gain_needed(int entries) const {
+  if (cv_gain_z <= 0 || entries <= 0) return min_cv_gain;
+  const double x2 = 4 * cv_gain_z * cv_gain_z / entries;
+  return std::min(min_cv_gain, 1 - 1 / std::sqrt(1 + x2));
+}
+
 bool NamingRule::names(double delta_bic, const std::vector<double>& cv_before,
-                       const std::vector<double>& cv_after, double pooled_before,
-                       double pooled_after) const {
-  double best_gain = 0, worst_loss = 0;
+                       const std::vector<double>& cv_after, const std::vector<int>& entries,
+                       double pooled_before, double pooled_after) const {
+  bool gain = false;
+  double worst_loss = 0;
   for (std::size_t o = 0; o < cv_before.size(); ++o) {
     if (cv_before[o] <= 0) continue;
-    best_gain = std::max(best_gain, 1 - cv_after[o] / cv_before[o]);
+    gain = gain || 1 - cv_after[o] / cv_before[o] >= gain_needed(entries[o]);
     worst_loss = std::max(worst_loss, cv_after[o] / cv_before[o] - 1);
   }
-  return delta_bic > min_delta_bic && best_gain >= min_cv_gain && worst_loss <= max_cv_loss &&
+  return delta_bic > min_delta_bic && gain && worst_loss <= max_cv_loss &&
          pooled_after <= pooled_before;
 }
 
@@ -187,13 +198,13 @@ double LimitFinder::power(const Path& p, const Eigen::VectorXd& s, int replicas)
   // the planted truth, on the noise alone.
   const LinearFit before = fit_linear(x0, noise.colwise() + signal, fold, folds);
   const LinearFit after = fit_linear(x1, noise, fold, folds);
+  std::vector<int> count(observables, 0);
+  for (int i = 0; i < n; ++i) ++count[entries[i].observable];
   auto rms = [&](const Eigen::MatrixXd& r, int d, std::vector<double>& per_obs) {
     per_obs.assign(observables, 0.0);
-    std::vector<int> count(observables, 0);
     double all = 0;
     for (int i = 0; i < n; ++i) {
       per_obs[entries[i].observable] += r(i, d) * r(i, d);
-      ++count[entries[i].observable];
       all += r(i, d) * r(i, d);
     }
     for (int o = 0; o < observables; ++o)
@@ -207,7 +218,7 @@ double LimitFinder::power(const Path& p, const Eigen::VectorXd& s, int replicas)
     const double dbic = bic(entries, r0, observables, k0) - bic(entries, r1, observables, k1);
     const double pooled0 = rms(before.held_out, d, cv0);
     const double pooled1 = rms(after.held_out, d, cv1);
-    named += rule_.names(dbic, cv0, cv1, pooled0, pooled1);
+    named += rule_.names(dbic, cv0, cv1, count, pooled0, pooled1);
   }
   return static_cast<double>(named) / opt_.draws;
 }

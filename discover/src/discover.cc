@@ -287,7 +287,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     };
   };
 
-  const NamingRule rule{opt.min_delta_bic, opt.min_cv_gain, opt.max_cv_loss};
+  const NamingRule rule{opt.min_delta_bic, opt.min_cv_gain, opt.max_cv_loss, opt.cv_gain_z};
   Stage current{make_variant(config, {}), {}, {}};
   {
     auto fc = fit_and_cross_validate(ev, eval, current.variant, opt.fit, ticker("baseline", 2));
@@ -302,6 +302,8 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
         " rows fail to converge at its best parameters");
   }
   const Stage baseline = current;
+  std::map<std::string, int> measured;  // entries per observable, for the rule's gain
+  for (const auto& e : baseline.fit.entries) ++measured[data.observables[e.observable]];
   rep.gap_before = baseline.fit.rms;
   rep.cv_gap_before = baseline.cv.rms;
   rep.baseline_parameters = named_values(baseline.variant, baseline.fit.values, false);
@@ -356,12 +358,14 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
       s.cv_after = stages[c].cv.rms;
       s.standard_errors = named_values(stages[c].variant, stages[c].fit.standard_errors, false);
       std::vector<double> cv_before, cv_after;
+      std::vector<int> entries;
       for (const auto& kv : s.cv_before) {
         cv_before.push_back(kv.second);
         cv_after.push_back(s.cv_after.at(kv.first));
+        entries.push_back(measured[kv.first]);
       }
-      s.significant = s.failures == 0 &&
-                      rule.names(s.delta_bic, cv_before, cv_after, s.cv_rms_before, s.cv_rms_after);
+      s.significant = s.failures == 0 && rule.names(s.delta_bic, cv_before, cv_after, entries,
+                                                    s.cv_rms_before, s.cv_rms_after);
       if (s.significant && (best < 0 || s.delta_bic > scores[best].delta_bic)) best = c;
     }
     std::stable_sort(scores.begin(), scores.end(),

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "planted_data.h"
 
 namespace modaltyre::discover {
@@ -15,12 +17,28 @@ using namespace planted;
 
 TEST(NamingRule, NamesOnlyWithEvidenceAndACrossValidatedGain) {
   const NamingRule rule;  // Delta BIC > 10, CV gain >= 25 %, loss <= 10 %, pooled not up
-  EXPECT_TRUE(rule.names(12, {0.04, 0.02}, {0.02, 0.021}, 0.032, 0.021));
-  EXPECT_FALSE(rule.names(9.9, {0.04, 0.02}, {0.02, 0.021}, 0.032, 0.021));  // evidence
-  EXPECT_FALSE(rule.names(12, {0.04, 0.02}, {0.031, 0.02}, 0.032, 0.028));   // gain 22.5 %
-  EXPECT_FALSE(rule.names(12, {0.04, 0.02}, {0.02, 0.0225}, 0.032, 0.021));  // loss 12.5 %
-  EXPECT_FALSE(rule.names(12, {0.04, 0.02}, {0.02, 0.021}, 0.032, 0.033));   // pooled up
-  EXPECT_TRUE(rule.names(12, {0, 0.02}, {0.5, 0.01}, 0.02, 0.01));  // a zero "before" skipped
+  EXPECT_TRUE(rule.names(12, {0.04, 0.02}, {0.02, 0.021}, {12, 12}, 0.032, 0.021));
+  EXPECT_FALSE(rule.names(9.9, {0.04, 0.02}, {0.02, 0.021}, {12, 12}, 0.032, 0.021));  // evidence
+  EXPECT_FALSE(rule.names(12, {0.04, 0.02}, {0.031, 0.02}, {12, 12}, 0.032, 0.028));  // gain 22.5 %
+  EXPECT_FALSE(
+      rule.names(12, {0.04, 0.02}, {0.02, 0.0225}, {12, 12}, 0.032, 0.021));          // loss 12.5 %
+  EXPECT_FALSE(rule.names(12, {0.04, 0.02}, {0.02, 0.021}, {12, 12}, 0.032, 0.033));  // pooled up
+  EXPECT_TRUE(
+      rule.names(12, {0, 0.02}, {0.5, 0.01}, {12, 12}, 0.02, 0.01));  // a zero "before" skipped
+}
+
+// The alternative rule (docs/discover.md, "The naming rule's power"): the gain needed is the
+// one at which a paired test on n entries reaches z, 1 - 1 / sqrt(1 + 4 z^2 / n), capped at 25 %.
+TEST(NamingRule, ScaledGainFallsWithTheEntriesAndNeverExceedsTheFixedOne) {
+  const NamingRule fixed;
+  const NamingRule scaled{10, 0.25, 0.10, 2};
+  EXPECT_DOUBLE_EQ(fixed.gain_needed(1000), 0.25);
+  EXPECT_DOUBLE_EQ(scaled.gain_needed(12), 0.25);  // 1 - 1/sqrt(1 + 16/12) = 0.35, capped
+  EXPECT_NEAR(scaled.gain_needed(48), 1 - 1 / std::sqrt(1 + 16.0 / 48), 1e-15);
+  EXPECT_NEAR(scaled.gain_needed(1600), 1 - 1 / std::sqrt(1.01), 1e-15);  // s/sigma = 0.1
+  // A 15 % gain on 48 entries per observable names under the scaled rule only.
+  EXPECT_FALSE(fixed.names(12, {0.04, 0.02}, {0.034, 0.02}, {48, 48}, 0.032, 0.028));
+  EXPECT_TRUE(scaled.names(12, {0.04, 0.02}, {0.034, 0.02}, {48, 48}, 0.032, 0.028));
 }
 
 // Two loads (so that no load-driven effect is testable) x four hold times, repeated `copies`

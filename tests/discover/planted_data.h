@@ -24,7 +24,8 @@ using contact::OperatingConditions;
 using contact::Surface;
 using contact::TyreConfig;
 
-inline const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+inline const std::string kConfig =
+    std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 // The carcass with the dispersion extension (orders up to the mesh's Nyquist order) instead of
 // the default's measured orders only.
 inline const std::string kExtended = "modal.extend_orders=true";
@@ -38,6 +39,7 @@ struct Planted {
   double noise = 0.015;
   unsigned seed = 1;
   std::vector<std::string> overrides;  // of the tyre config, for data and discover alike
+  double unit_length_mm = 2;           // the data's mesh (discover's --unit-length-mm)
 };
 
 /// Test names print the planted effect and the size, not the struct's bytes.
@@ -57,13 +59,13 @@ inline studies::MeasurementSet make_data(const Planted& p, const std::string& na
   // One generator per tyre config, built once.
   static std::map<std::string, std::pair<TyreConfig, std::unique_ptr<const contact::TyreModel>>>
       generators;
-  auto it = generators.find(joined(p.overrides));
+  std::vector<std::string> o = p.overrides;
+  o.push_back("contact.unit_length_mm=" + std::to_string(p.unit_length_mm));
+  auto it = generators.find(joined(o));
   if (it == generators.end()) {
-    std::vector<std::string> o = p.overrides;
-    o.push_back("contact.unit_length_mm=2");
     TyreConfig c = contact::load_tyre_config(kConfig, o);
     auto g = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(c));
-    it = generators.emplace(joined(p.overrides), std::make_pair(std::move(c), std::move(g))).first;
+    it = generators.emplace(joined(o), std::make_pair(std::move(c), std::move(g))).first;
   }
   const TyreConfig& gen_cfg = it->second.first;
   const contact::TyreModel& gen = *it->second.second;

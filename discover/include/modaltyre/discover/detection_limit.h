@@ -24,16 +24,22 @@
 namespace modaltyre::discover {
 
 /// discover's naming rule: Delta BIC above min_delta_bic, the cross-validated RMS falling by
-/// at least min_cv_gain on some observable, growing by at most max_cv_loss on any and not at
+/// at least gain_needed() on some observable, growing by at most max_cv_loss on any and not at
 /// all pooled over all observables.
 struct NamingRule {
   double min_delta_bic = 10;
   double min_cv_gain = 0.25;
   double max_cv_loss = 0.10;
-  /// Per-observable cross-validated RMS before and after (same order; a zero "before" is
-  /// skipped) and pooled.
+  /// 0: the gain must reach min_cv_gain whatever the rows. > 0: the smaller of min_cv_gain and
+  /// the gain at which a paired test of the held-out squared errors of n entries reaches
+  /// z = cv_gain_z (docs/discover.md, "The naming rule's power").
+  double cv_gain_z = 0;
+  double gain_needed(int entries) const;
+  /// Per-observable cross-validated RMS before and after and the entries they are taken over
+  /// (same order; a zero "before" is skipped), and pooled.
   bool names(double delta_bic, const std::vector<double>& cv_before,
-             const std::vector<double>& cv_after, double pooled_before, double pooled_after) const;
+             const std::vector<double>& cv_after, const std::vector<int>& entries,
+             double pooled_before, double pooled_after) const;
 };
 
 struct LimitOptions {

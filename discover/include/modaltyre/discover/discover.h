@@ -40,6 +40,7 @@ struct DiscoverOptions {
   double min_delta_bic = 10;  ///< "very strong" evidence on the Kass-Raftery scale
   double min_cv_gain = 0.25;  ///< cross-validated RMS must fall by at least this fraction
   double max_cv_loss = 0.10;  ///< ... and grow on no observable by more than this fraction
+  double cv_gain_z = 0;       ///< NamingRule::cv_gain_z (0: min_cv_gain at any number of rows)
   int max_effects = 2;
   /// After an effect is named, search for another only if a residual still correlates with a
   /// condition at least this strongly.
