@@ -35,7 +35,7 @@ class ContactNewton {
   /// are kept when `jacobian_ok` (CVODE judges the last Jacobian still good). Returns false if
   /// a pivot is not finite or zero (CVODE then retries with a smaller step).
   bool setup(double t, const double* y, double gamma, bool jacobian_ok);
-  /// x <- M^-1 x (state_size() entries).
+  /// x <- M^-1 x (system.size() entries).
   void solve(double* x) const;
 
  private:
@@ -48,6 +48,7 @@ class ContactNewton {
   const TransientModel& M_;
   const TransientSystem& sys_;
   int nx_ = 0, ne_ = 0, np_ = 0;  ///< X states, tread states, rank + 1
+  int u0_ = 0;                    ///< unit of the first tread state
   bool jacobian_ready_ = false;
   // Jacobian data: contact stiffness, units with kd > 0, rolling speed.
   Eigen::VectorXd kd_;
