@@ -182,11 +182,17 @@ void ContactNewton::solve(double* x) const {
   double* xe = x + nx_;
   if (ne_ > 0 && na > 0) {
     // b_X - M_XE M_EE^-1 b_E.
-    Eigen::Map<Eigen::VectorXd> be(xe, ne_);
-    work_e_ = be;
-    solve_ee(work_e_.data());
     work_a_.resize(na);
-    for (int a = 0; a < na; ++a) work_a_(a) = kd_(active_[a]) * work_e_(active_[a] - u0_);
+    if (ee_s1_ == 0 && ee_s2_ == 0) {  // at rest M_EE is diagonal: only the active rows
+      for (int a = 0; a < na; ++a) {
+        const int k = active_[a] - u0_;
+        work_a_(a) = kd_(active_[a]) * (xe[k] * ee_d_inv_(k));
+      }
+    } else {
+      work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
+      solve_ee(work_e_.data());
+      for (int a = 0; a < na; ++a) work_a_(a) = kd_(active_[a]) * work_e_(active_[a] - u0_);
+    }
     eta_.noalias() = Tt_active_.transpose() * work_a_;
     eta_ *= -gamma_;
     add_q(eta_, xx);

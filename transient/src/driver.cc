@@ -23,14 +23,10 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
                         const ScenarioPlan& plan, double t, const double* y) {
   TransientSample s;
   s.t_s = t;
-  // Tip penetration where units can touch (the forces); the edge interpolation below needs it
-  // also at the first unit outside each end, computed there.
-  // Forces only on the units of the system (none elsewhere: tread_window.h).
-  Eigen::VectorXd g(M.m);
-  sys.tip_penetration_in_reach(t, y, g);
+  // The forces k max(0, g) where units can touch (on the system's units only: tread_window.h);
+  // the edge interpolation below needs g also at the first unit outside each end, computed there.
+  const Eigen::VectorXd f = sys.forces(t, y);
   const int u0 = sys.units().lo, u1 = sys.units().hi;
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(M.m);
-  for (int i = u0; i <= u1; ++i) f(i) = g[i] > 0 ? M.k_contact(i) * g[i] : 0.0;
   const double z = y[M.z_index()];
   const double R0 = M.tyre.config.outer_radius_m;
   s.applied_load_N = plan.load(t);

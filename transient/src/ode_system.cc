@@ -269,7 +269,20 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   }
   int lo = 0, hi = -1;
   scratch_g_.resize(M.m);
-  penetration_band(t, y, scratch_g_, lo, hi);
+  if (refresh) {
+    // The reference is this state: g = p_ref + h - e over the reach, without a second product.
+    reach(t, y, lo, hi);
+    if (hi >= lo) {
+      const int n = hi - lo + 1;
+      scratch_g_.segment(lo, n) = p_ref_.segment(lo - u0, n);
+      add_road(t, lo, hi, scratch_g_);
+      if (ne_ > 0)
+        scratch_g_.segment(lo, n) -=
+            Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - u0), n);
+    }
+  } else {
+    penetration_band(t, y, scratch_g_, lo, hi);
+  }
   const bool first = in_contact_.empty();
   in_contact_.resize(M.m, 0);
   // Units that can have changed: the reach now and the contact set before.
@@ -293,14 +306,15 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   Eigen::VectorXd& G = scratch_G_;
   int lo = 0, hi = -1;
   forces_band(t, y, f, lo, hi);
-  // G = psi^T f = Cq^T phi and Vf = V^T f = Cr^T phi with phi = T^T f over the units in contact
-  // only (a third of the candidates at the default load; columns of T^T, contiguous).
+  // G = psi^T f = Cq^T phi and Vf = V^T f = Cr^T phi with phi = T^T f over the reach only
+  // (f = 0 elsewhere; about the patch).
   Eigen::VectorXd& phi = scratch_phi_;
   phi.setZero(M.rank);
   double load = 0;
   if (hi >= lo) {
     const int n = hi - lo + 1;
-    phi.noalias() = M.T_by_unit.middleCols(lo, n) * f.segment(lo, n);
+    // Dot products of the contact basis' columns with f (13 x n with n contiguous per column).
+    phi.noalias() = M.T.middleRows(lo, n).transpose() * f.segment(lo, n);
     load = f.segment(lo, n).sum();
   }
   G.noalias() = M.Cq.transpose() * phi;
