@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "decay_metrics.h"
 #include "modaltyre/transient/transient.h"
 
 namespace modaltyre::transient {
@@ -32,36 +33,9 @@ TransientModel default_model() {
   return build_transient_model(build_tyre_model(load_tyre_config(kConfig, {})));
 }
 
-/// Least-squares slope of y over 0, 1, ..., n-1.
-double slope(const std::vector<double>& y) {
-  const double n = static_cast<double>(y.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < y.size(); ++i)
-    sx += i, sy += y[i], sxx += double(i) * i, sxy += i * y[i];
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
-/// Period and logarithmic decrement of the hub bounce over its first 8 maxima (the definitions
-/// of reference_test.cc).
+/// Period and decrement over the first 8 maxima, as reference_test.cc.
 std::pair<double, double> period_and_decrement(const TransientResult& r) {
-  const auto& s = r.samples;
-  double mean = 0;
-  int n = 0;
-  for (const auto& x : s)
-    if (x.t_s > 0.8) mean += x.hub_displacement_m, ++n;
-  mean /= n;
-  std::vector<double> times, logs;
-  for (std::size_t i = 1; i + 1 < s.size() && times.size() < 8; ++i) {
-    const double a = s[i - 1].hub_displacement_m - mean, b = s[i].hub_displacement_m - mean,
-                 c = s[i + 1].hub_displacement_m - mean;
-    if (!(b > a && b >= c && b > 0)) continue;
-    const double den = a - 2 * b + c;
-    const double off = den != 0 ? 0.5 * (a - c) / den : 0.0;
-    times.push_back(s[i].t_s + off * (s[1].t_s - s[0].t_s));
-    logs.push_back(std::log(b - 0.25 * (a - c) * off));
-  }
-  EXPECT_EQ(times.size(), 8u);
-  return {slope(times), -slope(logs)};
+  return bounce_period_and_decrement(r, 8);
 }
 
 /// Runs a scenario on the touchable units and on all units.
