@@ -327,7 +327,7 @@ TEST(TransientTest, AnalyticJacobianMatchesFiniteDifferences) {
   const ScenarioPlan plan = plan_scenario(M, Scenario::rolling);
   // On every unit and on the units that can touch (tread_window.h: tread states of a range).
   const UnitRange touchable =
-      touchable_units(M, plan, bounding_contact(M, plan, static_contact(M, 4000)));
+      touchable_units(M, plan, *bounding_contact(M, plan, static_contact(M, 4000)));
   ASSERT_LT(touchable.size(), M.m);
   for (const UnitRange units : {UnitRange{}, touchable}) {
     SCOPED_TRACE(units.size());

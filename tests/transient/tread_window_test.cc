@@ -59,7 +59,9 @@ TEST(TreadWindow, TheRangeHoldsTheStaticPatchOfTheBoundingLoad) {
   for (Scenario s : {Scenario::load_hold, Scenario::free_vibration, Scenario::rolling}) {
     const ScenarioPlan plan = plan_scenario(M, s);
     const StaticContact initial = static_contact(M, plan.initial_load_N);
-    const StaticContact bound = bounding_contact(M, plan, initial);
+    const std::optional<StaticContact> bounded = bounding_contact(M, plan, initial);
+    ASSERT_TRUE(bounded.has_value());
+    const StaticContact& bound = *bounded;
     const UnitRange r = touchable_units(M, plan, bound);
     for (int i = 0; i < M.m; ++i) {
       if (initial.f(i) > 0 || bound.f(i) > 0) {

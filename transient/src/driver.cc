@@ -346,8 +346,11 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
   const ScenarioPlan plan = plan_scenario(M, scenario);
   const StaticContact initial = static_contact(M, plan.initial_load_N);
   const UnitRange all{0, M.m - 1};
-  const UnitRange units =
-      options.all_tread_states ? all : touchable_units(M, plan, bounding_contact(M, plan, initial));
+  UnitRange units = all;
+  if (!options.all_tread_states) {
+    const std::optional<StaticContact> bound = bounding_contact(M, plan, initial);
+    if (bound) units = touchable_units(M, plan, *bound);
+  }
   bool escaped = false;
   TransientResult res = run_on_units(M, scenario, options, plan, initial, units, escaped);
   if (escaped) {

@@ -7,13 +7,12 @@
 
 namespace modaltyre::transient {
 
-StaticContact static_contact(const TransientModel& M, double load_N) {
+namespace {
+
+/// The forces on the m candidates and the sinking of a solved footprint.
+StaticContact contact_of(const TransientModel& M, const contact::FootprintResult& fr) {
   StaticContact c;
   c.f = Eigen::VectorXd::Zero(M.m);
-  if (load_N <= 0) return c;
-  const contact::FootprintResult fr =
-      contact::solve_footprint(M.tyre, contact::LoadCase{load_N, 0});
-  if (!fr.converged) throw ComputationError("static initial state: " + fr.message);
   std::size_t k = 0;
   for (int i = 0; i < M.m; ++i)
     if (fr.active[i]) c.f(i) = fr.units.at(k++).fz_N;
@@ -21,13 +20,27 @@ StaticContact static_contact(const TransientModel& M, double load_N) {
   return c;
 }
 
-StaticContact bounding_contact(const TransientModel& M, const ScenarioPlan& plan,
-                               const StaticContact& initial) {
+}  // namespace
+
+StaticContact static_contact(const TransientModel& M, double load_N) {
+  if (load_N <= 0) return StaticContact{Eigen::VectorXd::Zero(M.m), 0.0};
+  const contact::FootprintResult fr =
+      contact::solve_footprint(M.tyre, contact::LoadCase{load_N, 0});
+  if (!fr.converged) throw ComputationError("static initial state: " + fr.message);
+  return contact_of(M, fr);
+}
+
+std::optional<StaticContact> bounding_contact(const TransientModel& M, const ScenarioPlan& plan,
+                                              const StaticContact& initial) {
   // The largest load of the scenario: F(t) is monotone between breakpoints (ramps and holds).
   double F_max = std::max(plan.load(0.0), plan.load(plan.duration_s));
   for (double t : plan.breakpoints) F_max = std::max(F_max, plan.load(t));
   if (F_max <= plan.initial_load_N) return initial;
-  return static_contact(M, 2 * F_max - plan.initial_load_N);
+  // A load beyond what the window's footprint carries: no bound (every unit is kept).
+  const contact::FootprintResult fr =
+      contact::solve_footprint(M.tyre, contact::LoadCase{2 * F_max - plan.initial_load_N, 0});
+  if (!fr.converged) return std::nullopt;
+  return contact_of(M, fr);
 }
 
 UnitRange touchable_units(const TransientModel& M, const ScenarioPlan& plan,

@@ -21,6 +21,7 @@
 // The driver checks the bound during the run (TransientSystem::escaped()): should a unit outside
 // the range ever reach the road, the run is repeated with every unit.
 #include <Eigen/Dense>
+#include <optional>
 
 #include "modaltyre/transient/model.h"
 #include "modaltyre/transient/scenario.h"
@@ -48,9 +49,10 @@ StaticContact static_contact(const TransientModel& model, double load_N);
 inline constexpr double kTouchMarginFraction = 0.05;
 
 /// The static contact at the scenario's bounding load (above): the initial one when the load
-/// never rises above it, else the static footprint under 2 F_max - F0.
-StaticContact bounding_contact(const TransientModel& model, const ScenarioPlan& plan,
-                               const StaticContact& initial);
+/// never rises above it, else the static footprint under 2 F_max - F0; none when that
+/// footprint does not converge in the window (the run then keeps every unit).
+std::optional<StaticContact> bounding_contact(const TransientModel& model, const ScenarioPlan& plan,
+                                              const StaticContact& initial);
 
 /// Units whose static penetration in `bound` (z - s_i - u_i, u the carcass's static
 /// displacement; minus the gap outside the patch) exceeds -(margin + cleat height).
