@@ -131,6 +131,10 @@ void ContactNewton::factor(double gamma) {
     if (nr > 0) H.col(k).head(rank).noalias() += M.Cr * work_x_.segment(2 * nq, nr);
     H(rank, k) = work_x_(Z);
   }
+  // gamma kd / c' of the active units, for M_EX in solve() (no division per solve).
+  gamma_kd_c_.resize(ne_ > 0 ? na : 0);
+  for (int a = 0; a < gamma_kd_c_.size(); ++a)
+    gamma_kd_c_(a) = gamma * kd_(active_[a]) / M.c_kv(active_[a]);
   Eigen::MatrixXd cap = Eigen::MatrixXd::Identity(np_, np_);
   cap.noalias() -= gamma * H.lazyProduct(K_);
   cap_.compute(cap);
@@ -213,7 +217,7 @@ void ContactNewton::solve(double* x) const {
       work_a_.noalias() = Tt_active_ * eta_;
       for (int a = 0; a < na; ++a) {
         const int i = active_[a];
-        xe[i - u0_] += gamma_ * kd_(i) / M.c_kv(i) * work_a_(a);
+        xe[i - u0_] += gamma_kd_c_(a) * work_a_(a);
       }
     }
     solve_ee(xe);

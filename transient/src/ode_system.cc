@@ -162,9 +162,9 @@ void TransientSystem::tip_penetration_in_reach(double t, const double* y,
 }
 
 void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo,
-                                       int& hi) const {
+                                       int& hi, bool xi_ready) const {
   const auto& M = model_;
-  contact_coordinates(y);
+  if (!xi_ready) contact_coordinates(y);
   lo = 0, hi = -1;
   reach(t, y, lo, hi);
   if (hi < lo) return;
@@ -281,7 +281,7 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
             Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - u0), n);
     }
   } else {
-    penetration_band(t, y, scratch_g_, lo, hi);
+    penetration_band(t, y, scratch_g_, lo, hi, /*xi_ready=*/true);  // xi of y from above
   }
   const bool first = in_contact_.empty();
   in_contact_.resize(M.m, 0);

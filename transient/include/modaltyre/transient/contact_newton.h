@@ -69,7 +69,8 @@ class ContactNewton {
   Eigen::VectorXd ee_d_, ee_d_inv_;  ///< M_EE's diagonal and its inverse
   Eigen::MatrixXd K_;                ///< np x np
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
-  Eigen::MatrixXd Tt_active_;  ///< T~ rows of the active units (na x np)
+  Eigen::MatrixXd Tt_active_;   ///< T~ rows of the active units (na x np)
+  Eigen::VectorXd gamma_kd_c_;  ///< gamma kd_i / c'_i of the active units (relaxation on)
   mutable Eigen::VectorXd eta_, work_x_, work_e_, work_a_;
 };
 

@@ -106,8 +106,10 @@ class TransientSystem {
   void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
   /// forces_into() that also returns the reach [lo, hi] (f = 0 outside; empty if hi < lo).
   void forces_band(double t, const double* y, Eigen::VectorXd& f, int& lo, int& hi) const;
-  /// g over the reach [lo, hi] (entries outside untouched), as tip_penetration_in_reach().
-  void penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo, int& hi) const;
+  /// g over the reach [lo, hi] (entries outside untouched), as tip_penetration_in_reach();
+  /// xi_ready: contact_coordinates(y) is already in scratch_xi_.
+  void penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo, int& hi,
+                        bool xi_ready = false) const;
 
   const TransientModel& model_;
   const ScenarioPlan& plan_;
