@@ -3,6 +3,7 @@
 // at it, and it shrinks when rows are added or the noise falls. The power curve of discover
 // itself against the reported limit is DiscoverPowerCurve (discover_power_test.cc).
 #include "modaltyre/discover/detection_limit.h"
+#include "modaltyre/discover/discover.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +17,8 @@ namespace {
 using namespace planted;
 
 TEST(NamingRule, NamesOnlyWithEvidenceAndACrossValidatedGain) {
-  const NamingRule rule;  // Delta BIC > 10, CV gain >= 25 %, loss <= 10 %, pooled not up
+  const NamingRule rule;  // Delta BIC > 10, CV gain >= 25 % (on 12 entries also under z = 2),
+                          // loss <= 10 %, pooled not up
   EXPECT_TRUE(rule.names(12, {0.04, 0.02}, {0.02, 0.021}, {12, 12}, 0.032, 0.021));
   EXPECT_FALSE(rule.names(9.9, {0.04, 0.02}, {0.02, 0.021}, {12, 12}, 0.032, 0.021));  // evidence
   EXPECT_FALSE(rule.names(12, {0.04, 0.02}, {0.031, 0.02}, {12, 12}, 0.032, 0.028));  // gain 22.5 %
@@ -30,8 +32,10 @@ TEST(NamingRule, NamesOnlyWithEvidenceAndACrossValidatedGain) {
 // The alternative rule (docs/discover.md, "The naming rule's power"): the gain needed is the
 // one at which a paired test on n entries reaches z, 1 - 1 / sqrt(1 + 4 z^2 / n), capped at 25 %.
 TEST(NamingRule, ScaledGainFallsWithTheEntriesAndNeverExceedsTheFixedOne) {
-  const NamingRule fixed;
+  const NamingRule fixed{10, 0.25, 0.10, 0};
   const NamingRule scaled{10, 0.25, 0.10, 2};
+  EXPECT_DOUBLE_EQ(NamingRule{}.cv_gain_z, 2);  // discover's default since issue 23
+  EXPECT_DOUBLE_EQ(DiscoverOptions{}.cv_gain_z, NamingRule{}.cv_gain_z);
   EXPECT_DOUBLE_EQ(fixed.gain_needed(1000), 0.25);
   EXPECT_DOUBLE_EQ(scaled.gain_needed(12), 0.25);  // 1 - 1/sqrt(1 + 16/12) = 0.35, capped
   EXPECT_NEAR(scaled.gain_needed(48), 1 - 1 / std::sqrt(1 + 16.0 / 48), 1e-15);

@@ -32,8 +32,9 @@ struct NamingRule {
   double max_cv_loss = 0.10;
   /// 0: the gain must reach min_cv_gain whatever the rows. > 0: the smaller of min_cv_gain and
   /// the gain at which a paired test of the held-out squared errors of n entries reaches
-  /// z = cv_gain_z (docs/discover.md, "The naming rule's power").
-  double cv_gain_z = 0;
+  /// z = cv_gain_z (docs/discover.md, "The naming rule's power"). The default is discover's
+  /// (DiscoverOptions::cv_gain_z).
+  double cv_gain_z = 2;
   double gain_needed(int entries) const;
   /// Per-observable cross-validated RMS before and after and the entries they are taken over
   /// (same order; a zero "before" is skipped), and pooled.
