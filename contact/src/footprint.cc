@@ -79,7 +79,7 @@ PatchOperator static_operator(const TyreModel& model, double ratio) {
 }
 
 FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
-                                const std::vector<char>* warm_active) {
+                                std::span<const char> warm_active) {
   MODALTYRE_CHECK(load.load_N > 0, "load must be positive");
   // Without a horizontal force the problem is symmetric and solved matrix-free; with one, C
   // gains the non-symmetric horizontal coupling and is assembled (LU on the contact set).
@@ -90,7 +90,7 @@ FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
 }
 
 FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const LoadCase& load,
-                            const std::vector<char>* warm_active) {
+                            std::span<const char> warm_active) {
   MODALTYRE_CHECK(load.load_N > 0, "load must be positive");
   MODALTYRE_CHECK(op.kernels != nullptr && !op.tread_radial_lag.empty(), "incomplete operator");
   FootprintResult r;
@@ -185,7 +185,7 @@ std::vector<FootprintResult> solve_footprints(const TyreModel& model,
   std::vector<FootprintResult> out;
   std::vector<char> warm;
   for (const auto& lc : loads) {
-    out.push_back(solve_footprint(model, lc, warm.empty() ? nullptr : &warm));
+    out.push_back(solve_footprint(model, lc, warm));
     if (out.back().converged) warm = out.back().active;
   }
   return out;

@@ -86,7 +86,7 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
   }
 }
 
-Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const {
+Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
@@ -108,7 +108,7 @@ Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const
   };
 
   Eigen::VectorXd F;  // current iterate (empty before the first step)
-  std::vector<char> active = warm ? *warm : std::vector<char>{};
+  std::vector<char> active(warm.begin(), warm.end());
   const double gtol_rel = model_.config.solver.gap_tolerance;
   for (int it = 1; it <= settings_.max_pattern_iterations; ++it) {
     r.pattern_iterations = it;
@@ -124,8 +124,7 @@ Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const
     p.compliance_operator = &op;
     p.initial_gap = gap0;
     p.load_N = load_N;
-    const solvers::ContactSolution s =
-        solvers::solve_unilateral_contact(p, opt, active.empty() ? nullptr : &active);
+    const solvers::ContactSolution s = solvers::solve_unilateral_contact(p, opt, active);
     r.contact_iterations += s.iterations;
     if (!s.converged()) {
       r.message = s.message;
@@ -193,7 +192,8 @@ std::vector<Patch3dResult> Patch3d::solve_all(const std::vector<double>& loads_N
   std::vector<Patch3dResult> out;
   for (double F : loads_N) {
     const bool warm = !out.empty() && out.back().converged;
-    out.push_back(solve(F, warm ? &out.back().section_active : nullptr));
+    out.push_back(solve(
+        F, warm ? std::span<const char>(out.back().section_active) : std::span<const char>()));
   }
   return out;
 }

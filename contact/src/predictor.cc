@@ -16,10 +16,6 @@ Prediction failed(std::string why) {
   return p;
 }
 
-std::vector<char> warm_set(std::span<const char> warm) {
-  return std::vector<char>(warm.begin(), warm.end());
-}
-
 // ---- the effect-free path: the model's own operator -------------------------------------------
 
 // A plain solve_footprint() result as a Prediction: the config's width, no rolling resistance.
@@ -36,10 +32,9 @@ Prediction from_footprint(FootprintResult result, const TyreConfig& config) {
 }
 
 Prediction effect_free(const TyreModel& model, const OperatingConditions& c,
-                       const std::vector<char>& warm) {
-  return from_footprint(
-      solve_footprint(model, {c.load_N, c.horizontal_force_N}, warm.empty() ? nullptr : &warm),
-      model.config);
+                       std::span<const char> warm) {
+  return from_footprint(solve_footprint(model, {c.load_N, c.horizontal_force_N}, warm),
+                        model.config);
 }
 
 // ---- the effects path, one step per effect ---------------------------------------------------
@@ -236,7 +231,7 @@ bool conditions_act(const TyreConfig& config) { return config.effects.any(); }
 Prediction predict(const TyreModel& model, const OperatingConditions& c,
                    const PredictOptions& options) {
   if (!conditions_act(model.config) && c.load_N > 0 && !model.config.footprint_3d) {
-    return effect_free(model, c, warm_set(options.warm_active));
+    return effect_free(model, c, options.warm_active);
   }
   return predict(model, parameters_of(model.config), c, options);
 }
@@ -288,13 +283,13 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
   double width = P.tread.width_m;
   if (E.contact_width.enabled) width = std::min(width, E.contact_width.max_width_mm * 1e-3);
   Prediction out;
-  std::vector<char> warm = warm_set(options.warm_active);
+  std::vector<char> warm(options.warm_active.begin(), options.warm_active.end());
   const int max_width_iterations = E.contact_width.enabled ? 60 : 1;
   for (int it = 0; it < max_width_iterations; ++it) {
     PatchOperator op = assemble(m, assembly, P, kernels, *carcass, horizontal, scale, creep, soil,
                                 ratio, rolling, width);
     const LoadCase lc{elastic, c.horizontal_force_N * elastic / c.load_N};
-    out.footprint = solve_patch(m, std::move(op), lc, warm.empty() ? nullptr : &warm);
+    out.footprint = solve_patch(m, std::move(op), lc, warm);
     if (!out.footprint.converged) return failed(out.footprint.message);
     warm = out.footprint.active;
     if (!E.contact_width.enabled) break;
@@ -408,9 +403,9 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
   }
   try {
     const Patch3d patch(m, *P.footprint_3d, physics);
-    const std::vector<char> warm = warm_set(options.warm_active);
+    const std::span<const char> warm = options.warm_active;
     const bool warm_fits = static_cast<int>(warm.size()) == patch.sections();
-    Patch3dResult r = patch.solve(elastic, warm_fits ? &warm : nullptr);
+    Patch3dResult r = patch.solve(elastic, warm_fits ? warm : std::span<const char>());
     if (!r.converged) return failed(r.message);
     Prediction p = from_patch3d(patch, std::move(r), elastic);
     if (!std::isfinite(p.sinking_mm) || !std::isfinite(p.length_mm) || !std::isfinite(p.width_mm)) {

@@ -265,7 +265,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   const auto all_entries = ev.entries(all);
   int config_failures = 0;
   rep.gap_config =
-      rms_by_observable(data, all_entries, ev.residuals(eval, all_entries, &config_failures));
+      rms_by_observable(data, all_entries, ev.residuals(eval, all_entries, config_failures));
 
   if (static_cast<int>(data.rows.size()) <= opt.fit.exact_rows) {
     rep.method = "exact";

@@ -240,7 +240,7 @@ FitAndCv fit_and_cross_validate(const Evaluator& ev, const TyreConfig& base, con
   std::iota(all.begin(), all.end(), 0);
   FitAndCv out;
   if (n <= options.exact_rows) {
-    out.fit = fit_variant(ev, base, v, all, nullptr, true);
+    out.fit = fit_variant(ev, base, v, all, std::nullopt, true);
     if (tick) tick();
     out.cv = cross_validate(ev, base, v, out.fit);
   } else {

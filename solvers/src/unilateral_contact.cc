@@ -157,7 +157,7 @@ Eigen::VectorXd gaps(const ContactProblem& p, const ComplianceOperator& C,
 }  // namespace
 
 ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactOptions& opt,
-                                         const std::vector<char>* warm_active) {
+                                         std::span<const char> warm_active) {
   const int m = static_cast<int>(p.initial_gap.size());
   const DenseCompliance dense(p.compliance);
   const ComplianceOperator& C = p.compliance_operator
@@ -170,7 +170,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
   MODALTYRE_CHECK(p.load_N > 0, "contact load must be positive");
   ContactSolution sol;
   std::vector<char> in(m, 0);
-  if (warm_active && static_cast<int>(warm_active->size()) == m) in = *warm_active;
+  if (static_cast<int>(warm_active.size()) == m) in.assign(warm_active.begin(), warm_active.end());
   if (std::find(in.begin(), in.end(), 1) == in.end()) {
     // Cold start: the set a Winkler layer with each point's own compliance C_ii would load,
     // f_i = (delta - s_i)_+ / C_ii with sum f = F (a short patch; the iteration grows it).

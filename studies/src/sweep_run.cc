@@ -124,7 +124,7 @@ SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
   std::vector<std::vector<std::size_t>> all_of(plan.models.size()), run_of(plan.models.size());
   for (std::size_t i = 0; i < plan.cases.size(); ++i) all_of[plan.cases[i].model].push_back(i);
   if (options.only_cases) {
-    for (std::size_t i : *options.only_cases) {
+    for (const std::size_t i : *options.only_cases) {
       MODALTYRE_CHECK(i < plan.cases.size(), "sweep share names a case outside the plan");
       run_of[plan.cases[i].model].push_back(i);
     }

@@ -87,7 +87,7 @@ TEST(UnilateralContact, WarmStartGivesSameAnswerInFewerIterations) {
   ASSERT_TRUE(cold.converged());
   p.load_N = 2100;
   const auto cold2 = solve_unilateral_contact(p);
-  const auto warm2 = solve_unilateral_contact(p, {}, &cold.active);
+  const auto warm2 = solve_unilateral_contact(p, {}, cold.active);
   ASSERT_TRUE(warm2.converged());
   EXPECT_NEAR(warm2.approach_m, cold2.approach_m, kRoundoff * cold2.approach_m);
   EXPECT_LE(warm2.iterations, cold2.iterations);

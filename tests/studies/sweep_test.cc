@@ -272,7 +272,7 @@ TEST(SweepShare, SharesPartitionThePlanAndReassembleToTheSingleProcessCsv) {
         }
 
         SweepOptions part = whole;
-        part.only_cases = &share;
+        part.only_cases = share;
         const SweepResult mine = run_sweep(plan, part);
         EXPECT_EQ(mine.failed, 0u);
         for (auto i : share) {

@@ -8,6 +8,7 @@
 // (uniform use of adhesion along the patch); positive F_x points forward (+x). With F_x = 0 the
 // contact is frictionless and the solution is symmetric about the contact centre.
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -76,12 +77,13 @@ PatchOperator static_operator(const TyreModel& model, double horizontal_ratio);
 PatchOperator static_matrix_free_operator(const TyreModel& model);
 
 /// Solves one load case with a given operator (F_x = load.horizontal_force_N must match the
-/// operator's horizontal_ratio).
+/// operator's horizontal_ratio). `warm_active`: a previous result's `active` to start the
+/// contact set from (empty: cold start).
 FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const LoadCase& load,
-                            const std::vector<char>* warm_active = nullptr);
+                            std::span<const char> warm_active = {});
 
 FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
-                                const std::vector<char>* warm_active = nullptr);
+                                std::span<const char> warm_active = {});
 
 /// Solves the loads in order, each warm-started from the previous contact set.
 std::vector<FootprintResult> solve_footprints(const TyreModel& model,

@@ -36,6 +36,7 @@
 // (min 1/2 f^T (G + t_i I) f + z^T f, f >= 0, sum f = F_i), affine in d on a fixed lateral
 // pattern (compliance 1 / 1^T M_AA^-1 1 and offset in place of t_i / n_i and the mean drop).
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -132,7 +133,7 @@ class Patch3d {
 
   /// The laterally rigid reduction (see the top of this file); `warm` is a previous result's
   /// section_active.
-  Patch3dResult solve(double load_N, const std::vector<char>* warm = nullptr) const;
+  Patch3dResult solve(double load_N, std::span<const char> warm = {}) const;
   /// The same problem with every cell an unknown (reference for the reduction; slower).
   Patch3dResult solve_cells(double load_N) const;
   /// Loads in order, each warm-started from the previous result.

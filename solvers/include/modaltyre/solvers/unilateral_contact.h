@@ -16,6 +16,7 @@
 // compliance can be given without assembling it: the gap check is one product of C's columns on
 // the contact set, the inner systems are solved by conjugate gradients on C_SS products.
 #include <Eigen/Dense>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -56,9 +57,10 @@ struct ContactSolution {
   bool converged() const { return status == ContactStatus::converged; }
 };
 
-/// Solves the problem; `warm_active` (size m) starts from a previous solution's contact set.
+/// Solves the problem; `warm_active` (size m: a previous solution's contact set) is the start
+/// set; empty or of another size: a cold start.
 ContactSolution solve_unilateral_contact(const ContactProblem& problem,
                                          const ContactOptions& options = {},
-                                         const std::vector<char>* warm_active = nullptr);
+                                         std::span<const char> warm_active = {});
 
 }  // namespace modaltyre::solvers
