@@ -108,8 +108,8 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
   const solvers::ContactSolution s = solvers::solve_unilateral_contact(p, opt, warm_active);
   r.iterations = s.iterations;
   r.message = s.message;
-  if (!s.converged()) {
-    r.converged = false;
+  if (!s.ok()) {
+    r.status = s.status;
     return r;
   }
   const int m = model.candidates();
@@ -118,10 +118,10 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
     msg << "contact reached the edge of the candidate window (+-"
         << 0.5e3 * model.config.mesh.window_m << " mm): increase contact.window_mm";
     r.message = msg.str();
-    r.converged = false;
+    r.status = SolveStatus::failed;
     return r;
   }
-  r.converged = true;
+  r.status = SolveStatus::converged;
   r.sinking_m = s.approach_m;
   r.equilibrium_residual = s.equilibrium_residual;
   r.complementarity_residual = s.complementarity_residual;
@@ -186,7 +186,7 @@ std::vector<FootprintResult> solve_footprints(const TyreModel& model,
   std::vector<char> warm;
   for (const auto& lc : loads) {
     out.push_back(solve_footprint(model, lc, warm));
-    if (out.back().converged) warm = out.back().active;
+    if (out.back().ok()) warm = out.back().active;
   }
   return out;
 }

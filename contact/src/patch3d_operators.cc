@@ -258,7 +258,7 @@ class Flexible final : public SectionLaws {
     p.initial_gap = z_;
     p.load_N = F;
     const auto sol = solvers::solve_unilateral_contact(p, opt_, sec_[i].active);
-    if (!sol.converged()) {
+    if (!sol.ok()) {
       throw std::runtime_error("3D patch: a section's lateral contact failed: " + sol.message);
     }
     if (update) set_pattern(i, sol.active);

@@ -16,12 +16,18 @@ Prediction failed(std::string why) {
   return p;
 }
 
+Prediction failed(SolveStatus status, std::string why) {
+  Prediction p = failed(std::move(why));
+  p.status = status;
+  return p;
+}
+
 // ---- the effect-free path: the model's own operator -------------------------------------------
 
 // A plain solve_footprint() result as a Prediction: the config's width, no rolling resistance.
 Prediction from_footprint(FootprintResult result, const TyreConfig& config) {
   Prediction p;
-  p.ok = result.converged;
+  p.status = result.status;
   p.message = result.message;
   p.sinking_mm = result.sinking_m * 1e3;
   p.length_mm = result.contact_length_m * 1e3;
@@ -245,7 +251,7 @@ std::vector<Prediction> predict_all(const TyreModel& model,
     PredictOptions o;
     if (chain) o.warm_active = warm;
     out.push_back(predict(model, c, o));
-    if (chain && out.back().footprint.converged) warm = out.back().footprint.active;
+    if (chain && out.back().footprint.ok()) warm = out.back().footprint.active;
   }
   return out;
 }
@@ -290,7 +296,7 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
                                 ratio, rolling, width);
     const LoadCase lc{elastic, c.horizontal_force_N * elastic / c.load_N};
     out.footprint = solve_patch(m, std::move(op), lc, warm);
-    if (!out.footprint.converged) return failed(out.footprint.message);
+    if (!out.footprint.ok()) return failed(out.footprint.status, out.footprint.message);
     warm = out.footprint.active;
     if (!E.contact_width.enabled) break;
     const double next = crown_width(E, out.footprint.sinking_m);
@@ -302,7 +308,7 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
     }
   }
   const FootprintResult& f = out.footprint;
-  out.ok = true;
+  out.status = SolveStatus::converged;
   out.elastic_load_N = elastic;
   out.sinking_mm = f.sinking_m * 1e3;
   out.length_mm = f.contact_length_m * 1e3;
@@ -330,7 +336,7 @@ double centre_line(int columns, Value value) {
 Prediction from_patch3d(const Patch3d& patch, Patch3dResult r, double elastic_load_N) {
   Prediction p;
   FootprintResult& f = p.footprint;
-  f.converged = r.converged;
+  f.status = r.status;
   f.message = r.message;
   f.iterations = r.contact_iterations;
   f.sinking_m = r.sinking_m;
@@ -361,7 +367,7 @@ Prediction from_patch3d(const Patch3d& patch, Patch3dResult r, double elastic_lo
     u.pressure_Pa = centre_line(r.columns, [&](int j) { return r.pressure_Pa(i, j); });
     f.units.push_back(u);
   }
-  p.ok = r.converged;
+  p.status = r.status;
   p.message = r.message;
   p.sinking_mm = r.sinking_m * 1e3;
   p.length_mm = r.length_m * 1e3;
@@ -406,7 +412,7 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
     const std::span<const char> warm = options.warm_active;
     const bool warm_fits = static_cast<int>(warm.size()) == patch.sections();
     Patch3dResult r = patch.solve(elastic, warm_fits ? warm : std::span<const char>());
-    if (!r.converged) return failed(r.message);
+    if (!r.ok()) return failed(r.status, r.message);
     Prediction p = from_patch3d(patch, std::move(r), elastic);
     if (!std::isfinite(p.sinking_mm) || !std::isfinite(p.length_mm) || !std::isfinite(p.width_mm)) {
       return failed("prediction is not finite");

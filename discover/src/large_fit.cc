@@ -173,7 +173,7 @@ FitResult fit_variant_many_rows(const Evaluator& ev, const TyreConfig& base, con
     evaluations += k;
   }
   best.evaluations = evaluations;
-  best.converged = settled;
+  best.status = settled ? SolveStatus::converged : SolveStatus::max_iterations;
   Eigen::MatrixXd J_values = J;
   for (int j = 0; j < k; ++j) J_values.col(j) /= search_derivative(v.parameters[j], u(j));
   best.standard_errors = standard_errors(ev.data(), best, J_values);

@@ -150,11 +150,11 @@ std::vector<double> Evaluator::residuals(const TyreConfig& config, const std::ve
     const int row = e[starts[g]].row;
     const auto& mr = data_.rows[row];
     const contact::Prediction p = contact::predict(model_, parameters, mr.conditions);
-    if (!p.ok) ++failed;
+    if (!p.ok()) ++failed;
     for (std::size_t i = starts[g]; i < starts[g + 1]; ++i) {
       const std::string& obs = data_.observables[e[i].observable];
       const double meas = mr.observed.at(obs);
-      out[i] = p.ok ? (p.observable(obs) - meas) / std::abs(meas) : kFailureResidual;
+      out[i] = p.ok() ? (p.observable(obs) - meas) / std::abs(meas) : kFailureResidual;
     }
   }
   predictions_.fetch_add(groups, std::memory_order_relaxed);
@@ -319,7 +319,7 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
   if (with_errors) {
     fr.standard_errors = standard_errors(ev.data(), fr, jacobian(ev, base, v, fr.values, entries));
   }
-  fr.converged = lm.converged;
+  fr.status = lm.status;
   return fr;
 }
 

@@ -8,18 +8,6 @@
 
 namespace modaltyre::solvers {
 
-const char* to_string(ContactStatus s) {
-  switch (s) {
-    case ContactStatus::converged:
-      return "converged";
-    case ContactStatus::max_iterations:
-      return "iteration limit reached";
-    case ContactStatus::singular:
-      return "singular compliance on the contact set";
-  }
-  return "unknown";
-}
-
 namespace {
 
 struct RestrictedSolve {
@@ -202,7 +190,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
       if (in[i]) S.push_back(i);
     const RestrictedSolve rs = solve_on_set(p, C, S, ws);
     if (!rs.ok) {
-      sol.status = ContactStatus::singular;
+      sol.status = SolveStatus::singular;
       sol.message = "the compliance restricted to " + std::to_string(S.size()) +
                     " contact points is not positive definite";
       return sol;
@@ -226,7 +214,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
       }
     }
     if (next == in) {
-      sol.status = ContactStatus::converged;
+      sol.status = SolveStatus::converged;
       sol.force = f.cwiseMax(0.0);
       sol.gap = g;
       for (int i = 0; i < m; ++i)
@@ -262,7 +250,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
     }
     in = std::move(next);
   }
-  sol.status = ContactStatus::max_iterations;
+  sol.status = SolveStatus::max_iterations;
   sol.force = f;
   sol.message = "active set did not settle in " + std::to_string(opt.max_iterations) +
                 " iterations";

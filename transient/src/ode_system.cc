@@ -478,7 +478,7 @@ std::vector<double> TransientSystem::static_state(double load_N) const {
   if (load_N <= 0) return y;
   const contact::FootprintResult fr =
       contact::solve_footprint(M.tyre, contact::LoadCase{load_N, 0});
-  if (!fr.converged) throw ComputationError("static initial state: " + fr.message);
+  if (!fr.ok()) throw ComputationError("static initial state: " + fr.message);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(M.m);
   std::size_t k = 0;
   for (int i = 0; i < M.m; ++i)

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "modaltyre/contact/tyre_model.h"
+#include "modaltyre/core/solve_status.h"
 
 namespace modaltyre::contact {
 
@@ -31,7 +32,8 @@ struct PatchUnit {
 
 struct FootprintResult {
   LoadCase load;
-  bool converged = false;
+  /// The contact solver's status, or failed when the patch reached the candidate window's edge.
+  SolveStatus status = SolveStatus::failed;
   std::string message;
   int iterations = 0;
   double sinking_m = 0;           ///< approach of axle and road
@@ -45,6 +47,7 @@ struct FootprintResult {
   std::vector<double> contour_height_m; ///< height above the road (0 in contact)
   std::vector<char> active;             ///< contact flags of the candidate units (warm start)
 
+  bool ok() const { return modaltyre::ok(status); }
   double vertical_stiffness_N_m() const { return load.load_N / sinking_m; }
 };
 

@@ -42,6 +42,7 @@
 
 #include "modaltyre/contact/patch3d_settings.h"
 #include "modaltyre/contact/tyre_model.h"
+#include "modaltyre/core/solve_status.h"
 
 namespace modaltyre::contact {
 
@@ -66,7 +67,7 @@ struct PressureMap {
 
 struct Patch3dResult {
   double load_N = 0;
-  bool converged = false;
+  SolveStatus status = SolveStatus::failed;  ///< the contact solver's, or failed (not finite)
   std::string message;
   int pattern_iterations = 0;  ///< outer (lateral pattern) steps; 0 for solve_cells()
   int contact_iterations = 0;  ///< active-set iterations of the contact solver, all steps
@@ -96,6 +97,7 @@ struct Patch3dResult {
   }
   double pressure_Pa(int i, int j) const { return cell_force(i, j) / (dx_m[i] * dy_m); }
   double vertical_stiffness_N_m() const { return load_N / sinking_m; }
+  bool ok() const { return modaltyre::ok(status); }
 };
 
 /// What the effects path (predictor.h) changes in the 3D patch against the tyre model's own:

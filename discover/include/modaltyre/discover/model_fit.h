@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "modaltyre/contact/predictor.h"
+#include "modaltyre/core/solve_status.h"
 #include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::discover {
@@ -104,7 +105,8 @@ struct FitResult {
   double bic = 0;
   int evaluations = 0;
   int failures = 0;  ///< rows whose prediction failed at the optimum
-  bool converged = false;
+  SolveStatus status = SolveStatus::failed;  ///< the search's (converged or max_iterations)
+  bool ok() const { return modaltyre::ok(status); }
 };
 
 /// Jacobian of the relative residuals of `entries` with respect to the variant's parameters in

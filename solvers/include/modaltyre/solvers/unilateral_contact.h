@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/core/solve_status.h"
 #include "modaltyre/solvers/compliance_operator.h"
 
 namespace modaltyre::solvers {
@@ -39,11 +40,8 @@ struct ContactOptions {
   double gap_tolerance = 1e-10;
 };
 
-enum class ContactStatus { converged, max_iterations, singular };
-const char* to_string(ContactStatus s);
-
 struct ContactSolution {
-  ContactStatus status = ContactStatus::max_iterations;
+  SolveStatus status = SolveStatus::max_iterations;  ///< or converged, singular
   Eigen::VectorXd force;        ///< f [N]
   Eigen::VectorXd gap;          ///< g [m]
   double approach_m = 0;        ///< delta
@@ -54,7 +52,7 @@ struct ContactSolution {
   double max_penetration_m = 0;        ///< max(-g_i, 0)
   double max_tension_N = 0;            ///< max(-f_i, 0)
   std::string message;
-  bool converged() const { return status == ContactStatus::converged; }
+  bool ok() const { return modaltyre::ok(status); }
 };
 
 /// Solves the problem; `warm_active` (size m: a previous solution's contact set) is the start
