@@ -17,6 +17,8 @@
 // draws in parallel (each discover on one thread). A few minutes on 2 cores.
 //   build/bench/discover_power_study [draws per point, default 20] [noise-only sets, default 50]
 //                                    [rule-review sets per case, default 0] [1: simulated review]
+//                                    [copies of the 24-row review design, 1-16, default 1;
+//                                     negative: noise-only review sets only]
 #include <malloc.h>
 
 #include <algorithm>
@@ -204,13 +206,17 @@ std::string first_named(const discover::DiscoverReport& r, const discover::Namin
 
 const std::vector<double> kRuleZ = {0, 2, 1.5, 1};  // NamingRule::cv_gain_z; 0: the current rule
 
-std::vector<contact::OperatingConditions> review_rows() {
+// The 24-row review design (3 loads x 2 pressures x 2 hold times x 2 branches), `copies` times.
+std::vector<contact::OperatingConditions> review_rows(int copies = 1) {
   const double hold[] = {0, 120}, kpa[] = {200, 260};
-  return grid({2500, 5500, 8500}, 8, [&](auto& c, int l) {
-    c.hold_s = hold[l % 2];
-    c.pressure_kPa = kpa[(l / 2) % 2];
-    c.branch = l / 4 ? contact::Branch::unloading : contact::Branch::loading;
-  });
+  return grid(
+      {2500, 5500, 8500}, 8,
+      [&](auto& c, int l) {
+        c.hold_s = hold[l % 2];
+        c.pressure_kPa = kpa[(l / 2) % 2];
+        c.branch = l / 4 ? contact::Branch::unloading : contact::Branch::loading;
+      },
+      copies);
 }
 
 // The same rules in the detection-limit simulation (the model linearised at the fit of one
@@ -238,9 +244,10 @@ void rule_review_simulated() {
   }
 }
 
-void rule_review(int sets) {
+// `copies` repeats the 24-row design (fresh noise per row); `noise_only` skips the planted cases.
+void rule_review(int sets, int copies, bool noise_only) {
   const std::vector<double>& zs = kRuleZ;
-  const auto rows = review_rows();
+  const auto rows = review_rows(copies);
   const std::map<std::string, double> noise = {{"sinking_mm", 0.025}, {"length_mm", 0.025}};
   struct Case {
     std::string effect;
@@ -248,16 +255,19 @@ void rule_review(int sets) {
   };
   // Planted near the current rule's limits on these rows (rule_review_simulated: the current
   // rule names tread_relaxation at 0.5 x with 88 %, dry_friction at 0.5 x with 14 %).
-  const std::vector<Case> cases = {{"", 0}, {"tread_relaxation", 0.5}, {"dry_friction", 0.6}};
+  std::vector<Case> cases = {{"", 0}, {"tread_relaxation", 0.5}, {"dry_friction", 0.6}};
+  if (noise_only) cases.resize(1);
+  const int entries_per_observable = static_cast<int>(rows.size());
   std::printf(
-      "\nrule review: %zu rows (3 loads x 2 pressures x 2 hold times x 2 branches), "
+      "\nrule review: %zu rows (3 loads x 2 pressures x 2 hold times x 2 branches, %d x), "
       "2.5 %% noise, %d sets per case\n",
-      rows.size(), sets);
-  std::printf("  gain needed on 24 entries: z=0 (current) %.3f",
-              discover::NamingRule{}.gain_needed(24));
+      rows.size(), copies, sets);
+  std::printf("  gain needed on %d entries: z=0 (current) %.3f", entries_per_observable,
+              discover::NamingRule{}.gain_needed(entries_per_observable));
   for (double z : zs) {
     if (z > 0)
-      std::printf(", z=%g %.3f", z, discover::NamingRule{10, 0.25, 0.1, z}.gain_needed(24));
+      std::printf(", z=%g %.3f", z,
+                  discover::NamingRule{10, 0.25, 0.1, z}.gain_needed(entries_per_observable));
   }
   std::printf("\n");
   for (const auto& cs : cases) {
@@ -298,6 +308,9 @@ int main(int argc, char** argv) {
   const int sets = argc > 2 ? std::atoi(argv[2]) : 50;
   const int review = argc > 3 ? std::atoi(argv[3]) : 0;
   const bool simulated = argc > 4 && std::atoi(argv[4]) > 0;
+  // Bounded: 1..16 copies of the 24-row review design; a negative value: noise-only sets only.
+  const int copies_arg = argc > 5 ? std::atoi(argv[5]) : 1;
+  const int copies = std::clamp(std::abs(copies_arg), 1, 16);
   const double hold[] = {0, 20, 60, 300};
   Design creep{"tread_relaxation",
                grid(
@@ -317,6 +330,6 @@ int main(int argc, char** argv) {
   }
   if (sets > 0) false_names(sets);
   if (simulated) rule_review_simulated();
-  if (review > 0) rule_review(review);
+  if (review > 0) rule_review(review, copies, copies_arg < 0);
   return 0;
 }

@@ -40,7 +40,8 @@ nlohmann::json transient_json(const transient::TransientModel& model,
   j["model"] = {{"dynamic_coordinates", model.nq},
                 {"residual_coordinates", model.nr},
                 {"candidate_units", model.m},
-                {"states", model.state_size()},
+                {"states", r.states},  // the ODE of the run: tread states of the touchable units
+                {"touchable_units", r.units_hi - r.units_lo + 1},
                 {"tread_time_constant_s", round_sig(model.tread_time_constant_s)},
                 {"residual_time_constant_s", round_sig(model.tau_residual_s)}};
   j["samples"] = r.samples.size();

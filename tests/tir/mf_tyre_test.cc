@@ -120,6 +120,30 @@ TEST(MfTyreFile, FtireIsRefusedWithWhatItIs) {
   }
 }
 
+// A public MF 5.2 file (an FSAE tyre's, obfuscated) states ASPECT_RATIO = 470: no law uses the
+// aspect ratio or the rim radius, so such values are left out with a note naming file, line and
+// key, and the file's laws are still read (issue 20: unused keys are kept, not rejected).
+TEST(MfTyreFile, UnusedDimensionKeysOutOfRangeAreNotedNotRefused) {
+  const MfTyre t = interpret_tir(
+      parse_tir("[MODEL]\nFITTYP = 6\n[DIMENSION]\nUNLOADED_RADIUS = 0.254\nWIDTH = 0.2\n"
+                "ASPECT_RATIO = 470\nRIM_RADIUS = rim\n[VERTICAL]\nFNOMIN = 2700\n"
+                "VERTICAL_STIFFNESS = 125000\n[CONTACT_PATCH]\nQ_RA1 = 0.5\nQ_RA2 = 1\n",
+                "unused.tir"));
+  EXPECT_FALSE(t.aspect_ratio);
+  EXPECT_FALSE(t.rim_radius_m);
+  ASSERT_EQ(t.notes.size(), 2u);
+  EXPECT_NE(t.notes[0].find("unused.tir:7: DIMENSION.RIM_RADIUS: 'rim' is not a number"),
+            std::string::npos)
+      << t.notes[0];
+  EXPECT_NE(t.notes[1].find("unused.tir:6: DIMENSION.ASPECT_RATIO: 470 is outside 0.01 .. 5; "),
+            std::string::npos)
+      << t.notes[1];
+  // the laws are read as stated: linear (no Q_FZ2), A3.7 at rho = F/C_z
+  EXPECT_NEAR(*t.load_N(0.01), 1250, 1e-9);
+  const double x = 2700.0 / 125000 / 0.254;
+  EXPECT_NEAR(*t.length_m(2700), 2 * 0.254 * (1.0 * x + 0.5 * std::sqrt(x)), 1e-12);
+}
+
 struct BadMf {
   const char* name;
   const char* text;

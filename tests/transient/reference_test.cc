@@ -11,6 +11,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "decay_metrics.h"
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/transient/transient.h"
 
@@ -49,38 +50,10 @@ TransientModel default_model() {
   return build_transient_model(build_tyre_model(load_tyre_config(kConfig, {})));
 }
 
-/// Least-squares slope of y over 0, 1, ..., n-1.
-double slope(const std::vector<double>& y) {
-  const double n = static_cast<double>(y.size());
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < y.size(); ++i) {
-    sx += i, sy += y[i], sxx += double(i) * i, sxy += i * y[i];
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
-/// Period and logarithmic decrement of the hub bounce: maxima of z - mean(z over t > 0.8 s),
-/// each refined by the parabola through its neighbours; linear fits of their times and of the
-/// logarithms of their amplitudes over the first kDecayPeaks.
+/// Period and logarithmic decrement of the hub bounce over the first kDecayPeaks maxima
+/// (decay_metrics.h).
 std::pair<double, double> period_and_decrement(const TransientResult& r) {
-  const auto& s = r.samples;
-  double mean = 0;
-  int n = 0;
-  for (const auto& x : s)
-    if (x.t_s > 0.8) mean += x.hub_displacement_m, ++n;
-  mean /= n;
-  std::vector<double> times, logs;
-  for (std::size_t i = 1; i + 1 < s.size() && static_cast<int>(times.size()) < kDecayPeaks; ++i) {
-    const double a = s[i - 1].hub_displacement_m - mean, b = s[i].hub_displacement_m - mean,
-                 c = s[i + 1].hub_displacement_m - mean;
-    if (!(b > a && b >= c && b > 0)) continue;
-    const double den = a - 2 * b + c;
-    const double off = den != 0 ? 0.5 * (a - c) / den : 0.0;
-    times.push_back(s[i].t_s + off * (s[1].t_s - s[0].t_s));
-    logs.push_back(std::log(b - 0.25 * (a - c) * off));
-  }
-  EXPECT_EQ(static_cast<int>(times.size()), kDecayPeaks);
-  return {slope(times), -slope(logs)};
+  return bounce_period_and_decrement(r, kDecayPeaks);
 }
 
 TEST(TransientReference, FreeVibrationPeriodAndDecrementMatchTheFineMeshReference) {

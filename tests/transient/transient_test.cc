@@ -325,43 +325,50 @@ TEST(TransientTest, AnalyticJacobianMatchesFiniteDifferences) {
   const TransientModel M = model_with(coarse({kExtended, "transient.rolling.ramp_s=1"}));
   ASSERT_GT(M.nr, 0);
   const ScenarioPlan plan = plan_scenario(M, Scenario::rolling);
-  TransientSystem sys(M, plan);
-  const int n = sys.size();
-  std::vector<double> y = sys.static_state(4000);
-  const std::vector<double> atol = sys.absolute_tolerances();
-  for (int k = 0; k < n; ++k)  // deterministic perturbation of ~100 tolerances
-    y[k] += 100 * atol[k] * std::sin(1.3 * k + 0.4);
-  const double t = 0.5;  // V = V_final / 2, V' != 0
-  std::vector<double> g(M.m);
-  sys.roots(t, y.data(), g.data());
-  double closest = 1e300;
-  for (double gi : g) closest = std::min(closest, std::abs(gi));
-  solvers::CscMatrix J;
-  sys.jacobian(t, y.data(), J);
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
-  for (int c = 0; c < n; ++c)
-    for (int64_t k = J.col_ptr[c]; k < J.col_ptr[c + 1]; ++k) A(J.row[k], c) += J.value[k];
-  std::vector<double> yp(y), fp(n), fm(n);
-  double worst = 0;
-  int worst_row = -1, worst_col = -1;
-  for (int c = 0; c < n; ++c) {
-    // A step far below the gap of the unit closest to a kink, so no force switches.
-    const double h = std::min(1e-6 * std::max(std::abs(y[c]), atol[c]), 1e-3 * closest);
-    yp[c] = y[c] + h;
-    sys.rhs(t, yp.data(), fp.data());
-    yp[c] = y[c] - h;
-    sys.rhs(t, yp.data(), fm.data());
-    yp[c] = y[c];
-    for (int r = 0; r < n; ++r) {
-      const double fd = (fp[r] - fm[r]) / (2 * h);
-      // Relative to the row's largest analytic entry times the column's scale.
-      const double scale = A.row(r).cwiseAbs().maxCoeff() + 1e-300;
-      const double err = std::abs(fd - A(r, c)) / scale;
-      if (err > worst) worst = err, worst_row = r, worst_col = c;
+  // On every unit and on the units that can touch (tread_window.h: tread states of a range).
+  const UnitRange touchable =
+      touchable_units(M, plan, *bounding_contact(M, plan, static_contact(M, 4000)));
+  ASSERT_LT(touchable.size(), M.m);
+  for (const UnitRange units : {UnitRange{}, touchable}) {
+    SCOPED_TRACE(units.size());
+    TransientSystem sys(M, plan, units);
+    const int n = sys.size();
+    std::vector<double> y = sys.static_state(4000);
+    const std::vector<double> atol = sys.absolute_tolerances();
+    for (int k = 0; k < n; ++k)  // deterministic perturbation of ~100 tolerances
+      y[k] += 100 * atol[k] * std::sin(1.3 * k + 0.4);
+    const double t = 0.5;  // V = V_final / 2, V' != 0
+    std::vector<double> g(M.m);
+    sys.roots(t, y.data(), g.data());
+    double closest = 1e300;
+    for (double gi : g) closest = std::min(closest, std::abs(gi));
+    solvers::CscMatrix J;
+    sys.jacobian(t, y.data(), J);
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+    for (int c = 0; c < n; ++c)
+      for (int64_t k = J.col_ptr[c]; k < J.col_ptr[c + 1]; ++k) A(J.row[k], c) += J.value[k];
+    std::vector<double> yp(y), fp(n), fm(n);
+    double worst = 0;
+    int worst_row = -1, worst_col = -1;
+    for (int c = 0; c < n; ++c) {
+      // A step far below the gap of the unit closest to a kink, so no force switches.
+      const double h = std::min(1e-6 * std::max(std::abs(y[c]), atol[c]), 1e-3 * closest);
+      yp[c] = y[c] + h;
+      sys.rhs(t, yp.data(), fp.data());
+      yp[c] = y[c] - h;
+      sys.rhs(t, yp.data(), fm.data());
+      yp[c] = y[c];
+      for (int r = 0; r < n; ++r) {
+        const double fd = (fp[r] - fm[r]) / (2 * h);
+        // Relative to the row's largest analytic entry times the column's scale.
+        const double scale = A.row(r).cwiseAbs().maxCoeff() + 1e-300;
+        const double err = std::abs(fd - A(r, c)) / scale;
+        if (err > worst) worst = err, worst_row = r, worst_col = c;
+      }
     }
+    EXPECT_LT(worst, 1e-5) << "row " << worst_row << ", column " << worst_col << ": analytic "
+                           << A(worst_row, worst_col) << " (state size " << n << ")";
   }
-  EXPECT_LT(worst, 1e-5) << "row " << worst_row << ", column " << worst_col << ": analytic "
-                         << A(worst_row, worst_col) << " (state size " << n << ")";
 }
 
 // The cleat is a moving road input the integrator cannot see between steps: after a gentle

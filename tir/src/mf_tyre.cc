@@ -54,16 +54,36 @@ class Reader {
                                double min, double max, const char* unit) const {
     const TirValue* v = f_.value(section, key);
     if (!v) return std::nullopt;
-    if (!v->number) fail(section, key, "'" + printable(v->text) + "' is not a number");
-    const double si = *v->number * units_.to_si(d);
-    if (!(si >= min && si <= max) || !std::isfinite(si)) {
-      std::string shown = num(*v->number);
-      if (units_.to_si(d) != 1) shown += " (" + num(si) + " " + unit + ")";
-      fail(section, key,
-           shown + " is outside " + num(min) + " .. " + num(max) + " " + unit +
-               (d == Dimension::none ? "" : " (after [UNITS])"));
+    if (const auto why = problem(*v, d, min, max, unit)) fail(section, key, *why);
+    return *v->number * units_.to_si(d);
+  }
+
+  /// SECTION.KEY for a key no law uses (stated for the record, e.g. ASPECT_RATIO): a value that
+  /// is not a number or is out of range is left out with a note, not a refusal of the file
+  /// (issue 20: keys the model does not use are kept, not rejected).
+  std::optional<double> informative(const std::string& section, const std::string& key, Dimension d,
+                                    double min, double max, const char* unit,
+                                    std::vector<std::string>& notes) const {
+    const TirValue* v = f_.value(section, key);
+    if (!v) return std::nullopt;
+    if (const auto why = problem(*v, d, min, max, unit)) {
+      notes.push_back(format_location({f_.path, v->line, section + "." + key},
+                                      *why + "; no law uses it: left out"));
+      return std::nullopt;
     }
-    return si;
+    return *v->number * units_.to_si(d);
+  }
+
+  /// Why a value is unusable: not a number, or outside [min, max] after [UNITS]; else nullopt.
+  std::optional<std::string> problem(const TirValue& v, Dimension d, double min, double max,
+                                     const char* unit) const {
+    if (!v.number) return "'" + printable(v.text) + "' is not a number";
+    const double si = *v.number * units_.to_si(d);
+    if ((si >= min && si <= max) && std::isfinite(si)) return std::nullopt;
+    std::string shown = num(*v.number);
+    if (units_.to_si(d) != 1) shown += " (" + num(si) + " " + unit + ")";
+    return shown + " is outside " + num(min) + " .. " + num(max) + (*unit ? " " : "") + unit +
+           (d == Dimension::none ? "" : " (after [UNITS])");
   }
 
   double required(const std::string& section, const std::string& key, Dimension d, double min,
@@ -275,8 +295,10 @@ MfTyre interpret_tir(const TirFile& file) {
   t.unloaded_radius_m = r.required("DIMENSION", "UNLOADED_RADIUS", Dimension::length, 0.02, 10, "m",
                                    "the unloaded radius R0 scales every law");
   t.width_m = r.number("DIMENSION", "WIDTH", Dimension::length, 0.005, 10, "m");
-  t.rim_radius_m = r.number("DIMENSION", "RIM_RADIUS", Dimension::length, 0.005, 10, "m");
-  t.aspect_ratio = r.number("DIMENSION", "ASPECT_RATIO", Dimension::none, 0.01, 5, "");
+  t.rim_radius_m =
+      r.informative("DIMENSION", "RIM_RADIUS", Dimension::length, 0.005, 10, "m", t.notes);
+  t.aspect_ratio =
+      r.informative("DIMENSION", "ASPECT_RATIO", Dimension::none, 0.01, 5, "", t.notes);
   t.inflation_pressure_Pa =
       r.number("OPERATING_CONDITIONS", "INFLPRES", Dimension::pressure, 1e3, 1e9, "Pa").value_or(0);
   read_vertical(file, r, t);

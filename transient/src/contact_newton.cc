@@ -7,7 +7,8 @@ namespace modaltyre::transient {
 ContactNewton::ContactNewton(const TransientModel& model, const TransientSystem& system)
     : M_(model), sys_(system) {
   nx_ = model.e_index();
-  ne_ = model.settings.relaxation ? model.m : 0;
+  ne_ = system.tread_states();  // tread states of the units system.units(), first unit u0_
+  u0_ = system.units().lo;
   np_ = model.rank + 1;
   const int nq = model.nq;
   for (int j = 0; j < nq; ++j) {
@@ -32,7 +33,7 @@ bool ContactNewton::setup(double t, const double* y, double gamma, bool jacobian
   if (!jacobian_ok || !jacobian_ready_) {
     sys_.jacobian_stiffness(t, y, kd_);
     active_.clear();
-    for (int i = 0; i < M_.m; ++i)
+    for (int i = sys_.units().lo; i <= sys_.units().hi; ++i)
       if (kd_(i) > 0) active_.push_back(i);
     Tt_active_.resize(static_cast<Eigen::Index>(active_.size()), np_);
     for (std::size_t a = 0; a < active_.size(); ++a) {
@@ -80,18 +81,26 @@ void ContactNewton::factor(double gamma) {
     ee_s1_ = -gamma * kUpwind[1] * adv;
     ee_s2_ = -gamma * kUpwind[2] * adv;
     ee_d_.resize(ne_);
-    for (int i = 0; i < ne_; ++i)
-      ee_d_(i) = 1.0 - gamma * (kUpwind[0] * adv - (kd_(i) + M.k_kv(i)) / M.c_kv(i));
+    for (int k = 0; k < ne_; ++k) {
+      const int i = u0_ + k;
+      ee_d_(k) = 1.0 - gamma * (kUpwind[0] * adv - (kd_(i) + M.k_kv(i)) / M.c_kv(i));
+    }
     ee_d_inv_ = ee_d_.cwiseInverse();
     if (na > 0) {
+      // Back substitution up the band, a row per unit (row-major: rows contiguous). At rest
+      // (no advection) M_EE is diagonal and the band terms vanish.
       const int lo = active_.front(), hi = active_.back();
-      Eigen::MatrixXd Y = Eigen::MatrixXd::Zero(hi - lo + 1, np_);
+      const bool band = ee_s1_ != 0 || ee_s2_ != 0;
+      using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+      RowMajor Y = RowMajor::Zero(hi - lo + 1, np_);
       for (int a = na - 1, i = hi; i >= lo; --i) {
         const int k = i - lo;
         if (a >= 0 && active_[a] == i) Y.row(k) = kd_(i) / M.c_kv(i) * Tt_active_.row(a--);
-        if (k + 1 < Y.rows()) Y.row(k) -= ee_s1_ * Y.row(k + 1);
-        if (k + 2 < Y.rows()) Y.row(k) -= ee_s2_ * Y.row(k + 2);
-        Y.row(k) /= ee_d_(i);
+        if (band) {
+          if (k + 1 < Y.rows()) Y.row(k) -= ee_s1_ * Y.row(k + 1);
+          if (k + 2 < Y.rows()) Y.row(k) -= ee_s2_ * Y.row(k + 2);
+        }
+        Y.row(k) /= ee_d_(i - u0_);
       }
       for (int a = 0; a < na; ++a) Ty.row(a) -= gamma * Y.row(active_[a] - lo);
     }
@@ -101,10 +110,10 @@ void ContactNewton::factor(double gamma) {
   }
   // K = T~^T diag(kd) (T~ - gamma Y), coefficient-based (Eigen's GEMM would start OpenMP threads
   // for a product this small; the library is built with OpenMP for sweeps).
-  Eigen::VectorXd kd_active(na);
-  for (int a = 0; a < na; ++a) kd_active(a) = kd_(active_[a]);
+  // The scaled rows first: a coefficient of K is then a dot product of two contiguous columns.
+  for (int a = 0; a < na; ++a) Ty.row(a) *= kd_(active_[a]);
   K_.setZero(np_, np_);
-  if (na > 0) K_.noalias() = Tt_active_.transpose().lazyProduct(kd_active.asDiagonal() * Ty);
+  if (na > 0) K_.noalias() = Tt_active_.transpose().lazyProduct(Ty);
   // Capacitance I - gamma (P D^-1 Q) K, column k of P D^-1 Q from the unit force on eta_k.
   Eigen::MatrixXd H(np_, np_);
   for (int k = 0; k < np_; ++k) {
@@ -122,6 +131,10 @@ void ContactNewton::factor(double gamma) {
     if (nr > 0) H.col(k).head(rank).noalias() += M.Cr * work_x_.segment(2 * nq, nr);
     H(rank, k) = work_x_(Z);
   }
+  // gamma kd / c' of the active units, for M_EX in solve() (no division per solve).
+  gamma_kd_c_.resize(ne_ > 0 ? na : 0);
+  for (int a = 0; a < gamma_kd_c_.size(); ++a)
+    gamma_kd_c_(a) = gamma * kd_(active_[a]) / M.c_kv(active_[a]);
   Eigen::MatrixXd cap = Eigen::MatrixXd::Identity(np_, np_);
   cap.noalias() -= gamma * H.lazyProduct(K_);
   cap_.compute(cap);
@@ -173,11 +186,17 @@ void ContactNewton::solve(double* x) const {
   double* xe = x + nx_;
   if (ne_ > 0 && na > 0) {
     // b_X - M_XE M_EE^-1 b_E.
-    Eigen::Map<Eigen::VectorXd> be(xe, ne_);
-    work_e_ = be;
-    solve_ee(work_e_.data());
     work_a_.resize(na);
-    for (int a = 0; a < na; ++a) work_a_(a) = kd_(active_[a]) * work_e_(active_[a]);
+    if (ee_s1_ == 0 && ee_s2_ == 0) {  // at rest M_EE is diagonal: only the active rows
+      for (int a = 0; a < na; ++a) {
+        const int k = active_[a] - u0_;
+        work_a_(a) = kd_(active_[a]) * (xe[k] * ee_d_inv_(k));
+      }
+    } else {
+      work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
+      solve_ee(work_e_.data());
+      for (int a = 0; a < na; ++a) work_a_(a) = kd_(active_[a]) * work_e_(active_[a] - u0_);
+    }
     eta_.noalias() = Tt_active_.transpose() * work_a_;
     eta_ *= -gamma_;
     add_q(eta_, xx);
@@ -198,7 +217,7 @@ void ContactNewton::solve(double* x) const {
       work_a_.noalias() = Tt_active_ * eta_;
       for (int a = 0; a < na; ++a) {
         const int i = active_[a];
-        xe[i] += gamma_ * kd_(i) / M.c_kv(i) * work_a_(a);
+        xe[i - u0_] += gamma_kd_c_(a) * work_a_(a);
       }
     }
     solve_ee(xe);

@@ -9,6 +9,7 @@
 #include "modaltyre/solvers/arrow_lu.h"
 #include "modaltyre/transient/contact_newton.h"
 #include "modaltyre/transient/ode_system.h"
+#include "modaltyre/transient/tread_window.h"
 
 namespace modaltyre::transient {
 namespace {
@@ -22,18 +23,16 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
                         const ScenarioPlan& plan, double t, const double* y) {
   TransientSample s;
   s.t_s = t;
-  // Tip penetration where units can touch (the forces); the edge interpolation below needs it
-  // also at the first unit outside each end, computed there.
-  Eigen::VectorXd g(M.m);
-  sys.tip_penetration_in_reach(t, y, g);
-  Eigen::VectorXd f(M.m);
-  for (int i = 0; i < M.m; ++i) f(i) = g[i] > 0 ? M.k_contact(i) * g[i] : 0.0;
+  // The forces k max(0, g) where units can touch (on the system's units only: tread_window.h);
+  // the edge interpolation below needs g also at the first unit outside each end, computed there.
+  const Eigen::VectorXd f = sys.forces(t, y);
+  const int u0 = sys.units().lo, u1 = sys.units().hi;
   const double z = y[M.z_index()];
   const double R0 = M.tyre.config.outer_radius_m;
   s.applied_load_N = plan.load(t);
   s.hub_displacement_m = z;
   s.speed_m_s = plan.speed(t);
-  s.load_N = f.sum();
+  s.load_N = f.segment(u0, u1 - u0 + 1).sum();
   // Sinking max_i (z + h_i - s_i): the least sag on a flat road, over the cleat's units too.
   double sink = z - M.tyre.sag.minCoeff(), moment = 0, slope_force = 0;
   if (plan.cleat) {
@@ -42,7 +41,7 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
     sink = std::max(sink, (z + h.array() - M.tyre.sag.array()).maxCoeff());
   }
   int first = -1, last = -1;
-  for (int i = 0; i < M.m; ++i) {
+  for (int i = u0; i <= u1; ++i) {
     if (f(i) > 0) {
       double slope = 0;
       if (plan.cleat) sys.road(t, i, &slope);
@@ -121,15 +120,17 @@ class SampleReuse {
   Eigen::ArrayXd last_, bound_;  ///< last computed sample's state, kReuseFraction of its weights
 };
 
-}  // namespace
-
-TransientResult run_transient(const TransientModel& M, Scenario scenario,
-                              const TransientRunOptions& options) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  const ScenarioPlan plan = plan_scenario(M, scenario);
-  TransientSystem sys(M, plan);
+/// One run on the units `units` (tread_window.h); sets `escaped` (and stops) if a unit outside
+/// them reached the road.
+TransientResult run_on_units(const TransientModel& M, Scenario scenario,
+                             const TransientRunOptions& options, const ScenarioPlan& plan,
+                             const StaticContact& initial, UnitRange units, bool& escaped) {
+  TransientSystem sys(M, plan, units);
   TransientResult res;
   res.scenario = scenario;
+  res.units_lo = sys.units().lo;
+  res.units_hi = sys.units().hi;
+  res.states = sys.size();
 
   solvers::OdeProblem prob;
   prob.size = sys.size();
@@ -176,8 +177,18 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
     return 0;
   };
   solvers::OdeOptions opt;
-  opt.relative_tolerance = M.settings.relative_tolerance;
-  opt.absolute_tolerance = sys.absolute_tolerances();
+  // CVODE's error test and Newton's convergence test take an RMS over the states. The tread
+  // states the range leaves out are those of units that never touch: zero for good, or
+  // advected behind the patch, either way without influence on any force. Scaling the
+  // tolerances by sqrt(all states / states) keeps the error test of the full state (the same
+  // sum of squares over the same number of states), so that the range changes the cost of a
+  // step and not the steps (docs/transient.md section 2).
+  const std::vector<double> atol = sys.absolute_tolerances();
+  const double norm_scale =
+      std::sqrt(static_cast<double>(M.state_size()) / static_cast<double>(sys.size()));
+  opt.relative_tolerance = M.settings.relative_tolerance * norm_scale;
+  opt.absolute_tolerance = atol;
+  for (double& a : opt.absolute_tolerance) a *= norm_scale;
   // BDF2 at most: orders 3-5 are not A-stable, and the lightly damped carcass modes (eigenvalues
   // near the imaginary axis, up to omega_K) made CVODE's stability-limit detection hold the order
   // at 2-3 anyway, with many more steps (measured: 5500 steps/s of free vibration at order <= 5
@@ -191,13 +202,13 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
   // the factorisations of a 0.5 mm load ramp against CVODE's 3).
   opt.max_nonlinear_iterations = 6;
 
-  std::vector<double> y = sys.static_state(plan.initial_load_N);
+  std::vector<double> y = sys.state_from(initial);
   solvers::CvodeKlu ode(prob, opt, 0.0, y, sys.nnz());
   ode.set_max_step(plan.step_limit(0.0));
 
   const double T = plan.duration_s, dt = M.settings.output_step_s;
   res.samples.push_back(observe(M, sys, plan, 0.0, y.data()));
-  SampleReuse reuse(opt.relative_tolerance, opt.absolute_tolerance, !plan.cleat);
+  SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.cleat);
   reuse.remember(y);
   std::vector<double> breaks = plan.breakpoints;
   std::sort(breaks.begin(), breaks.end());
@@ -255,6 +266,10 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
     // Steps run up to the next breakpoint (a kink of F(t) or V(t)) or the end.
     const double stop = next_break < breaks.size() ? breaks[next_break] : T;
     const solvers::OdeStatus st = ode.step(stop);
+    if (sys.escaped()) {
+      escaped = true;
+      return res;
+    }
     if (!st.ok()) {
       std::ostringstream msg;
       msg << "integrator failed at t = " << st.t << " s: " << st.message;
@@ -297,7 +312,15 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
   }
   res.simulated_s = ode.time();
   res.stats = ode.stats();
-  if (options.keep_final_state) res.final_state = ode.state();
+  if (options.keep_final_state) {
+    // In the layout of all units (TransientSystem(M, plan)): e = 0 for the units without a
+    // tread state (they never touched).
+    res.final_state.assign(M.state_size(), 0.0);
+    const std::vector<double>& y_end = ode.state();
+    std::copy(y_end.begin(), y_end.begin() + M.e_index(), res.final_state.begin());
+    std::copy(y_end.begin() + M.e_index(), y_end.end(),
+              res.final_state.begin() + M.e_index() + (M.settings.relaxation ? res.units_lo : 0));
+  }
   res.status = failed ? TransientStatus::failed : TransientStatus::completed;
   if (!failed) {
     std::ostringstream msg;
@@ -312,6 +335,31 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
   for (const auto& s : res.samples)
     if (s.t_s >= t_from) sum += -s.longitudinal_force_N, ++cnt;
   res.rolling_resistance_N = cnt ? sum / cnt : 0;
+  return res;
+}
+
+}  // namespace
+
+TransientResult run_transient(const TransientModel& M, Scenario scenario,
+                              const TransientRunOptions& options) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const ScenarioPlan plan = plan_scenario(M, scenario);
+  const StaticContact initial = static_contact(M, plan.initial_load_N);
+  const UnitRange all{0, M.m - 1};
+  UnitRange units = all;
+  if (!options.all_tread_states) {
+    const std::optional<StaticContact> bound = bounding_contact(M, plan, initial);
+    if (bound) units = touchable_units(M, plan, *bound);
+  }
+  bool escaped = false;
+  TransientResult res = run_on_units(M, scenario, options, plan, initial, units, escaped);
+  if (escaped) {
+    // A unit outside the range reached the road: the bound did not hold (section 2 of
+    // docs/transient.md); the run is repeated with every unit.
+    escaped = false;
+    res = run_on_units(M, scenario, options, plan, initial, all, escaped);
+    res.units_escaped = true;
+  }
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return res;
 }

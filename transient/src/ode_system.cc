@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/core/errors.h"
@@ -44,12 +45,23 @@ ModalRow modal_row(const TransientModel& M, int j, double Omega, double dOmega) 
   return d;
 }
 
-TransientSystem::TransientSystem(const TransientModel& model, const ScenarioPlan& plan)
-    : model_(model), plan_(plan) {
-  basis_row_norm_max_ = model.rank > 0 ? model.T.rowwise().norm().maxCoeff() : 0.0;
+TransientSystem::TransientSystem(const TransientModel& model, const ScenarioPlan& plan,
+                                 UnitRange units)
+    : model_(model), plan_(plan), units_(units.size() > 0 ? units : UnitRange{0, model.m - 1}) {
+  MODALTYRE_CHECK(units_.lo >= 0 && units_.hi < model.m, "TransientSystem: units out of range");
+  const int lo = units_.lo, hi = units_.hi, n = units_.size(), m = model.m;
+  ne_ = model.settings.relaxation ? n : 0;
+  has_outside_ = n < m;
+  if (model.rank > 0) {
+    basis_row_norm_max_ = model.T.middleRows(lo, n).rowwise().norm().maxCoeff();
+    if (lo > 0) out_row_norm_max_ = model.T.topRows(lo).rowwise().norm().maxCoeff();
+    if (hi + 1 < m)
+      out_row_norm_max_ =
+          std::max(out_row_norm_max_, model.T.bottomRows(m - 1 - hi).rowwise().norm().maxCoeff());
+  }
   if (model.settings.relaxation) {
-    inv_c_kv_ = model.c_kv.cwiseInverse();
-    k_over_c_kv_ = model.k_kv.cwiseProduct(inv_c_kv_);
+    inv_c_kv_ = model.c_kv.segment(lo, n).cwiseInverse();
+    k_over_c_kv_ = model.k_kv.segment(lo, n).cwiseProduct(inv_c_kv_);
   }
   model.tyre.sag.minCoeff(&centre_);
 }
@@ -69,37 +81,67 @@ void TransientSystem::contact_coordinates(const double* y) const {
   if (M.nr > 0) scratch_xi_.noalias() += M.Cr * r;
 }
 
-void TransientSystem::reach(const double* y, int& lo, int& hi) const {
+void TransientSystem::check_outside(double t, const double* y) const {
   const auto& M = model_;
+  const double z = y[M.z_index()];
+  const double H = plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0;
+  double p_max = -std::numeric_limits<double>::infinity();
+  bool touches = false;
+  auto scan = [&](int from, int to) {
+    for (int i = from; i <= to; ++i) {
+      const double p = z - M.tyre.sag(i) - M.T_by_unit.col(i).dot(scratch_xi_);
+      if (p > p_max || std::isnan(p)) p_max = p;
+      // Without a tread state the tip is the surface: e = 0 ahead of the patch, and behind it
+      // advected e >= 0 only lowers g (so p > 0 is the conservative test).
+      if (p + H > 0 && p + road(t, i) > 0) touches = true;
+    }
+  };
+  scan(0, units_.lo - 1);
+  scan(units_.hi + 1, M.m - 1);
+  p_out_ref_ = p_max;
+  xi_out_ref_ = scratch_xi_;
+  z_out_ref_ = z;
+  if (touches) escaped_ = true;
+}
+
+void TransientSystem::reach(double t, const double* y, int& lo, int& hi) const {
+  const auto& M = model_;
+  const double H = plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0;
+  if (has_outside_) {
+    // Units outside units_: p_i <= p_out_ref + (z - z_out_ref) + max|T_i| |xi - xi_out_ref| + h
+    // as below; only when this bound does not exclude them is their penetration computed.
+    const double bound = xi_out_ref_.size() == 0
+                             ? std::numeric_limits<double>::infinity()
+                             : p_out_ref_ + (y[M.z_index()] - z_out_ref_) +
+                                   out_row_norm_max_ * (scratch_xi_ - xi_out_ref_).norm() + H;
+    if (!(bound <= 0)) check_outside(t, y);
+  }
   // g_i = z + h_i - s_i - T_i xi - e_i <= z + max h - s_i + max_i |T_i| |xi| - min(0, min e)
   // (Cauchy-Schwarz on the contact basis; xi from contact_coordinates()).
-  double lift = plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0;
-  if (M.settings.relaxation)
-    lift -= std::min(0.0, Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), M.m).minCoeff());
-  if (p_ref_.size() == M.m) {
+  double lift = H;
+  if (ne_ > 0)
+    lift -= std::min(0.0, Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), ne_).minCoeff());
+  const int u0 = units_.lo, u1 = units_.hi;
+  if (p_ref_.size() == units_.size()) {
     // Against the penetration p_ref = z_ref - s - T xi_ref of an accepted state:
     // g_i <= p_ref_i + (z - z_ref) + max |T_i| |xi - xi_ref| + max h - min(0, min e), a band
     // a few units wider than the patch where the bound from rest spans twice as many units.
     const double delta =
         y[M.z_index()] - z_ref_ + basis_row_norm_max_ * (scratch_xi_ - xi_ref_).norm() + lift;
-    if (!std::isfinite(delta)) {
-      lo = 0, hi = M.m - 1;
-      return;
-    }
-    lo = 0, hi = M.m - 1;
-    while (lo <= hi && !(p_ref_(lo) + delta > 0)) ++lo;
-    while (hi >= lo && !(p_ref_(hi) + delta > 0)) --hi;
+    lo = u0, hi = u1;
+    if (!std::isfinite(delta)) return;
+    while (lo <= hi && !(p_ref_(lo - u0) + delta > 0)) ++lo;
+    while (hi >= lo && !(p_ref_(hi - u0) + delta > 0)) --hi;
     return;
   }
+  // Before an accepted state: the sag grows on both sides of centre_, so the units with
+  // sag < bound form a range (NaN bound: every unit).
   const double bound = y[M.z_index()] + basis_row_norm_max_ * scratch_xi_.norm() + lift;
   const Eigen::VectorXd& sag = M.tyre.sag;
-  if (!(sag(centre_) < bound)) {  // nothing can touch (NaN bound: everything can)
-    lo = 0, hi = std::isnan(bound) ? M.m - 1 : -1;
-    return;
-  }
-  lo = hi = centre_;
-  while (lo > 0 && sag(lo - 1) < bound) --lo;
-  while (hi + 1 < M.m && sag(hi + 1) < bound) ++hi;
+  lo = u0, hi = u1;
+  if (std::isnan(bound)) return;
+  while (lo <= hi && !(sag(lo) < bound)) ++lo;
+  while (hi >= lo && !(sag(hi) < bound)) --hi;
 }
 
 void TransientSystem::add_road(double t, int lo, int hi, Eigen::VectorXd& g) const {
@@ -120,11 +162,11 @@ void TransientSystem::tip_penetration_in_reach(double t, const double* y,
 }
 
 void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo,
-                                       int& hi) const {
+                                       int& hi, bool xi_ready) const {
   const auto& M = model_;
-  contact_coordinates(y);
+  if (!xi_ready) contact_coordinates(y);
   lo = 0, hi = -1;
-  reach(y, lo, hi);
+  reach(t, y, lo, hi);
   if (hi < lo) return;
   const int n = hi - lo + 1;
   // u = T xi (model.h's contact basis: rank columns instead of nq + nr).
@@ -132,14 +174,14 @@ void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorX
   seg.noalias() = M.T.middleRows(lo, n) * scratch_xi_;
   seg = (y[M.z_index()] - M.tyre.sag.segment(lo, n).array() - seg.array()).matrix();
   add_road(t, lo, hi, g);
-  if (M.settings.relaxation) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + lo, n);
+  if (ne_ > 0) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - units_.lo), n);
 }
 
 double TransientSystem::tip_penetration_at(double t, const double* y, int i) const {
   const auto& M = model_;
   contact_coordinates(y);
   double g = y[M.z_index()] + road(t, i) - M.tyre.sag(i) - M.T_by_unit.col(i).dot(scratch_xi_);
-  if (M.settings.relaxation) g -= y[M.e_index() + i];
+  if (ne_ > 0 && units_.contains(i)) g -= y[M.e_index() + (i - units_.lo)];
   return g;
 }
 
@@ -166,7 +208,7 @@ void TransientSystem::tip_penetration(double t, const double* y, Eigen::VectorXd
   g.array() += z;
   g -= M.tyre.sag;
   add_road(t, 0, M.m - 1, g);
-  if (M.settings.relaxation) g -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), M.m);
+  if (ne_ > 0) g.segment(units_.lo, ne_) -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index(), ne_);
 }
 
 void TransientSystem::forces_into(double t, const double* y, Eigen::VectorXd& f) const {
@@ -176,8 +218,12 @@ void TransientSystem::forces_into(double t, const double* y, Eigen::VectorXd& f)
 
 void TransientSystem::forces_band(double t, const double* y, Eigen::VectorXd& f, int& lo,
                                   int& hi) const {
-  // f = 0 outside the reach [lo, hi] (g < 0 there for certain), k max(0, g) inside.
-  f.setZero(model_.m);
+  // f = 0 outside the reach [lo, hi] (g < 0 there for certain), k max(0, g) inside. Nothing
+  // writes f outside units_, so only that range is cleared when f is reused.
+  if (f.size() != model_.m)
+    f.setZero(model_.m);
+  else
+    f.segment(units_.lo, units_.size()).setZero();
   penetration_band(t, y, f, lo, hi);
   if (hi < lo) return;
   const int n = hi - lo + 1;
@@ -186,7 +232,7 @@ void TransientSystem::forces_band(double t, const double* y, Eigen::VectorXd& f,
 }
 
 Eigen::VectorXd TransientSystem::forces(double t, const double* y) const {
-  Eigen::VectorXd f(model_.m);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(model_.m);
   forces_into(t, y, f);
   return f;
 }
@@ -211,25 +257,39 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   const auto& M = model_;
   contact_coordinates(y);
   const bool refresh =
-      p_ref_.size() != M.m ||
+      p_ref_.size() != units_.size() ||
       !(std::abs(y[M.z_index()] - z_ref_) + basis_row_norm_max_ * (scratch_xi_ - xi_ref_).norm() <
         kReachRefresh_m);
+  const int u0 = units_.lo, nu = units_.size();
   if (refresh) {
-    p_ref_.noalias() = M.T * scratch_xi_;
-    p_ref_ = (y[M.z_index()] - M.tyre.sag.array() - p_ref_.array()).matrix();
+    p_ref_.noalias() = M.T.middleRows(u0, nu) * scratch_xi_;
+    p_ref_ = (y[M.z_index()] - M.tyre.sag.segment(u0, nu).array() - p_ref_.array()).matrix();
     xi_ref_ = scratch_xi_;
     z_ref_ = y[M.z_index()];
   }
   int lo = 0, hi = -1;
   scratch_g_.resize(M.m);
-  penetration_band(t, y, scratch_g_, lo, hi);
+  if (refresh) {
+    // The reference is this state: g = p_ref + h - e over the reach, without a second product.
+    reach(t, y, lo, hi);
+    if (hi >= lo) {
+      const int n = hi - lo + 1;
+      scratch_g_.segment(lo, n) = p_ref_.segment(lo - u0, n);
+      add_road(t, lo, hi, scratch_g_);
+      if (ne_ > 0)
+        scratch_g_.segment(lo, n) -=
+            Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - u0), n);
+    }
+  } else {
+    penetration_band(t, y, scratch_g_, lo, hi, /*xi_ready=*/true);  // xi of y from above
+  }
   const bool first = in_contact_.empty();
   in_contact_.resize(M.m, 0);
   // Units that can have changed: the reach now and the contact set before.
   const int from = std::min(lo, contact_first_), to = std::max(hi, contact_last_);
   int changed = 0;
   contact_first_ = M.m, contact_last_ = -1;
-  for (int i = std::max(from, 0); i <= std::min(to, M.m - 1); ++i) {
+  for (int i = std::max(from, u0); i <= std::min(to, units_.hi); ++i) {
     const char now = i >= lo && i <= hi && scratch_g_(i) > 0 ? 1 : 0;
     if (now != in_contact_[i]) ++changed, in_contact_[i] = now;
     if (now) contact_first_ = std::min(contact_first_, i), contact_last_ = i;
@@ -246,13 +306,17 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   Eigen::VectorXd& G = scratch_G_;
   int lo = 0, hi = -1;
   forces_band(t, y, f, lo, hi);
-  // G = psi^T f = Cq^T phi and Vf = V^T f = Cr^T phi with phi = T^T f over the units in contact
-  // only (a third of the candidates at the default load; columns of T^T, contiguous).
+  // G = psi^T f = Cq^T phi and Vf = V^T f = Cr^T phi with phi = T^T f over the reach only
+  // (f = 0 elsewhere; about the patch).
   Eigen::VectorXd& phi = scratch_phi_;
   phi.setZero(M.rank);
   double load = 0;
-  for (int i = lo; i <= hi; ++i)
-    if (f(i) != 0.0) phi.noalias() += f(i) * M.T_by_unit.col(i), load += f(i);
+  if (hi >= lo) {
+    const int n = hi - lo + 1;
+    // Dot products of the contact basis' columns with f (13 x n with n contiguous per column).
+    phi.noalias() = M.T.middleRows(lo, n).transpose() * f.segment(lo, n);
+    load = f.segment(lo, n).sum();
+  }
   G.noalias() = M.Cq.transpose() * phi;
   Eigen::VectorXd& Vf = scratch_Vf_;
   if (nr > 0) Vf.noalias() = M.Cr.transpose() * phi;
@@ -276,14 +340,15 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
     // de/dtheta by the second-order one-sided (upwind) difference from the front, e = 0
     // entering: (-3 e_i + 4 e_{i+1} - e_{i+2}) / (2 dtheta).
     // c' e' = f - k' e, as whole-vector operations (one pass each, no division).
-    const int m = M.m;
-    const Eigen::Map<const Eigen::VectorXd> e(y + E, m);
-    Eigen::Map<Eigen::VectorXd> de(ydot + E, m);
-    de = f.cwiseProduct(inv_c_kv_) - e.cwiseProduct(k_over_c_kv_);
+    // Over units_ only: ahead of it e = 0 enters (no unit there ever touches).
+    const int n = ne_;
+    const Eigen::Map<const Eigen::VectorXd> e(y + E, n);
+    Eigen::Map<Eigen::VectorXd> de(ydot + E, n);
+    de = f.segment(units_.lo, n).cwiseProduct(inv_c_kv_) - e.cwiseProduct(k_over_c_kv_);
     if (adv != 0) {
       de += kUpwind[0] * adv * e;
-      de.head(m - 1) += kUpwind[1] * adv * e.tail(m - 1);
-      de.head(m - 2) += kUpwind[2] * adv * e.tail(m - 2);
+      if (n > 1) de.head(n - 1) += kUpwind[1] * adv * e.tail(n - 1);
+      if (n > 2) de.head(n - 2) += kUpwind[2] * adv * e.tail(n - 2);
     }
   }
 }
@@ -291,7 +356,7 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
 int64_t TransientSystem::nnz() const {
   const auto& M = model_;
   const int64_t N = M.nq + M.nr + 1;  // coupled columns q, r, z
-  const int64_t E = M.settings.relaxation ? M.m : 0;
+  const int64_t E = ne_;
   // Room for the tread couplings of a third of the candidates (about the patch at the default
   // load); the adapter grows the matrix if more units come into contact. A larger reserve
   // costs time: CVODE zeroes the whole allocation at every Jacobian evaluation.
@@ -300,9 +365,9 @@ int64_t TransientSystem::nnz() const {
 
 void TransientSystem::jacobian_stiffness(double t, const double* y, Eigen::VectorXd& kd) const {
   const auto& M = model_;
-  const int m = M.m;
-  forces_into(t, y, kd);
-  for (int i = 0; i < m; ++i) kd(i) = kd(i) > 0 ? M.k_contact(i) : 0.0;
+  const int u0 = units_.lo, u1 = units_.hi;
+  forces_into(t, y, kd);  // 0 outside units_
+  for (int i = u0; i <= u1; ++i) kd(i) = kd(i) > 0 ? M.k_contact(i) : 0.0;
   // While the patch is moving (units switched since the last Jacobian), units within
   // kJacobianEdgeMargin of the patch ends enter the Jacobian as if in contact: a unit that
   // touches between two Jacobian evaluations otherwise leaves Newton's matrix without its
@@ -313,13 +378,13 @@ void TransientSystem::jacobian_stiffness(double t, const double* y, Eigen::Vecto
   switches_since_jacobian_ = 0;
   if (moving) {
     int first = -1, last = -1;
-    for (int i = 0; i < m; ++i)
+    for (int i = u0; i <= u1; ++i)
       if (kd(i) > 0) last = i, first = first < 0 ? i : first;
     const int margin =
         std::max(1, static_cast<int>(std::lround(kJacobianEdgeMargin_m / M.tyre.unit_length_m)));
     if (first >= 0) {
-      for (int i = std::max(0, first - margin); i < first; ++i) kd(i) = M.k_contact(i);
-      for (int i = last + 1; i <= std::min(m - 1, last + margin); ++i) kd(i) = M.k_contact(i);
+      for (int i = std::max(u0, first - margin); i < first; ++i) kd(i) = M.k_contact(i);
+      for (int i = last + 1; i <= std::min(u1, last + margin); ++i) kd(i) = M.k_contact(i);
     }
   }
 }
@@ -335,8 +400,9 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
   // B = d g / d (q, r, z) = [-psi, -V, 1]; rows of W: d(v', r', w')/d f = [psi^T; lambda/tau V^T;
   // -1/m 1^T]. Dense block D = W diag(kd) B  ((nq + nr + 1) squared).
   const int N = nq + nr + 1;
+  const int u0 = units_.lo, u1 = units_.hi;
   std::vector<int> active;
-  for (int i = 0; i < m; ++i)
+  for (int i = u0; i <= u1; ++i)
     if (kd(i) > 0) active.push_back(i);
   const int na = static_cast<int>(active.size());
   // Sparsity pattern of the tread couplings: every unit that has been in contact at a Jacobian
@@ -347,7 +413,7 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
   for (int i : active) in_pattern_[i] = 1;
   std::vector<int> pattern;
   if (relax)
-    for (int i = 0; i < m; ++i)
+    for (int i = u0; i <= u1; ++i)
       if (in_pattern_[i]) pattern.push_back(i);
   Eigen::MatrixXd B(na, N), Wt(na, N);
   const double mh = M.settings.hub_mass_kg;
@@ -401,7 +467,7 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
           bi = -M.V(i, k - nq);
         else
           bi = 1.0;
-        push(E + i, kd(i) * bi / M.c_kv(i));
+        push(E + (i - u0), kd(i) * bi / M.c_kv(i));
       }
     }
   };
@@ -435,9 +501,10 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
   J.col_ptr[col] = static_cast<int64_t>(J.row.size());
   push(Z, 1.0);
   ++col;
-  // e columns.
+  // e columns (units_ only; state E + k is unit u0 + k).
   if (relax) {
-    for (int i = 0; i < m; ++i, ++col) {
+    for (int i = u0; i <= u1; ++i, ++col) {
+      const int k = i - u0;
       J.col_ptr[col] = static_cast<int64_t>(J.row.size());
       const double dfde = -kd(i);
       if (in_pattern_[i]) {
@@ -447,9 +514,9 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
         push(Z + 1, -dfde / mh);
       }
       // e_{i-2}' and e_{i-1}' depend on e_i (upwind from the front).
-      if (i > 1) push(E + i - 2, kUpwind[2] * adv);
-      if (i > 0) push(E + i - 1, kUpwind[1] * adv);
-      push(E + i, kUpwind[0] * adv + (dfde - M.k_kv(i)) / M.c_kv(i));
+      if (k > 1) push(E + k - 2, kUpwind[2] * adv);
+      if (k > 0) push(E + k - 1, kUpwind[1] * adv);
+      push(E + k, kUpwind[0] * adv + (dfde - M.k_kv(i)) / M.c_kv(i));
     }
   }
   J.col_ptr[col] = static_cast<int64_t>(J.row.size());
@@ -465,33 +532,31 @@ std::vector<double> TransientSystem::absolute_tolerances() const {
     a[M.nq + j] = a[j] * M.omega[j];
   }
   // Tread states (relaxation on): their own tolerance (TransientSettings::tread_tolerance_m).
-  if (M.settings.relaxation)
-    std::fill(a.begin() + M.e_index(), a.begin() + M.e_index() + M.m, M.settings.tread_tolerance_m);
+  std::fill(a.begin() + M.e_index(), a.begin() + M.e_index() + ne_, M.settings.tread_tolerance_m);
   // Hub velocity: displacement tolerance over a 10 ms time scale.
   a[M.z_index() + 1] = kDisplacementTolerance * 100;
   return a;
 }
 
 std::vector<double> TransientSystem::static_state(double load_N) const {
+  return state_from(static_contact(model_, load_N));
+}
+
+std::vector<double> TransientSystem::state_from(const StaticContact& c) const {
   const auto& M = model_;
   std::vector<double> y(size(), 0.0);
-  if (load_N <= 0) return y;
-  const contact::FootprintResult fr =
-      contact::solve_footprint(M.tyre, contact::LoadCase{load_N, 0});
-  if (!fr.ok()) throw ComputationError("static initial state: " + fr.message);
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(M.m);
-  std::size_t k = 0;
+  if (!(c.sinking_m != 0 || c.f.any())) return y;
+  const Eigen::VectorXd& f = c.f;
   for (int i = 0; i < M.m; ++i)
-    if (fr.active[i]) f(i) = fr.units.at(k++).fz_N;
+    if (f(i) > 0 && !units_.contains(i)) escaped_ = true;
   const Eigen::VectorXd G = M.psi.transpose() * f;
   for (int j = 0; j < M.nq; ++j) y[j] = G(j) / (M.omega[j] * M.omega[j]);
   if (M.nr > 0) {
     const Eigen::VectorXd Vf = M.V.transpose() * f;
     for (int l = 0; l < M.nr; ++l) y[2 * M.nq + l] = M.lambda(l) * Vf(l);
   }
-  y[M.z_index()] = fr.sinking_m;
-  if (M.settings.relaxation)
-    for (int i = 0; i < M.m; ++i) y[M.e_index() + i] = f(i) / M.k_kv(i);
+  y[M.z_index()] = c.sinking_m;
+  for (int k = 0; k < ne_; ++k) y[M.e_index() + k] = f(units_.lo + k) / M.k_kv(units_.lo + k);
   return y;
 }
 

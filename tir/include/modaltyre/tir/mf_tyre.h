@@ -51,6 +51,7 @@ struct MfTyre {
 
 /// Interprets a parsed file; InputError (file, line, SECTION.KEY) for a file that is not a Magic
 /// Formula file, lacks UNLOADED_RADIUS, FNOMIN or a vertical law, or has values out of range.
+/// RIM_RADIUS and ASPECT_RATIO, which no law uses, are left out with a note instead.
 MfTyre interpret_tir(const TirFile& file);
 
 /// read_tir + interpret_tir.

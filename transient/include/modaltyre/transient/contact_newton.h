@@ -35,7 +35,7 @@ class ContactNewton {
   /// are kept when `jacobian_ok` (CVODE judges the last Jacobian still good). Returns false if
   /// a pivot is not finite or zero (CVODE then retries with a smaller step).
   bool setup(double t, const double* y, double gamma, bool jacobian_ok);
-  /// x <- M^-1 x (state_size() entries).
+  /// x <- M^-1 x (system.size() entries).
   void solve(double* x) const;
 
  private:
@@ -48,6 +48,7 @@ class ContactNewton {
   const TransientModel& M_;
   const TransientSystem& sys_;
   int nx_ = 0, ne_ = 0, np_ = 0;  ///< X states, tread states, rank + 1
+  int u0_ = 0;                    ///< unit of the first tread state
   bool jacobian_ready_ = false;
   // Jacobian data: contact stiffness, units with kd > 0, rolling speed.
   Eigen::VectorXd kd_;
@@ -68,7 +69,8 @@ class ContactNewton {
   Eigen::VectorXd ee_d_, ee_d_inv_;  ///< M_EE's diagonal and its inverse
   Eigen::MatrixXd K_;                ///< np x np
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
-  Eigen::MatrixXd Tt_active_;  ///< T~ rows of the active units (na x np)
+  Eigen::MatrixXd Tt_active_;   ///< T~ rows of the active units (na x np)
+  Eigen::VectorXd gamma_kd_c_;  ///< gamma kd_i / c'_i of the active units (relaxation on)
   mutable Eigen::VectorXd eta_, work_x_, work_e_, work_a_;
 };
 

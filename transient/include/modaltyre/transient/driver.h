@@ -39,8 +39,14 @@ struct TransientResult {
   std::vector<TransientSample> samples;
   /// Mean of -longitudinal force over the last 10 % of the run (rolling resistance) [N].
   double rolling_resistance_N = 0;
-  /// The state at simulated_s (TransientSystem's layout), when the options asked for it.
+  /// The state at simulated_s in the layout of all units (TransientSystem(model, plan); e = 0
+  /// for the units that had no tread state), when the options asked for it.
   std::vector<double> final_state;
+  /// The units that carried forces and tread states (tread_window.h), and the ODE's size.
+  int units_lo = 0, units_hi = -1, states = 0;
+  /// A unit outside the touchable range reached the road and the run was repeated with all
+  /// units (never in the bundled scenarios).
+  bool units_escaped = false;
   bool ok() const { return status == TransientStatus::completed; }
   double real_time_factor() const { return wall_s > 0 ? simulated_s / wall_s : 0; }
 };
@@ -63,6 +69,9 @@ struct TransientRunOptions {
   /// solver); the last two kept for comparisons (docs/transient.md section 6).
   enum class NewtonSolver { schur, arrow, klu };
   NewtonSolver newton_solver = NewtonSolver::schur;
+  /// Tread states for all candidate units instead of those that can touch in the scenario
+  /// (tread_window.h); the same trajectory, kept for comparisons.
+  bool all_tread_states = false;
 };
 
 /// Runs a scenario. Failures of the integrator are reported in the result (message and time

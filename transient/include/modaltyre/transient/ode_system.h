@@ -15,6 +15,7 @@
 #include "modaltyre/solvers/cvode_klu.h"
 #include "modaltyre/transient/model.h"
 #include "modaltyre/transient/scenario.h"
+#include "modaltyre/transient/tread_window.h"
 
 namespace modaltyre::transient {
 
@@ -32,10 +33,22 @@ struct ModalRow {
 ModalRow modal_row(const TransientModel& M, int j, double Omega, double dOmega);
 
 /// The ODE of a model under a scenario (public for tests: energy, Jacobian checks).
+///
+/// Only the units of `units` (tread_window.h: those that can touch in the scenario; all
+/// candidates by default) carry forces and tread states: the state is
+/// y = [q | v | r | z, w | e of units.lo .. units.hi], size() = model.e_index() + tread_states().
+/// Units outside are checked against the road (escaped()) but never get a force.
 class TransientSystem {
  public:
-  TransientSystem(const TransientModel& model, const ScenarioPlan& plan);
-  int size() const { return model_.state_size(); }
+  TransientSystem(const TransientModel& model, const ScenarioPlan& plan, UnitRange units = {});
+  int size() const { return model_.e_index() + ne_; }
+  /// The units that carry forces and tread states.
+  const UnitRange& units() const { return units_; }
+  /// Tread states (relaxation on: units().size(), else 0); e_i is y[model.e_index() + i - lo].
+  int tread_states() const { return ne_; }
+  /// A unit outside units() had a positive penetration at an evaluated state: the trajectory is
+  /// not the one of all units, and the run has to be repeated with all of them.
+  bool escaped() const { return escaped_; }
   void rhs(double t, const double* y, double* ydot) const;
   void jacobian(double t, const double* y, solvers::CscMatrix& J) const;
   void roots(double t, const double* y, double* g) const;
@@ -52,6 +65,8 @@ class TransientSystem {
   double road(double t, int i, double* slope = nullptr) const;
   /// State of static equilibrium under `load_N` (footprint solver, relaxed tread).
   std::vector<double> static_state(double load_N) const;
+  /// The state of a static contact (static_state() from an already solved footprint).
+  std::vector<double> state_from(const StaticContact& c) const;
   /// Kinetic + elastic energy (carcass, hub, contact springs; residual and Kelvin-Voigt parts
   /// excluded), for energy checks of undamped models without residual orders.
   double energy(double t, const double* y) const;
@@ -81,14 +96,20 @@ class TransientSystem {
   void tip_penetration(double t, const double* y, Eigen::VectorXd& g) const;
   /// xi = Cq q + Cr r into scratch_xi_ (u = T xi, model.h's contact basis).
   void contact_coordinates(const double* y) const;
-  /// Units [lo, hi] that can touch at y (empty if hi < lo), xi from contact_coordinates():
-  /// bounds of g from the last accepted state (update_contact_set()) or, before one, from rest.
-  void reach(const double* y, int& lo, int& hi) const;
+  /// Units [lo, hi] that can touch at y (empty if hi < lo; within units()), xi from
+  /// contact_coordinates(): bounds of g from the last accepted state (update_contact_set()) or,
+  /// before one, from rest. Checks the units outside units() too (check_outside()).
+  void reach(double t, const double* y, int& lo, int& hi) const;
+  /// Penetration of the units outside units() at (t, y): refreshes their bound's reference
+  /// (p_out_ref_ ...) and sets escaped_ if any is positive. xi from contact_coordinates().
+  void check_outside(double t, const double* y) const;
   void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
   /// forces_into() that also returns the reach [lo, hi] (f = 0 outside; empty if hi < lo).
   void forces_band(double t, const double* y, Eigen::VectorXd& f, int& lo, int& hi) const;
-  /// g over the reach [lo, hi] (entries outside untouched), as tip_penetration_in_reach().
-  void penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo, int& hi) const;
+  /// g over the reach [lo, hi] (entries outside untouched), as tip_penetration_in_reach();
+  /// xi_ready: contact_coordinates(y) is already in scratch_xi_.
+  void penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo, int& hi,
+                        bool xi_ready = false) const;
 
   const TransientModel& model_;
   const ScenarioPlan& plan_;
@@ -112,6 +133,15 @@ class TransientSystem {
   /// max_i |T_i|: |u_i| <= basis_row_norm_max_ |xi| for every unit.
   double basis_row_norm_max_ = 0;
   int centre_ = 0;  ///< unit of least sag (the sag grows on both sides of it)
+  UnitRange units_;
+  int ne_ = 0;  ///< tread states
+  /// Units outside units_: max of p = z - s_i - T_i xi over them at a reference state (xi, z),
+  /// the largest |T_i| among them, and whether there are any.
+  mutable double p_out_ref_ = 0, z_out_ref_ = 0;
+  mutable Eigen::VectorXd xi_out_ref_;
+  double out_row_norm_max_ = 0;
+  bool has_outside_ = false;
+  mutable bool escaped_ = false;
 };
 
 }  // namespace modaltyre::transient

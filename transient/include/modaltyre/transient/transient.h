@@ -4,8 +4,10 @@
 //   model.h       the transient model built from a static TyreModel (equations stated there)
 //   scenario.h    load-hold, free-vibration, rolling, cleat: F(t), V(t), road, initial state
 //   ode_system.h  right-hand side, Jacobian and contact root functions
+//   tread_window.h  the units that can touch in a scenario (the ODE's tread states)
 //   driver.h      run_transient(): integration, contact switches, output samples
 #include "modaltyre/transient/driver.h"
 #include "modaltyre/transient/model.h"
 #include "modaltyre/transient/ode_system.h"
 #include "modaltyre/transient/scenario.h"
+#include "modaltyre/transient/tread_window.h"
