@@ -227,10 +227,12 @@ void register_discover(CLI::App& app) {
                   "and one-step cross-validation (default 64; docs/discover.md)")
       ->check(CLI::Range(4, 1000000));
   cmd->callback([a] {
-    // CLI::Range lets NaN through (every comparison with it is false).
-    if (!std::isfinite(a->unit_length_mm)) {
-      throw InputError({"--unit-length-mm", 0, "unit_length_mm"}, "must be a finite number");
-    }
+    discover::DiscoverOptions opt;
+    opt.threads = a->threads;
+    opt.unit_length_mm = a->unit_length_mm;
+    opt.max_effects = a->max_effects;
+    opt.fit.exact_rows = a->exact_rows;
+    opt.validate();  // CLI::Range lets NaN through (every comparison with it is false)
     refuse_repeated_overrides(a->overrides);
     const contact::TyreConfig cfg = contact::load_tyre_config(a->config, a->overrides);
     const studies::MeasurementSet data = studies::read_measurements(a->measured, cfg);
@@ -251,11 +253,6 @@ void register_discover(CLI::App& app) {
         throw InputError({a->plot, 0, "--plot"}, "plot file must end in .svg or .png");
       }
     }
-    discover::DiscoverOptions opt;
-    opt.threads = a->threads;
-    opt.unit_length_mm = a->unit_length_mm;
-    opt.max_effects = a->max_effects;
-    opt.fit.exact_rows = a->exact_rows;
     // One bar per phase on stderr (a terminal only): the baseline's fit and cross-validation,
     // then each round's candidates, a tick per fit and per cross-validation (done = 0 opens a
     // phase).

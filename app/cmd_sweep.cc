@@ -184,7 +184,7 @@ void run_distributed(const SweepArgs& a) {
     studies::SweepOptions opt;
     opt.threads = threads_per_rank(a, session);
     opt.warm_start = a.warm_start;
-    opt.only_cases = &share;
+    opt.only_cases = share;
     opt.progress = [&bar](std::size_t n) { bar.tick(n); };
     res = studies::run_sweep(p.plan, opt);
     bar.finish();

@@ -149,7 +149,7 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
   for (const auto& o : observables) {
     PlotSeries model{"model", {}, {}, "lines"};
     for (const auto& p : res) {
-      if (!p.ok) continue;  // a failed prediction is left out of the curve
+      if (!p.ok()) continue;  // a failed prediction is left out of the curve
       model.x.push_back(p.footprint.load.load_N / 1000);
       model.y.push_back(p.observable(o.name));
     }

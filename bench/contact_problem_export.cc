@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
     sol = solvers::solve_unilateral_contact(p);
     times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
-  if (!sol.converged()) {
+  if (!sol.ok()) {
     std::fprintf(stderr, "no convergence: %s\n", sol.message.c_str());
     return 1;
   }
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     mf_times.push_back(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
-  if (!fr.converged) {
+  if (!fr.ok()) {
     std::fprintf(stderr, "footprint solve did not converge: %s\n", fr.message.c_str());
     return 1;
   }

@@ -59,7 +59,7 @@ Case run(const std::string& config, const std::vector<std::string>& sets,
   out.results = patch.solve_all(loads);
   out.R0_m = c.outer_radius_m;
   for (const auto& r : out.results) {
-    if (!r.converged) throw ComputationError("load " + std::to_string(r.load_N) + ": " + r.message);
+    if (!r.ok()) throw ComputationError("load " + std::to_string(r.load_N) + ": " + r.message);
   }
   return out;
 }

@@ -79,7 +79,7 @@ PatchOperator static_operator(const TyreModel& model, double ratio) {
 }
 
 FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
-                                const std::vector<char>* warm_active) {
+                                std::span<const char> warm_active) {
   MODALTYRE_CHECK(load.load_N > 0, "load must be positive");
   // Without a horizontal force the problem is symmetric and solved matrix-free; with one, C
   // gains the non-symmetric horizontal coupling and is assembled (LU on the contact set).
@@ -90,7 +90,7 @@ FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
 }
 
 FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const LoadCase& load,
-                            const std::vector<char>* warm_active) {
+                            std::span<const char> warm_active) {
   MODALTYRE_CHECK(load.load_N > 0, "load must be positive");
   MODALTYRE_CHECK(op.kernels != nullptr && !op.tread_radial_lag.empty(), "incomplete operator");
   FootprintResult r;
@@ -108,8 +108,8 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
   const solvers::ContactSolution s = solvers::solve_unilateral_contact(p, opt, warm_active);
   r.iterations = s.iterations;
   r.message = s.message;
-  if (!s.converged()) {
-    r.converged = false;
+  if (!s.ok()) {
+    r.status = s.status;
     return r;
   }
   const int m = model.candidates();
@@ -118,10 +118,10 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
     msg << "contact reached the edge of the candidate window (+-"
         << 0.5e3 * model.config.mesh.window_m << " mm): increase contact.window_mm";
     r.message = msg.str();
-    r.converged = false;
+    r.status = SolveStatus::failed;
     return r;
   }
-  r.converged = true;
+  r.status = SolveStatus::converged;
   r.sinking_m = s.approach_m;
   r.equilibrium_residual = s.equilibrium_residual;
   r.complementarity_residual = s.complementarity_residual;
@@ -185,8 +185,8 @@ std::vector<FootprintResult> solve_footprints(const TyreModel& model,
   std::vector<FootprintResult> out;
   std::vector<char> warm;
   for (const auto& lc : loads) {
-    out.push_back(solve_footprint(model, lc, warm.empty() ? nullptr : &warm));
-    if (out.back().converged) warm = out.back().active;
+    out.push_back(solve_footprint(model, lc, warm));
+    if (out.back().ok()) warm = out.back().active;
   }
   return out;
 }

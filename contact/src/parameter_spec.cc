@@ -1,6 +1,7 @@
 #include "modaltyre/contact/parameter_spec.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "modaltyre/contact/effects.h"
 #include "modaltyre/core/errors.h"
@@ -38,19 +39,19 @@ SearchRange ln_search(double min, double max) { return {min, max, SearchTransfor
 // are the ones the two commands have always used (their outputs depend on them).
 std::vector<ParameterSpec> tyre_scalars() {
   return {
-      {"modal.compliance_scale", "-", ln_search(0.2, 5), logistic_search(0.05, 20),
-       [](const TyreConfig& c) { return c.compliance_scale; },
+      {"modal.compliance_scale", "-", ValueRange{1e-3, 1e3}, ln_search(0.2, 5),
+       logistic_search(0.05, 20), [](const TyreConfig& c) { return c.compliance_scale; },
        [](TyreConfig& c, double v) { c.compliance_scale = v; }},
-      {"tread.modulus_MPa", "MPa", ln_search(0.1, 100), logistic_search(0.05, 200),
-       [](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; },
+      {"tread.modulus_MPa", "MPa", ValueRange{1e-3, 1e4}, ln_search(0.1, 100),
+       logistic_search(0.05, 200), [](const TyreConfig& c) { return c.tread.modulus_Pa * 1e-6; },
        [](TyreConfig& c, double v) { c.tread.modulus_Pa = v * 1e6; }},
-      {"tread.thickness_mm", "mm", ln_search(1, 50), std::nullopt,
+      {"tread.thickness_mm", "mm", ValueRange{0.1, 200}, ln_search(1, 50), std::nullopt,
        [](const TyreConfig& c) { return c.tread.thickness_m * 1e3; },
        [](TyreConfig& c, double v) { c.tread.thickness_m = v * 1e-3; }},
-      {"tread.contact_width_mm", "mm", ln_search(20, 500), std::nullopt,
+      {"tread.contact_width_mm", "mm", ValueRange{1, 2000}, ln_search(20, 500), std::nullopt,
        [](const TyreConfig& c) { return c.tread.width_m * 1e3; },
        [](TyreConfig& c, double v) { c.tread.width_m = v * 1e-3; }},
-      {"tyre.outer_radius_mm", "mm", ln_search(100, 1500), std::nullopt,
+      {"tyre.outer_radius_mm", "mm", ValueRange{50, 2000}, ln_search(100, 1500), std::nullopt,
        [](const TyreConfig& c) { return c.outer_radius_m * 1e3; },
        [](TyreConfig& c, double v) {
          c.outer_radius_m = v * 1e-3;
@@ -62,15 +63,15 @@ std::vector<ParameterSpec> tyre_scalars() {
        }},
       // The 3D patch's crown (footprint_3d.crown, circular): rounder crown, narrower patch.
       // Above 100 mm the crown stays a graph over a tread.
-      {"footprint_3d.crown.radius_mm", "mm", ln_search(100, 1e5), logistic_search(100, 1e5),
-       [](const TyreConfig& c) { return crown_of(c).radius_m * 1e3; },
+      {"footprint_3d.crown.radius_mm", "mm", std::nullopt, ln_search(100, 1e5),
+       logistic_search(100, 1e5), [](const TyreConfig& c) { return crown_of(c).radius_m * 1e3; },
        [](TyreConfig& c, double v) { crown_of(c).radius_m = v * 1e-3; }},
-      {"footprint_3d.tread_width_mm", "mm", ln_search(20, 500), std::nullopt,
+      {"footprint_3d.tread_width_mm", "mm", ValueRange{20, 2000}, ln_search(20, 500), std::nullopt,
        [](const TyreConfig& c) { return patch3d_of(c).tread_width_m * 1e3; },
        [](TyreConfig& c, double v) { patch3d_of(c).tread_width_m = v * 1e-3; }},
       // Starts at 10 rad^2/s^2 when not stated (the fit to resolved orders may give 0).
-      {"modal.extension_bending_s2_rad2_s2", "rad^2/s^2", ln_search(1e-3, 1e6), std::nullopt,
-       [](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; },
+      {"modal.extension_bending_s2_rad2_s2", "rad^2/s^2", ValueRange{0, 1e12}, ln_search(1e-3, 1e6),
+       std::nullopt, [](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; },
        [](TyreConfig& c, double v) { c.extension_s2 = v; }},
   };
 }
@@ -81,7 +82,7 @@ std::vector<ParameterSpec> make_catalogue() {
     for (const auto& p : e.parameters) {
       const EffectParameterRef ref = p.ref;
       out.push_back(
-          {e.key(p), p.unit, std::nullopt,
+          {e.key(p), p.unit, ValueRange{p.min, p.max}, std::nullopt,
            p.fitted ? std::optional<SearchRange>(logistic_search(p.min, p.max)) : std::nullopt,
            [ref](const TyreConfig& c) { return ref(c.effects); },
            [ref](TyreConfig& c, double v) { ref(c.effects) = v; }});
@@ -107,6 +108,14 @@ const ParameterSpec* find_parameter(std::string_view key) {
     if (p.key == key) return &p;
   }
   return nullptr;
+}
+
+const ValueRange& accepted_range(std::string_view key) {
+  const ParameterSpec* p = find_parameter(key);
+  if (!p || !p->accepted) {
+    throw std::logic_error("no accepted range for " + std::string(key));
+  }
+  return *p->accepted;
 }
 
 }  // namespace modaltyre::contact

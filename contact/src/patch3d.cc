@@ -86,7 +86,7 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
   }
 }
 
-Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const {
+Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
@@ -108,7 +108,7 @@ Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const
   };
 
   Eigen::VectorXd F;  // current iterate (empty before the first step)
-  std::vector<char> active = warm ? *warm : std::vector<char>{};
+  std::vector<char> active(warm.begin(), warm.end());
   const double gtol_rel = model_.config.solver.gap_tolerance;
   for (int it = 1; it <= settings_.max_pattern_iterations; ++it) {
     r.pattern_iterations = it;
@@ -124,10 +124,10 @@ Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const
     p.compliance_operator = &op;
     p.initial_gap = gap0;
     p.load_N = load_N;
-    const solvers::ContactSolution s =
-        solvers::solve_unilateral_contact(p, opt, active.empty() ? nullptr : &active);
+    const solvers::ContactSolution s = solvers::solve_unilateral_contact(p, opt, active);
     r.contact_iterations += s.iterations;
-    if (!s.converged()) {
+    if (!s.ok()) {
+      r.status = s.status;
       r.message = s.message;
       return r;
     }
@@ -163,6 +163,7 @@ Patch3dResult Patch3d::solve(double load_N, const std::vector<char>* warm) const
     }
     energies(F, true);
   }
+  r.status = SolveStatus::max_iterations;
   r.message = "lateral contact pattern did not settle in " +
               std::to_string(settings_.max_pattern_iterations) + " steps";
   return r;
@@ -184,7 +185,10 @@ Patch3dResult Patch3d::solve_cells(double load_N) const {
   r.load_N = load_N;
   r.contact_iterations = s.iterations;
   r.message = s.message;
-  if (!s.converged()) return r;
+  if (!s.ok()) {
+    r.status = s.status;
+    return r;
+  }
   std::vector<double> f(s.force.data(), s.force.data() + s.force.size());
   return finish(load_N, f, s.approach_m, std::move(r));
 }
@@ -192,8 +196,9 @@ Patch3dResult Patch3d::solve_cells(double load_N) const {
 std::vector<Patch3dResult> Patch3d::solve_all(const std::vector<double>& loads_N) const {
   std::vector<Patch3dResult> out;
   for (double F : loads_N) {
-    const bool warm = !out.empty() && out.back().converged;
-    out.push_back(solve(F, warm ? &out.back().section_active : nullptr));
+    const bool warm = !out.empty() && out.back().ok();
+    out.push_back(solve(
+        F, warm ? std::span<const char>(out.back().section_active) : std::span<const char>()));
   }
   return out;
 }
@@ -237,6 +242,7 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
     msg << "contact reached the edge of the candidate window (+-" << 0.5e3 * m.config.mesh.window_m
         << " mm): increase contact.window_mm";
     r.message = msg.str();
+    r.status = SolveStatus::failed;
     return r;
   }
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
@@ -324,8 +330,9 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
     e.front_x_m = edge(last, last + 1);
     r.length_m = std::max(r.length_m, e.front_x_m - e.rear_x_m);
   }
-  r.converged = std::isfinite(r.sinking_m) && std::isfinite(r.length_m);
-  if (!r.converged) r.message = "3D patch result is not finite";
+  r.status = std::isfinite(r.sinking_m) && std::isfinite(r.length_m) ? SolveStatus::converged
+                                                                     : SolveStatus::failed;
+  if (!r.ok()) r.message = "3D patch result is not finite";
   return r;
 }
 

@@ -1,6 +1,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "modaltyre/contact/parameter_spec.h"
 #include "modaltyre/contact/patch3d.h"
 
 namespace modaltyre::contact {
@@ -44,7 +45,8 @@ Patch3dSettings read_patch3d_settings(const ConfigSection& s) {
   Patch3dSettings p;
   // A tread narrower than 20 mm (a racing bicycle's) is no tyre; 1 mm ran the patch out of its
   // candidate window (exit 1).
-  p.tread_width_m = s.number("tread_width_mm", p.tread_width_m * 1e3, 20, 2000) * 1e-3;
+  const ValueRange& width = accepted_range("footprint_3d.tread_width_mm");
+  p.tread_width_m = s.number("tread_width_mm", p.tread_width_m * 1e3, width.min, width.max) * 1e-3;
   p.lateral_cell_m = s.positive("lateral_cell_mm", p.lateral_cell_m * 1e3, 200) * 1e-3;
   const double columns = p.tread_width_m / p.lateral_cell_m;
   if (columns > 2000) {

@@ -257,8 +257,8 @@ class Flexible final : public SectionLaws {
     p.compliance.diagonal().array() += t_[i];
     p.initial_gap = z_;
     p.load_N = F;
-    const auto sol = solvers::solve_unilateral_contact(p, opt_, &sec_[i].active);
-    if (!sol.converged()) {
+    const auto sol = solvers::solve_unilateral_contact(p, opt_, sec_[i].active);
+    if (!sol.ok()) {
       throw std::runtime_error("3D patch: a section's lateral contact failed: " + sol.message);
     }
     if (update) set_pattern(i, sol.active);

@@ -16,8 +16,10 @@ Prediction failed(std::string why) {
   return p;
 }
 
-std::vector<char> warm_set(std::span<const char> warm) {
-  return std::vector<char>(warm.begin(), warm.end());
+Prediction failed(SolveStatus status, std::string why) {
+  Prediction p = failed(std::move(why));
+  p.status = status;
+  return p;
 }
 
 // ---- the effect-free path: the model's own operator -------------------------------------------
@@ -25,7 +27,7 @@ std::vector<char> warm_set(std::span<const char> warm) {
 // A plain solve_footprint() result as a Prediction: the config's width, no rolling resistance.
 Prediction from_footprint(FootprintResult result, const TyreConfig& config) {
   Prediction p;
-  p.ok = result.converged;
+  p.status = result.status;
   p.message = result.message;
   p.sinking_mm = result.sinking_m * 1e3;
   p.length_mm = result.contact_length_m * 1e3;
@@ -36,10 +38,9 @@ Prediction from_footprint(FootprintResult result, const TyreConfig& config) {
 }
 
 Prediction effect_free(const TyreModel& model, const OperatingConditions& c,
-                       const std::vector<char>& warm) {
-  return from_footprint(
-      solve_footprint(model, {c.load_N, c.horizontal_force_N}, warm.empty() ? nullptr : &warm),
-      model.config);
+                       std::span<const char> warm) {
+  return from_footprint(solve_footprint(model, {c.load_N, c.horizontal_force_N}, warm),
+                        model.config);
 }
 
 // ---- the effects path, one step per effect ---------------------------------------------------
@@ -236,7 +237,7 @@ bool conditions_act(const TyreConfig& config) { return config.effects.any(); }
 Prediction predict(const TyreModel& model, const OperatingConditions& c,
                    const PredictOptions& options) {
   if (!conditions_act(model.config) && c.load_N > 0 && !model.config.footprint_3d) {
-    return effect_free(model, c, warm_set(options.warm_active));
+    return effect_free(model, c, options.warm_active);
   }
   return predict(model, parameters_of(model.config), c, options);
 }
@@ -250,7 +251,7 @@ std::vector<Prediction> predict_all(const TyreModel& model,
     PredictOptions o;
     if (chain) o.warm_active = warm;
     out.push_back(predict(model, c, o));
-    if (chain && out.back().footprint.converged) warm = out.back().footprint.active;
+    if (chain && out.back().footprint.ok()) warm = out.back().footprint.active;
   }
   return out;
 }
@@ -288,14 +289,14 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
   double width = P.tread.width_m;
   if (E.contact_width.enabled) width = std::min(width, E.contact_width.max_width_mm * 1e-3);
   Prediction out;
-  std::vector<char> warm = warm_set(options.warm_active);
+  std::vector<char> warm(options.warm_active.begin(), options.warm_active.end());
   const int max_width_iterations = E.contact_width.enabled ? 60 : 1;
   for (int it = 0; it < max_width_iterations; ++it) {
     PatchOperator op = assemble(m, assembly, P, kernels, *carcass, horizontal, scale, creep, soil,
                                 ratio, rolling, width);
     const LoadCase lc{elastic, c.horizontal_force_N * elastic / c.load_N};
-    out.footprint = solve_patch(m, std::move(op), lc, warm.empty() ? nullptr : &warm);
-    if (!out.footprint.converged) return failed(out.footprint.message);
+    out.footprint = solve_patch(m, std::move(op), lc, warm);
+    if (!out.footprint.ok()) return failed(out.footprint.status, out.footprint.message);
     warm = out.footprint.active;
     if (!E.contact_width.enabled) break;
     const double next = crown_width(E, out.footprint.sinking_m);
@@ -307,7 +308,7 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
     }
   }
   const FootprintResult& f = out.footprint;
-  out.ok = true;
+  out.status = SolveStatus::converged;
   out.elastic_load_N = elastic;
   out.sinking_mm = f.sinking_m * 1e3;
   out.length_mm = f.contact_length_m * 1e3;
@@ -335,7 +336,7 @@ double centre_line(int columns, Value value) {
 Prediction from_patch3d(const Patch3d& patch, Patch3dResult r, double elastic_load_N) {
   Prediction p;
   FootprintResult& f = p.footprint;
-  f.converged = r.converged;
+  f.status = r.status;
   f.message = r.message;
   f.iterations = r.contact_iterations;
   f.sinking_m = r.sinking_m;
@@ -366,7 +367,7 @@ Prediction from_patch3d(const Patch3d& patch, Patch3dResult r, double elastic_lo
     u.pressure_Pa = centre_line(r.columns, [&](int j) { return r.pressure_Pa(i, j); });
     f.units.push_back(u);
   }
-  p.ok = r.converged;
+  p.status = r.status;
   p.message = r.message;
   p.sinking_mm = r.sinking_m * 1e3;
   p.length_mm = r.length_m * 1e3;
@@ -408,10 +409,10 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
   }
   try {
     const Patch3d patch(m, *P.footprint_3d, physics);
-    const std::vector<char> warm = warm_set(options.warm_active);
+    const std::span<const char> warm = options.warm_active;
     const bool warm_fits = static_cast<int>(warm.size()) == patch.sections();
-    Patch3dResult r = patch.solve(elastic, warm_fits ? &warm : nullptr);
-    if (!r.converged) return failed(r.message);
+    Patch3dResult r = patch.solve(elastic, warm_fits ? warm : std::span<const char>());
+    if (!r.ok()) return failed(r.status, r.message);
     Prediction p = from_patch3d(patch, std::move(r), elastic);
     if (!std::isfinite(p.sinking_mm) || !std::isfinite(p.length_mm) || !std::isfinite(p.width_mm)) {
       return failed("prediction is not finite");

@@ -4,9 +4,19 @@
 #include <filesystem>
 #include <sstream>
 
+#include "modaltyre/contact/parameter_spec.h"
+
 namespace modaltyre::contact {
 
 namespace {
+
+/// A fitted tyre scalar SECTION.KEY, checked against the range the parameter specification
+/// (parameter_spec.h) declares for it.
+double scalar(const ConfigSection& s, const std::string& section, const std::string& key,
+              double fallback) {
+  const ValueRange& r = accepted_range(section + "." + key);
+  return s.number(key, fallback, r.min, r.max);
+}
 
 /// A value that is 0 (the feature off) or inside the physical range [min, max]; anything else
 /// is an InputError naming the key and both choices (`what_zero_or` says what they mean).
@@ -93,7 +103,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
 
   const ConfigSection tyre = root.section("tyre");
   c.name = tyre.text("name", c.name);
-  c.outer_radius_m = tyre.number("outer_radius_mm", 294.8, 50, 2000) * 1e-3;
+  c.outer_radius_m = scalar(tyre, "tyre", "outer_radius_mm", 294.8) * 1e-3;
   c.inflation_pressure_Pa = tyre.number("inflation_pressure_kPa", 230, 10, 2000) * 1e3;
   c.section_width_m = tyre.number("section_width_mm", 0, 0, 2000) * 1e-3;
   c.aspect_ratio = tyre.number("aspect_ratio", 0, 0, 2);
@@ -106,21 +116,21 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   if (!modal.has("hammer_csv")) modal.fail("hammer_csv", "required: path of the hammer data CSV");
   c.hammer_csv = tree.resolve_path(modal.text("hammer_csv", "")).string();
   c.extend_orders = modal.boolean("extend_orders", true);
-  c.compliance_scale = modal.number("compliance_scale", 1.0, 1e-3, 1e3);
+  c.compliance_scale = scalar(modal, "modal", "compliance_scale", 1.0);
   c.mesh.max_order = static_cast<int>(modal.integer("max_order", 0, 0, 100000));
   if (modal.has("extension_bending_s2_rad2_s2")) {
-    c.extension_s2 = modal.number("extension_bending_s2_rad2_s2", 0, 0, 1e12);
+    c.extension_s2 = scalar(modal, "modal", "extension_bending_s2_rad2_s2", 0);
   }
 
   const ConfigSection tread = root.section("tread");
-  c.tread.modulus_Pa = tread.number("modulus_MPa", 6.0, 1e-3, 1e4) * 1e6;
+  c.tread.modulus_Pa = scalar(tread, "tread", "modulus_MPa", 6.0) * 1e6;
   // 0 = an elastic tread; a rubber compound's loss factor is 0.02-0.3 at 1-100 Hz, so 0.01 is
   // below any tread (1e-6 made the transient's Kelvin-Voigt time constant tan(delta) / Omega so
   // short that CVODE failed, exit 1).
   c.tread.tan_delta = zero_or_number(tread, "tan_delta", c.tread.tan_delta, 0.01, 5,
                                      "0 (an elastic tread) or a rubber's loss factor");
-  c.tread.thickness_m = tread.number("thickness_mm", 8, 0.1, 200) * 1e-3;
-  c.tread.width_m = tread.number("contact_width_mm", 140, 1, 2000) * 1e-3;
+  c.tread.thickness_m = scalar(tread, "tread", "thickness_mm", 8) * 1e-3;
+  c.tread.width_m = scalar(tread, "tread", "contact_width_mm", 140) * 1e-3;
   c.tread.poisson = tread.number("poisson_ratio", c.tread.poisson, 0.0, 0.5);
 
   const ConfigSection mesh = root.section("contact");

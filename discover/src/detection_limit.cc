@@ -160,7 +160,7 @@ Eigen::VectorXd LimitFinder::signal(const Path& p, double m) const {
   std::vector<double> v = p.start;
   v[p.strength] = p.value(m);
   int failures = 0;
-  const auto r = ev_.residuals(apply(base_, p.effect, v), entries_, &failures);
+  const auto r = ev_.residuals(apply(base_, p.effect, v), entries_, failures);
   Eigen::VectorXd s(static_cast<int>(r.size()));
   for (int i = 0; i < s.size(); ++i) s(i) = r[i] - residuals_[i];
   if (failures > 0) s.setConstant(std::nan(""));

@@ -221,8 +221,31 @@ std::string number_text(double v) {
 
 }  // namespace
 
+void DiscoverOptions::validate() const {
+  auto refuse = [](const char* option, const char* key, const std::string& why) {
+    throw InputError({option, 0, key}, why);
+  };
+  auto range = [](double v, double lo, double hi) {
+    std::ostringstream s;
+    s << "value " << v << " is out of range [" << lo << ", " << hi << "]";
+    return s.str();
+  };
+  if (!std::isfinite(unit_length_mm)) {
+    refuse("--unit-length-mm", "unit_length_mm", "must be a finite number");
+  }
+  if (unit_length_mm < 0 || unit_length_mm > 50) {
+    refuse("--unit-length-mm", "unit_length_mm", range(unit_length_mm, 0, 50));
+  }
+  if (max_effects < 1 || max_effects > 9) {
+    refuse("--max-effects", "max_effects", range(max_effects, 1, 9));
+  }
+  if (threads < 0 || threads > 4096) refuse("--threads", "threads", range(threads, 0, 4096));
+  if (fit.exact_rows < 4) refuse("--exact-rows", "exact_rows", range(fit.exact_rows, 4, 1e6));
+}
+
 DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
                         const DiscoverOptions& opt) {
+  opt.validate();
   if (data.rows.size() < 4) {
     throw InputError({data.path, 0, "load_N"},
                      "discover needs at least 4 measured rows (" +
@@ -265,7 +288,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   const auto all_entries = ev.entries(all);
   int config_failures = 0;
   rep.gap_config =
-      rms_by_observable(data, all_entries, ev.residuals(eval, all_entries, &config_failures));
+      rms_by_observable(data, all_entries, ev.residuals(eval, all_entries, config_failures));
 
   if (static_cast<int>(data.rows.size()) <= opt.fit.exact_rows) {
     rep.method = "exact";

@@ -173,7 +173,7 @@ FitResult fit_variant_many_rows(const Evaluator& ev, const TyreConfig& base, con
     evaluations += k;
   }
   best.evaluations = evaluations;
-  best.converged = settled;
+  best.status = settled ? SolveStatus::converged : SolveStatus::max_iterations;
   Eigen::MatrixXd J_values = J;
   for (int j = 0; j < k; ++j) J_values.col(j) /= search_derivative(v.parameters[j], u(j));
   best.standard_errors = standard_errors(ev.data(), best, J_values);
@@ -240,7 +240,7 @@ FitAndCv fit_and_cross_validate(const Evaluator& ev, const TyreConfig& base, con
   std::iota(all.begin(), all.end(), 0);
   FitAndCv out;
   if (n <= options.exact_rows) {
-    out.fit = fit_variant(ev, base, v, all, nullptr, true);
+    out.fit = fit_variant(ev, base, v, all, std::nullopt, true);
     if (tick) tick();
     out.cv = cross_validate(ev, base, v, out.fit);
   } else {

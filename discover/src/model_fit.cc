@@ -131,7 +131,7 @@ std::vector<Evaluator::Entry> Evaluator::entries(const std::vector<int>& rows) c
 }
 
 std::vector<double> Evaluator::residuals(const TyreConfig& config, const std::vector<Entry>& e,
-                                         int* failures) const {
+                                         int& failures) const {
   std::vector<std::size_t> starts;  // first entry of each row's group
   for (std::size_t i = 0; i < e.size(); ++i) {
     if (i == 0 || e[i].row != e[i - 1].row) starts.push_back(i);
@@ -150,15 +150,15 @@ std::vector<double> Evaluator::residuals(const TyreConfig& config, const std::ve
     const int row = e[starts[g]].row;
     const auto& mr = data_.rows[row];
     const contact::Prediction p = contact::predict(model_, parameters, mr.conditions);
-    if (!p.ok) ++failed;
+    if (!p.ok()) ++failed;
     for (std::size_t i = starts[g]; i < starts[g + 1]; ++i) {
       const std::string& obs = data_.observables[e[i].observable];
       const double meas = mr.observed.at(obs);
-      out[i] = p.ok ? (p.observable(obs) - meas) / std::abs(meas) : kFailureResidual;
+      out[i] = p.ok() ? (p.observable(obs) - meas) / std::abs(meas) : kFailureResidual;
     }
   }
   predictions_.fetch_add(groups, std::memory_order_relaxed);
-  if (failures) *failures = failed;
+  failures = failed;
   return out;
 }
 
@@ -250,7 +250,7 @@ FitResult evaluate_fit(const Evaluator& ev, const TyreConfig& base, const Varian
   fr.values = values;
   fr.config = apply(base, v, fr.values);
   fr.entries = entries;
-  fr.residuals = ev.residuals(fr.config, entries, &fr.failures);
+  fr.residuals = ev.residuals(fr.config, entries, fr.failures);
   fr.rms = rms_by_observable(ev.data(), entries, fr.residuals);
   fr.rms_all = rms_of(fr.residuals);
   fr.bic = bic(entries, fr.residuals, static_cast<int>(ev.data().observables.size()),
@@ -260,7 +260,7 @@ FitResult evaluate_fit(const Evaluator& ev, const TyreConfig& base, const Varian
 }
 
 FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant& v,
-                      const std::vector<int>& rows, const std::vector<double>* start,
+                      const std::vector<int>& rows, std::optional<std::span<const double>> start,
                       bool with_errors) {
   const auto entries = ev.entries(rows);
   const auto& ps = v.parameters;
@@ -319,7 +319,7 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
   if (with_errors) {
     fr.standard_errors = standard_errors(ev.data(), fr, jacobian(ev, base, v, fr.values, entries));
   }
-  fr.converged = lm.converged;
+  fr.status = lm.status;
   return fr;
 }
 
@@ -339,7 +339,7 @@ CrossValidation cross_validate(const Evaluator& ev, const TyreConfig& base, cons
   for (int f = 0; f < cv.folds; ++f) {
     std::vector<int> train, test;
     for (int r = 0; r < n; ++r) (r % cv.folds == f ? test : train).push_back(r);
-    const FitResult fit = fit_variant(ev, base, v, train, &full.values);
+    const FitResult fit = fit_variant(ev, base, v, train, full.values);
     cv.evaluations += fit.evaluations;
     const auto test_entries = ev.entries(test);
     const auto r = ev.residuals(fit.config, test_entries);

@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   try {
     const auto model = modaltyre::contact::build_tyre_model(modaltyre::contact::load_tyre_config(argv[1]));
     const auto r = modaltyre::contact::solve_footprint(model, {std::atof(argv[2]), 0.0});
-    if (!r.converged) {
+    if (!r.ok()) {
       std::fprintf(stderr, "no convergence: %s\n", r.message.c_str());
       return 1;
     }

@@ -61,7 +61,7 @@ double peak_pressure_Pa(const contact::Prediction& p) {
 
 void require_converged(const std::vector<contact::Prediction>& cases) {
   for (const auto& p : cases) {
-    if (!p.ok) {
+    if (!p.ok()) {
       const auto& r = p.footprint;
       std::ostringstream msg;
       msg << "load case " << r.load.load_N << " N did not converge after " << r.iterations
@@ -118,7 +118,7 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
                      {"peak_pressure_kPa", round_sig(peak * 1e-3)},
                      {"width_mm", round_sig(p.width_mm)},
                      {"rolling_resistance_N", round_sig(p.rolling_resistance_N)},
-                     {"converged", r.converged},
+                     {"converged", r.ok()},
                      {"iterations", r.iterations},
                      {"residuals",
                       {{"vertical_equilibrium", r.equilibrium_residual},

@@ -82,7 +82,7 @@ nlohmann::json validation_json(const studies::ValidationReport& rep) {
             {"initial", initial},
             {"at_bound", at_bound},
             {"rms_rel_residual", round_sig(c.rms_rel_residual, 8)},
-            {"converged", c.converged},
+            {"converged", c.ok()},
             {"evaluations", c.evaluations}}}};
 }
 

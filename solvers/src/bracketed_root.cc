@@ -19,13 +19,13 @@ RootResult illinois_root(const std::function<std::optional<double>(double)>& f, 
     ++r.iterations;
     const std::optional<double> fc = f(c);
     if (!fc) {
-      r.status = RootStatus::aborted;
+      r.status = SolveStatus::aborted;
       return r;
     }
     r.x = c;
     r.fx = *fc;
     if (std::abs(*fc) <= options.tolerance) {
-      r.status = RootStatus::converged;
+      r.status = SolveStatus::converged;
       return r;
     }
     // Replace the end of c's sign; when the same end moves twice running, halve the other
@@ -40,7 +40,7 @@ RootResult illinois_root(const std::function<std::optional<double>(double)>& f, 
       side = 1;
     }
   }
-  r.status = RootStatus::max_iterations;
+  r.status = SolveStatus::max_iterations;
   return r;
 }
 

@@ -26,7 +26,7 @@ LeastSquaresResult levenberg_marquardt(
     }
     const Eigen::VectorXd g = J.transpose() * r;
     if (g.lpNorm<Eigen::Infinity>() < opt.gradient_tolerance) {
-      res.converged = true;
+      res.status = SolveStatus::converged;
       res.message = "gradient below tolerance";
       break;
     }
@@ -49,7 +49,7 @@ LeastSquaresResult levenberg_marquardt(
         lambda = std::max(lambda / 3, 1e-12);
         improved = true;
         if (small) {
-          res.converged = true;
+          res.status = SolveStatus::converged;
           res.message = "step below tolerance";
         }
       } else {
@@ -57,12 +57,13 @@ LeastSquaresResult levenberg_marquardt(
       }
     }
     if (!improved) {
-      res.converged = true;  // no descent direction left at finite-difference precision
+      // No descent direction left at finite-difference precision.
+      res.status = SolveStatus::converged;
       res.message = "no further decrease";
     }
-    if (res.converged) break;
+    if (res.ok()) break;
   }
-  if (!res.converged) res.message = "iteration limit reached";
+  if (!res.ok()) res.message = "iteration limit reached";
   res.x = x;
   res.residual = r;
   res.cost = cost;

@@ -8,18 +8,6 @@
 
 namespace modaltyre::solvers {
 
-const char* to_string(ContactStatus s) {
-  switch (s) {
-    case ContactStatus::converged:
-      return "converged";
-    case ContactStatus::max_iterations:
-      return "iteration limit reached";
-    case ContactStatus::singular:
-      return "singular compliance on the contact set";
-  }
-  return "unknown";
-}
-
 namespace {
 
 struct RestrictedSolve {
@@ -157,7 +145,7 @@ Eigen::VectorXd gaps(const ContactProblem& p, const ComplianceOperator& C,
 }  // namespace
 
 ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactOptions& opt,
-                                         const std::vector<char>* warm_active) {
+                                         std::span<const char> warm_active) {
   const int m = static_cast<int>(p.initial_gap.size());
   const DenseCompliance dense(p.compliance);
   const ComplianceOperator& C = p.compliance_operator
@@ -170,7 +158,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
   MODALTYRE_CHECK(p.load_N > 0, "contact load must be positive");
   ContactSolution sol;
   std::vector<char> in(m, 0);
-  if (warm_active && static_cast<int>(warm_active->size()) == m) in = *warm_active;
+  if (static_cast<int>(warm_active.size()) == m) in.assign(warm_active.begin(), warm_active.end());
   if (std::find(in.begin(), in.end(), 1) == in.end()) {
     // Cold start: the set a Winkler layer with each point's own compliance C_ii would load,
     // f_i = (delta - s_i)_+ / C_ii with sum f = F (a short patch; the iteration grows it).
@@ -202,7 +190,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
       if (in[i]) S.push_back(i);
     const RestrictedSolve rs = solve_on_set(p, C, S, ws);
     if (!rs.ok) {
-      sol.status = ContactStatus::singular;
+      sol.status = SolveStatus::singular;
       sol.message = "the compliance restricted to " + std::to_string(S.size()) +
                     " contact points is not positive definite";
       return sol;
@@ -226,7 +214,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
       }
     }
     if (next == in) {
-      sol.status = ContactStatus::converged;
+      sol.status = SolveStatus::converged;
       sol.force = f.cwiseMax(0.0);
       sol.gap = g;
       for (int i = 0; i < m; ++i)
@@ -262,7 +250,7 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
     }
     in = std::move(next);
   }
-  sol.status = ContactStatus::max_iterations;
+  sol.status = SolveStatus::max_iterations;
   sol.force = f;
   sol.message = "active set did not settle in " + std::to_string(opt.max_iterations) +
                 " iterations";

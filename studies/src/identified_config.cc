@@ -271,7 +271,7 @@ CarcassLevel calibrate_carcass_level(const IdentifiedSource& source, const Confi
   at.pressure_kPa = level.fed.inflation_pressure_Pa * 1e-3;
   level.cal =
       calibrate_compliance_scale(*level.model, contact::parameters_of(level.fed), at, target_mm);
-  if (!level.cal.converged)
+  if (!level.cal.ok())
     throw ComputationError("identify " + source.method + " --into-config: " + level.cal.message);
   level.fed.compliance_scale = level.cal.compliance_scale;
   return level;
@@ -293,7 +293,7 @@ void map_load_deflection(const IdentifiedSource& source, const rh::LoadDeflectio
     c.pressure_kPa = r.pressure_Pa * 1e-3;
     const contact::Prediction p =
         contact::predict(*level.model, contact::parameters_of(level.fed), c);
-    if (!p.ok)
+    if (!p.ok())
       throw ComputationError("identify load-deflection --into-config: footprint at " +
                              number_text(r.load_N) + " N: " + p.message);
     const double e = p.sinking_mm / (r.deflection_m * 1e3) - 1;
@@ -332,7 +332,7 @@ void map_contact_stress(const IdentifiedSource& source, const rh::ContactStressR
   const CarcassLevel level = calibrate_carcass_level(source, t, res.load_N, res.deflection_m * 1e3);
   const contact::Prediction p = contact::predict(*level.model, contact::parameters_of(level.fed),
                                                  level.fed.default_conditions(res.load_N));
-  if (!p.ok)
+  if (!p.ok())
     throw ComputationError("identify contact-stress --into-config: footprint at " +
                            number_text(res.load_N) + " N: " + p.message);
   note_carcass_level(level, t,

@@ -38,7 +38,7 @@ ScaleCalibration calibrate_compliance_scale(const TyreModel& model,
     trial.compliance_scale = std::exp(log_scale);
     const Prediction p = predict(model, trial, at);
     ++out.evaluations;
-    if (!p.ok) {
+    if (!p.ok()) {
       out.message = "footprint at compliance_scale " + std::to_string(trial.compliance_scale) +
                     " did not converge: " + p.message;
       return false;
@@ -80,7 +80,7 @@ ScaleCalibration calibrate_compliance_scale(const TyreModel& model,
     }
   }
   if (sa == target_sinking_mm || sb == target_sinking_mm) {
-    out.converged = true;
+    out.status = SolveStatus::converged;
     out.compliance_scale = std::exp(sa == target_sinking_mm ? a : b);
     out.sinking_mm = target_sinking_mm;
     return out;
@@ -98,11 +98,12 @@ ScaleCalibration calibrate_compliance_scale(const TyreModel& model,
   io.max_iterations = 100;
   const solvers::RootResult root =
       solvers::illinois_root(f, a, sa - target_sinking_mm, b, sb - target_sinking_mm, io);
-  if (root.status == solvers::RootStatus::aborted) return out;
+  if (root.status == SolveStatus::aborted) return out;
   if (root.ok()) {
-    out.converged = true;
+    out.status = SolveStatus::converged;
     return out;
   }
+  out.status = SolveStatus::max_iterations;
   out.message = "compliance_scale did not settle in 100 footprints (last sinking " +
                 mm(out.sinking_mm) + ", target " + mm(target_sinking_mm) + ")";
   return out;

@@ -28,7 +28,7 @@ SweepRow failed_row(const std::string& why) {
 SweepRow row_from(const Prediction& p, const OperatingConditions& c) {
   SweepRow row;
   row.iterations = p.footprint.iterations;
-  if (!p.ok) {
+  if (!p.ok()) {
     row.message = p.message.empty() ? "did not converge" : p.message;
     return row;
   }
@@ -74,7 +74,7 @@ std::vector<char> reference_contact_set(const SweepPlan& plan,
     return la != lb ? la < lb : a < b;
   });
   const Prediction ref = solve_case(model, plan.cases[by_load[by_load.size() / 2]], {});
-  return ref.ok ? ref.footprint.active : std::vector<char>{};
+  return ref.ok() ? ref.footprint.active : std::vector<char>{};
 }
 
 void build_slot(const SweepPlan& plan, std::size_t mi, const std::vector<std::size_t>& cases,
@@ -124,7 +124,7 @@ SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
   std::vector<std::vector<std::size_t>> all_of(plan.models.size()), run_of(plan.models.size());
   for (std::size_t i = 0; i < plan.cases.size(); ++i) all_of[plan.cases[i].model].push_back(i);
   if (options.only_cases) {
-    for (std::size_t i : *options.only_cases) {
+    for (const std::size_t i : *options.only_cases) {
       MODALTYRE_CHECK(i < plan.cases.size(), "sweep share names a case outside the plan");
       run_of[plan.cases[i].model].push_back(i);
     }

@@ -43,7 +43,7 @@ std::vector<Prediction> predict_rows(const TyreModel& model, const std::vector<M
 
 void require_converged(const std::vector<Prediction>& res, const std::string& stage) {
   for (const auto& p : res) {
-    if (!p.ok) {
+    if (!p.ok()) {
       std::ostringstream m;
       m << stage << ": load case " << p.footprint.load.load_N
         << " N did not converge: " << p.message;
@@ -181,7 +181,7 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
     lso.cost_tolerance = 1e-8;
     const auto fit = solvers::levenberg_marquardt(residual, x, lso);
     x = fit.x;
-    cal.converged = fit.converged;
+    cal.status = fit.status;
     cal.evaluations = fit.evaluations;
     cal.rms_rel_residual =
         fit.residual.size() ? std::sqrt(fit.residual.squaredNorm() / fit.residual.size()) : 0.0;

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include "modaltyre/contact/effects.h"
@@ -95,6 +96,51 @@ TEST(ParameterSpec, SearchRangesAreOrderedAndLogarithmicOnlyWhenPositive) {
   }
   EXPECT_GT(keys, 8);
   EXPECT_EQ(find_parameter("tread.no_such_key"), nullptr);
+}
+
+// The reader accepts a key's whole declared range, refuses the values just outside it (naming
+// the key), and every search range lies inside it (a fit never proposes a value the reader
+// would refuse).
+TEST(ParameterSpec, TheConfigReaderAcceptsExactlyTheDeclaredRange) {
+  int bounded = 0;
+  for (const auto& p : parameter_catalogue()) {
+    if (!p.accepted) continue;
+    ++bounded;
+    const ValueRange& a = *p.accepted;
+    EXPECT_EQ(&accepted_range(p.key), &a) << p.key;
+    EXPECT_LT(a.min, a.max) << p.key;
+    for (const auto& r : {p.calibration, p.fit}) {
+      if (!r) continue;
+      EXPECT_LE(a.min, r->min) << p.key;
+      EXPECT_GE(a.max, r->max) << p.key;
+    }
+    const std::string& path = p.key.rfind("footprint_3d.", 0) == 0 ? kConfig3d : kConfig2d;
+    // At a bound another check may refuse the config (a 50 mm radius is shorter than the
+    // candidate window), never the range check.
+    for (double v : {a.min, a.max}) {
+      try {
+        load_tyre_config(path, {p.key + "=" + exact(v)});
+      } catch (const modaltyre::InputError& e) {
+        EXPECT_EQ(std::string(e.what()).find("out of range"), std::string::npos) << e.what();
+      }
+    }
+    const double below = std::nextafter(a.min, -HUGE_VAL);
+    const double above = std::nextafter(a.max, HUGE_VAL);
+    for (double v : {below, above}) {
+      try {
+        load_tyre_config(path, {p.key + "=" + exact(v)});
+        ADD_FAILURE() << p.key << "=" << exact(v) << " accepted";
+      } catch (const modaltyre::InputError& e) {
+        const std::string leaf = p.key.substr(p.key.rfind('.') + 1);
+        EXPECT_NE(std::string(e.what()).find(leaf), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("out of range"), std::string::npos) << e.what();
+      }
+    }
+  }
+  EXPECT_GE(bounded, 7);  // the tyre scalars but the crown radius, and every effect parameter
+  EXPECT_FALSE(find_parameter("footprint_3d.crown.radius_mm")->accepted);
+  EXPECT_THROW(accepted_range("footprint_3d.crown.radius_mm"), std::logic_error);
+  EXPECT_THROW(accepted_range("tread.no_such_key"), std::logic_error);
 }
 
 TEST(ParameterSpec, DiscoverSearchesInLogarithmsFromAFactorOfOneHundred) {

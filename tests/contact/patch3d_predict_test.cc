@@ -32,7 +32,7 @@ TEST(Patch3dPredict, AConfigWithFootprint3dIsPredictedOnThePatchBitForBit) {
   const auto predicted = predict_all(s.model, cases);
   for (std::size_t k = 0; k < loads.size(); ++k) {
     const Prediction& p = predicted[k];
-    ASSERT_TRUE(p.ok) << p.message;
+    ASSERT_TRUE(p.ok()) << p.message;
     ASSERT_NE(p.patch3d, nullptr);
     EXPECT_EQ(p.sinking_mm, direct[k].sinking_m * 1e3);
     EXPECT_EQ(p.length_mm, direct[k].length_m * 1e3);
@@ -57,7 +57,7 @@ TEST(Patch3dPredict, EffectsOnTheCarcassLevelEqualTheScaledCompliance) {
       s, {"effects.load_stiffening.enabled=true", "effects.load_stiffening.exponent=0.25"}, F);
   const Prediction scaled = predict_with(
       s, {"modal.compliance_scale=" + std::to_string(0.93589 * std::pow(F / F_ref, -gamma))}, F);
-  ASSERT_TRUE(stiffened.ok && scaled.ok);
+  ASSERT_TRUE(stiffened.ok() && scaled.ok());
   EXPECT_NEAR(stiffened.sinking_mm, scaled.sinking_mm, 1e-5 * scaled.sinking_mm);
   EXPECT_NEAR(stiffened.width_mm, scaled.width_mm, 1e-5 * scaled.width_mm);
   // inflation_pressure at the modal test's pressure changes nothing.
@@ -76,7 +76,7 @@ TEST(Patch3dPredict, TreadCreepEqualsASofterCompound) {
   const Prediction crept = predict_with(s, {"effects.tread_relaxation.enabled=true"}, 5000, &held);
   const Prediction softer =
       predict_with(s, {"tread.modulus_MPa=" + std::to_string(3.0 / creep)}, 5000);
-  ASSERT_TRUE(crept.ok && softer.ok);
+  ASSERT_TRUE(crept.ok() && softer.ok());
   EXPECT_NEAR(crept.sinking_mm, softer.sinking_mm, 1e-6 * softer.sinking_mm);
   EXPECT_NEAR(crept.width_mm, softer.width_mm, 1e-6 * softer.width_mm);
   EXPECT_GT(crept.sinking_mm, predict_with(s, {}, 5000).sinking_mm);
@@ -87,7 +87,7 @@ TEST(Patch3dPredict, DryFrictionShiftsTheElasticLoad) {
   const Prediction loading = predict_with(
       s, {"effects.dry_friction.enabled=true", "effects.dry_friction.friction_force_N=300"}, 5000);
   const Prediction elastic = predict_with(s, {}, 4700);
-  ASSERT_TRUE(loading.ok && elastic.ok);
+  ASSERT_TRUE(loading.ok() && elastic.ok());
   EXPECT_EQ(loading.sinking_mm, elastic.sinking_mm);
   EXPECT_EQ(loading.width_mm, elastic.width_mm);
   EXPECT_EQ(loading.elastic_load_N, 4700);
@@ -101,7 +101,7 @@ TEST(Patch3dPredict, SoilActsOnlyOnRowsOnSoilAndSinksTheTyreFurther) {
   on_soil.surface = Surface::soil;
   const Prediction rigid = predict_with(s, soil, 5000);
   const Prediction soft = predict_with(s, soil, 5000, &on_soil);
-  ASSERT_TRUE(rigid.ok && soft.ok);
+  ASSERT_TRUE(rigid.ok() && soft.ok());
   EXPECT_EQ(rigid.sinking_mm, predict_with(s, {}, 5000).sinking_mm);
   EXPECT_GT(soft.sinking_mm, rigid.sinking_mm);
   EXPECT_GE(soft.width_mm, rigid.width_mm);  // a softer foundation under the cells spreads them
@@ -112,7 +112,7 @@ TEST(Patch3dPredict, BeltFlatteningStiffensTheCarcass) {
   const Prediction stiff = predict_with(
       s, {"effects.belt_flattening.enabled=true", "effects.belt_flattening.stiffness_MPa=5"}, 5000);
   const Prediction plain = predict_with(s, {}, 5000);
-  ASSERT_TRUE(stiff.ok && plain.ok);
+  ASSERT_TRUE(stiff.ok() && plain.ok());
   EXPECT_LT(stiff.sinking_mm, plain.sinking_mm);
 }
 
@@ -152,12 +152,12 @@ TEST(Patch3dPredict, APredictionAskedForARefusedEffectFailsWithTheReason) {
   TyreParameters p = parameters_of(s.tyre);
   p.effects.contact_width.enabled = true;  // as a discover variant would
   const Prediction r = predict(s.model, p, s.tyre.default_conditions(5000));
-  EXPECT_FALSE(r.ok);
+  EXPECT_FALSE(r.ok());
   EXPECT_NE(r.message.find("superseded"), std::string::npos) << r.message;
   OperatingConditions pulled = s.tyre.default_conditions(5000);
   pulled.horizontal_force_N = 500;
   const Prediction h = predict(s.model, pulled);
-  EXPECT_FALSE(h.ok);
+  EXPECT_FALSE(h.ok());
   EXPECT_NE(h.message.find("horizontal force"), std::string::npos) << h.message;
 }
 

@@ -32,8 +32,8 @@ TEST(Patch3d, FlatCrownReproducesThe2DPatchTimesWidth) {
   for (double F : {2131.0, 5478.0, 8321.0}) {
     const Patch3dResult r3 = patch.solve(F);
     const FootprintResult r2 = solve_footprint(s.model, {F, 0});
-    ASSERT_TRUE(r3.converged) << r3.message;
-    ASSERT_TRUE(r2.converged) << r2.message;
+    ASSERT_TRUE(r3.ok()) << r3.message;
+    ASSERT_TRUE(r2.ok()) << r2.message;
     EXPECT_NEAR(r3.sinking_m, r2.sinking_m, kExact * r2.sinking_m);
     EXPECT_DOUBLE_EQ(r3.width_m, 0.150);
     // Unit forces and pressures: the 2D units in contact are the 3D sections in contact.
@@ -88,7 +88,7 @@ TEST(Patch3d, RigidTorusOnAWinklerTreadGivesTheEllipse) {
   const double k = T.modulus_Pa / T.thickness_m;
   const double delta = std::sqrt(F / (k * M_PI * std::sqrt(R0 * Rc)));
   const Patch3dResult r = patch.solve(F);
-  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_TRUE(r.ok()) << r.message;
   EXPECT_NEAR(r.sinking_m, delta, 0.01 * delta);
   EXPECT_NEAR(r.length_m, 2 * std::sqrt(2 * R0 * delta), 0.01 * r.length_m);
   EXPECT_NEAR(r.width_m, 2 * std::sqrt(2 * Rc * delta), 0.01 * r.width_m);
@@ -119,7 +119,7 @@ TEST(Patch3d, PressureMapRowsPerYAndCroppedToTheContact) {
   const Tyre3d s(kCoarse);
   const Patch3d patch(s.model, s.patch);
   const Patch3dResult r = patch.solve(5478);
-  ASSERT_TRUE(r.converged);
+  ASSERT_TRUE(r.ok());
   const PressureMap map = pressure_map(r, 2);
   ASSERT_EQ(map.y_mm.size(), std::size_t(r.columns));
   ASSERT_EQ(map.pressure_kPa.size(), map.y_mm.size());
@@ -146,7 +146,7 @@ TEST(Patch3d, WidthGrowsWithLoadUpToTheTreadWidth) {
   const Patch3d patch(s.model, s.patch);
   double last = 0;
   for (const auto& r : patch.solve_all({1000, 3000, 6000, 12000, 20000})) {
-    ASSERT_TRUE(r.converged) << r.message;
+    ASSERT_TRUE(r.ok()) << r.message;
     EXPECT_GE(r.width_m, last);
     EXPECT_LE(r.width_m, s.patch.tread_width_m + 1e-15);
     last = r.width_m;

@@ -36,11 +36,11 @@ TEST(Validity, Table3LoadsAreInsideAndThirtyKilonewtonsOutside) {
   const TyreModel model = build_tyre_model(cfg);
   for (double load : {2131.0, 8321.0}) {
     const Prediction p = predict(model, cfg.default_conditions(load));
-    ASSERT_TRUE(p.ok) << p.message;
+    ASSERT_TRUE(p.ok()) << p.message;
     EXPECT_TRUE(validity(cfg, p.footprint.sinking_m, p.footprint.contact_length_m).valid) << load;
   }
   const Prediction p = predict(model, cfg.default_conditions(30000));
-  ASSERT_TRUE(p.ok) << p.message;
+  ASSERT_TRUE(p.ok()) << p.message;
   EXPECT_GT(p.sinking_mm, 70);
   const Validity v = validity(cfg, p.footprint.sinking_m, p.footprint.contact_length_m);
   EXPECT_FALSE(v.valid);

@@ -109,7 +109,7 @@ class ManyRows : public ::testing::Test {
     Evaluator ev(*model_, *data_);
     const auto rows = all_rows(*data_);
     const long before = ev.predictions();
-    const FitResult exact = fit_variant(ev, *config_, v, rows, nullptr, true);
+    const FitResult exact = fit_variant(ev, *config_, v, rows, std::nullopt, true);
     const CrossValidation exact_cv = cross_validate(ev, *config_, v, exact);
     const long exact_cost = ev.predictions() - before;
 

@@ -81,7 +81,7 @@ inline studies::MeasurementSet make_data(const Planted& p, const std::string& na
   out.precision(10);
   for (const auto& c : p.rows) {
     const contact::Prediction pr = contact::predict(gen, contact::parameters_of(truth), c);
-    EXPECT_TRUE(pr.ok) << pr.message;
+    EXPECT_TRUE(pr.ok()) << pr.message;
     out << c.load_N << "," << c.pressure_kPa << "," << c.hold_s << "," << c.speed_kmh << ","
         << contact::branch_name(c.branch) << "," << contact::surface_name(c.surface);
     for (const auto& o : p.observables) out << "," << pr.observable(o) * (1 + p.noise * unit(rng));

@@ -12,6 +12,7 @@
 namespace {
 
 using namespace modaltyre::solvers;
+using modaltyre::SolveStatus;
 
 TEST(IllinoisRoot, FindsSqrtTwoInsideTheBracket) {
   std::vector<double> xs;
@@ -64,7 +65,7 @@ TEST(IllinoisRoot, StopsWhenTheFunctionGivesUpOrTheIterationsRunOut) {
     return x * x * x - 0.5;
   };
   const RootResult aborted = illinois_root(fails_third, 0, -0.5, 1, 0.5);
-  EXPECT_EQ(aborted.status, RootStatus::aborted);
+  EXPECT_EQ(aborted.status, SolveStatus::aborted);
   EXPECT_FALSE(aborted.ok());
   EXPECT_EQ(aborted.iterations, 3);
 
@@ -73,7 +74,7 @@ TEST(IllinoisRoot, StopsWhenTheFunctionGivesUpOrTheIterationsRunOut) {
   o.max_iterations = 2;
   const RootResult out = illinois_root(
       [](double x) -> std::optional<double> { return x * x * x - 0.5; }, 0, -0.5, 1, 0.5, o);
-  EXPECT_EQ(out.status, RootStatus::max_iterations);
+  EXPECT_EQ(out.status, SolveStatus::max_iterations);
   EXPECT_EQ(out.iterations, 2);
   EXPECT_GT(out.x, 0.0);
   EXPECT_LT(out.x, 1.0);

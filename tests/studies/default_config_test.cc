@@ -37,7 +37,7 @@ std::vector<Prediction> predicted_at(const TyreModel& model, const std::vector<d
   std::vector<OperatingConditions> cases;
   for (double F : loads_N) cases.push_back(model.config.default_conditions(F));
   auto out = predict_all(model, cases);
-  for (const auto& p : out) EXPECT_TRUE(p.ok) << p.message;
+  for (const auto& p : out) EXPECT_TRUE(p.ok()) << p.message;
   return out;
 }
 

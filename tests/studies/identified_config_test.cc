@@ -65,7 +65,7 @@ class studies_IdentifiedConfig : public ::testing::Test {
     contact::OperatingConditions at = c.default_conditions(load_N);
     at.pressure_kPa = c.inflation_pressure_Pa * 1e-3;
     const contact::Prediction p = contact::predict(model, contact::parameters_of(c), at);
-    EXPECT_TRUE(p.ok) << p.message;
+    EXPECT_TRUE(p.ok()) << p.message;
     return p.sinking_mm;
   }
 

@@ -135,7 +135,7 @@ TEST(Sweep, RowsEqualIndividualFootprintSolves) {
         load_tyre_config(kConfig, {mi == 0 ? "tread.modulus_MPa=5" : "tread.modulus_MPa=7"}));
     for (std::size_t i = 6 * mi; i < 6 * mi + 6; ++i) {
       const auto ref = solve_footprint(model, plan.cases[i].load);
-      ASSERT_TRUE(ref.converged);
+      ASSERT_TRUE(ref.ok());
       double peak = 0;
       for (const auto& u : ref.units) peak = std::max(peak, u.pressure_Pa);
       // Cold starts follow the very same path as solve_footprint: bit for bit.
@@ -272,7 +272,7 @@ TEST(SweepShare, SharesPartitionThePlanAndReassembleToTheSingleProcessCsv) {
         }
 
         SweepOptions part = whole;
-        part.only_cases = &share;
+        part.only_cases = share;
         const SweepResult mine = run_sweep(plan, part);
         EXPECT_EQ(mine.failed, 0u);
         for (auto i : share) {
@@ -474,7 +474,7 @@ TEST(SweepEffects, CsvReadsBackAsMeasuredDataThatThePredictorReproduces) {
   const TyreModel model = build_tyre_model(plan.models[1]);
   for (std::size_t i = 8; i < 16; i += 3) {
     const Prediction p = predict(model, parameters_of(plan.models[1]), set.rows[i].conditions);
-    ASSERT_TRUE(p.ok) << p.message;
+    ASSERT_TRUE(p.ok()) << p.message;
     EXPECT_NEAR(p.sinking_mm, set.rows[i].observed.at("sinking_mm"), 1e-9 * p.sinking_mm);
     EXPECT_NEAR(p.length_mm, set.rows[i].observed.at("length_mm"), 1e-9 * p.length_mm);
   }

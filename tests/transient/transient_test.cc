@@ -113,7 +113,7 @@ TEST(TransientTest, LoadHoldWithoutRelaxationEndsAtStaticFootprint) {
     const TransientResult r = run_transient(M, Scenario::load_hold);
     ASSERT_TRUE(r.ok()) << r.message;
     const FootprintResult s = solve_footprint(M.tyre, LoadCase{4000, 0});
-    ASSERT_TRUE(s.converged);
+    ASSERT_TRUE(s.ok());
     // Mean over the last 0.2 s (about four periods of the lightly damped hub bounce).
     const double T = r.simulated_s;
     const double sink = mean_over(r, T - kBlock_s, T, [](auto& x) { return x.sinking_m; });

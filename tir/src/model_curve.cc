@@ -65,7 +65,7 @@ ModelCurve sample_model(const contact::TyreModel& model, const std::vector<doubl
   curve.width_reason = model_width_reason(model.config);
   for (std::size_t i = 0; i < predictions.size(); ++i) {
     const auto& p = predictions[i];
-    if (!p.ok) {
+    if (!p.ok()) {
       throw ComputationError("footprint at " + std::to_string(loads_N[i]) +
                              " N did not converge: " + p.message);
     }

@@ -239,7 +239,7 @@ TruncationError truncation_error(const TransientModel& model, double load_N) {
       contact::solve_patch(model.tyre, contact::static_operator(model.tyre, 0.0), load);
   const FootprintResult approx =
       contact::solve_patch(truncated, contact::static_operator(truncated, 0.0), load);
-  if (!exact.converged || !approx.converged)
+  if (!exact.ok() || !approx.ok())
     throw ComputationError("truncation_error: footprint did not converge");
   e.sinking_rel = approx.sinking_m / exact.sinking_m - 1.0;
   e.length_rel = approx.contact_length_m / exact.contact_length_m - 1.0;

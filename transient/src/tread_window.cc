@@ -26,7 +26,7 @@ StaticContact static_contact(const TransientModel& M, double load_N) {
   if (load_N <= 0) return StaticContact{Eigen::VectorXd::Zero(M.m), 0.0};
   const contact::FootprintResult fr =
       contact::solve_footprint(M.tyre, contact::LoadCase{load_N, 0});
-  if (!fr.converged) throw ComputationError("static initial state: " + fr.message);
+  if (!fr.ok()) throw ComputationError("static initial state: " + fr.message);
   return contact_of(M, fr);
 }
 
@@ -39,7 +39,7 @@ std::optional<StaticContact> bounding_contact(const TransientModel& M, const Sce
   // A load beyond what the window's footprint carries: no bound (every unit is kept).
   const contact::FootprintResult fr =
       contact::solve_footprint(M.tyre, contact::LoadCase{2 * F_max - plan.initial_load_N, 0});
-  if (!fr.converged) return std::nullopt;
+  if (!fr.ok()) return std::nullopt;
   return contact_of(M, fr);
 }
 

@@ -8,10 +8,12 @@
 // (uniform use of adhesion along the patch); positive F_x points forward (+x). With F_x = 0 the
 // contact is frictionless and the solution is symmetric about the contact centre.
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "modaltyre/contact/tyre_model.h"
+#include "modaltyre/core/solve_status.h"
 
 namespace modaltyre::contact {
 
@@ -30,7 +32,8 @@ struct PatchUnit {
 
 struct FootprintResult {
   LoadCase load;
-  bool converged = false;
+  /// The contact solver's status, or failed when the patch reached the candidate window's edge.
+  SolveStatus status = SolveStatus::failed;
   std::string message;
   int iterations = 0;
   double sinking_m = 0;           ///< approach of axle and road
@@ -44,6 +47,7 @@ struct FootprintResult {
   std::vector<double> contour_height_m; ///< height above the road (0 in contact)
   std::vector<char> active;             ///< contact flags of the candidate units (warm start)
 
+  bool ok() const { return modaltyre::ok(status); }
   double vertical_stiffness_N_m() const { return load.load_N / sinking_m; }
 };
 
@@ -76,12 +80,13 @@ PatchOperator static_operator(const TyreModel& model, double horizontal_ratio);
 PatchOperator static_matrix_free_operator(const TyreModel& model);
 
 /// Solves one load case with a given operator (F_x = load.horizontal_force_N must match the
-/// operator's horizontal_ratio).
+/// operator's horizontal_ratio). `warm_active`: a previous result's `active` to start the
+/// contact set from (empty: cold start).
 FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const LoadCase& load,
-                            const std::vector<char>* warm_active = nullptr);
+                            std::span<const char> warm_active = {});
 
 FootprintResult solve_footprint(const TyreModel& model, const LoadCase& load,
-                                const std::vector<char>* warm_active = nullptr);
+                                std::span<const char> warm_active = {});
 
 /// Solves the loads in order, each warm-started from the previous contact set.
 std::vector<FootprintResult> solve_footprints(const TyreModel& model,

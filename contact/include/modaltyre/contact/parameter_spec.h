@@ -7,7 +7,8 @@
 //   effects   (effects.h)              each effect parameter is an entry (key effects.EFFECT.NAME,
 //                                      fit range = the catalogue's [min, max], which is also the
 //                                      range the config reader accepts).
-// The config reader's own ranges of the tyre scalars (tyre_config.cc) are wider than either
+// Each entry also states the range a config may give the key (`accepted`), which the config
+// reader checks (tyre_config.cc, patch3d_config.cc, effects.cc) and which is wider than either
 // search range: a search range is where a fit looks, not what a config may state.
 #include <functional>
 #include <optional>
@@ -35,9 +36,17 @@ struct SearchRange {
 /// least a factor of 100, linear otherwise.
 SearchRange logistic_search(double min, double max);
 
+/// A closed interval [min, max] in the unit of a key.
+struct ValueRange {
+  double min = 0, max = 0;
+};
+
 struct ParameterSpec {
   std::string key;   ///< dotted config key, e.g. "tread.modulus_MPa"
   std::string unit;  ///< the key's unit ("-" dimensionless), values are in it
+  /// The values a config may state, checked by the config reader; nullopt: the reader's own
+  /// check (footprint_3d.crown.radius_mm: any positive radius up to 1e6 mm).
+  std::optional<ValueRange> accepted;
   /// validate's calibration range (ln-transformed; Levenberg-Marquardt); nullopt: validate does
   /// not calibrate it.
   std::optional<SearchRange> calibration;
@@ -54,5 +63,9 @@ struct ParameterSpec {
 const std::vector<ParameterSpec>& parameter_catalogue();
 /// nullptr when no parameter has that key.
 const ParameterSpec* find_parameter(std::string_view key);
+/// The range a config may state for `key` (an entry with an `accepted` range; std::logic_error
+/// otherwise: a reader asking for a key the specification does not bound is a programming
+/// error).
+const ValueRange& accepted_range(std::string_view key);
 
 }  // namespace modaltyre::contact

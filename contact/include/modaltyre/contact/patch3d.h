@@ -36,11 +36,13 @@
 // (min 1/2 f^T (G + t_i I) f + z^T f, f >= 0, sum f = F_i), affine in d on a fixed lateral
 // pattern (compliance 1 / 1^T M_AA^-1 1 and offset in place of t_i / n_i and the mean drop).
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "modaltyre/contact/patch3d_settings.h"
 #include "modaltyre/contact/tyre_model.h"
+#include "modaltyre/core/solve_status.h"
 
 namespace modaltyre::contact {
 
@@ -65,7 +67,7 @@ struct PressureMap {
 
 struct Patch3dResult {
   double load_N = 0;
-  bool converged = false;
+  SolveStatus status = SolveStatus::failed;  ///< the contact solver's, or failed (not finite)
   std::string message;
   int pattern_iterations = 0;  ///< outer (lateral pattern) steps; 0 for solve_cells()
   int contact_iterations = 0;  ///< active-set iterations of the contact solver, all steps
@@ -95,6 +97,7 @@ struct Patch3dResult {
   }
   double pressure_Pa(int i, int j) const { return cell_force(i, j) / (dx_m[i] * dy_m); }
   double vertical_stiffness_N_m() const { return load_N / sinking_m; }
+  bool ok() const { return modaltyre::ok(status); }
 };
 
 /// What the effects path (predictor.h) changes in the 3D patch against the tyre model's own:
@@ -132,7 +135,7 @@ class Patch3d {
 
   /// The laterally rigid reduction (see the top of this file); `warm` is a previous result's
   /// section_active.
-  Patch3dResult solve(double load_N, const std::vector<char>* warm = nullptr) const;
+  Patch3dResult solve(double load_N, std::span<const char> warm = {}) const;
   /// The same problem with every cell an unknown (reference for the reduction; slower).
   Patch3dResult solve_cells(double load_N) const;
   /// Loads in order, each warm-started from the previous result.

@@ -34,6 +34,7 @@
 
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/contact/patch3d.h"
+#include "modaltyre/core/solve_status.h"
 
 namespace modaltyre::contact {
 
@@ -57,8 +58,9 @@ struct PredictOptions {
 };
 
 struct Prediction {
-  bool ok = false;
-  std::string message;  ///< reason when !ok
+  /// The footprint's status; failed when the conditions or the effects refuse the prediction.
+  SolveStatus status = SolveStatus::failed;
+  std::string message;  ///< reason when !ok()
   double sinking_mm = 0;
   double length_mm = 0;
   /// The 3D patch's width; on the 2D patch the config's, or the crown-profile width
@@ -76,6 +78,7 @@ struct Prediction {
   /// Observable by its measurement-column name (sinking_mm, length_mm, width_mm,
   /// rolling_resistance_N).
   double observable(const std::string& name) const;
+  bool ok() const { return modaltyre::ok(status); }
 };
 
 /// The observable columns a prediction provides, in CSV order.

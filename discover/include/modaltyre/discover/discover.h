@@ -61,6 +61,12 @@ struct DiscoverOptions {
   /// then "detection limits" (one per candidate left unnamed).
   /// Thread-safe; done counts up from 1 within a phase.
   std::function<void(const std::string&, int, int)> progress;
+
+  /// InputError naming the option (as the command line spells it) when discover() cannot use
+  /// a value: unit_length_mm not a finite number in [0, 50], max_effects outside [1, 9],
+  /// threads outside [0, 4096], fit.exact_rows below 4. discover()
+  /// calls it first; the command calls it before reading any file.
+  void validate() const;
 };
 
 struct RegimeFinding {

@@ -15,10 +15,13 @@
 #include <atomic>
 #include <functional>
 #include <map>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "modaltyre/contact/predictor.h"
+#include "modaltyre/core/solve_status.h"
 #include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::discover {
@@ -69,7 +72,12 @@ class Evaluator {
   /// row (as entries() gives them). The rows are predicted in parallel (set_threads) when the
   /// call is not already inside a parallel region; the result does not depend on it.
   std::vector<double> residuals(const contact::TyreConfig& config, const std::vector<Entry>& e,
-                                int* failures = nullptr) const;
+                                int& failures) const;
+  std::vector<double> residuals(const contact::TyreConfig& config,
+                                const std::vector<Entry>& e) const {
+    int failures = 0;
+    return residuals(config, e, failures);
+  }
   const studies::MeasurementSet& data() const { return data_; }
   const contact::TyreModel& model() const { return model_; }
   /// Threads over rows for calls outside a parallel region (0: OpenMP default).
@@ -97,7 +105,8 @@ struct FitResult {
   double bic = 0;
   int evaluations = 0;
   int failures = 0;  ///< rows whose prediction failed at the optimum
-  bool converged = false;
+  SolveStatus status = SolveStatus::failed;  ///< the search's (converged or max_iterations)
+  bool ok() const { return modaltyre::ok(status); }
 };
 
 /// Jacobian of the relative residuals of `entries` with respect to the variant's parameters in
@@ -129,7 +138,8 @@ contact::TyreConfig apply(const contact::TyreConfig& base, const Variant& v,
 /// `base`, and from the best of a small grid around the catalogue defaults for the parameters
 /// of effects `base` does not have on.
 FitResult fit_variant(const Evaluator& ev, const contact::TyreConfig& base, const Variant& v,
-                      const std::vector<int>& rows, const std::vector<double>* start = nullptr,
+                      const std::vector<int>& rows,
+                      std::optional<std::span<const double>> start = std::nullopt,
                       bool standard_errors = false);
 
 /// The FitResult of a variant at given values on given entries (residuals, RMS, BIC; one

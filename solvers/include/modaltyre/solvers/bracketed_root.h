@@ -5,6 +5,8 @@
 #include <functional>
 #include <optional>
 
+#include "modaltyre/core/solve_status.h"
+
 namespace modaltyre::solvers {
 
 struct IllinoisOptions {
@@ -12,14 +14,12 @@ struct IllinoisOptions {
   int max_iterations = 100;  ///< evaluations of f at most, >= 1
 };
 
-enum class RootStatus { converged, max_iterations, aborted };
-
 struct RootResult {
-  RootStatus status = RootStatus::max_iterations;
+  SolveStatus status = SolveStatus::max_iterations;  ///< or converged, aborted
   double x = 0;        ///< the last iterate f was evaluated at successfully
   double fx = 0;       ///< f(x)
   int iterations = 0;  ///< evaluations of f, the aborted one included
-  bool ok() const { return status == RootStatus::converged; }
+  bool ok() const { return modaltyre::ok(status); }
 };
 
 /// Finds x in [a, b] with |f(x)| <= tolerance, given fa = f(a) and fb = f(b) of opposite

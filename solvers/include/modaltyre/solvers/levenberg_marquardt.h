@@ -5,6 +5,8 @@
 #include <functional>
 #include <string>
 
+#include "modaltyre/core/solve_status.h"
+
 namespace modaltyre::solvers {
 
 struct LeastSquaresOptions {
@@ -21,8 +23,9 @@ struct LeastSquaresResult {
   double cost = 0;  ///< 1/2 |r|^2
   int iterations = 0;
   int evaluations = 0;
-  bool converged = false;
+  SolveStatus status = SolveStatus::max_iterations;  ///< or converged
   std::string message;
+  bool ok() const { return modaltyre::ok(status); }
 };
 
 /// Minimises 1/2 |r(x)|^2. The residual function may throw; that propagates to the caller.

@@ -16,9 +16,11 @@
 // compliance can be given without assembling it: the gap check is one product of C's columns on
 // the contact set, the inner systems are solved by conjugate gradients on C_SS products.
 #include <Eigen/Dense>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "modaltyre/core/solve_status.h"
 #include "modaltyre/solvers/compliance_operator.h"
 
 namespace modaltyre::solvers {
@@ -38,11 +40,8 @@ struct ContactOptions {
   double gap_tolerance = 1e-10;
 };
 
-enum class ContactStatus { converged, max_iterations, singular };
-const char* to_string(ContactStatus s);
-
 struct ContactSolution {
-  ContactStatus status = ContactStatus::max_iterations;
+  SolveStatus status = SolveStatus::max_iterations;  ///< or converged, singular
   Eigen::VectorXd force;        ///< f [N]
   Eigen::VectorXd gap;          ///< g [m]
   double approach_m = 0;        ///< delta
@@ -53,12 +52,13 @@ struct ContactSolution {
   double max_penetration_m = 0;        ///< max(-g_i, 0)
   double max_tension_N = 0;            ///< max(-f_i, 0)
   std::string message;
-  bool converged() const { return status == ContactStatus::converged; }
+  bool ok() const { return modaltyre::ok(status); }
 };
 
-/// Solves the problem; `warm_active` (size m) starts from a previous solution's contact set.
+/// Solves the problem; `warm_active` (size m: a previous solution's contact set) is the start
+/// set; empty or of another size: a cold start.
 ContactSolution solve_unilateral_contact(const ContactProblem& problem,
                                          const ContactOptions& options = {},
-                                         const std::vector<char>* warm_active = nullptr);
+                                         std::span<const char> warm_active = {});
 
 }  // namespace modaltyre::solvers

@@ -11,16 +11,19 @@
 #include <string>
 
 #include "modaltyre/contact/predictor.h"
+#include "modaltyre/core/solve_status.h"
 
 namespace modaltyre::studies {
 
 struct ScaleCalibration {
-  bool converged = false;
+  /// converged; max_iterations; failed when a footprint on the way failed (message says why).
+  SolveStatus status = SolveStatus::failed;
   double compliance_scale = 1.0;  ///< the config's modal.compliance_scale to write
   double sinking_mm = 0;          ///< the model's sinking at that scale
   double target_mm = 0;
   int evaluations = 0;
   std::string message;  ///< why not converged
+  bool ok() const { return modaltyre::ok(status); }
 };
 
 /// Finds modal.compliance_scale in [1e-3, 1e3] (the config's range) such that the footprint of

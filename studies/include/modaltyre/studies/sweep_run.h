@@ -3,6 +3,8 @@
 // independent of the number of threads; sweep_share() cuts a plan for distributed (MPI) runs.
 #include <cstddef>
 #include <functional>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -39,10 +41,11 @@ struct SweepOptions {
   /// Called with the number of newly finished cases, from any worker thread (must be
   /// thread-safe and cheap). The library never prints.
   std::function<void(std::size_t)> progress;
-  /// Plan indices to compute (a distributed sweep's share, see sweep_share()); null = all.
+  /// Plan indices to compute (a distributed sweep's share, see sweep_share(); viewed, not
+  /// copied: it must outlive the run); absent = all, an empty share computes nothing.
   /// Rows of the other cases stay default (ok = false, empty message) and are not counted
   /// as failed. Models with no case in the share are not built.
-  const std::vector<std::size_t>* only_cases = nullptr;
+  std::optional<std::span<const std::size_t>> only_cases;
 };
 
 struct SweepResult {

@@ -54,7 +54,8 @@ struct Calibration {
   std::vector<std::string> observables;
   double rms_rel_residual = 0;  ///< on the calibration rows
   int evaluations = 0;
-  bool converged = false;
+  SolveStatus status = SolveStatus::failed;  ///< the Levenberg-Marquardt fit's
+  bool ok() const { return modaltyre::ok(status); }
   /// Per key: "lower" or "upper" when the value ended within 0.1 % of its search range's bound
   /// (the rows only bound it from one side, or a better optimum lies across the range), else "".
   std::vector<std::string> at_bound;
