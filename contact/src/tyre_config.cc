@@ -111,6 +111,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   if (modal.has("extension_bending_s2_rad2_s2")) {
     c.extension_s2 = modal.number("extension_bending_s2_rad2_s2", 0, 0, 1e12);
   }
+  c.pneumatic_share = modal.number("pneumatic_share", 0, 0, 1);
 
   const ConfigSection tread = root.section("tread");
   c.tread.modulus_Pa = tread.number("modulus_MPa", 6.0, 1e-3, 1e4) * 1e6;
