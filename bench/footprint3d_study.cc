@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "modaltyre/contact/patch3d.h"
+#include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/levenberg_marquardt.h"
 #include "modaltyre/studies/measurements.h"
@@ -54,12 +55,16 @@ Case run(const std::string& config, const std::vector<std::string>& sets,
   const TyreConfig c = load_tyre_config(config, sets);
   if (!c.footprint_3d) throw InputError(config + ": no footprint_3d: section");
   const TyreModel model = build_tyre_model(c);
-  const Patch3d patch(model, *c.footprint_3d);
+  // Through the product's prediction path (predictor.h), so that modal.pneumatic_share acts.
+  std::vector<OperatingConditions> cases;
+  for (double F : loads) cases.push_back(c.default_conditions(F));
   Case out;
-  out.results = patch.solve_all(loads);
   out.R0_m = c.outer_radius_m;
-  for (const auto& r : out.results) {
-    if (!r.ok()) throw ComputationError("load " + std::to_string(r.load_N) + ": " + r.message);
+  for (const Prediction& p : predict_all(model, cases)) {
+    if (!p.ok() || !p.patch3d) {
+      throw ComputationError("load " + std::to_string(p.footprint.load.load_N) + ": " + p.message);
+    }
+    out.results.push_back(*p.patch3d);
   }
   return out;
 }
@@ -151,6 +156,7 @@ int main(int argc, char** argv) try {
                             ? std::max(base.extension_s2, 1.0)
                         : key == "footprint_3d.lateral_belt.foundation_MPa_per_m"
                             ? patch.lateral_belt.foundation_Pa_m * 1e-6
+                        : key == "modal.pneumatic_share" ? std::max(base.pneumatic_share, 0.01)
                         : key == "footprint_3d.lateral_belt.bending_stiffness_Nm"
                             ? patch.lateral_belt.bending_stiffness_Nm
                             : throw InputError("cannot calibrate " + key);

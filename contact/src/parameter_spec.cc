@@ -69,6 +69,11 @@ std::vector<ParameterSpec> tyre_scalars() {
       {"footprint_3d.tread_width_mm", "mm", ValueRange{20, 2000}, ln_search(20, 500), std::nullopt,
        [](const TyreConfig& c) { return patch3d_of(c).tread_width_m * 1e3; },
        [](TyreConfig& c, double v) { patch3d_of(c).tread_width_m = v * 1e-3; }},
+      // The pneumatic share beta (pneumatic_share.h): validate may calibrate it (a diagnostic:
+      // what share the data would ask for); it starts at 0.1 when the config has none.
+      {"modal.pneumatic_share", "-", ValueRange{0, 1}, ln_search(1e-3, 1), std::nullopt,
+       [](const TyreConfig& c) { return c.pneumatic_share > 0 ? c.pneumatic_share : 0.1; },
+       [](TyreConfig& c, double v) { c.pneumatic_share = v; }},
       // Starts at 10 rad^2/s^2 when not stated (the fit to resolved orders may give 0).
       {"modal.extension_bending_s2_rad2_s2", "rad^2/s^2", ValueRange{0, 1e12}, ln_search(1e-3, 1e6),
        std::nullopt, [](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; },

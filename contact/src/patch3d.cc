@@ -232,6 +232,7 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
   r.columns = ny;
   r.dy_m = settings_.tread_width_m / ny;
   r.y_m = y_m_;
+  r.column_drop_m = z_m_;
   r.cell_force_N = f;
   r.sinking_m = delta;
   Eigen::VectorXd F = Eigen::VectorXd::Zero(S);

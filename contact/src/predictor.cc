@@ -4,7 +4,9 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
+#include "modaltyre/contact/pneumatic_share.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::contact {
@@ -202,7 +204,8 @@ double crown_width(const EffectsConfig& E, double sinking_m) {
 }  // namespace
 
 TyreParameters parameters_of(const TyreConfig& config) {
-  return {config.compliance_scale, config.tread, config.effects, config.footprint_3d};
+  return {config.compliance_scale, config.tread, config.effects, config.footprint_3d,
+          config.pneumatic_share};
 }
 
 const std::vector<std::string>& observable_names() {
@@ -232,7 +235,10 @@ std::vector<double> pasternak_tread_lags(double k_r, double ell, double ds, int 
 }
 
 // The one place that decides between the effect-free and the effects path.
-bool conditions_act(const TyreConfig& config) { return config.effects.any(); }
+// The row's pressure acts through the pneumatic share too (pneumatic_share.h).
+bool conditions_act(const TyreConfig& config) {
+  return config.effects.any() || config.pneumatic_share > 0;
+}
 
 Prediction predict(const TyreModel& model, const OperatingConditions& c,
                    const PredictOptions& options) {
@@ -425,10 +431,84 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
 
 }  // namespace
 
+namespace {
+
+Prediction structural(const TyreModel& model, const TyreParameters& parameters,
+                      const OperatingConditions& c, const PredictOptions& options) {
+  return parameters.footprint_3d ? patch3d_path(model, parameters, c, options)
+                                 : effects_path(model, parameters, c, options);
+}
+
+// modal.pneumatic_share (pneumatic_share.h, docs/footprint.md section 8): the structural tyre
+// carries F_s, the pressure beta p over its contact area the rest; the horizontal force stays on
+// the structural tyre (the pressure acts normal to the road).
+Prediction pneumatic_split(const TyreModel& model, const TyreParameters& parameters,
+                           const OperatingConditions& c, const PredictOptions& options,
+                           double pressure_Pa) {
+  std::vector<char> warm(options.warm_active.begin(), options.warm_active.end());
+  std::vector<std::pair<double, Prediction>> solved;
+  Prediction failure;
+  auto area_at = [&](double F, double& area) {
+    OperatingConditions cs = c;
+    cs.load_N = F;
+    PredictOptions o;
+    o.warm_active = warm;
+    Prediction p = structural(model, parameters, cs, o);
+    if (!p.ok()) {
+      failure = std::move(p);
+      return false;
+    }
+    warm = p.footprint.active;
+    area =
+        p.patch3d ? contact_area_m2(*p.patch3d) : contact_area_m2(p.footprint, p.width_mm * 1e-3);
+    solved.emplace_back(F, std::move(p));
+    return true;
+  };
+  const LoadSplit split = split_pneumatic_load(c.load_N, pressure_Pa, area_at);
+  if (!split.ok()) {
+    if (!failure.ok() && !failure.message.empty()) return failure;
+    std::ostringstream msg;
+    msg.precision(12);
+    msg << "pneumatic share: no load split F_s + p A = " << c.load_N << " N after " << split.solves
+        << " solves (" << to_string(split.status) << "; last F_s " << split.structural_load_N
+        << " N, residual " << split.residual_N << " N)";
+    return failed(msg.str());
+  }
+  Prediction p;
+  for (auto& [F, q] : solved) {
+    if (F == split.structural_load_N) p = std::move(q);
+  }
+  const double pneumatic_N = pressure_Pa * split.area_m2;
+  p.elastic_load_N += pneumatic_N;
+  FootprintResult& f = p.footprint;
+  if (p.patch3d) {
+    Patch3dResult r = *p.patch3d;
+    add_pneumatic_pressure(r, pressure_Pa, r.load_N + pneumatic_N);
+    // The units are the sections in contact, in order (from_patch3d): their resultants and
+    // centre-line pressures gain the pneumatic part.
+    std::size_t k = 0;
+    for (int i = 0; i < r.sections && k < f.units.size(); ++i) {
+      if (!(r.section_force_N[i] > 0)) continue;
+      f.units[k].fz_N = r.section_force_N[i];
+      f.units[k].pressure_Pa = centre_line(r.columns, [&](int j) { return r.pressure_Pa(i, j); });
+      ++k;
+    }
+    f.equilibrium_residual = r.equilibrium_residual;
+    p.patch3d = std::make_shared<const Patch3dResult>(std::move(r));
+  } else {
+    add_pneumatic_pressure(f, pressure_Pa, p.width_mm * 1e-3, f.load.load_N + pneumatic_N);
+  }
+  return p;
+}
+
+}  // namespace
+
 Prediction predict(const TyreModel& model, const TyreParameters& parameters,
                    const OperatingConditions& c, const PredictOptions& options) {
-  Prediction p = parameters.footprint_3d ? patch3d_path(model, parameters, c, options)
-                                         : effects_path(model, parameters, c, options);
+  const double pneumatic_Pa = parameters.pneumatic_share * c.pressure_kPa * 1e3;
+  Prediction p = pneumatic_Pa > 0 && c.load_N > 0
+                     ? pneumatic_split(model, parameters, c, options, pneumatic_Pa)
+                     : structural(model, parameters, c, options);
   p.footprint.load = {c.load_N, c.horizontal_force_N};  // the applied load, failed or not
   return p;
 }

@@ -121,6 +121,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   if (modal.has("extension_bending_s2_rad2_s2")) {
     c.extension_s2 = scalar(modal, "modal", "extension_bending_s2_rad2_s2", 0);
   }
+  c.pneumatic_share = scalar(modal, "modal", "pneumatic_share", 0);
 
   const ConfigSection tread = root.section("tread");
   c.tread.modulus_Pa = scalar(tread, "tread", "modulus_MPa", 6.0) * 1e6;

@@ -83,6 +83,7 @@ struct Patch3dResult {
   std::vector<double> x_m;              ///< deformed belt position of each section along the road
   std::vector<double> dx_m;             ///< road length of each section (ds cos theta)
   std::vector<double> y_m;              ///< centre of each column
+  std::vector<double> column_drop_m;    ///< crown drop z_j of each column
   std::vector<double> section_force_N;  ///< F_i
   std::vector<double> section_approach_m;  ///< d_i = delta - sag_i - (C F)_i
   std::vector<double> cell_force_N;        ///< f_ij at [i * columns + j]

@@ -47,6 +47,9 @@ struct TyreParameters {
   EffectsConfig effects;
   /// The 3D patch's settings (crown, tread width): present = predicted on the 3D patch.
   std::optional<Patch3dSettings> footprint_3d;
+  /// modal.pneumatic_share: beta of F_z = F_s + beta p A (pneumatic_share.h), p the row's
+  /// inflation pressure; 0 = the modal carcass alone.
+  double pneumatic_share = 0;
 };
 
 /// The parameters a config states.
@@ -85,7 +88,7 @@ struct Prediction {
 const std::vector<std::string>& observable_names();
 
 /// Whether operating conditions beyond the load and the horizontal force act on this config's
-/// predictions: they act only through effects.
+/// predictions: they act through effects and, the pressure, through modal.pneumatic_share.
 bool conditions_act(const TyreConfig& config);
 
 /// The model's own parameters at `conditions` (see above).

@@ -93,6 +93,10 @@ struct TyreConfig {
   /// resolved orders. Stating it lets a config add belt bending stiffness the hammer test cannot
   /// resolve (it acts on unmeasured orders only).
   double extension_s2 = -1.0;
+  /// modal.pneumatic_share: fraction beta of the inflation pressure carried over the contact
+  /// area in parallel with the modal carcass (pneumatic_share.h, docs/footprint.md section 8);
+  /// 0 = the modal carcass alone.
+  double pneumatic_share = 0;
   TreadParams tread;
   Discretisation mesh;
   SolverSettings solver;
