@@ -177,9 +177,9 @@ void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorX
   if (ne_ > 0) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - units_.lo), n);
 }
 
-double TransientSystem::tip_penetration_at(double t, const double* y, int i) const {
+double TransientSystem::tip_penetration_at(double t, const double* y, int i, bool xi_of_y) const {
   const auto& M = model_;
-  contact_coordinates(y);
+  if (!xi_of_y) contact_coordinates(y);
   double g = y[M.z_index()] + road(t, i) - M.tyre.sag(i) - M.T_by_unit.col(i).dot(scratch_xi_);
   if (ne_ > 0 && units_.contains(i)) g -= y[M.e_index() + (i - units_.lo)];
   return g;
@@ -287,12 +287,32 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   in_contact_.resize(M.m, 0);
   // Units that can have changed: the reach now and the contact set before.
   const int from = std::min(lo, contact_first_), to = std::max(hi, contact_last_);
+  const int a = std::max(from, u0), b = std::min(to, units_.hi);
+  const int r0 = std::max(a, lo), r1 = std::min(b, hi);  // [a, b] within the reach
   int changed = 0;
+  // Branch-free passes (this loop was ~7 k instructions a step as one pass with branches): the
+  // units of [a, b] outside the reach are out of contact now; in_contact_ holds 0 or 1.
+  auto leave = [&](int i0, int i1) {
+    for (int i = i0; i <= i1; ++i) changed += in_contact_[i], in_contact_[i] = 0;
+  };
   contact_first_ = M.m, contact_last_ = -1;
-  for (int i = std::max(from, u0); i <= std::min(to, units_.hi); ++i) {
-    const char now = i >= lo && i <= hi && scratch_g_(i) > 0 ? 1 : 0;
-    if (now != in_contact_[i]) ++changed, in_contact_[i] = now;
-    if (now) contact_first_ = std::min(contact_first_, i), contact_last_ = i;
+  if (r1 < r0) {
+    leave(a, b);
+  } else {
+    leave(a, r0 - 1);
+    leave(r1 + 1, b);
+    for (int i = r0; i <= r1; ++i) {
+      const char now = scratch_g_(i) > 0 ? 1 : 0;
+      changed += now != in_contact_[i];
+      in_contact_[i] = now;
+    }
+    int i = r0;
+    while (i <= r1 && !in_contact_[i]) ++i;
+    if (i <= r1) {
+      contact_first_ = i;
+      contact_last_ = r1;
+      while (!in_contact_[contact_last_]) --contact_last_;
+    }
   }
   if (first) return 0;
   if (changed > 0) contact_switched();
