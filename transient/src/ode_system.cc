@@ -6,6 +6,7 @@
 
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/transient/column_product.h"
 
 namespace modaltyre::transient {
 namespace {
@@ -77,8 +78,9 @@ double TransientSystem::spin_rate(double t) const {
 void TransientSystem::contact_coordinates(const double* y) const {
   const auto& M = model_;
   const Eigen::Map<const Eigen::VectorXd> q(y, M.nq), r(y + 2 * M.nq, M.nr);
-  scratch_xi_.noalias() = M.Cq * q;
-  if (M.nr > 0) scratch_xi_.noalias() += M.Cr * r;
+  scratch_xi_.resize(M.rank);
+  column_product(M.Cq, q, scratch_xi_);  // = Cq q to the bit (column_product.h)
+  if (M.nr > 0) column_product(M.Cr, r, scratch_xi_, /*accumulate=*/true);
 }
 
 void TransientSystem::check_outside(double t, const double* y) const {
@@ -171,7 +173,7 @@ void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorX
   const int n = hi - lo + 1;
   // u = T xi (model.h's contact basis: rank columns instead of nq + nr).
   auto seg = g.segment(lo, n);
-  seg.noalias() = M.T.middleRows(lo, n) * scratch_xi_;
+  column_product(M.T.middleRows(lo, n), scratch_xi_, seg);
   seg = (y[M.z_index()] - M.tyre.sag.segment(lo, n).array() - seg.array()).matrix();
   add_road(t, lo, hi, g);
   if (ne_ > 0) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - units_.lo), n);
@@ -262,7 +264,8 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
         kReachRefresh_m);
   const int u0 = units_.lo, nu = units_.size();
   if (refresh) {
-    p_ref_.noalias() = M.T.middleRows(u0, nu) * scratch_xi_;
+    p_ref_.resize(nu);
+    column_product(M.T.middleRows(u0, nu), scratch_xi_, p_ref_);
     p_ref_ = (y[M.z_index()] - M.tyre.sag.segment(u0, nu).array() - p_ref_.array()).matrix();
     xi_ref_ = scratch_xi_;
     z_ref_ = y[M.z_index()];
