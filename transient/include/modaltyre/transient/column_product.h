@@ -4,7 +4,7 @@
 //
 // Why: these products are the largest single item of a transient step (callgrind, free
 // vibration: Eigen's column-major GEMV ~19 % of the run), and the library is compiled for
-// SSE2. This kernel is also built as an AVX2 clone picked at load time (no FMA). Each out_i is
+// SSE2. This kernel has an AVX2 path chosen at run time (multiply then add, no FMA). Each out_i is
 // 0 + ((A_i0 x_0 + A_i1 x_1) + ...) summed over the columns in order, the order of Eigen 3.4's
 // column-major GEMV without FMA, so the results are those of `A * x` to the bit (checked by the
 // transient outputs being byte-identical; docs/transient.md section 6).
