@@ -174,7 +174,7 @@ void ContactNewton::solve(double* x) const {
   Eigen::Map<Eigen::VectorXd> xx(x, nx_);
   // Q phi added to the X rows (phi: forces on eta).
   auto add_q = [&](const Eigen::VectorXd& phi, Eigen::Ref<Eigen::VectorXd> out) {
-    out.segment(nq, nq).noalias() -= M.Cq.transpose() * phi.head(rank);
+    transposed_product(M.Cq, phi.head(rank), out.segment(nq, nq), -1.0, /*accumulate=*/true);
     if (nr > 0)
       out.segment(2 * nq, nr).array() -=
           M.lambda.array() / M.tau_residual_s * (M.Cr.transpose() * phi.head(rank)).array();
@@ -199,7 +199,7 @@ void ContactNewton::solve(double* x) const {
       solve_ee(work_e_.data());
       for (int a = 0; a < na; ++a) work_a_(a) = kd_(active_[a]) * work_e_(active_[a] - u0_);
     }
-    eta_.noalias() = Tt_active_.transpose() * work_a_;
+    transposed_product(Tt_active_, work_a_, eta_);  // T~^T w (column_product.h)
     eta_ *= -gamma_;
     add_q(eta_, xx);
   }

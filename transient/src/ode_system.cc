@@ -337,10 +337,11 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   if (hi >= lo) {
     const int n = hi - lo + 1;
     // Dot products of the contact basis' columns with f (13 x n with n contiguous per column).
-    phi.noalias() = M.T.middleRows(lo, n).transpose() * f.segment(lo, n);
+    transposed_product(M.T.middleRows(lo, n), f.segment(lo, n), phi);  // T^T f (to the bit)
     load = f.segment(lo, n).sum();
   }
-  G.noalias() = M.Cq.transpose() * phi;
+  G.resize(nq);
+  transposed_product(M.Cq, phi, G);  // Cq^T phi
   Eigen::VectorXd& Vf = scratch_Vf_;
   if (nr > 0) Vf.noalias() = M.Cr.transpose() * phi;
   const double Omega = spin(t), dOmega = spin_rate(t);

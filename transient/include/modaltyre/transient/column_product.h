@@ -24,4 +24,20 @@ void column_product(const Block& A, const Eigen::Ref<const Eigen::VectorXd>& x, 
   column_product(A.rows(), A.cols(), A.data(), A.outerStride(), x.data(), out.data(), accumulate);
 }
 
+/// out_k (=, or += with accumulate) alpha sum_i A(i, k) v_i for k < cols, i < rows: the
+/// transposed product A^T v (T^T f over the reach, Cq^T phi, T~^T w). Each sum is that of
+/// Eigen 3.4's row-major GEMV on SSE2, kept on AVX2 by two outputs per 256-bit register: the
+/// even and odd terms in two partial sums (pairs in order), added, then the odd last term;
+/// the destination gets alpha times it added (0 for an assignment).
+void transposed_product(Eigen::Index rows, Eigen::Index cols, const double* A, Eigen::Index lda,
+                        const double* v, double* out, double alpha = 1.0, bool accumulate = false);
+
+/// The same for an Eigen block A (the product A.transpose() * v).
+template <typename Block, typename Out>
+void transposed_product(const Block& A, const Eigen::Ref<const Eigen::VectorXd>& v, Out&& out,
+                        double alpha = 1.0, bool accumulate = false) {
+  transposed_product(A.rows(), A.cols(), A.data(), A.outerStride(), v.data(), out.data(), alpha,
+                     accumulate);
+}
+
 }  // namespace modaltyre::transient
