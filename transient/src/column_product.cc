@@ -98,6 +98,19 @@ __attribute__((target("avx2"))) Index transposed_avx2(Index rows, Index cols, co
     }
     for (int q = 0; q < 4; ++q) out[k + q] = (accumulate ? out[k + q] : 0.0) + alpha * s[q];
   }
+  // The last one to three outputs: one (even, odd) pair of partial sums in 128 bits each.
+  for (; k < cols; ++k) {
+    const double* a = A + k * lda;
+    __m128d c = _mm_setzero_pd();
+    Index i = 0;
+    for (; i + 2 <= rows; i += 2)
+      c = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(a + i), _mm_loadu_pd(v + i)), c);
+    alignas(16) double l[2];
+    _mm_store_pd(l, c);
+    double s = l[0] + l[1];
+    for (; i < rows; ++i) s += a[i] * v[i];
+    out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
+  }
   return k;
 }
 #endif
