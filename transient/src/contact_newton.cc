@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "modaltyre/transient/column_product.h"
+
 namespace modaltyre::transient {
 
 ContactNewton::ContactNewton(const TransientModel& model, const TransientSystem& system)
@@ -172,15 +174,15 @@ void ContactNewton::solve(double* x) const {
   Eigen::Map<Eigen::VectorXd> xx(x, nx_);
   // Q phi added to the X rows (phi: forces on eta).
   auto add_q = [&](const Eigen::VectorXd& phi, Eigen::Ref<Eigen::VectorXd> out) {
-    out.segment(nq, nq).noalias() -= M.Cq.transpose() * phi.head(rank);
+    transposed_product(M.Cq, phi.head(rank), out.segment(nq, nq), -1.0, /*accumulate=*/true);
     if (nr > 0)
       out.segment(2 * nq, nr).array() -=
           M.lambda.array() / M.tau_residual_s * (M.Cr.transpose() * phi.head(rank)).array();
     out(Z + 1) -= phi(rank) / M.settings.hub_mass_kg;
   };
   auto apply_p = [&](const Eigen::Ref<const Eigen::VectorXd>& in, Eigen::VectorXd& eta) {
-    eta.head(rank).noalias() = M.Cq * in.head(nq);
-    if (nr > 0) eta.head(rank).noalias() += M.Cr * in.segment(2 * nq, nr);
+    column_product(M.Cq, in.head(nq), eta);  // = Cq x to the bit (column_product.h)
+    if (nr > 0) column_product(M.Cr, in.segment(2 * nq, nr), eta, /*accumulate=*/true);
     eta(rank) = in(Z);
   };
   double* xe = x + nx_;
@@ -197,7 +199,7 @@ void ContactNewton::solve(double* x) const {
       solve_ee(work_e_.data());
       for (int a = 0; a < na; ++a) work_a_(a) = kd_(active_[a]) * work_e_(active_[a] - u0_);
     }
-    eta_.noalias() = Tt_active_.transpose() * work_a_;
+    transposed_product(Tt_active_, work_a_, eta_);  // T~^T w (column_product.h)
     eta_ *= -gamma_;
     add_q(eta_, xx);
   }
@@ -214,7 +216,7 @@ void ContactNewton::solve(double* x) const {
     // x_E = M_EE^-1 (b_E - M_EX x_X), M_EX = -gamma diag(kd / c') T~ P.
     if (na > 0) {
       apply_p(xx, eta_);
-      work_a_.noalias() = Tt_active_ * eta_;
+      column_product(Tt_active_, eta_, work_a_);  // work_a_ has na entries
       for (int a = 0; a < na; ++a) {
         const int i = active_[a];
         xe[i - u0_] += gamma_kd_c_(a) * work_a_(a);

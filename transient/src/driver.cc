@@ -19,13 +19,16 @@ namespace {
 constexpr int kZenoRootReturns = 1000;
 constexpr double kZenoWindow_s = 1e-12;
 
+/// One output sample at (t, y). `f` is the caller's work vector for the forces (reused across
+/// samples: no allocation and no clearing of all m units per sample).
 TransientSample observe(const TransientModel& M, const TransientSystem& sys,
-                        const ScenarioPlan& plan, double t, const double* y) {
+                        const ScenarioPlan& plan, double t, const double* y, Eigen::VectorXd& f) {
   TransientSample s;
   s.t_s = t;
   // The forces k max(0, g) where units can touch (on the system's units only: tread_window.h);
-  // the edge interpolation below needs g also at the first unit outside each end, computed there.
-  const Eigen::VectorXd f = sys.forces(t, y);
+  // the edge interpolation below needs g also at the first unit outside each end, computed there
+  // from the contact coordinates of y that forces_into() left.
+  sys.forces_into(t, y, f);
   const int u0 = sys.units().lo, u1 = sys.units().hi;
   const double z = y[M.z_index()];
   const double R0 = M.tyre.config.outer_radius_m;
@@ -81,7 +84,7 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
       const double x_in = deformed_x(inside);
       if (outside < 0 || outside >= M.m) return x_in;
       const double phi_in = f(inside) * M.tyre.vertical_compliance(inside, inside);
-      const double phi_out = sys.tip_penetration_at(t, y, outside);
+      const double phi_out = sys.tip_penetration_at(t, y, outside, /*xi_of_y=*/true);
       const double w = phi_in / (phi_in - phi_out);
       return x_in + w * (deformed_x(outside) - x_in);
     };
@@ -207,7 +210,8 @@ TransientResult run_on_units(const TransientModel& M, Scenario scenario,
   ode.set_max_step(plan.step_limit(0.0));
 
   const double T = plan.duration_s, dt = M.settings.output_step_s;
-  res.samples.push_back(observe(M, sys, plan, 0.0, y.data()));
+  Eigen::VectorXd f_sample;  // observe()'s work vector
+  res.samples.push_back(observe(M, sys, plan, 0.0, y.data(), f_sample));
   SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.cleat);
   reuse.remember(y);
   std::vector<double> breaks = plan.breakpoints;
@@ -244,7 +248,7 @@ TransientResult run_on_units(const TransientModel& M, Scenario scenario,
         smp.speed_m_s = plan.speed(t_out);
         res.samples.push_back(smp);
       } else {
-        res.samples.push_back(observe(M, sys, plan, t_out, y_out.data()));
+        res.samples.push_back(observe(M, sys, plan, t_out, y_out.data(), f_sample));
         reuse.remember(y_out);
       }
       if (options.progress && !options.progress(t_out, T)) {

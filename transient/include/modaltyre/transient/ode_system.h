@@ -61,6 +61,9 @@ class TransientSystem {
   double spin_rate(double t) const;
   /// Contact forces f_i at (t, y).
   Eigen::VectorXd forces(double t, const double* y) const;
+  /// forces() into `f` (m entries; only units() is written, so a reused `f` costs no
+  /// allocation and no pass over all m units: the driver's output samples).
+  void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
   /// Road height and slope at unit i at time t.
   double road(double t, int i, double* slope = nullptr) const;
   /// State of static equilibrium under `load_N` (footprint solver, relaxed tread).
@@ -87,8 +90,9 @@ class TransientSystem {
   void tip_penetration_in_reach(double t, const double* y, Eigen::VectorXd& g) const;
   /// Adds the road height h(x_i, t) to g over the units [lo, hi] (cleat only).
   void add_road(double t, int lo, int hi, Eigen::VectorXd& g) const;
-  /// g_i of one unit.
-  double tip_penetration_at(double t, const double* y, int i) const;
+  /// g_i of one unit. xi_of_y: the last forces_into() / forces() call was at this y, whose
+  /// contact coordinates are then reused (an output sample's edge interpolation).
+  double tip_penetration_at(double t, const double* y, int i, bool xi_of_y = false) const;
   int64_t nnz() const;
 
  private:
@@ -103,7 +107,6 @@ class TransientSystem {
   /// Penetration of the units outside units() at (t, y): refreshes their bound's reference
   /// (p_out_ref_ ...) and sets escaped_ if any is positive. xi from contact_coordinates().
   void check_outside(double t, const double* y) const;
-  void forces_into(double t, const double* y, Eigen::VectorXd& f) const;
   /// forces_into() that also returns the reach [lo, hi] (f = 0 outside; empty if hi < lo).
   void forces_band(double t, const double* y, Eigen::VectorXd& f, int& lo, int& hi) const;
   /// g over the reach [lo, hi] (entries outside untouched), as tip_penetration_in_reach();

@@ -1,0 +1,65 @@
+// column_product (column_product.h) against Eigen's A * x: the same bits, which is what keeps
+// the transient outputs byte-identical after the products moved to it.
+#include "modaltyre/transient/column_product.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace modaltyre::transient {
+namespace {
+
+TEST(ColumnProduct, EqualsEigensProductToTheBit) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int rows : {1, 3, 13, 63, 64, 65, 253, 729}) {
+    for (int cols : {1, 4, 13, 14, 44}) {
+      Eigen::MatrixXd A(rows + 5, cols);  // a block of rows of a taller matrix, as T's reach
+      for (Eigen::Index k = 0; k < A.size(); ++k) A.data()[k] = u(rng) * std::exp(8 * u(rng));
+      Eigen::VectorXd x(cols), base(rows);
+      for (int j = 0; j < cols; ++j) x(j) = u(rng);
+      for (int i = 0; i < rows; ++i) base(i) = u(rng);
+      const auto block = A.middleRows(2, rows);
+      Eigen::VectorXd want(rows), got(rows);
+      want.noalias() = block * x;
+      column_product(block, x, got);
+      for (int i = 0; i < rows; ++i)
+        ASSERT_EQ(want(i), got(i)) << rows << " x " << cols << " " << i;
+      want = base;
+      want.noalias() += block * x;
+      got = base;
+      column_product(block, x, got, /*accumulate=*/true);
+      for (int i = 0; i < rows; ++i)
+        ASSERT_EQ(want(i), got(i)) << rows << " x " << cols << " " << i;
+    }
+  }
+}
+
+TEST(ColumnProduct, TransposedEqualsEigensProductToTheBit) {
+  std::mt19937 rng(2121);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int rows : {1, 2, 3, 13, 14, 64, 65, 253, 729}) {
+    for (int cols : {2, 3, 4, 5, 13, 14, 44}) {  // 1 column: Eigen takes a dot product
+      Eigen::MatrixXd A(rows + 5, cols);
+      for (Eigen::Index k = 0; k < A.size(); ++k) A.data()[k] = u(rng) * std::exp(8 * u(rng));
+      Eigen::VectorXd v(rows), base(cols);
+      for (int i = 0; i < rows; ++i) v(i) = u(rng);
+      for (int k = 0; k < cols; ++k) base(k) = u(rng);
+      const auto block = A.middleRows(3, rows);
+      Eigen::VectorXd want(cols), got(cols);
+      want.noalias() = block.transpose() * v;
+      transposed_product(block, v, got);
+      for (int k = 0; k < cols; ++k)
+        ASSERT_EQ(want(k), got(k)) << rows << " x " << cols << " " << k;
+      want = base;
+      want.noalias() -= block.transpose() * v;
+      got = base;
+      transposed_product(block, v, got, -1.0, /*accumulate=*/true);
+      for (int k = 0; k < cols; ++k)
+        ASSERT_EQ(want(k), got(k)) << rows << " x " << cols << " " << k;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace modaltyre::transient
