@@ -87,10 +87,21 @@ TEST(BundledData, NoiseFreeRoundTripIsExactForTheScalableModes) {
   o.band_hi_hz = 350;
   const EmaResult r = run_ema(modaltyre_test::synthesise(model, SynthOptions{}), o);
   ASSERT_EQ(r.modes.size(), 14u);
-  ASSERT_EQ(r.dropped.size(), 2u);
-  EXPECT_NEAR(r.dropped[0].freq_hz, 210.787, 0.01);
-  EXPECT_NE(r.dropped[0].reason.find("near a node"), std::string::npos);
-  EXPECT_NEAR(r.dropped[1].freq_hz, 250.064, 0.01);
+  // The two near-node modes are dropped with that reason. On noise-free data the over-modelled
+  // LSCF orders fit the rational FRFs exactly, so how many computational poles reach the LSFD
+  // step follows the last bits of the arithmetic (it differed between two x86-64 hosts' libm);
+  // each must be dropped as one, and none may pass as a mode (the 14 above).
+  int near_node = 0;
+  for (const auto& d : r.dropped) {
+    if (std::abs(d.freq_hz - 210.787) < 0.01 || std::abs(d.freq_hz - 250.064) < 0.01) {
+      EXPECT_NE(d.reason.find("near a node"), std::string::npos) << d.freq_hz;
+      ++near_node;
+    } else {
+      EXPECT_NE(d.reason.find("computational pole"), std::string::npos)
+          << d.freq_hz << " Hz: " << d.reason;
+    }
+  }
+  EXPECT_EQ(near_node, 2);
   for (const auto& p : model.modes) {
     if (std::abs(p.freq_hz - 210.787) < 0.01 || std::abs(p.freq_hz - 250.064) < 0.01) continue;
     const auto m = match(p, r, p.radial[0], 0, 0.003);
@@ -127,7 +138,10 @@ TEST(BundledData, OnePercentNoise) {
 }
 
 // Receptance, mobility and accelerance of the same structure identify the same modes; an
-// accelerance set converted to receptance (frf_set.h) is the receptance set.
+// accelerance set converted to receptance (frf_set.h) is the receptance set. With 0.01 % noise:
+// on exactly rational noise-free FRFs the over-modelled orders' computational poles follow the
+// last bits of the arithmetic, and one host's libm let a 15 %-damped one pass as a mode beside
+// the 275 Hz mode of the converted set; a realistic (if tiny) noise floor fixes them.
 TEST(FrfTypes, GiveTheSameModes) {
   const PlantedModel model = modaltyre_test::ring_model();
   std::vector<EmaResult> res;
@@ -135,10 +149,12 @@ TEST(FrfTypes, GiveTheSameModes) {
     SynthOptions so;
     so.type = t;
     so.f_lo_hz = 0.25;
+    so.noise = 1e-4;
     res.push_back(run_ema(modaltyre_test::synthesise(model, so), ring_band()));
   }
   SynthOptions so;
   so.f_lo_hz = 0.25;
+  so.noise = 1e-4;
   const FrfSet converted =
       convert_frf_type(modaltyre_test::synthesise(model, so), FrfType::receptance);
   res.push_back(run_ema(converted, ring_band()));
