@@ -71,8 +71,8 @@ double carcass_scale(const TyreModel& m, const TyreParameters& P, const Operatin
   double scale = P.compliance_scale / m.config.compliance_scale;
   if (E.inflation_pressure.enabled) {
     // seed 000 eq. (3): h ~ (1 + p_W)^-1, p_W in bar (docs/rheology.md).
-    const double p_bar = c.pressure_kPa * 1e-2;
-    const double p0_bar = E.inflation_pressure.modal_test_pressure_kPa * 1e-2;
+    const double p_bar = c.pressure_bar();
+    const double p0_bar = E.inflation_pressure.modal_test_pressure_bar();
     scale *= std::pow((1 + p0_bar) / (1 + p_bar), E.inflation_pressure.exponent);
   }
   if (E.load_stiffening.enabled) {
@@ -95,12 +95,12 @@ modal::LagKernels kernels_for(const TyreModel& m, const modal::ModalBasis& basis
 // The carcass kernels when rolling_speed (at a speed > 0) or belt_flattening change them;
 // otherwise the model's static ones are used.
 modal::LagKernels rebuilt_kernels(const TyreModel& m, const EffectsConfig& E, double scale,
-                                  bool rolling, bool flattening, double speed_kmh) {
+                                  bool rolling, bool flattening, double speed_m_per_s) {
   modal::ModalBasis basis = m.basis;
   if (flattening) {
     // Foundation kappa on orders >= 2: c_k -> c_k / (1 + pi R kappa c_k), c_k the order's
     // (scaled) static radial compliance; every term of the order gets the same factor.
-    const double kappa = E.belt_flattening.stiffness_MPa * 1e6;
+    const double kappa = E.belt_flattening.stiffness_Pa();
     const double R0 = m.config.outer_radius_m;
     std::vector<double> factor(basis.max_order + 1, 1.0);
     for (int k = 2; k <= basis.max_order; ++k) {
@@ -118,7 +118,7 @@ modal::LagKernels rebuilt_kernels(const TyreModel& m, const EffectsConfig& E, do
   if (rolling) {
     // rolling_speed: steady-rolling receptance at the row's speed (seed 001 eq. 2-5).
     for (auto& t : basis.terms) t.damping_ratio *= E.rolling_speed.damping_scale;
-    rs.speed_m_s = speed_kmh / 3.6;
+    rs.speed_m_s = speed_m_per_s;
     rs.radius_m = m.config.outer_radius_m;
   }
   return kernels_for(m, basis, rs);
@@ -163,7 +163,7 @@ PatchOperator assemble(const TyreModel& m, const CarcassAssembly& a, const TyreP
   op.kernels = kernels;
   op.carcass_scale = scale;
   op.tread_radial_lag = pasternak_tread_lags(
-      k_r / creep, E.tread_coupling.enabled ? E.tread_coupling.coupling_length_mm * 1e-3 : 0, ds,
+      k_r / creep, E.tread_coupling.enabled ? E.tread_coupling.coupling_length_m() : 0, ds,
       cand);
   op.tread_tangential_compliance = creep / k_t;
   op.width_m = width;
@@ -179,8 +179,8 @@ PatchOperator assemble(const TyreModel& m, const CarcassAssembly& a, const TyreP
     op.compliance(j, j) += sj * sj * op.tread_tangential_compliance;
     if (soil) {
       // Winkler soil under the unit (static part of seed 000 eq. 23): z = p H / E2.
-      op.compliance(j, j) += E.soil_compliance.layer_mm * 1e-3 /
-                             (E.soil_compliance.modulus_MPa * 1e6 * width * ds * cj);
+      op.compliance(j, j) +=
+          E.soil_compliance.layer_m() / (E.soil_compliance.modulus_Pa() * width * ds * cj);
     }
   }
   if (ratio != 0.0) {
@@ -197,8 +197,9 @@ PatchOperator assemble(const TyreModel& m, const CarcassAssembly& a, const TyreP
 
 // contact_width: chord of the transverse crown arc pressed in by the sinking.
 double crown_width(const EffectsConfig& E, double sinking_m) {
-  return std::clamp(2 * std::sqrt(2 * E.contact_width.crown_radius_mm * 1e-3 * sinking_m), 1e-3,
-                    E.contact_width.max_width_mm * 1e-3);
+  // 2 r s = 2 (r_mm 1e-3) s exactly: a factor 2 does not round.
+  return std::clamp(2 * std::sqrt(2 * E.contact_width.crown_radius_m() * sinking_m), 1e-3,
+                    E.contact_width.max_width_m());
 }
 
 }  // namespace
@@ -281,7 +282,7 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
   const modal::LagKernels* kernels = &m.kernels;
   const Eigen::MatrixXd* carcass = &assembly.carcass_vertical;
   if (rolling || flattening) {
-    own_kernels = rebuilt_kernels(m, E, scale, rolling, flattening, c.speed_kmh);
+    own_kernels = rebuilt_kernels(m, E, scale, rolling, flattening, c.speed_m_per_s());
     own_vertical = carcass_vertical_compliance(own_kernels, m.theta);
     kernels = &own_kernels;
     carcass = &own_vertical;
@@ -293,7 +294,7 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
       ratio != 0.0 ? horizontal_coupling(m, assembly, ratio, scale) : Eigen::MatrixXd();
 
   double width = P.tread.width_m;
-  if (E.contact_width.enabled) width = std::min(width, E.contact_width.max_width_mm * 1e-3);
+  if (E.contact_width.enabled) width = std::min(width, E.contact_width.max_width_m());
   Prediction out;
   std::vector<char> warm(options.warm_active.begin(), options.warm_active.end());
   const int max_width_iterations = E.contact_width.enabled ? 60 : 1;
@@ -410,8 +411,7 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
   physics.tread = &P.tread;
   physics.tread_creep = tread_creep(E, c);
   if (E.soil_compliance.enabled && c.surface == Surface::soil) {
-    physics.soil_m_per_Pa =
-        E.soil_compliance.layer_mm * 1e-3 / (E.soil_compliance.modulus_MPa * 1e6);
+    physics.soil_m_per_Pa = E.soil_compliance.layer_m() / E.soil_compliance.modulus_Pa();
   }
   try {
     const Patch3d patch(m, *P.footprint_3d, physics);
@@ -505,7 +505,7 @@ Prediction pneumatic_split(const TyreModel& model, const TyreParameters& paramet
 
 Prediction predict(const TyreModel& model, const TyreParameters& parameters,
                    const OperatingConditions& c, const PredictOptions& options) {
-  const double pneumatic_Pa = parameters.pneumatic_share * c.pressure_kPa * 1e3;
+  const double pneumatic_Pa = parameters.pneumatic_share * c.pressure_Pa();
   Prediction p = pneumatic_Pa > 0 && c.load_N > 0
                      ? pneumatic_split(model, parameters, c, options, pneumatic_Pa)
                      : structural(model, parameters, c, options);

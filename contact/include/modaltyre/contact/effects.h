@@ -53,11 +53,17 @@ enum class EffectId {
 };
 inline constexpr int kEffectCount = 9;
 
+/// The effects' parameters as the config states them (the unit is in each name): the catalogue
+/// (effects.cc) declares every key with its unit and range, calibrations and discover search
+/// and print them in these units, and a round trip through SI would move printed digits
+/// (issue 17). The physics reads SI through the accessors, the one place each conversion is
+/// written.
 struct EffectsConfig {
   struct InflationPressure {
     bool enabled = false;
     double exponent = 1.0;                 ///< beta in ((1 + p_test) / (1 + p))^beta
     double modal_test_pressure_kPa = 230;  ///< pressure of the hammer test (not fitted)
+    double modal_test_pressure_bar() const { return modal_test_pressure_kPa * 1e-2; }
   } inflation_pressure;
   struct TreadRelaxation {
     bool enabled = false;
@@ -76,11 +82,14 @@ struct EffectsConfig {
   struct TreadCoupling {
     bool enabled = false;
     double coupling_length_mm = 10;  ///< Pasternak length sqrt(G_shear h / k)
+    double coupling_length_m() const { return coupling_length_mm * 1e-3; }
   } tread_coupling;
   struct SoilCompliance {
     bool enabled = false;
     double modulus_MPa = 2;  ///< deformation modulus E2 of the soil (seed 000 eq. 23)
     double layer_mm = 200;   ///< depth of the deformable layer (not fitted: only E2/layer acts)
+    double modulus_Pa() const { return modulus_MPa * 1e6; }
+    double layer_m() const { return layer_mm * 1e-3; }
   } soil_compliance;
   struct RollingSpeed {
     bool enabled = false;
@@ -90,10 +99,13 @@ struct EffectsConfig {
     bool enabled = false;
     double crown_radius_mm = 150;  ///< transverse radius R_c of the loaded crown profile
     double max_width_mm = 160;     ///< tread width: the patch cannot grow wider (not fitted)
+    double crown_radius_m() const { return crown_radius_mm * 1e-3; }
+    double max_width_m() const { return max_width_mm * 1e-3; }
   } contact_width;
   struct BeltFlattening {
     bool enabled = false;
     double stiffness_MPa = 1;  ///< kappa, N/mm per mm of circumference, on orders >= 2
+    double stiffness_Pa() const { return stiffness_MPa * 1e6; }
   } belt_flattening;
 
   bool enabled(EffectId id) const;

@@ -15,6 +15,11 @@ enum class Branch { loading, unloading };
 enum class Surface { rigid, soil };
 
 /// Conditions of one measurement row or sweep case (defaults: the config's).
+/// A record of what the user stated, in the units of the measurement CSV and the sweep columns
+/// (the unit is in each name): the rows are printed back as stated, and a round trip through SI
+/// would move printed digits (kPa -> Pa -> kPa is inexact for ~14 % of two-decimal values, km/h
+/// -> m/s -> km/h for ~8 %; issue 17). The physics reads SI through the accessors, the one place
+/// where each conversion is written.
 struct OperatingConditions {
   double load_N = 0;
   double horizontal_force_N = 0;
@@ -23,6 +28,11 @@ struct OperatingConditions {
   double speed_kmh = 0;  ///< rolling speed (0: standing)
   Branch branch = Branch::loading;
   Surface surface = Surface::rigid;
+
+  double pressure_Pa() const { return pressure_kPa * 1e3; }
+  /// Seed 000 eq. (3) states its pressure law in bar.
+  double pressure_bar() const { return pressure_kPa * 1e-2; }
+  double speed_m_per_s() const { return speed_kmh / 3.6; }
 };
 
 /// A condition as a number (branch: 0 load / 1 unload; surface: 0 rigid / 1 soil).
