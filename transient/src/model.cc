@@ -246,4 +246,13 @@ TruncationError truncation_error(const TransientModel& model, double load_N) {
   return e;
 }
 
+StaticCarcass static_carcass(const TransientModel& M, const Eigen::VectorXd& f) {
+  StaticCarcass s;
+  s.q = M.psi.transpose() * f;
+  for (int j = 0; j < M.nq; ++j) s.q(j) /= M.omega[j] * M.omega[j];
+  s.r = Eigen::VectorXd::Zero(M.nr);
+  if (M.nr > 0) s.r = (M.lambda.array() * (M.V.transpose() * f).array()).matrix();
+  return s;
+}
+
 }  // namespace modaltyre::transient

@@ -573,12 +573,9 @@ std::vector<double> TransientSystem::state_from(const StaticContact& c) const {
   const Eigen::VectorXd& f = c.f;
   for (int i = 0; i < M.m; ++i)
     if (f(i) > 0 && !units_.contains(i)) escaped_ = true;
-  const Eigen::VectorXd G = M.psi.transpose() * f;
-  for (int j = 0; j < M.nq; ++j) y[j] = G(j) / (M.omega[j] * M.omega[j]);
-  if (M.nr > 0) {
-    const Eigen::VectorXd Vf = M.V.transpose() * f;
-    for (int l = 0; l < M.nr; ++l) y[2 * M.nq + l] = M.lambda(l) * Vf(l);
-  }
+  const StaticCarcass s = static_carcass(M, f);
+  for (int j = 0; j < M.nq; ++j) y[j] = s.q(j);
+  for (int l = 0; l < M.nr; ++l) y[2 * M.nq + l] = s.r(l);
   y[M.z_index()] = c.sinking_m;
   for (int k = 0; k < ne_; ++k) y[M.e_index() + k] = f(units_.lo + k) / M.k_kv(units_.lo + k);
   return y;

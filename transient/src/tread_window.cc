@@ -45,12 +45,10 @@ std::optional<StaticContact> bounding_contact(const TransientModel& M, const Sce
 
 UnitRange touchable_units(const TransientModel& M, const ScenarioPlan& plan,
                           const StaticContact& bound) {
-  // Static carcass displacement u = T xi: q = psi^T f / omega^2, r = lambda V^T f (the static
-  // state of TransientSystem::state_from), xi = Cq q + Cr r.
-  Eigen::VectorXd q = M.psi.transpose() * bound.f;
-  for (int j = 0; j < M.nq; ++j) q(j) /= M.omega[j] * M.omega[j];
-  Eigen::VectorXd xi = M.Cq * q;
-  if (M.nr > 0) xi += M.Cr * (M.lambda.array() * (M.V.transpose() * bound.f).array()).matrix();
+  // Static carcass displacement u = T xi, xi = Cq q + Cr r.
+  const StaticCarcass s = static_carcass(M, bound.f);
+  Eigen::VectorXd xi = M.Cq * s.q;
+  if (M.nr > 0) xi += M.Cr * s.r;
   const Eigen::VectorXd p = (bound.sinking_m - M.tyre.sag.array() - (M.T * xi).array()).matrix();
   const double level = -(kTouchMarginFraction * bound.sinking_m +
                          (plan.cleat ? std::max(0.0, plan.cleat_height_m) : 0.0));

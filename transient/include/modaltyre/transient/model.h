@@ -113,4 +113,11 @@ TruncationError truncation_error(const TransientModel& model, double load_N);
 /// Builds the transient model (settings from tyre.config.transient).
 TransientModel build_transient_model(const TyreModel& tyre);
 
+/// The carcass at rest under unit forces f (m): q = psi^T f / omega^2 (nq) and the residual
+/// coordinates r = diag(lambda) V^T f (nr), the steady state of the equations above.
+struct StaticCarcass {
+  Eigen::VectorXd q, r;
+};
+StaticCarcass static_carcass(const TransientModel& model, const Eigen::VectorXd& f);
+
 }  // namespace modaltyre::transient
