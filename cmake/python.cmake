@@ -35,11 +35,21 @@ if(NOT Python3_FOUND OR NOT pybind11_FOUND)
                   "(Debian: pybind11-dev python3-dev python3-numpy; scripts/install-deps.sh)")
   return()
 endif()
-# Where `cmake --install` puts the package: the interpreter's site directory relative to its
-# prefix (Debian: lib/python3/dist-packages), under CMAKE_INSTALL_PREFIX.
-execute_process(COMMAND ${Python3_EXECUTABLE} -c "import sys; print(sys.prefix)"
-                OUTPUT_VARIABLE _modaltyre_python_prefix OUTPUT_STRIP_TRAILING_WHITESPACE)
-file(RELATIVE_PATH _modaltyre_site ${_modaltyre_python_prefix} ${Python3_SITEARCH})
+# Where `cmake --install` puts the package, relative to the install prefix. Debian's python3
+# (default scheme posix_local) searches PREFIX/lib/python3.X/dist-packages for the prefixes
+# /usr/local and /usr, but not lib/python3/dist-packages under /usr/local (that one is Debian's
+# own packages' folder under /usr): take the version's folder, so that the default prefix
+# /usr/local needs no PYTHONPATH. Elsewhere: the interpreter's site directory relative to its
+# prefix.
+execute_process(
+  COMMAND ${Python3_EXECUTABLE} -c
+          "import os, sys, sysconfig\n\
+if getattr(sysconfig, 'get_default_scheme', str)() == 'posix_local':\n\
+    site = sysconfig.get_paths('posix_local', vars={'base': '/usr', 'platbase': '/usr'})['platlib']\n\
+    print(os.path.relpath(site, '/usr/local'))\n\
+else:\n\
+    print(os.path.relpath(sysconfig.get_paths()['platlib'], sys.prefix))"
+  OUTPUT_VARIABLE _modaltyre_site OUTPUT_STRIP_TRAILING_WHITESPACE)
 set(MODALTYRE_PYTHON_INSTALL_DIR ${_modaltyre_site} CACHE STRING
     "Python package directory under the install prefix")
 set(MODALTYRE_PYTHON ON)

@@ -11,7 +11,7 @@ Checks (issue 22 "Done when"), each in a fresh interpreter started from this scr
   4. a copy of CONFIG with one key misspelt raises modaltyre.InputError (a ValueError) whose
      message names the misspelt key;
   5. with --prefix PREFIX (after `cmake --install BUILD --prefix PREFIX`): the module imports from
-     PREFIX/lib/python3/dist-packages (and the path is printed) and gives the same footprint.
+     PREFIX/lib/python3.X/dist-packages on Debian (the path is printed) and gives the same footprint.
 Exit status 1 if a check fails.
 
 Run:  /usr/bin/python3 bench/outside_checks/py_check.py --build build --config configs/sf350.yaml \
@@ -130,7 +130,10 @@ def main():
     places = [("build tree (PYTHONPATH=%s)" % pp, pp)]
     if a.prefix:
         site = glob.glob(os.path.join(a.prefix, "lib", "python3*", "*-packages"))
-        sp = os.path.abspath(os.path.join(a.prefix, "lib", "python3", "dist-packages"))
+        # The folder CMake chose (Debian: lib/python3.X/dist-packages): the one holding modaltyre.
+        held = [d for d in site if os.path.isdir(os.path.join(d, "modaltyre"))]
+        sp = os.path.abspath(held[0] if held else os.path.join(a.prefix, "lib", "python3",
+                                                               "dist-packages"))
         print(f"install prefix {a.prefix}: package folders found {site}")
         places.append(("install prefix (PYTHONPATH=%s)" % sp, sp))
     for where, path in places:
