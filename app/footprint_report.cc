@@ -13,7 +13,7 @@ namespace modaltyre::app {
 
 using report::describe_conditions;
 
-using report::contact_area_m2;
+using report::cell_area_in_contact_m2;
 using report::enabled_effects;
 using report::peak_pressure_Pa;
 
@@ -58,7 +58,7 @@ void print_footprint_table(const contact::TyreModel& model,
     const auto& r = p.footprint;
     const double peak = peak_pressure_Pa(p);
     const double area =
-        p.patch3d ? contact_area_m2(*p.patch3d) : r.contact_length_m * p.width_mm * 1e-3;
+        p.patch3d ? cell_area_in_contact_m2(*p.patch3d) : r.contact_length_m * p.width_mm * 1e-3;
     const double mean = r.load.load_N / area;
     char line[256];
     std::snprintf(line, sizeof line,

@@ -83,7 +83,7 @@ nlohmann::json pressure_map_json(const contact::Patch3dResult& r) {
   return {{"x_mm", rounded(map.x_mm)}, {"y_mm", rounded(map.y_mm)}, {"pressure_kPa", rows}};
 }
 
-double contact_area_m2(const contact::Patch3dResult& r) {
+double cell_area_in_contact_m2(const contact::Patch3dResult& r) {
   double area = 0;
   for (int i = 0; i < r.sections; ++i)
     for (int j = 0; j < r.columns; ++j)
@@ -125,7 +125,7 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
                        {"complementarity", r.complementarity_residual}}},
                      {"units", units}});
     if (p.patch3d) {
-      cases.back()["contact_area_mm2"] = round_sig(contact_area_m2(*p.patch3d) * 1e6);
+      cases.back()["contact_area_mm2"] = round_sig(cell_area_in_contact_m2(*p.patch3d) * 1e6);
       cases.back()["map"] = pressure_map_json(*p.patch3d);
     }
   }

@@ -32,8 +32,11 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
 /// the sections in contact and two either side, every column of the tread.
 nlohmann::json pressure_map_json(const contact::Patch3dResult& r);
 
-/// Road area of the cells in contact [m^2].
-double contact_area_m2(const contact::Patch3dResult& r);
+/// Road area of the cells in contact [m^2]: sum of dx dy over the cells that carry force (the
+/// `contact_area_mm2` printed per case). Not contact::contact_area_m2, which interpolates each
+/// column's run edges on the level function so that the pneumatic share's area is continuous
+/// in the load.
+double cell_area_in_contact_m2(const contact::Patch3dResult& r);
 
 /// The highest pressure [Pa]: of the units on the 2D patch, of the whole map on the 3D patch.
 double peak_pressure_Pa(const contact::Prediction& p);
