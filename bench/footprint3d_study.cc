@@ -149,17 +149,18 @@ int main(int argc, char** argv) try {
     Eigen::VectorXd x0(keys.size());
     for (std::size_t k = 0; k < keys.size(); ++k) {
       const std::string& key = keys[k];
-      const double v0 = key == "modal.compliance_scale"         ? base.compliance_scale
-                        : key == "tread.modulus_MPa"            ? base.tread.modulus_Pa * 1e-6
-                        : key == "footprint_3d.crown.radius_mm" ? patch.crown.radius_m * 1e3
-                        : key == "modal.extension_bending_s2_rad2_s2"
-                            ? std::max(base.extension_s2, 1.0)
-                        : key == "footprint_3d.lateral_belt.foundation_MPa_per_m"
-                            ? patch.lateral_belt.foundation_Pa_m * 1e-6
-                        : key == "modal.pneumatic_share" ? std::max(base.pneumatic_share, 0.01)
-                        : key == "footprint_3d.lateral_belt.bending_stiffness_Nm"
-                            ? patch.lateral_belt.bending_stiffness_Nm
-                            : throw InputError("cannot calibrate " + key);
+      const double v0 =
+          key == "modal.compliance_scale"               ? base.compliance_scale
+          : key == "tread.modulus_MPa"                  ? base.tread.modulus_Pa * 1e-6
+          : key == "footprint_3d.crown.radius_mm"       ? patch.crown.radius_m * 1e3
+          : key == "modal.extension_bending_s2_rad2_s2" ? std::max(base.extension_s2, 1.0)
+          : key == "footprint_3d.lateral_belt.foundation_MPa_per_m"
+              ? patch.lateral_belt.foundation_Pa_m * 1e-6
+          : key == "modal.pneumatic_share" ? std::max(base.pneumatic_share, 0.01)
+          : key == "footprint_3d.lateral_belt.bending_stiffness_Nm"
+              ? patch.lateral_belt.bending_stiffness_Nm
+          : key == "footprint_3d.crown.exponent" ? patch.crown.exponent
+                                                 : throw InputError("cannot calibrate " + key);
       x0(k) = std::log(v0);
     }
     std::vector<double> cal_loads;

@@ -50,6 +50,10 @@ double CrownProfile::drop_m(double y) const {
       if (u >= s.r2) return s.cz + kWallSlope * (u - s.r2);
       return s.cz - std::sqrt(s.r2 * s.r2 - u * u);
     }
+    case CrownShape::power: {
+      const double yr = reference_half_width_m;
+      return yr * yr / (2 * radius_m) * std::pow(a / yr, exponent);
+    }
     case CrownShape::contour:
       return table_lookup(contour_y_m, contour_drop_m, a);
   }
@@ -70,6 +74,10 @@ double CrownProfile::half_width_m(double d) const {
       if (d >= s.cz) return s.cy + s.r2 + (d - s.cz) / kWallSlope;
       return s.cy + std::sqrt(s.r2 * s.r2 - (s.cz - d) * (s.cz - d));
     }
+    case CrownShape::power: {
+      const double yr = reference_half_width_m;
+      return yr * std::pow(2 * radius_m * d / (yr * yr), 1 / exponent);
+    }
     case CrownShape::contour:
       return table_lookup(contour_drop_m, contour_y_m, d);
   }
@@ -84,8 +92,17 @@ double CrownProfile::reach_m() const {
 }
 
 void CrownProfile::validate() const {
-  if (shape == CrownShape::circular) {
+  if (shape == CrownShape::circular || shape == CrownShape::power) {
     if (!(radius_m > 0)) throw std::invalid_argument("crown radius must be > 0");
+  }
+  if (shape == CrownShape::power) {
+    // n > 1: the crown has no ridge (zero slope) on the centre line.
+    if (!(exponent > 1)) throw std::invalid_argument("power crown exponent must be > 1");
+    if (!(reference_half_width_m > 0)) {
+      throw std::invalid_argument("power crown reference half-width must be > 0");
+    }
+  }
+  if (shape == CrownShape::circular) {
     if (shoulder_radius_m > 0) {
       if (!(shoulder_radius_m < radius_m)) {
         throw std::invalid_argument("shoulder radius must be smaller than the crown radius");
@@ -114,24 +131,35 @@ void CrownProfile::validate() const {
 
 CrownProfile read_crown_profile(const ConfigSection& s) {
   CrownProfile c;
-  const std::string shape = s.choice("shape", "circular", {"flat", "circular", "contour"});
+  const std::string shape = s.choice("shape", "circular", {"flat", "circular", "power", "contour"});
   c.shape = shape == "flat"      ? CrownShape::flat
+            : shape == "power"   ? CrownShape::power
             : shape == "contour" ? CrownShape::contour
                                  : CrownShape::circular;
   c.radius_m = s.positive("radius_mm", c.radius_m * 1e3, 1e6) * 1e-3;
   c.shoulder_radius_m = s.number("shoulder_radius_mm", 0, 0, 1e6) * 1e-3;
   c.shoulder_start_m = s.number("shoulder_start_mm", 0, 0, 1e6) * 1e-3;
+  if (c.shape == CrownShape::power) {  // elsewhere the two keys are unknown keys
+    c.exponent = s.number("exponent", c.exponent, 1, 20);
+    c.reference_half_width_m = s.number("reference_half_width_mm", 0, 0, 1e4) * 1e-3;
+  }
   for (double v : s.numbers("contour_y_mm", {}, 0, 1e4)) c.contour_y_m.push_back(v * 1e-3);
   for (double v : s.numbers("contour_drop_mm", {}, 0, 1e4)) c.contour_drop_m.push_back(v * 1e-3);
   if (c.shape == CrownShape::circular && c.shoulder_radius_m > 0 && !s.has("shoulder_start_mm")) {
     s.fail("shoulder_start_mm", "required with shoulder_radius_mm");
   }
+  if (c.shape == CrownShape::power && !s.has("reference_half_width_mm")) {
+    s.fail("reference_half_width_mm", "required with shape: power");
+  }
   try {
     c.validate();
   } catch (const std::invalid_argument& e) {
-    const char* key = c.shape == CrownShape::contour ? "contour_drop_mm"
-                      : c.shoulder_radius_m > 0      ? "shoulder_radius_mm"
-                                                     : "radius_mm";
+    const char* key = c.shape == CrownShape::contour                      ? "contour_drop_mm"
+                      : c.shape == CrownShape::power && !(c.exponent > 1) ? "exponent"
+                      : c.shape == CrownShape::power && !(c.reference_half_width_m > 0)
+                          ? "reference_half_width_mm"
+                      : c.shoulder_radius_m > 0 ? "shoulder_radius_mm"
+                                                : "radius_mm";
     s.fail(key, e.what());
   }
   return c;

@@ -22,9 +22,19 @@ auto& patch3d_of(Config& c) {
 template <class Config>
 auto& crown_of(Config& c) {
   auto& crown = patch3d_of(c).crown;
-  if (crown.shape != CrownShape::circular) {
+  if (crown.shape != CrownShape::circular && crown.shape != CrownShape::power) {
     throw InputError({c.source, 0, "validation.calibrate"},
-                     "footprint_3d.crown.radius_mm is calibrated only on a circular crown");
+                     "footprint_3d.crown.* is calibrated only on a circular or power crown");
+  }
+  return crown;
+}
+
+template <class Config>
+auto& power_crown_of(Config& c) {
+  auto& crown = patch3d_of(c).crown;
+  if (crown.shape != CrownShape::power) {
+    throw InputError({c.source, 0, "validation.calibrate"},
+                     "footprint_3d.crown.exponent needs a power crown (shape: power)");
   }
   return crown;
 }
@@ -61,11 +71,16 @@ std::vector<ParameterSpec> tyre_scalars() {
                             "candidate window longer than half the circumference");
          }
        }},
-      // The 3D patch's crown (footprint_3d.crown, circular): rounder crown, narrower patch.
+      // The 3D patch's crown (footprint_3d.crown, circular or power): rounder crown, narrower
+      // patch.
       // Above 100 mm the crown stays a graph over a tread.
       {"footprint_3d.crown.radius_mm", "mm", std::nullopt, ln_search(100, 1e5),
        logistic_search(100, 1e5), [](const TyreConfig& c) { return crown_of(c).radius_m * 1e3; },
        [](TyreConfig& c, double v) { crown_of(c).radius_m = v * 1e-3; }},
+      // The power crown's exponent (crown_profile.h): 2 is the circular crown's parabola.
+      {"footprint_3d.crown.exponent", "-", std::nullopt, ln_search(1.05, 8), std::nullopt,
+       [](const TyreConfig& c) { return power_crown_of(c).exponent; },
+       [](TyreConfig& c, double v) { power_crown_of(c).exponent = v; }},
       {"footprint_3d.tread_width_mm", "mm", ValueRange{20, 2000}, ln_search(20, 500), std::nullopt,
        [](const TyreConfig& c) { return patch3d_of(c).tread_width_m * 1e3; },
        [](TyreConfig& c, double v) { patch3d_of(c).tread_width_m = v * 1e-3; }},

@@ -67,9 +67,10 @@ double search_derivative(const FreeParameter& p, double u) {
 
 std::vector<FreeParameter> baseline_parameters(const TyreConfig& config) {
   std::vector<FreeParameter> out = {make_parameter("modal.compliance_scale")};
-  if (config.footprint_3d && config.footprint_3d->crown.shape == contact::CrownShape::circular) {
-    // The 3D patch's second scalar: its crown radius (the tread modulus is a sourced compound
-    // value there, not an effective layer).
+  if (config.footprint_3d && (config.footprint_3d->crown.shape == contact::CrownShape::circular ||
+                              config.footprint_3d->crown.shape == contact::CrownShape::power)) {
+    // The 3D patch's second scalar: its crown radius, circular or power crown (the tread modulus
+    // is a sourced compound value there, not an effective layer).
     out.push_back(make_parameter("footprint_3d.crown.radius_mm"));
   } else {
     out.push_back(make_parameter("tread.modulus_MPa"));

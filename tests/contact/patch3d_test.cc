@@ -1,6 +1,7 @@
 // The 3D contact patch (contact/patch3d.h): the laterally rigid reduction against the full cell
-// solve, the 2D patch as the flat-crown limit, symmetry in y, a rigid torus on a Winkler tread
-// (analytic), mesh convergence in x and y, equilibrium and complementarity.
+// solve, the 2D patch as the flat-crown limit, symmetry in y, a rigid torus and a rigid power
+// crown on a Winkler tread (analytic), mesh convergence in x and y, equilibrium and
+// complementarity.
 #include "modaltyre/contact/patch3d.h"
 
 #include <gtest/gtest.h>
@@ -92,6 +93,38 @@ TEST(Patch3d, RigidTorusOnAWinklerTreadGivesTheEllipse) {
   EXPECT_NEAR(r.sinking_m, delta, 0.01 * delta);
   EXPECT_NEAR(r.length_m, 2 * std::sqrt(2 * R0 * delta), 0.01 * r.length_m);
   EXPECT_NEAR(r.width_m, 2 * std::sqrt(2 * Rc * delta), 0.01 * r.width_m);
+}
+
+TEST(Patch3d, RigidPowerCrownOnAWinklerTreadGivesItsAnalyticPatch) {
+  // As above with the power crown z = c|y|^n (crown_profile.h, c = y_r^(2-n) / 2R): the gap
+  // x^2/2R0 + c|y|^n on springs k = E/h per area. The patch is x^2/2R0 + c|y|^n <= delta:
+  // length 2 sqrt(2 R0 delta), width 2 (delta/c)^(1/n), and F = (8/3) k sqrt(2 R0) delta^(3/2)
+  // (delta/c)^(1/n) I_n with I_n = int_0^1 (1 - t^n)^(3/2) dt = G(1+1/n) G(5/2) / G(5/2+1/n)
+  // (n = 2: the ellipse above).
+  for (double n : {1.5, 3.0}) {
+    Tyre3d s(with(kCoarse, {"contact.unit_length_mm=0.5", "footprint_3d.lateral_cell_mm=1",
+                            "footprint_3d.crown.shape=power", "footprint_3d.crown.radius_mm=300",
+                            "footprint_3d.crown.exponent=" + std::to_string(n),
+                            "footprint_3d.crown.reference_half_width_mm=60",
+                            "footprint_3d.tread_width_mm=200", "tread.modulus_MPa=6"}));
+    for (auto* k : {&s.model.kernels.r_from_r, &s.model.kernels.r_from_t, &s.model.kernels.t_from_r,
+                    &s.model.kernels.t_from_t}) {
+      std::fill(k->begin(), k->end(), 0.0);
+    }
+    const Patch3d patch(s.model, s.patch);
+    const double F = 3000, R0 = s.tyre.outer_radius_m, yr = 0.06;
+    const double c = std::pow(yr, 2 - n) / (2 * 0.3);
+    const auto& T = s.tyre.tread;
+    const double k = T.modulus_Pa / T.thickness_m;
+    const double I = std::tgamma(1 + 1 / n) * std::tgamma(2.5) / std::tgamma(2.5 + 1 / n);
+    const double A = 8.0 / 3 * k * std::sqrt(2 * R0) * std::pow(c, -1 / n) * I;
+    const double delta = std::pow(F / A, 1 / (1.5 + 1 / n));
+    const Patch3dResult r = patch.solve(F);
+    ASSERT_TRUE(r.ok()) << r.message;
+    EXPECT_NEAR(r.sinking_m, delta, 0.01 * delta) << "n = " << n;
+    EXPECT_NEAR(r.length_m, 2 * std::sqrt(2 * R0 * delta), 0.01 * r.length_m) << "n = " << n;
+    EXPECT_NEAR(r.width_m, 2 * std::pow(delta / c, 1 / n), 0.01 * r.width_m) << "n = " << n;
+  }
 }
 
 struct Spacing {

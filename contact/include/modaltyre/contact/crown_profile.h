@@ -8,6 +8,11 @@
 //   circular  a crown arc of radius R1, z = R1 - sqrt(R1^2 - y^2); optionally followed, from
 //             |y| = y1 on, by a tangent shoulder arc of radius R2 < R1 (tread profiles are made
 //             of such arcs: flat in the centre, rounder towards the shoulder)
+//   power     z = (y_r^2 / 2 R1) (|y| / y_r)^n: the parabola of radius R1 at the reference
+//             half-width y_r, with the exponent n > 1 setting how the drop is shared between
+//             centre and shoulder (n = 2: the circular crown's parabola, y^2 / 2 R1; n > 2 flatter
+//             in the centre and steeper at the shoulder, n < 2 the reverse). The lateral edge of
+//             a section pressed in by d is y_r (2 R1 d / y_r^2)^(1/n).
 //   contour   a measured contour: |y| and z tabulated, linear between the points
 #include <string>
 #include <vector>
@@ -16,11 +21,13 @@
 
 namespace modaltyre::contact {
 
-enum class CrownShape { flat, circular, contour };
+enum class CrownShape { flat, circular, power, contour };
 
 struct CrownProfile {
   CrownShape shape = CrownShape::circular;
-  double radius_m = 0.8;               ///< R1, crown arc radius (circular), > 0
+  double radius_m = 0.8;               ///< R1, crown arc radius (circular, power), > 0
+  double exponent = 2;                 ///< n of the power crown, > 1
+  double reference_half_width_m = 0;   ///< y_r of the power crown, > 0
   double shoulder_radius_m = 0;        ///< R2 of the shoulder arc, 0 = none, else < R1
   double shoulder_start_m = 0;         ///< y1, where the shoulder arc begins, < R1
   std::vector<double> contour_y_m;     ///< |y|, strictly increasing from 0 (contour)
@@ -38,8 +45,9 @@ struct CrownProfile {
   void validate() const;
 };
 
-/// Reads the `crown:` section: shape (flat, circular, contour), radius_mm, shoulder_radius_mm,
-/// shoulder_start_mm, contour_y_mm, contour_drop_mm. Errors name file, line and key.
+/// Reads the `crown:` section: shape (flat, circular, power, contour), radius_mm,
+/// shoulder_radius_mm, shoulder_start_mm, exponent, reference_half_width_mm, contour_y_mm,
+/// contour_drop_mm. Errors name file, line and key.
 CrownProfile read_crown_profile(const ConfigSection& section);
 
 }  // namespace modaltyre::contact
