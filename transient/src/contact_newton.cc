@@ -75,47 +75,67 @@ void ContactNewton::factor(double gamma) {
   }
   d_r_inv_ = nr > 0 ? 1.0 / (1.0 + gamma / M.tau_residual_s) : 1.0;
   d_zw_ = gamma;
-  // M_EE and Y = M_EE^-1 diag(kd / c') T~ over the active range (zero beyond its last unit).
+  // M_EE and Y = M_EE^-1 diag(kd / c') T~ over the active range (zero beyond its last unit);
+  // Ty_ = diag(kd) (T~ - gamma Y) on the active rows.
   const int na = static_cast<int>(active_.size());
-  Eigen::MatrixXd Ty = Tt_active_;  // T~ - gamma Y on the active rows
+  Ty_.resize(na, np_);
+  bool at_rest = true;  // M_EE diagonal (no advection band): Y row by row, no back substitution
   if (ne_ > 0) {
     const double adv = Omega_ / M.tyre.dtheta_rad;
     ee_s1_ = -gamma * kUpwind[1] * adv;
     ee_s2_ = -gamma * kUpwind[2] * adv;
+    at_rest = ee_s1_ == 0 && ee_s2_ == 0;
     ee_d_.resize(ne_);
     for (int k = 0; k < ne_; ++k) {
       const int i = u0_ + k;
       ee_d_(k) = 1.0 - gamma * (kUpwind[0] * adv - (kd_(i) + M.k_kv(i)) / M.c_kv(i));
     }
     ee_d_inv_ = ee_d_.cwiseInverse();
-    if (na > 0) {
-      // Back substitution up the band, a row per unit (row-major: rows contiguous). At rest
-      // (no advection) M_EE is diagonal and the band terms vanish.
-      const int lo = active_.front(), hi = active_.back();
-      const bool band = ee_s1_ != 0 || ee_s2_ != 0;
-      using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-      RowMajor Y = RowMajor::Zero(hi - lo + 1, np_);
-      for (int a = na - 1, i = hi; i >= lo; --i) {
-        const int k = i - lo;
-        if (a >= 0 && active_[a] == i) Y.row(k) = kd_(i) / M.c_kv(i) * Tt_active_.row(a--);
-        if (band) {
-          if (k + 1 < Y.rows()) Y.row(k) -= ee_s1_ * Y.row(k + 1);
-          if (k + 2 < Y.rows()) Y.row(k) -= ee_s2_ * Y.row(k + 2);
-        }
-        Y.row(k) /= ee_d_(i - u0_);
-      }
-      for (int a = 0; a < na; ++a) Ty.row(a) -= gamma * Y.row(active_[a] - lo);
-    }
   } else {
     ee_d_.resize(0);
     ee_d_inv_.resize(0);
   }
-  // K = T~^T diag(kd) (T~ - gamma Y), coefficient-based (Eigen's GEMM would start OpenMP threads
-  // for a product this small; the library is built with OpenMP for sweeps).
-  // The scaled rows first: a coefficient of K is then a dot product of two contiguous columns.
-  for (int a = 0; a < na; ++a) Ty.row(a) *= kd_(active_[a]);
+  if (ne_ > 0 && na > 0 && !at_rest) {
+    // Back substitution up the band, a row per unit (row-major: rows contiguous).
+    const int lo = active_.front(), hi = active_.back();
+    Y_.setZero(hi - lo + 1, np_);
+    for (int a = na - 1, i = hi; i >= lo; --i) {
+      const int k = i - lo;
+      if (a >= 0 && active_[a] == i) Y_.row(k) = kd_(i) / M.c_kv(i) * Tt_active_.row(a--);
+      if (k + 1 < Y_.rows()) Y_.row(k) -= ee_s1_ * Y_.row(k + 1);
+      if (k + 2 < Y_.rows()) Y_.row(k) -= ee_s2_ * Y_.row(k + 2);
+      Y_.row(k) /= ee_d_(i - u0_);
+    }
+    for (int a = 0; a < na; ++a)
+      Ty_.row(a) = (Tt_active_.row(a) - gamma * Y_.row(active_[a] - lo)) * kd_(active_[a]);
+  } else if (ne_ > 0 && na > 0) {
+    // At rest M_EE is diagonal: Y_a = (kd_a / c'_a) T~_a / d_a, column by column (contiguous,
+    // the same operations per entry as the back substitution, so the same bits).
+    work_s_.resize(na);
+    work_d_.resize(na);
+    work_k_.resize(na);
+    for (int a = 0; a < na; ++a) {
+      const int i = active_[a];
+      work_s_(a) = kd_(i) / M.c_kv(i);
+      work_d_(a) = ee_d_(i - u0_);
+      work_k_(a) = kd_(i);
+    }
+    const double* s = work_s_.data();
+    const double* d = work_d_.data();
+    const double* kd = work_k_.data();
+    for (int j = 0; j < np_; ++j) {
+      const double* t = Tt_active_.col(j).data();
+      double* out = Ty_.col(j).data();
+      for (int a = 0; a < na; ++a) out[a] = (t[a] - gamma * ((s[a] * t[a]) / d[a])) * kd[a];
+    }
+  } else {
+    for (int a = 0; a < na; ++a) Ty_.row(a) = Tt_active_.row(a) * kd_(active_[a]);
+  }
+  // K = T~^T Ty_, coefficient-based (Eigen's GEMM would start OpenMP threads for a product this
+  // small; the library is built with OpenMP for sweeps): a coefficient is a dot product of two
+  // contiguous columns.
   K_.setZero(np_, np_);
-  if (na > 0) K_.noalias() = Tt_active_.transpose().lazyProduct(Ty);
+  if (na > 0) K_.noalias() = Tt_active_.transpose().lazyProduct(Ty_);
   // Capacitance I - gamma (P D^-1 Q) K, column k of P D^-1 Q from the unit force on eta_k.
   Eigen::MatrixXd H(np_, np_);
   for (int k = 0; k < np_; ++k) {

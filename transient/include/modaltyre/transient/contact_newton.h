@@ -71,6 +71,10 @@ class ContactNewton {
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
   Eigen::MatrixXd Tt_active_;   ///< T~ rows of the active units (na x np)
   Eigen::VectorXd gamma_kd_c_;  ///< gamma kd_i / c'_i of the active units (relaxation on)
+  /// factor()'s work: diag(kd) (T~ - gamma Y) on the active rows, Y (rolling), per-unit factors.
+  Eigen::MatrixXd Ty_;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Y_;
+  Eigen::VectorXd work_s_, work_d_, work_k_;
   mutable Eigen::VectorXd eta_, work_x_, work_e_, work_a_;
 };
 
