@@ -61,5 +61,38 @@ TEST(ColumnProduct, TransposedEqualsEigensProductToTheBit) {
   }
 }
 
+TEST(ColumnProduct, ColumnDotsSumInTheirStatedOrder) {
+  // column_dots: four partial sums over the rows i mod 4, (s0 + s1) + (s2 + s3), then the last
+  // rows % 4 in order (the same bits on the AVX2 and the portable path), alpha times it added.
+  std::mt19937 rng(212121);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int rows : {1, 3, 4, 5, 13, 64, 67, 210, 253, 729}) {
+    for (int cols : {1, 2, 3, 4, 5, 13, 14, 44}) {
+      Eigen::MatrixXd A(rows + 5, cols);
+      for (Eigen::Index k = 0; k < A.size(); ++k) A.data()[k] = u(rng) * std::exp(8 * u(rng));
+      Eigen::VectorXd v(rows), base(cols);
+      for (int i = 0; i < rows; ++i) v(i) = u(rng);
+      for (int k = 0; k < cols; ++k) base(k) = u(rng);
+      const auto block = A.middleRows(1, rows);
+      Eigen::VectorXd got = base;
+      column_dots(block, v, got, -0.5, /*accumulate=*/true);
+      Eigen::VectorXd assigned(cols);
+      column_dots(block, v, assigned);
+      for (int k = 0; k < cols; ++k) {
+        double s[4] = {0, 0, 0, 0};
+        const int r4 = rows / 4 * 4;
+        for (int i = 0; i < r4; ++i) s[i % 4] = block(i, k) * v(i) + s[i % 4];
+        double sum = (s[0] + s[1]) + (s[2] + s[3]);
+        for (int i = r4; i < rows; ++i) sum += block(i, k) * v(i);
+        ASSERT_EQ(base(k) + -0.5 * sum, got(k)) << rows << " x " << cols << " " << k;
+        ASSERT_EQ(0.0 + sum, assigned(k)) << rows << " x " << cols << " " << k;
+        // And the product itself to rounding.
+        const double exact = block.col(k).dot(v);
+        ASSERT_NEAR(exact, sum, 1e-13 * block.col(k).cwiseAbs().dot(v.cwiseAbs()));
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace modaltyre::transient

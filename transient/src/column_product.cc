@@ -115,7 +115,89 @@ __attribute__((target("avx2"))) Index transposed_avx2(Index rows, Index cols, co
 }
 #endif
 
+/// Outputs [k0, k1) of column_dots() one at a time: four partial sums over the rows i = 0, 1, 2,
+/// 3 mod 4 (the AVX2 lanes), added as (s0 + s1) + (s2 + s3), then the last rows % 4 in order.
+void dots_scalar(Index k0, Index k1, Index rows, const double* A, Index lda, const double* v,
+                 double* out, double alpha, bool accumulate) {
+  for (Index k = k0; k < k1; ++k) {
+    const double* a = A + k * lda;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    Index i = 0;
+    for (; i + 4 <= rows; i += 4) {
+      s0 = a[i] * v[i] + s0, s1 = a[i + 1] * v[i + 1] + s1;
+      s2 = a[i + 2] * v[i + 2] + s2, s3 = a[i + 3] * v[i + 3] + s3;
+    }
+    double s = (s0 + s1) + (s2 + s3);
+    for (; i < rows; ++i) s += a[i] * v[i];
+    out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
+  }
+}
+
+#ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
+/// out_k from the four lanes of c and the last rows % 4.
+__attribute__((target("avx2"))) void dots_finish(__m256d c, Index k, Index r4, Index rows,
+                                                 const double* A, Index lda, const double* v,
+                                                 double* out, double alpha, bool accumulate) {
+  alignas(32) double l[4];
+  _mm256_store_pd(l, c);
+  double s = (l[0] + l[1]) + (l[2] + l[3]);
+  const double* a = A + k * lda;
+  for (Index i = r4; i < rows; ++i) s += a[i] * v[i];
+  out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
+}
+
+/// Four outputs at a time, each a register of four partial sums along the rows (one load of v
+/// per four rows for all four), in dots_scalar()'s order.
+__attribute__((target("avx2"))) Index dots_avx2(Index rows, Index cols, const double* A, Index lda,
+                                                const double* v, double* out, double alpha,
+                                                bool accumulate) {
+  Index k = 0;
+  const Index r4 = rows / 4 * 4;
+  auto finish = [&](__m256d c, Index kk) {
+    alignas(32) double l[4];
+    _mm256_store_pd(l, c);
+    double s = (l[0] + l[1]) + (l[2] + l[3]);
+    const double* a = A + kk * lda;
+    for (Index i = r4; i < rows; ++i) s += a[i] * v[i];
+    out[kk] = (accumulate ? out[kk] : 0.0) + alpha * s;
+  };
+  for (; k + 4 <= cols; k += 4) {
+    const double *a0 = A + k * lda, *a1 = a0 + lda, *a2 = a1 + lda, *a3 = a2 + lda;
+    __m256d c0 = _mm256_setzero_pd(), c1 = c0, c2 = c0, c3 = c0;
+    for (Index i = 0; i < r4; i += 4) {
+      const __m256d b = _mm256_loadu_pd(v + i);
+      c0 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a0 + i), b), c0);
+      c1 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a1 + i), b), c1);
+      c2 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a2 + i), b), c2);
+      c3 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a3 + i), b), c3);
+    }
+    dots_finish(c0, k, r4, rows, A, lda, v, out, alpha, accumulate);
+    dots_finish(c1, k + 1, r4, rows, A, lda, v, out, alpha, accumulate);
+    dots_finish(c2, k + 2, r4, rows, A, lda, v, out, alpha, accumulate);
+    dots_finish(c3, k + 3, r4, rows, A, lda, v, out, alpha, accumulate);
+  }
+  for (; k < cols; ++k) {
+    const double* a = A + k * lda;
+    __m256d c = _mm256_setzero_pd();
+    for (Index i = 0; i < r4; i += 4)
+      c = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a + i), _mm256_loadu_pd(v + i)), c);
+    dots_finish(c, k, r4, rows, A, lda, v, out, alpha, accumulate);
+  }
+  return k;
+}
+#endif
+
 }  // namespace
+
+void column_dots(Index rows, Index cols, const double* A, Index lda, const double* v, double* out,
+                 double alpha, bool accumulate) {
+  Index done = 0;
+#ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) done = dots_avx2(rows, cols, A, lda, v, out, alpha, accumulate);
+#endif
+  dots_scalar(done, cols, rows, A, lda, v, out, alpha, accumulate);
+}
 
 void transposed_product(Index rows, Index cols, const double* A, Index lda, const double* v,
                         double* out, double alpha, bool accumulate) {

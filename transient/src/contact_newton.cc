@@ -27,6 +27,9 @@ ContactNewton::ContactNewton(const TransientModel& model, const TransientSystem&
     blocks_.push_back(b);
   }
   eta_.resize(np_);
+  eta0_.resize(np_);
+  phi_.resize(np_);
+  w_.resize(np_);
   work_x_.resize(nx_);
   work_e_.resize(ne_);
 }
@@ -109,50 +112,54 @@ void ContactNewton::factor(double gamma) {
     for (int a = 0; a < na; ++a)
       Ty_.row(a) = (Tt_active_.row(a) - gamma * Y_.row(active_[a] - lo)) * kd_(active_[a]);
   } else if (ne_ > 0 && na > 0) {
-    // At rest M_EE is diagonal: Y_a = (kd_a / c'_a) T~_a / d_a, column by column (contiguous,
-    // the same operations per entry as the back substitution, so the same bits).
+    // At rest M_EE is diagonal and Y_a = (kd_a / c'_a) T~_a / d_a, so diag(kd)(T~ - gamma Y) =
+    // diag(w) T~ with w_a = kd_a (1 - gamma (kd_a / c'_a) / d_a) = kd_a (1 + gamma k'_a / c'_a)
+    // / (1 + gamma (kd_a + k'_a) / c'_a): the contact spring in series with the tread's
+    // Kelvin-Voigt element at the step's time scale gamma. K = T~^T diag(w) T~ is symmetric:
+    // its upper triangle only, each coefficient a dot product of two contiguous columns.
     work_s_.resize(na);
-    work_d_.resize(na);
-    work_k_.resize(na);
     for (int a = 0; a < na; ++a) {
       const int i = active_[a];
-      work_s_(a) = kd_(i) / M.c_kv(i);
-      work_d_(a) = ee_d_(i - u0_);
-      work_k_(a) = kd_(i);
+      work_s_(a) = kd_(i) * (1.0 - gamma * (kd_(i) / M.c_kv(i) / ee_d_(i - u0_)));
     }
-    const double* s = work_s_.data();
-    const double* d = work_d_.data();
-    const double* kd = work_k_.data();
-    for (int j = 0; j < np_; ++j) {
-      const double* t = Tt_active_.col(j).data();
-      double* out = Ty_.col(j).data();
-      for (int a = 0; a < na; ++a) out[a] = (t[a] - gamma * ((s[a] * t[a]) / d[a])) * kd[a];
-    }
+    for (int j = 0; j < np_; ++j) Ty_.col(j) = Tt_active_.col(j).cwiseProduct(work_s_);
+    K_.resize(np_, np_);
+    for (int j = 0; j < np_; ++j)
+      for (int i = 0; i <= j; ++i) K_(j, i) = K_(i, j) = Tt_active_.col(i).dot(Ty_.col(j));
   } else {
     for (int a = 0; a < na; ++a) Ty_.row(a) = Tt_active_.row(a) * kd_(active_[a]);
   }
-  // K = T~^T Ty_, coefficient-based (Eigen's GEMM would start OpenMP threads for a product this
-  // small; the library is built with OpenMP for sweeps): a coefficient is a dot product of two
-  // contiguous columns.
-  K_.setZero(np_, np_);
-  if (na > 0) K_.noalias() = Tt_active_.transpose().lazyProduct(Ty_);
-  // Capacitance I - gamma (P D^-1 Q) K, column k of P D^-1 Q from the unit force on eta_k.
-  Eigen::MatrixXd H(np_, np_);
-  for (int k = 0; k < np_; ++k) {
-    work_x_.setZero();
-    if (k < rank) {
-      work_x_.segment(nq, nq) = -M.Cq.row(k).transpose();
-      if (nr > 0)
-        work_x_.segment(2 * nq, nr) =
-            -(M.lambda.array() / M.tau_residual_s * M.Cr.row(k).transpose().array()).matrix();
-    } else {
-      work_x_(Z + 1) = -1.0 / M.settings.hub_mass_kg;
-    }
-    solve_d(work_x_.data());
-    H.col(k).head(rank).noalias() = M.Cq * work_x_.head(nq);
-    if (nr > 0) H.col(k).head(rank).noalias() += M.Cr * work_x_.segment(2 * nq, nr);
-    H(rank, k) = work_x_(Z);
+  if (at_rest && ne_ > 0 && na > 0) {
+    // K from the symmetric update above.
+  } else if (na > 0) {
+    // K = T~^T Ty_, coefficient-based (Eigen's GEMM would start OpenMP threads for a product
+    // this small; the library is built with OpenMP for sweeps).
+    K_.noalias() = Tt_active_.transpose().lazyProduct(Ty_);
+  } else {
+    K_.setZero(np_, np_);
   }
+  // D^-1 Q, column k the response of X to a unit force on eta_k: the force on xi_k enters the
+  // v rows as -Cq^T e_k (the r rows as -(lambda / tau) Cr^T e_k), and D^-1 maps it through its
+  // blocks (the (q, v) and (v, v) entries of each block inverse); the unit force on z (the hub)
+  // enters w as -1 / m_hub, and z as gamma times that. Then H = P D^-1 Q (np x np) and the
+  // capacitance I - gamma H K of Woodbury's identity.
+  DQ_.setZero(nx_, np_);
+  for (const Block& b : blocks_) {
+    const int h = b.n / 2;
+    for (int r = 0; r < b.n; ++r)
+      for (int c = 0; c < h; ++c)
+        DQ_.row(b.idx[r]).head(rank) -= b.inv(r, h + c) * M.Cq.col(b.idx[c]).transpose();
+  }
+  for (int l = 0; l < nr; ++l)
+    DQ_.row(2 * nq + l).head(rank) =
+        -(d_r_inv_ * M.lambda(l) / M.tau_residual_s) * M.Cr.col(l).transpose();
+  DQ_(Z + 1, rank) = -1.0 / M.settings.hub_mass_kg;
+  DQ_(Z, rank) = d_zw_ * DQ_(Z + 1, rank);
+  Eigen::MatrixXd& H = H_;
+  H.setZero(np_, np_);
+  H.topRows(rank).noalias() = M.Cq.lazyProduct(DQ_.topRows(nq));
+  if (nr > 0) H.topRows(rank).noalias() += M.Cr.lazyProduct(DQ_.middleRows(2 * nq, nr));
+  H.row(rank) = DQ_.row(Z);
   // gamma kd / c' of the active units, for M_EX in solve() (no division per solve).
   gamma_kd_c_.resize(ne_ > 0 ? na : 0);
   for (int a = 0; a < gamma_kd_c_.size(); ++a)
@@ -160,6 +167,7 @@ void ContactNewton::factor(double gamma) {
   Eigen::MatrixXd cap = Eigen::MatrixXd::Identity(np_, np_);
   cap.noalias() -= gamma * H.lazyProduct(K_);
   cap_.compute(cap);
+  cap_inv_ = cap_.inverse();
 }
 
 void ContactNewton::solve_d(double* x) const {
@@ -192,22 +200,11 @@ void ContactNewton::solve(double* x) const {
   const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank;
   const int na = static_cast<int>(active_.size());
   Eigen::Map<Eigen::VectorXd> xx(x, nx_);
-  // Q phi added to the X rows (phi: forces on eta).
-  auto add_q = [&](const Eigen::VectorXd& phi, Eigen::Ref<Eigen::VectorXd> out) {
-    transposed_product(M.Cq, phi.head(rank), out.segment(nq, nq), -1.0, /*accumulate=*/true);
-    if (nr > 0)
-      out.segment(2 * nq, nr).array() -=
-          M.lambda.array() / M.tau_residual_s * (M.Cr.transpose() * phi.head(rank)).array();
-    out(Z + 1) -= phi(rank) / M.settings.hub_mass_kg;
-  };
-  auto apply_p = [&](const Eigen::Ref<const Eigen::VectorXd>& in, Eigen::VectorXd& eta) {
-    column_product(M.Cq, in.head(nq), eta);  // = Cq x to the bit (column_product.h)
-    if (nr > 0) column_product(M.Cr, in.segment(2 * nq, nr), eta, /*accumulate=*/true);
-    eta(rank) = in(Z);
-  };
   double* xe = x + nx_;
+  // phi1: the forces on eta of eliminating E, -gamma T~^T diag(kd) M_EE^-1 b_E; b_X + Q phi1 is
+  // then the right-hand side of the Schur complement S = D - gamma Q K P.
+  phi_.setZero(np_);
   if (ne_ > 0 && na > 0) {
-    // b_X - M_XE M_EE^-1 b_E.
     work_a_.resize(na);
     if (ee_s1_ == 0 && ee_s2_ == 0) {  // at rest M_EE is diagonal: only the active rows
       for (int a = 0; a < na; ++a) {
@@ -219,23 +216,26 @@ void ContactNewton::solve(double* x) const {
       solve_ee(work_e_.data());
       for (int a = 0; a < na; ++a) work_a_(a) = kd_(active_[a]) * work_e_(active_[a] - u0_);
     }
-    transposed_product(Tt_active_, work_a_, eta_);  // T~^T w (column_product.h)
-    eta_ *= -gamma_;
-    add_q(eta_, xx);
+    column_dots(Tt_active_, work_a_, phi_, -gamma_);  // -gamma T~^T w (column_product.h)
   }
-  // S^-1 by Woodbury: x0 = D^-1 b, x = x0 + D^-1 gamma Q K (cap^-1 P x0).
+  // S^-1 by Woodbury: with x0 = D^-1 b_X and eta0 = P x0,
+  //   x_X = x0 + D^-1 Q phi,  phi = phi1 + gamma K cap^-1 (eta0 + H phi1),
+  // and P x_X = eta0 + H phi (H = P D^-1 Q): one application of D^-1 and of P per solve, the
+  // forces entering X through the precomputed columns D^-1 Q.
   solve_d(x);
-  apply_p(xx, eta_);
-  const Eigen::VectorXd w = cap_.solve(eta_);
-  eta_.noalias() = gamma_ * (K_ * w);
-  work_x_.setZero();
-  add_q(eta_, work_x_);
-  solve_d(work_x_.data());
-  xx += work_x_;
+  column_product(M.Cq, xx.head(nq), eta0_);  // P x0 (= Cq q + Cr r, z)
+  if (nr > 0) column_product(M.Cr, xx.segment(2 * nq, nr), eta0_, /*accumulate=*/true);
+  eta0_(rank) = xx(Z);
+  eta_ = eta0_;
+  eta_.noalias() += H_ * phi_;
+  w_ = cap_.solve(eta_);
+  phi_.noalias() += gamma_ * (K_ * w_);
+  column_product(DQ_, phi_, xx, /*accumulate=*/true);
   if (ne_ > 0) {
     // x_E = M_EE^-1 (b_E - M_EX x_X), M_EX = -gamma diag(kd / c') T~ P.
     if (na > 0) {
-      apply_p(xx, eta_);
+      eta_ = eta0_;
+      eta_.noalias() += H_ * phi_;                // P x_X
       column_product(Tt_active_, eta_, work_a_);  // work_a_ has na entries
       for (int a = 0; a < na; ++a) {
         const int i = active_[a];

@@ -337,7 +337,7 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   if (hi >= lo) {
     const int n = hi - lo + 1;
     // Dot products of the contact basis' columns with f (13 x n with n contiguous per column).
-    transposed_product(M.T.middleRows(lo, n), f.segment(lo, n), phi);  // T^T f (to the bit)
+    column_dots(M.T.middleRows(lo, n), f.segment(lo, n), phi);  // T^T f (column_product.h)
     load = f.segment(lo, n).sum();
   }
   G.resize(nq);

@@ -40,4 +40,20 @@ void transposed_product(const Block& A, const Eigen::Ref<const Eigen::VectorXd>&
                      accumulate);
 }
 
+/// out_k (=, or += with accumulate) alpha sum_i A(i, k) v_i like transposed_product(), for many
+/// rows (the units over the reach or in contact): vectorised along the rows, each sum as four
+/// partial sums over the rows i mod 4, (s0 + s1) + (s2 + s3), then the last rows % 4 in order,
+/// the same on the AVX2 and the portable path. Not Eigen's order (~2x fewer instructions than
+/// transposed_product() for a few hundred rows).
+void column_dots(Eigen::Index rows, Eigen::Index cols, const double* A, Eigen::Index lda,
+                 const double* v, double* out, double alpha = 1.0, bool accumulate = false);
+
+/// The same for an Eigen block A (A^T v).
+template <typename Block, typename Out>
+void column_dots(const Block& A, const Eigen::Ref<const Eigen::VectorXd>& v, Out&& out,
+                 double alpha = 1.0, bool accumulate = false) {
+  column_dots(A.rows(), A.cols(), A.data(), A.outerStride(), v.data(), out.data(), alpha,
+              accumulate);
+}
+
 }  // namespace modaltyre::transient

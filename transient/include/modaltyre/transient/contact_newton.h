@@ -74,8 +74,11 @@ class ContactNewton {
   /// factor()'s work: diag(kd) (T~ - gamma Y) on the active rows, Y (rolling), per-unit factors.
   Eigen::MatrixXd Ty_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Y_;
-  Eigen::VectorXd work_s_, work_d_, work_k_;
-  mutable Eigen::VectorXd eta_, work_x_, work_e_, work_a_;
+  Eigen::VectorXd work_s_;
+  Eigen::MatrixXd DQ_;       ///< D^-1 Q (nx x np): X's response to unit forces on eta
+  Eigen::MatrixXd H_;        ///< P D^-1 Q (np x np)
+  Eigen::MatrixXd cap_inv_;  ///< the capacitance's inverse (np x np)
+  mutable Eigen::VectorXd eta_, eta0_, phi_, w_, work_x_, work_e_, work_a_;
 };
 
 }  // namespace modaltyre::transient
