@@ -37,9 +37,15 @@ ContactNewton::ContactNewton(const TransientModel& model, const TransientSystem&
 bool ContactNewton::setup(double t, const double* y, double gamma, bool jacobian_ok) {
   if (!jacobian_ok || !jacobian_ready_) {
     sys_.jacobian_stiffness(t, y, kd_);
+    // The active units: the span from the first to the last unit with a spring (a unit of a
+    // gap in it has kd = 0 and adds nothing), so that their tread states are contiguous.
     active_.clear();
+    int first = -1, last = -1;
     for (int i = sys_.units().lo; i <= sys_.units().hi; ++i)
-      if (kd_(i) > 0) active_.push_back(i);
+      if (kd_(i) > 0) last = i, first = first < 0 ? i : first;
+    if (first >= 0)
+      for (int i = first; i <= last; ++i) active_.push_back(i);
+    kd_active_ = first >= 0 ? kd_.segment(first, last - first + 1) : Eigen::VectorXd();
     Tt_active_.resize(static_cast<Eigen::Index>(active_.size()), np_);
     for (std::size_t a = 0; a < active_.size(); ++a) {
       Tt_active_.row(a).head(M_.rank) = -M_.T.row(active_[a]);
@@ -124,8 +130,10 @@ void ContactNewton::factor(double gamma) {
     }
     for (int j = 0; j < np_; ++j) Ty_.col(j) = Tt_active_.col(j).cwiseProduct(work_s_);
     K_.resize(np_, np_);
-    for (int j = 0; j < np_; ++j)
-      for (int i = 0; i <= j; ++i) K_(j, i) = K_(i, j) = Tt_active_.col(i).dot(Ty_.col(j));
+    for (int j = 0; j < np_; ++j) {
+      column_dots(Tt_active_.leftCols(j + 1), Ty_.col(j), K_.col(j));  // K_ij, i <= j
+      for (int i = 0; i < j; ++i) K_(j, i) = K_(i, j);
+    }
   } else {
     for (int a = 0; a < na; ++a) Ty_.row(a) = Tt_active_.row(a) * kd_(active_[a]);
   }
@@ -157,8 +165,10 @@ void ContactNewton::factor(double gamma) {
   DQ_(Z, rank) = d_zw_ * DQ_(Z + 1, rank);
   Eigen::MatrixXd& H = H_;
   H.setZero(np_, np_);
-  H.topRows(rank).noalias() = M.Cq.lazyProduct(DQ_.topRows(nq));
-  if (nr > 0) H.topRows(rank).noalias() += M.Cr.lazyProduct(DQ_.middleRows(2 * nq, nr));
+  for (int k = 0; k < np_; ++k) {
+    column_product(M.Cq, DQ_.col(k).head(nq), H.col(k));  // first rank rows
+    if (nr > 0) column_product(M.Cr, DQ_.col(k).segment(2 * nq, nr), H.col(k), true);
+  }
   H.row(rank) = DQ_.row(Z);
   // gamma kd / c' of the active units, for M_EX in solve() (no division per solve).
   gamma_kd_c_.resize(ne_ > 0 ? na : 0);
@@ -167,7 +177,27 @@ void ContactNewton::factor(double gamma) {
   Eigen::MatrixXd cap = Eigen::MatrixXd::Identity(np_, np_);
   cap.noalias() -= gamma * H.lazyProduct(K_);
   cap_.compute(cap);
-  cap_inv_ = cap_.inverse();
+  cap_lu_ = cap_.matrixLU();  // row-major: the triangular solves run along rows
+  cap_perm_ = cap_.permutationP().indices();
+}
+
+void ContactNewton::solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  // P cap = L U (partial pivoting): x = U^-1 L^-1 P b, as plain loops over the np x np factors
+  // (Eigen's dynamic-size triangular solver costs several times this for np = 14).
+  const int n = np_;
+  x.resize(n);
+  for (int i = 0; i < n; ++i) x(cap_perm_(i)) = b(i);
+  const double* lu = cap_lu_.data();
+  for (int i = 1; i < n; ++i) {
+    double s = x(i);
+    for (int j = 0; j < i; ++j) s -= lu[i * n + j] * x(j);
+    x(i) = s;
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    double s = x(i);
+    for (int j = i + 1; j < n; ++j) s -= lu[i * n + j] * x(j);
+    x(i) = s / lu[i * n + i];
+  }
 }
 
 void ContactNewton::solve_d(double* x) const {
@@ -206,15 +236,14 @@ void ContactNewton::solve(double* x) const {
   phi_.setZero(np_);
   if (ne_ > 0 && na > 0) {
     work_a_.resize(na);
-    if (ee_s1_ == 0 && ee_s2_ == 0) {  // at rest M_EE is diagonal: only the active rows
-      for (int a = 0; a < na; ++a) {
-        const int k = active_[a] - u0_;
-        work_a_(a) = kd_(active_[a]) * (xe[k] * ee_d_inv_(k));
-      }
+    const int k0 = active_.front() - u0_;  // the active units' tread states are contiguous
+    if (ee_s1_ == 0 && ee_s2_ == 0) {      // at rest M_EE is diagonal: only the active rows
+      work_a_ = kd_active_.cwiseProduct(
+          Eigen::Map<const Eigen::VectorXd>(xe + k0, na).cwiseProduct(ee_d_inv_.segment(k0, na)));
     } else {
       work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
       solve_ee(work_e_.data());
-      for (int a = 0; a < na; ++a) work_a_(a) = kd_(active_[a]) * work_e_(active_[a] - u0_);
+      work_a_ = kd_active_.cwiseProduct(work_e_.segment(k0, na));
     }
     column_dots(Tt_active_, work_a_, phi_, -gamma_);  // -gamma T~^T w (column_product.h)
   }
@@ -228,7 +257,7 @@ void ContactNewton::solve(double* x) const {
   eta0_(rank) = xx(Z);
   eta_ = eta0_;
   eta_.noalias() += H_ * phi_;
-  w_ = cap_.solve(eta_);
+  solve_cap(eta_, w_);
   phi_.noalias() += gamma_ * (K_ * w_);
   column_product(DQ_, phi_, xx, /*accumulate=*/true);
   if (ne_ > 0) {
@@ -237,10 +266,8 @@ void ContactNewton::solve(double* x) const {
       eta_ = eta0_;
       eta_.noalias() += H_ * phi_;                // P x_X
       column_product(Tt_active_, eta_, work_a_);  // work_a_ has na entries
-      for (int a = 0; a < na; ++a) {
-        const int i = active_[a];
-        xe[i - u0_] += gamma_kd_c_(a) * work_a_(a);
-      }
+      Eigen::Map<Eigen::VectorXd>(xe + (active_.front() - u0_), na) +=
+          gamma_kd_c_.cwiseProduct(work_a_);
     }
     solve_ee(xe);
   }

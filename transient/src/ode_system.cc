@@ -174,9 +174,20 @@ void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorX
   // u = T xi (model.h's contact basis: rank columns instead of nq + nr).
   auto seg = g.segment(lo, n);
   column_product(M.T.middleRows(lo, n), scratch_xi_, seg);
-  seg = (y[M.z_index()] - M.tyre.sag.segment(lo, n).array() - seg.array()).matrix();
-  add_road(t, lo, hi, g);
-  if (ne_ > 0) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - units_.lo), n);
+  const double z = y[M.z_index()];
+  const double* sag = M.tyre.sag.data() + lo;
+  double* u = seg.data();
+  if (plan_.cleat) {
+    for (int k = 0; k < n; ++k) u[k] = (z - sag[k]) - u[k];
+    add_road(t, lo, hi, g);
+    if (ne_ > 0) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - units_.lo), n);
+  } else if (ne_ > 0) {
+    // One pass: ((z - s) - u) - e, the order of the passes above.
+    const double* e = y + M.e_index() + (lo - units_.lo);
+    for (int k = 0; k < n; ++k) u[k] = ((z - sag[k]) - u[k]) - e[k];
+  } else {
+    for (int k = 0; k < n; ++k) u[k] = (z - sag[k]) - u[k];
+  }
 }
 
 double TransientSystem::tip_penetration_at(double t, const double* y, int i, bool xi_of_y) const {
@@ -345,8 +356,16 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   Eigen::VectorXd& Vf = scratch_Vf_;
   if (nr > 0) Vf.noalias() = M.Cr.transpose() * phi;
   const double Omega = spin(t), dOmega = spin_rate(t);
+  // The modal rows depend on the spin only: kept while it does not change (at rest, on a hold
+  // or at a steady speed).
+  if (modal_rows_.size() != static_cast<std::size_t>(nq) || Omega != rows_Omega_ ||
+      dOmega != rows_dOmega_) {
+    modal_rows_.resize(nq);
+    for (int j = 0; j < nq; ++j) modal_rows_[j] = modal_row(M, j, Omega, dOmega);
+    rows_Omega_ = Omega, rows_dOmega_ = dOmega;
+  }
   for (int j = 0; j < nq; ++j) {
-    const ModalRow d = modal_row(M, j, Omega, dOmega);
+    const ModalRow& d = modal_rows_[j];
     const int p = std::max(M.partner[j], 0);  // d.dq_p = d.dv_p = 0 without a partner
     ydot[j] = y[nq + j];
     ydot[nq + j] = G(j) + d.dq * y[j] + d.dv * y[nq + j] + d.dq_p * y[p] + d.dv_p * y[nq + p];

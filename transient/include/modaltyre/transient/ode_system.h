@@ -120,6 +120,9 @@ class TransientSystem {
   // are not allocated per call (one TransientSystem per run and thread).
   mutable Eigen::VectorXd scratch_f_, scratch_G_, scratch_Vf_, scratch_g_, scratch_xi_,
       scratch_phi_;
+  /// rhs()'s modal rows at the spin (rows_Omega_, rows_dOmega_).
+  mutable std::vector<ModalRow> modal_rows_;
+  mutable double rows_Omega_ = 0, rows_dOmega_ = 0;
   /// Units in the Jacobian's sparsity pattern (ever in contact at a Jacobian evaluation).
   mutable std::vector<char> in_pattern_;
   /// Contact set at the last accepted step (update_contact_set()).
