@@ -297,17 +297,20 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   } else {
     penetration_band(t, y, scratch_g_, lo, hi, /*xi_ready=*/true);  // xi of y from above
   }
-  const bool first = in_contact_.empty();
-  in_contact_.resize(M.m, 0);
+  const bool first = in_contact_.size() == 0;
+  if (first) in_contact_.setZero(M.m);
   // Units that can have changed: the reach now and the contact set before.
   const int from = std::min(lo, contact_first_), to = std::max(hi, contact_last_);
   const int a = std::max(from, u0), b = std::min(to, units_.hi);
   const int r0 = std::max(a, lo), r1 = std::min(b, hi);  // [a, b] within the reach
-  int changed = 0;
-  // Branch-free passes (this loop was ~7 k instructions a step as one pass with branches): the
-  // units of [a, b] outside the reach are out of contact now; in_contact_ holds 0 or 1.
+  // Whole-segment passes on in_contact_ (0.0 or 1.0): the units of [a, b] outside the reach
+  // are out of contact now, those in it in contact where g > 0; the switches are the count of
+  // changed entries.
+  double changed_units = 0;
   auto leave = [&](int i0, int i1) {
-    for (int i = i0; i <= i1; ++i) changed += in_contact_[i], in_contact_[i] = 0;
+    if (i1 < i0) return;
+    changed_units += in_contact_.segment(i0, i1 - i0 + 1).sum();
+    in_contact_.segment(i0, i1 - i0 + 1) = 0.0;
   };
   contact_first_ = M.m, contact_last_ = -1;
   if (r1 < r0) {
@@ -315,19 +318,20 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   } else {
     leave(a, r0 - 1);
     leave(r1 + 1, b);
-    for (int i = r0; i <= r1; ++i) {
-      const char now = scratch_g_(i) > 0 ? 1 : 0;
-      changed += now != in_contact_[i];
-      in_contact_[i] = now;
-    }
+    const int n = r1 - r0 + 1;
+    auto old = in_contact_.segment(r0, n);
+    const auto now = (scratch_g_.segment(r0, n).array() > 0).select(1.0, Eigen::ArrayXd::Zero(n));
+    changed_units += (now - old).abs().sum();
+    old = now;
     int i = r0;
-    while (i <= r1 && !in_contact_[i]) ++i;
+    while (i <= r1 && in_contact_(i) == 0) ++i;
     if (i <= r1) {
       contact_first_ = i;
       contact_last_ = r1;
-      while (!in_contact_[contact_last_]) --contact_last_;
+      while (in_contact_(contact_last_) == 0) --contact_last_;
     }
   }
+  const int changed = static_cast<int>(changed_units);
   if (first) return 0;
   if (changed > 0) contact_switched();
   return changed;

@@ -126,7 +126,7 @@ class TransientSystem {
   /// Units in the Jacobian's sparsity pattern (ever in contact at a Jacobian evaluation).
   mutable std::vector<char> in_pattern_;
   /// Contact set at the last accepted step (update_contact_set()).
-  mutable std::vector<char> in_contact_;
+  mutable Eigen::ArrayXd in_contact_;  ///< 1 in contact, 0 not (empty before the first call)
   /// First and last unit of in_contact_ (empty: first > last).
   mutable int contact_first_ = 0, contact_last_ = -1;
   mutable long switches_since_jacobian_ = 0;
