@@ -1,15 +1,19 @@
-// column_product (column_product.h) against Eigen's A * x: the same bits, which is what keeps
-// the transient outputs byte-identical after the products moved to it.
+// The transient's products (column_product.h): transposed_product against Eigen's A^T v to the
+// bit; column_product and column_dots against their stated order of fused multiply-adds to the
+// bit (the same on every CPU) and against Eigen's products to rounding.
 #include "modaltyre/transient/column_product.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace modaltyre::transient {
 namespace {
 
-TEST(ColumnProduct, EqualsEigensProductToTheBit) {
+TEST(ColumnProduct, SumsInItsStatedOrderWithFusedMultiplyAdds) {
+  // column_product: out_i = fma(A_i,cols-1, x_cols-1, ... fma(A_i0, x_0, 0)) (+ out_i): the
+  // same bits on the AVX2 path and the portable one (std::fma), and Eigen's A * x to rounding.
   std::mt19937 rng(21);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int rows : {1, 3, 13, 63, 64, 65, 253, 729}) {
@@ -20,17 +24,17 @@ TEST(ColumnProduct, EqualsEigensProductToTheBit) {
       for (int j = 0; j < cols; ++j) x(j) = u(rng);
       for (int i = 0; i < rows; ++i) base(i) = u(rng);
       const auto block = A.middleRows(2, rows);
-      Eigen::VectorXd want(rows), got(rows);
-      want.noalias() = block * x;
+      Eigen::VectorXd got(rows), added = base;
       column_product(block, x, got);
-      for (int i = 0; i < rows; ++i)
-        ASSERT_EQ(want(i), got(i)) << rows << " x " << cols << " " << i;
-      want = base;
-      want.noalias() += block * x;
-      got = base;
-      column_product(block, x, got, /*accumulate=*/true);
-      for (int i = 0; i < rows; ++i)
-        ASSERT_EQ(want(i), got(i)) << rows << " x " << cols << " " << i;
+      column_product(block, x, added, /*accumulate=*/true);
+      const Eigen::VectorXd eigen = block * x;
+      for (int i = 0; i < rows; ++i) {
+        double s = 0.0;
+        for (int j = 0; j < cols; ++j) s = std::fma(block(i, j), x(j), s);
+        ASSERT_EQ(s + 0.0, got(i)) << rows << " x " << cols << " " << i;
+        ASSERT_EQ(s + base(i), added(i)) << rows << " x " << cols << " " << i;
+        ASSERT_NEAR(eigen(i), s, 1e-13 * block.row(i).cwiseAbs().dot(x.cwiseAbs()));
+      }
     }
   }
 }
@@ -62,8 +66,9 @@ TEST(ColumnProduct, TransposedEqualsEigensProductToTheBit) {
 }
 
 TEST(ColumnProduct, ColumnDotsSumInTheirStatedOrder) {
-  // column_dots: four partial sums over the rows i mod 4, (s0 + s1) + (s2 + s3), then the last
-  // rows % 4 in order (the same bits on the AVX2 and the portable path), alpha times it added.
+  // column_dots: four partial sums of fused multiply-adds over the rows i mod 4, (s0 + s1) +
+  // (s2 + s3), then the last rows % 4 in order (the same bits on the AVX2 and the portable
+  // path), alpha times it added.
   std::mt19937 rng(212121);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int rows : {1, 3, 4, 5, 13, 64, 67, 210, 253, 729}) {
@@ -81,9 +86,9 @@ TEST(ColumnProduct, ColumnDotsSumInTheirStatedOrder) {
       for (int k = 0; k < cols; ++k) {
         double s[4] = {0, 0, 0, 0};
         const int r4 = rows / 4 * 4;
-        for (int i = 0; i < r4; ++i) s[i % 4] = block(i, k) * v(i) + s[i % 4];
+        for (int i = 0; i < r4; ++i) s[i % 4] = std::fma(block(i, k), v(i), s[i % 4]);
         double sum = (s[0] + s[1]) + (s[2] + s[3]);
-        for (int i = r4; i < rows; ++i) sum += block(i, k) * v(i);
+        for (int i = r4; i < rows; ++i) sum = std::fma(block(i, k), v(i), sum);
         ASSERT_EQ(base(k) + -0.5 * sum, got(k)) << rows << " x " << cols << " " << k;
         ASSERT_EQ(0.0 + sum, assigned(k)) << rows << " x " << cols << " " << k;
         // And the product itself to rounding.

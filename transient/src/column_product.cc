@@ -1,5 +1,7 @@
 #include "modaltyre/transient/column_product.h"
 
+#include <cmath>
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define MODALTYRE_COLUMN_PRODUCT_AVX2 1
@@ -10,31 +12,32 @@ namespace {
 
 using Index = Eigen::Index;
 
-/// Rows [i0, i1) one at a time: the portable path and the tails.
+/// Rows [i0, i1) one at a time: the portable path and the tails. s = fma(A_ij, x_j, s) over the
+/// columns in order (std::fma: one rounding, as the AVX2 path's fused multiply-add).
 void rows_scalar(Index i0, Index i1, Index cols, const double* A, Index lda, const double* x,
                  double* out, bool accumulate) {
   for (Index i = i0; i < i1; ++i) {
     double s = 0.0;
-    for (Index j = 0; j < cols; ++j) s += A[j * lda + i] * x[j];
-    // Eigen adds alpha * sum to the destination (cleared first for an assignment).
+    for (Index j = 0; j < cols; ++j) s = std::fma(A[j * lda + i], x[j], s);
     out[i] = s + (accumulate ? out[i] : 0.0);
   }
 }
 
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-/// 16 rows at a time in four AVX2 registers (multiply, then add: no FMA), then 4 at a time.
-__attribute__((target("avx2"))) Index rows_avx2(Index rows, Index cols, const double* A, Index lda,
-                                                const double* x, double* out, bool accumulate) {
+/// 16 rows at a time in four AVX2 registers (fused multiply-add), then 4 at a time.
+__attribute__((target("avx2,fma"))) Index rows_avx2(Index rows, Index cols, const double* A,
+                                                    Index lda, const double* x, double* out,
+                                                    bool accumulate) {
   Index i = 0;
   for (; i + 16 <= rows; i += 16) {
     __m256d c0 = _mm256_setzero_pd(), c1 = c0, c2 = c0, c3 = c0;
     for (Index j = 0; j < cols; ++j) {
       const double* a = A + j * lda + i;
       const __m256d b = _mm256_broadcast_sd(x + j);
-      c0 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a), b), c0);
-      c1 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a + 4), b), c1);
-      c2 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a + 8), b), c2);
-      c3 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a + 12), b), c3);
+      c0 = _mm256_fmadd_pd(_mm256_loadu_pd(a), b, c0);
+      c1 = _mm256_fmadd_pd(_mm256_loadu_pd(a + 4), b, c1);
+      c2 = _mm256_fmadd_pd(_mm256_loadu_pd(a + 8), b, c2);
+      c3 = _mm256_fmadd_pd(_mm256_loadu_pd(a + 12), b, c3);
     }
     double* o = out + i;
     const __m256d z = _mm256_setzero_pd();
@@ -46,10 +49,14 @@ __attribute__((target("avx2"))) Index rows_avx2(Index rows, Index cols, const do
   for (; i + 4 <= rows; i += 4) {
     __m256d c = _mm256_setzero_pd();
     for (Index j = 0; j < cols; ++j)
-      c = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(A + j * lda + i), _mm256_broadcast_sd(x + j)),
-                        c);
+      c = _mm256_fmadd_pd(_mm256_loadu_pd(A + j * lda + i), _mm256_broadcast_sd(x + j), c);
     _mm256_storeu_pd(out + i,
                      _mm256_add_pd(c, accumulate ? _mm256_loadu_pd(out + i) : _mm256_setzero_pd()));
+  }
+  for (; i < rows; ++i) {  // the last rows % 4, as rows_scalar() (std::fma: vfmadd here)
+    double c = 0.0;
+    for (Index j = 0; j < cols; ++j) c = std::fma(A[j * lda + i], x[j], c);
+    out[i] = c + (accumulate ? out[i] : 0.0);
   }
   return i;
 }
@@ -116,7 +123,8 @@ __attribute__((target("avx2"))) Index transposed_avx2(Index rows, Index cols, co
 #endif
 
 /// Outputs [k0, k1) of column_dots() one at a time: four partial sums over the rows i = 0, 1, 2,
-/// 3 mod 4 (the AVX2 lanes), added as (s0 + s1) + (s2 + s3), then the last rows % 4 in order.
+/// 3 mod 4 (the AVX2 lanes), added as (s0 + s1) + (s2 + s3), then the last rows % 4 in order;
+/// every product fused with its addition (std::fma, as the AVX2 path).
 void dots_scalar(Index k0, Index k1, Index rows, const double* A, Index lda, const double* v,
                  double* out, double alpha, bool accumulate) {
   for (Index k = k0; k < k1; ++k) {
@@ -124,33 +132,33 @@ void dots_scalar(Index k0, Index k1, Index rows, const double* A, Index lda, con
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
     Index i = 0;
     for (; i + 4 <= rows; i += 4) {
-      s0 = a[i] * v[i] + s0, s1 = a[i + 1] * v[i + 1] + s1;
-      s2 = a[i + 2] * v[i + 2] + s2, s3 = a[i + 3] * v[i + 3] + s3;
+      s0 = std::fma(a[i], v[i], s0), s1 = std::fma(a[i + 1], v[i + 1], s1);
+      s2 = std::fma(a[i + 2], v[i + 2], s2), s3 = std::fma(a[i + 3], v[i + 3], s3);
     }
     double s = (s0 + s1) + (s2 + s3);
-    for (; i < rows; ++i) s += a[i] * v[i];
+    for (; i < rows; ++i) s = std::fma(a[i], v[i], s);
     out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
   }
 }
 
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
 /// out_k from the four lanes of c and the last rows % 4.
-__attribute__((target("avx2"))) void dots_finish(__m256d c, Index k, Index r4, Index rows,
-                                                 const double* A, Index lda, const double* v,
-                                                 double* out, double alpha, bool accumulate) {
+__attribute__((target("avx2,fma"))) void dots_finish(__m256d c, Index k, Index r4, Index rows,
+                                                     const double* A, Index lda, const double* v,
+                                                     double* out, double alpha, bool accumulate) {
   alignas(32) double l[4];
   _mm256_store_pd(l, c);
   double s = (l[0] + l[1]) + (l[2] + l[3]);
   const double* a = A + k * lda;
-  for (Index i = r4; i < rows; ++i) s += a[i] * v[i];
+  for (Index i = r4; i < rows; ++i) s = std::fma(a[i], v[i], s);
   out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
 }
 
 /// Four outputs at a time, each a register of four partial sums along the rows (one load of v
 /// per four rows for all four), in dots_scalar()'s order.
-__attribute__((target("avx2"))) Index dots_avx2(Index rows, Index cols, const double* A, Index lda,
-                                                const double* v, double* out, double alpha,
-                                                bool accumulate) {
+__attribute__((target("avx2,fma"))) Index dots_avx2(Index rows, Index cols, const double* A,
+                                                    Index lda, const double* v, double* out,
+                                                    double alpha, bool accumulate) {
   Index k = 0;
   const Index r4 = rows / 4 * 4;
   auto finish = [&](__m256d c, Index kk) {
@@ -166,10 +174,10 @@ __attribute__((target("avx2"))) Index dots_avx2(Index rows, Index cols, const do
     __m256d c0 = _mm256_setzero_pd(), c1 = c0, c2 = c0, c3 = c0;
     for (Index i = 0; i < r4; i += 4) {
       const __m256d b = _mm256_loadu_pd(v + i);
-      c0 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a0 + i), b), c0);
-      c1 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a1 + i), b), c1);
-      c2 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a2 + i), b), c2);
-      c3 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a3 + i), b), c3);
+      c0 = _mm256_fmadd_pd(_mm256_loadu_pd(a0 + i), b, c0);
+      c1 = _mm256_fmadd_pd(_mm256_loadu_pd(a1 + i), b, c1);
+      c2 = _mm256_fmadd_pd(_mm256_loadu_pd(a2 + i), b, c2);
+      c3 = _mm256_fmadd_pd(_mm256_loadu_pd(a3 + i), b, c3);
     }
     dots_finish(c0, k, r4, rows, A, lda, v, out, alpha, accumulate);
     dots_finish(c1, k + 1, r4, rows, A, lda, v, out, alpha, accumulate);
@@ -180,7 +188,7 @@ __attribute__((target("avx2"))) Index dots_avx2(Index rows, Index cols, const do
     const double* a = A + k * lda;
     __m256d c = _mm256_setzero_pd();
     for (Index i = 0; i < r4; i += 4)
-      c = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a + i), _mm256_loadu_pd(v + i)), c);
+      c = _mm256_fmadd_pd(_mm256_loadu_pd(a + i), _mm256_loadu_pd(v + i), c);
     dots_finish(c, k, r4, rows, A, lda, v, out, alpha, accumulate);
   }
   return k;
@@ -193,7 +201,7 @@ void column_dots(Index rows, Index cols, const double* A, Index lda, const doubl
                  double alpha, bool accumulate) {
   Index done = 0;
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   if (avx2) done = dots_avx2(rows, cols, A, lda, v, out, alpha, accumulate);
 #endif
   dots_scalar(done, cols, rows, A, lda, v, out, alpha, accumulate);
@@ -213,7 +221,7 @@ void column_product(Index rows, Index cols, const double* A, Index lda, const do
                     double* out, bool accumulate) {
   Index done = 0;
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   if (avx2) done = rows_avx2(rows, cols, A, lda, x, out, accumulate);
 #endif
   rows_scalar(done, rows, cols, A, lda, x, out, accumulate);

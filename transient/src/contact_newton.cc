@@ -26,6 +26,8 @@ ContactNewton::ContactNewton(const TransientModel& model, const TransientSystem&
     }
     blocks_.push_back(b);
   }
+  CqT_ = model.Cq.transpose();
+  CrT_ = model.Cr.transpose();
   eta_.resize(np_);
   eta0_.resize(np_);
   phi_.resize(np_);
@@ -252,8 +254,8 @@ void ContactNewton::solve(double* x) const {
   // and P x_X = eta0 + H phi (H = P D^-1 Q): one application of D^-1 and of P per solve, the
   // forces entering X through the precomputed columns D^-1 Q.
   solve_d(x);
-  column_product(M.Cq, xx.head(nq), eta0_);  // P x0 (= Cq q + Cr r, z)
-  if (nr > 0) column_product(M.Cr, xx.segment(2 * nq, nr), eta0_, /*accumulate=*/true);
+  column_dots(CqT_, xx.head(nq), eta0_);  // P x0 (= Cq q + Cr r, z)
+  if (nr > 0) column_dots(CrT_, xx.segment(2 * nq, nr), eta0_, 1.0, /*accumulate=*/true);
   eta0_(rank) = xx(Z);
   eta_ = eta0_;
   eta_.noalias() += H_ * phi_;

@@ -78,8 +78,9 @@ class ContactNewton {
   Eigen::MatrixXd Ty_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Y_;
   Eigen::VectorXd work_s_;
-  Eigen::MatrixXd DQ_;  ///< D^-1 Q (nx x np): X's response to unit forces on eta
-  Eigen::MatrixXd H_;   ///< P D^-1 Q (np x np)
+  Eigen::MatrixXd CqT_, CrT_;  ///< Cq^T, Cr^T (P's products as column_dots)
+  Eigen::MatrixXd DQ_;         ///< D^-1 Q (nx x np): X's response to unit forces on eta
+  Eigen::MatrixXd H_;          ///< P D^-1 Q (np x np)
   /// The capacitance's LU factors (row-major) and row permutation, for solve_cap().
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_;
   Eigen::VectorXi cap_perm_;

@@ -120,6 +120,7 @@ class TransientSystem {
   // are not allocated per call (one TransientSystem per run and thread).
   mutable Eigen::VectorXd scratch_f_, scratch_G_, scratch_Vf_, scratch_g_, scratch_xi_,
       scratch_phi_;
+  Eigen::MatrixXd CqT_, CrT_;  ///< Cq^T (nq x rank), Cr^T (nr x rank)
   /// rhs()'s modal rows at the spin (rows_Omega_, rows_dOmega_).
   mutable std::vector<ModalRow> modal_rows_;
   mutable double rows_Omega_ = 0, rows_dOmega_ = 0;
