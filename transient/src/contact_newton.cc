@@ -177,7 +177,10 @@ void ContactNewton::factor(double gamma) {
   for (int a = 0; a < gamma_kd_c_.size(); ++a)
     gamma_kd_c_(a) = gamma * kd_(active_[a]) / M.c_kv(active_[a]);
   Eigen::MatrixXd cap = Eigen::MatrixXd::Identity(np_, np_);
-  cap.noalias() -= gamma * H.lazyProduct(K_);
+  for (int k = 0; k < np_; ++k) {
+    work_x_.head(np_) = -gamma * K_.col(k);
+    column_product(H, work_x_.head(np_), cap.col(k), /*accumulate=*/true);  // cap -= gamma H K
+  }
   cap_.compute(cap);
   cap_lu_ = cap_.matrixLU();  // row-major: the triangular solves run along rows
   cap_perm_ = cap_.permutationP().indices();

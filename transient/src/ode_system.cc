@@ -168,7 +168,7 @@ void TransientSystem::tip_penetration_in_reach(double t, const double* y,
 }
 
 void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo,
-                                       int& hi, bool xi_ready) const {
+                                       int& hi, bool xi_ready, bool forces) const {
   const auto& M = model_;
   if (!xi_ready) contact_coordinates(y);
   lo = 0, hi = -1;
@@ -186,12 +186,22 @@ void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorX
     add_road(t, lo, hi, g);
     if (ne_ > 0) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - units_.lo), n);
   } else if (ne_ > 0) {
-    // One pass: ((z - s) - u) - e, the order of the passes above.
+    // One pass: ((z - s) - u) - e, the order of the passes above (and with `forces` the force
+    // k max(0, g) in the same pass).
     const double* e = y + M.e_index() + (lo - units_.lo);
+    if (forces) {
+      const double* kc = M.k_contact.data() + lo;
+      for (int k = 0; k < n; ++k) {
+        const double gk = ((z - sag[k]) - u[k]) - e[k];
+        u[k] = gk > 0 ? kc[k] * gk : 0.0;
+      }
+      return;
+    }
     for (int k = 0; k < n; ++k) u[k] = ((z - sag[k]) - u[k]) - e[k];
   } else {
     for (int k = 0; k < n; ++k) u[k] = (z - sag[k]) - u[k];
   }
+  if (forces) seg = (seg.array() > 0).select(M.k_contact.segment(lo, n).array() * seg.array(), 0.0);
 }
 
 double TransientSystem::tip_penetration_at(double t, const double* y, int i, bool xi_of_y) const {
@@ -241,11 +251,7 @@ void TransientSystem::forces_band(double t, const double* y, Eigen::VectorXd& f,
     f.setZero(model_.m);
   else
     f.segment(units_.lo, units_.size()).setZero();
-  penetration_band(t, y, f, lo, hi);
-  if (hi < lo) return;
-  const int n = hi - lo + 1;
-  auto seg = f.segment(lo, n).array();
-  seg = (seg > 0).select(model_.k_contact.segment(lo, n).array() * seg, 0.0);
+  penetration_band(t, y, f, lo, hi, /*xi_ready=*/false, /*forces=*/true);
 }
 
 Eigen::VectorXd TransientSystem::forces(double t, const double* y) const {
@@ -360,9 +366,12 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
     load = f.segment(lo, n).sum();
   }
   G.resize(nq);
-  transposed_product(M.Cq, phi, G);  // Cq^T phi
+  column_product(CqT_, phi, G);  // Cq^T phi (Cq^T stored: a product over its nq rows)
   Eigen::VectorXd& Vf = scratch_Vf_;
-  if (nr > 0) Vf.noalias() = M.Cr.transpose() * phi;
+  if (nr > 0) {
+    Vf.resize(nr);
+    column_product(CrT_, phi, Vf);
+  }
   const double Omega = spin(t), dOmega = spin_rate(t);
   // The modal rows depend on the spin only: kept while it does not change (at rest, on a hold
   // or at a steady speed).

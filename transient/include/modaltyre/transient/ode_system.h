@@ -110,9 +110,10 @@ class TransientSystem {
   /// forces_into() that also returns the reach [lo, hi] (f = 0 outside; empty if hi < lo).
   void forces_band(double t, const double* y, Eigen::VectorXd& f, int& lo, int& hi) const;
   /// g over the reach [lo, hi] (entries outside untouched), as tip_penetration_in_reach();
-  /// xi_ready: contact_coordinates(y) is already in scratch_xi_.
+  /// xi_ready: contact_coordinates(y) is already in scratch_xi_; forces: k max(0, g) instead
+  /// of g (forces_band()).
   void penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo, int& hi,
-                        bool xi_ready = false) const;
+                        bool xi_ready = false, bool forces = false) const;
 
   const TransientModel& model_;
   const ScenarioPlan& plan_;
