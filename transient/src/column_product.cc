@@ -62,66 +62,6 @@ __attribute__((target("avx2,fma"))) Index rows_avx2(Index rows, Index cols, cons
 }
 #endif
 
-/// Outputs [k0, k1) of A^T v one at a time, in Eigen's SSE2 order.
-void transposed_scalar(Index k0, Index k1, Index rows, const double* A, Index lda, const double* v,
-                       double* out, double alpha, bool accumulate) {
-  for (Index k = k0; k < k1; ++k) {
-    const double* a = A + k * lda;
-    double even = 0.0, odd = 0.0;
-    Index i = 0;
-    for (; i + 2 <= rows; i += 2) even = a[i] * v[i] + even, odd = a[i + 1] * v[i + 1] + odd;
-    double s = even + odd;
-    for (; i < rows; ++i) s += a[i] * v[i];
-    out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
-  }
-}
-
-#ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-/// Two outputs per register: lanes (k even, k odd, k+1 even, k+1 odd); 4 outputs at a time.
-__attribute__((target("avx2"))) Index transposed_avx2(Index rows, Index cols, const double* A,
-                                                      Index lda, const double* v, double* out,
-                                                      double alpha, bool accumulate) {
-  Index k = 0;
-  for (; k + 4 <= cols; k += 4) {
-    const double *a0 = A + k * lda, *a1 = a0 + lda, *a2 = a1 + lda, *a3 = a2 + lda;
-    __m256d c01 = _mm256_setzero_pd(), c23 = c01;
-    Index i = 0;
-    for (; i + 2 <= rows; i += 2) {
-      const __m256d b = _mm256_broadcast_pd(reinterpret_cast<const __m128d*>(v + i));
-      const __m256d x01 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(a0 + i)),
-                                               _mm_loadu_pd(a1 + i), 1);
-      const __m256d x23 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(a2 + i)),
-                                               _mm_loadu_pd(a3 + i), 1);
-      c01 = _mm256_add_pd(_mm256_mul_pd(x01, b), c01);
-      c23 = _mm256_add_pd(_mm256_mul_pd(x23, b), c23);
-    }
-    alignas(32) double l[8];
-    _mm256_store_pd(l, c01);
-    _mm256_store_pd(l + 4, c23);
-    double s[4] = {l[0] + l[1], l[2] + l[3], l[4] + l[5], l[6] + l[7]};
-    for (; i < rows; ++i) {
-      s[0] += a0[i] * v[i], s[1] += a1[i] * v[i];
-      s[2] += a2[i] * v[i], s[3] += a3[i] * v[i];
-    }
-    for (int q = 0; q < 4; ++q) out[k + q] = (accumulate ? out[k + q] : 0.0) + alpha * s[q];
-  }
-  // The last one to three outputs: one (even, odd) pair of partial sums in 128 bits each.
-  for (; k < cols; ++k) {
-    const double* a = A + k * lda;
-    __m128d c = _mm_setzero_pd();
-    Index i = 0;
-    for (; i + 2 <= rows; i += 2)
-      c = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(a + i), _mm_loadu_pd(v + i)), c);
-    alignas(16) double l[2];
-    _mm_store_pd(l, c);
-    double s = l[0] + l[1];
-    for (; i < rows; ++i) s += a[i] * v[i];
-    out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
-  }
-  return k;
-}
-#endif
-
 /// Outputs [k0, k1) of column_dots() one at a time: four partial sums over the rows i = 0, 1, 2,
 /// 3 mod 4 (the AVX2 lanes), added as (s0 + s1) + (s2 + s3), then the last rows % 4 in order;
 /// every product fused with its addition (std::fma, as the AVX2 path).
@@ -161,14 +101,6 @@ __attribute__((target("avx2,fma"))) Index dots_avx2(Index rows, Index cols, cons
                                                     double alpha, bool accumulate) {
   Index k = 0;
   const Index r4 = rows / 4 * 4;
-  auto finish = [&](__m256d c, Index kk) {
-    alignas(32) double l[4];
-    _mm256_store_pd(l, c);
-    double s = (l[0] + l[1]) + (l[2] + l[3]);
-    const double* a = A + kk * lda;
-    for (Index i = r4; i < rows; ++i) s += a[i] * v[i];
-    out[kk] = (accumulate ? out[kk] : 0.0) + alpha * s;
-  };
   for (; k + 4 <= cols; k += 4) {
     const double *a0 = A + k * lda, *a1 = a0 + lda, *a2 = a1 + lda, *a3 = a2 + lda;
     __m256d c0 = _mm256_setzero_pd(), c1 = c0, c2 = c0, c3 = c0;
@@ -205,16 +137,6 @@ void column_dots(Index rows, Index cols, const double* A, Index lda, const doubl
   if (avx2) done = dots_avx2(rows, cols, A, lda, v, out, alpha, accumulate);
 #endif
   dots_scalar(done, cols, rows, A, lda, v, out, alpha, accumulate);
-}
-
-void transposed_product(Index rows, Index cols, const double* A, Index lda, const double* v,
-                        double* out, double alpha, bool accumulate) {
-  Index done = 0;
-#ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) done = transposed_avx2(rows, cols, A, lda, v, out, alpha, accumulate);
-#endif
-  transposed_scalar(done, cols, rows, A, lda, v, out, alpha, accumulate);
 }
 
 void column_product(Index rows, Index cols, const double* A, Index lda, const double* x,
