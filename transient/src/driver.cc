@@ -44,18 +44,33 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
     sys.add_road(t, 0, M.m - 1, h);
     sink = std::max(sink, (z + h.array() - M.tyre.sag.array()).maxCoeff());
   }
-  int first = -1, last = -1;
-  for (int i = u0; i <= u1; ++i) {
-    if (f(i) > 0) {
-      double slope = 0;
-      if (plan.cleat) sys.road(t, i, &slope);
-      if (first < 0) first = i;
-      last = i;
-      ++s.contact_units;
-      moment += f(i) * M.x_road(i);
-      slope_force += f(i) * slope;
+  int first = -1, last = -1, units = 0;
+  const double* fp = f.data();
+  const double* x = M.x_road.data();
+  if (plan.cleat) {
+    for (int i = u0; i <= u1; ++i) {
+      if (fp[i] > 0) {
+        double slope = 0;
+        sys.road(t, i, &slope);
+        if (first < 0) first = i;
+        last = i;
+        ++units;
+        moment += fp[i] * x[i];
+        slope_force += fp[i] * slope;
+      }
+    }
+  } else {
+    // Flat road: no slope force (it stays 0), the same sums in the same order.
+    for (int i = u0; i <= u1; ++i) {
+      if (fp[i] > 0) {
+        first = first < 0 ? i : first;
+        last = i;
+        ++units;
+        moment += fp[i] * x[i];
+      }
     }
   }
+  s.contact_units = units;
   s.sinking_m = sink;
   s.pressure_centre_m = s.load_N > 0 ? moment / s.load_N : 0;
   s.longitudinal_force_N = -moment / (R0 - z) - slope_force;

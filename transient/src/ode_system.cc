@@ -136,8 +136,11 @@ void TransientSystem::reach(double t, const double* y, int& lo, int& hi) const {
         y[M.z_index()] - z_ref_ + basis_row_norm_max_ * (scratch_xi_ - xi_ref_).norm() + lift;
     lo = u0, hi = u1;
     if (!std::isfinite(delta)) return;
-    while (lo <= hi && !(p_ref_(lo - u0) + delta > 0)) ++lo;
-    while (hi >= lo && !(p_ref_(hi - u0) + delta > 0)) --hi;
+    int a = u0, b = u1;  // locals: the loops then keep them in registers
+    const double* p = p_ref_.data();
+    while (a <= b && !(p[a - u0] + delta > 0)) ++a;
+    while (b >= a && !(p[b - u0] + delta > 0)) --b;
+    lo = a, hi = b;
     return;
   }
   // Before an accepted state: the sag grows on both sides of centre_, so the units with
