@@ -27,6 +27,31 @@ TransientModel model_with(const std::vector<std::string>& extra) {
   return build_transient_model(build_tyre_model(load_tyre_config(kConfig, o)));
 }
 
+/// ContactNewton's solve of (I - gamma J) x = b at (t, y) against a dense LU of the matrix
+/// assembled from the sparse Jacobian, for each gamma.
+void expect_solves_like_dense_lu(const TransientModel& M, const TransientSystem& sys, double t,
+                                 const std::vector<double>& y, const std::vector<double>& gammas) {
+  solvers::CscMatrix J;
+  sys.jacobian(t, y.data(), J);
+  const int n = sys.size();
+  for (const double gamma : gammas) {
+    SCOPED_TRACE(gamma);
+    Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n, n);
+    for (int c = 0; c < n; ++c)
+      for (int64_t p = J.col_ptr[c]; p < J.col_ptr[c + 1]; ++p)
+        A(J.row[p], c) -= gamma * J.value[p];
+    ContactNewton newton(M, sys);
+    ASSERT_TRUE(newton.setup(t, y.data(), gamma, false));
+    Eigen::VectorXd b(n);
+    for (int k = 0; k < n; ++k) b(k) = std::cos(0.7 * k) * (1.0 + k % 5);
+    Eigen::VectorXd x = b;
+    newton.solve(x.data());
+    const Eigen::VectorXd want = A.partialPivLu().solve(b);
+    EXPECT_LT((x - want).cwiseAbs().maxCoeff(), kSolveTol * want.cwiseAbs().maxCoeff());
+    EXPECT_LT((A * x - b).cwiseAbs().maxCoeff(), kSolveTol * b.cwiseAbs().maxCoeff());
+  }
+}
+
 struct Carcass {
   const char* name;
   std::vector<std::string> overrides;
@@ -59,25 +84,32 @@ TEST_P(ContactNewtonTest, SolvesNewtonsSystemLikeADenseLu) {
   std::vector<double> y = sys.static_state(4000);
   for (int k = 0; k < M.z_index(); ++k) y[k] *= 1.0 + 0.05 * std::sin(1.7 * k);
   const double t = 0.5;
-  solvers::CscMatrix J;
-  sys.jacobian(t, y.data(), J);
-  const int n = sys.size();
-  for (const double gamma : {1e-5, 4e-4}) {
-    SCOPED_TRACE(gamma);
-    Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n, n);
-    for (int c = 0; c < n; ++c)
-      for (int64_t p = J.col_ptr[c]; p < J.col_ptr[c + 1]; ++p)
-        A(J.row[p], c) -= gamma * J.value[p];
-    ContactNewton newton(M, sys);
-    ASSERT_TRUE(newton.setup(t, y.data(), gamma, false));
-    Eigen::VectorXd b(n);
-    for (int k = 0; k < n; ++k) b(k) = std::cos(0.7 * k) * (1.0 + k % 5);
-    Eigen::VectorXd x = b;
-    newton.solve(x.data());
-    const Eigen::VectorXd want = A.partialPivLu().solve(b);
-    EXPECT_LT((x - want).cwiseAbs().maxCoeff(), kSolveTol * want.cwiseAbs().maxCoeff());
-    EXPECT_LT((A * x - b).cwiseAbs().maxCoeff(), kSolveTol * b.cwiseAbs().maxCoeff());
-  }
+  expect_solves_like_dense_lu(M, sys, t, y, {1e-5, 4e-4});
+}
+
+TEST_P(ContactNewtonTest, SolvesNewtonsSystemAtRestLikeADenseLu) {
+  // At rest (free vibration: no advection band, M_EE diagonal, K = T~^T diag(w) T~ symmetric),
+  // relaxation on, a perturbed static state with one unit inside the patch lifted off the road
+  // by its tread state (a gap in the span of active units, kd = 0 there).
+  const TransientModel M = model_with(GetParam().overrides);
+  const ScenarioPlan plan = plan_scenario(M, Scenario::free_vibration);
+  TransientSystem sys(M, plan);
+  std::vector<double> y = sys.static_state(4000);
+  for (int k = 0; k < M.z_index(); ++k) y[k] *= 1.0 + 0.05 * std::sin(1.7 * k);
+  const double t = 0.01;
+  ASSERT_EQ(sys.spin(t), 0.0);
+  const Eigen::VectorXd f0 = sys.forces(t, y.data());
+  int first = -1, last = -1;
+  for (int i = 0; i < M.m; ++i)
+    if (f0(i) > 0) last = i, first = first < 0 ? i : first;
+  ASSERT_GT(last - first, 4);
+  const int lifted = (first + last) / 2;
+  y[M.e_index() + lifted] += 1e-3;  // 1 mm more tread deflection: its tip leaves the road
+  const Eigen::VectorXd f = sys.forces(t, y.data());
+  ASSERT_EQ(f(lifted), 0.0);
+  ASSERT_GT(f(lifted - 1), 0.0);
+  ASSERT_GT(f(lifted + 1), 0.0);
+  expect_solves_like_dense_lu(M, sys, t, y, {1e-5, 4e-4, 1e-2});
 }
 
 INSTANTIATE_TEST_SUITE_P(Carcasses, ContactNewtonTest, ::testing::ValuesIn(kCarcasses),

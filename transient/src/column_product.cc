@@ -1,5 +1,7 @@
 #include "modaltyre/transient/column_product.h"
 
+#include <cmath>
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define MODALTYRE_COLUMN_PRODUCT_AVX2 1
@@ -10,31 +12,32 @@ namespace {
 
 using Index = Eigen::Index;
 
-/// Rows [i0, i1) one at a time: the portable path and the tails.
+/// Rows [i0, i1) one at a time: the portable path and the tails. s = fma(A_ij, x_j, s) over the
+/// columns in order (std::fma: one rounding, as the AVX2 path's fused multiply-add).
 void rows_scalar(Index i0, Index i1, Index cols, const double* A, Index lda, const double* x,
                  double* out, bool accumulate) {
   for (Index i = i0; i < i1; ++i) {
     double s = 0.0;
-    for (Index j = 0; j < cols; ++j) s += A[j * lda + i] * x[j];
-    // Eigen adds alpha * sum to the destination (cleared first for an assignment).
+    for (Index j = 0; j < cols; ++j) s = std::fma(A[j * lda + i], x[j], s);
     out[i] = s + (accumulate ? out[i] : 0.0);
   }
 }
 
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-/// 16 rows at a time in four AVX2 registers (multiply, then add: no FMA), then 4 at a time.
-__attribute__((target("avx2"))) Index rows_avx2(Index rows, Index cols, const double* A, Index lda,
-                                                const double* x, double* out, bool accumulate) {
+/// 16 rows at a time in four AVX2 registers (fused multiply-add), then 4 at a time.
+__attribute__((target("avx2,fma"))) Index rows_avx2(Index rows, Index cols, const double* A,
+                                                    Index lda, const double* x, double* out,
+                                                    bool accumulate) {
   Index i = 0;
   for (; i + 16 <= rows; i += 16) {
     __m256d c0 = _mm256_setzero_pd(), c1 = c0, c2 = c0, c3 = c0;
     for (Index j = 0; j < cols; ++j) {
       const double* a = A + j * lda + i;
       const __m256d b = _mm256_broadcast_sd(x + j);
-      c0 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a), b), c0);
-      c1 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a + 4), b), c1);
-      c2 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a + 8), b), c2);
-      c3 = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(a + 12), b), c3);
+      c0 = _mm256_fmadd_pd(_mm256_loadu_pd(a), b, c0);
+      c1 = _mm256_fmadd_pd(_mm256_loadu_pd(a + 4), b, c1);
+      c2 = _mm256_fmadd_pd(_mm256_loadu_pd(a + 8), b, c2);
+      c3 = _mm256_fmadd_pd(_mm256_loadu_pd(a + 12), b, c3);
     }
     double* o = out + i;
     const __m256d z = _mm256_setzero_pd();
@@ -46,70 +49,79 @@ __attribute__((target("avx2"))) Index rows_avx2(Index rows, Index cols, const do
   for (; i + 4 <= rows; i += 4) {
     __m256d c = _mm256_setzero_pd();
     for (Index j = 0; j < cols; ++j)
-      c = _mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(A + j * lda + i), _mm256_broadcast_sd(x + j)),
-                        c);
+      c = _mm256_fmadd_pd(_mm256_loadu_pd(A + j * lda + i), _mm256_broadcast_sd(x + j), c);
     _mm256_storeu_pd(out + i,
                      _mm256_add_pd(c, accumulate ? _mm256_loadu_pd(out + i) : _mm256_setzero_pd()));
+  }
+  for (; i < rows; ++i) {  // the last rows % 4, as rows_scalar() (std::fma: vfmadd here)
+    double c = 0.0;
+    for (Index j = 0; j < cols; ++j) c = std::fma(A[j * lda + i], x[j], c);
+    out[i] = c + (accumulate ? out[i] : 0.0);
   }
   return i;
 }
 #endif
 
-/// Outputs [k0, k1) of A^T v one at a time, in Eigen's SSE2 order.
-void transposed_scalar(Index k0, Index k1, Index rows, const double* A, Index lda, const double* v,
-                       double* out, double alpha, bool accumulate) {
+/// Outputs [k0, k1) of column_dots() one at a time: four partial sums over the rows i = 0, 1, 2,
+/// 3 mod 4 (the AVX2 lanes), added as (s0 + s1) + (s2 + s3), then the last rows % 4 in order;
+/// every product fused with its addition (std::fma, as the AVX2 path).
+void dots_scalar(Index k0, Index k1, Index rows, const double* A, Index lda, const double* v,
+                 double* out, double alpha, bool accumulate) {
   for (Index k = k0; k < k1; ++k) {
     const double* a = A + k * lda;
-    double even = 0.0, odd = 0.0;
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
     Index i = 0;
-    for (; i + 2 <= rows; i += 2) even = a[i] * v[i] + even, odd = a[i + 1] * v[i + 1] + odd;
-    double s = even + odd;
-    for (; i < rows; ++i) s += a[i] * v[i];
+    for (; i + 4 <= rows; i += 4) {
+      s0 = std::fma(a[i], v[i], s0), s1 = std::fma(a[i + 1], v[i + 1], s1);
+      s2 = std::fma(a[i + 2], v[i + 2], s2), s3 = std::fma(a[i + 3], v[i + 3], s3);
+    }
+    double s = (s0 + s1) + (s2 + s3);
+    for (; i < rows; ++i) s = std::fma(a[i], v[i], s);
     out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
   }
 }
 
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-/// Two outputs per register: lanes (k even, k odd, k+1 even, k+1 odd); 4 outputs at a time.
-__attribute__((target("avx2"))) Index transposed_avx2(Index rows, Index cols, const double* A,
-                                                      Index lda, const double* v, double* out,
-                                                      double alpha, bool accumulate) {
+/// out_k from the four lanes of c and the last rows % 4.
+__attribute__((target("avx2,fma"))) void dots_finish(__m256d c, Index k, Index r4, Index rows,
+                                                     const double* A, Index lda, const double* v,
+                                                     double* out, double alpha, bool accumulate) {
+  alignas(32) double l[4];
+  _mm256_store_pd(l, c);
+  double s = (l[0] + l[1]) + (l[2] + l[3]);
+  const double* a = A + k * lda;
+  for (Index i = r4; i < rows; ++i) s = std::fma(a[i], v[i], s);
+  out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
+}
+
+/// Four outputs at a time, each a register of four partial sums along the rows (one load of v
+/// per four rows for all four), in dots_scalar()'s order.
+__attribute__((target("avx2,fma"))) Index dots_avx2(Index rows, Index cols, const double* A,
+                                                    Index lda, const double* v, double* out,
+                                                    double alpha, bool accumulate) {
   Index k = 0;
+  const Index r4 = rows / 4 * 4;
   for (; k + 4 <= cols; k += 4) {
     const double *a0 = A + k * lda, *a1 = a0 + lda, *a2 = a1 + lda, *a3 = a2 + lda;
-    __m256d c01 = _mm256_setzero_pd(), c23 = c01;
-    Index i = 0;
-    for (; i + 2 <= rows; i += 2) {
-      const __m256d b = _mm256_broadcast_pd(reinterpret_cast<const __m128d*>(v + i));
-      const __m256d x01 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(a0 + i)),
-                                               _mm_loadu_pd(a1 + i), 1);
-      const __m256d x23 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(a2 + i)),
-                                               _mm_loadu_pd(a3 + i), 1);
-      c01 = _mm256_add_pd(_mm256_mul_pd(x01, b), c01);
-      c23 = _mm256_add_pd(_mm256_mul_pd(x23, b), c23);
+    __m256d c0 = _mm256_setzero_pd(), c1 = c0, c2 = c0, c3 = c0;
+    for (Index i = 0; i < r4; i += 4) {
+      const __m256d b = _mm256_loadu_pd(v + i);
+      c0 = _mm256_fmadd_pd(_mm256_loadu_pd(a0 + i), b, c0);
+      c1 = _mm256_fmadd_pd(_mm256_loadu_pd(a1 + i), b, c1);
+      c2 = _mm256_fmadd_pd(_mm256_loadu_pd(a2 + i), b, c2);
+      c3 = _mm256_fmadd_pd(_mm256_loadu_pd(a3 + i), b, c3);
     }
-    alignas(32) double l[8];
-    _mm256_store_pd(l, c01);
-    _mm256_store_pd(l + 4, c23);
-    double s[4] = {l[0] + l[1], l[2] + l[3], l[4] + l[5], l[6] + l[7]};
-    for (; i < rows; ++i) {
-      s[0] += a0[i] * v[i], s[1] += a1[i] * v[i];
-      s[2] += a2[i] * v[i], s[3] += a3[i] * v[i];
-    }
-    for (int q = 0; q < 4; ++q) out[k + q] = (accumulate ? out[k + q] : 0.0) + alpha * s[q];
+    dots_finish(c0, k, r4, rows, A, lda, v, out, alpha, accumulate);
+    dots_finish(c1, k + 1, r4, rows, A, lda, v, out, alpha, accumulate);
+    dots_finish(c2, k + 2, r4, rows, A, lda, v, out, alpha, accumulate);
+    dots_finish(c3, k + 3, r4, rows, A, lda, v, out, alpha, accumulate);
   }
-  // The last one to three outputs: one (even, odd) pair of partial sums in 128 bits each.
   for (; k < cols; ++k) {
     const double* a = A + k * lda;
-    __m128d c = _mm_setzero_pd();
-    Index i = 0;
-    for (; i + 2 <= rows; i += 2)
-      c = _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(a + i), _mm_loadu_pd(v + i)), c);
-    alignas(16) double l[2];
-    _mm_store_pd(l, c);
-    double s = l[0] + l[1];
-    for (; i < rows; ++i) s += a[i] * v[i];
-    out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
+    __m256d c = _mm256_setzero_pd();
+    for (Index i = 0; i < r4; i += 4)
+      c = _mm256_fmadd_pd(_mm256_loadu_pd(a + i), _mm256_loadu_pd(v + i), c);
+    dots_finish(c, k, r4, rows, A, lda, v, out, alpha, accumulate);
   }
   return k;
 }
@@ -117,21 +129,21 @@ __attribute__((target("avx2"))) Index transposed_avx2(Index rows, Index cols, co
 
 }  // namespace
 
-void transposed_product(Index rows, Index cols, const double* A, Index lda, const double* v,
-                        double* out, double alpha, bool accumulate) {
+void column_dots(Index rows, Index cols, const double* A, Index lda, const double* v, double* out,
+                 double alpha, bool accumulate) {
   Index done = 0;
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) done = transposed_avx2(rows, cols, A, lda, v, out, alpha, accumulate);
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  if (avx2) done = dots_avx2(rows, cols, A, lda, v, out, alpha, accumulate);
 #endif
-  transposed_scalar(done, cols, rows, A, lda, v, out, alpha, accumulate);
+  dots_scalar(done, cols, rows, A, lda, v, out, alpha, accumulate);
 }
 
 void column_product(Index rows, Index cols, const double* A, Index lda, const double* x,
                     double* out, bool accumulate) {
   Index done = 0;
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   if (avx2) done = rows_avx2(rows, cols, A, lda, x, out, accumulate);
 #endif
   rows_scalar(done, rows, cols, A, lda, x, out, accumulate);

@@ -26,7 +26,12 @@ ContactNewton::ContactNewton(const TransientModel& model, const TransientSystem&
     }
     blocks_.push_back(b);
   }
+  CqT_ = model.Cq.transpose();
+  CrT_ = model.Cr.transpose();
   eta_.resize(np_);
+  eta0_.resize(np_);
+  phi_.resize(np_);
+  w_.resize(np_);
   work_x_.resize(nx_);
   work_e_.resize(ne_);
 }
@@ -34,9 +39,15 @@ ContactNewton::ContactNewton(const TransientModel& model, const TransientSystem&
 bool ContactNewton::setup(double t, const double* y, double gamma, bool jacobian_ok) {
   if (!jacobian_ok || !jacobian_ready_) {
     sys_.jacobian_stiffness(t, y, kd_);
+    // The active units: the span from the first to the last unit with a spring (a unit of a
+    // gap in it has kd = 0 and adds nothing), so that their tread states are contiguous.
     active_.clear();
+    int first = -1, last = -1;
     for (int i = sys_.units().lo; i <= sys_.units().hi; ++i)
-      if (kd_(i) > 0) active_.push_back(i);
+      if (kd_(i) > 0) last = i, first = first < 0 ? i : first;
+    if (first >= 0)
+      for (int i = first; i <= last; ++i) active_.push_back(i);
+    kd_active_ = first >= 0 ? kd_.segment(first, last - first + 1) : Eigen::VectorXd();
     Tt_active_.resize(static_cast<Eigen::Index>(active_.size()), np_);
     for (std::size_t a = 0; a < active_.size(); ++a) {
       Tt_active_.row(a).head(M_.rank) = -M_.T.row(active_[a]);
@@ -75,71 +86,123 @@ void ContactNewton::factor(double gamma) {
   }
   d_r_inv_ = nr > 0 ? 1.0 / (1.0 + gamma / M.tau_residual_s) : 1.0;
   d_zw_ = gamma;
-  // M_EE and Y = M_EE^-1 diag(kd / c') T~ over the active range (zero beyond its last unit).
+  // M_EE and Y = M_EE^-1 diag(kd / c') T~ over the active range (zero beyond its last unit);
+  // Ty_ = diag(kd) (T~ - gamma Y) on the active rows.
   const int na = static_cast<int>(active_.size());
-  Eigen::MatrixXd Ty = Tt_active_;  // T~ - gamma Y on the active rows
+  Ty_.resize(na, np_);
+  bool at_rest = true;  // M_EE diagonal (no advection band): Y row by row, no back substitution
   if (ne_ > 0) {
     const double adv = Omega_ / M.tyre.dtheta_rad;
     ee_s1_ = -gamma * kUpwind[1] * adv;
     ee_s2_ = -gamma * kUpwind[2] * adv;
+    at_rest = ee_s1_ == 0 && ee_s2_ == 0;
     ee_d_.resize(ne_);
     for (int k = 0; k < ne_; ++k) {
       const int i = u0_ + k;
       ee_d_(k) = 1.0 - gamma * (kUpwind[0] * adv - (kd_(i) + M.k_kv(i)) / M.c_kv(i));
     }
     ee_d_inv_ = ee_d_.cwiseInverse();
-    if (na > 0) {
-      // Back substitution up the band, a row per unit (row-major: rows contiguous). At rest
-      // (no advection) M_EE is diagonal and the band terms vanish.
-      const int lo = active_.front(), hi = active_.back();
-      const bool band = ee_s1_ != 0 || ee_s2_ != 0;
-      using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-      RowMajor Y = RowMajor::Zero(hi - lo + 1, np_);
-      for (int a = na - 1, i = hi; i >= lo; --i) {
-        const int k = i - lo;
-        if (a >= 0 && active_[a] == i) Y.row(k) = kd_(i) / M.c_kv(i) * Tt_active_.row(a--);
-        if (band) {
-          if (k + 1 < Y.rows()) Y.row(k) -= ee_s1_ * Y.row(k + 1);
-          if (k + 2 < Y.rows()) Y.row(k) -= ee_s2_ * Y.row(k + 2);
-        }
-        Y.row(k) /= ee_d_(i - u0_);
-      }
-      for (int a = 0; a < na; ++a) Ty.row(a) -= gamma * Y.row(active_[a] - lo);
-    }
   } else {
     ee_d_.resize(0);
     ee_d_inv_.resize(0);
   }
-  // K = T~^T diag(kd) (T~ - gamma Y), coefficient-based (Eigen's GEMM would start OpenMP threads
-  // for a product this small; the library is built with OpenMP for sweeps).
-  // The scaled rows first: a coefficient of K is then a dot product of two contiguous columns.
-  for (int a = 0; a < na; ++a) Ty.row(a) *= kd_(active_[a]);
-  K_.setZero(np_, np_);
-  if (na > 0) K_.noalias() = Tt_active_.transpose().lazyProduct(Ty);
-  // Capacitance I - gamma (P D^-1 Q) K, column k of P D^-1 Q from the unit force on eta_k.
-  Eigen::MatrixXd H(np_, np_);
-  for (int k = 0; k < np_; ++k) {
-    work_x_.setZero();
-    if (k < rank) {
-      work_x_.segment(nq, nq) = -M.Cq.row(k).transpose();
-      if (nr > 0)
-        work_x_.segment(2 * nq, nr) =
-            -(M.lambda.array() / M.tau_residual_s * M.Cr.row(k).transpose().array()).matrix();
-    } else {
-      work_x_(Z + 1) = -1.0 / M.settings.hub_mass_kg;
+  if (ne_ > 0 && na > 0 && !at_rest) {
+    // Back substitution up the band, a row per unit (row-major: rows contiguous).
+    const int lo = active_.front(), hi = active_.back();
+    Y_.setZero(hi - lo + 1, np_);
+    for (int a = na - 1, i = hi; i >= lo; --i) {
+      const int k = i - lo;
+      if (a >= 0 && active_[a] == i) Y_.row(k) = kd_(i) / M.c_kv(i) * Tt_active_.row(a--);
+      if (k + 1 < Y_.rows()) Y_.row(k) -= ee_s1_ * Y_.row(k + 1);
+      if (k + 2 < Y_.rows()) Y_.row(k) -= ee_s2_ * Y_.row(k + 2);
+      Y_.row(k) /= ee_d_(i - u0_);
     }
-    solve_d(work_x_.data());
-    H.col(k).head(rank).noalias() = M.Cq * work_x_.head(nq);
-    if (nr > 0) H.col(k).head(rank).noalias() += M.Cr * work_x_.segment(2 * nq, nr);
-    H(rank, k) = work_x_(Z);
+    for (int a = 0; a < na; ++a)
+      Ty_.row(a) = (Tt_active_.row(a) - gamma * Y_.row(active_[a] - lo)) * kd_(active_[a]);
+  } else if (ne_ > 0 && na > 0) {
+    // At rest M_EE is diagonal and Y_a = (kd_a / c'_a) T~_a / d_a, so diag(kd)(T~ - gamma Y) =
+    // diag(w) T~ with w_a = kd_a (1 - gamma (kd_a / c'_a) / d_a) = kd_a (1 + gamma k'_a / c'_a)
+    // / (1 + gamma (kd_a + k'_a) / c'_a): the contact spring in series with the tread's
+    // Kelvin-Voigt element at the step's time scale gamma. K = T~^T diag(w) T~ is symmetric:
+    // its upper triangle only, each coefficient a dot product of two contiguous columns.
+    work_s_.resize(na);
+    for (int a = 0; a < na; ++a) {
+      const int i = active_[a];
+      work_s_(a) = kd_(i) * (1.0 - gamma * (kd_(i) / M.c_kv(i) / ee_d_(i - u0_)));
+    }
+    for (int j = 0; j < np_; ++j) Ty_.col(j) = Tt_active_.col(j).cwiseProduct(work_s_);
+    K_.resize(np_, np_);
+    for (int j = 0; j < np_; ++j) {
+      column_dots(Tt_active_.leftCols(j + 1), Ty_.col(j), K_.col(j));  // K_ij, i <= j
+      for (int i = 0; i < j; ++i) K_(j, i) = K_(i, j);
+    }
+  } else {
+    for (int a = 0; a < na; ++a) Ty_.row(a) = Tt_active_.row(a) * kd_(active_[a]);
   }
+  if (at_rest && ne_ > 0 && na > 0) {
+    // K from the symmetric update above.
+  } else if (na > 0) {
+    // K = T~^T Ty_, coefficient-based (Eigen's GEMM would start OpenMP threads for a product
+    // this small; the library is built with OpenMP for sweeps).
+    K_.noalias() = Tt_active_.transpose().lazyProduct(Ty_);
+  } else {
+    K_.setZero(np_, np_);
+  }
+  // D^-1 Q, column k the response of X to a unit force on eta_k: the force on xi_k enters the
+  // v rows as -Cq^T e_k (the r rows as -(lambda / tau) Cr^T e_k), and D^-1 maps it through its
+  // blocks (the (q, v) and (v, v) entries of each block inverse); the unit force on z (the hub)
+  // enters w as -1 / m_hub, and z as gamma times that. Then H = P D^-1 Q (np x np) and the
+  // capacitance I - gamma H K of Woodbury's identity.
+  DQ_.setZero(nx_, np_);
+  for (const Block& b : blocks_) {
+    const int h = b.n / 2;
+    for (int r = 0; r < b.n; ++r)
+      for (int c = 0; c < h; ++c)
+        DQ_.row(b.idx[r]).head(rank) -= b.inv(r, h + c) * M.Cq.col(b.idx[c]).transpose();
+  }
+  for (int l = 0; l < nr; ++l)
+    DQ_.row(2 * nq + l).head(rank) =
+        -(d_r_inv_ * M.lambda(l) / M.tau_residual_s) * M.Cr.col(l).transpose();
+  DQ_(Z + 1, rank) = -1.0 / M.settings.hub_mass_kg;
+  DQ_(Z, rank) = d_zw_ * DQ_(Z + 1, rank);
+  Eigen::MatrixXd& H = H_;
+  H.setZero(np_, np_);
+  for (int k = 0; k < np_; ++k) {
+    column_product(M.Cq, DQ_.col(k).head(nq), H.col(k));  // first rank rows
+    if (nr > 0) column_product(M.Cr, DQ_.col(k).segment(2 * nq, nr), H.col(k), true);
+  }
+  H.row(rank) = DQ_.row(Z);
   // gamma kd / c' of the active units, for M_EX in solve() (no division per solve).
   gamma_kd_c_.resize(ne_ > 0 ? na : 0);
   for (int a = 0; a < gamma_kd_c_.size(); ++a)
     gamma_kd_c_(a) = gamma * kd_(active_[a]) / M.c_kv(active_[a]);
   Eigen::MatrixXd cap = Eigen::MatrixXd::Identity(np_, np_);
-  cap.noalias() -= gamma * H.lazyProduct(K_);
+  for (int k = 0; k < np_; ++k) {
+    work_x_.head(np_) = -gamma * K_.col(k);
+    column_product(H, work_x_.head(np_), cap.col(k), /*accumulate=*/true);  // cap -= gamma H K
+  }
   cap_.compute(cap);
+  cap_lu_ = cap_.matrixLU();  // row-major: the triangular solves run along rows
+  cap_perm_ = cap_.permutationP().indices();
+}
+
+void ContactNewton::solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  // P cap = L U (partial pivoting): x = U^-1 L^-1 P b, as plain loops over the np x np factors
+  // (Eigen's dynamic-size triangular solver costs several times this for np = 14).
+  const int n = np_;
+  x.resize(n);
+  for (int i = 0; i < n; ++i) x(cap_perm_(i)) = b(i);
+  const double* lu = cap_lu_.data();
+  for (int i = 1; i < n; ++i) {
+    double s = x(i);
+    for (int j = 0; j < i; ++j) s -= lu[i * n + j] * x(j);
+    x(i) = s;
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    double s = x(i);
+    for (int j = i + 1; j < n; ++j) s -= lu[i * n + j] * x(j);
+    x(i) = s / lu[i * n + i];
+  }
 }
 
 void ContactNewton::solve_d(double* x) const {
@@ -172,55 +235,44 @@ void ContactNewton::solve(double* x) const {
   const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank;
   const int na = static_cast<int>(active_.size());
   Eigen::Map<Eigen::VectorXd> xx(x, nx_);
-  // Q phi added to the X rows (phi: forces on eta).
-  auto add_q = [&](const Eigen::VectorXd& phi, Eigen::Ref<Eigen::VectorXd> out) {
-    transposed_product(M.Cq, phi.head(rank), out.segment(nq, nq), -1.0, /*accumulate=*/true);
-    if (nr > 0)
-      out.segment(2 * nq, nr).array() -=
-          M.lambda.array() / M.tau_residual_s * (M.Cr.transpose() * phi.head(rank)).array();
-    out(Z + 1) -= phi(rank) / M.settings.hub_mass_kg;
-  };
-  auto apply_p = [&](const Eigen::Ref<const Eigen::VectorXd>& in, Eigen::VectorXd& eta) {
-    column_product(M.Cq, in.head(nq), eta);  // = Cq x to the bit (column_product.h)
-    if (nr > 0) column_product(M.Cr, in.segment(2 * nq, nr), eta, /*accumulate=*/true);
-    eta(rank) = in(Z);
-  };
   double* xe = x + nx_;
+  // phi1: the forces on eta of eliminating E, -gamma T~^T diag(kd) M_EE^-1 b_E; b_X + Q phi1 is
+  // then the right-hand side of the Schur complement S = D - gamma Q K P.
+  phi_.setZero(np_);
   if (ne_ > 0 && na > 0) {
-    // b_X - M_XE M_EE^-1 b_E.
     work_a_.resize(na);
-    if (ee_s1_ == 0 && ee_s2_ == 0) {  // at rest M_EE is diagonal: only the active rows
-      for (int a = 0; a < na; ++a) {
-        const int k = active_[a] - u0_;
-        work_a_(a) = kd_(active_[a]) * (xe[k] * ee_d_inv_(k));
-      }
+    const int k0 = active_.front() - u0_;  // the active units' tread states are contiguous
+    if (ee_s1_ == 0 && ee_s2_ == 0) {      // at rest M_EE is diagonal: only the active rows
+      work_a_ = kd_active_.cwiseProduct(
+          Eigen::Map<const Eigen::VectorXd>(xe + k0, na).cwiseProduct(ee_d_inv_.segment(k0, na)));
     } else {
       work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
       solve_ee(work_e_.data());
-      for (int a = 0; a < na; ++a) work_a_(a) = kd_(active_[a]) * work_e_(active_[a] - u0_);
+      work_a_ = kd_active_.cwiseProduct(work_e_.segment(k0, na));
     }
-    transposed_product(Tt_active_, work_a_, eta_);  // T~^T w (column_product.h)
-    eta_ *= -gamma_;
-    add_q(eta_, xx);
+    column_dots(Tt_active_, work_a_, phi_, -gamma_);  // -gamma T~^T w (column_product.h)
   }
-  // S^-1 by Woodbury: x0 = D^-1 b, x = x0 + D^-1 gamma Q K (cap^-1 P x0).
+  // S^-1 by Woodbury: with x0 = D^-1 b_X and eta0 = P x0,
+  //   x_X = x0 + D^-1 Q phi,  phi = phi1 + gamma K cap^-1 (eta0 + H phi1),
+  // and P x_X = eta0 + H phi (H = P D^-1 Q): one application of D^-1 and of P per solve, the
+  // forces entering X through the precomputed columns D^-1 Q.
   solve_d(x);
-  apply_p(xx, eta_);
-  const Eigen::VectorXd w = cap_.solve(eta_);
-  eta_.noalias() = gamma_ * (K_ * w);
-  work_x_.setZero();
-  add_q(eta_, work_x_);
-  solve_d(work_x_.data());
-  xx += work_x_;
+  column_dots(CqT_, xx.head(nq), eta0_);  // P x0 (= Cq q + Cr r, z)
+  if (nr > 0) column_dots(CrT_, xx.segment(2 * nq, nr), eta0_, 1.0, /*accumulate=*/true);
+  eta0_(rank) = xx(Z);
+  eta_ = eta0_;
+  eta_.noalias() += H_ * phi_;
+  solve_cap(eta_, w_);
+  phi_.noalias() += gamma_ * (K_ * w_);
+  column_product(DQ_, phi_, xx, /*accumulate=*/true);
   if (ne_ > 0) {
     // x_E = M_EE^-1 (b_E - M_EX x_X), M_EX = -gamma diag(kd / c') T~ P.
     if (na > 0) {
-      apply_p(xx, eta_);
+      eta_ = eta0_;
+      eta_.noalias() += H_ * phi_;                // P x_X
       column_product(Tt_active_, eta_, work_a_);  // work_a_ has na entries
-      for (int a = 0; a < na; ++a) {
-        const int i = active_[a];
-        xe[i - u0_] += gamma_kd_c_(a) * work_a_(a);
-      }
+      Eigen::Map<Eigen::VectorXd>(xe + (active_.front() - u0_), na) +=
+          gamma_kd_c_.cwiseProduct(work_a_);
     }
     solve_ee(xe);
   }

@@ -20,9 +20,10 @@ constexpr int kZenoRootReturns = 1000;
 constexpr double kZenoWindow_s = 1e-12;
 
 /// One output sample at (t, y). `f` is the caller's work vector for the forces (reused across
-/// samples: no allocation and no clearing of all m units per sample).
+/// samples: no allocation and no clearing of all m units per sample); sag_min: min_i s_i.
 TransientSample observe(const TransientModel& M, const TransientSystem& sys,
-                        const ScenarioPlan& plan, double t, const double* y, Eigen::VectorXd& f) {
+                        const ScenarioPlan& plan, double t, const double* y, Eigen::VectorXd& f,
+                        double sag_min) {
   TransientSample s;
   s.t_s = t;
   // The forces k max(0, g) where units can touch (on the system's units only: tread_window.h);
@@ -37,24 +38,39 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
   s.speed_m_s = plan.speed(t);
   s.load_N = f.segment(u0, u1 - u0 + 1).sum();
   // Sinking max_i (z + h_i - s_i): the least sag on a flat road, over the cleat's units too.
-  double sink = z - M.tyre.sag.minCoeff(), moment = 0, slope_force = 0;
+  double sink = z - sag_min, moment = 0, slope_force = 0;
   if (plan.cleat) {
     Eigen::VectorXd h = Eigen::VectorXd::Zero(M.m);
     sys.add_road(t, 0, M.m - 1, h);
     sink = std::max(sink, (z + h.array() - M.tyre.sag.array()).maxCoeff());
   }
-  int first = -1, last = -1;
-  for (int i = u0; i <= u1; ++i) {
-    if (f(i) > 0) {
-      double slope = 0;
-      if (plan.cleat) sys.road(t, i, &slope);
-      if (first < 0) first = i;
-      last = i;
-      ++s.contact_units;
-      moment += f(i) * M.x_road(i);
-      slope_force += f(i) * slope;
+  int first = -1, last = -1, units = 0;
+  const double* fp = f.data();
+  const double* x = M.x_road.data();
+  if (plan.cleat) {
+    for (int i = u0; i <= u1; ++i) {
+      if (fp[i] > 0) {
+        double slope = 0;
+        sys.road(t, i, &slope);
+        if (first < 0) first = i;
+        last = i;
+        ++units;
+        moment += fp[i] * x[i];
+        slope_force += fp[i] * slope;
+      }
+    }
+  } else {
+    // Flat road: no slope force (it stays 0), the same sums in the same order.
+    for (int i = u0; i <= u1; ++i) {
+      if (fp[i] > 0) {
+        first = first < 0 ? i : first;
+        last = i;
+        ++units;
+        moment += fp[i] * x[i];
+      }
     }
   }
+  s.contact_units = units;
   s.sinking_m = sink;
   s.pressure_centre_m = s.load_N > 0 ? moment / s.load_N : 0;
   s.longitudinal_force_N = -moment / (R0 - z) - slope_force;
@@ -211,7 +227,8 @@ TransientResult run_on_units(const TransientModel& M, Scenario scenario,
 
   const double T = plan.duration_s, dt = M.settings.output_step_s;
   Eigen::VectorXd f_sample;  // observe()'s work vector
-  res.samples.push_back(observe(M, sys, plan, 0.0, y.data(), f_sample));
+  const double sag_min = M.tyre.sag.minCoeff();
+  res.samples.push_back(observe(M, sys, plan, 0.0, y.data(), f_sample, sag_min));
   SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.cleat);
   reuse.remember(y);
   std::vector<double> breaks = plan.breakpoints;
@@ -248,7 +265,7 @@ TransientResult run_on_units(const TransientModel& M, Scenario scenario,
         smp.speed_m_s = plan.speed(t_out);
         res.samples.push_back(smp);
       } else {
-        res.samples.push_back(observe(M, sys, plan, t_out, y_out.data(), f_sample));
+        res.samples.push_back(observe(M, sys, plan, t_out, y_out.data(), f_sample, sag_min));
         reuse.remember(y_out);
       }
       if (options.progress && !options.progress(t_out, T)) {

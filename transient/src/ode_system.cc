@@ -65,6 +65,8 @@ TransientSystem::TransientSystem(const TransientModel& model, const ScenarioPlan
     k_over_c_kv_ = model.k_kv.segment(lo, n).cwiseProduct(inv_c_kv_);
   }
   model.tyre.sag.minCoeff(&centre_);
+  CqT_ = model.Cq.transpose();
+  CrT_ = model.Cr.transpose();
 }
 
 double TransientSystem::spin(double t) const {
@@ -79,8 +81,10 @@ void TransientSystem::contact_coordinates(const double* y) const {
   const auto& M = model_;
   const Eigen::Map<const Eigen::VectorXd> q(y, M.nq), r(y + 2 * M.nq, M.nr);
   scratch_xi_.resize(M.rank);
-  column_product(M.Cq, q, scratch_xi_);  // = Cq q to the bit (column_product.h)
-  if (M.nr > 0) column_product(M.Cr, r, scratch_xi_, /*accumulate=*/true);
+  // Cq q as rank dot products of Cq's rows (contiguous in Cq^T) with q: few long sums instead of
+  // many short ones (column_product.h).
+  column_dots(CqT_, q, scratch_xi_);
+  if (M.nr > 0) column_dots(CrT_, r, scratch_xi_, 1.0, /*accumulate=*/true);
 }
 
 void TransientSystem::check_outside(double t, const double* y) const {
@@ -132,8 +136,11 @@ void TransientSystem::reach(double t, const double* y, int& lo, int& hi) const {
         y[M.z_index()] - z_ref_ + basis_row_norm_max_ * (scratch_xi_ - xi_ref_).norm() + lift;
     lo = u0, hi = u1;
     if (!std::isfinite(delta)) return;
-    while (lo <= hi && !(p_ref_(lo - u0) + delta > 0)) ++lo;
-    while (hi >= lo && !(p_ref_(hi - u0) + delta > 0)) --hi;
+    int a = u0, b = u1;  // locals: the loops then keep them in registers
+    const double* p = p_ref_.data();
+    while (a <= b && !(p[a - u0] + delta > 0)) ++a;
+    while (b >= a && !(p[b - u0] + delta > 0)) --b;
+    lo = a, hi = b;
     return;
   }
   // Before an accepted state: the sag grows on both sides of centre_, so the units with
@@ -164,7 +171,7 @@ void TransientSystem::tip_penetration_in_reach(double t, const double* y,
 }
 
 void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo,
-                                       int& hi, bool xi_ready) const {
+                                       int& hi, bool xi_ready, bool forces) const {
   const auto& M = model_;
   if (!xi_ready) contact_coordinates(y);
   lo = 0, hi = -1;
@@ -174,9 +181,30 @@ void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorX
   // u = T xi (model.h's contact basis: rank columns instead of nq + nr).
   auto seg = g.segment(lo, n);
   column_product(M.T.middleRows(lo, n), scratch_xi_, seg);
-  seg = (y[M.z_index()] - M.tyre.sag.segment(lo, n).array() - seg.array()).matrix();
-  add_road(t, lo, hi, g);
-  if (ne_ > 0) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - units_.lo), n);
+  const double z = y[M.z_index()];
+  const double* sag = M.tyre.sag.data() + lo;
+  double* u = seg.data();
+  if (plan_.cleat) {
+    for (int k = 0; k < n; ++k) u[k] = (z - sag[k]) - u[k];
+    add_road(t, lo, hi, g);
+    if (ne_ > 0) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - units_.lo), n);
+  } else if (ne_ > 0) {
+    // One pass: ((z - s) - u) - e, the order of the passes above (and with `forces` the force
+    // k max(0, g) in the same pass).
+    const double* e = y + M.e_index() + (lo - units_.lo);
+    if (forces) {
+      const double* kc = M.k_contact.data() + lo;
+      for (int k = 0; k < n; ++k) {
+        const double gk = ((z - sag[k]) - u[k]) - e[k];
+        u[k] = gk > 0 ? kc[k] * gk : 0.0;
+      }
+      return;
+    }
+    for (int k = 0; k < n; ++k) u[k] = ((z - sag[k]) - u[k]) - e[k];
+  } else {
+    for (int k = 0; k < n; ++k) u[k] = (z - sag[k]) - u[k];
+  }
+  if (forces) seg = (seg.array() > 0).select(M.k_contact.segment(lo, n).array() * seg.array(), 0.0);
 }
 
 double TransientSystem::tip_penetration_at(double t, const double* y, int i, bool xi_of_y) const {
@@ -226,11 +254,7 @@ void TransientSystem::forces_band(double t, const double* y, Eigen::VectorXd& f,
     f.setZero(model_.m);
   else
     f.segment(units_.lo, units_.size()).setZero();
-  penetration_band(t, y, f, lo, hi);
-  if (hi < lo) return;
-  const int n = hi - lo + 1;
-  auto seg = f.segment(lo, n).array();
-  seg = (seg > 0).select(model_.k_contact.segment(lo, n).array() * seg, 0.0);
+  penetration_band(t, y, f, lo, hi, /*xi_ready=*/false, /*forces=*/true);
 }
 
 Eigen::VectorXd TransientSystem::forces(double t, const double* y) const {
@@ -286,17 +310,20 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   } else {
     penetration_band(t, y, scratch_g_, lo, hi, /*xi_ready=*/true);  // xi of y from above
   }
-  const bool first = in_contact_.empty();
-  in_contact_.resize(M.m, 0);
+  const bool first = in_contact_.size() == 0;
+  if (first) in_contact_.setZero(M.m);
   // Units that can have changed: the reach now and the contact set before.
   const int from = std::min(lo, contact_first_), to = std::max(hi, contact_last_);
   const int a = std::max(from, u0), b = std::min(to, units_.hi);
   const int r0 = std::max(a, lo), r1 = std::min(b, hi);  // [a, b] within the reach
-  int changed = 0;
-  // Branch-free passes (this loop was ~7 k instructions a step as one pass with branches): the
-  // units of [a, b] outside the reach are out of contact now; in_contact_ holds 0 or 1.
+  // Whole-segment passes on in_contact_ (0.0 or 1.0): the units of [a, b] outside the reach
+  // are out of contact now, those in it in contact where g > 0; the switches are the count of
+  // changed entries.
+  double changed_units = 0;
   auto leave = [&](int i0, int i1) {
-    for (int i = i0; i <= i1; ++i) changed += in_contact_[i], in_contact_[i] = 0;
+    if (i1 < i0) return;
+    changed_units += in_contact_.segment(i0, i1 - i0 + 1).sum();
+    in_contact_.segment(i0, i1 - i0 + 1) = 0.0;
   };
   contact_first_ = M.m, contact_last_ = -1;
   if (r1 < r0) {
@@ -304,19 +331,20 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   } else {
     leave(a, r0 - 1);
     leave(r1 + 1, b);
-    for (int i = r0; i <= r1; ++i) {
-      const char now = scratch_g_(i) > 0 ? 1 : 0;
-      changed += now != in_contact_[i];
-      in_contact_[i] = now;
-    }
+    const int n = r1 - r0 + 1;
+    auto old = in_contact_.segment(r0, n);
+    const auto now = (scratch_g_.segment(r0, n).array() > 0).select(1.0, Eigen::ArrayXd::Zero(n));
+    changed_units += (now - old).abs().sum();
+    old = now;
     int i = r0;
-    while (i <= r1 && !in_contact_[i]) ++i;
+    while (i <= r1 && in_contact_(i) == 0) ++i;
     if (i <= r1) {
       contact_first_ = i;
       contact_last_ = r1;
-      while (!in_contact_[contact_last_]) --contact_last_;
+      while (in_contact_(contact_last_) == 0) --contact_last_;
     }
   }
+  const int changed = static_cast<int>(changed_units);
   if (first) return 0;
   if (changed > 0) contact_switched();
   return changed;
@@ -337,16 +365,27 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
   if (hi >= lo) {
     const int n = hi - lo + 1;
     // Dot products of the contact basis' columns with f (13 x n with n contiguous per column).
-    transposed_product(M.T.middleRows(lo, n), f.segment(lo, n), phi);  // T^T f (to the bit)
+    column_dots(M.T.middleRows(lo, n), f.segment(lo, n), phi);  // T^T f (column_product.h)
     load = f.segment(lo, n).sum();
   }
   G.resize(nq);
-  transposed_product(M.Cq, phi, G);  // Cq^T phi
+  column_product(CqT_, phi, G);  // Cq^T phi (Cq^T stored: a product over its nq rows)
   Eigen::VectorXd& Vf = scratch_Vf_;
-  if (nr > 0) Vf.noalias() = M.Cr.transpose() * phi;
+  if (nr > 0) {
+    Vf.resize(nr);
+    column_product(CrT_, phi, Vf);
+  }
   const double Omega = spin(t), dOmega = spin_rate(t);
+  // The modal rows depend on the spin only: kept while it does not change (at rest, on a hold
+  // or at a steady speed).
+  if (modal_rows_.size() != static_cast<std::size_t>(nq) || Omega != rows_Omega_ ||
+      dOmega != rows_dOmega_) {
+    modal_rows_.resize(nq);
+    for (int j = 0; j < nq; ++j) modal_rows_[j] = modal_row(M, j, Omega, dOmega);
+    rows_Omega_ = Omega, rows_dOmega_ = dOmega;
+  }
   for (int j = 0; j < nq; ++j) {
-    const ModalRow d = modal_row(M, j, Omega, dOmega);
+    const ModalRow& d = modal_rows_[j];
     const int p = std::max(M.partner[j], 0);  // d.dq_p = d.dv_p = 0 without a partner
     ydot[j] = y[nq + j];
     ydot[nq + j] = G(j) + d.dq * y[j] + d.dv * y[nq + j] + d.dq_p * y[p] + d.dv_p * y[nq + p];

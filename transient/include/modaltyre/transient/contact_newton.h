@@ -42,6 +42,8 @@ class ContactNewton {
   void factor(double gamma);
   /// x <- D^-1 x on the X states.
   void solve_d(double* x) const;
+  /// x = cap^-1 b from the factors of factor().
+  void solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// y <- M_EE^-1 y over the tread states.
   void solve_ee(double* y) const;
 
@@ -52,7 +54,8 @@ class ContactNewton {
   bool jacobian_ready_ = false;
   // Jacobian data: contact stiffness, units with kd > 0, rolling speed.
   Eigen::VectorXd kd_;
-  std::vector<int> active_;
+  std::vector<int> active_;    ///< a span of units: first to last with kd > 0
+  Eigen::VectorXd kd_active_;  ///< kd over active_
   double Omega_ = 0, dOmega_ = 0;
   // Factorisation.
   double gamma_ = 0;
@@ -71,7 +74,17 @@ class ContactNewton {
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
   Eigen::MatrixXd Tt_active_;   ///< T~ rows of the active units (na x np)
   Eigen::VectorXd gamma_kd_c_;  ///< gamma kd_i / c'_i of the active units (relaxation on)
-  mutable Eigen::VectorXd eta_, work_x_, work_e_, work_a_;
+  /// factor()'s work: diag(kd) (T~ - gamma Y) on the active rows, Y (rolling), per-unit factors.
+  Eigen::MatrixXd Ty_;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Y_;
+  Eigen::VectorXd work_s_;
+  Eigen::MatrixXd CqT_, CrT_;  ///< Cq^T, Cr^T (P's products as column_dots)
+  Eigen::MatrixXd DQ_;         ///< D^-1 Q (nx x np): X's response to unit forces on eta
+  Eigen::MatrixXd H_;          ///< P D^-1 Q (np x np)
+  /// The capacitance's LU factors (row-major) and row permutation, for solve_cap().
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_;
+  Eigen::VectorXi cap_perm_;
+  mutable Eigen::VectorXd eta_, eta0_, phi_, w_, work_x_, work_e_, work_a_;
 };
 
 }  // namespace modaltyre::transient

@@ -110,9 +110,10 @@ class TransientSystem {
   /// forces_into() that also returns the reach [lo, hi] (f = 0 outside; empty if hi < lo).
   void forces_band(double t, const double* y, Eigen::VectorXd& f, int& lo, int& hi) const;
   /// g over the reach [lo, hi] (entries outside untouched), as tip_penetration_in_reach();
-  /// xi_ready: contact_coordinates(y) is already in scratch_xi_.
+  /// xi_ready: contact_coordinates(y) is already in scratch_xi_; forces: k max(0, g) instead
+  /// of g (forces_band()).
   void penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo, int& hi,
-                        bool xi_ready = false) const;
+                        bool xi_ready = false, bool forces = false) const;
 
   const TransientModel& model_;
   const ScenarioPlan& plan_;
@@ -120,10 +121,14 @@ class TransientSystem {
   // are not allocated per call (one TransientSystem per run and thread).
   mutable Eigen::VectorXd scratch_f_, scratch_G_, scratch_Vf_, scratch_g_, scratch_xi_,
       scratch_phi_;
+  Eigen::MatrixXd CqT_, CrT_;  ///< Cq^T (nq x rank), Cr^T (nr x rank)
+  /// rhs()'s modal rows at the spin (rows_Omega_, rows_dOmega_).
+  mutable std::vector<ModalRow> modal_rows_;
+  mutable double rows_Omega_ = 0, rows_dOmega_ = 0;
   /// Units in the Jacobian's sparsity pattern (ever in contact at a Jacobian evaluation).
   mutable std::vector<char> in_pattern_;
   /// Contact set at the last accepted step (update_contact_set()).
-  mutable std::vector<char> in_contact_;
+  mutable Eigen::ArrayXd in_contact_;  ///< 1 in contact, 0 not (empty before the first call)
   /// First and last unit of in_contact_ (empty: first > last).
   mutable int contact_first_ = 0, contact_last_ = -1;
   mutable long switches_since_jacobian_ = 0;
