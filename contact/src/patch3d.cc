@@ -77,6 +77,11 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
     if (physics.soil_m_per_Pa > 0) t += physics.soil_m_per_Pa / (dy * ds * c);
     t_.push_back(t);
   }
+  if (s.sidewall.enabled) {
+    s.sidewall.validate();
+    pressure_Pa_ = physics.inflation_pressure_Pa >= 0 ? physics.inflation_pressure_Pa
+                                                      : model_.config.inflation_pressure_Pa;
+  }
   if (s.lateral_belt.enabled) {
     if (n > kMaxLateralBeltColumns) {
       throw std::invalid_argument("3D patch: a lateral belt supports at most " +
@@ -87,6 +92,47 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
 }
 
 Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
+  const SidewallMembrane& wall = settings_.sidewall;
+  if (!wall.enabled || pressure_Pa_ == 0) return solve_loaded(load_N, warm, {});
+  // Fixed point on the sidewalls' lost force (sidewall_membrane.h): contact with e fixed, then
+  // e(u) from the sections' carcass displacement u_i = delta - sag_i - d_i = (C (F + e ds))_i.
+  const int S = sections();
+  const double ds = model_.unit_length_m;
+  const solvers::WeightedToeplitzCompliance carcass = *carcass_;
+  Eigen::VectorXd extra = Eigen::VectorXd::Zero(S), offset = Eigen::VectorXd::Zero(S);
+  std::vector<char> active(warm.begin(), warm.end());
+  for (int it = 1; it <= settings_.max_sidewall_iterations; ++it) {
+    Patch3dResult r = solve_loaded(load_N, active, extra);
+    r.sidewall_iterations = it;
+    if (!r.ok()) return r;
+    active = r.section_active;
+    for (int i = 0; i < S; ++i) {
+      const double u = r.sinking_m - model_.sag(i) - r.section_approach_m[i];
+      extra(i) = sidewall_lost_force_N_per_m(wall, pressure_Pa_, u) * ds;
+    }
+    if (!extra.allFinite()) {
+      r.status = SolveStatus::failed;
+      r.message = "sidewall softening: a section's displacement leaves the meridian's range";
+      return r;
+    }
+    const Eigen::VectorXd next = carcass_product(carcass, extra);
+    const double change = (next - offset).cwiseAbs().maxCoeff();
+    offset = next;
+    if (change <= settings_.sidewall_tolerance * std::abs(r.sinking_m)) {
+      r.message += "; sidewall softening converged in " + std::to_string(it) + " steps";
+      return r;
+    }
+  }
+  Patch3dResult r;
+  r.load_N = load_N;
+  r.status = SolveStatus::max_iterations;
+  r.message = "sidewall softening did not converge in " +
+              std::to_string(settings_.max_sidewall_iterations) + " steps";
+  return r;
+}
+
+Patch3dResult Patch3d::solve_loaded(double load_N, std::span<const char> warm,
+                                    const Eigen::VectorXd& extra) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
@@ -96,6 +142,9 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
                 : detail::rigid_sections(t_, z_m_);
   Patch3dResult r;
   r.load_N = load_N;
+  // The extra carcass loads' gap offset C extra (sidewall softening; empty: none).
+  const bool loaded = extra.size() > 0;
+  const Eigen::VectorXd offset = loaded ? carcass_product(carcass, extra) : Eigen::VectorXd();
 
   // The objective J(F) of the reduction; `update` moves the lateral patterns to F's.
   auto energies = [&](const Eigen::VectorXd& F, bool update) {
@@ -104,7 +153,8 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
     return e;
   };
   auto objective = [&](const Eigen::VectorXd& F) {
-    return 0.5 * F.dot(carcass_product(carcass, F)) + model_.sag.dot(F) + energies(F, false);
+    const double linear = loaded ? (model_.sag + offset).dot(F) : model_.sag.dot(F);
+    return 0.5 * F.dot(carcass_product(carcass, F)) + linear + energies(F, false);
   };
 
   Eigen::VectorXd F;  // current iterate (empty before the first step)
@@ -115,9 +165,10 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
     std::vector<double> diag(S);
     Eigen::VectorXd gap0(S);
     for (int i = 0; i < S; ++i) {
-      double offset = 0;
-      laws->reduced(i, diag[i], offset);
-      gap0(i) = model_.sag(i) + offset;
+      double drop = 0;
+      laws->reduced(i, diag[i], drop);
+      gap0(i) = model_.sag(i) + drop;
+      if (loaded) gap0(i) += offset(i);
     }
     const detail::DiagonalShifted op(carcass, std::move(diag));
     solvers::ContactProblem p;
@@ -137,6 +188,7 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
     const Eigen::VectorXd CF = carcass_product(carcass, Fh);
     Eigen::VectorXd d(S);
     for (int i = 0; i < S; ++i) d(i) = s.approach_m - model_.sag(i) - CF(i);
+    if (loaded) d -= offset;
     const double tol = gtol_rel * std::max(std::abs(s.approach_m), 1e-12);
     bool consistent = true;
     for (int i = 0; i < S && consistent; ++i) consistent = laws->consistent(i, Fh(i), d(i), tol);
@@ -149,7 +201,7 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
       msg << "converged in " << it << " lateral-pattern steps (" << r.contact_iterations
           << " active-set iterations)";
       r.message = msg.str();
-      return finish(load_N, f, s.approach_m, std::move(r));
+      return finish(load_N, f, s.approach_m, extra, std::move(r));
     }
     // Newton step on J towards the step's forces, backtracked while J does not decrease.
     if (F.size() == 0) {
@@ -190,7 +242,7 @@ Patch3dResult Patch3d::solve_cells(double load_N) const {
     return r;
   }
   std::vector<double> f(s.force.data(), s.force.data() + s.force.size());
-  return finish(load_N, f, s.approach_m, std::move(r));
+  return finish(load_N, f, s.approach_m, {}, std::move(r));
 }
 
 std::vector<Patch3dResult> Patch3d::solve_all(const std::vector<double>& loads_N) const {
@@ -225,7 +277,7 @@ double Patch3d::lateral_half_width(const Patch3dResult& r, int i) const {
 }
 
 Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, double delta,
-                              Patch3dResult r) const {
+                              const Eigen::VectorXd& extra, Patch3dResult r) const {
   const int S = sections(), ny = columns();
   const TyreModel& m = model_;
   r.sections = S;
@@ -247,8 +299,11 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
     return r;
   }
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
-  const Eigen::VectorXd CF = carcass_product(carcass, F);
+  // The carcass carries the contact forces and the extra loads (sidewall softening).
+  const bool loaded = extra.size() > 0;
+  const Eigen::VectorXd CF = carcass_product(carcass, loaded ? Eigen::VectorXd(F + extra) : F);
   r.section_force_N.assign(F.data(), F.data() + S);
+  if (loaded) r.sidewall_force_N.assign(extra.data(), extra.data() + S);
   r.section_approach_m.resize(S);
   r.section_active.resize(S);
   // The belt's lateral deflection of each cell, G f_i (zero for the laterally rigid belt).
@@ -282,8 +337,10 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
   const auto& K = kernels_;
   const solvers::LagConvolution2x2 H({K.r_from_r, K.r_from_t, K.t_from_r, K.t_from_t}, K.lags);
   std::vector<double> fr(S), ft(S), ur(S), ut(S);
-  for (int i = 0; i < S; ++i)
-    fr[i] = F(i) * std::cos(m.theta[i]), ft[i] = F(i) * std::sin(m.theta[i]);
+  for (int i = 0; i < S; ++i) {
+    const double Fi = loaded ? F(i) + extra(i) : F(i);
+    fr[i] = Fi * std::cos(m.theta[i]), ft[i] = Fi * std::sin(m.theta[i]);
+  }
   H.apply(0, S, 0, S, fr.data(), ft.data(), ur.data(), ut.data());
   const double R0 = m.config.outer_radius_m;
   auto cell_x = [&](int i, double fij) {

@@ -39,6 +39,22 @@ LateralBelt read_lateral_belt(const ConfigSection& s, const Patch3dSettings& p) 
   return b;
 }
 
+/// The `sidewall:` section (its presence enables the sidewalls' pneumatic softening,
+/// sidewall_membrane.h).
+SidewallMembrane read_sidewall(const ConfigSection& s) {
+  SidewallMembrane m;
+  m.enabled = true;
+  for (const char* key : {"meridian_chord_mm", "meridian_length_mm"}) {
+    if (!s.has(key)) s.fail(key, "required in footprint_3d.sidewall");
+  }
+  m.chord_m = s.positive("meridian_chord_mm", 0, 1e4) * 1e-3;
+  m.length_m = s.positive("meridian_length_mm", 0, 1e4) * 1e-3;
+  if (!(m.length_m > m.chord_m)) {
+    s.fail("meridian_length_mm", "the meridian must be longer than its chord (meridian_chord_mm)");
+  }
+  return m;
+}
+
 }  // namespace
 
 Patch3dSettings read_patch3d_settings(const ConfigSection& s) {
@@ -57,6 +73,7 @@ Patch3dSettings read_patch3d_settings(const ConfigSection& s) {
       static_cast<int>(s.integer("max_pattern_iterations", p.max_pattern_iterations, 1, 100000));
   p.crown = read_crown_profile(s.section("crown"));
   if (s.has("lateral_belt")) p.lateral_belt = read_lateral_belt(s.section("lateral_belt"), p);
+  if (s.has("sidewall")) p.sidewall = read_sidewall(s.section("sidewall"));
   // The profile must stay a graph over the tread: no vertical tangent inside the shoulders.
   if (0.5 * p.tread_width_m >= p.crown.reach_m()) {
     s.fail("tread_width_mm", "the crown profile turns vertical inside the tread width");

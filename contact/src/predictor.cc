@@ -410,6 +410,7 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
   }
   physics.tread = &P.tread;
   physics.tread_creep = tread_creep(E, c);
+  physics.inflation_pressure_Pa = c.pressure_Pa();  // the sidewalls' softening (row's pressure)
   if (E.soil_compliance.enabled && c.surface == Surface::soil) {
     physics.soil_m_per_Pa = E.soil_compliance.layer_m() / E.soil_compliance.modulus_Pa();
   }

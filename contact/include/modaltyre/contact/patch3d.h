@@ -30,6 +30,12 @@
 // backtracking line search on J when a full step does not decrease it) until it is consistent.
 // solve_cells() solves the cell problem directly (every cell an unknown) as the reference.
 //
+// Sidewalls' pneumatic softening (optional, settings.sidewall; sidewall_membrane.h): the
+// sections' lost sidewall force e(u_i) ds acts on the carcass beside the contact forces, so the
+// gap gains (C e ds)_i and u = C (F + e ds) is the sections' carcass displacement. Solved as a
+// fixed point: the contact problem with e fixed (a known gap offset per section), e updated from
+// u, until the offset changes by less than settings.sidewall_tolerance x the sinking.
+//
 // Lateral belt (optional, LateralBelt): the section's belt strip bends across the tread, a beam
 // with compliance G between its cells (docs/footprint.md section 7); the gap gains (G f_i)_j.
 // The reduction stays exact: a section at approach d is then a small contact problem
@@ -91,6 +97,10 @@ struct Patch3dResult {
   std::vector<double> half_width_m;        ///< lateral edge |y| per section (contour per x)
   std::vector<ColumnEdges> column_edges;   ///< longitudinal edges per column (contour per y)
   std::vector<char> section_active;        ///< F_i > 0 (warm start of the next load)
+  /// Sidewall softening: the lost sidewall force e(u_i) ds per section [N] (empty: disabled)
+  /// and the fixed-point steps taken.
+  std::vector<double> sidewall_force_N;
+  int sidewall_iterations = 0;
 
   double cell_force(int i, int j) const { return cell_force_N[std::size_t(i) * columns + j]; }
   double belt_deflection(int i, int j) const {
@@ -112,6 +122,8 @@ struct Patch3dPhysics {
   /// Soil layer depth over its modulus, H / E2 [m/Pa]: a cell of road area A sinks by
   /// f H / (E2 A) more (static part of seed 000 eq. 23, as the 2D patch's soil_compliance).
   double soil_m_per_Pa = 0;
+  /// Inflation pressure for the sidewalls' softening [Pa]; negative: the model config's.
+  double inflation_pressure_Pa = -1;
 };
 
 /// The 3D patch on a tyre model's sections. Keeps a reference to the model (it must outlive
@@ -144,8 +156,11 @@ class Patch3d {
 
  private:
   double lateral_half_width(const Patch3dResult& r, int i) const;
+  /// The contact solve with the sections' extra carcass loads `extra` (empty: none).
+  Patch3dResult solve_loaded(double load_N, std::span<const char> warm,
+                             const Eigen::VectorXd& extra) const;
   Patch3dResult finish(double load_N, const std::vector<double>& cell_force, double delta,
-                       Patch3dResult r) const;
+                       const Eigen::VectorXd& extra, Patch3dResult r) const;
 
   const TyreModel& model_;
   Patch3dSettings settings_;
@@ -155,7 +170,8 @@ class Patch3d {
   std::vector<double> y_m_, z_m_;  ///< column centres and their crown drops
   std::vector<double> t_;          ///< cell tread compliance per section
   double k_radial_cell_ = 0, k_tangential_cell_ = 0;
-  Eigen::MatrixXd G_;  ///< lateral belt compliance of a section (empty: laterally rigid)
+  Eigen::MatrixXd G_;       ///< lateral belt compliance of a section (empty: laterally rigid)
+  double pressure_Pa_ = 0;  ///< inflation pressure of the sidewalls' softening
 };
 
 /// The map cropped to the sections in contact and `margin` sections either side.

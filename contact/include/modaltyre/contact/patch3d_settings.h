@@ -3,6 +3,7 @@
 // the tread width (the shoulder limit), the lateral cell, the crown profile and the optional
 // lateral belt. A config with this section is predicted on the 3D patch (predictor.h).
 #include "modaltyre/contact/crown_profile.h"
+#include "modaltyre/contact/sidewall_membrane.h"
 #include "modaltyre/core/config_tree.h"
 
 namespace modaltyre::contact {
@@ -31,12 +32,17 @@ struct Patch3dSettings {
   double tread_width_m = 0.15;     ///< shoulder to shoulder: no cell outside +-width/2
   double lateral_cell_m = 2.5e-3;  ///< target cell width; columns = round(width / cell)
   CrownProfile crown;
-  LateralBelt lateral_belt;          ///< disabled: laterally rigid sections
+  LateralBelt lateral_belt;   ///< disabled: laterally rigid sections
+  SidewallMembrane sidewall;  ///< disabled: the modes' linear sidewalls
+  /// sidewall: fixed-point steps on the sidewalls' correction per load, and their tolerance on
+  /// the correction's gap offset relative to the sinking.
+  int max_sidewall_iterations = 200;
+  double sidewall_tolerance = 1e-11;
   int max_pattern_iterations = 200;  ///< Newton steps on the lateral pattern per load
 };
 
 /// Settings from the `footprint_3d:` section (tread_width_mm, lateral_cell_mm, crown: ...,
-/// lateral_belt: ...); errors name file, line and key.
+/// lateral_belt: ..., sidewall: ...); errors name file, line and key.
 Patch3dSettings read_patch3d_settings(const ConfigSection& section);
 
 }  // namespace modaltyre::contact
