@@ -6,9 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "modaltyre/contact/patch3d.h"
+#include "modaltyre/core/config_tree.h"
+#include "modaltyre/core/errors.h"
 
 namespace modaltyre::contact::testing {
 
@@ -111,6 +114,21 @@ inline void expect_symmetric_in_y(const Patch3dResult& r) {
     EXPECT_NEAR(a.rear_x_m, b.rear_x_m, 1e-12);
     EXPECT_NEAR(a.front_x_m, b.front_x_m, 1e-12);
     EXPECT_NEAR(r.y_m[j], -r.y_m[ny - 1 - j], 1e-15);
+  }
+}
+
+/// Each (yaml, key): read_patch3d_settings on the yaml's footprint_3d: section refuses it with an
+/// InputError that names the key.
+template <std::size_t N>
+void expect_refused_naming_the_key(const std::pair<const char*, const char*> (&bad)[N]) {
+  for (const auto& [yaml, key] : bad) {
+    try {
+      const ConfigTree t = ConfigTree::from_string(yaml, "patch3d.yaml");
+      read_patch3d_settings(t.root().section("footprint_3d"));
+      ADD_FAILURE() << "accepted: " << yaml;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
   }
 }
 
