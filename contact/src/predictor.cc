@@ -163,8 +163,7 @@ PatchOperator assemble(const TyreModel& m, const CarcassAssembly& a, const TyreP
   op.kernels = kernels;
   op.carcass_scale = scale;
   op.tread_radial_lag = pasternak_tread_lags(
-      k_r / creep, E.tread_coupling.enabled ? E.tread_coupling.coupling_length_m() : 0, ds,
-      cand);
+      k_r / creep, E.tread_coupling.enabled ? E.tread_coupling.coupling_length_m() : 0, ds, cand);
   op.tread_tangential_compliance = creep / k_t;
   op.width_m = width;
   op.horizontal_ratio = ratio;
