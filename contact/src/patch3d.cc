@@ -94,33 +94,65 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
 Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
   const SidewallMembrane& wall = settings_.sidewall;
   if (!wall.enabled || pressure_Pa_ == 0) return solve_loaded(load_N, warm, {});
-  // Fixed point on the sidewalls' lost force (sidewall_membrane.h): contact with e fixed, then
-  // e(u) from the sections' carcass displacement u_i = delta - sag_i - d_i = (C (F + e ds))_i.
+  // Fixed point x = G(x) on the sections' lost sidewall loads x = e ds (sidewall_membrane.h):
+  // G solves the contact with x fixed and returns e(u) ds from the sections' carcass
+  // displacement u_i = delta - sag_i - d_i = (C (F + x))_i. Converged when the gap offset moves
+  // by C (G(x) - x) <= tolerance x sinking. Anderson mixing over the last few steps
+  // (settings.sidewall_anderson_depth; 0 = the plain iteration x <- G(x)) takes the next x as
+  // the combination of the recent G(x_j) whose residuals G(x_j) - x_j cancel best.
   const int S = sections();
   const double ds = model_.unit_length_m;
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
-  Eigen::VectorXd extra = Eigen::VectorXd::Zero(S), offset = Eigen::VectorXd::Zero(S);
+  const int depth = std::max(0, settings_.sidewall_anderson_depth);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(S), g(S);
+  std::vector<Eigen::VectorXd> xs, gs;  // recent iterates and their images, oldest first
   std::vector<char> active(warm.begin(), warm.end());
+  bool mixed = false;  // x came from Anderson mixing, not from a plain step
   for (int it = 1; it <= settings_.max_sidewall_iterations; ++it) {
-    Patch3dResult r = solve_loaded(load_N, active, extra);
+    Patch3dResult r = solve_loaded(load_N, active, x);
     r.sidewall_iterations = it;
     if (!r.ok()) return r;
     active = r.section_active;
     for (int i = 0; i < S; ++i) {
       const double u = r.sinking_m - model_.sag(i) - r.section_approach_m[i];
-      extra(i) = sidewall_lost_force_N_per_m(wall, pressure_Pa_, u) * ds;
+      g(i) = sidewall_lost_force_N_per_m(wall, pressure_Pa_, u) * ds;
     }
-    if (!extra.allFinite()) {
+    if (!g.allFinite()) {
+      if (mixed) {  // a mixed step left the meridian's range: restart from the plain step
+        x = gs.back();
+        xs.clear();
+        gs.clear();
+        mixed = false;
+        continue;
+      }
       r.status = SolveStatus::failed;
       r.message = "sidewall softening: a section's displacement leaves the meridian's range";
       return r;
     }
-    const Eigen::VectorXd next = carcass_product(carcass, extra);
-    const double change = (next - offset).cwiseAbs().maxCoeff();
-    offset = next;
+    const double change = carcass_product(carcass, g - x).cwiseAbs().maxCoeff();
     if (change <= settings_.sidewall_tolerance * std::abs(r.sinking_m)) {
       r.message += "; sidewall softening converged in " + std::to_string(it) + " steps";
       return r;
+    }
+    xs.push_back(x);
+    gs.push_back(g);
+    if (static_cast<int>(xs.size()) > depth + 1) {
+      xs.erase(xs.begin());
+      gs.erase(gs.begin());
+    }
+    x = g;
+    const int n = static_cast<int>(xs.size()) - 1;
+    if (n > 0) {
+      // min |f_k - dF gamma|, f_j = G(x_j) - x_j, dF's columns f_{j+1} - f_j; then
+      // x = G(x_k) - dG gamma with dG's columns G(x_{j+1}) - G(x_j).
+      Eigen::MatrixXd dF(S, n), dG(S, n);
+      for (int j = 0; j < n; ++j) {
+        dF.col(j) = (gs[j + 1] - xs[j + 1]) - (gs[j] - xs[j]);
+        dG.col(j) = gs[j + 1] - gs[j];
+      }
+      const Eigen::VectorXd gamma = dF.colPivHouseholderQr().solve(gs[n] - xs[n]);
+      mixed = gamma.allFinite();
+      if (mixed) x -= dG * gamma;
     }
   }
   Patch3dResult r;

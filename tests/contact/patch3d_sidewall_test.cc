@@ -113,6 +113,30 @@ TEST(Patch3dSidewall, FixedPointIsInEquilibriumComplementaryAndConsistent) {
   }
 }
 
+TEST(Patch3dSidewall, AndersonMixingReachesThePlainIterationsFixedPointInFewerSteps) {
+  // c0 / L = 0.85 (the stronger softening of the measured band): the same fixed point by the
+  // plain iteration x <- G(x) and by Anderson mixing, which needs fewer contact solves.
+  const Tyre3d s(with(kCoarse, {"footprint_3d.sidewall.meridian_chord_mm=117",
+                                "footprint_3d.sidewall.meridian_length_mm=137.65"}));
+  Patch3dSettings plain_settings = s.patch;
+  plain_settings.sidewall_anderson_depth = 0;
+  ASSERT_GT(s.patch.sidewall_anderson_depth, 0);
+  const auto plain = Patch3d(s.model, plain_settings).solve_all({2131, 8321});
+  const auto mixed = Patch3d(s.model, s.patch).solve_all({2131, 8321});
+  for (int k = 0; k < 2; ++k) {
+    ASSERT_TRUE(plain[k].ok() && mixed[k].ok()) << plain[k].message << " / " << mixed[k].message;
+    expect_equilibrium_and_complementarity(mixed[k]);
+    // Both stop within 1e-11 of the sinking of the fixed point (the offset's change).
+    EXPECT_NEAR(mixed[k].sinking_m, plain[k].sinking_m, 1e-9 * plain[k].sinking_m);
+    ASSERT_EQ(mixed[k].section_force_N.size(), plain[k].section_force_N.size());
+    for (std::size_t i = 0; i < plain[k].section_force_N.size(); ++i) {
+      EXPECT_NEAR(mixed[k].section_force_N[i], plain[k].section_force_N[i], 1e-6 * mixed[k].load_N)
+          << "section " << i;
+    }
+    EXPECT_LT(mixed[k].sidewall_iterations, plain[k].sidewall_iterations);
+  }
+}
+
 TEST(Patch3dSidewall, SofteningSinksDeeperAndLinearisesTheStiffness) {
   const Tyre3d plain(kCoarse), soft(with(kCoarse, kSidewall));
   const auto a = Patch3d(plain.model, plain.patch).solve_all({2131, 8321});

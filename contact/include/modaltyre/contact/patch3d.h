@@ -34,7 +34,8 @@
 // sections' lost sidewall force e(u_i) ds acts on the carcass beside the contact forces, so the
 // gap gains (C e ds)_i and u = C (F + e ds) is the sections' carcass displacement. Solved as a
 // fixed point: the contact problem with e fixed (a known gap offset per section), e updated from
-// u, until the offset changes by less than settings.sidewall_tolerance x the sinking.
+// u (Anderson mixing over settings.sidewall_anderson_depth steps), until the offset changes by
+// less than settings.sidewall_tolerance x the sinking.
 //
 // Lateral belt (optional, LateralBelt): the section's belt strip bends across the tread, a beam
 // with compliance G between its cells (docs/footprint.md section 7); the gap gains (G f_i)_j.

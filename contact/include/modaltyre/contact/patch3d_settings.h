@@ -38,6 +38,8 @@ struct Patch3dSettings {
   /// the correction's gap offset relative to the sinking.
   int max_sidewall_iterations = 200;
   double sidewall_tolerance = 1e-11;
+  /// sidewall: Anderson mixing over this many previous steps (0: the plain iteration).
+  int sidewall_anderson_depth = 3;
   int max_pattern_iterations = 200;  ///< Newton steps on the lateral pattern per load
 };
 
