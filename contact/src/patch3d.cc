@@ -104,6 +104,7 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
   const double ds = model_.unit_length_m;
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
   const int depth = std::max(0, settings_.sidewall_anderson_depth);
+  const SidewallLostForce lost(wall, pressure_Pa_);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(S), g(S);
   std::vector<Eigen::VectorXd> xs, gs;  // recent iterates and their images, oldest first
   std::vector<char> active(warm.begin(), warm.end());
@@ -115,7 +116,7 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
     active = r.section_active;
     for (int i = 0; i < S; ++i) {
       const double u = r.sinking_m - model_.sag(i) - r.section_approach_m[i];
-      g(i) = sidewall_lost_force_N_per_m(wall, pressure_Pa_, u) * ds;
+      g(i) = lost(u) * ds;
     }
     if (!g.allFinite()) {
       if (mixed) {  // a mixed step left the meridian's range: restart from the plain step

@@ -36,13 +36,26 @@ double sidewall_stiffness_N_per_m2(double pressure_Pa, double length_m, double c
   return 0.5 * pressure_Pa * (a * s + c) / (s - a * c);
 }
 
-double sidewall_lost_force_N_per_m(const SidewallMembrane& s, double pressure_Pa, double u_m) {
-  if (!s.enabled || pressure_Pa == 0 || u_m == 0) return 0;
-  const double c0 = s.chord_m, L = s.length_m;
-  const double linear = sidewall_stiffness_N_per_m2(pressure_Pa, L, c0) * u_m;
+SidewallLostForce::SidewallLostForce(const SidewallMembrane& s, double pressure_Pa)
+    : active_(s.enabled && pressure_Pa != 0),
+      pressure_Pa_(pressure_Pa),
+      chord_m_(s.chord_m),
+      length_m_(s.length_m) {
+  if (!active_) return;
+  pull0_N_per_m_ = sidewall_pull_N_per_m(pressure_Pa_, length_m_, chord_m_);
+  stiffness0_N_per_m2_ = sidewall_stiffness_N_per_m2(pressure_Pa_, length_m_, chord_m_);
+}
+
+double SidewallLostForce::operator()(double u_m) const {
+  if (!active_ || u_m == 0) return 0;
+  const double linear = stiffness0_N_per_m2_ * u_m;
   const double restoring =
-      sidewall_pull_N_per_m(pressure_Pa, L, c0) - sidewall_pull_N_per_m(pressure_Pa, L, c0 - u_m);
+      pull0_N_per_m_ - sidewall_pull_N_per_m(pressure_Pa_, length_m_, chord_m_ - u_m);
   return 2 * (linear - restoring);
+}
+
+double sidewall_lost_force_N_per_m(const SidewallMembrane& s, double pressure_Pa, double u_m) {
+  return SidewallLostForce(s, pressure_Pa)(u_m);
 }
 
 }  // namespace modaltyre::contact

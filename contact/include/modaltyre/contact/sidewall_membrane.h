@@ -34,8 +34,23 @@ double sidewall_pull_N_per_m(double pressure_Pa, double length_m, double chord_m
 /// F'(c): its radial stiffness [N/m^2].
 double sidewall_stiffness_N_per_m2(double pressure_Pa, double length_m, double chord_m);
 
+/// e(u) of one membrane at one pressure, with the rest state's F(c0) and F'(c0) computed once:
+/// the 3D patch's fixed point evaluates it for every section at every step.
+class SidewallLostForce {
+ public:
+  SidewallLostForce(const SidewallMembrane& s, double pressure_Pa);
+  /// e(u) [N/m] at an inward displacement u of the belt (u < c0 and c0 - u < L; NaN outside).
+  double operator()(double displacement_m) const;
+
+ private:
+  bool active_;  ///< enabled and p != 0 (else e = 0)
+  double pressure_Pa_, chord_m_, length_m_;
+  double pull0_N_per_m_ = 0, stiffness0_N_per_m2_ = 0;  ///< F(c0), F'(c0)
+};
+
 /// e(u): the two sidewalls' lost restoring force per unit circumference [N/m] at an inward
-/// displacement u of the belt (u < c0 and c0 - u < L; NaN outside).
+/// displacement u of the belt (u < c0 and c0 - u < L; NaN outside). One evaluation of
+/// SidewallLostForce.
 double sidewall_lost_force_N_per_m(const SidewallMembrane& s, double pressure_Pa,
                                    double displacement_m);
 
