@@ -47,26 +47,16 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
   int first = -1, last = -1, units = 0;
   const double* fp = f.data();
   const double* x = M.x_road.data();
-  if (plan.cleat) {
-    for (int i = u0; i <= u1; ++i) {
-      if (fp[i] > 0) {
+  for (int i = u0; i <= u1; ++i) {
+    if (fp[i] > 0) {
+      first = first < 0 ? i : first;
+      last = i;
+      ++units;
+      moment += fp[i] * x[i];
+      if (plan.cleat) {  // on a flat road the slope force stays 0
         double slope = 0;
         sys.road(t, i, &slope);
-        if (first < 0) first = i;
-        last = i;
-        ++units;
-        moment += fp[i] * x[i];
         slope_force += fp[i] * slope;
-      }
-    }
-  } else {
-    // Flat road: no slope force (it stays 0), the same sums in the same order.
-    for (int i = u0; i <= u1; ++i) {
-      if (fp[i] > 0) {
-        first = first < 0 ? i : first;
-        last = i;
-        ++units;
-        moment += fp[i] * x[i];
       }
     }
   }
