@@ -74,7 +74,7 @@ for entry in "${VARIANTS[@]}"; do
     }' "$TMP.run" >>"$TMP"
 done
 mv "$TMP" "$CSV"
-trap - EXIT
+rm -f "$TMP.run"
 fi
 
 gnuplot <<GP
