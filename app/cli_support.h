@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/core/command_files.h"
 #include "modaltyre/core/number_format.h"
 #include "modaltyre/report/check_finite.h"
+#include "modaltyre/report/command_inputs.h"
 
 namespace modaltyre::app {
 

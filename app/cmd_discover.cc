@@ -226,7 +226,7 @@ void register_discover(CLI::App& app) {
                   "fit and cross-validate exactly up to this many rows, above by a subset search "
                   "and one-step cross-validation (default 64; docs/discover.md)")
       ->check(CLI::Range(4, 1000000));
-  cmd->callback([a] {
+  cmd->callback([a, cmd] {
     discover::DiscoverOptions opt;
     opt.threads = a->threads;
     opt.unit_length_mm = a->unit_length_mm;
@@ -236,16 +236,12 @@ void register_discover(CLI::App& app) {
     refuse_repeated_overrides(a->overrides);
     const contact::TyreConfig cfg = contact::load_tyre_config(a->config, a->overrides);
     const studies::MeasurementSet data = studies::read_measurements(a->measured, cfg);
-    for (const std::string* out : {&a->plot, &a->out_config}) {
-      if (out->empty()) continue;
-      const fs::path folder = fs::absolute(fs::path(*out)).parent_path();
-      if (!fs::is_directory(folder)) {
-        throw InputError({*out, 0, ""}, "output folder '" + folder.string() + "' does not exist");
-      }
-      if (fs::is_directory(fs::path(*out))) {
-        throw InputError({*out, 0, ""}, "output path is a directory, not a file");
-      }
-    }
+    CommandFiles files;  // no output over an input or another output
+    report::add_config_inputs(files, cfg);
+    files.input(a->measured, "MEASURED");
+    if (cmd->count("--plot")) files.output(a->plot, "--plot");
+    if (cmd->count("--out-config")) files.output(a->out_config, "--out-config");
+    files.check();
     // Checked before minutes of fitting, not after the augmented config has been written.
     if (!a->plot.empty()) {
       const std::string ext = fs::path(a->plot).extension().string();

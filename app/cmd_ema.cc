@@ -185,12 +185,17 @@ void register_ema(CLI::App& app) {
   cmd->add_flag("--json", a->json, "print JSON");
   cmd->add_option("--plot", a->plot, "draw the stabilisation diagram (.svg or .png)");
   cmd->add_option("--output", a->output, "write the hammer CSV (mode,freq_hz,...) to this file");
-  cmd->callback([a] {
+  cmd->callback([a, cmd] {
     ema::EmaOptions o;
     if (!a->band.empty()) parse_band(a->band, o);
     o.max_order = a->max_order;
     o.unscaled = a->unscaled;
     o.validate();
+    CommandFiles files;  // an FRF measurement must never become a hammer CSV by a typo
+    files.input(a->file, "FRF_FILE");
+    if (cmd->count("--plot")) files.output(a->plot, "--plot");
+    if (cmd->count("--output")) files.output(a->output, "--output");
+    files.check();
     const ema::FrfSet set = read_frfs(*a);
     const ema::EmaResult r = ema::run_ema(set, o);
     if (!a->plot.empty()) plot_diagram(r, a->plot);

@@ -120,7 +120,11 @@ void register_fit_modes(CLI::App& app) {
       ->required();
   cmd->add_flag("--json", args->json, "print JSON instead of a table");
   cmd->add_option("--plot", args->plot, "draw each mode's points and fitted harmonic (.svg/.png)");
-  cmd->callback([args] {
+  cmd->callback([args, cmd] {
+    CommandFiles files;
+    files.input(args->hammer, "HAMMER");
+    if (cmd->count("--plot")) files.output(args->plot, "--plot");
+    files.check();
     const auto data = modal::read_hammer_csv(args->hammer);
     const auto id = modal::identify_modes(data);
     if (!args->plot.empty()) plot_modes(data, id, args->plot);

@@ -64,14 +64,16 @@ void register_footprint(CLI::App& app) {
     const auto settings = take_condition_settings(overrides);
     report::refuse_footprint_settings(settings, "--load", "--fx");
     const auto config = contact::load_tyre_config(a->config, overrides);
-    if (!a->map_csv.empty()) {
-      if (!config.footprint_3d) {
-        throw InputError({a->config, 0, "--map-csv"},
-                         "a pressure map needs the 3D patch: the config has no footprint_3d: "
-                         "section");
-      }
-      check_output_path(a->map_csv, "--map-csv");  // before anything is computed
+    if (cmd->count("--map-csv") && !config.footprint_3d) {
+      throw InputError({a->config, 0, "--map-csv"},
+                       "a pressure map needs the 3D patch: the config has no footprint_3d: "
+                       "section");
     }
+    CommandFiles files;  // before anything is computed: no output over an input or another
+    report::add_config_inputs(files, config);
+    if (cmd->count("--plot")) files.output(a->plot, "--plot");
+    if (cmd->count("--map-csv")) files.output(a->map_csv, "--map-csv");
+    files.check();
     const auto model = contact::build_tyre_model(config);
     auto cases = report::footprint_cases(
         config, a->loads, cmd->count("--fx") ? std::optional<double>(a->horizontal) : std::nullopt);

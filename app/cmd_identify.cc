@@ -99,15 +99,6 @@ void check_into_config_use(const IdentifyArgs& a) {
                      "--out-config needs --into-config TYRE.yaml, the tyre config to start from");
   if (const std::string why = unmapped_reason(a); !why.empty())
     throw InputError("identify " + a.method + " --into-config: " + why);
-  namespace fs = std::filesystem;
-  std::error_code ec_in, ec_out;
-  const fs::path in = fs::weakly_canonical(a.into_config, ec_in);
-  const fs::path out = fs::weakly_canonical(a.out_config, ec_out);
-  if (!ec_in && !ec_out && in == out)
-    throw InputError({"--out-config", 0, ""},
-                     a.out_config +
-                         " is the tyre config itself: write the augmented config to "
-                         "another file (its comments would be lost)");
 }
 
 nlohmann::json mapping_json(const IdentifyArgs& a, const studies::ConfigMapping& m,
@@ -207,8 +198,10 @@ void register_identify(CLI::App& app) {
   cmd->add_option("--out-config", args->out_config,
                   "write the tyre config of --into-config with the identified effects switched "
                   "on and set here (YAML)");
-  cmd->callback([args] {
+  cmd->callback([args, cmd] {
     IdentifyArgs a = *args;
+    const bool plot_given = cmd->count("--plot") > 0;
+    const bool write_config_given = cmd->count("--write-config") > 0;
     // --write-config FILE with a tyre config (--config) writes a tyre config the footprint
     // model runs (the same as --into-config CONFIG --out-config FILE) for every method whose
     // results it uses; otherwise the standalone 'rheology:' record.
@@ -227,6 +220,16 @@ void register_identify(CLI::App& app) {
     if (!a.into_config.empty())
       into = studies::ConfigTarget{
           a.into_config, a.out_config, contact::load_tyre_config(a.into_config), {}};
+    CommandFiles files;  // no output over a measurement, a tyre config or another output
+    files.input(a.file, "FILE");
+    files.input(a.static_file, "--static");
+    files.input(a.config, "--config");
+    if (into) report::add_config_inputs(files, into->tyre, "--into-config");
+    if (plot_given) files.output(a.plot, "--plot");
+    if (write_config_given && !tyre_config_out) files.output(a.write_config, "--write-config");
+    if (!a.out_config.empty())
+      files.output(a.out_config, tyre_config_out ? "--write-config" : "--out-config");
+    files.check();
     const report::IdentifyRun run = report::run_identify(inputs);
     map_and_draw(a, run, into);
     nlohmann::json out = run.document;

@@ -34,6 +34,7 @@ struct SweepArgs {
   int threads = 0;
   std::vector<std::string> overrides;
   std::string output;
+  bool output_given = false;  ///< --output stated (an empty path is then refused)
   bool json = false;
   bool warm_start = false;
 };
@@ -66,7 +67,10 @@ Prepared prepare(const SweepArgs& a) {
   Prepared p;
   refuse_repeated_overrides(a.overrides);
   p.spec = studies::read_sweep_spec(a.sweep, a.overrides);
-  if (!a.output.empty()) {
+  if (a.output_given) {
+    if (a.output.empty()) {
+      throw InputError({"", 0, "--output"}, "the output path is empty; name a CSV file to write");
+    }
     p.spec.output = a.output;
     p.spec.output_where = {"--output", 0, ""};
   }
@@ -75,6 +79,12 @@ Prepared prepare(const SweepArgs& a) {
   }
   check_output(p.spec.output, p.spec.output_where);
   p.plan = studies::plan_sweep(p.spec);
+  // The CSV must not replace the sweep file, its base config or the hammer data they read.
+  CommandFiles files;
+  files.input(p.spec.file, "SWEEP");
+  for (const auto& model : p.plan.models) report::add_config_inputs(files, model, "base:");
+  files.output(p.spec.output, a.output_given ? "--output" : p.spec.file + ": output");
+  files.check();
   return p;
 }
 
@@ -272,7 +282,8 @@ void register_sweep(CLI::App& app) {
                 "start each case's contact solve from a fixed reference solution of its model "
                 "instead of cold (same contact sets, fewer iterations; still identical for any "
                 "thread count)");
-  cmd->callback([a] {
+  cmd->callback([a, cmd] {
+    a->output_given = cmd->count("--output") > 0;
     if (mpi::launcher_world_size() > 1) {
 #ifdef MODALTYRE_WITH_MPI
       run_distributed(*a);

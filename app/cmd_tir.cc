@@ -34,6 +34,10 @@ std::string pct(const std::optional<double>& v) { return v ? fixed(100 * *v, 2) 
 void run_export(const TirArgs& a, CLI::App* cmd) {
   refuse_repeated_overrides(a.overrides);
   const auto config = contact::load_tyre_config(a.config, a.overrides);
+  CommandFiles files;  // before the fit: a .tir written over the config loses the tyre
+  report::add_config_inputs(files, config);
+  files.output(a.output, "--output");
+  files.check();
   const auto model = contact::build_tyre_model(config);
   tir::TirExportOptions o;
   if (cmd->count("--fnomin")) o.fnomin_N = a.fnomin;
@@ -157,6 +161,11 @@ void run_compare(const TirArgs& a, CLI::App* cmd) {
   const tir::MfTyre t = tir::read_mf_tyre(a.tir_file);
   refuse_repeated_overrides(a.overrides);
   const auto config = contact::load_tyre_config(a.config, a.overrides);
+  CommandFiles files;
+  report::add_config_inputs(files, config);
+  files.input(a.tir_file, "TIR");
+  if (cmd->count("--plot")) files.output(a.plot, "--plot");
+  files.check();
   const auto model = contact::build_tyre_model(config);
   tir::CompareOptions o;
   if (cmd->count("--fnomin")) o.fnomin_N = a.fnomin;

@@ -105,7 +105,7 @@ void register_transient(CLI::App& app) {
                   "override a config key, e.g. --set transient.load_hold.hold_s=10, or state a "
                   "condition of the scenario: load_N; hold_s (load-hold); speed_kmh (rolling, "
                   "cleat), e.g. --set hold_s=60");
-  cmd->callback([a] {
+  cmd->callback([a, cmd] {
     const transient::Scenario scenario = transient::parse_scenario(a->scenario);
     auto overrides = a->overrides;
     const auto settings = take_condition_settings(overrides);
@@ -113,6 +113,11 @@ void register_transient(CLI::App& app) {
     refuse_repeated_overrides(overrides);  // e.g. hold_s=60 and transient.load_hold.hold_s=10
     const auto config = contact::load_tyre_config(a->config, overrides);
     report::require_2d_patch(config, a->config);
+    CommandFiles files;  // before the run: no output over the config or another output
+    report::add_config_inputs(files, config);
+    if (cmd->count("--csv")) files.output(a->csv, "--csv");
+    if (cmd->count("--plot")) files.output(a->plot, "--plot");
+    files.check();
     const auto tyre = contact::build_tyre_model(config);
     const auto model = transient::build_transient_model(tyre);
 

@@ -198,11 +198,16 @@ void register_validate(CLI::App& app) {
   cmd->add_flag("--json", a->json, "print JSON");
   cmd->add_option("--plot", a->plot,
                   "draw sinking, length and (where measured) width versus load (.svg or .png)");
-  cmd->callback([a] {
+  cmd->callback([a, cmd] {
     // The config decides how the file is read (effects need every row's conditions).
     auto overrides = a->overrides;
     const auto settings = take_condition_settings(overrides);
     const auto config = contact::load_tyre_config(a->config, overrides);
+    CommandFiles files;
+    report::add_config_inputs(files, config);
+    files.input(a->measured, "MEASURED");
+    if (cmd->count("--plot")) files.output(a->plot, "--plot");
+    files.check();
     auto measured = studies::read_validation_measurements(a->measured, config);
     report::apply_to_measurements(settings, measured, a->measured);
     const auto rep = studies::validate_footprints(config, measured);

@@ -62,16 +62,6 @@ PlotSeries contour(const contact::Patch3dResult& r) {
 
 }  // namespace
 
-void check_output_path(const std::string& path, const std::string& option) {
-  const fs::path folder = fs::absolute(fs::path(path)).parent_path();
-  if (!fs::is_directory(folder)) {
-    throw InputError({path, 0, option}, "output folder '" + folder.string() + "' does not exist");
-  }
-  if (fs::is_directory(fs::path(path))) {
-    throw InputError({path, 0, option}, "output path is a directory, not a file");
-  }
-}
-
 void write_map_csv(const std::vector<contact::Prediction>& cases, const std::string& path) {
   std::string text = "load_N,x_mm,y_mm,pressure_kPa\n";
   char line[128];

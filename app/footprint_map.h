@@ -9,10 +9,6 @@
 
 namespace modaltyre::app {
 
-/// Throws InputError (exit 2) before anything is computed when `path` cannot take an output:
-/// its folder does not exist or it is a directory. `option` names the flag in the message.
-void check_output_path(const std::string& path, const std::string& option);
-
 /// load_N,x_mm,y_mm,pressure_kPa: one line per cell of each case's map, written atomically.
 void write_map_csv(const std::vector<contact::Prediction>& cases, const std::string& path);
 

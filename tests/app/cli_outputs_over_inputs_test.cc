@@ -1,0 +1,160 @@
+// Issue 38 item 1: no command writes over one of its own inputs (config, data, hammer CSV,
+// sweep file and base, FRF file, .tir) or over another of its outputs. Each case runs the
+// command as a user would, on copies in a temporary folder, and checks exit 2, a message
+// naming both files' roles, and the input byte for byte unchanged. Identity, not spelling:
+// symbolic links, hard links and ".." are seen through.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using modaltyre_test::CliRun;
+using modaltyre_test::slurp;
+
+const std::string kSrc = MODALTYRE_SOURCE_DIR;
+
+class CliOutputsOverInputs : public modaltyre_test::CliFixture {
+ protected:
+  // The 2D and 3D configs with their hammer data, copied so that nothing in the tree is at
+  // risk if a guard were missing.
+  void SetUp() override {
+    CliFixture::SetUp();
+    fs::create_directories(dir_ / "data");
+    fs::copy_file(kSrc + "/configs/data/sf350_hammer_12pt.csv", hammer());
+    fs::copy_file(kSrc + "/configs/sf350_2d_table3.yaml", config2d());
+    fs::copy_file(kSrc + "/configs/sf350.yaml", config3d());
+    fs::copy_file(kSrc + "/configs/data/sf350_footprint_table3.csv", measured());
+  }
+  std::string hammer() const { return (dir_ / "data/sf350_hammer_12pt.csv").string(); }
+  std::string config2d() const { return (dir_ / "tyre2d.yaml").string(); }
+  std::string config3d() const { return (dir_ / "tyre3d.yaml").string(); }
+  std::string measured() const { return (dir_ / "measured.csv").string(); }
+
+  // Runs `args`; expects exit 2, every `words` in stderr and `input` unchanged.
+  void expect_refused(const std::vector<std::string>& args, const std::string& input,
+                      const std::vector<std::string>& words) {
+    const std::string before = slurp(input);
+    const CliRun r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    for (const auto& w : words) EXPECT_NE(r.err.find(w), std::string::npos) << w << ": " << r.err;
+    EXPECT_EQ(slurp(input), before) << input << " was changed";
+  }
+};
+
+TEST_F(CliOutputsOverInputs, EmaOutputOverTheFrfFile) {
+  const std::string frf = (dir_ / "frf.unv").string();
+  fs::copy_file(kSrc + "/tests/data/ema/fixed_columns.unv", frf);
+  expect_refused({"ema", frf, "--output", frf}, frf, {"--output", "FRF_FILE", "over an input"});
+  expect_refused({"ema", frf, "--plot", frf}, frf, {"--plot", "FRF_FILE"});
+}
+
+TEST_F(CliOutputsOverInputs, SweepOutputOverItsSpecItsBaseOrTheHammerData) {
+  const std::string spec = (dir_ / "sweep.yaml").string();
+  auto write_spec = [&](const std::string& output) {
+    std::ofstream(spec) << "base: tyre2d.yaml\ngrid:\n  load_N: [3000, 4000]\noutput: " << output
+                        << "\n";
+  };
+  write_spec("sweep.yaml");
+  expect_refused({"sweep", spec}, spec, {"output", "SWEEP"});
+  write_spec("tyre2d.yaml");
+  expect_refused({"sweep", spec}, config2d(), {"output", "base:"});
+  write_spec("out.csv");
+  expect_refused({"sweep", spec, "--output", hammer()}, hammer(), {"--output", "modal.hammer_csv"});
+  expect_refused({"sweep", spec, "--output", ""}, spec, {"--output", "empty"});
+  EXPECT_FALSE(fs::exists(dir_ / "out.csv"));
+}
+
+TEST_F(CliOutputsOverInputs, TirExportOverItsConfig) {
+  expect_refused({"tir", "export", config2d(), "--output", config2d()}, config2d(),
+                 {"--output", "CONFIG"});
+  expect_refused({"tir", "export", config2d(), "--output", ""}, config2d(), {"--output", "empty"});
+}
+
+TEST_F(CliOutputsOverInputs, TransientCsvOverItsConfig) {
+  expect_refused({"transient", config2d(), "--scenario", "load-hold", "--csv", config2d()},
+                 config2d(), {"--csv", "CONFIG"});
+}
+
+TEST_F(CliOutputsOverInputs, FootprintMapOverTheHammerDataAndPlotOverTheMap) {
+  expect_refused({"footprint", config3d(), "--load", "4000", "--map-csv", hammer()}, hammer(),
+                 {"--map-csv", "modal.hammer_csv"});
+  const std::string x = (dir_ / "x.svg").string();
+  const CliRun r = run({"footprint", config3d(), "--load", "4000", "--plot", x, "--map-csv", x});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--plot"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--map-csv"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(x));
+}
+
+TEST_F(CliOutputsOverInputs, IdentifyRecordOverItsData) {
+  const std::string data = (dir_ / "ld.csv").string();
+  fs::copy_file(kSrc + "/tests/data/rheology/load_deflection.csv", data);
+  expect_refused({"identify", "load-deflection", data, "--write-config", data}, data,
+                 {"--write-config", "FILE"});
+  expect_refused({"identify", "load-deflection", data, "--plot", data}, data, {"--plot", "FILE"});
+  // With a tyre config, the augmented config must not replace the hammer data either.
+  expect_refused(
+      {"identify", "load-deflection", data, "--config", config2d(), "--write-config", hammer()},
+      hammer(), {"--write-config", "modal.hammer_csv"});
+}
+
+TEST_F(CliOutputsOverInputs, DiscoverOutConfigOverItsConfigOrData) {
+  expect_refused({"discover", config2d(), measured(), "--out-config", config2d()}, config2d(),
+                 {"--out-config", "CONFIG"});
+  expect_refused({"discover", config2d(), measured(), "--plot", measured()}, measured(),
+                 {"--plot", "MEASURED"});
+}
+
+TEST_F(CliOutputsOverInputs, ValidateAndFitModesPlotOverTheirData) {
+  expect_refused({"validate", config2d(), measured(), "--plot", measured()}, measured(),
+                 {"--plot", "MEASURED"});
+  expect_refused({"fit-modes", hammer(), "--plot", hammer()}, hammer(), {"--plot", "HAMMER"});
+}
+
+TEST_F(CliOutputsOverInputs, TirComparePlotOverTheTirFile) {
+  const std::string tir = (dir_ / "t.tir").string();
+  const CliRun ex = run({"tir", "export", config2d(), "--output", tir});
+  ASSERT_EQ(ex.exit_code, 0) << ex.err;
+  expect_refused({"tir", "compare", config2d(), tir, "--plot", tir}, tir, {"--plot", "TIR"});
+}
+
+// Identity, not spelling: a symbolic link to the config, a hard link to it and a path through
+// "..": all the same file.
+TEST_F(CliOutputsOverInputs, LinksAndDotDotAreSeenThrough) {
+  const fs::path sym = dir_ / "link.yaml";
+  fs::create_symlink(config2d(), sym);
+  expect_refused({"tir", "export", config2d(), "--output", sym.string()}, config2d(), {"CONFIG"});
+  EXPECT_TRUE(fs::is_symlink(sym));
+  const fs::path hard = dir_ / "hard.yaml";
+  fs::create_hard_link(config2d(), hard);
+  expect_refused({"transient", config2d(), "--scenario", "load-hold", "--csv", hard.string()},
+                 config2d(), {"CONFIG"});
+  const std::string dotdot = (dir_ / "data" / ".." / "tyre2d.yaml").string();
+  expect_refused({"transient", config2d(), "--scenario", "load-hold", "--csv", dotdot}, config2d(),
+                 {"CONFIG"});
+  // Two outputs that are one file not yet written: "./x.csv"-style spellings.
+  const std::string a = (dir_ / "o.svg").string(), b = (dir_ / "data" / ".." / "o.svg").string();
+  const CliRun r =
+      run({"transient", config2d(), "--scenario", "load-hold", "--plot", a, "--csv", b});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_FALSE(fs::exists(a));
+}
+
+// Outputs that are distinct files still work, and /dev/null may take two outputs.
+TEST_F(CliOutputsOverInputs, DistinctOutputsAndStreamsAreAccepted) {
+  const std::string tir = (dir_ / "t.tir").string();
+  const CliRun r = run({"tir", "export", config2d(), "--output", tir});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(tir));
+  const CliRun twice = run({"footprint", config3d(), "--load", "4000", "--map-csv", "/dev/null"});
+  EXPECT_EQ(twice.exit_code, 0) << twice.err;
+}
+
+}  // namespace
