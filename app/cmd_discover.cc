@@ -118,8 +118,9 @@ void write_out_config(const DiscoverArgs& a, const contact::TyreConfig& cfg,
   ov.insert(ov.end(), r.out_overrides.begin(), r.out_overrides.end());
   // The hammer data path is relative to the config; re-anchor it to the new file's folder.
   fs::path folder = fs::absolute(fs::path(a.out_config)).parent_path();
-  ov.push_back("modal.hammer_csv=" +
-               fs::relative(fs::absolute(cfg.hammer_csv), folder).generic_string());
+  if (!cfg.hammer_csv.empty())  // a frequency list has no file to re-anchor
+    ov.push_back("modal.hammer_csv=" +
+                 fs::relative(fs::absolute(cfg.hammer_csv), folder).generic_string());
   const std::string text = "# Written by modaltyre discover from " + a.config + " and " +
                            a.measured + ".\n# " + r.conclusion + "\n" +
                            ConfigTree::load(a.config, ov).dump() + "\n";

@@ -92,11 +92,22 @@ modal::LagKernels kernels_for(const TyreModel& m, const modal::ModalBasis& basis
              : modal::build_lag_kernels(basis, m.dtheta_rad, cand, rolling);
 }
 
-// The carcass kernels when rolling_speed (at a speed > 0) or belt_flattening change them;
-// otherwise the model's static ones are used.
+// Whether the row's pressure differs from the model's and the ring fit can move the carcass
+// to it (carcass_source.h): then the kernels are rebuilt for the row.
+/// Below it a row's pressure is refused when the ring's terms act (the config reader's bound).
+constexpr double kMinRingPressure_kPa = 10;
+
+bool pressure_acts(const TyreModel& m, const OperatingConditions& c) {
+  return m.carcass.fit.valid && c.pressure_Pa() != m.carcass.operating_pressure_Pa;
+}
+
+// The carcass kernels when rolling_speed (at a speed > 0), belt_flattening or the row's
+// pressure change them; otherwise the model's static ones are used.
 modal::LagKernels rebuilt_kernels(const TyreModel& m, const EffectsConfig& E, double scale,
-                                  bool rolling, bool flattening, double speed_m_per_s) {
-  modal::ModalBasis basis = m.basis;
+                                  bool rolling, bool flattening, double speed_m_per_s,
+                                  double pressure_Pa) {
+  // The row's pressure moves every order's stiffness by the ring's pressure terms first.
+  modal::ModalBasis basis = basis_at_pressure(m.basis, m.carcass, m.config.carcass, pressure_Pa);
   if (flattening) {
     // Foundation kappa on orders >= 2: c_k -> c_k / (1 + pi R kappa c_k), c_k the order's
     // (scaled) static radial compliance; every term of the order gets the same factor.
@@ -242,7 +253,8 @@ bool conditions_act(const TyreConfig& config) {
 
 Prediction predict(const TyreModel& model, const OperatingConditions& c,
                    const PredictOptions& options) {
-  if (!conditions_act(model.config) && c.load_N > 0 && !model.config.footprint_3d) {
+  if (!conditions_act(model.config) && c.load_N > 0 && !model.config.footprint_3d &&
+      !pressure_acts(model, c)) {
     return effect_free(model, c, options.warm_active);
   }
   return predict(model, parameters_of(model.config), c, options);
@@ -280,8 +292,10 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
   Eigen::MatrixXd own_vertical;
   const modal::LagKernels* kernels = &m.kernels;
   const Eigen::MatrixXd* carcass = &assembly.carcass_vertical;
-  if (rolling || flattening) {
-    own_kernels = rebuilt_kernels(m, E, scale, rolling, flattening, c.speed_m_per_s());
+  const bool pressured = pressure_acts(m, c);
+  if (rolling || flattening || pressured) {
+    own_kernels =
+        rebuilt_kernels(m, E, scale, rolling, flattening, c.speed_m_per_s(), c.pressure_Pa());
     own_vertical = carcass_vertical_compliance(own_kernels, m.theta);
     kernels = &own_kernels;
     carcass = &own_vertical;
@@ -403,8 +417,9 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
   Patch3dPhysics physics;
   physics.carcass_scale = carcass_scale(m, P, c, elastic);
   modal::LagKernels flattened;
-  if (E.belt_flattening.enabled && E.belt_flattening.stiffness_MPa > 0) {
-    flattened = rebuilt_kernels(m, E, physics.carcass_scale, false, true, 0);
+  const bool flattening = E.belt_flattening.enabled && E.belt_flattening.stiffness_MPa > 0;
+  if (flattening || pressure_acts(m, c)) {
+    flattened = rebuilt_kernels(m, E, physics.carcass_scale, false, flattening, 0, c.pressure_Pa());
     physics.kernels = &flattened;
   }
   physics.tread = &P.tread;
@@ -505,6 +520,13 @@ Prediction pneumatic_split(const TyreModel& model, const TyreParameters& paramet
 
 Prediction predict(const TyreModel& model, const TyreParameters& parameters,
                    const OperatingConditions& c, const PredictOptions& options) {
+  if (pressure_acts(model, c) && c.pressure_kPa < kMinRingPressure_kPa) {
+    Prediction p = failed("pressure " + std::to_string(c.pressure_kPa) +
+                          " kPa: below 10 kPa the ring's hoop tension and sidewall foundation "
+                          "vanish (an uninflated tyre is not a modal carcass)");
+    p.footprint.load = {c.load_N, c.horizontal_force_N};
+    return p;
+  }
   const double pneumatic_Pa = parameters.pneumatic_share * c.pressure_Pa();
   Prediction p = pneumatic_Pa > 0 && c.load_N > 0
                      ? pneumatic_split(model, parameters, c, options, pneumatic_Pa)

@@ -113,8 +113,15 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   }
 
   const ConfigSection modal = root.section("modal");
-  if (!modal.has("hammer_csv")) modal.fail("hammer_csv", "required: path of the hammer data CSV");
-  c.hammer_csv = tree.resolve_path(modal.text("hammer_csv", "")).string();
+  c.carcass = read_carcass_settings(modal);
+  if (!c.carcass.frequency_list()) {
+    if (!modal.has("hammer_csv")) {
+      modal.fail("hammer_csv",
+                 "required: path of the hammer data CSV (or a frequency list: "
+                 "modal.frequencies_hz with orders; `modaltyre init` writes one)");
+    }
+    c.hammer_csv = tree.resolve_path(modal.text("hammer_csv", "")).string();
+  }
   c.extend_orders = modal.boolean("extend_orders", true);
   c.compliance_scale = scalar(modal, "modal", "compliance_scale", 1.0);
   c.mesh.max_order = static_cast<int>(modal.integer("max_order", 0, 0, 100000));
@@ -198,6 +205,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   tree.reject_unknown_keys();
   // Named at the config's line (the hammer reader alone could only name the path), after every
   // key is read so that a bad key is reported first.
+  if (c.carcass.frequency_list()) return c;
   std::error_code ec;
   const auto hammer_type = std::filesystem::status(c.hammer_csv, ec).type();
   if (hammer_type == std::filesystem::file_type::not_found) {

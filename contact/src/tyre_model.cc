@@ -86,22 +86,14 @@ TyreModel build_tyre_model(const TyreConfig& config, const modal::ModeIdentifica
   m.half_window = static_cast<int>(std::lround(0.5 * config.mesh.window_m / m.unit_length_m));
   const int cand = 2 * m.half_window + 1;
 
-  modal::ModalBasisOptions bo;
-  bo.max_order = config.mesh.max_order > 0 ? config.mesh.max_order : m.units_around / 2;
-  bo.extend = config.extend_orders;
-  bo.compliance_scale = config.compliance_scale;
-  if (config.extension_s2 >= 0) {
-    modal::ModeIdentification stated = modes;
-    stated.dispersion.s2 = config.extension_s2;
-    m.basis = modal::build_modal_basis(stated, bo);
-  } else {
-    m.basis = modal::build_modal_basis(modes, bo);
-  }
+  const int max_order = config.mesh.max_order > 0 ? config.mesh.max_order : m.units_around / 2;
+  m.basis = carcass_basis(config, modes, max_order, m.carcass);
+  for (const auto& w : m.carcass.warnings) m.basis.warnings.push_back(w);
   if (2 * (cand - 1) >= m.units_around) {
     throw InputError({config.source, 0, "contact.window_mm"},
                      "candidate window longer than half the circumference");
   }
-  m.kernels = bo.max_order * 2 <= m.units_around
+  m.kernels = max_order * 2 <= m.units_around
                   ? modal::build_periodic_kernels(m.basis, m.units_around, cand)
                   : modal::build_lag_kernels(m.basis, m.dtheta_rad, cand);
 
@@ -211,8 +203,7 @@ const CarcassAssembly& TyreModel::carcass_assembly() const {
 }
 
 TyreModel build_tyre_model(const TyreConfig& config) {
-  const auto data = modal::read_hammer_csv(config.hammer_csv);
-  return build_tyre_model(config, modal::identify_modes(data));
+  return build_tyre_model(config, config_modes(config));
 }
 
 }  // namespace modaltyre::contact

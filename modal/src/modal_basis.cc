@@ -42,6 +42,7 @@ ModalBasis build_modal_basis(const ModeIdentification& ident, const ModalBasisOp
     t.damping_ratio = m->damping_ratio;
     if (m->kind == ModeKind::rotation) {
       t.order = 0;
+      t.rotation = true;
       t.weight = 1.0;
       t.P_rr = m->radial.A[0] * m->radial.A[0];
       t.P_tt = m->tangential.A[0] * m->tangential.A[0];

@@ -232,8 +232,9 @@ IdentifiedConfig compose_identified_config(const IdentifiedSource& source, const
   namespace fs = std::filesystem;
   std::vector<std::string> ov = mapping_overrides(t.mapping);
   const fs::path folder = fs::absolute(fs::path(t.out_path)).parent_path();
-  ov.push_back("modal.hammer_csv=" +
-               fs::relative(fs::absolute(t.tyre.hammer_csv), folder).generic_string());
+  if (!t.tyre.hammer_csv.empty())  // a frequency list has no file to re-anchor
+    ov.push_back("modal.hammer_csv=" +
+                 fs::relative(fs::absolute(t.tyre.hammer_csv), folder).generic_string());
   IdentifiedConfig out;
   out.notes = t.mapping.notes;
   drop_recalibrated_keys(t, ov, out.notes);

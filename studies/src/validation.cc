@@ -99,7 +99,7 @@ std::string range_bound_side(double value, double min, double max, bool log_scal
 ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSet& set) {
   const std::vector<MeasuredRow>& measured = set.rows;
   const std::string& config_path = base.source;
-  const auto ident = modal::identify_modes(modal::read_hammer_csv(base.hammer_csv));
+  const auto ident = config_modes(base);
   const auto& vs = base.validation;
   ValidationReport rep;
   Calibration& cal = rep.calibration;

@@ -28,7 +28,8 @@ namespace fs = std::filesystem;
 
 const std::string kSource = MODALTYRE_SOURCE_DIR;
 const std::string kConfig = kSource + "/configs/sf350_2d_table3.yaml";
-// A sweep "file" placed (by name only) in configs/sweeps, so that base: ../sf350_2d_table3.yaml resolves.
+// A sweep "file" placed (by name only) in configs/sweeps, so that base: ../sf350_2d_table3.yaml
+// resolves.
 const std::string kSweepName = kSource + "/configs/sweeps/in_memory_test.yaml";
 
 SweepSpec spec_of(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
@@ -333,19 +334,22 @@ TEST(SweepConditions, ConditionsAreColumnsAndTakeTheBaseConfigsValuesWhenNotGive
   EXPECT_EQ(c.horizontal_force_N, 0);  // the base config's horizontal_force_N
   EXPECT_EQ(plan.cells(3), (std::vector<std::string>{"soil", "30", "unload", "260", "3000"}));
   // Without pressure_kPa the case takes the config's inflation pressure.
-  const auto plain = plan_sweep(spec_of(
-      "base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [3000]\n  tyre.inflation_pressure_kPa: [180]\n"));
+  const auto plain =
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [3000]\n  "
+                         "tyre.inflation_pressure_kPa: [180]\n"));
   EXPECT_EQ(plain.cases[0].conditions.pressure_kPa, 180);
 }
 
 TEST(SweepEffects, NoEffectAndDefaultConditionsGiveTheEffectFreeFootprints) {
-  // Conditions act only through effects: with none on, a pressure, a hold or a branch changes
-  // nothing, and the rows are the effect-free footprints.
+  // A hold or a branch acts only through effects: with none on, they change nothing, and the
+  // rows are the effect-free footprints. (A pressure other than the config's acts always, by
+  // the ring's pressure terms: tests/contact/carcass_source_test.cc.)
   const auto with_conditions =
       plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\n"
                          "set:\n  hold_s: 120\n  branch: unload\n"
-                         "grid:\n  pressure_kPa: [180, 280]\n  load_N: [2131, 8321]\n"));
-  const auto plain = plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [2131, 8321]\n"));
+                         "grid:\n  pressure_kPa: [230, 230]\n  load_N: [2131, 8321]\n"));
+  const auto plain =
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [2131, 8321]\n"));
   SweepOptions opt;
   opt.threads = 2;
   const auto rc = run_sweep(with_conditions, opt);
@@ -392,8 +396,8 @@ TEST(SweepEffects, TreadRelaxationCreepsMonotonicallyToTheRelaxedTread) {
     EXPECT_LT(s[i] - s[i - 1], s[i - 1] - s[i - 2]) << "creep must slow down (equal 15 s steps)";
   }
   // hold 0: the instantaneous tread, i.e. the effect-free footprint.
-  const auto off =
-      run_sweep(plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [4000]\n")), opt);
+  const auto off = run_sweep(
+      plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [4000]\n")), opt);
   EXPECT_NEAR(s[0], off.rows.at(0).sinking_mm, 1e-9 * s[0]);
   // Fully relaxed (exp(-10000 / 30) = 0): a tread 1.5 times softer, tread.modulus_MPa / 1.5.
   const double modulus_MPa = load_tyre_config(kConfig).tread.modulus_Pa * 1e-6;
@@ -482,15 +486,20 @@ TEST(SweepEffects, CsvReadsBackAsMeasuredDataThatThePredictorReproduces) {
 
 TEST(Sweep, BadSweepFilesNameFileLineAndKey) {
   // Unknown top-level key.
-  expect_input_error([] { spec_of("base: ../sf350_2d_table3.yaml\ngrids:\n  load_N: [1]\n"); }, 2, "grids");
+  expect_input_error([] { spec_of("base: ../sf350_2d_table3.yaml\ngrids:\n  load_N: [1]\n"); }, 2,
+                     "grids");
   // Missing base, and a base that does not exist.
   expect_input_error([] { spec_of("grid:\n  load_N: [1000]\noutput: x.csv\n"); }, 1, "base");
   expect_input_error([] { spec_of("base: nowhere.yaml\ngrid:\n  load_N: [1000]\n"); }, 1, "base");
   // Empty list, and a scalar where a list belongs.
   expect_input_error(
-      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa: []\n"); }, 4,
-      "tread.modulus_MPa");
-  expect_input_error([] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: 1000\n"); }, 3, "load_N");
+      [] {
+        spec_of(
+            "base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa: []\n");
+      },
+      4, "tread.modulus_MPa");
+  expect_input_error([] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: 1000\n"); }, 3,
+                     "load_N");
   // A non-positive load, on the line of the item.
   expect_input_error(
       [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N:\n    - 1000\n    - -5\n"); }, 5,
@@ -499,59 +508,73 @@ TEST(Sweep, BadSweepFilesNameFileLineAndKey) {
   expect_input_error(
       [] {
         spec_of(
-            "base: ../sf350_2d_table3.yaml\nset:\n  tread.modulus_MPa: 5\ngrid:\n  tread.modulus_MPa: [6]\n  "
+            "base: ../sf350_2d_table3.yaml\nset:\n  tread.modulus_MPa: 5\ngrid:\n  "
+            "tread.modulus_MPa: [6]\n  "
             "load_N: [1000]\n");
       },
       3, "tread.modulus_MPa");
   // No load anywhere.
   expect_input_error(
-      [] { plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  tread.modulus_MPa: [6]\n")); }, 3,
-      "load_N");
+      [] {
+        plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  tread.modulus_MPa: [6]\n"));
+      },
+      3, "load_N");
   // A grid key that is not a config key, and a value the config rejects: found while planning.
   expect_input_error(
       [] {
         plan_sweep(
-            spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_mpa: [6, 7]\n"));
+            spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_mpa: "
+                    "[6, 7]\n"));
       },
       4, "tread.modulus_mpa");
   expect_input_error(
       [] {
         plan_sweep(
-            spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  tread.modulus_MPa:\n    - 6\n "
+            spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  "
+                    "tread.modulus_MPa:\n    - 6\n "
                     "   - -1\n"));
       },
       6, "tread.modulus_MPa");
   expect_input_error(
       [] {
-        plan_sweep(
-            spec_of("base: ../sf350_2d_table3.yaml\nset:\n  solver.max_iter: 5\ngrid:\n  load_N: [1]\n"));
+        plan_sweep(spec_of(
+            "base: ../sf350_2d_table3.yaml\nset:\n  solver.max_iter: 5\ngrid:\n  load_N: [1]\n"));
       },
       3, "solver.max_iter");
   // Condition values outside their ranges or lists, on the line of the item.
   expect_input_error(
-      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  branch: [load, up]\n"); }, 4,
-      "grid.branch");
-  expect_input_error(
-      [] { spec_of("base: ../sf350_2d_table3.yaml\nset:\n  surface: sand\ngrid:\n  load_N: [1]\n"); }, 3,
-      "set.surface");
-  expect_input_error(
-      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  pressure_kPa: [2001]\n"); }, 4,
-      "grid.pressure_kPa");
+      [] {
+        spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  branch: [load, up]\n");
+      },
+      4, "grid.branch");
   expect_input_error(
       [] {
-        spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  speed_kmh:\n    - 10\n    - -1\n");
+        spec_of("base: ../sf350_2d_table3.yaml\nset:\n  surface: sand\ngrid:\n  load_N: [1]\n");
+      },
+      3, "set.surface");
+  expect_input_error(
+      [] {
+        spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  pressure_kPa: [2001]\n");
+      },
+      4, "grid.pressure_kPa");
+  expect_input_error(
+      [] {
+        spec_of(
+            "base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  speed_kmh:\n    - 10\n    - "
+            "-1\n");
       },
       6, "grid.speed_kmh");
   expect_input_error(
-      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  hold_s: [fast]\n"); }, 4,
-      "grid.hold_s");
+      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n  hold_s: [fast]\n"); },
+      4, "grid.hold_s");
   expect_input_error(
-      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n", {"branch=down"}); }, 0,
-      "branch", "--set");
+      [] { spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n", {"branch=down"}); },
+      0, "branch", "--set");
   // Command-line overrides are named as such.
   expect_input_error(
       [] {
-        plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n", {"tread.bogus=1"}));
+        plan_sweep(
+            spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [1000]\n", {"tread.bogus=1"}));
       },
       0, "tread.bogus", "--set");
 }

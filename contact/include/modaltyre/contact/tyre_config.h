@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/contact/carcass_source.h"
 #include "modaltyre/contact/effects.h"
 #include "modaltyre/contact/patch3d_settings.h"
 #include "modaltyre/core/config_tree.h"
@@ -86,7 +87,10 @@ struct TyreConfig {
   double section_width_m = 0;
   double aspect_ratio = 0;
   double rim_radius_m = 0;
-  std::string hammer_csv;  ///< resolved path of the hammer data
+  std::string hammer_csv;  ///< resolved path of the hammer data ("" with a frequency list)
+  /// The rest of modal:: a frequency list, the normalisation, the modal test's pressure and
+  /// boundary, the mass scale (carcass_source.h, docs/ring_model.md).
+  CarcassSettings carcass;
   bool extend_orders = true;
   double compliance_scale = 1.0;
   /// Bending term s2 of the dispersion extension [rad^2/s^2]; negative = as fitted to the

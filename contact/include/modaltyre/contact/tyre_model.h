@@ -72,6 +72,7 @@ TreadSprings tread_springs(const TreadParams& tread, double width_m, double leng
 struct TyreModel {
   TyreConfig config;
   modal::ModalBasis basis;
+  CarcassDerivation carcass;  ///< how the basis was scaled (ring fit, mass, tension, pressures)
   int units_around = 0;       ///< n, units on the whole circumference
   double dtheta_rad = 0;      ///< 2 pi / n
   double unit_length_m = 0;   ///< R0 dtheta

@@ -37,6 +37,7 @@ struct ModalTerm {
   double weight = 1;                      ///< 1/2 for a member of a measured pair, 1 otherwise
   std::complex<double> P_rr, P_rt, P_tt;  ///< c_r conj(c_r), c_r conj(c_t), c_t conj(c_t) [1/kg]
   bool measured = true;                   ///< false: from the dispersion extension
+  bool rotation = false;                  ///< the rigid rotation (order 0, tangential)
   int mode_id = 0;                        ///< hammer mode number, 0 for extension terms
 };
 

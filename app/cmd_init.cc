@@ -1,0 +1,161 @@
+// modaltyre init --size 195/60R14 --test-pressure-kPa P0 [--pressure-kPa P]
+//                (--frequencies F1,F2,... [--damping Z1,...] [--orders K1,...] | --hammer FILE)
+//                [--belt-mass-kg M] [--boundary free|rim-fixed] [--wheel-mass-kg M] ...
+//                [--output tyre.yaml] [--json]
+#include <iostream>
+#include <memory>
+
+#include "cli_support.h"
+#include "commands.h"
+#include "modaltyre/core/atomic_file.h"
+#include "modaltyre/core/errors.h"
+#include "modaltyre/init/init_tyre.h"
+
+namespace modaltyre::app {
+namespace {
+
+struct InitArgs {
+  init::InitInputs in;
+  std::vector<std::string> orders;
+  std::string output;
+  bool json = false;
+};
+
+// "2,3,r,4": orders >= 0, "r" for the rigid rotation mode (-1).
+std::vector<int> parse_orders(const std::vector<std::string>& words) {
+  std::vector<int> out;
+  for (const auto& w : words) {
+    if (w == "r" || w == "R") {
+      out.push_back(-1);
+      continue;
+    }
+    const bool digits =
+        !w.empty() && w.size() <= 3 && w.find_first_not_of("0123456789") == std::string::npos;
+    if (!digits) {
+      throw InputError({"--orders", 0, ""},
+                       "'" + w + "' is not an order (0-999) or r (the rotation mode)");
+    }
+    out.push_back(std::stoi(w));
+  }
+  return out;
+}
+
+nlohmann::json proposal_json(const modal::OrderProposal& p) {
+  return {{"orders", p.orders},
+          {"score", round_sig(p.score, 6)},
+          {"rms_rel_error", round_sig(p.rms_rel_error, 4)},
+          {"mass_per_length_kg_m", round_sig(p.mass_per_length_kg_m, 4)},
+          {"missing_orders", p.missing}};
+}
+
+nlohmann::json result_json(const init::InitResult& r, const std::string& output) {
+  nlohmann::json alternatives = nlohmann::json::array();
+  for (const auto& p : r.alternatives) alternatives.push_back(proposal_json(p));
+  nlohmann::json decisions = nlohmann::json::array();
+  for (const auto& d : r.decisions)
+    decisions.push_back({{"key", d.key}, {"value", d.value}, {"source", d.source}});
+  const auto& c = r.carcass;
+  nlohmann::json fit = {{"valid", c.fit.valid}};
+  if (c.fit.valid) {
+    fit["radial_foundation_rad2_s2"] = round_sig(c.fit.coefficients.radial_foundation);
+    fit["tension_rad2_s2"] = round_sig(c.fit.coefficients.tension);
+    fit["bending_rad2_s2"] = round_sig(c.fit.coefficients.bending);
+    fit["tangential_foundation_rad2_s2"] = round_sig(c.fit.coefficients.tangential_foundation);
+    fit["rms_rel_error"] = round_sig(c.fit.rms_rel_error, 4);
+  } else {
+    fit["reason"] = c.fit.reason;
+  }
+  nlohmann::json j = {{"orders", r.orders},
+                      {"orders_proposed", r.orders_proposed},
+                      {"alternatives", alternatives},
+                      {"mass_per_length_kg_m", round_sig(c.mass_per_length_kg_m, 6)},
+                      {"mass_source", c.mass_source},
+                      {"implied_tension_N", round_sig(c.tension_N, 6)},
+                      {"membrane_tension_N", round_sig(c.membrane_tension_N, 6)},
+                      {"ring_fit", fit},
+                      {"decisions", decisions},
+                      {"warnings", r.warnings}};
+  if (output.empty()) {
+    j["config"] = r.yaml;
+  } else {
+    j["output"] = output;
+  }
+  return j;
+}
+
+}  // namespace
+
+void register_init(CLI::App& app) {
+  auto a = std::make_shared<InitArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "init",
+      "Write a commented tyre config from a size designation, the modal test's and the "
+      "operating pressure and the modal data (frequencies, or a hammer CSV): modal masses from "
+      "the ring relations, orders proposed when not given (docs/ring_model.md). Nothing is "
+      "calibrated.");
+  auto& in = a->in;
+  cmd->add_option("--size", in.size, "size designation, e.g. 195/60R14")->required();
+  cmd->add_option("--test-pressure-kPa", in.test_pressure_kPa, "the modal test's pressure [kPa]")
+      ->required();
+  cmd->add_option("--pressure-kPa", in.pressure_kPa,
+                  "operating pressure [kPa] (default: the test's)");
+  cmd->add_option("--frequencies", in.frequencies_hz, "natural frequencies [Hz], e.g. 96,112,135")
+      ->delimiter(',');
+  cmd->add_option("--damping", in.damping_ratios, "damping ratios, one per frequency")
+      ->delimiter(',');
+  cmd->add_option("--orders", a->orders,
+                  "harmonic orders, one per frequency (r: the rotation mode); default: proposed")
+      ->delimiter(',');
+  cmd->add_option("--hammer", in.hammer_csv, "a hammer CSV (fit-modes format, e.g. ema --output)");
+  cmd->add_option("--belt-mass-kg", in.belt_mass_kg, "the belt's mass as its maker states it [kg]");
+  cmd->add_option("--boundary", in.boundary, "the modal test's wheel: free (default) or rim-fixed")
+      ->check(CLI::IsMember({"free", "rim-fixed"}));
+  cmd->add_option("--wheel-mass-kg", in.wheel_mass_kg, "the wheel's mass in a free test [kg]");
+  cmd->add_option("--belt-width-mm", in.belt_width_mm, "belt width [mm] (default: tread width)");
+  cmd->add_option("--tread-depth-mm", in.tread_depth_mm, "tread depth [mm] (default 8)");
+  cmd->add_option("--tread-width-mm", in.tread_width_mm,
+                  "tread width [mm] (default 0.77 x section)");
+  cmd->add_option("--fnomin", in.fnomin_N, "nominal load [N] for loads_N (default 4000)");
+  cmd->add_option("--name", in.name, "tyre.name (default: size and pressure)");
+  cmd->add_flag("--2d", in.two_d, "a 2D patch config (no footprint_3d:)");
+  cmd->add_option("--output", a->output, "write the config here (default: standard output)");
+  cmd->add_flag("--json", a->json, "print what init decided as JSON");
+  cmd->callback([a, cmd] {
+    if (cmd->count("--orders")) a->in.orders = parse_orders(a->orders);
+    CommandFiles files;  // the config must not replace the hammer data it names
+    files.input(a->in.hammer_csv, "--hammer");
+    if (cmd->count("--output")) files.output(a->output, "--output");
+    files.check();
+    a->in.output_path = a->output;
+    const init::InitResult r = init::init_tyre(a->in);
+    const nlohmann::json j = result_json(r, a->output);
+    check_finite(j);
+    if (!a->output.empty()) write_file_atomically(a->output, r.yaml);
+    if (a->json) {
+      print_json(j);
+      return;
+    }
+    for (const auto& w : r.warnings) std::cerr << "warning: " << w << "\n";
+    if (a->output.empty()) {
+      std::cout << r.yaml;
+      return;
+    }
+    std::cout << "wrote " << a->output << "\n  orders "
+              << (r.orders_proposed ? "(proposed)" : "(given)");
+    for (int k : r.orders) std::cout << " " << (k < 0 ? std::string("r") : std::to_string(k));
+    std::cout << "\n  modal mass " << fixed(r.carcass.mass_per_length_kg_m, 3) << " kg/m from the "
+              << r.carcass.mass_source << "; hoop tension " << fixed(r.carcass.tension_N, 0)
+              << " N (p b R = " << fixed(r.carcass.membrane_tension_N, 0) << " N)\n";
+    if (r.orders_proposed && r.alternatives.size() > 1) {
+      std::cout << "  alternatives (score, lower is better):\n";
+      for (const auto& p : r.alternatives) {
+        std::cout << "   ";
+        for (int k : p.orders) std::cout << " " << k;
+        std::cout << "   score " << fixed(p.score, 1) << ", RMS " << fixed(100 * p.rms_rel_error, 2)
+                  << " %, mu " << fixed(p.mass_per_length_kg_m, 2) << " kg/m\n";
+      }
+    }
+  });
+}
+
+}  // namespace modaltyre::app

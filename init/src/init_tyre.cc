@@ -1,0 +1,290 @@
+#include "modaltyre/init/init_tyre.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "modaltyre/contact/tyre_config.h"
+#include "modaltyre/core/config_tree.h"
+#include "modaltyre/core/errors.h"
+#include "modaltyre/modal/hammer_data.h"
+
+namespace modaltyre::init {
+namespace {
+
+// ---- stated defaults (each with its range and source; docs/ring_model.md section 6) ---------
+
+/// Tread (arc) width as a share of the section width: the usual passenger proportion
+/// (assumed, as the SF-350 default's 150 mm of 195 mm; 0.70-0.85 across passenger sizes).
+constexpr double kTreadWidthShare = 0.77;
+/// New passenger tread depth [mm]: 9/32-13/32 in = 7.1-10.3 mm (National Research Council,
+/// "Tires and Passenger Vehicle Fuel Economy", 2006, p. 18).
+constexpr double kTreadDepth_mm = 8.0;
+/// Tread compound static modulus [MPa]: the low end of 3-8 MPa (Shore A 60-70 by Gent's
+/// relation: 3.7-5.6 MPa), as the SF-350 default.
+constexpr double kTreadModulus_MPa = 3.0;
+/// Tread loss factor: a passenger compound's 0.1-0.2 at 10-100 Hz.
+constexpr double kTreadTanDelta = 0.15;
+/// Modal damping ratio when none is given: the median of seed 001 Table 2's radial modes
+/// (2.8-5.2 %); a static footprint does not depend on it.
+constexpr double kDampingRatio = 0.035;
+/// A passenger wheel's mass [kg] at 14 in and per inch of rim (steel and alloy wheels of
+/// 13-17 in weigh about 6-10 kg; assumed).
+constexpr double kWheelMass14_kg = 7.0, kWheelMassPerInch_kg = 0.7;
+/// FNOMIN of a passenger tyre [N] (MF-Tool's passenger default, e.g. the TNO 205/60R15).
+constexpr double kFnomin_N = 4000;
+/// The patch's candidate window as a multiple of the outer radius (the SF-350's 360 mm on
+/// 294.8 mm; the window must hold the longest footprint, 2a < 0.6 R0 up to 2 x FNOMIN).
+constexpr double kWindowPerRadius = 1.22;
+/// Order proposals whose scores differ by less than this are near-ties (Akaike's margin).
+constexpr double kNearTie = 2.0;
+
+std::string num(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.10g", v);
+  return b;
+}
+
+template <class T>
+std::string list(const std::vector<T>& v) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + num(double(v[i]));
+  return s + "]";
+}
+
+std::string yaml_quoted(const std::string& text) {
+  YAML::Emitter e;
+  e << YAML::DoubleQuoted << text;
+  return e.c_str();
+}
+
+void require_positive(double v, const std::string& option, const std::string& what) {
+  if (!(v > 0) || !std::isfinite(v)) throw InputError({option, 0, ""}, what + " must be > 0");
+}
+
+}  // namespace
+
+InitResult init_tyre(const InitInputs& in) {
+  InitResult r;
+  const TyreSize size = parse_tyre_size(in.size);
+  require_positive(in.test_pressure_kPa, "--test-pressure-kPa", "the modal test's pressure");
+  if (in.test_pressure_kPa < 10 || in.test_pressure_kPa > 2000)
+    throw InputError({"--test-pressure-kPa", 0, ""}, "outside 10-2000 kPa");
+  const double p_kPa = in.pressure_kPa > 0 ? in.pressure_kPa : in.test_pressure_kPa;
+  if (p_kPa < 10 || p_kPa > 2000)
+    throw InputError({"--pressure-kPa", 0, ""}, "outside 10-2000 kPa");
+  const bool list_given = !in.frequencies_hz.empty();
+  if (list_given == !in.hammer_csv.empty()) {
+    throw InputError({"--frequencies", 0, ""},
+                     "give the modal data as exactly one of --frequencies F1,F2,... or --hammer "
+                     "FILE");
+  }
+  if (in.boundary != "free" && in.boundary != "rim-fixed")
+    throw InputError({"--boundary", 0, ""}, "'" + in.boundary + "' is not free or rim-fixed");
+
+  const double R0_mm = size.outer_radius_mm();
+  const double tread_w = in.tread_width_mm > 0
+                             ? in.tread_width_mm
+                             : std::round(kTreadWidthShare * size.section_width_mm);
+  const double belt_w = in.belt_width_mm > 0 ? in.belt_width_mm : tread_w;
+  const double depth = in.tread_depth_mm > 0 ? in.tread_depth_mm : kTreadDepth_mm;
+  const double wheel = in.wheel_mass_kg > 0
+                           ? in.wheel_mass_kg
+                           : kWheelMass14_kg + kWheelMassPerInch_kg * (size.rim_diameter_in - 14);
+  const double fnomin = in.fnomin_N > 0 ? in.fnomin_N : kFnomin_N;
+  auto decide = [&](const std::string& key, const std::string& value, const std::string& source) {
+    r.decisions.push_back({key, value, source});
+  };
+
+  // ---- the modal data: orders stated, or proposed from the list ----------------------------
+  std::vector<double> freqs;
+  std::vector<double> damping = in.damping_ratios;
+  if (list_given) {
+    freqs = in.frequencies_hz;
+    for (double f : freqs) require_positive(f, "--frequencies", "every frequency");
+    if (!damping.empty() && damping.size() != freqs.size())
+      throw InputError({"--damping", 0, ""}, "one damping ratio per frequency (or none)");
+    for (double z : damping)
+      if (!(z >= 0 && z < 1))
+        throw InputError({"--damping", 0, ""}, "damping ratios must be in [0, 1)");
+    if (!in.orders.empty() && in.orders.size() != freqs.size())
+      throw InputError({"--orders", 0, ""}, "one order per frequency (" +
+                                                std::to_string(freqs.size()) + " frequencies, " +
+                                                std::to_string(in.orders.size()) + " orders)");
+    if (in.orders.empty()) {
+      modal::OrderProposalOptions o;
+      o.pressure_Pa = in.test_pressure_kPa * 1e3;
+      o.belt_width_m = belt_w * 1e-3;
+      o.radius_m = R0_mm * 1e-3;
+      // A free test's order 1 is scored at the held wheel; a rim-fixed one as it is.
+      o.order1_in_fit = in.boundary == "rim-fixed";
+      if (in.boundary == "free") o.wheel_mass_kg = wheel;
+      r.alternatives = modal::propose_orders(freqs, o);
+      if (r.alternatives.empty())
+        throw InputError({"--frequencies", 0, ""},
+                         "at least three frequencies are needed to propose orders; state --orders");
+      r.orders = r.alternatives.front().orders;
+      r.orders_proposed = true;
+      int ties = 0;
+      for (std::size_t k = 1; k < r.alternatives.size(); ++k)
+        ties += r.alternatives[k].score < r.alternatives.front().score + kNearTie;
+      if (ties > 0) {
+        r.warnings.push_back("the orders were proposed, and " + std::to_string(ties) +
+                             " other assignment(s) fit within " + num(kNearTie) +
+                             " of the best score (init --json lists them): the frequencies "
+                             "alone cannot decide; state --orders if the test's shapes say");
+      }
+    } else {
+      r.orders = in.orders;
+    }
+  }
+
+  // ---- the config text -------------------------------------------------------------------
+  std::ostringstream y;
+  const std::string name = in.name.empty() ? size.text + " at " + num(p_kPa) + " kPa" : in.name;
+  y << "# " << name
+    << ": written by `modaltyre init` (docs/ring_model.md). No value is calibrated;\n"
+    << "# each says where it comes from. A declared calibration on measured rows can be added in "
+       "a\n"
+    << "# validation: section (README, step 4).\n";
+  y << "tyre:\n  name: " << yaml_quoted(name) << "\n";
+  y << "  # " << size.text << ": rim " << num(size.rim_diameter_in)
+    << " in = " << num(2 * size.rim_radius_mm()) << " mm, section height " << num(size.aspect_ratio)
+    << " x " << num(size.section_width_mm) << " mm\n";
+  y << "  outer_radius_mm: " << num(R0_mm) << "\n";
+  y << "  inflation_pressure_kPa: " << num(p_kPa) << "   # operating pressure (input)\n";
+  y << "  section_width_mm: " << num(size.section_width_mm)
+    << "\n  aspect_ratio: " << num(size.aspect_ratio)
+    << "\n  rim_radius_mm: " << num(size.rim_radius_mm()) << "\n";
+  decide("tyre.outer_radius_mm", num(R0_mm), "size designation");
+  decide("tyre.inflation_pressure_kPa", num(p_kPa),
+         in.pressure_kPa > 0 ? "input" : "the test pressure (input)");
+
+  y << "modal:\n";
+  if (list_given) {
+    if (damping.empty()) damping.assign(freqs.size(), kDampingRatio);
+    std::vector<double> f_list, z_list;
+    std::vector<int> o_list;
+    double rot_f = 0, rot_z = 0;
+    for (std::size_t i = 0; i < freqs.size(); ++i) {
+      if (r.orders[i] < 0) {
+        if (rot_f > 0) throw InputError({"--orders", 0, ""}, "at most one rotation mode (r)");
+        rot_f = freqs[i], rot_z = damping[i];
+        continue;
+      }
+      f_list.push_back(freqs[i]), z_list.push_back(damping[i]), o_list.push_back(r.orders[i]);
+    }
+    y << "  # Frequencies: input. Orders: "
+      << (r.orders_proposed
+              ? "proposed from the ring dispersion (init --json lists the alternatives)"
+              : "input")
+      << ".\n";
+    y << "  frequencies_hz: " << list(f_list) << "\n  orders: " << list(o_list) << "\n";
+    y << "  # Damping: "
+      << (in.damping_ratios.empty() ? "not given; 0.035, the median of seed 001 Table 2 (2.8-5.2 "
+                                      "%), acts only in the transient"
+                                    : "input")
+      << ".\n";
+    y << "  damping_ratios: " << list(z_list) << "\n";
+    if (rot_f > 0)
+      y << "  rotation_frequency_hz: " << num(rot_f) << "\n  rotation_damping_ratio: " << num(rot_z)
+        << "\n";
+    decide("modal.orders", list(o_list),
+           r.orders_proposed ? "proposed (ring dispersion)" : "input");
+  } else {
+    std::string path = in.hammer_csv;
+    if (!in.output_path.empty()) {
+      std::error_code ec;
+      const auto folder = std::filesystem::absolute(in.output_path, ec).parent_path();
+      const auto rel =
+          std::filesystem::relative(std::filesystem::absolute(in.hammer_csv, ec), folder, ec);
+      if (!ec && !rel.empty()) path = rel.generic_string();
+    }
+    y << "  # Hammer data (input); their orders from the shapes (fit-modes), their scale from the "
+         "ring:\n"
+      << "  hammer_csv: " << yaml_quoted(path) << "\n  normalisation: ring\n";
+  }
+  y << "  # The modal test's pressure and boundary: properties of the data (input).\n";
+  y << "  test_pressure_kPa: " << num(in.test_pressure_kPa) << "\n  boundary: " << in.boundary
+    << "\n";
+  if (in.boundary == "free") {
+    y << "  # The wheel moves with the free test's order-1 mode (docs/ring_model.md section 5): "
+      << (in.wheel_mass_kg > 0 ? "input" : "assumed, 6-10 kg for 13-17 in passenger wheels")
+      << ".\n";
+    y << "  wheel_mass_kg: " << num(wheel) << "\n";
+    decide("modal.wheel_mass_kg", num(wheel),
+           in.wheel_mass_kg > 0 ? "input" : "assumed (13-17 in wheels: 6-10 kg)");
+  }
+  y << "  # The hoop tension T = p b R over the belt width fixes the modal mass: "
+    << (in.belt_width_mm > 0 ? "input" : "the tread width (the belt spans the tread; assumed)")
+    << ".\n";
+  y << "  belt_width_mm: " << num(belt_w) << "\n";
+  decide("modal.belt_width_mm", num(belt_w),
+         in.belt_width_mm > 0 ? "input" : "= tread width (assumed)");
+  if (in.belt_mass_kg > 0) {
+    y << "  # The maker's belt mass (input): checks the tension's mass, and is the order-1 mass.\n";
+    y << "  belt_mass_kg: " << num(in.belt_mass_kg) << "\n";
+  }
+  y << "  # Unmeasured orders up to the mesh's Nyquist order from the ring fit.\n  extend_orders: "
+       "true\n";
+
+  y << "tread:\n";
+  y << "  # Compound static modulus: the low end of a passenger tread compound's 3-8 MPa "
+       "(stated).\n";
+  y << "  modulus_MPa: " << num(kTreadModulus_MPa) << "\n  tan_delta: " << num(kTreadTanDelta)
+    << "\n";
+  y << "  # "
+    << (in.tread_depth_mm > 0 ? "Input" : "A new passenger tread's depth, 7.1-10.3 mm (NRC 2006)")
+    << ".\n";
+  y << "  thickness_mm: " << num(depth) << "\n";
+  y << "  # "
+    << (in.tread_width_mm > 0 ? "Input"
+                              : "77 % of the section width (usual passenger proportion, assumed)")
+    << ".\n";
+  y << "  contact_width_mm: " << num(tread_w) << "\n";
+  decide("tread.thickness_mm", num(depth),
+         in.tread_depth_mm > 0 ? "input" : "new passenger tread (NRC 2006)");
+  decide("tread.contact_width_mm", num(tread_w),
+         in.tread_width_mm > 0 ? "input" : "0.77 x section width (assumed)");
+
+  const double window =
+      std::min(std::round(kWindowPerRadius * R0_mm), std::floor(0.95 * M_PI * R0_mm));
+  y << "contact:\n  unit_length_mm: 0.5\n  window_mm: " << num(window) << "\n";
+  std::vector<double> loads;
+  for (double s : {0.5, 0.75, 1.0, 1.25, 1.5}) loads.push_back(std::round(s * fnomin));
+  y << "# 0.5-1.5 x FNOMIN " << num(fnomin) << " N ("
+    << (in.fnomin_N > 0 ? "input" : "MF-Tool's passenger default") << ").\n";
+  y << "loads_N: " << list(loads) << "\n";
+  if (!in.two_d) {
+    y << "footprint_3d:\n  tread_width_mm: " << num(tread_w) << "\n  lateral_cell_mm: 2.5\n";
+    y << "  # No section drawing: the tread face is taken flat across the tread width (multi-arc\n"
+      << "  # passenger profiles are 'very flat' near the centre); state the measured contour\n"
+      << "  # (crown: shape: contour) or radius when you have it.\n";
+    y << "  crown:\n    shape: flat\n";
+    decide("footprint_3d.crown.shape", "flat", "no section drawing (stated)");
+  }
+  r.yaml = y.str();
+
+  // ---- build once: what is written runs ----------------------------------------------------
+  const std::string origin = in.output_path.empty() ? std::string("init") : in.output_path;
+  const ConfigTree tree = ConfigTree::from_string(r.yaml, origin);
+  contact::TyreConfig config = contact::read_tyre_config(tree);
+  if (!list_given) config.hammer_csv = std::filesystem::absolute(in.hammer_csv).string();
+  const contact::TyreModel model = contact::build_tyre_model(config);
+  r.carcass = model.carcass;
+  r.warnings.insert(r.warnings.end(), model.basis.warnings.begin(), model.basis.warnings.end());
+  if (!list_given) {
+    for (const auto& m : contact::config_modes(config).modes) {
+      if (m.kind == modal::ModeKind::rotation)
+        r.orders.push_back(-1);
+      else
+        r.orders.push_back(m.order());
+    }
+  }
+  return r;
+}
+
+}  // namespace modaltyre::init
