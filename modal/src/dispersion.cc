@@ -2,8 +2,9 @@
 
 #include <Eigen/Dense>
 #include <cmath>
-#include <limits>
 #include <set>
+
+#include "small_nnls.h"
 
 namespace modaltyre::modal {
 
@@ -11,7 +12,9 @@ namespace {
 constexpr double kTwoPi = 6.28318530717958647692;
 }
 
-double DispersionFit::freq_hz(int k) const { return std::sqrt(std::max(omega_sq(k), 0.0)) / kTwoPi; }
+double DispersionFit::freq_hz(int k) const {
+  return std::sqrt(std::max(omega_sq(k), 0.0)) / kTwoPi;
+}
 
 DispersionFit fit_dispersion(const std::vector<int>& orders, const std::vector<double>& freq_hz) {
   DispersionFit fit;
@@ -41,27 +44,8 @@ DispersionFit fit_dispersion(const std::vector<int>& orders, const std::vector<d
     X(i, 2) = k2 * k2 / w2[i];
     y(i) = 1.0;
   }
-  // Non-negative least squares with three unknowns: try every support set, keep the best
-  // feasible one (exact NNLS for this size).
-  double best = std::numeric_limits<double>::infinity();
-  Eigen::Vector3d best_s = Eigen::Vector3d::Zero();
-  for (int mask = 1; mask < 8; ++mask) {
-    std::vector<int> cols;
-    for (int c = 0; c < 3; ++c)
-      if (mask & (1 << c)) cols.push_back(c);
-    if (static_cast<int>(cols.size()) > fit.orders_used) continue;
-    Eigen::MatrixXd Xs(m, cols.size());
-    for (std::size_t j = 0; j < cols.size(); ++j) Xs.col(j) = X.col(cols[j]);
-    const Eigen::VectorXd s = Xs.colPivHouseholderQr().solve(y);
-    if ((s.array() < 0).any()) continue;
-    const double r = (Xs * s - y).squaredNorm();
-    if (r < best) {
-      best = r;
-      best_s.setZero();
-      for (std::size_t j = 0; j < cols.size(); ++j) best_s(cols[j]) = s(j);
-    }
-  }
-  if (!std::isfinite(best)) {
+  Eigen::VectorXd best_s;
+  if (!detail::small_nnls(X, y, fit.orders_used, best_s)) {
     fit.reason = "no non-negative dispersion fit exists for these frequencies";
     return fit;
   }

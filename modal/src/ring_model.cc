@@ -2,10 +2,10 @@
 
 #include <Eigen/Dense>
 #include <cmath>
-#include <limits>
 #include <set>
 
 #include "modaltyre/core/errors.h"
+#include "small_nnls.h"
 
 namespace modaltyre::modal {
 namespace {
@@ -55,26 +55,8 @@ RingFit fit_ring(const std::vector<int>& orders, const std::vector<double>& freq
   Eigen::MatrixXd X(m, kCoefficients);
   for (int i = 0; i < m; ++i) X.row(i) = basis_row(ns[i]).transpose() / y[i];
   const Eigen::VectorXd ones = Eigen::VectorXd::Ones(m);
-  // Exact non-negative least squares for four unknowns: every support, the best feasible one.
-  double best = std::numeric_limits<double>::infinity();
-  Eigen::Vector4d best_c = Eigen::Vector4d::Zero();
-  for (int mask = 1; mask < (1 << kCoefficients); ++mask) {
-    std::vector<int> cols;
-    for (int c = 0; c < kCoefficients; ++c)
-      if (mask & (1 << c)) cols.push_back(c);
-    if (static_cast<int>(cols.size()) > fit.orders_used) continue;
-    Eigen::MatrixXd Xs(m, cols.size());
-    for (std::size_t j = 0; j < cols.size(); ++j) Xs.col(j) = X.col(cols[j]);
-    const Eigen::VectorXd s = Xs.colPivHouseholderQr().solve(ones);
-    if (!s.allFinite() || (s.array() < 0).any()) continue;
-    const double r = (Xs * s - ones).squaredNorm();
-    if (r < best * (1 - 1e-12)) {
-      best = r;
-      best_c.setZero();
-      for (std::size_t j = 0; j < cols.size(); ++j) best_c(cols[j]) = s(j);
-    }
-  }
-  if (!std::isfinite(best)) {
+  Eigen::VectorXd best_c;
+  if (!detail::small_nnls(X, ones, fit.orders_used, best_c)) {
     fit.reason = "no non-negative ring fit exists for these frequencies";
     return fit;
   }
