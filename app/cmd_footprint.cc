@@ -1,7 +1,9 @@
 // modaltyre footprint CONFIG [--load N]... [--set key=value]... [--json] [--plot FILE]
 //                    [--map-csv FILE]
+#include <algorithm>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli_support.h"
 #include "commands.h"
@@ -10,9 +12,12 @@
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/progress.h"
 #include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/footprint_json.h"
+#include "modaltyre/report/uncertainty_json.h"
 #include "modaltyre/report/validation_json.h"
+#include "modaltyre/uncertainty/propagation.h"
 
 namespace modaltyre::app {
 
@@ -28,6 +33,9 @@ struct FootprintArgs {
   bool json = false;
   std::string plot;
   std::string map_csv;
+  bool uncertainty = false;
+  std::string uncertainty_method = "auto";
+  int samples = 200;
 };
 
 }  // namespace
@@ -57,6 +65,14 @@ void register_footprint(CLI::App& app) {
                   "draw the pressure distributions (.svg or .png); with footprint_3d: the "
                   "footprint image of each load (pressure map, contour) and the centre-line "
                   "pressure");
+  cmd->add_flag("--uncertainty", a->uncertainty,
+                "propagate the inputs' uncertainty (the hammer shapes' noise, stated std) to a "
+                "band on every output (docs/uncertainty.md)");
+  cmd->add_option("--uncertainty-method", a->uncertainty_method,
+                  "linear, sampled or auto (default: linear unless its curvature check fails)")
+      ->check(CLI::IsMember({"linear", "sampled", "auto"}));
+  cmd->add_option("--samples", a->samples, "Monte Carlo samples of the sampled method (20-100000)")
+      ->check(CLI::Range(20, 100000));
   cmd->add_option("--map-csv", a->map_csv,
                   "write the pressure maps as CSV load_N,x_mm,y_mm,pressure_kPa (footprint_3d:)");
   cmd->callback([a, cmd] {
@@ -89,12 +105,35 @@ void register_footprint(CLI::App& app) {
       }
     }
     if (!a->map_csv.empty()) write_map_csv(results, a->map_csv);
+    std::optional<uncertainty::PropagationResult> bands;
+    if (a->uncertainty) {
+      uncertainty::PropagationOptions uo;
+      uo.method = a->uncertainty_method == "linear"    ? uncertainty::Method::linear
+                  : a->uncertainty_method == "sampled" ? uncertainty::Method::sampled
+                                                       : uncertainty::Method::automatic;
+      uo.samples = a->samples;
+      std::unique_ptr<ProgressBar> bar;  // one bar per phase: differences, then samples
+      int phase_total = 0, shown_done = 0;
+      uo.progress = [&](int done, int total) {
+        if (!bar || total != phase_total) {
+          if (bar) bar->finish();
+          bar = std::make_unique<ProgressBar>(static_cast<std::size_t>(total), "uncertainty");
+          phase_total = total, shown_done = 0;
+        }
+        if (done > shown_done) bar->tick(static_cast<std::size_t>(done - shown_done));
+        shown_done = std::max(shown_done, done);
+      };
+      bands = uncertainty::propagate(config, contact::config_modes(config), cases, uo);
+      if (bar) bar->finish();
+    }
     if (a->json) {
       auto j = report::footprint_json(model, results);
       j["conditions"] = report::footprint_conditions_json(shown);
+      if (bands) report::add_uncertainty_json(j, *bands);
       print_json(j);
     } else {
       print_footprint_table(model, results, shown);
+      if (bands) print_uncertainty_table(*bands);
     }
   });
 }

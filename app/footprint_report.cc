@@ -1,5 +1,6 @@
 #include "footprint_report.h"
 
+#include <cstdio>
 #include <iostream>
 
 #include "cli_support.h"
@@ -8,6 +9,7 @@
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/footprint_json.h"
+#include "modaltyre/report/uncertainty_json.h"
 
 namespace modaltyre::app {
 
@@ -68,6 +70,29 @@ void print_footprint_table(const contact::TyreModel& model,
                   r.equilibrium_residual, r.complementarity_residual);
     std::cout << line;
   }
+}
+
+void print_uncertainty_table(const uncertainty::PropagationResult& r) {
+  std::cout << "\nuncertainty (" << r.method << ": " << r.check << "), value +- 2 sigma:\n";
+  std::cout << "  load_N  sinking_mm        length_mm        width_mm         peak_kPa     "
+               "    mean_kPa\n";
+  const int plain[] = {2, 1, 1, 0, 0};
+  for (const auto& c : r.cases) {
+    std::printf("%8.0f", c.load_N);
+    for (std::size_t q = 0; q < c.bands.size(); ++q) {
+      std::printf("  %-15s",
+                  report::plus_minus(c.bands[q].value, 2 * c.bands[q].std, plain[q]).c_str());
+    }
+    std::printf("\n");
+  }
+  std::cout << "inputs (relative standard deviation, source):";
+  if (r.inputs.empty()) std::cout << " none";
+  std::cout << "\n";
+  for (const auto& e : r.inputs) {
+    std::printf("  %-28s %6.2f %%  %s\n", e.input.name.c_str(), 100 * e.input.rel_std,
+                e.input.source.c_str());
+  }
+  std::fflush(stdout);
 }
 
 void plot_pressures(const std::vector<contact::Prediction>& predictions,

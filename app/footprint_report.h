@@ -6,6 +6,7 @@
 
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/contact/predictor.h"
+#include "modaltyre/uncertainty/propagation.h"
 
 namespace modaltyre::app {
 
@@ -16,6 +17,9 @@ void warn_outside_validity(const contact::TyreConfig& config,
 void print_footprint_table(const contact::TyreModel& model,
                            const std::vector<contact::Prediction>& cases,
                            const contact::OperatingConditions& conditions);
+/// The bands of `footprint --uncertainty`: each output as value +- 2 sigma to the digits the
+/// band supports, the method and its check, the inputs.
+void print_uncertainty_table(const uncertainty::PropagationResult& r);
 void plot_pressures(const std::vector<contact::Prediction>& cases,
                     const contact::TyreConfig& config, const std::string& path);
 

@@ -115,6 +115,8 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
 
   const ConfigSection modal = root.section("modal");
   c.carcass = read_carcass_settings(modal);
+  c.uncertainty.frequency_rel_std = modal.number("frequency_std_percent", 0, 0, 50) / 100;
+  c.uncertainty.belt_width_rel_std = modal.number("belt_width_std_percent", 0, 0, 50) / 100;
   if (!c.carcass.frequency_list()) {
     if (!modal.has("hammer_csv")) {
       modal.fail("hammer_csv",
@@ -141,6 +143,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   c.tread.thickness_m = scalar(tread, "tread", "thickness_mm", 8) * 1e-3;
   c.tread.width_m = scalar(tread, "tread", "contact_width_mm", 140) * 1e-3;
   c.tread.poisson = tread.number("poisson_ratio", c.tread.poisson, 0.0, 0.5);
+  c.uncertainty.tread_modulus_rel_std = tread.number("modulus_std_percent", 0, 0, 50) / 100;
 
   const ConfigSection mesh = root.section("contact");
   c.mesh.unit_length_m = mesh.number("unit_length_mm", 0.5, 0.01, 50) * 1e-3;

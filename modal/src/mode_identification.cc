@@ -31,14 +31,36 @@ std::vector<int> alias_candidates(int k, int N, int at_least) {
   std::vector<int> out;
   for (int j = 0; j <= 4; ++j) {
     for (int c : {j * N - k, j * N + k}) {
-      if (c >= std::max(at_least, 0) && c != k &&
-          std::find(out.begin(), out.end(), c) == out.end())
+      if (c >= std::max(at_least, 0) && c != k && std::find(out.begin(), out.end(), c) == out.end())
         out.push_back(c);
     }
   }
   if (k == N / 2 && N % 2 == 0 && k >= at_least) out.insert(out.begin(), k);
   std::sort(out.begin(), out.end());
   return out;
+}
+
+// The one-harmonic model's residual as the shapes' noise and the covariance of its
+// coefficient (orthogonal columns at equally spaced points: |cos|^2 = N/2, N at order 0 and N/2).
+void set_shape_noise(IdentifiedMode& id, int N) {
+  const int k = id.apparent_order;
+  const bool single = k == 0 || (N % 2 == 0 && k == N / 2);
+  const int p = single ? 1 : 2;
+  if (N <= p) return;
+  const double norm2 = single ? N : 0.5 * N;
+  auto noise = [&](const HarmonicSeries& h) {
+    const double residual = std::max(h.energy - h.order_energy(k), 0.0);
+    return std::sqrt(residual / (N - p));
+  };
+  id.radial_noise = noise(id.radial);
+  id.tangential_noise = noise(id.tangential);
+  id.c_radial_std = id.radial_noise / std::sqrt(norm2);
+  id.c_tangential_std = id.tangential_noise / std::sqrt(norm2);
+  // |c|^2 = A^2 + B^2: var = 4 |c|^2 var(A) for two components (4 A^2 var(A) for one).
+  const double amp =
+      std::abs(id.kind == ModeKind::rotation ? id.tangential.coefficient(0) : id.c_radial);
+  const double std_c = id.kind == ModeKind::rotation ? id.c_tangential_std : id.c_radial_std;
+  id.amplitude2_rel_std = amp > 0 ? 2 * std_c / amp : 0;
 }
 
 }  // namespace
@@ -57,8 +79,7 @@ ModeIdentification identify_modes(const HammerData& data, const IdentificationOp
     id.radial = fit_harmonics(m.angle_rad, m.radial);
     id.tangential = fit_harmonics(m.angle_rad, m.tangential);
     const double r_rms = rms(m.radial), t_rms = rms(m.tangential);
-    if (r_rms < opts.rotation_radial_ratio * t_rms &&
-        id.tangential.r2(0) >= opts.rotation_min_r2) {
+    if (r_rms < opts.rotation_radial_ratio * t_rms && id.tangential.r2(0) >= opts.rotation_min_r2) {
       id.kind = ModeKind::rotation;
       id.apparent_order = 0;
       id.r2 = id.tangential.r2(0);
@@ -76,6 +97,7 @@ ModeIdentification identify_modes(const HammerData& data, const IdentificationOp
     }
     id.c_radial = id.radial.coefficient(id.apparent_order);
     id.c_tangential = id.tangential.coefficient(id.apparent_order);
+    set_shape_noise(id, N);
     out.modes.push_back(std::move(id));
   }
 

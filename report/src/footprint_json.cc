@@ -47,18 +47,6 @@ std::vector<std::string> enabled_effects(const contact::EffectsConfig& effects) 
   return names;
 }
 
-// Off the centre line with a lateral belt, the 3D map's peak exceeds the units' one.
-double peak_pressure_Pa(const contact::Prediction& p) {
-  double peak = 0;
-  for (const auto& u : p.footprint.units) peak = std::max(peak, u.pressure_Pa);
-  if (p.patch3d) {
-    const auto& m = *p.patch3d;
-    for (int i = 0; i < m.sections; ++i)
-      for (int j = 0; j < m.columns; ++j) peak = std::max(peak, m.pressure_Pa(i, j));
-  }
-  return peak;
-}
-
 void require_converged(const std::vector<contact::Prediction>& cases) {
   for (const auto& p : cases) {
     if (!p.ok()) {
@@ -81,14 +69,6 @@ nlohmann::json pressure_map_json(const contact::Patch3dResult& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& row : map.pressure_kPa) rows.push_back(rounded(row));
   return {{"x_mm", rounded(map.x_mm)}, {"y_mm", rounded(map.y_mm)}, {"pressure_kPa", rows}};
-}
-
-double cell_area_in_contact_m2(const contact::Patch3dResult& r) {
-  double area = 0;
-  for (int i = 0; i < r.sections; ++i)
-    for (int j = 0; j < r.columns; ++j)
-      if (r.cell_force(i, j) > 0) area += r.dx_m[i] * r.dy_m;
-  return area;
 }
 
 nlohmann::json footprint_json(const contact::TyreModel& model,

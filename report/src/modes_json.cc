@@ -32,7 +32,14 @@ nlohmann::json modes_json(const modal::ModeIdentification& id) {
         {"phase_deg", m.apparent_order > 0
                           ? round_sig(-std::arg(m.c_radial) * 180 / M_PI / m.apparent_order, 6)
                           : 0.0},
-        {"note", m.note}};
+        {"note", m.note},
+        // The one-harmonic model's residual as noise, and the coefficient's covariance
+        // (docs/uncertainty.md section 1): Re c and Im c independent, each with this std.
+        {"radial_noise", round_sig(m.radial_noise, 6)},
+        {"tangential_noise", round_sig(m.tangential_noise, 6)},
+        {"coefficient_std", round_sig(m.c_radial_std, 6)},
+        {"tangential_coefficient_std", round_sig(m.c_tangential_std, 6)},
+        {"amplitude2_rel_std", round_sig(m.amplitude2_rel_std, 6)}};
     if (m.aliased) {
       j["alias_candidates"] = m.alias_candidates;
       j["likely_order"] = m.likely_order >= 0 ? nlohmann::json(m.likely_order) : nlohmann::json();

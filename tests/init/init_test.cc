@@ -66,7 +66,9 @@ TEST(Init, Sf350FromTable2Runs) {
   ASSERT_TRUE(p.ok()) << p.message;
   EXPECT_GT(p.sinking_mm, 0);
   for (const auto& t : m.basis.terms) {
-    if (t.measured && t.order == 1) EXPECT_LT(t.omega_rad_s / (2 * M_PI), 112.0);
+    if (t.measured && t.order == 1) {
+      EXPECT_LT(t.omega_rad_s / (2 * M_PI), 112.0);
+    }
   }
 }
 

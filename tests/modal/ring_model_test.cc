@@ -128,7 +128,9 @@ TEST(RingModel, RingBasisStaticComplianceIsIndependentOfTheMassSplit) {
   }
   // The extension's damping is the measured orders' mean.
   for (const auto& t : basis.terms) {
-    if (!t.measured) EXPECT_DOUBLE_EQ(t.damping_ratio, 0.03);
+    if (!t.measured) {
+      EXPECT_DOUBLE_EQ(t.damping_ratio, 0.03);
+    }
   }
 }
 

@@ -79,6 +79,14 @@ constexpr double kMaxLoad_N = 1e7;
 /// SF-350); a near-zero load ramps up in a denormal time that the integrator refuses.
 constexpr double kMinTransientLoad_N = 10;
 
+/// Uncertainties a config states where no data give them (docs/uncertainty.md): relative
+/// standard deviations, 0 = not stated.
+struct StatedUncertainty {
+  double frequency_rel_std = 0;      ///< modal.frequency_std_percent / 100, every mode
+  double tread_modulus_rel_std = 0;  ///< tread.modulus_std_percent / 100
+  double belt_width_rel_std = 0;     ///< modal.belt_width_std_percent / 100 (ring mass)
+};
+
 struct TyreConfig {
   std::string source;  ///< config file path
   std::string name = "tyre";
@@ -93,6 +101,7 @@ struct TyreConfig {
   /// The rest of modal:: a frequency list, the normalisation, the modal test's pressure and
   /// boundary, the mass scale (carcass_source.h, docs/ring_model.md).
   CarcassSettings carcass;
+  StatedUncertainty uncertainty;
   bool extend_orders = true;
   double compliance_scale = 1.0;
   /// Bending term s2 of the dispersion extension [rad^2/s^2]; negative = as fitted to the

@@ -52,6 +52,16 @@ struct IdentifiedMode {
   HarmonicSeries tangential;
   std::complex<double> c_radial;      ///< radial shape = Re(c e^{ik theta}) [kg^-1/2]
   std::complex<double> c_tangential;  ///< tangential shape at the same order [kg^-1/2]
+  /// Measurement noise of the shape values from the residual of the one-harmonic model (a ring
+  /// mode is one harmonic; everything else at the points is noise): sigma^2 = residual energy /
+  /// (N - p), p = 2 parameters (A_k, B_k), 1 at order 0 and N/2 [kg^-1/2]. 0 for N <= p.
+  double radial_noise = 0, tangential_noise = 0;
+  /// Standard deviation of each of Re c and Im c: sigma / sqrt(N/2) (sigma / sqrt(N) at order 0
+  /// and N/2), the covariance of the orthogonal least-squares fit [kg^-1/2].
+  double c_radial_std = 0, c_tangential_std = 0;
+  /// Relative standard deviation of the modal amplitude |c_r|^2 (the mode's compliance scale),
+  /// linearised: std(|c|^2) = 2 |c| std(c), relative 2 std(c) / |c| (docs/uncertainty.md).
+  double amplitude2_rel_std = 0;
   std::string note;
 
   /// Order to use physically: apparent order when resolved, else likely_order.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "modaltyre/contact/effects.h"
+#include "modaltyre/contact/footprint_measures.h"
 #include "modaltyre/contact/predictor.h"
 
 namespace modaltyre::report {
@@ -32,14 +33,9 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
 /// the sections in contact and two either side, every column of the tread.
 nlohmann::json pressure_map_json(const contact::Patch3dResult& r);
 
-/// Road area of the cells in contact [m^2]: sum of dx dy over the cells that carry force (the
-/// `contact_area_mm2` printed per case). Not contact::contact_area_m2, which interpolates each
-/// column's run edges on the level function so that the pneumatic share's area is continuous
-/// in the load.
-double cell_area_in_contact_m2(const contact::Patch3dResult& r);
-
-/// The highest pressure [Pa]: of the units on the 2D patch, of the whole map on the 3D patch.
-double peak_pressure_Pa(const contact::Prediction& p);
+/// The footprint's measures (contact/footprint_measures.h), as the JSON prints them.
+using contact::cell_area_in_contact_m2;
+using contact::peak_pressure_Pa;
 
 /// Names of the effects switched on, in catalogue order.
 std::vector<std::string> enabled_effects(const contact::EffectsConfig& effects);

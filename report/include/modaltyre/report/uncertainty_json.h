@@ -1,0 +1,19 @@
+#pragma once
+// The uncertainty bands in the commands' JSON (issue 35): per case
+// `uncertainty: {sinking_mm: {std, p025, p975}, contact_length_mm: {...}, ...}` and the
+// document's `uncertainty_method`, `uncertainty_check` and `uncertainty_inputs`.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "modaltyre/uncertainty/propagation.h"
+
+namespace modaltyre::report {
+
+/// Adds the bands to the document's `cases` (same order) and the method, check and inputs.
+void add_uncertainty_json(nlohmann::json& document, const uncertainty::PropagationResult& r);
+
+/// "14.5 +- 0.4": the value to the digits its 2-sigma half-width supports (two significant
+/// digits of the half-width), or the value alone to `plain_decimals` when the width is zero.
+std::string plus_minus(double value, double two_sigma, int plain_decimals);
+
+}  // namespace modaltyre::report

@@ -1,0 +1,41 @@
+#pragma once
+// The uncertain inputs of a tyre model (issue 35, docs/uncertainty.md): what the data say of
+// their own precision (the hammer shapes' residual noise per mode) and what a config states
+// where no data give it (modal.frequency_std_percent, tread.modulus_std_percent,
+// modal.belt_width_std_percent). Each input is a relative perturbation x of one quantity with a
+// standard deviation; apply() sets it on a copy of the config and of the identified modes.
+#include <string>
+#include <vector>
+
+#include "modaltyre/contact/tyre_config.h"
+#include "modaltyre/modal/mode_identification.h"
+
+namespace modaltyre::uncertainty {
+
+enum class InputKind {
+  mode_amplitude,  ///< a mode's modal amplitude |c|^2 (all its shape products scale by 1 + x)
+  mode_frequency,  ///< a mode's natural frequency (multiplied by 1 + x)
+  tread_modulus,   ///< the tread compound's modulus (1 + x)
+  belt_width,      ///< the belt width of the ring's tension, i.e. the modal mass (1 + x)
+};
+
+struct UncertainInput {
+  InputKind kind = InputKind::mode_amplitude;
+  int mode = -1;       ///< index into ModeIdentification::modes (mode kinds), else -1
+  std::string name;    ///< e.g. "mode 4 amplitude", "tread modulus"
+  double rel_std = 0;  ///< standard deviation of x
+  std::string source;  ///< e.g. "hammer shapes' residual", "modal.frequency_std_percent"
+};
+
+/// The inputs with a standard deviation > 0: one amplitude per mode the carcass uses when its
+/// shapes are mass-normalised (their residual noise; ring-normalised shapes carry no amplitude
+/// of their own), one frequency per mode when the config states modal.frequency_std_percent, the
+/// tread modulus and the belt width when stated.
+std::vector<UncertainInput> collect_inputs(const contact::TyreConfig& config,
+                                           const modal::ModeIdentification& modes);
+
+/// Applies x to the input's quantity on `config` / `modes` (copies the caller made).
+void apply(const UncertainInput& input, double x, contact::TyreConfig& config,
+           modal::ModeIdentification& modes);
+
+}  // namespace modaltyre::uncertainty

@@ -1,0 +1,80 @@
+#pragma once
+// From the inputs' standard deviations (inputs.h) to a band on every footprint output
+// (docs/uncertainty.md). Linearised: a central difference of each output over each input at
+// +-1 standard deviation, the outputs' variances summed over the (independent) inputs, the 95 %
+// band +-1.96 sigma. The same differences measure each input's curvature; where an output's
+// second difference exceeds `max_nonlinearity` of its first, the linearisation is not trusted
+// and `auto` samples instead: Monte Carlo over every input at once (normal, seeded per sample
+// so that any thread count gives the same numbers), mean, standard deviation and the 2.5 / 97.5
+// percentiles. The model is rebuilt for each evaluation (the inputs move its kernels); the
+// evaluations run in parallel (OpenMP).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "modaltyre/contact/operating_conditions.h"
+#include "modaltyre/contact/tyre_config.h"
+#include "modaltyre/modal/mode_identification.h"
+#include "modaltyre/uncertainty/inputs.h"
+
+namespace modaltyre::uncertainty {
+
+enum class Method { linear, sampled, automatic };
+
+struct PropagationOptions {
+  Method method = Method::automatic;
+  int samples = 200;              ///< Monte Carlo samples (20..100000)
+  unsigned long seed = 20261127;  ///< the samples' seed
+  int threads = 0;                ///< OpenMP threads, 0 = the default
+  /// automatic: sample when an output's |f(+) + f(-) - 2 f0| / |f(+) - f(-)| exceeds this.
+  double max_nonlinearity = 0.1;
+  /// Called after each model evaluation (done, total): first the differences (1 + 2 inputs),
+  /// then, when sampled, the samples (a new total); may be empty.
+  std::function<void(int, int)> progress;
+  /// Throws std::invalid_argument naming the field.
+  void validate() const;
+};
+
+/// The outputs a band is given for, as the footprint JSON names them; the mean pressure is over
+/// the interpolated contact area (contact/footprint_measures.h: smooth_mean_pressure_Pa).
+inline const std::vector<std::string>& output_names() {
+  static const std::vector<std::string> names = {"sinking_mm", "contact_length_mm", "width_mm",
+                                                 "peak_pressure_kPa", "mean_pressure_kPa"};
+  return names;
+}
+
+struct Band {
+  double value = 0;  ///< at the nominal inputs (linear) or the samples' mean (sampled)
+  double std = 0;
+  double p025 = 0, p975 = 0;
+};
+
+struct CaseBands {
+  double load_N = 0;
+  std::vector<Band> bands;  ///< per output_names()
+};
+
+struct InputEffect {
+  UncertainInput input;
+  std::vector<double> sinking_sensitivity;  ///< d sinking_mm / (1 sigma of the input), per case
+  double nonlinearity = 0;                  ///< the largest second/first difference ratio
+  std::string nonlinear_output;             ///< where it is (output name and load)
+};
+
+struct PropagationResult {
+  std::string method;  ///< "linear" or "sampled"
+  std::string check;   ///< how the method was checked, in words
+  std::vector<InputEffect> inputs;
+  std::vector<CaseBands> cases;
+  int evaluations = 0;  ///< model builds
+};
+
+/// Propagates the config's inputs (collect_inputs) to the cases. With no uncertain input every
+/// band has zero width (method "linear", said in `check`). ComputationError when the nominal or a
+/// perturbed prediction fails (with the input and its message).
+PropagationResult propagate(const contact::TyreConfig& config,
+                            const modal::ModeIdentification& modes,
+                            const std::vector<contact::OperatingConditions>& cases,
+                            const PropagationOptions& options = {});
+
+}  // namespace modaltyre::uncertainty
