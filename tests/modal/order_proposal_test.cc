@@ -67,7 +67,9 @@ TEST(OrderProposal, MissingOrderDoubletAndBreathingAreAmongTheNearTies) {
   for (int& k : shifted)
     if (k >= 2) ++k;
   for (const auto& a : p) {
-    if (a.orders == shifted) EXPECT_GT(a.score, p.front().score + 2);
+    if (a.orders == shifted) {
+      EXPECT_GT(a.score, p.front().score + 2);
+    }
   }
 }
 
