@@ -49,8 +49,11 @@ void print_table(const studies::ValidationReport& rep, const std::string& measur
     for (const auto& o : c.observables) std::cout << " " << o;
     std::cout << "):\n";
     for (std::size_t i = 0; i < c.keys.size(); ++i) {
-      std::cout << "  " << c.keys[i] << " = " << round_sig(c.values[i], 5) << "  (was "
-                << c.initial_values[i] << ")";
+      std::cout << "  " << c.keys[i] << " = " << round_sig(c.values[i], 5);
+      if (i < c.std_errors.size()) {
+        std::cout << "  (+- " << round_sig(2 * c.std_errors[i], 2) << " at 2 sigma)";
+      }
+      std::cout << "  (was " << c.initial_values[i] << ")";
       if (!c.at_bound[i].empty()) {
         std::cout << "  warning: at the " << c.at_bound[i]
                   << " bound of its search range: the rows bound it from one side only, or a "
@@ -58,6 +61,7 @@ void print_table(const studies::ValidationReport& rep, const std::string& measur
       }
       std::cout << "\n";
     }
+    std::cout << "  standard errors: " << c.covariance_note << "\n";
   }
   if (const auto on = report::enabled_effects(rep.model.config.effects); !on.empty()) {
     std::cout << "Effects on:";

@@ -73,9 +73,11 @@ py::object run_transient(const std::string& config_path, const std::string& scen
     report::map_transient_conditions(settings, sc, sets, "conditions");
     refuse_repeated_overrides(sets);  // hold_s and transient.load_hold.hold_s both given
     const auto config = contact::load_tyre_config(config_path, sets);
-    report::require_2d_patch(config, config_path);
     const auto model = transient::build_transient_model(contact::build_tyre_model(config));
-    const transient::TransientResult r = transient::run_transient(model, sc);
+    // The 3D patch with footprint_3d:, else the 2D one: the CLI's choice.
+    const transient::TransientResult r = config.footprint_3d
+                                             ? transient::run_transient_3d(model, sc)
+                                             : transient::run_transient(model, sc);
     if (!r.ok()) throw ComputationError(r.message);
     j = report::transient_json(model, r);
     j["conditions"] = report::settings_json(settings);

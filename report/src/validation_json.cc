@@ -65,8 +65,10 @@ nlohmann::json validation_json(const studies::ValidationReport& rep) {
   nlohmann::json initial = nlohmann::json::object();
   nlohmann::json at_bound = nlohmann::json::object();
   const auto& c = rep.calibration;
+  nlohmann::json std_errors = nlohmann::json::object();
   for (std::size_t i = 0; i < c.keys.size(); ++i) {
     calibrated[c.keys[i]] = round_sig(c.values[i], 8);
+    if (i < c.std_errors.size()) std_errors[c.keys[i]] = round_sig(c.std_errors[i], 4);
     initial[c.keys[i]] = c.initial_values[i];
     if (!c.at_bound[i].empty()) at_bound[c.keys[i]] = c.at_bound[i];
   }
@@ -83,7 +85,10 @@ nlohmann::json validation_json(const studies::ValidationReport& rep) {
             {"at_bound", at_bound},
             {"rms_rel_residual", round_sig(c.rms_rel_residual, 8)},
             {"converged", c.ok()},
-            {"evaluations", c.evaluations}}}};
+            {"evaluations", c.evaluations},
+            {"std_errors", std_errors},
+            {"correlation", c.correlation},
+            {"covariance", c.covariance_note}}}};
 }
 
 }  // namespace modaltyre::report

@@ -52,6 +52,49 @@ void require_converged(const std::vector<Prediction>& res, const std::string& st
   }
 }
 
+// The calibrated scalars' covariance from the Jacobian at the fit (central differences in
+// ln x) and the residual variance (Calibration's comment).
+template <class Residual>
+void set_covariance(Calibration& cal, const Residual& residual, const Eigen::VectorXd& x,
+                    const Eigen::VectorXd& r) {
+  const Eigen::Index n = x.size(), m = r.size();
+  if (m <= n) {
+    cal.covariance_note = "no standard errors: " + std::to_string(m) +
+                          " calibration residuals for " + std::to_string(n) +
+                          " scalars leave no degree of freedom to estimate the noise";
+    return;
+  }
+  constexpr double kStep = 1e-4;  // in ln x: 0.01 % of each value, far above rounding
+  Eigen::MatrixXd J(m, n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Eigen::VectorXd up = x, down = x;
+    up(k) += kStep;
+    down(k) -= kStep;
+    J.col(k) = (residual(up) - residual(down)) / (2 * kStep);
+  }
+  const double s2 = r.squaredNorm() / static_cast<double>(m - n);
+  const Eigen::MatrixXd JtJ = J.transpose() * J;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(JtJ);
+  if (!lu.isInvertible()) {
+    cal.covariance_note =
+        "no standard errors: the calibration rows do not determine every "
+        "scalar (J^T J singular)";
+    return;
+  }
+  const Eigen::MatrixXd cov = s2 * lu.inverse();
+  for (Eigen::Index k = 0; k < n; ++k) {
+    cal.std_errors.push_back(cal.values[static_cast<std::size_t>(k)] * std::sqrt(cov(k, k)));
+  }
+  cal.correlation.assign(static_cast<std::size_t>(n),
+                         std::vector<double>(static_cast<std::size_t>(n)));
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j)
+      cal.correlation[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+          cov(i, j) / std::sqrt(cov(i, i) * cov(j, j));
+  cal.covariance_note = "from the Jacobian at the fit and the residual variance (" +
+                        std::to_string(m - n) + " degrees of freedom)";
+}
+
 }  // namespace
 
 const std::vector<std::string>& validation_observables() {
@@ -194,6 +237,7 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
     if (cal.rms_rel_residual > 1e3) {
       throw ComputationError("calibration found no parameters within their plausible ranges");
     }
+    set_covariance(cal, residual, x, fit.residual);
   }
   rep.model = model_for(x);
   const auto predicted = predict_rows(rep.model, measured);

@@ -101,16 +101,19 @@ def test_transient_equals_the_cli(modaltyre, tmp_path):
     assert math.isclose(series["load_N"][-1], 4000, rel_tol=1e-2)
 
 
-def test_transient_refuses_the_3d_patch(modaltyre):
+def test_transient_runs_the_3d_patch_like_the_cli(modaltyre):
     config = src("configs", "sf350.yaml")
-    try:
-        modaltyre.transient(config, "load-hold")
-    except modaltyre.InputError as e:
-        assert e.key == "footprint_3d"
-        _, err = run_cli("transient", config, "--scenario", "load-hold", expect=2)
-        assert err.strip() == "error: " + str(e)
-    else:
-        raise AssertionError("no InputError")
+    sets = {"contact.unit_length_mm": 2, "footprint_3d.lateral_cell_mm": 7.5,
+            "transient.load_hold.hold_s": 0.2}
+    args = ["transient", config, "--scenario", "load-hold"]
+    for k, v in sets.items():
+        args += ["--set", f"{k}={v}"]
+    cli = cli_json(*args)
+    got = modaltyre.transient(config, "load-hold", sets)
+    got.pop("series")
+    for timing in ("wall_s", "real_time_factor"):
+        got.pop(timing), cli.pop(timing)
+    assert_same(got, cli)
 
 
 def test_discover_equals_the_cli(modaltyre):

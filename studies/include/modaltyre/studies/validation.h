@@ -59,6 +59,14 @@ struct Calibration {
   /// Per key: "lower" or "upper" when the value ended within 0.1 % of its search range's bound
   /// (the rows only bound it from one side, or a better optimum lies across the range), else "".
   std::vector<std::string> at_bound;
+  /// The calibrated scalars' standard errors (issue 35; docs/uncertainty.md section 4): from
+  /// the Jacobian J of the relative residuals in ln(value) at the fit, Cov(ln x) =
+  /// s^2 (J^T J)^-1 with s^2 = |r|^2 / (m - n) the residual variance of the m calibration
+  /// residuals (n scalars); std = value sqrt(Cov_kk) (delta method). Empty when there is no
+  /// residual degree of freedom (m <= n): `covariance_note` says so.
+  std::vector<double> std_errors;
+  std::vector<std::vector<double>> correlation;  ///< n x n, when std_errors are given
+  std::string covariance_note;
 };
 
 struct ValidationReport {
