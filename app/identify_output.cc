@@ -35,9 +35,11 @@ void print_report(const nlohmann::json& out, const std::string& source) {
             << "\n\n";
   std::cout << "  parameter                      value           std_error       unit\n";
   for (const auto& p : r.parameters) {
+    char error[32] = "closed form";  // std_error 0: no redundancy, no error estimate
+    if (p.std_error != 0) std::snprintf(error, sizeof error, "%.3g", p.std_error);
     char line[256];
-    std::snprintf(line, sizeof line, "  %-28s %-15.6g %-15.3g %s\n", p.name.c_str(), p.value,
-                  p.std_error, p.unit.c_str());
+    std::snprintf(line, sizeof line, "  %-28s %-15.6g %-15s %s\n", p.name.c_str(),
+                  round_sig(p.value, 6), error, p.unit.c_str());
     std::cout << line;
   }
   if (!r.notes.empty()) std::cout << "\n";
