@@ -94,6 +94,8 @@ void check_output_paths(CLI::App& app) {
   for (CLI::App* sub : app.get_subcommands({})) check_output_paths(*sub);
 }
 
+std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
+
 double unsigned_zero(double v, int decimals) {
   return std::abs(v) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : v;
 }

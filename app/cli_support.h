@@ -44,6 +44,9 @@ void check_output_paths(CLI::App& app);
 /// Fixed-point formatting for tables ("0.0", never "-0.0").
 std::string fixed(double v, int decimals);
 
+/// A relative value as a percentage with two decimals: 0.0123 -> "1.23 %".
+std::string pct(double rel);
+
 /// `v`, or +0 when it prints as zero with `decimals` decimals (for printf "%.*f" columns).
 double unsigned_zero(double v, int decimals);
 
