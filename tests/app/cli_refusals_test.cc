@@ -4,7 +4,6 @@
 // is wrong (repeated export loads, output paths, a sweep as a sweep's base, FRFs given as hammer
 // data); a user's own measurements with missing values and fewer rows are read or told the --set
 // that fits them.
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -34,18 +33,9 @@ class CliRefusals : public modaltyre_test::CliFixture {
 
   /// The command with extra environment variables ("NAME=value"), under a 120 s limit.
   CliRun run_env(const std::vector<std::string>& env, const std::vector<std::string>& args) {
-    std::string cmd = "env";
-    for (const auto& e : env) cmd += " " + modaltyre_test::quote(e);
-    cmd += " timeout 120 " + modaltyre_test::quote(MODALTYRE_CLI);
-    for (const auto& a : args) cmd += " " + modaltyre_test::quote(a);
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    cmd += " >" + modaltyre_test::quote(out.string()) + " 2>" + modaltyre_test::quote(err.string());
-    const int status = std::system(cmd.c_str());
-    CliRun r;
-    if (status != -1 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-    r.out = modaltyre_test::slurp(out);
-    r.err = modaltyre_test::slurp(err);
-    return r;
+    std::string prefix = "env";
+    for (const auto& e : env) prefix += " " + modaltyre_test::quote(e);
+    return run_with(prefix + " timeout 120", args);
   }
 
   /// Exit 2 and every needle in the error message (after what the OpenMP runtime may print

@@ -3,6 +3,7 @@
 // and a band that cuts modes are warned about, an FRF type most modes contradict is named with
 // the type the data fit, and unscaled shapes are marked in the hammer CSV for its reader.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <fstream>
@@ -59,7 +60,8 @@ TEST(EmaUnsure, UnmeasuredDofIsNotedAndLeftOutOfTheShapes) {
   const std::string csv = hammer_csv(r);
   EXPECT_NE(csv.find(",5,120.000000,"), std::string::npos);
   EXPECT_EQ(csv.find("nan"), std::string::npos) << csv.substr(0, 400);
-  const auto path = std::filesystem::temp_directory_path() / "modaltyre_ema_missing_dof.csv";
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("modaltyre_ema_missing_dof_" + std::to_string(::getpid()) + ".csv");
   std::ofstream(path) << csv;
   try {
     modal::read_hammer_csv(path.string());
@@ -138,7 +140,9 @@ TEST(EmaUnsure, UnscaledShapesAreMarkedForTheHammerReader) {
   EXPECT_NE(unscaled.find("radial,tangential,scaling\n"), std::string::npos);
   EXPECT_NE(unscaled.find(",unscaled\n"), std::string::npos);
   const auto dir = std::filesystem::temp_directory_path();
-  const auto p1 = dir / "modaltyre_ema_scaled.csv", p2 = dir / "modaltyre_ema_unscaled.csv";
+  const std::string pid = std::to_string(::getpid());
+  const auto p1 = dir / ("modaltyre_ema_scaled_" + pid + ".csv");
+  const auto p2 = dir / ("modaltyre_ema_unscaled_" + pid + ".csv");
   std::ofstream(p1) << scaled;
   std::ofstream(p2) << unscaled;
   EXPECT_FALSE(modal::read_hammer_csv(p1.string()).unscaled);
