@@ -3,9 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
+#include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/report/check_finite.h"
 
@@ -33,22 +35,78 @@ CLI::Validator physical_range(double lo, double hi, const std::string& unit, con
       std::string(lo_inclusive ? "[" : "(") + number(lo) + ", " + number(hi) + "] " + unit;
   return CLI::Validator(
       [=](std::string& input) -> std::string {
-        char* end = nullptr;
-        const double v = std::strtod(input.c_str(), &end);
-        if (end == input.c_str() || *end != '\0' || !std::isfinite(v)) {
-          return "'" + input.substr(0, 40) + "' is not a finite number (range " + text + ")";
+        const auto parsed = parse_finite_double(input);
+        if (!parsed) {
+          return "'" + printable(input) + "' is not a finite number (range " + text + ")" +
+                 decimal_hint(input);
         }
+        const double v = *parsed;
         if (!(lo_inclusive ? v >= lo : v > lo) || !(v <= hi)) {
-          return input.substr(0, 40) + " is outside " + text + ": " + why;
+          return printable(input) + " is outside " + text + ": " + why;
         }
         return "";
       },
       text);
 }
 
+void require_decimal_numbers(CLI::App& app) {
+  for (CLI::Option* opt : app.get_options()) {
+    const std::string type = opt->get_type_name();
+    const std::string base = type.substr(0, type.find(':'));
+    if (base != "FLOAT" && base != "INT" && base != "UINT") continue;
+    opt->check(CLI::Validator(
+        [](std::string& input) -> std::string {
+          if (parse_finite_double(input)) return "";
+          return "'" + printable(input) + "' is not a decimal number" + decimal_hint(input);
+        },
+        ""));
+  }
+  for (CLI::App* sub : app.get_subcommands({})) require_decimal_numbers(*sub);
+}
+
+void check_output_paths(CLI::App& app) {
+  static const char* outputs[] = {"--output",  "--plot",       "--csv",
+                                  "--map-csv", "--out-config", "--write-config"};
+  for (const char* name : outputs) {
+    CLI::Option* opt = nullptr;
+    try {
+      opt = app.get_option(name);
+    } catch (const CLI::OptionNotFound&) {
+      continue;
+    }
+    opt->check(CLI::Validator(
+        [](std::string& input) -> std::string {
+          namespace fs = std::filesystem;
+          if (input.empty()) return "an empty path: give the file to write";
+          const fs::path p(input);
+          std::error_code ec;
+          if (fs::is_directory(p, ec))
+            return "'" + printable(input, 4096) + "' is a directory, not a file";
+          const fs::path folder = fs::absolute(p, ec).parent_path();
+          if (!fs::is_directory(folder, ec)) {
+            return "'" + printable(input, 4096) + "': output folder '" +
+                   printable(folder.string(), 4096) + "' does not exist";
+          }
+          return "";
+        },
+        ""));
+  }
+  for (CLI::App* sub : app.get_subcommands({})) check_output_paths(*sub);
+}
+
+std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
+
+double unsigned_zero(double v, int decimals) {
+  return std::abs(v) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : v;
+}
+
 std::string fixed(double v, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  // A value that rounds to zero prints without a sign: "-0.0" reads as a negative result.
+  if (buf[0] == '-' && std::string(buf).find_first_not_of("-0.") == std::string::npos) {
+    return buf + 1;
+  }
   return buf;
 }
 

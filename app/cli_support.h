@@ -32,8 +32,25 @@ using report::check_finite;
 CLI::Validator physical_range(double lo, double hi, const std::string& unit, const std::string& why,
                               bool lo_inclusive = false);
 
-/// Fixed-point formatting for tables.
+/// Adds to every number option of `app` and its subcommands (CLI11 type FLOAT, INT, UINT) a check
+/// that its text is a decimal number: CLI11 itself reads 0x1000, 0b101 and 0o17 as integers and
+/// strtod hexadecimal floats (0x10p4), which no user means. Call once all commands are registered.
+void require_decimal_numbers(CLI::App& app);
+
+/// Adds to every output option (--output, --plot, --csv, --map-csv, --out-config, --write-config)
+/// of `app` and its subcommands a check made before anything is computed: not empty, not a
+/// directory, in a folder that exists (issue 38: an empty --output failed only after the
+/// computation, without a path; --out-config nodir/x.yaml blamed modal.hammer_csv).
+void check_output_paths(CLI::App& app);
+
+/// Fixed-point formatting for tables ("0.0", never "-0.0").
 std::string fixed(double v, int decimals);
+
+/// A relative value as a percentage with two decimals: 0.0123 -> "1.23 %".
+std::string pct(double rel);
+
+/// `v`, or +0 when it prints as zero with `decimals` decimals (for printf "%.*f" columns).
+double unsigned_zero(double v, int decimals);
 
 /// Rounds to a number of significant digits for JSON (keeps output stable and readable).
 using modaltyre::round_sig;

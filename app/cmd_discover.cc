@@ -44,8 +44,6 @@ struct DiscoverArgs {
   int exact_rows = 64;
 };
 
-std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
-
 // "length_mm and sinking_mm": the observables with a relative residual (a non-zero
 // measurement), which the pooled cross-validated RMS covers.
 std::string observables_text(const std::map<std::string, double>& gaps) {
@@ -175,11 +173,11 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
     p.title = observable_word(obs) + (r.effects.empty() ? ": nothing named" : ": before and after");
     p.xlabel = var.empty() ? "row" : axis_label(var);
     p.ylabel = "cross-validated (predicted - measured) / measured [%]";
-    PlotSeries before{"baseline", {}, {}, "linespoints"};
-    PlotSeries after{r.effects.empty() ? "baseline (unchanged)" : "with the named effects",
-                     {},
-                     {},
-                     "linespoints"};
+    // Points, not lines: rows at one value of the regime variable differ in load and other
+    // conditions, and a line through them drew a sawtooth that no quantity follows (issue 38).
+    PlotSeries before{"baseline", {}, {}, "points"};
+    PlotSeries after{
+        r.effects.empty() ? "baseline (unchanged)" : "with the named effects", {}, {}, "points"};
     for (const auto& [x, b, a] : pts) {
       before.x.push_back(x), before.y.push_back(b);
       after.x.push_back(x), after.y.push_back(a);

@@ -54,6 +54,11 @@ ema::FrfSet read_frfs(const EmaArgs& a) {
   return ema::with_frf_type(ema::read_uff58(a.file), given);
 }
 
+// A shape value, or null where no FRF measured the DOF.
+nlohmann::json shape_value(double v) {
+  return std::isnan(v) ? nlohmann::json() : nlohmann::json(round_sig(v, 7));
+}
+
 nlohmann::json to_json(const ema::EmaResult& r) {
   nlohmann::json modes = nlohmann::json::array();
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
@@ -62,8 +67,8 @@ nlohmann::json to_json(const ema::EmaResult& r) {
     for (std::size_t i = 0; i < r.points.size(); ++i) {
       shape.push_back({{"point", r.points[i]},
                        {"angle_deg", round_sig(r.angle_deg[i])},
-                       {"radial", round_sig(m.radial[i], 7)},
-                       {"tangential", round_sig(m.tangential[i], 7)}});
+                       {"radial", shape_value(m.radial[i])},
+                       {"tangential", shape_value(m.tangential[i])}});
     }
     modes.push_back({{"mode", k + 1},
                      {"freq_hz", round_sig(m.freq_hz, 8)},
@@ -87,6 +92,7 @@ nlohmann::json to_json(const ema::EmaResult& r) {
           {"modes", modes},
           {"dropped", dropped},
           {"notes", r.notes},
+          {"warnings", r.warnings},
           {"synthesis_error", round_sig(r.synthesis_error, 6)}};
 }
 
@@ -202,6 +208,7 @@ void register_ema(CLI::App& app) {
     const nlohmann::json j = to_json(r);
     check_finite(j);
     if (!a->output.empty()) write_file_atomically(a->output, ema::hammer_csv(r));
+    for (const auto& w : r.warnings) std::cerr << "warning: " << w << "\n";
     if (a->json) {
       print_json(j);
     } else {

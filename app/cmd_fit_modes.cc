@@ -94,7 +94,8 @@ void plot_modes(const modal::HammerData& data, const modal::ModeIdentification& 
       fit.y.push_back((c * std::polar(1.0, k * th)).real());
     }
     p.series = {pts, fit};
-    p.key = "below horizontal";
+    // Beside the plot: below it, the legend ran into the x label of these short panels.
+    p.key = "outside right top vertical";
     p.xmin = 0;
     p.xmax = 360;
     // Symmetric about zero: a breathing or rotation shape (order 0) is a constant, and an

@@ -128,9 +128,17 @@ void plot_comparison(const tir::TirComparison& c, const std::string& path) {
   PlotFigure fig;
   fig.width_px = 1350;
   fig.height_px = 480;
-  const auto panel = [&](const char* title, const char* ylabel, auto model_of, auto tir_of) {
+  // Another tyre size is compared dimensionless: the .tir law is drawn scaled to the model's
+  // size, and its legend says so (issue 38).
+  const auto panel = [&](const char* title, const char* ylabel, auto model_of, auto tir_of,
+                         const char* scaled) {
     PlotPanel p{title, "deflection rho [mm]", ylabel, {}};
-    PlotSeries m{"model", {}, {}, "linespoints"}, t{".tir law", {}, {}, "linespoints"};
+    PlotSeries m{"model", {}, {}, "linespoints"},
+        t{c.dimensionless ? std::string(".tir law scaled to the model's size: ") + scaled
+                          : std::string(".tir law"),
+          {},
+          {},
+          "linespoints"};
     for (const auto& r : c.rows) {
       if (auto v = model_of(r)) m.x.push_back(r.rho_m * 1e3), m.y.push_back(*v);
       if (auto v = tir_of(r)) t.x.push_back(r.rho_m * 1e3), t.y.push_back(*v);
@@ -146,13 +154,13 @@ void plot_comparison(const tir::TirComparison& c, const std::string& path) {
   const auto mm = [](const O& v) { return v ? O(*v * 1e3) : O(); };
   panel(
       "vertical load", "load [N]", [](const R& r) { return O(r.load_N); },
-      [](const R& r) { return r.tir_load_N; });
+      [](const R& r) { return r.tir_load_N; }, "load/FNOMIN x the model's FNOMIN, at rho/R0");
   panel(
       "contact length", "2a [mm]", [](const R& r) { return O(r.model_length_m * 1e3); },
-      [&](const R& r) { return mm(r.tir_length_m); });
+      [&](const R& r) { return mm(r.tir_length_m); }, "2a/R0 x the model's R0");
   panel(
       "contact width", "2b [mm]", [&](const R& r) { return mm(r.model_width_m); },
-      [&](const R& r) { return mm(r.tir_width_m); });
+      [&](const R& r) { return mm(r.tir_width_m); }, "2b/W x the model's width");
   render_plot(fig, path);
 }
 

@@ -80,7 +80,7 @@ void print_table(const studies::ValidationReport& rep, const std::string& measur
   auto cell = [](const std::optional<double>& m, double p, const std::optional<double>& e) {
     char b[96];
     if (m) {
-      std::snprintf(b, sizeof b, "%8.1f / %-8.2f %6.1f", *m, p, 100 * *e);
+      std::snprintf(b, sizeof b, "%8.1f / %-8.2f %6.1f", *m, p, unsigned_zero(100 * *e, 1));
     } else {
       std::snprintf(b, sizeof b, "%8s / %-8.2f %6s", "-", p, "-");
     }

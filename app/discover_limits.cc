@@ -9,11 +9,7 @@
 #include "cli_support.h"
 
 namespace modaltyre::app {
-namespace {
-
-std::string pct(double rel) { return fixed(100 * rel, 2) + " %"; }
-
-}  // namespace
+namespace {}  // namespace
 
 // "tread_relaxation: not named; these data would reveal creep_ratio >= 0.21 (sinking_mm RMS
 // >= 2.1 %) with 80 % probability", for the last round's candidates left unnamed.

@@ -101,6 +101,11 @@ void plot_footprint_maps(const std::vector<contact::Prediction>& cases,
     m.series.push_back(contour(r));
     m.key = "off";
     m.equal_axes = true;
+    // A light load's map is narrow: at most four tick intervals, or the labels collide
+    // ("-50-40-30..." on the 2.1 kN panel, issue 38).
+    if (!m.image.x.empty()) {
+      m.xtics_step = nice_tick_step(m.image.x.back() - m.image.x.front(), 4);
+    }
     maps.push_back(std::move(m));
     PlotSeries s{fixed(p.footprint.load.load_N / 1000, 2) + " kN", {}, {}, "lines"};
     s.x.push_back(p.footprint.rear_edge_x_m * 1e3), s.y.push_back(0);

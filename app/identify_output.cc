@@ -35,9 +35,11 @@ void print_report(const nlohmann::json& out, const std::string& source) {
             << "\n\n";
   std::cout << "  parameter                      value           std_error       unit\n";
   for (const auto& p : r.parameters) {
+    char error[32] = "closed form";  // std_error 0: no redundancy, no error estimate
+    if (p.std_error != 0) std::snprintf(error, sizeof error, "%.3g", p.std_error);
     char line[256];
-    std::snprintf(line, sizeof line, "  %-28s %-15.6g %-15.3g %s\n", p.name.c_str(), p.value,
-                  p.std_error, p.unit.c_str());
+    std::snprintf(line, sizeof line, "  %-28s %-15.6g %-15s %s\n", p.name.c_str(),
+                  round_sig(p.value, 6), error, p.unit.c_str());
     std::cout << line;
   }
   if (!r.notes.empty()) std::cout << "\n";
@@ -183,13 +185,28 @@ void plot_free_vibration(const rh::DecaySignal& signal, const rh::StaticLoop* lo
       hmax = std::max(hmax, r.deflection_m);
     }
     PlotSeries fl{"eq. (14) loading", {}, {}, "lines"}, fu{"eq. (14) unloading", {}, {}, "lines"};
-    for (int i = 1; i <= 60; ++i) {
-      const double h = hmax * i / 60;
-      fl.x.push_back(h * 1e3);
-      fu.x.push_back(h * 1e3);
-      fl.y.push_back(rh::static_loop_load(res.static_fit->E1_Pa, res.static_fit->chi, h, true, o));
-      fu.y.push_back(rh::static_loop_load(res.static_fit->E1_Pa, res.static_fit->chi, h, false, o));
-    }
+    // A tyre cannot pull the road: where a branch of eq. (14) falls below zero load the wheel
+    // has left the road, and the curve starts at that zero (it went to -100 N, issue 38).
+    const auto branch = [&](PlotSeries& s, bool loading) {
+      double h_prev = 0, p_prev = 0;
+      for (int i = 1; i <= 60; ++i) {
+        const double h = hmax * i / 60;
+        const double p =
+            rh::static_loop_load(res.static_fit->E1_Pa, res.static_fit->chi, h, loading, o);
+        if (p >= 0) {
+          if (s.x.empty() && i > 1 && p_prev < 0) {  // the zero between the two samples
+            s.x.push_back((h_prev + (h - h_prev) * (-p_prev) / (p - p_prev)) * 1e3);
+            s.y.push_back(0);
+          }
+          s.x.push_back(h * 1e3);
+          s.y.push_back(p);
+        }
+        h_prev = h;
+        p_prev = p;
+      }
+    };
+    branch(fl, true);
+    branch(fu, false);
     sp.series = {ml, mu, fl, fu};
     fig.panels.push_back(sp);
     fig.width_px = 1200;

@@ -9,6 +9,7 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/thread_env.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -31,6 +32,8 @@ int main(int argc, char** argv) {
   modaltyre::app::register_ema(app);
   modaltyre::app::register_tir(app);
   modaltyre::app::register_init(app);
+  modaltyre::app::require_decimal_numbers(app);
+  modaltyre::app::check_output_paths(app);
 
   // Every footprint of the effects path allocates and frees a few dense candidate-unit matrices
   // (~250 kB on the 2 mm mesh). glibc returns such memory to the kernel when the top of the heap
@@ -68,6 +71,8 @@ int main(int argc, char** argv) {
     return code;
   };
   try {
+    // Every command may start OpenMP threads (sweeps, discover, Eigen's products).
+    modaltyre::check_omp_num_threads();
     app.parse(argc, argv);
     return stdout_written(0);
   } catch (const modaltyre::app::QuietExit& e) {

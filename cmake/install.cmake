@@ -13,6 +13,8 @@ foreach(module IN LISTS _modaltyre_modules)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${module}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 install(TARGETS modaltyre RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The licence travels with the binaries and headers (README.md, "Licence").
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(EXPORT ModalTyreTargets NAMESPACE ModalTyre::
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/ModalTyre)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/ModalTyreConfig.cmake.in

@@ -9,6 +9,16 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BIN} --prefix ${WORK}/prefi
 if(rc)
   message(FATAL_ERROR "cmake --install failed: ${rc}")
 endif()
+# The licence is part of the installed package (share/doc/ModalTyre/LICENSE), byte for byte.
+file(GLOB_RECURSE installed_licence ${WORK}/prefix/share/doc/*/LICENSE)
+if(NOT installed_licence)
+  message(FATAL_ERROR "the installed package carries no LICENSE under share/doc")
+endif()
+file(READ ${SRC}/LICENSE want)
+file(READ ${installed_licence} got)
+if(NOT want STREQUAL got)
+  message(FATAL_ERROR "the installed ${installed_licence} differs from ${SRC}/LICENSE")
+endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SRC}/examples/footprint_consumer -B ${WORK}/consumer
                         -G Ninja -DCMAKE_PREFIX_PATH=${WORK}/prefix -DCMAKE_BUILD_TYPE=Release
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -217,7 +217,9 @@ double ConfigSection::number(const std::string& key, double fallback, double min
   if (!n) return fallback;
   if (!n.IsScalar()) fail(key, "expected a number");
   const auto v = parse_finite_double(n.Scalar());
-  if (!v) fail(key, "expected a finite number, got '" + n.Scalar() + "'");
+  if (!v)
+    fail(key, "expected a finite number, got '" + printable(n.Scalar()) + "'" +
+                  decimal_hint(n.Scalar()));
   if (*v < min || *v > max) {
     std::ostringstream msg;
     msg << "value " << *v << " is out of range [" << min << ", " << max << "]";
@@ -242,7 +244,8 @@ long ConfigSection::integer(const std::string& key, long fallback, long min, lon
   if (!n.IsScalar()) fail(key, "expected an integer");
   const auto v = parse_finite_double(n.Scalar());
   if (!v || std::floor(*v) != *v || std::abs(*v) > 9e15) {
-    fail(key, "expected an integer, got '" + n.Scalar() + "'");
+    fail(key,
+         "expected an integer, got '" + printable(n.Scalar()) + "'" + decimal_hint(n.Scalar()));
   }
   if (*v < static_cast<double>(min) || *v > static_cast<double>(max)) {
     fail(key, "value " + n.Scalar() + " is out of range [" + std::to_string(min) + ", " +
@@ -288,7 +291,12 @@ std::vector<double> ConfigSection::numbers(const std::string& key,
   std::vector<double> out;
   for (const auto& item : n) {
     const auto v = item.IsScalar() ? parse_finite_double(item.Scalar()) : std::nullopt;
-    if (!v) fail(key, "every list item must be a finite number");
+    if (!v) {
+      fail(key, "every list item must be a finite number" +
+                    (item.IsScalar()
+                         ? ", got '" + printable(item.Scalar()) + "'" + decimal_hint(item.Scalar())
+                         : std::string()));
+    }
     if (*v < min || *v > max) {
       std::ostringstream msg;
       msg << "list value " << *v << " is out of range [" << min << ", " << max << "]";

@@ -22,43 +22,6 @@ std::string trim(const std::string& s) {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-// Length of the well-formed UTF-8 sequence at s[i], 0 if there is none (RFC 3629: no overlong
-// forms, no surrogates, nothing above U+10FFFF).
-std::size_t utf8_sequence(const std::string& s, std::size_t i) {
-  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-  const unsigned char c = b(i);
-  if (c < 0x80) return 1;
-  std::size_t n = 0;
-  unsigned char lo = 0x80, hi = 0xBF;  // allowed range of the second byte
-  if (c >= 0xC2 && c <= 0xDF) {
-    n = 2;
-  } else if (c >= 0xE0 && c <= 0xEF) {
-    n = 3;
-    if (c == 0xE0) lo = 0xA0;
-    if (c == 0xED) hi = 0x9F;
-  } else if (c >= 0xF0 && c <= 0xF4) {
-    n = 4;
-    if (c == 0xF0) lo = 0x90;
-    if (c == 0xF4) hi = 0x8F;
-  } else {
-    return 0;
-  }
-  if (i + n > s.size() || b(i + 1) < lo || b(i + 1) > hi) return 0;
-  for (std::size_t k = 2; k < n; ++k) {
-    if (b(i + k) < 0x80 || b(i + k) > 0xBF) return 0;
-  }
-  return n;
-}
-
-bool valid_utf8(const std::string& s) {
-  for (std::size_t i = 0; i < s.size();) {
-    const std::size_t n = utf8_sequence(s, i);
-    if (n == 0) return false;
-    i += n;
-  }
-  return true;
-}
-
 std::string hex_byte(unsigned char c) {
   static const char* digits = "0123456789ABCDEF";
   return std::string("\\x") + digits[c >> 4] + digits[c & 0xF];
@@ -174,12 +137,24 @@ std::string printable(const std::string& text, std::size_t max_bytes) {
 std::optional<double> parse_finite_double(const std::string& text) {
   const std::string t = trim(text);
   if (t.empty()) return std::nullopt;
+  // Decimal notation only: strtod also reads hexadecimal ("0x853", "0x10p4"), "inf" and "nan",
+  // which no measurement or config is written in; a stray 0x is a typo or the wrong column.
+  if (t.find_first_not_of("0123456789+-.eE") != std::string::npos) return std::nullopt;
   char* end = nullptr;
   const double v = std::strtod(t.c_str(), &end);
   // Overflow gives +-inf (refused below); underflow (1e-400) is a finite number that rounds to
   // a subnormal or zero, which the readers' own range checks then judge.
   if (end != t.c_str() + t.size() || !std::isfinite(v)) return std::nullopt;
   return v;
+}
+
+std::string decimal_hint(const std::string& text) {
+  const std::string t = trim(text);
+  const std::size_t x = t.find_first_of("xX");
+  if (x != std::string::npos && x > 0 && t[x - 1] == '0') {
+    return " (hexadecimal is not read: write the number in decimal)";
+  }
+  return "";
 }
 
 bool CsvTable::has(const std::string& column) const { return contains(columns_, column); }
@@ -194,9 +169,15 @@ double CsvTable::number(std::size_t row, const std::string& column) const {
   const double v = numbers_.at(row).at(index_of(column));
   // Parsed numbers are always finite: NaN marks an empty cell.
   if (std::isnan(v)) {
-    throw InputError({path_, lines_.at(row), column}, "empty cell: '' is not a finite number");
+    throw InputError({path_, lines_.at(row), column},
+                     "empty cell: '" + printable(cells_.at(row).at(index_of(column))) +
+                         "' is not a finite number");
   }
   return v;
+}
+
+bool CsvTable::missing(std::size_t row, const std::string& column) const {
+  return std::isnan(numbers_.at(row).at(index_of(column)));
 }
 
 double CsvTable::number_or(std::size_t row, const std::string& column, double fallback) const {
@@ -236,6 +217,11 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
           throw InputError({path, line_no, header_column(c)}, "empty column name in header");
         }
         const bool extra = schema.accept_text_column && schema.accept_text_column(name);
+        // An accepted free-form name (a sweep's dotted key) is printed back: UTF-8 only.
+        if (extra && !valid_utf8(name)) {
+          throw InputError({path, line_no, printable(name)},
+                           "column name has bytes that are not UTF-8: save the file as UTF-8");
+        }
         if (extra) extra_text.push_back(name);
         if (!extra && !contains(schema.required, name) && !contains(schema.optional, name)) {
           std::string known;
@@ -284,7 +270,8 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
     std::vector<double> nums(fields.size(), 0.0);
     for (std::size_t c = 0; c < fields.size(); ++c) {
       const std::string& col = table.columns_[c];
-      if (fields[c].empty() && contains(schema.may_be_empty, col)) {
+      if ((fields[c].empty() || contains(schema.missing_words, fields[c])) &&
+          contains(schema.may_be_empty, col)) {
         nums[c] = std::numeric_limits<double>::quiet_NaN();
         continue;
       }
@@ -296,7 +283,7 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
       if (!v) {
         throw InputError({path, line_no, col},
                          "'" + printable(fields[c]) + "' is not a finite number" +
-                             (valid_utf8(fields[c]) ? ""
+                             (valid_utf8(fields[c]) ? decimal_hint(fields[c])
                                                     : " (bytes that are not UTF-8: save "
                                                       "the file as UTF-8)"));
       }

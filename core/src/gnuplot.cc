@@ -120,6 +120,11 @@ std::string gnuplot_script(const PlotFigure& figure, const std::string& terminal
       }
     }
     gp << "set key " << keywords_only(panel.key) << "\n";
+    if (panel.xtics_step > 0) {
+      gp << "set xtics " << panel.xtics_step << "\n";
+    } else {
+      gp << "set xtics autofreq\n";
+    }
     if (panel.xmax > panel.xmin) {
       gp << "set xrange [" << panel.xmin << ":" << panel.xmax << "]\n";
     } else {
@@ -145,6 +150,16 @@ std::string gnuplot_script(const PlotFigure& figure, const std::string& terminal
   }
   if (n > 1) gp << "unset multiplot\n";
   return gp.str();
+}
+
+double nice_tick_step(double span, int max_ticks) {
+  if (!(span > 0) || max_ticks < 1 || !std::isfinite(span)) return 0;
+  const double raw = span / max_ticks;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0, 10.0}) {
+    if (m * decade >= raw * (1 - 1e-12)) return m * decade;
+  }
+  return 10 * decade;
 }
 
 void ensure_min_y_span(PlotPanel& panel, double min_span) {

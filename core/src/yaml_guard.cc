@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/input_file.h"
 
 namespace modaltyre {
 namespace {
@@ -19,7 +20,12 @@ int line_of(const YAML::Mark& m) { return m.line >= 0 ? m.line + 1 : 0; }
 // alternate key, value; the scalar keys seen so far are kept with their lines.
 class StructureChecker : public YAML::EventHandler {
  public:
-  explicit StructureChecker(std::string name) : name_(std::move(name)) {}
+  explicit StructureChecker(std::string name, int locate_line = 0)
+      : name_(std::move(name)), locate_line_(locate_line) {}
+
+  /// The dotted key of the first scalar on line `locate_line` (its name or the key it is the
+  /// value of); empty if none was seen.
+  const std::string& located_key() const { return located_; }
 
   void OnDocumentStart(const YAML::Mark& mark) override {
     if (++documents_ > 1) {
@@ -81,6 +87,10 @@ class StructureChecker : public YAML::EventHandler {
   }
 
   void child(const YAML::Mark& mark, const std::string* scalar) {
+    if (locate_line_ > 0) {
+      locate(mark, scalar);
+      return;
+    }
     if (++nodes_ > kMaxYamlNodes) {
       throw InputError({name_, line_of(mark), ""},
                        "more than " + std::to_string(kMaxYamlNodes) +
@@ -105,7 +115,19 @@ class StructureChecker : public YAML::EventHandler {
     }
   }
 
+  // Only bookkeeping of the keys, to name the one at locate_line_.
+  void locate(const YAML::Mark& mark, const std::string* scalar) {
+    if (stack_.empty()) return;
+    Frame& f = stack_.back();
+    const bool is_key = f.is_map && f.children % 2 == 0;
+    ++f.children;
+    if (is_key) f.last_key = scalar ? *scalar : std::string();
+    if (located_.empty() && scalar && line_of(mark) == locate_line_) located_ = dotted(-1);
+  }
+
   std::string name_;
+  int locate_line_ = 0;
+  std::string located_;
   std::vector<Frame> stack_;
   long nodes_ = 0;
   int documents_ = 0;
@@ -114,6 +136,22 @@ class StructureChecker : public YAML::EventHandler {
 }  // namespace
 
 void check_yaml_structure(const std::string& text, const std::string& name) {
+  if (const auto problem = text_problem(text)) {
+    std::string key;
+    if (problem->message.find("UTF-8") != std::string::npos) {
+      std::istringstream in(text);
+      YAML::Parser parser(in);
+      StructureChecker locator(name, problem->line);
+      try {
+        while (parser.HandleNextDocument(locator)) {
+        }
+      } catch (const std::exception&) {
+        // The key is named if the parser reached the line; the refusal stands either way.
+      }
+      key = locator.located_key();
+    }
+    throw InputError({name, name == "--set" ? 0 : problem->line, key}, problem->message);
+  }
   std::istringstream in(text);
   YAML::Parser parser(in);
   StructureChecker checker(name);

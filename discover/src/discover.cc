@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/thread_env.h"
 #include "modaltyre/solvers/correlation.h"
 #include "modaltyre/studies/validation.h"
 
@@ -273,6 +274,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     eval.mesh.unit_length_m = opt.unit_length_mm * 1e-3;
   }
   const contact::TyreModel model = contact::build_tyre_model(eval);
+  check_omp_num_threads();  // the default below reads it (a Python caller has no main())
   const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
   Evaluator ev(model, data);
   ev.set_threads(threads);

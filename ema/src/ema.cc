@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <set>
 
+#include "ema_checks.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/ema/lsfd.h"
 
@@ -167,7 +169,8 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
   }
   res.scaled = lay.driving >= 0 && !options.unscaled;
 
-  // Points and their angles: equally spaced in point order, 0 at the first point.
+  // Points and their angles: from the file's geometry, else equally spaced in point order; 0 at
+  // the first point.
   std::set<int> pts;
   for (const auto& d : lay.moving) {
     pts.insert(d.point);
@@ -175,11 +178,24 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
     res.has_tangential = res.has_tangential || d.dir == Direction::tangential;
   }
   res.points.assign(pts.begin(), pts.end());
+  const auto point_index = [&](int point) {
+    return static_cast<std::size_t>(std::lower_bound(res.points.begin(), res.points.end(), point) -
+                                    res.points.begin());
+  };
   for (std::size_t i = 0; i < res.points.size(); ++i) {
-    res.angle_deg.push_back(360.0 * double(i) / double(res.points.size()));
+    res.angle_deg.push_back(set.point_angle_deg.empty() ? 360.0 * double(i) / double(pts.size())
+                                                        : set.point_angle_deg.at(res.points[i]));
   }
-  if (!res.has_tangential) res.notes.push_back("no tangential FRFs: tangential shapes are 0");
-  if (!res.has_radial) res.notes.push_back("no radial FRFs: radial shapes are 0");
+  if (!set.point_angle_deg.empty()) {
+    res.notes.push_back(
+        "point angles and directions from the file's geometry (datasets 15/2411, "
+        "2420)");
+    if (auto w = detail::spacing_warning(res)) res.warnings.push_back(*w);
+  }
+  std::vector<std::vector<bool>> measured(2, std::vector<bool>(res.points.size(), false));
+  for (const auto& d : lay.moving)
+    measured[d.dir == Direction::radial ? 0 : 1][point_index(d.point)] = true;
+  for (auto& n : detail::missing_dof_notes(res, measured)) res.notes.push_back(std::move(n));
 
   // The band's lines (0 Hz is left out: the lower residual is singular there).
   std::vector<int> idx;
@@ -239,6 +255,7 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
 
   const LsfdFit fit = lsfd(fb, h, set.type, poles);
   res.synthesis_error = fit.relative_error;
+  int driving_failures = 0;
   for (std::size_t k = 0; k < poles.size(); ++k) {
     const double w = std::abs(poles[k]);
     EmaMode m;
@@ -263,6 +280,7 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
     if (res.scaled) {
       // A physical mode's driving-point constant phi_ref^2 is positive (phase near 0).
       if (a(lay.driving).real() <= 0) {
+        ++driving_failures;
         res.dropped.push_back({m.freq_hz, m.damping_ratio,
                                "driving-point modal constant is not positive: not a physical "
                                "mode"});
@@ -284,11 +302,11 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
       real.cwiseAbs().maxCoeff(&at);
       scale = 1.0 / real(at);
     }
-    m.radial.assign(res.points.size(), 0.0);
-    m.tangential.assign(res.points.size(), 0.0);
+    // A DOF no FRF measured stays NaN: kept out of the shape, never 0 (issue 38).
+    m.radial.assign(res.points.size(), std::numeric_limits<double>::quiet_NaN());
+    m.tangential.assign(res.points.size(), std::numeric_limits<double>::quiet_NaN());
     for (int o = 0; o < no; ++o) {
-      const auto i = std::lower_bound(res.points.begin(), res.points.end(), lay.moving[o].point) -
-                     res.points.begin();
+      const std::size_t i = point_index(lay.moving[o].point);
       (lay.moving[o].dir == Direction::radial ? m.radial : m.tangential)[i] = real(o) * scale;
     }
     res.modes.push_back(m);
@@ -296,6 +314,15 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
   drop_insignificant(res, options);
   std::sort(res.modes.begin(), res.modes.end(),
             [](const EmaMode& a, const EmaMode& b) { return a.freq_hz < b.freq_hz; });
+  if (res.scaled) {
+    if (auto w = detail::frf_type_warning(fb, h, set.type, poles, lay.driving, driving_failures)) {
+      res.warnings.push_back(*w);
+    }
+  }
+  for (auto& w :
+       detail::quality_warnings(res, options.band_hi_hz == 0, fb.front(), set.freq_hz.back())) {
+    res.warnings.push_back(std::move(w));
+  }
   if (res.modes.empty()) {
     std::string why;
     for (const auto& d : res.dropped) {
@@ -307,14 +334,28 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
 }
 
 std::string hammer_csv(const EmaResult& r) {
-  std::string out = "mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential\n";
-  char line[256];
+  std::string out;
+  if (!r.scaled) {
+    out +=
+        "# shapes UNSCALED (largest value 1, not kg^-1/2): no driving-point FRF; a footprint "
+        "from them has no physical scale\n";
+  }
+  out += "mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential";
+  out += r.scaled ? "\n" : ",scaling\n";
+  const auto value = [](double v) {
+    if (std::isnan(v)) return std::string();  // not measured
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6e", v);
+    return std::string(buf);
+  };
+  char line[128];
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     const auto& m = r.modes[k];
     for (std::size_t i = 0; i < r.points.size(); ++i) {
-      std::snprintf(line, sizeof line, "%zu,%.6f,%.6g,%d,%.6f,%.6e,%.6e\n", k + 1, m.freq_hz,
-                    m.damping_ratio, r.points[i], r.angle_deg[i], m.radial[i], m.tangential[i]);
-      out += line;
+      std::snprintf(line, sizeof line, "%zu,%.6f,%.6g,%d,%.6f,", k + 1, m.freq_hz, m.damping_ratio,
+                    r.points[i], r.angle_deg[i]);
+      out += line + value(m.radial[i]) + "," + value(m.tangential[i]) +
+             (r.scaled ? "\n" : ",unscaled\n");
     }
   }
   return out;

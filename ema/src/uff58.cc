@@ -11,6 +11,7 @@
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/input_file.h"
+#include "modaltyre/ema/uff_geometry.h"
 
 namespace modaltyre::ema {
 namespace {
@@ -54,9 +55,8 @@ std::optional<double> parse_real(const std::string& text) {
 
 struct Header {  // records 6-10 of one dataset 58
   long function_type = 0;
-  Dof response, reference;
-  int response_sign = 1, reference_sign = 1;
-  long ordinate_type = 0;  // 2 real single, 4 real double, 5 complex single, 6 complex double
+  RawDof response, reference;  // as the file states them (mapped once the whole file is read)
+  long ordinate_type = 0;      // 2 real single, 4 real double, 5 complex single, 6 complex double
   long points = 0;
   bool even = true;
   double x_min = 0, x_inc = 0;
@@ -83,6 +83,15 @@ class Reader {
       if (!next_line(line)) fail(start, "", "dataset starts at the end of the file");
       const auto t = tokens(line);
       const std::string id = t.empty() ? "" : t[0];
+      if (id == "15" || id == "2411" || id == "2420") {
+        const UffDatasetLines d = dataset_lines(start, id);
+        if (id == "2420") {
+          read_uff_coordinate_systems(d, geometry_);
+        } else {
+          read_uff_nodes(d, id == "2411", geometry_);
+        }
+        continue;
+      }
       if (id != "58" && id != "58b") {
         skip_dataset(start, id);
         continue;
@@ -96,6 +105,8 @@ class Reader {
         fail(start, "", "more than " + std::to_string(limits_.max_channels) + " FRFs; refusing");
       }
       set.channels.push_back(std::move(*ch));
+      raw_.push_back(last_response_);
+      raw_.push_back(last_reference_);
     }
     if (set.channels.empty()) {
       fail(0, "",
@@ -105,6 +116,7 @@ class Reader {
     }
     set.type = type.value_or(FrfType::accelerance);
     set.type_from_file = type.has_value();
+    map_directions(set);
     check_frf_set(set, limits_);
     return set;
   }
@@ -114,7 +126,11 @@ class Reader {
     throw InputError({path_, line, field}, message);
   }
 
-  void load() { text_ = read_input_file(path_, "a UFF file", "UFF files", limits_.max_bytes); }
+  void load() {
+    text_ = read_input_file(path_, "a UFF file", "UFF files", limits_.max_bytes);
+    // A UTF-8 byte-order mark (a Windows editor's save) before the first "-1": not data.
+    if (text_.rfind("\xEF\xBB\xBF", 0) == 0) text_.erase(0, 3);
+  }
 
   bool next_line(std::string& out) {
     if (pos_ >= text_.size()) return false;
@@ -125,6 +141,48 @@ class Reader {
     pos_ = std::min(end + 1, text_.size());  // a last line without '\n' must not step past the end
     ++line_;
     return true;
+  }
+
+  // The DOFs as tyre DOFs: through the file's geometry when it has one (uff_geometry.h), else
+  // by the implied convention (+-3 radial, +-1 tangential in each point's local frame). A
+  // negative direction flips the FRF's sign (both negative cancel).
+  void map_directions(FrfSet& set) const {
+    MappedDofs m;
+    if (!geometry_.nodes.empty()) {
+      m = map_dofs(path_, geometry_, raw_);
+      set.point_angle_deg = m.angle_deg;
+    } else {
+      for (const auto& r : raw_) {
+        if (r.direction != 3 && r.direction != -3 && r.direction != 1 && r.direction != -1) {
+          fail(r.line, r.direction_field,
+               "direction " + std::to_string(r.direction) +
+                   " is neither radial (+-3) nor tangential (+-1) in the point's local frame "
+                   "(the file has no geometry, datasets 15/2411, to read other directions by)");
+        }
+        m.dofs.push_back({static_cast<int>(r.node),
+                          std::abs(r.direction) == 3 ? Direction::radial : Direction::tangential});
+        m.signs.push_back(r.direction > 0 ? 1 : -1);
+      }
+    }
+    for (std::size_t c = 0; c < set.channels.size(); ++c) {
+      FrfChannel& ch = set.channels[c];
+      ch.response = m.dofs[2 * c];
+      ch.reference = m.dofs[2 * c + 1];
+      const double sign = m.signs[2 * c] * m.signs[2 * c + 1];
+      if (sign < 0) {
+        for (auto& v : ch.values) v = -v;
+      }
+    }
+  }
+
+  UffDatasetLines dataset_lines(int start, const std::string& id) {
+    UffDatasetLines d{path_, start + 2, {}};
+    std::string line;
+    while (next_line(line)) {
+      if (trim(line) == "-1") return d;
+      d.lines.push_back(line);
+    }
+    fail(start, "", "dataset " + printable(id) + " starting here has no closing '    -1'");
   }
 
   void skip_dataset(int start, const std::string& id) {
@@ -169,25 +227,25 @@ class Reader {
     }
     h.function_type = v[0];
     h.response = dof(v[1], v[2], "record 6 field 6 (response node)",
-                     "record 6 field 7 (response direction)", h.response_sign);
+                     "record 6 field 7 (response direction)");
     h.reference = dof(v[3], v[4], "record 6 field 9 (reference node)",
-                      "record 6 field 10 (reference direction)", h.reference_sign);
+                      "record 6 field 10 (reference direction)");
   }
 
-  Dof dof(long node, long dir, const std::string& node_field, const std::string& dir_field,
-          int& sign) const {
+  RawDof dof(long node, long dir, const std::string& node_field,
+             const std::string& dir_field) const {
     if (node < 1 || node > kMaxPointNumber) {
       fail(line_, node_field,
            "node " + std::to_string(node) + " is not a point number from 1 to " +
                std::to_string(kMaxPointNumber));
     }
-    if (dir != 3 && dir != -3 && dir != 1 && dir != -1) {
+    if (dir == 0 || dir < -3 || dir > 3) {
       fail(line_, dir_field,
            "direction " + std::to_string(dir) +
-               " is neither radial (+-3) nor tangential (+-1) in the point's local frame");
+               " is not a translation: ema reads radial (+-3) and tangential (+-1) DOFs, or "
+               "directions 1-3 of the node's coordinate system when the file has a geometry");
     }
-    sign = dir > 0 ? 1 : -1;
-    return {static_cast<int>(node), std::abs(dir) == 3 ? Direction::radial : Direction::tangential};
+    return {node, dir, line_, node_field, dir_field};
   }
 
   // Record 7: Format(3I10,3E13.5).
@@ -411,15 +469,16 @@ class Reader {
     }
     const bool cplx = h.ordinate_type >= 5;
     const std::size_t stride = (cplx ? 2 : 1) + (h.even ? 0 : 1);
-    const int sign = h.response_sign * h.reference_sign;
-    FrfChannel ch{h.response, h.reference, {}, start};
+    last_response_ = h.response;
+    last_reference_ = h.reference;
+    FrfChannel ch{{}, {}, {}, start};
     std::vector<double> freq(h.points);
     ch.values.resize(h.points);
     for (long i = 0; i < h.points; ++i) {
       const double* p = v.data() + i * stride;
       freq[i] = h.even ? h.x_min + static_cast<double>(i) * h.x_inc : p[0];
       const double* y = h.even ? p : p + 1;
-      ch.values[i] = double(sign) * std::complex<double>(y[0], cplx ? y[1] : 0.0);
+      ch.values[i] = std::complex<double>(y[0], cplx ? y[1] : 0.0);
     }
     if (set.channels.empty()) {
       set.freq_hz = freq;
@@ -443,6 +502,9 @@ class Reader {
 
   std::string path_;
   FrfLimits limits_;
+  UffGeometry geometry_;
+  std::vector<RawDof> raw_;  // response, reference of each channel in turn
+  RawDof last_response_, last_reference_;
   std::string text_;
   std::size_t pos_ = 0;
   int line_ = 0;

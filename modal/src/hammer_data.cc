@@ -101,6 +101,20 @@ HammerData read_hammer_csv(const std::string& path) {
   CsvSchema schema;
   schema.required = {"mode",      "freq_hz", "damping_ratio", "point",
                      "angle_deg", "radial",  "tangential"};
+  schema.optional = {"scaling"};
+  schema.text = {"scaling"};
+  schema.may_be_empty = {"radial", "tangential"};
+  // The hammer test's FRFs (a UFF file starts with "-1"; the long FRF CSV with response_point)
+  // are the input of `ema`, not of the model (issue 38: "unknown column -1").
+  const auto header = read_csv_header(path);
+  if (!header.empty() && (header.front() == "-1" || header.front() == "response_point")) {
+    throw InputError({path, 1, ""},
+                     std::string("is ") +
+                         (header.front() == "-1" ? "a UFF file" : "a CSV of FRFs") +
+                         " (the hammer test's FRFs), not the hammer CSV of modes: identify the "
+                         "modes first with `modaltyre ema " +
+                         path + " --output hammer.csv` and give hammer.csv");
+  }
   const CsvTable t = read_csv(path, schema);
 
   HammerData data;
@@ -151,6 +165,16 @@ HammerData read_hammer_csv(const std::string& path) {
     // Mass-normalised shapes are of order 1 kg^-1/2; far beyond, their squares in the harmonic
     // fits overflow (NaN in the output) instead of the reader naming the cell.
     for (const char* col : {"radial", "tangential"}) {
+      if (t.text(r, col).empty()) {
+        throw InputError({path, line, col},
+                         "empty cell: '' is not a finite number; the hammer test measured no "
+                         "FRF at point " +
+                             std::to_string(point) +
+                             " in this direction (modaltyre ema leaves "
+                             "such a DOF out of the shape); fit-modes and the tyre model need "
+                             "a value at every point: measure it, or write 0 if you know the "
+                             "point does not move this way");
+      }
       if (!(std::abs(t.number(r, col)) <= kMaxShape)) {
         throw InputError({path, line, col},
                          "shape value must be within +-1e6 kg^-1/2 "
@@ -159,6 +183,17 @@ HammerData read_hammer_csv(const std::string& path) {
     }
     m.radial.push_back(t.number(r, "radial"));
     m.tangential.push_back(t.number(r, "tangential"));
+    // The scaling marker of `ema --unscaled` (one word for the whole file).
+    const bool unscaled_row = t.has("scaling") && t.text(r, "scaling") == "unscaled";
+    if (t.has("scaling") && !unscaled_row && t.text(r, "scaling") != "mass_normalised") {
+      throw InputError({path, line, "scaling"}, "'" + printable(t.text(r, "scaling")) +
+                                                    "' is neither mass_normalised nor unscaled");
+    }
+    if (r > 0 && unscaled_row != data.unscaled) {
+      throw InputError({path, line, "scaling"},
+                       "differs from the first row's: one file holds one scaling");
+    }
+    data.unscaled = unscaled_row;
   }
 
   for (auto& m : data.modes) {

@@ -1,9 +1,13 @@
 # Type stubs of the modaltyre package (the extension modaltyre._modaltyre). Units are in the
 # names: _N newton, _mm millimetre, _kPa kilopascal, _s second, _hz hertz.
-from typing import Any, Optional, Sequence
+import os
+from typing import Any, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
+
+# Paths: a str or a pathlib.Path (any os.PathLike).
+StrPath = Union[str, os.PathLike[str]]
 
 class InputError(ValueError):
     file: str
@@ -29,7 +33,7 @@ class Tyre:
     name: str
     patch: str
     loads_N: list[float]
-    def __init__(self, config_path: str, overrides: dict[str, Any] = ...) -> None: ...
+    def __init__(self, config_path: StrPath, overrides: dict[str, Any] = ...) -> None: ...
     def footprint(
         self,
         load_N: float,
@@ -49,44 +53,44 @@ class Tyre:
         conditions: dict[str, Any] = ...,
     ) -> dict[str, Any]: ...
 
-def fit_modes(path: str) -> dict[str, Any]: ...
+def fit_modes(path: StrPath) -> dict[str, Any]: ...
 def validate(
-    config_path: str,
-    measured_csv: str,
+    config_path: StrPath,
+    measured_csv: StrPath,
     overrides: dict[str, Any] = ...,
     conditions: dict[str, Any] = ...,
 ) -> dict[str, Any]: ...
 def sweep(
-    sweep_yaml: str,
+    sweep_yaml: StrPath,
     threads: Optional[int] = None,
     overrides: dict[str, Any] = ...,
     warm_start: bool = False,
 ) -> dict[str, npt.NDArray[Any]]: ...
 def transient(
-    config_path: str,
+    config_path: StrPath,
     scenario: str,
     overrides: dict[str, Any] = ...,
     conditions: dict[str, Any] = ...,
 ) -> dict[str, Any]: ...
 def effects() -> list[dict[str, Any]]: ...
 def discover(
-    config_path: str,
-    measured_csv: str,
+    config_path: StrPath,
+    measured_csv: StrPath,
     overrides: dict[str, Any] = ...,
     threads: Optional[int] = None,
 ) -> dict[str, Any]: ...
 def identify(
     method: str,
-    path: Optional[str] = None,
+    path: Optional[StrPath] = None,
     *,
-    config: Optional[str] = None,
+    config: Optional[StrPath] = None,
     r0_mm: Optional[float] = None,
     tread_width_mm: Optional[float] = None,
     mass_kg: Optional[float] = None,
     contact_length_mm: Optional[float] = None,
     section_height_mm: Optional[float] = None,
     pressure_kPa: Optional[float] = None,
-    static: Optional[str] = None,
+    static: Optional[StrPath] = None,
     samples: int = 6,
     sampling: str = "deflection",
     intercept: bool = False,

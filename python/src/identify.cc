@@ -9,24 +9,24 @@
 namespace modaltyre::python {
 namespace {
 
-py::object identify(const std::string& method, const std::optional<std::string>& path,
-                    const std::optional<std::string>& config, std::optional<double> r0_mm,
-                    std::optional<double> tread_width_mm, std::optional<double> mass_kg,
-                    std::optional<double> contact_length_mm,
-                    std::optional<double> section_height_mm, std::optional<double> pressure_kPa,
-                    const std::optional<std::string>& static_loop, int samples,
-                    const std::string& sampling, bool intercept, double max_h_r0) {
+py::object identify(const std::string& method, const py::object& path, const py::object& config,
+                    const py::object& r0_mm, const py::object& tread_width_mm,
+                    const py::object& mass_kg, const py::object& contact_length_mm,
+                    const py::object& section_height_mm, const py::object& pressure_kPa,
+                    const py::object& static_loop, int samples, const std::string& sampling,
+                    bool intercept, double max_h_r0) {
   report::IdentifyInputs in;  // numbers: -1 = not given, as the command's options
   in.method = method;
-  in.file = path.value_or("");
-  in.geometry_config = report::identify_geometry_config(method, config.value_or(""));
-  in.r0_mm = r0_mm.value_or(-1);
-  in.tread_width_mm = tread_width_mm.value_or(-1);
-  in.mass_kg = mass_kg.value_or(-1);
-  in.contact_length_mm = contact_length_mm.value_or(-1);
-  in.section_height_mm = section_height_mm.value_or(-1);
-  in.pressure_kPa = pressure_kPa.value_or(-1);
-  in.static_file = static_loop.value_or("");
+  in.file = optional_path_arg(path, "path");
+  in.geometry_config =
+      report::identify_geometry_config(method, optional_path_arg(config, "config"));
+  in.r0_mm = optional_number_arg(r0_mm, "r0_mm").value_or(-1);
+  in.tread_width_mm = optional_number_arg(tread_width_mm, "tread_width_mm").value_or(-1);
+  in.mass_kg = optional_number_arg(mass_kg, "mass_kg").value_or(-1);
+  in.contact_length_mm = optional_number_arg(contact_length_mm, "contact_length_mm").value_or(-1);
+  in.section_height_mm = optional_number_arg(section_height_mm, "section_height_mm").value_or(-1);
+  in.pressure_kPa = optional_number_arg(pressure_kPa, "pressure_kPa").value_or(-1);
+  in.static_file = optional_path_arg(static_loop, "static");
   in.samples = samples;
   in.sampling = sampling;
   in.intercept = intercept;

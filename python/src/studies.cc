@@ -21,8 +21,10 @@
 namespace modaltyre::python {
 namespace {
 
-py::object validate(const std::string& config_path, const std::string& measured,
+py::object validate(const py::object& config_arg, const py::object& measured_arg,
                     const py::dict& overrides, const py::dict& conditions) {
+  const std::string config_path = path_arg(config_arg, "config_path");
+  const std::string measured = path_arg(measured_arg, "measured_csv");
   const auto sets = overrides_of(overrides);
   const auto settings = conditions_of(conditions);
   nlohmann::json j;
@@ -37,11 +39,10 @@ py::object validate(const std::string& config_path, const std::string& measured,
   return checked(j);
 }
 
-py::dict sweep(const std::string& path, std::optional<int> threads, const py::dict& overrides,
-               bool warm_start) {
-  if (threads && (*threads < 1 || *threads > 4096)) {
-    throw InputError({"threads", 0, ""}, "must be in [1, 4096] (the CLI's --threads range)");
-  }
+py::dict sweep(const py::object& path_object, const py::object& threads_object,
+               const py::dict& overrides, bool warm_start) {
+  const std::string path = path_arg(path_object, "sweep_yaml");
+  const std::optional<int> threads = threads_arg(threads_object, "threads");
   const auto sets = overrides_of(overrides);
   std::vector<report::SweepColumn> cols;
   {
@@ -61,8 +62,9 @@ py::dict sweep(const std::string& path, std::optional<int> threads, const py::di
   return out;
 }
 
-py::object run_transient(const std::string& config_path, const std::string& scenario,
+py::object run_transient(const py::object& config_arg, const std::string& scenario,
                          const py::dict& overrides, const py::dict& conditions) {
+  const std::string config_path = path_arg(config_arg, "config_path");
   auto sets = overrides_of(overrides);
   const auto settings = conditions_of(conditions);
   nlohmann::json j;
@@ -90,8 +92,11 @@ py::object run_transient(const std::string& config_path, const std::string& scen
   return out;
 }
 
-py::object run_discover(const std::string& config_path, const std::string& measured,
-                        const py::dict& overrides, std::optional<int> threads) {
+py::object run_discover(const py::object& config_arg, const py::object& measured_arg,
+                        const py::dict& overrides, const py::object& threads_object) {
+  const std::string config_path = path_arg(config_arg, "config_path");
+  const std::string measured = path_arg(measured_arg, "measured_csv");
+  const std::optional<int> threads = threads_arg(threads_object, "threads");
   const auto sets = overrides_of(overrides);
   nlohmann::json j;
   {

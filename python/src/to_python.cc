@@ -1,6 +1,9 @@
 #include "to_python.h"
 
+#include <cmath>
+
 #include "modaltyre/core/conditions.h"
+#include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/report/check_finite.h"
 
@@ -93,6 +96,66 @@ std::vector<report::ConditionSetting> conditions_of(const py::dict& conditions) 
                          " (config keys go in overrides)");
   }
   return settings;
+}
+
+namespace {
+
+std::string type_name(const py::handle& v) {
+  return py::str(py::type::of(v).attr("__name__")).cast<std::string>();
+}
+
+}  // namespace
+
+std::string path_arg(const py::handle& v, const char* name) {
+  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+  if (py::hasattr(v, "__fspath__")) {
+    const py::object p = py::module_::import("os").attr("fspath")(v);
+    if (py::isinstance<py::str>(p)) return p.cast<std::string>();
+  }
+  throw InputError({name, 0, ""}, "must be a path (str or pathlib.Path), got " + type_name(v));
+}
+
+std::string optional_path_arg(const py::handle& v, const char* name) {
+  return v.is_none() ? std::string() : path_arg(v, name);
+}
+
+double number_arg(const py::handle& v, const char* name) {
+  // bool is an int in Python (and numpy.bool_ has __float__): True is never a load.
+  const std::string type = type_name(v);
+  if (type == "bool" || type == "bool_" || py::isinstance<py::str>(v) ||
+      !(py::isinstance<py::int_>(v) || py::isinstance<py::float_>(v) ||
+        py::hasattr(v, "__float__"))) {
+    throw InputError({name, 0, ""}, "must be a number, got " + type + " " +
+                                        printable(py::repr(v).cast<std::string>()));
+  }
+  const double x = py::float_(py::reinterpret_borrow<py::object>(v)).cast<double>();
+  if (!std::isfinite(x)) throw InputError({name, 0, ""}, "must be a finite number");
+  return x;
+}
+
+std::optional<double> optional_number_arg(const py::handle& v, const char* name) {
+  if (v.is_none()) return std::nullopt;
+  return number_arg(v, name);
+}
+
+std::vector<double> numbers_arg(const py::handle& v, const char* name) {
+  if (py::isinstance<py::str>(v) || !py::hasattr(v, "__iter__")) {
+    throw InputError({name, 0, ""}, "must be a sequence of numbers, got " + type_name(v));
+  }
+  std::vector<double> out;
+  for (const auto& item : v) out.push_back(number_arg(item, name));
+  return out;
+}
+
+std::optional<int> threads_arg(const py::handle& v, const char* name) {
+  if (v.is_none()) return std::nullopt;
+  const double x = number_arg(v, name);
+  if (x != std::floor(x) || x < 1 || x > 4096) {
+    throw InputError({name, 0, ""}, py::str(v).cast<std::string>() +
+                                        " is not a thread count in [1, 4096] (the CLI's "
+                                        "--threads range; None: every core)");
+  }
+  return static_cast<int>(x);
 }
 
 py::object checked(const nlohmann::json& j) {

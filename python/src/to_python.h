@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,26 @@ std::vector<std::string> overrides_of(const py::dict& overrides);
 /// of the catalogue (core/conditions.h) and the CLI's checks of `--set name=value`, errors at
 /// "conditions" (InputError, a name that is no condition included).
 std::vector<report::ConditionSetting> conditions_of(const py::dict& conditions);
+
+/// A path argument: a str or an os.PathLike (pathlib.Path); anything else is an InputError
+/// naming the Python argument `name`.
+std::string path_arg(const py::handle& v, const char* name);
+
+/// An optional path argument: None gives "".
+std::string optional_path_arg(const py::handle& v, const char* name);
+
+/// A number argument: an int or a float (NumPy scalars included), finite; a bool (True is an
+/// int in Python, never a load) or anything else is an InputError naming `name`.
+double number_arg(const py::handle& v, const char* name);
+
+/// None or number_arg.
+std::optional<double> optional_number_arg(const py::handle& v, const char* name);
+
+/// A sequence of number_arg (a str is not a sequence of numbers).
+std::vector<double> numbers_arg(const py::handle& v, const char* name);
+
+/// A thread count as the CLI's --threads takes it: None (every core) or an int in [1, 4096].
+std::optional<int> threads_arg(const py::handle& v, const char* name);
 
 /// Checks the document for non-finite numbers (as the CLI does) and converts it.
 py::object checked(const nlohmann::json& j);

@@ -51,7 +51,8 @@ Footprint footprint_of(const nlohmann::json& c, bool patch3d) {
 // The model, built once (immutable, shared by every call; safe to use from several threads).
 class Tyre {
  public:
-  Tyre(const std::string& config_path, const py::dict& overrides) {
+  Tyre(const py::object& config_path_arg, const py::dict& overrides) {
+    const std::string config_path = path_arg(config_path_arg, "config_path");
     const auto sets = overrides_of(overrides);
     py::gil_scoped_release release;
     model_ = std::make_shared<const contact::TyreModel>(
@@ -77,7 +78,7 @@ class Tyre {
 
   std::vector<Footprint> footprints(const std::vector<double>& loads, std::optional<double> fx,
                                     const py::dict& conditions) const {
-    if (loads.empty()) throw InputError({"loads", 0, ""}, "give at least one load [N]");
+    if (loads.empty()) throw InputError({"loads_N", 0, ""}, "give at least one load [N]");
     const nlohmann::json j = document(loads, fx, conditions);
     std::vector<Footprint> out;
     for (const auto& c : j.at("cases")) out.push_back(footprint_of(c, patch3d()));
@@ -125,14 +126,18 @@ void bind_tyre(py::module_& m) {
   py::class_<Tyre>(m, "Tyre",
                    "A tyre model built once from a config (YAML), shared by every prediction. "
                    "The GIL is released while it is built and while it solves.")
-      .def(py::init<const std::string&, const py::dict&>(), py::arg("config_path"),
+      .def(py::init<const py::object&, const py::dict&>(), py::arg("config_path"),
            py::arg("overrides") = py::dict(),
            "Reads and checks the config (`overrides`: {'tread.modulus_MPa': 8}, like --set) "
            "and builds the model. InputError names file, line and key.")
       .def(
           "footprint",
-          [](const Tyre& t, double load_N, std::optional<double> fx, const py::dict& conditions) {
-            return t.footprints({load_N}, fx, conditions).front();
+          [](const Tyre& t, const py::object& load_N, const py::object& fx,
+             const py::dict& conditions) {
+            return t
+                .footprints({number_arg(load_N, "load_N")},
+                            optional_number_arg(fx, "horizontal_force_N"), conditions)
+                .front();
           },
           py::arg("load_N"), py::arg("horizontal_force_N") = py::none(),
           py::arg("conditions") = py::dict(),
@@ -140,14 +145,24 @@ void bind_tyre(py::module_& m) {
           "(default: the config's) = `modaltyre footprint CONFIG --load N --json`. "
           "`conditions`: {'hold_s': 60, 'surface': 'soil'} = --set hold_s=60 --set surface=soil "
           "(pressure_kPa, hold_s, speed_kmh, branch, surface; README, \"Conditions with --set\").")
-      .def("footprints", &Tyre::footprints, py::arg("loads_N"),
-           py::arg("horizontal_force_N") = py::none(), py::arg("conditions") = py::dict(),
-           "One Footprint per load [N], in order (one solve per load), at `conditions`.")
+      .def(
+          "footprints",
+          [](const Tyre& t, const py::object& loads, const py::object& fx,
+             const py::dict& conditions) {
+            return t.footprints(numbers_arg(loads, "loads_N"),
+                                optional_number_arg(fx, "horizontal_force_N"), conditions);
+          },
+          py::arg("loads_N"), py::arg("horizontal_force_N") = py::none(),
+          py::arg("conditions") = py::dict(),
+          "One Footprint per load [N], in order (one solve per load), at `conditions`.")
       .def(
           "report",
-          [](const Tyre& t, const std::vector<double>& loads, std::optional<double> fx,
-             const py::dict& conditions) { return to_python(t.document(loads, fx, conditions)); },
-          py::arg("loads_N") = std::vector<double>{}, py::arg("horizontal_force_N") = py::none(),
+          [](const Tyre& t, const py::object& loads, const py::object& fx,
+             const py::dict& conditions) {
+            return to_python(t.document(numbers_arg(loads, "loads_N"),
+                                        optional_number_arg(fx, "horizontal_force_N"), conditions));
+          },
+          py::arg("loads_N") = py::tuple(), py::arg("horizontal_force_N") = py::none(),
           py::arg("conditions") = py::dict(),
           "The whole document of `footprint --json` as a dict (default loads: the config's "
           "loads_N), at `conditions` (stated in its 'conditions' object).")
@@ -162,7 +177,8 @@ void bind_tyre(py::module_& m) {
 
   m.def(
       "fit_modes",
-      [](const std::string& path) {
+      [](const py::object& path_object) {
+        const std::string path = path_arg(path_object, "path");
         nlohmann::json j;
         {
           py::gil_scoped_release release;

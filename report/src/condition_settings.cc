@@ -37,7 +37,7 @@ std::vector<ConditionSetting> take_condition_settings(std::vector<std::string>& 
       const auto v = parse_finite_double(s.text);
       if (!v) {
         throw InputError(at, "expected a finite number in " + info->range_text() + ", got '" +
-                                 printable(s.text) + "'");
+                                 printable(s.text) + "'" + decimal_hint(s.text));
       }
       if (!info->in_range(*v)) throw InputError(at, info->refusal(s.text));
       s.value = *v;

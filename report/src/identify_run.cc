@@ -126,8 +126,12 @@ std::string identify_geometry_config(const std::string& method, const std::strin
 nlohmann::json fit_report_json(const rh::FitReport& r) {
   nlohmann::json params = nlohmann::json::object();
   for (const auto& p : r.parameters)
-    params[p.name] = {
-        {"value", round_sig(p.value)}, {"unit", p.unit}, {"std_error", round_sig(p.std_error, 6)}};
+    // std_error 0 is a value computed in closed form from as many data as unknowns (no
+    // redundancy, no error estimate), not an exact one: said so (issue 38).
+    params[p.name] = {{"value", round_sig(p.value)},
+                      {"unit", p.unit},
+                      {"std_error", round_sig(p.std_error, 6)},
+                      {"closed_form", p.std_error == 0}};
   return {{"method", r.method},
           {"parameters", params},
           {"residual_rms", round_sig(r.residual_rms, 6)},

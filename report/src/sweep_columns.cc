@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/studies/sweep_output.h"
 
@@ -14,10 +15,9 @@ constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
 // A cell that is a whole number as written (the sweep file's scalar text).
 bool parse_number(const std::string& cell, double& value) {
-  if (cell.empty()) return false;
-  char* end = nullptr;
-  value = std::strtod(cell.c_str(), &end);
-  return end == cell.c_str() + cell.size() && std::isfinite(value);
+  const auto v = parse_finite_double(cell);
+  if (v) value = *v;
+  return v.has_value();
 }
 
 }  // namespace

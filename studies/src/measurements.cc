@@ -56,7 +56,10 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   // are read.
   schema.may_be_empty = {"message", "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations",
                          "valid"};
+  // A measurement left out of a row (not measured, or lost) is an empty cell or NA: that row
+  // then compares the observables it has (issue 38).
   for (const auto& o : observable_names()) schema.may_be_empty.push_back(o);
+  schema.missing_words = {"NA", "N/A"};  // R, spreadsheets; "nan" stays refused as a number
   // A sweep's parameter columns are dotted config keys, ignored here.
   schema.accept_text_column = [](const std::string& c) { return c.find('.') != std::string::npos; };
   const CsvTable t = read_csv(path, schema);
@@ -108,6 +111,7 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
                        "the config's 3D patch (footprint_3d) takes no horizontal force");
     }
     for (const auto& o : set.observables) {
+      if (t.missing(i, o)) continue;  // not measured in this row
       const double v = t.number(i, o);
       if (o != "rolling_resistance_N" && !(v > 0)) throw InputError(at(o), "must be > 0 mm");
       // A footprint of tens of metres is a unit error (and a calibration target no model meets).
@@ -115,6 +119,11 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
       if (o == "rolling_resistance_N" && !(std::abs(v) <= 1e7))
         throw InputError(at(o), "must be in [-1e7, 1e7] N");
       r.observed[o] = v;
+    }
+    if (r.observed.empty()) {
+      throw InputError(at(set.observables.front()),
+                       "no measured value in this row (every observable is empty or NA): "
+                       "remove the row");
     }
     set.rows.push_back(std::move(r));
   }

@@ -12,6 +12,7 @@
 #include "modaltyre/contact/tyre_model.h"
 #include "modaltyre/contact/validity.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/thread_env.h"
 
 namespace modaltyre::studies {
 
@@ -114,6 +115,7 @@ SweepRow run_case(const SweepCase& sc, const ModelSlot& slot) {
 
 SweepResult run_sweep(const SweepPlan& plan, const SweepOptions& options) {
   SweepResult result;
+  check_omp_num_threads();  // the default below reads it (a Python caller has no main())
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   result.threads = threads;
   result.rows.resize(plan.cases.size());

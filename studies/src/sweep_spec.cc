@@ -110,13 +110,38 @@ void check_condition(const ConditionInfo& info, const SweepValue& v, const Input
     if (!info.value_of(v.text)) throw InputError(at, info.refusal(v.text));
     return;
   }
-  if (!v.number) throw InputError(at, "expected a finite number, got '" + v.text + "'");
+  if (!v.number)
+    throw InputError(
+        at, "expected a finite number, got '" + printable(v.text) + "'" + decimal_hint(v.text));
   if (!info.in_range(*v.number)) throw InputError(at, info.refusal(v.text));
 }
 
 }  // namespace
 
 bool is_sweep_condition(const std::string& key) { return find_condition(key) != nullptr; }
+
+namespace {
+
+// A base that is itself a sweep file (its own base: and grid:) would be read as a tyre config
+// and refused for what a config lacks ("modal.hammer_csv: required", issue 38): name it.
+void refuse_sweep_as_base(const std::string& base, const InputLocation& where) {
+  YAML::Node root;
+  try {
+    root = parse_yaml(read_yaml_file(base, "a YAML config"), base);
+  } catch (const InputError&) {
+    return;  // the config reader reports it with its own words
+  }
+  if (root && root.IsMap() && root["base"] && root["grid"]) {
+    throw InputError(
+        where, "'" + base +
+                   "' is a sweep file (it has base: and grid:), not a tyre config; "
+                   "give its base: (" +
+                   printable(root["base"].IsScalar() ? root["base"].Scalar() : std::string("?")) +
+                   "), or merge the two sweeps");
+  }
+}
+
+}  // namespace
 
 SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
                            const std::vector<std::string>& overrides) {
@@ -151,6 +176,7 @@ SweepSpec parse_sweep_spec(const std::string& yaml, const std::string& name,
         throw InputError(where, "tyre config '" + spec.base_config +
                                     "' is not a regular file (a folder or device?)");
       }
+      refuse_sweep_as_base(spec.base_config, where);
       have_base = true;
     } else if (key == "set") {
       if (kv.second.IsNull()) continue;

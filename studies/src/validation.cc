@@ -95,6 +95,34 @@ void set_covariance(Calibration& cal, const Residual& residual, const Eigen::Vec
                         std::to_string(m - n) + " degrees of freedom)";
 }
 
+// What a user with their own file can do when the config's calibration block does not fit it
+// (issue 38): rows at the ends of the file's load range, the observables the file has, or no
+// calibration at all - each as the --set that does it.
+std::string calibration_fixes(const MeasurementSet& set, const std::vector<std::string>& keys) {
+  const auto& rows = set.rows;
+  std::size_t lo = 0, hi = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i].conditions.load_N < rows[lo].conditions.load_N) lo = i;
+    if (rows[i].conditions.load_N > rows[hi].conditions.load_N) hi = i;
+  }
+  std::ostringstream s;
+  s << "; the config calibrates";
+  for (const auto& k : keys) s << " " << k;
+  s << ": choose rows of " << set.path << " (e.g. its lightest and heaviest loads: --set "
+    << "validation.calibration_rows=[" << rows[lo].row;
+  if (hi != lo) s << "," << rows[hi].row;
+  s << "])";
+  if (!set.observables.empty()) {
+    s << " and observables it has (--set validation.calibration_observables=[";
+    for (std::size_t i = 0; i < set.observables.size(); ++i) {
+      s << (i ? "," : "") << set.observables[i];
+    }
+    s << "])";
+  }
+  s << ", or predict every row without calibration: --set validation.calibrate=[]";
+  return s.str();
+}
+
 }  // namespace
 
 const std::vector<std::string>& validation_observables() {
@@ -156,7 +184,8 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
     if (r < 1 || r > static_cast<int>(measured.size())) {
       throw InputError({config_path, 0, "validation.calibration_rows"},
                        "row " + std::to_string(r) + " does not exist in the measured file (" +
-                           std::to_string(measured.size()) + " rows)");
+                           std::to_string(measured.size()) + " rows)" +
+                           calibration_fixes(set, cal.keys));
     }
     cal_rows.push_back(measured[r - 1]);
   }
@@ -176,8 +205,13 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
   for (const auto& row : cal_rows) {
     for (const auto& obs : cal.observables) {
       if (!row.value(obs)) {
+        const bool column =
+            std::find(set.observables.begin(), set.observables.end(), obs) != set.observables.end();
         throw InputError({config_path, 0, "validation.calibration_observables"},
-                         "calibration row " + std::to_string(row.row) + " has no " + obs);
+                         "calibration row " + std::to_string(row.row) + " has no " + obs +
+                             (column ? " (the cell is empty or NA)"
+                                     : " (" + set.path + " has no " + obs + " column)") +
+                             calibration_fixes(set, cal.keys));
       }
     }
   }

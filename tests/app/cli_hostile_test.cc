@@ -33,20 +33,7 @@ class CliHostile : public modaltyre_test::CliFixture {
   }
 
   /// Runs the CLI with a 60 s limit (a hang shows as exit code 124, not a stuck test).
-  CliRun run_limited(const std::vector<std::string>& args) {
-    std::vector<std::string> all = {"60", MODALTYRE_CLI};
-    all.insert(all.end(), args.begin(), args.end());
-    std::string cmd = "timeout";
-    for (const auto& a : all) cmd += " " + modaltyre_test::quote(a);
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    cmd += " >" + modaltyre_test::quote(out.string()) + " 2>" + modaltyre_test::quote(err.string());
-    const int status = std::system(cmd.c_str());
-    CliRun r;
-    if (status != -1 && WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-    r.out = modaltyre_test::slurp(out);
-    r.err = modaltyre_test::slurp(err);
-    return r;
-  }
+  CliRun run_limited(const std::vector<std::string>& args) { return run_with("timeout 60", args); }
 
   /// Exit 2, a single "error: " line on stderr holding every needle, nothing on stdout.
   void expect_input_error(const CliRun& r, const std::vector<std::string>& needles) {

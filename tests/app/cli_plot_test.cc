@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -175,6 +176,118 @@ TEST_F(PlotCli, DiscoverPanelsLabelThePercentAxisAndSkipAnAllZeroObservable) {
                        "sinking_mm and width_mm"),
             std::string::npos)
       << r.out;
+}
+
+// Issue 38: plots that hid or invented. Each is checked in the script gnuplot receives.
+class HonestPlots : public PlotCli {
+ protected:
+  std::string script() const { return modaltyre_test::slurp(dir_ / "script.gp"); }
+
+  /// Every "set key" line of the script.
+  std::vector<std::string> keys() const {
+    std::vector<std::string> out;
+    std::istringstream in(script());
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("set key ", 0) == 0) out.push_back(line.substr(8));
+    }
+    return out;
+  }
+};
+
+// A legend inside the plot area covered data (validate's width panel, the 2D footprint) or,
+// below short panels, ran into the x label (fit-modes): every legend is outside the data.
+TEST_F(HonestPlots, LegendsAreOutsideTheData) {
+  const auto outside = [&](const std::string& what) {
+    const auto k = keys();
+    ASSERT_FALSE(k.empty()) << what;
+    for (const auto& key : k) {
+      EXPECT_TRUE(key == "off" || key.rfind("below", 0) == 0 || key.rfind("outside", 0) == 0)
+          << what << ": set key " << key;
+    }
+  };
+  plot({"validate", kSrc + "/configs/sf350.yaml", kTable3, "--plot", (dir_ / "v.svg").string()});
+  outside("validate");
+  plot({"footprint", kConfig, "--plot", (dir_ / "f.svg").string()});
+  outside("footprint 2D");
+  plot({"footprint", kSrc + "/configs/sf350.yaml", "--load", "2131", "--load", "8321", "--plot",
+        (dir_ / "f3.svg").string()});
+  outside("footprint 3D");
+  plot({"fit-modes", kSrc + "/configs/data/sf350_hammer_12pt.csv", "--plot",
+        (dir_ / "m.svg").string()});
+  outside("fit-modes");
+  for (const auto& key : keys()) EXPECT_NE(key.find("outside right"), std::string::npos) << key;
+}
+
+// The 3D footprint's 2.1 kN map is about 100 mm long: gnuplot's default ticks every 10 mm
+// collided ("-50-40-30..."). At most four intervals per map.
+TEST_F(HonestPlots, FootprintMapTicksDoNotCollide) {
+  plot({"footprint", kSrc + "/configs/sf350.yaml", "--load", "2131", "--load", "8321", "--plot",
+        (dir_ / "f3.svg").string()});
+  std::istringstream in(script());
+  std::vector<double> steps;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("set xtics ", 0) == 0 && line != "set xtics autofreq") {
+      steps.push_back(std::stod(line.substr(10)));
+    }
+  }
+  ASSERT_EQ(steps.size(), 2u);  // the two maps; the centre-line panel keeps gnuplot's choice
+  EXPECT_GE(steps[0], 25.0);    // an 83 mm patch on a map of about 100 mm: 4 intervals at most
+  EXPECT_GE(steps[1], 40.0);
+}
+
+// discover's residuals at one value of the regime variable belong to rows of other loads: a line
+// through them drew a sawtooth. They are points.
+TEST_F(HonestPlots, DiscoverResidualsArePointsNotASawtooth) {
+  const std::string data = (dir_ / "grid.csv").string();
+  std::ofstream(data) << "load_N,hold_s,sinking_mm\n3000,0,11\n6000,0,21\n3000,60,12\n"
+                         "6000,60,22.5\n3000,600,12.5\n6000,600,23.5\n";
+  plot({"discover", kConfig, data, "--plot", (dir_ / "d.svg").string()});
+  const std::string s = script();
+  EXPECT_EQ(s.find("with linespoints"), std::string::npos) << s.substr(s.find("plot $"));
+  EXPECT_NE(s.find("with points"), std::string::npos);
+}
+
+// tir compare of another tyre size draws the .tir law scaled to the model's size: the legend
+// says how.
+TEST_F(HonestPlots, TirCompareSaysTheLawIsScaled) {
+  plot({"tir", "compare", kSrc + "/configs/sf350.yaml",
+        kSrc + "/tests/data/tir/tyredyn_car205_60R19_mf62.tir", "--plot",
+        (dir_ / "t.svg").string()});
+  const std::string s = script();
+  EXPECT_NE(s.find(".tir law scaled to the model''s size: load/FNOMIN x the model''s FNOMIN"),
+            std::string::npos)
+      << s.substr(s.find("plot $"));
+  EXPECT_NE(s.find("2a/R0 x the model''s R0"), std::string::npos);
+}
+
+// The static loop's unloading branch of eq. (14) went to -100 N near h = 0: a tyre cannot pull
+// the road, so the fitted curves start at zero load.
+TEST_F(HonestPlots, StaticLoopFitStaysAtOrAboveZeroLoad) {
+  const std::string rheo = kSrc + "/tests/data/rheology/";
+  plot({"identify", "free-vibration", rheo + "free_vibration.csv", "--mass-kg", "350",
+        "--section-height-mm", "117", "--static", rheo + "static_loop.csv", "--config", kConfig,
+        "--plot", (dir_ / "s.svg").string()});
+  // The static panel's data blocks: the last two (fitted loading, unloading).
+  std::istringstream in(script());
+  std::vector<std::vector<double>> blocks;
+  bool inside = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("$d", 0) == 0) {
+      blocks.emplace_back();
+      inside = true;
+      continue;
+    }
+    if (line == "EOD") {
+      inside = false;
+      continue;
+    }
+    if (inside) blocks.back().push_back(std::stod(line.substr(line.find(' ') + 1)));
+  }
+  ASSERT_GE(blocks.size(), 4u);
+  for (std::size_t b = blocks.size() - 2; b < blocks.size(); ++b) {
+    ASSERT_FALSE(blocks[b].empty());
+    for (double load : blocks[b]) EXPECT_GE(load, 0.0) << "block " << b;
+  }
 }
 
 }  // namespace

@@ -54,8 +54,12 @@ class CliFixture : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  CliRun run(const std::vector<std::string>& args) {
-    std::string cmd = quote(MODALTYRE_CLI);
+  CliRun run(const std::vector<std::string>& args) { return run_with("", args); }
+
+  /// The CLI behind a shell prefix (e.g. "timeout 60", "env OMP_NUM_THREADS=2"); the prefix is
+  /// the test's own text, the arguments are quoted.
+  CliRun run_with(const std::string& prefix, const std::vector<std::string>& args) {
+    std::string cmd = (prefix.empty() ? "" : prefix + " ") + quote(MODALTYRE_CLI);
     for (const auto& a : args) cmd.append(" ").append(quote(a));
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
     cmd.append(" >").append(quote(out.string())).append(" 2>").append(quote(err.string()));

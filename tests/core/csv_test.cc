@@ -90,6 +90,22 @@ TEST_F(CsvTest, ParseFiniteDouble) {
        {"", "nan", "NaN", "inf", "-inf", "Infinity", "1e999", "1.0x", "abc", "1,2", "0x1p3q"}) {
     EXPECT_FALSE(parse_finite_double(bad).has_value()) << bad;
   }
+  // Hexadecimal (strtod reads it) is refused, with a hint for the readers' messages (issue 38).
+  for (const char* hex : {"0x1000", "0x853", "0x10p4", "-0x2", "0X1A", " 0x1 "}) {
+    EXPECT_FALSE(parse_finite_double(hex).has_value()) << hex;
+    EXPECT_NE(decimal_hint(hex).find("hexadecimal"), std::string::npos) << hex;
+  }
+  EXPECT_EQ(decimal_hint("abc"), "");
+  EXPECT_EQ(parse_finite_double("+1.5E+03"), 1500.0);
+}
+
+// A CSV cell that is a hexadecimal number names its line and column and says why.
+TEST_F(CsvTest, HexadecimalCellIsRefusedWithItsColumn) {
+  const auto p = write("hex.csv", "x,y\n1,2\n0x853,3\n");
+  const auto e = error_of(p);
+  EXPECT_EQ(e.where().line, 3);
+  EXPECT_EQ(e.where().key, "x");
+  EXPECT_NE(std::string(e.what()).find("hexadecimal"), std::string::npos) << e.what();
 }
 
 // A required column absent from the header is reported at line 1 with the column name.

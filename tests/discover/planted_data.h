@@ -3,6 +3,7 @@
 // model on discover's own 2 mm mesh with hidden effect values, relative Gaussian noise (seeded),
 // written as CSV and read back like the CLI reads them.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -73,7 +74,8 @@ inline studies::MeasurementSet make_data(const Planted& p, const std::string& na
   if (p.truth) p.truth(truth.effects);
   std::mt19937 rng(p.seed);
   std::normal_distribution<double> unit(0.0, 1.0);
-  const auto path = std::filesystem::temp_directory_path() / ("modaltyre_hidden_" + name + ".csv");
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("modaltyre_hidden_" + std::to_string(::getpid()) + "_" + name + ".csv");
   std::ofstream out(path);
   out << "load_N,pressure_kPa,hold_s,speed_kmh,branch,surface";
   for (const auto& o : p.observables) out << "," << o;

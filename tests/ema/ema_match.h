@@ -41,8 +41,10 @@ inline ModeMatch match(const PlantedMode& p, const modaltyre::ema::EmaResult& r,
   const auto a = stacked(m.found->radial, m.found->tangential);
   const auto b = stacked(p.radial, p.tangential);
   double ab = 0, aa = 0, bb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::isnan(a[i])) continue;  // a DOF no FRF measured (ema leaves it out of the shape)
     ab += a[i] * b[i], aa += a[i] * a[i], bb += b[i] * b[i];
+  }
   m.freq_err = m.found->freq_hz / p.freq_hz - 1;
   m.damping_err = m.found->damping_ratio / p.damping_ratio - 1;
   m.mac = ab * ab / (aa * bb);

@@ -24,6 +24,9 @@ struct UffOptions {
   int numerator_type = 12;          ///< record 9 field 1: 12 accel., 11 velocity, 8 displacement
   int function_type = 4;            ///< record 6 field 1: 4 FRF, 6 coherence ...
   bool negative_response = false;   ///< write the response direction as -3 / -1 (values negated)
+  /// The direction codes written for radial and tangential DOFs: 3 and 1 in the implied local
+  /// frame; 1 and 2 (r, theta) in a cylindrical displacement system of a file's geometry.
+  int radial_code = 3, tangential_code = 1;
 };
 
 inline std::string fmt(const char* f, auto... args) {
@@ -48,8 +51,9 @@ inline std::vector<double> uff_values(const std::vector<double>& f,
 inline std::string uff58_dataset(const modaltyre::ema::FrfChannel& ch, const std::vector<double>& f,
                                  const UffOptions& o) {
   using modaltyre::ema::Direction;
-  const int rdir = (ch.response.dir == Direction::radial ? 3 : 1) * (o.negative_response ? -1 : 1);
-  const int fdir = ch.reference.dir == Direction::radial ? 3 : 1;
+  const int rdir = (ch.response.dir == Direction::radial ? o.radial_code : o.tangential_code) *
+                   (o.negative_response ? -1 : 1);
+  const int fdir = ch.reference.dir == Direction::radial ? o.radial_code : o.tangential_code;
   const int ord = o.complex ? (o.double_precision ? 6 : 5) : (o.double_precision ? 4 : 2);
   const auto v = uff_values(f, ch.values, o.negative_response ? -1.0 : 1.0, o);
   std::string s = "    -1\n";

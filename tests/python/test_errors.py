@@ -31,8 +31,9 @@ def test_bad_override_and_bad_load(modaltyre):
         modaltyre.Tyre(src("configs", "sf350_2d_table3.yaml"), {"tread.modulus_MPa": -1})
     tyre = modaltyre.Tyre(src("configs", "sf350_2d_table3.yaml"))
     for load in (-5.0, 1e-9, 2e7, float("nan")):
-        with pytest.raises(modaltyre.InputError, match="--load"):
+        with pytest.raises(modaltyre.InputError, match="load_N") as e:
             tyre.footprint(load)
+        assert "--load" not in str(e.value)
     with pytest.raises(modaltyre.InputError, match="1.5 F_z"):
         tyre.footprint(1000.0, 5000.0)
 
@@ -60,3 +61,29 @@ def test_conditions_are_checked_as_the_cli_checks_them(modaltyre):
     with pytest.raises(modaltyre.InputError, match="does not apply here"):
         modaltyre.transient(src("configs", "sf350_2d_table3.yaml"), "rolling",
                             conditions={"hold_s": 60})
+
+
+def test_python_arguments_are_named_and_typed(modaltyre):
+    """Issue 38: a pathlib.Path is a path, True is not a load, threads=0 is refused as the CLI
+    refuses --threads 0, and errors name the Python argument, not the CLI option."""
+    import pathlib
+
+    cfg = pathlib.Path(src("configs", "sf350_2d_table3.yaml"))
+    tyre = modaltyre.Tyre(cfg)
+    assert tyre.footprint(4000).sinking_mm > 0
+    assert modaltyre.fit_modes(pathlib.Path(src("configs", "data", "sf350_hammer_12pt.csv")))
+    with pytest.raises(modaltyre.InputError, match="load_N: must be a number, got bool") as e:
+        tyre.footprint(True)
+    assert e.value.file == "load_N"
+    with pytest.raises(modaltyre.InputError, match="loads_N: must be a number, got bool"):
+        tyre.footprints([4000, False])
+    with pytest.raises(modaltyre.InputError, match="config_path: must be a path"):
+        modaltyre.Tyre(42)
+    measured = pathlib.Path(src("configs", "data", "sf350_footprint_table3.csv"))
+    with pytest.raises(modaltyre.InputError, match="threads: 0 is not a thread count") as e:
+        modaltyre.discover(cfg, measured, threads=0)
+    assert e.value.file == "threads"
+    with pytest.raises(modaltyre.InputError, match="mass_kg") as e:
+        modaltyre.identify("free-vibration", src("tests", "data", "rheology", "free_vibration.csv"),
+                           mass_kg=-1.0, section_height_mm=117.0)
+    assert "--" not in str(e.value)

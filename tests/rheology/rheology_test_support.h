@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the rheology tests: temporary CSV files and running the CLI.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -15,7 +16,9 @@
 namespace modaltyre::rheology::test {
 
 inline std::string temp_file(const std::string& name, const std::string& content) {
-  const auto dir = std::filesystem::temp_directory_path() / "modaltyre_rheology_tests";
+  // One folder per process: ctest -j runs tests of this executable side by side.
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("modaltyre_rheology_tests_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto path = dir / name;
   std::ofstream(path) << content;
@@ -42,8 +45,8 @@ struct Noise {
   double operator()() { return n(rng); }
 };
 
-/// SF-350 geometry as configs/sf350_2d_table3.yaml gives it (r0 294.8 mm, contact width 130 mm), section
-/// height 117 mm, and a 350 kg test mass: the three-element tests' tyre.
+/// SF-350 geometry as configs/sf350_2d_table3.yaml gives it (r0 294.8 mm, contact width 130 mm),
+/// section height 117 mm, and a 350 kg test mass: the three-element tests' tyre.
 inline ThreeElementOptions sf350_three_element_options() {
   ThreeElementOptions o;
   o.r0_m = 0.2948;

@@ -170,8 +170,25 @@ TEST_F(Measurements, TextInANumberColumn) {
   expect_refused(with_cell(kHeader, kRow, "4000,15,110,13O\n"), 3, "width_mm",
                  "not a finite number");
   expect_refused(with_cell(kHeader, kRow, "4 kN,15,110,130\n"), 3, "load_N", "not a finite number");
-  expect_refused(with_cell(kHeader, kRow, "4000,,110,130\n"), 3, "sinking_mm",
+  expect_refused(with_cell(kHeader, kRow, "4000,NA-ish,110,130\n"), 3, "sinking_mm",
                  "not a finite number");
+}
+
+// A value not measured in a row (empty cell, NA or N/A: R's and spreadsheets' marks) leaves that
+// observable out of the row; the row keeps the others (issue 38). A row with none is refused.
+TEST_F(Measurements, MissingValuesArePerRow) {
+  const MeasurementSet s =
+      read(kHeader + std::string("4000,,110,130\n4000,15,NA,130\n") + "4000,15,110,N/A\n");
+  ASSERT_EQ(s.rows.size(), 3u);
+  EXPECT_FALSE(s.rows[0].value("sinking_mm").has_value());
+  EXPECT_EQ(*s.rows[0].value("length_mm"), 110);
+  EXPECT_FALSE(s.rows[1].value("length_mm").has_value());
+  EXPECT_FALSE(s.rows[2].value("width_mm").has_value());
+  EXPECT_EQ(s.observables.size(), 3u);
+  expect_refused(kHeader + std::string("4000,15,110,130\n4000,NA,,N/A\n"), 3, "sinking_mm",
+                 "no measured value in this row");
+  expect_refused(with_cell(kHeader, kRow, "NA,15,110,130\n"), 3, "load_N",
+                 "not a finite number");  // a condition is never missing
 }
 
 TEST_F(Measurements, NaNAndInfinity) {

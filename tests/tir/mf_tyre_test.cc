@@ -193,7 +193,19 @@ INSTANTIATE_TEST_SUITE_P(
         BadMf{"TableNotIncreasing",
               "[MODEL]\nFITTYP = 21\n[DIMENSION]\nUNLOADED_RADIUS = 0.3\n[VERTICAL]\nFNOMIN = "
               "4000\n[DEFLECTION_LOAD_CURVE]\n0 0\n0.01 2000\n0.01 2500\n",
-              10, "DEFLECTION_LOAD_CURVE", "strictly increasing"}),
+              10, "DEFLECTION_LOAD_CURVE", "strictly increasing"},
+        // Issue 38: a version number no Magic Formula writer states, and contact-patch laws
+        // that start negative (Q_RA1 < 0 gave negative contact lengths).
+        BadMf{"FittypUnknown", "[MODEL]\nFITTYP = 999\n", 2, "MODEL.FITTYP",
+              "not a Magic Formula version this reader knows"},
+        BadMf{"NegativeQRa1",
+              MF_HEAD "[VERTICAL]\nFNOMIN = 4000\nVERTICAL_STIFFNESS = 2e5\n[CONTACT_PATCH]\n"
+                      "Q_RA1 = -0.5\nQ_RA2 = 0.7\n",
+              9, "CONTACT_PATCH.Q_RA1", "outside 1e-09 .. 1000"},
+        BadMf{"NegativeQRb1",
+              MF_HEAD "[VERTICAL]\nFNOMIN = 4000\nVERTICAL_STIFFNESS = 2e5\n[CONTACT_PATCH]\n"
+                      "Q_RB1 = -1\nQ_RB2 = 0.7\n",
+              9, "CONTACT_PATCH.Q_RB1", "outside 1e-09 .. 1000"}),
     [](const ::testing::TestParamInfo<BadMf>& info) { return info.param.name; });
 
 }  // namespace

@@ -71,21 +71,62 @@ TEST(TirReader, UnitsConvertToSi) {
   EXPECT_FALSE(read_units(parse_tir("[MODEL]\n", "mem.tir")).stated);
 }
 
-// Goodyear's files in Project Chrono repeat [DEFLECTION_LOAD_CURVE] at their end
-// (tests/data/tir/chrono_feda_*): the first is used, as Chrono's reader uses it, with a note.
-TEST(TirReader, RepeatedSectionKeepsTheFirstWithANote) {
+// A section given twice with other contents states two values for one parameter (Goodyear's
+// files in Project Chrono repeat [DEFLECTION_LOAD_CURVE] with another table): refused naming both
+// lines, as a key given twice is (issue 38). A verbatim repeat is read once, with a note.
+TEST(TirReader, RepeatedSectionIsRefusedUnlessVerbatim) {
+  try {
+    parse_tir(
+        "[DEFLECTION_LOAD_CURVE]\n{pen fz}\n0 0\n0.01 1000\n[VERTICAL]\nFNOMIN = 900\n"
+        "[deflection_load_curve]\n{pen fz}\n0 0\n0.02 1000\n0.03 2000\n",
+        "rep.tir");
+    ADD_FAILURE() << "a repeated section with other contents was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 7);
+    EXPECT_EQ(e.where().key, "DEFLECTION_LOAD_CURVE");
+    EXPECT_NE(std::string(e.what()).find("given again with other contents (first on line 1)"),
+              std::string::npos)
+        << e.what();
+  }
+  try {
+    parse_tir("[VERTICAL]\nFNOMIN = 900\n[VERTICAL]\nFNOMIN = 1900\n", "v.tir");
+    ADD_FAILURE() << "two FNOMIN in two [VERTICAL] sections were read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 3);
+  }
   const TirFile f = parse_tir(
-      "[DEFLECTION_LOAD_CURVE]\n{pen fz}\n0 0\n0.01 1000\n[VERTICAL]\nFNOMIN = 900\n"
-      "[deflection_load_curve]\n{pen fz}\n0 0\n0.02 1000\n0.03 2000\n",
-      "rep.tir");
-  EXPECT_EQ(f.sections.size(), 3u);
-  ASSERT_EQ(f.section("DEFLECTION_LOAD_CURVE")->table.rows.size(), 2u);
-  EXPECT_DOUBLE_EQ(f.section("DEFLECTION_LOAD_CURVE")->table.rows[1][0], 0.01);
+      "[VERTICAL]\nFNOMIN = 900\n[DIMENSION]\nWIDTH = 0.2\n"
+      "[vertical]\nfnomin = 900\n",
+      "same.tir");
+  EXPECT_DOUBLE_EQ(*f.value("VERTICAL", "FNOMIN")->number, 900);
   ASSERT_EQ(f.notes.size(), 1u);
-  EXPECT_NE(f.notes[0].find("rep.tir:7: section [DEFLECTION_LOAD_CURVE] given again (first on "
-                            "line 1); the first is used"),
+  EXPECT_NE(f.notes[0].find("same.tir:5: section [VERTICAL] given again (first on line 1) with "
+                            "the same contents"),
             std::string::npos)
       << f.notes[0];
+}
+
+// Old Mac line ends (CR only) would make the file one line: refused with what to do. A Latin-1
+// byte in a value is refused naming SECTION.KEY; in a comment it is kept (never interpreted).
+TEST(TirReader, CrOnlyLineEndsAndLatin1ValuesAreRefused) {
+  try {
+    parse_tir("[VERTICAL]\rFNOMIN = 900\r", "cr.tir");
+    ADD_FAILURE() << "CR-only line ends read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("carriage return"), std::string::npos) << e.what();
+  }
+  try {
+    parse_tir("[MODEL]\nTYRESIDE = 'caf\xE9'\n", "l1.tir");
+    ADD_FAILURE() << "Latin-1 value read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 2);
+    EXPECT_EQ(e.where().key, "MODEL.TYRESIDE");
+    EXPECT_NE(std::string(e.what()).find("not UTF-8"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(
+      parse_tir("[MODEL]\nFITTYP = 62 $ 25\xB0"
+                "C\n",
+                "comment.tir"));
 }
 
 // `KEY =` with nothing after it: a parameter its writer left unset (MATLAB tyre libraries write

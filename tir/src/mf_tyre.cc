@@ -109,6 +109,17 @@ void identify_model(const TirFile& f, MfTyre& t) {
                        "'" + printable(fittyp->text) + "' is not a Magic Formula version number");
     }
     t.fittyp = static_cast<int>(*fittyp->number);
+    // The Magic Formula versions writers state (MSC Adams' and MF-Tool's manuals, mfeval):
+    // 5 PAC2002, 6 and 21 MF-Tyre 5.x, 61 MF-Tyre 6.1, 62 MF-Tyre/MF-Swift 6.2. Any other number
+    // is another model or a typing error, whose laws this reader would only guess.
+    constexpr int kKnownFittyp[] = {5, 6, 21, 61, 62};
+    if (std::find(std::begin(kKnownFittyp), std::end(kKnownFittyp), t.fittyp) ==
+        std::end(kKnownFittyp)) {
+      throw InputError({f.path, fittyp->line, "MODEL.FITTYP"},
+                       std::to_string(t.fittyp) +
+                           " is not a Magic Formula version this reader knows: 5 (PAC2002), "
+                           "6 or 21 (MF-Tyre 5.x), 61 (MF-Tyre 6.1), 62 (MF-Tyre/MF-Swift 6.2)");
+    }
     t.model_name = t.fittyp == 61   ? "MF-Tyre 6.1 (FITTYP 61)"
                    : t.fittyp == 62 ? "MF-Tyre/MF-Swift 6.2 (FITTYP 62)"
                                     : "Magic Formula, FITTYP " + std::to_string(t.fittyp);
@@ -213,9 +224,14 @@ void read_vertical(const TirFile& f, const Reader& r, MfTyre& t) {
 }
 
 void read_patch(const Reader& r, MfTyre& t) {
-  t.q_ra1 = r.number("CONTACT_PATCH", "Q_RA1", Dimension::none, -1e3, 1e3, "");
+  // A3.7 and A3.8 start with Q_RA1 sqrt(x) and Q_RB1 x^(1/3): a lightly loaded tyre's length and
+  // width grow with them, so they are positive (a negative one gives negative lengths). The
+  // second coefficients may be negative (the laws then bend over; MfTyre::length_m gives no
+  // value where a law has fallen to zero).
+  constexpr double kTiny = 1e-9;
+  t.q_ra1 = r.number("CONTACT_PATCH", "Q_RA1", Dimension::none, kTiny, 1e3, "");
   t.q_ra2 = r.number("CONTACT_PATCH", "Q_RA2", Dimension::none, -1e3, 1e3, "");
-  t.q_rb1 = r.number("CONTACT_PATCH", "Q_RB1", Dimension::none, -1e3, 1e3, "");
+  t.q_rb1 = r.number("CONTACT_PATCH", "Q_RB1", Dimension::none, kTiny, 1e3, "");
   t.q_rb2 = r.number("CONTACT_PATCH", "Q_RB2", Dimension::none, -1e3, 1e3, "");
   // Which of a pair is missing: "no Q_RA1 and Q_RA2", or "Q_RB1 but no Q_RB2".
   const auto missing = [](const std::optional<double>& a, const std::optional<double>& b,
@@ -276,13 +292,18 @@ double MfTyre::vertical_stiffness_N_m() const {
 
 std::optional<double> MfTyre::length_m(double load) const {
   if (!q_ra1 || !q_ra2) return std::nullopt;
-  return 2 * mf_half_length_m(unloaded_radius_m, *q_ra1, *q_ra2, load / vertical_stiffness_N_m());
+  const double a =
+      mf_half_length_m(unloaded_radius_m, *q_ra1, *q_ra2, load / vertical_stiffness_N_m());
+  if (!(a > 0)) return std::nullopt;  // past where a negative Q_RA2 brings the law to zero
+  return 2 * a;
 }
 
 std::optional<double> MfTyre::width_at_m(double load) const {
   if (!q_rb1 || !q_rb2 || !width_m) return std::nullopt;
-  return 2 * mf_half_width_m(unloaded_radius_m, *width_m, *q_rb1, *q_rb2,
-                             load / vertical_stiffness_N_m());
+  const double b =
+      mf_half_width_m(unloaded_radius_m, *width_m, *q_rb1, *q_rb2, load / vertical_stiffness_N_m());
+  if (!(b > 0)) return std::nullopt;  // past where a negative Q_RB2 brings the law to zero
+  return 2 * b;
 }
 
 MfTyre interpret_tir(const TirFile& file) {

@@ -154,6 +154,17 @@ TirFit fit_tir(const contact::TyreModel& model, const TirExportOptions& options)
   }
   const auto loads = options.loads_N.empty() ? load_grid(f.fnomin_N, 0.25, 2, 12) : options.loads_N;
   if (loads.size() < 3) throw InputError({"--loads", 0, ""}, "give at least 3 loads to fit");
+  // Each law has two coefficients: three loads that are not all different leave a fit with
+  // fewer equations than unknowns (issue 38: 4000 4000 4000 ended as a failed computation).
+  std::vector<double> distinct = loads;
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  if (distinct.size() < 3) {
+    std::ostringstream given;
+    for (double l : loads) given << (given.tellp() > 0 ? " " : "") << l;
+    throw InputError({"--loads", 0, ""},
+                     "give at least 3 different loads to fit (given: " + given.str() + ")");
+  }
   f.curve = sample_model(model, loads);
   fit_vertical(f);
   fit_patch(f);

@@ -76,6 +76,12 @@ class Parser {
 
   void line(std::string raw, int no) {
     no_ = no;
+    const std::size_t cr = raw.find('\r');
+    if (cr != std::string::npos && cr + 1 < raw.size()) {
+      fail("",
+           "a carriage return ends a line on its own (old Mac line ends?): save the file with "
+           "LF or CRLF line ends");
+    }
     if (raw.size() > limits_.max_line_bytes) {
       fail("", "line of " + std::to_string(raw.size()) + " bytes; refusing lines over " +
                    std::to_string(limits_.max_line_bytes) + " bytes (is it a .tir file?)");
@@ -84,6 +90,15 @@ class Parser {
     if (no == 1 && raw.rfind("\xEF\xBB\xBF", 0) == 0) raw.erase(0, 3);
     std::string comment;
     const std::string content = trim(strip_comment(raw, &comment));
+    // Comments may carry a writer's Latin-1 (a degree sign): they are kept, never interpreted.
+    if (!valid_utf8(content)) {
+      const std::size_t eq = content.find('=');
+      const std::string key = eq == std::string::npos ? "" : upper(trim(content.substr(0, eq)));
+      fail(is_name(key) ? dotted(key) : "",
+           "'" + printable(content) +
+               "' has bytes that are not UTF-8 (a Latin-1 or Windows-1252 file?): save the file "
+               "as UTF-8");
+    }
     if (!comment.empty() && file_.comments.size() < 1000) file_.comments.push_back(comment);
     if (content.empty()) return;
     if (content[0] == '[') return section_header(content);
@@ -112,17 +127,7 @@ class Parser {
     if (!is_name(name)) {
       fail("", "'" + printable(content) + "' is not a section name (letters, digits, '_')");
     }
-    // A section given twice: the first is the one used, as Project Chrono's reader (a linear
-    // search from the top of the file) uses it; Goodyear's files for Chrono repeat
-    // [DEFLECTION_LOAD_CURVE] at their end. The repeat is still read (and checked), then ignored.
-    for (const auto& s : file_.sections) {
-      if (s.name == name && file_.notes.size() < kMaxNotes) {
-        file_.notes.push_back(file_.path + ":" + std::to_string(no_) + ": section [" + name +
-                              "] given again (first on line " + std::to_string(s.line) +
-                              "); the first is used");
-        break;
-      }
-    }
+    // A section given twice is compared with its first when the file is read (same_contents).
     if (file_.sections.size() >= limits_.max_sections) {
       fail(name, "more than " + std::to_string(limits_.max_sections) + " sections");
     }
@@ -229,6 +234,47 @@ class Parser {
   std::size_t entries_ = 0, rows_ = 0;
 };
 
+bool same_contents(const TirSection& a, const TirSection& b) {
+  if (a.entries.size() != b.entries.size()) return false;
+  for (const auto& [key, value] : a.entries) {
+    const auto it = b.entries.find(key);
+    if (it == b.entries.end() || it->second.text != value.text ||
+        it->second.quoted != value.quoted) {
+      return false;
+    }
+  }
+  return a.table.columns == b.table.columns && a.table.rows == b.table.rows;
+}
+
+// A section given twice: a verbatim repeat is harmless (noted, the first is used); a repeat
+// with other contents states two values for one parameter, which simulators resolve
+// differently (Project Chrono's reader takes the first by a search from the top, a reader that
+// overwrites takes the last): refused, as a key given twice is (issue 38).
+void check_repeated_sections(TirFile& file) {
+  for (std::size_t i = 0; i < file.sections.size(); ++i) {
+    const TirSection& again = file.sections[i];
+    for (std::size_t j = 0; j < i; ++j) {
+      const TirSection& first = file.sections[j];
+      if (first.name != again.name) continue;
+      if (!same_contents(first, again)) {
+        throw InputError({file.path, again.line, again.name},
+                         "section [" + again.name +
+                             "] given again with other contents (first on "
+                             "line " +
+                             std::to_string(first.line) +
+                             "): which one a simulator uses depends on its reader; delete the "
+                             "one that does not hold your tyre's values");
+      }
+      if (file.notes.size() < kMaxNotes) {
+        file.notes.push_back(file.path + ":" + std::to_string(again.line) + ": section [" +
+                             again.name + "] given again (first on line " +
+                             std::to_string(first.line) + ") with the same contents");
+      }
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 const TirSection* TirFile::section(const std::string& name) const {
@@ -266,6 +312,7 @@ TirFile parse_tir(const std::string& text, const std::string& name, const TirLim
   if (file.sections.empty()) {
     throw InputError({name, 0, ""}, "no [SECTION] header: not a .tir property file");
   }
+  check_repeated_sections(file);
   return file;
 }
 

@@ -26,6 +26,9 @@ struct CsvSchema {
   /// Columns whose cells may be empty; an empty number cell is refused only when it is read
   /// (CsvTable::number), so that a caller can look at other cells of the row first.
   std::vector<std::string> may_be_empty;
+  /// Words that mark a missing value in a may_be_empty column, read as an empty cell (e.g. R's
+  /// and spreadsheets' NA); CsvTable::missing tells them apart from numbers.
+  std::vector<std::string> missing_words;
   /// Accepts further header names as optional text columns (e.g. a sweep's dotted config-key
   /// columns); any other unknown name is still an error.
   std::function<bool(const std::string&)> accept_text_column;
@@ -44,6 +47,8 @@ class CsvTable {
   /// Finite number at (row, column); column must be numeric and present. An empty cell (allowed
   /// by CsvSchema::may_be_empty) is an InputError naming file, line and column.
   double number(std::size_t row, const std::string& column) const;
+  /// The cell is empty or one of CsvSchema::missing_words (a may_be_empty column).
+  bool missing(std::size_t row, const std::string& column) const;
   /// Number or fallback when the column is absent.
   double number_or(std::size_t row, const std::string& column, double fallback) const;
   const std::string& text(std::size_t row, const std::string& column) const;
@@ -76,7 +81,12 @@ std::vector<std::string> read_csv_header(const std::string& path);
 /// UTF-8 become \xNN, and text longer than max_bytes is cut with "...".
 std::string printable(const std::string& text, std::size_t max_bytes = 40);
 
-/// Parses a finite double; nullopt for anything else (text, NaN, inf, trailing garbage).
+/// Parses a finite double in decimal notation (digits, sign, '.', exponent); nullopt for anything
+/// else: text, NaN, inf, trailing garbage and hexadecimal ("0x1p4"), which strtod would read.
 std::optional<double> parse_finite_double(const std::string& text);
+
+/// " (hexadecimal is not read: write the number in decimal)" when `text` looks like a
+/// hexadecimal number, else "": appended to a reader's "is not a finite number".
+std::string decimal_hint(const std::string& text);
 
 }  // namespace modaltyre

@@ -31,12 +31,20 @@ struct PlotPanel {
   std::string xlabel;  ///< with unit, e.g. "x along the road [mm]"
   std::string ylabel;
   std::vector<PlotSeries> series;
-  std::string key = "top left box opaque";  ///< gnuplot legend placement, e.g. "below"
-  double xmin = 0, xmax = 0;                ///< fixed x range when xmax > xmin
-  double ymin = 0, ymax = 0;                ///< fixed y range when ymax > ymin
-  PlotImage image = {};                     ///< drawn under the series when not empty
-  bool equal_axes = false;  ///< one unit as long on both axes (a footprint's true shape)
+  /// gnuplot legend placement. Outside the plot area by default: a legend inside it covered
+  /// data (issue 38: validate's width panel, the 2D footprint); e.g. "outside right top".
+  std::string key = "below";
+  double xmin = 0, xmax = 0;  ///< fixed x range when xmax > xmin
+  double ymin = 0, ymax = 0;  ///< fixed y range when ymax > ymin
+  PlotImage image = {};       ///< drawn under the series when not empty
+  bool equal_axes = false;    ///< one unit as long on both axes (a footprint's true shape)
+  /// Distance between x tick labels (0: gnuplot's choice, which crowds a narrow equal-axes
+  /// panel until the labels collide; see nice_tick_step).
+  double xtics_step = 0;
 };
+
+/// A tick distance of 1, 2 or 5 x 10^k giving at most `max_ticks` intervals over `span`.
+double nice_tick_step(double span, int max_ticks);
 
 struct PlotFigure {
   std::vector<PlotPanel> panels;  ///< drawn side by side (1..3) or in a grid

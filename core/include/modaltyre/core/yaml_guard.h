@@ -6,7 +6,10 @@
 //    expand into exponentially many nodes ("billion laughs"), and a config never needs them;
 //  - a second document ("---") is refused instead of being silently ignored;
 //  - the number of nodes is bounded, and so is their nesting: yaml-cpp gives up on 10 000 nested
-//    '[' or '{' with "bad file" (its parser recurses per level), named here at the line.
+//    '[' or '{' with "bad file" (its parser recurses per level), named here at the line;
+//  - text that is not UTF-8 text (core/input_file.h, text_problem: a NUL byte, a Latin-1 byte,
+//    CR-only line ends) is refused at its line, with the key whose value or name holds the byte,
+//    instead of failing later in the JSON writer or with yaml-cpp's unrelated message.
 #include <string>
 
 namespace modaltyre {

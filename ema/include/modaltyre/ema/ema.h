@@ -42,7 +42,8 @@ struct EmaMode {
   double recurrence = 0;  ///< in the stabilisation diagram (PoleSelection)
   /// |A| / (2 zeta w^2): the receptance at resonance, root-sum-square over the FRFs [m/N]
   double peak_receptance = 0;
-  std::vector<double> radial, tangential;  ///< per point [kg^-1/2] (unscaled: largest = 1)
+  /// Per point [kg^-1/2] (unscaled: largest = 1); NaN where no FRF measured the DOF.
+  std::vector<double> radial, tangential;
 };
 
 struct DroppedMode {
@@ -57,8 +58,9 @@ struct EmaResult {
   bool roving_hammer = false;  ///< the shared DOF is the response (reciprocity used)
   bool scaled = true;          ///< shapes are mass-normalised
   double band_lo_hz = 0, band_hi_hz = 0;
-  std::vector<int> points;        ///< point numbers, ascending
-  std::vector<double> angle_deg;  ///< equally spaced, 0 at the first point
+  std::vector<int> points;  ///< point numbers, ascending
+  /// From the UFF geometry when the file has one, else equally spaced; 0 at the first point.
+  std::vector<double> angle_deg;
   bool has_tangential = false, has_radial = false;
   std::vector<EmaMode> modes;  ///< ascending in frequency
   std::vector<DroppedMode> dropped;
@@ -66,6 +68,9 @@ struct EmaResult {
   std::vector<double> sum_freq_hz, sum_magnitude;  ///< sum of |H| over the FRFs, in the band
   double synthesis_error = 0;  ///< relative RMS of measured minus re-synthesised FRFs (band)
   std::vector<std::string> notes;
+  /// Where the identification is unsure (docs/ema.md, "Warnings"): poor MPC or stabilisation,
+  /// a band cutting modes, an FRF type most modes contradict, unevenly spaced points.
+  std::vector<std::string> warnings;
 };
 
 /// Runs the identification. InputError (exit 2) for a layout it cannot use (no shared DOF, no
@@ -74,7 +79,9 @@ struct EmaResult {
 EmaResult run_ema(const FrfSet& set, const EmaOptions& options);
 
 /// The hammer CSV of `fit-modes` and the tyre configs:
-/// mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential.
+/// mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential; a DOF no FRF measured is an
+/// empty cell. Unscaled shapes carry a last column `scaling` = `unscaled` (and a comment line
+/// saying so), which modal::read_hammer_csv reads as HammerData::unscaled.
 std::string hammer_csv(const EmaResult& result);
 
 /// Resolves the FRF type: the file's when it states one (a different `given` is an InputError

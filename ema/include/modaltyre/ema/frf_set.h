@@ -6,6 +6,7 @@
 // direction is turned into the positive one by a sign change on reading).
 #include <complex>
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,9 @@ struct FrfSet {
   bool type_from_file = false;  ///< the file stated the type (UFF records 9-10)
   std::vector<double> freq_hz;  ///< strictly increasing, >= 0
   std::vector<FrfChannel> channels;
+  /// Angle of each point around the tyre from the file's geometry (UFF datasets 15/2411, 0 at
+  /// the lowest-numbered point); empty without one (points then equally spaced in number order).
+  std::map<int, double> point_angle_deg;
 };
 
 /// Multiplies every value by (j omega)^(to - from): receptance -> mobility -> accelerance and

@@ -5,26 +5,32 @@
 //   mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential
 // Shape values are mass-normalised, unit kg^-1/2, so that sum_k phi_i phi_j / omega_k^2 is a
 // compliance in m/N (see carcass_kernel.h). Points must be N >= 6, equally spaced on the
-// circumference, the same count for every mode.
+// circumference, the same count for every mode. An optional last column `scaling` says how the
+// shapes are scaled, the same word on every row: `mass_normalised` (the default when the column
+// is absent) or `unscaled` (`modaltyre ema --unscaled`: largest value 1, no physical scale).
 #include <string>
 #include <vector>
 
 namespace modaltyre::modal {
 
 struct MeasuredMode {
-  int id = 0;                   ///< mode number as in the file
-  double freq_hz = 0.0;         ///< natural frequency [Hz], > 0
-  double damping_ratio = 0.0;   ///< modal damping ratio [-], 0 <= zeta < 1
-  std::vector<double> angle_rad;  ///< measurement angles [rad], sorted ascending
-  std::vector<double> radial;     ///< radial shape values [kg^-1/2]
-  std::vector<double> tangential; ///< tangential shape values [kg^-1/2]
-  int first_line = 0;           ///< line of its first row (for messages)
+  int id = 0;                      ///< mode number as in the file
+  double freq_hz = 0.0;            ///< natural frequency [Hz], > 0
+  double damping_ratio = 0.0;      ///< modal damping ratio [-], 0 <= zeta < 1
+  std::vector<double> angle_rad;   ///< measurement angles [rad], sorted ascending
+  std::vector<double> radial;      ///< radial shape values [kg^-1/2]
+  std::vector<double> tangential;  ///< tangential shape values [kg^-1/2]
+  int first_line = 0;              ///< line of its first row (for messages)
 };
 
 struct HammerData {
   std::string path;
-  int points = 0;  ///< N, points per mode
+  int points = 0;                   ///< N, points per mode
   std::vector<MeasuredMode> modes;  ///< in the order they first appear
+  /// The shapes carry no mass normalisation (column `scaling` = `unscaled`): their scale, and so
+  /// any compliance or footprint built on them, is arbitrary. What the model does with them is
+  /// the caller's decision; the reader only reports it.
+  bool unscaled = false;
 };
 
 /// Minimum number of points a mode needs (orders 0..2 resolvable).

@@ -12,8 +12,10 @@
 //   1.0  2.0 ...     a table row (numbers only), with or without a {...} header
 // Section and key names are compared case-insensitively (stored upper-case). Sections and keys
 // the bridge does not use are kept, not rejected. A key given twice in a section is refused
-// (which value would a simulator take?), as is a key outside any section; a section given twice
-// is read, and the first one is used (as Project Chrono's reader does), with a note. `KEY =` with
+// (which value would a simulator take?), as is a key outside any section. A section given twice
+// with different contents is refused for the same reason (simulators disagree: Project Chrono's
+// reader takes the first, a reader that overwrites takes the last); a verbatim repeat is read
+// once, with a note. `KEY =` with
 // nothing after it (written by some tools for a parameter that is not set) has no value.
 //
 // Every problem is an InputError naming the file, the line and the key (SECTION.KEY); sizes are
