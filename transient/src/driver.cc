@@ -10,6 +10,7 @@
 #include "modaltyre/transient/contact_newton.h"
 #include "modaltyre/transient/ode_system.h"
 #include "modaltyre/transient/tread_window.h"
+#include "sample_reuse.h"
 
 namespace modaltyre::transient {
 namespace {
@@ -98,36 +99,6 @@ TransientSample observe(const TransientModel& M, const TransientSystem& sys,
   }
   return s;
 }
-
-/// Decides whether an output sample can repeat the last computed one: every state component
-/// moved by less than kReuseFraction of its error weight (rtol |y| + atol) since then. The
-/// samples are otherwise an O(m (nq + nr)) evaluation each, which dominated long settled holds.
-class SampleReuse {
- public:
-  SampleReuse(double rtol, const std::vector<double>& atol, bool allowed)
-      : rtol_(rtol),
-        atol_(
-            Eigen::Map<const Eigen::ArrayXd>(atol.data(), static_cast<Eigen::Index>(atol.size()))),
-        allowed_(allowed) {}
-  void remember(const std::vector<double>& y) {
-    last_ = Eigen::Map<const Eigen::ArrayXd>(y.data(), static_cast<Eigen::Index>(y.size()));
-    bound_ = kReuseFraction * (rtol_ * last_.abs() + atol_);
-  }
-  bool unchanged(const std::vector<double>& y) const {
-    if (!allowed_ || last_.size() != static_cast<Eigen::Index>(y.size())) return false;
-    // One vectorised pass (a 120 s hold checks up to 60000 samples of ~800 states).
-    const Eigen::Map<const Eigen::ArrayXd> v(y.data(), last_.size());
-    return ((v - last_).abs() <= bound_).all();
-  }
-
- private:
-  /// Far below the integrator's own local error (1 in the same weighted norm).
-  static constexpr double kReuseFraction = 1e-3;
-  double rtol_;
-  Eigen::ArrayXd atol_;
-  bool allowed_;
-  Eigen::ArrayXd last_, bound_;  ///< last computed sample's state, kReuseFraction of its weights
-};
 
 /// One run on the units `units` (tread_window.h); sets `escaped` (and stops) if a unit outside
 /// them reached the road.
@@ -219,7 +190,7 @@ TransientResult run_on_units(const TransientModel& M, Scenario scenario,
   Eigen::VectorXd f_sample;  // observe()'s work vector
   const double sag_min = M.tyre.sag.minCoeff();
   res.samples.push_back(observe(M, sys, plan, 0.0, y.data(), f_sample, sag_min));
-  SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.cleat);
+  detail::SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.cleat);
   reuse.remember(y);
   std::vector<double> breaks = plan.breakpoints;
   std::sort(breaks.begin(), breaks.end());
@@ -355,6 +326,11 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
                               const TransientRunOptions& options) {
   const auto wall0 = std::chrono::steady_clock::now();
   const ScenarioPlan plan = plan_scenario(M, scenario);
+  if (scenario == Scenario::cleat && M.settings.cleat.width_m > 0) {
+    throw InputError(InputLocation{M.tyre.config.source, 0, "transient.cleat.width_mm"},
+                     "the 2D patch's road is uniform across the tread: a cleat narrower than the "
+                     "tread needs the 3D patch (a config with footprint_3d:)");
+  }
   const StaticContact initial = static_contact(M, plan.initial_load_N);
   const UnitRange all{0, M.m - 1};
   UnitRange units = all;

@@ -6,6 +6,9 @@
 //   ode_system.h  right-hand side, Jacobian and contact root functions
 //   tread_window.h  the units that can touch in a scenario (the ODE's tread states)
 //   driver.h      run_transient(): integration, contact switches, output samples
+//   cell_model.h  the 3D patch's cells on the transient carcass (run_transient_3d)
+#include "modaltyre/transient/cell_model.h"
+#include "modaltyre/transient/decay.h"
 #include "modaltyre/transient/driver.h"
 #include "modaltyre/transient/model.h"
 #include "modaltyre/transient/ode_system.h"
