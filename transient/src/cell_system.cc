@@ -184,13 +184,7 @@ void CellSystem::rhs(double t, const double* y, double* ydot) const {
   for (int l = 0; l < nr; ++l)
     ydot[2 * nq + l] = (M.lambda(l) * Vf_(l) - y[2 * nq + l]) / M.tau_residual_s;
   const int Z = M.z_index();
-  if (plan_.hub_free()) {
-    ydot[Z] = y[Z + 1];
-    ydot[Z + 1] = (plan_.load(t) - load) / M.settings.hub_mass_kg;
-  } else {  // a prescribed hub: z is the plan's, the states z, w stay as they are
-    ydot[Z] = 0;
-    ydot[Z + 1] = 0;
-  }
+  plan_.hub_rates(t, y + Z, load, M.settings.hub_mass_kg, ydot + Z);
   if (!relax_) return;
   // c' De/Dt + k' e = f per slot; De/Dt = de/dt - Omega de/dtheta along each class's sections
   // (second-order upwind from the front of its range, e = 0 entering: ode_system.h).

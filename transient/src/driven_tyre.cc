@@ -77,6 +77,22 @@ bool finite_hub(const HubState& s) {
          !std::isinf(s.spin_rad_s);  // NaN spin: free rolling
 }
 
+/// The static states at a deflection of the 2D units and of the 3D cells.
+StaticContact units_at_deflection(const TransientModel& M, double d) {
+  return static_at_deflection<StaticContact>(d, [&](double load) {
+    StaticContact c = static_contact(M, load);
+    const double s = c.sinking_m;
+    return std::make_pair(std::move(c), s);
+  });
+}
+StaticCells cells_at_deflection(const CellModel& cm, double d) {
+  return static_at_deflection<StaticCells>(d, [&](double load) {
+    StaticCells c = static_cells(cm, load);
+    const double s = c.sinking_m;
+    return std::make_pair(std::move(c), s);
+  });
+}
+
 }  // namespace
 
 WheelLoad wheel_load(const TransientSample& s) {
@@ -117,20 +133,8 @@ struct DrivenTyre::Impl {
   }
 
   /// A static state at a deflection, of the patch in use.
-  StaticContact units_at(double d) const {
-    return static_at_deflection<StaticContact>(d, [&](double load) {
-      StaticContact c = static_contact(M, load);
-      const double s = c.sinking_m;
-      return std::make_pair(std::move(c), s);
-    });
-  }
-  StaticCells cells_at(double d) const {
-    return static_at_deflection<StaticCells>(d, [&](double load) {
-      StaticCells c = static_cells(*cm, load);
-      const double s = c.sinking_m;
-      return std::make_pair(std::move(c), s);
-    });
-  }
+  StaticContact units_at(double d) const { return units_at_deflection(M, d); }
+  StaticCells cells_at(double d) const { return cells_at_deflection(*cm, d); }
 
   /// A new ODE (tread states on the touchable range, or everywhere when `all`) and its
   /// integrator at (t, y); y empty: the ODE's own initial (static) state.
@@ -320,13 +324,7 @@ TransientResult run_prescribed(const TransientModel& M,
   const bool three_d = M.tyre.config.footprint_3d.has_value() && !force_2d;
   if (three_d) {
     const CellModel cm = build_cell_model(M, 0.0, !options.per_column_cells);
-    auto at = [&](double d) {
-      return static_at_deflection<StaticCells>(d, [&](double load) {
-        StaticCells c = static_cells(cm, load);
-        const double s = c.sinking_m;
-        return std::make_pair(std::move(c), s);
-      });
-    };
+    auto at = [&](double d) { return cells_at_deflection(cm, d); };
     const StaticCells initial = at(d0);
     std::vector<UnitRange> ranges;
     if (!options.all_tread_states && d_max > 0) ranges = touchable_sections(cm, plan, at(d_max));
@@ -339,13 +337,7 @@ TransientResult run_prescribed(const TransientModel& M,
       res.units_escaped = true;
     }
   } else {
-    auto at = [&](double d) {
-      return static_at_deflection<StaticContact>(d, [&](double load) {
-        StaticContact c = static_contact(M, load);
-        const double s = c.sinking_m;
-        return std::make_pair(std::move(c), s);
-      });
-    };
+    auto at = [&](double d) { return units_at_deflection(M, d); };
     const StaticContact initial = at(d0);
     const UnitRange all{0, M.m - 1};
     UnitRange units = all;

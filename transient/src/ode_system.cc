@@ -387,13 +387,7 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
       ydot[2 * nq + l] = (M.lambda(l) * Vf(l) - y[2 * nq + l]) / M.tau_residual_s;
   }
   const int Z = M.z_index();
-  if (plan_.hub_free()) {
-    ydot[Z] = y[Z + 1];
-    ydot[Z + 1] = (plan_.load(t) - load) / M.settings.hub_mass_kg;
-  } else {  // a prescribed hub: z is the plan's, the states z, w stay as they are
-    ydot[Z] = 0;
-    ydot[Z + 1] = 0;
-  }
+  plan_.hub_rates(t, y + Z, load, M.settings.hub_mass_kg, ydot + Z);
   if (M.settings.relaxation) {
     const int E = M.e_index();
     const double adv = Omega / M.tyre.dtheta_rad;

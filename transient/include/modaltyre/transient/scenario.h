@@ -43,6 +43,13 @@ struct ScenarioPlan {
   bool hub_free() const { return !hub; }  ///< the hub's z a state (load control)
   /// The hub's displacement z at t: the state's (load control) or the prescribed one.
   double hub_z(double t, double state_z) const { return hub ? hub->deflection(t) : state_z; }
+  /// The hub's rates (z', w') at t from its states (z, w) and the contact load: m z'' = F(t) -
+  /// load under load control; 0 and 0 under a prescribed hub (z is the plan's, the states stay).
+  void hub_rates(double t, const double* zw, double load_N, double hub_mass_kg,
+                 double* zw_dot) const {
+    zw_dot[0] = hub ? 0.0 : zw[1];
+    zw_dot[1] = hub ? 0.0 : (this->load(t) - load_N) / hub_mass_kg;
+  }
 };
 
 /// The plan of a scenario from the settings; InputError for an ill-posed one.
