@@ -6,11 +6,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
+#include <string>
 
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/transient/transient.h"
 
 namespace modaltyre::transient {
+
+// Readable test parameters (tests/readable_names_test.cmake).
+void PrintTo(Scenario s, std::ostream* os) { *os << to_string(s); }
+
 namespace {
 
 using namespace modaltyre::contact;
@@ -129,7 +135,12 @@ TEST_P(FlatCrown, Equals2dTransientOfTheTreadWidth) {
 
 INSTANTIATE_TEST_SUITE_P(EveryScenario, FlatCrown,
                          ::testing::Values(Scenario::load_hold, Scenario::free_vibration,
-                                           Scenario::rolling, Scenario::cleat));
+                                           Scenario::rolling, Scenario::cleat),
+                         [](const ::testing::TestParamInfo<Scenario>& info) {
+                           std::string name = to_string(info.param);
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 
 // The column classes are an exact reduction: the mirror columns of the crown have the same
 // equations and initial state. One class per column gives the same run.

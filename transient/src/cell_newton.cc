@@ -69,7 +69,8 @@ void CellNewton::factor(double gamma) {
     b.inv = d.inverse();
   }
   d_r_inv_ = nr > 0 ? 1.0 / (1.0 + gamma / M.tau_residual_s) : 1.0;
-  d_zw_ = gamma;
+  const bool hub_free = sys_.plan().hub_free();
+  d_zw_ = hub_free ? gamma : 0.0;  // a prescribed hub: z' = w' = 0, D = I on (z, w)
   // Sections with an active cell.
   int s_first = M.m, s_last = -1;
   for (int c = 0; c < nc; ++c) {
@@ -84,7 +85,7 @@ void CellNewton::factor(double gamma) {
   Tt_.resize(ns_, np_);
   for (int s = 0; s < ns_; ++s) {
     Tt_.row(s).head(rank) = -M.T.row(s0_ + s);
-    Tt_(s, rank) = 1.0;
+    Tt_(s, rank) = hub_free ? 1.0 : 0.0;  // d g / d z (0: z an input)
   }
   // M_EE's diagonal per slot, its (uniform) super-diagonals along each class.
   const double adv = Omega_ / M.tyre.dtheta_rad;
@@ -159,7 +160,7 @@ void CellNewton::factor(double gamma) {
   for (int l = 0; l < nr; ++l)
     DQ_.row(2 * nq + l).head(rank) =
         -(d_r_inv_ * M.lambda(l) / M.tau_residual_s) * M.Cr.col(l).transpose();
-  DQ_(Z + 1, rank) = -1.0 / M.settings.hub_mass_kg;
+  DQ_(Z + 1, rank) = hub_free ? -1.0 / M.settings.hub_mass_kg : 0.0;
   DQ_(Z, rank) = d_zw_ * DQ_(Z + 1, rank);
   H_.setZero(np_, np_);
   for (int k = 0; k < np_; ++k) {

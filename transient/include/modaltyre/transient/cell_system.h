@@ -26,6 +26,12 @@ struct StaticCells {
 /// Patch3d::solve at `load_N` (ComputationError if it fails); the empty contact at 0.
 StaticCells static_cells(const CellModel& cm, double load_N);
 
+/// The sections each class can touch under the bounding static footprint `bound`: where its
+/// undeformed-tread penetration d_i - z_c exceeds -(margin + cleat height) (tread_window.h's
+/// bound, per class; an empty range: the class never touches).
+std::vector<UnitRange> touchable_sections(const CellModel& cm, const ScenarioPlan& plan,
+                                          const StaticCells& bound);
+
 class CellSystem {
  public:
   /// `ranges`: the sections of each class that carry forces and tread states (empty: every
@@ -56,6 +62,8 @@ class CellSystem {
   bool escaped() const { return escaped_; }
   double spin(double t) const;
   double spin_rate(double t) const;
+  /// The hub's displacement z at (t, y): the state's, or the prescribed hub's (scenario.h).
+  double hub_z(double t, const double* y) const { return plan_.hub_z(t, y[cm_.M().z_index()]); }
   /// Road height (and slope) under section i for class c at t.
   double road(double t, int i, int c, double* slope = nullptr) const;
   std::vector<double> state_from(const StaticCells& s) const;
