@@ -15,6 +15,7 @@ void register_effects(CLI::App& app);
 void register_discover(CLI::App& app);
 void register_ema(CLI::App& app);
 void register_tir(CLI::App& app);
+void register_traction(CLI::App& app);
 
 
 }  // namespace modaltyre::app

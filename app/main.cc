@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   modaltyre::app::register_discover(app);
   modaltyre::app::register_ema(app);
   modaltyre::app::register_tir(app);
+  modaltyre::app::register_traction(app);
 
   // Every footprint of the effects path allocates and frees a few dense candidate-unit matrices
   // (~250 kB on the 2 mm mesh). glibc returns such memory to the kernel when the top of the heap

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "modaltyre/contact/ground_patch.h"
 #include "modaltyre/contact/pneumatic_share.h"
 #include "modaltyre/core/errors.h"
 
@@ -242,7 +243,8 @@ bool conditions_act(const TyreConfig& config) {
 
 Prediction predict(const TyreModel& model, const OperatingConditions& c,
                    const PredictOptions& options) {
-  if (!conditions_act(model.config) && c.load_N > 0 && !model.config.footprint_3d) {
+  const bool flat_road = model.config.ground.model == ground::GroundModel::rigid;
+  if (!conditions_act(model.config) && c.load_N > 0 && !model.config.footprint_3d && flat_road) {
     return effect_free(model, c, options.warm_active);
   }
   return predict(model, parameters_of(model.config), c, options);
@@ -301,7 +303,13 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
     PatchOperator op = assemble(m, assembly, P, kernels, *carcass, horizontal, scale, creep, soil,
                                 ratio, rolling, width);
     const LoadCase lc{elastic, c.horizontal_force_N * elastic / c.load_N};
-    out.footprint = solve_patch(m, std::move(op), lc, warm);
+    if (m.config.ground.model == ground::GroundModel::rigid) {
+      out.footprint = solve_patch(m, std::move(op), lc, warm);
+    } else {  // a profile or a soil (ground_patch.h)
+      GroundPatchInput in;
+      in.warm_active = warm;
+      out.footprint = solve_ground_patch(m, std::move(op), lc, m.config.ground, in);
+    }
     if (!out.footprint.ok()) return failed(out.footprint.status, out.footprint.message);
     warm = out.footprint.active;
     if (!E.contact_width.enabled) break;
@@ -319,6 +327,10 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
   out.sinking_mm = f.sinking_m * 1e3;
   out.length_mm = f.contact_length_m * 1e3;
   out.width_mm = width * 1e3;
+  out.on_soil = f.on_soil;
+  out.soil_sinkage_mm = f.soil_sinkage_m * 1e3;
+  out.tyre_deflection_mm = f.tyre_deflection_m * 1e3;
+  out.bekker_width_mm = f.bekker_width_m * 1e3;
   double moment = 0;
   for (const auto& u : f.units) moment += u.fz_N * u.x_m;
   out.rolling_resistance_N = rolling ? moment / (m.config.outer_radius_m - f.sinking_m) : 0.0;

@@ -59,6 +59,27 @@ double BekkerWong::unloading_sinkage_m(double p_Pa, double z_max_m) const {
   return std::clamp(z, 0.0, z_max_m);
 }
 
+double BekkerWong::work_J_m2(double p_Pa, double z_max_m) const {
+  if (!(p_Pa > 0)) return 0.0;
+  // Virgin curve: int_0^q (q'/k)^(1/n) dq' = n / (n + 1) q z(q).
+  auto virgin = [&](double q) { return params_.n / (params_.n + 1) * q * loading_sinkage_m(q); };
+  const double p_max = z_max_m > 0 ? loading_Pa(z_max_m) : 0.0;
+  double work = 0;
+  const double q = std::min(p_Pa, p_max);
+  if (q > 0) {
+    if (!params_.unloading) {
+      work = z_max_m * q;  // the vertical branch at z_max
+    } else {
+      // z = z_max - (p_max - q') / k_u, clamped at 0 below q0 = p_max - k_u z_max.
+      const double ku = unloading_stiffness_Pa_m(z_max_m);
+      const double a = std::clamp(p_max - ku * z_max_m, 0.0, q);
+      work = (q - a) * (z_max_m - p_max / ku) + (q * q - a * a) / (2 * ku);
+    }
+  }
+  if (p_Pa > p_max) work += virgin(p_Pa) - virgin(p_max);
+  return work;
+}
+
 double BekkerWong::rebound_depth_m(double z_max_m) const {
   return z_max_m > 0 ? unloading_sinkage_m(0.0, z_max_m) : 0.0;
 }

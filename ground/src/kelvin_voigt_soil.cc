@@ -37,6 +37,17 @@ double KelvinVoigtSoil::unloading_Pa(double z_m, double z_max_m) const {
   return std::max(0.0, k_ * (z_m - rebound_depth_m(z_max_m)));
 }
 
+double KelvinVoigtSoil::work_J_m2(double p_Pa, double z_max_m) const {
+  if (!(p_Pa > 0)) return 0.0;
+  const double kl = params_.elastic_share * k_;  // the loading stiffness
+  const double p_max = z_max_m > 0 ? loading_Pa(z_max_m) : 0.0;
+  const double q = std::min(p_Pa, p_max);
+  // Branch z = z_p + q / k up to p_max, then the virgin line z = q / k_l.
+  double work = q > 0 ? rebound_depth_m(z_max_m) * q + q * q / (2 * k_) : 0.0;
+  if (p_Pa > p_max) work += (p_Pa * p_Pa - p_max * p_max) / (2 * kl);
+  return work;
+}
+
 double KelvinVoigtSoil::unloading_sinkage_m(double p_Pa, double z_max_m) const {
   return std::min(z_max_m, rebound_depth_m(z_max_m) + std::max(p_Pa, 0.0) / k_);
 }

@@ -135,3 +135,49 @@ TEST(SoilState, RemembersTheDeepestSinkage) {
 
 }  // namespace
 }  // namespace modaltyre::ground
+
+namespace modaltyre::ground {
+namespace {
+
+// The closed-form works of the laws against the numerical integral of their sinkage (the base
+// class's Gauss-Legendre rule): virgin, elastic branch (clamped and not), rigid-plastic branch.
+class NumericWork final : public PressureSinkage {
+ public:
+  explicit NumericWork(const PressureSinkage& law) : law_(law) {}
+  double loading_Pa(double z) const override { return law_.loading_Pa(z); }
+  double loading_sinkage_m(double p) const override { return law_.loading_sinkage_m(p); }
+  double unloading_Pa(double z, double zm) const override { return law_.unloading_Pa(z, zm); }
+  double unloading_sinkage_m(double p, double zm) const override {
+    return law_.unloading_sinkage_m(p, zm);
+  }
+  double rebound_depth_m(double zm) const override { return law_.rebound_depth_m(zm); }
+  bool rigid_plastic() const override { return law_.rigid_plastic(); }
+
+ private:
+  const PressureSinkage& law_;
+};
+
+TEST(SoilWork, ClosedFormsEqualTheIntegralOfTheSinkage) {
+  constexpr double kQuadrature = 1e-8;
+  BekkerParams rigid_plastic = lete_sand(), elastic = lete_sand(), soft = lete_sand();
+  elastic.unloading = WongUnloading{1000, 5e6};
+  soft.unloading = WongUnloading{0, 1e3};  // the secant: clamped at the surface
+  const BekkerWong a(rigid_plastic, 0.15), b(elastic, 0.15), c(soft, 0.15);
+  KelvinVoigtParams kvp;
+  kvp.elastic_share = 0.4;
+  const KelvinVoigtSoil kv(kvp);
+  for (const PressureSinkage* law :
+       std::initializer_list<const PressureSinkage*>{&a, &b, &c, &kv}) {
+    const NumericWork numeric(*law);
+    for (double zmax : {0.0, 0.01, 0.03}) {
+      const double pmax = law->loading_Pa(std::max(zmax, 0.02));
+      for (double f : {0.1, 0.5, 0.99, 1.5}) {
+        const double w = law->work_J_m2(f * pmax, zmax), ref = numeric.work_J_m2(f * pmax, zmax);
+        EXPECT_NEAR(w, ref, kQuadrature * std::abs(ref) + 1e-12) << zmax << " " << f;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace modaltyre::ground

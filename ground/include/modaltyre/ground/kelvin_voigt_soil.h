@@ -35,6 +35,7 @@ class KelvinVoigtSoil final : public PressureSinkage {
   double unloading_sinkage_m(double p_Pa, double z_max_m) const override;
   double rebound_depth_m(double z_max_m) const override;
   bool rigid_plastic() const override { return false; }
+  double work_J_m2(double p_Pa, double z_max_m) const override;
 
  private:
   KelvinVoigtParams params_;

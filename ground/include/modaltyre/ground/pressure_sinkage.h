@@ -39,8 +39,9 @@ class PressureSinkage {
   /// dz/dp of sinkage_m at p (right derivative; 0 on a rigid-plastic branch) [m/Pa].
   double compliance_m_per_Pa(double p_Pa, double z_max_m) const;
   /// The work of the pressure per unit area, int_0^p sinkage_m(q, z_max) dq [J/m^2]: the soil's
-  /// complementary energy, convex in p (Gauss-Legendre, relative error below 1e-9).
-  double work_J_m2(double p_Pa, double z_max_m) const;
+  /// complementary energy, convex in p. This default integrates numerically (Gauss-Legendre,
+  /// relative error below 1e-9); the laws below override it with their closed forms.
+  virtual double work_J_m2(double p_Pa, double z_max_m) const;
 };
 
 }  // namespace modaltyre::ground
