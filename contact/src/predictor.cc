@@ -426,16 +426,56 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
     physics.soil_m_per_Pa = E.soil_compliance.layer_m() / E.soil_compliance.modulus_Pa();
   }
   try {
-    const Patch3d patch(m, *P.footprint_3d, physics);
-    const std::span<const char> warm = options.warm_active;
-    const bool warm_fits = static_cast<int>(warm.size()) == patch.sections();
-    Patch3dResult r = patch.solve(elastic, warm_fits ? warm : std::span<const char>());
-    if (!r.ok()) return failed(r.status, r.message);
-    Prediction p = from_patch3d(patch, std::move(r), elastic);
-    if (!std::isfinite(p.sinking_mm) || !std::isfinite(p.length_mm) || !std::isfinite(p.width_mm)) {
-      return failed("prediction is not finite");
+    // On a soil: Bekker's b = min(contact width, contact length), iterated with the solution
+    // (only k_c / b depends on it; docs/soil.md section 4).
+    const ground::GroundSettings& G = m.config.ground;
+    const bool soil = G.soil();
+    const bool b_acts = G.model == ground::GroundModel::bekker && G.bekker.k_c > 0;
+    double b = P.footprint_3d->tread_width_m;
+    std::unique_ptr<ground::PressureSinkage> law;
+    std::vector<char> warm(options.warm_active.begin(), options.warm_active.end());
+    for (int it = 0;; ++it) {
+      if (soil) {
+        law = G.normal_law(b);
+        physics.soil = law.get();
+      }
+      const Patch3d patch(m, *P.footprint_3d, physics);
+      const bool warm_fits = static_cast<int>(warm.size()) == patch.sections();
+      Patch3dResult r = patch.solve(elastic, warm_fits ? warm : std::vector<char>());
+      if (!r.ok()) return failed(r.status, r.message);
+      const double next = std::min(r.width_m, r.length_m);
+      if (soil && b_acts && std::abs(next - b) > 1e-7 * b) {
+        if (it == 50) return failed("Bekker's width b = min(width, length) did not settle");
+        warm = r.section_active;
+        b = it < 10 ? next : 0.5 * (b + next);
+        continue;
+      }
+      Prediction p = from_patch3d(patch, std::move(r), elastic);
+      if (soil) {
+        p.on_soil = p.footprint.on_soil = true;
+        p.footprint.soil_sinkage_m = p.patch3d->soil_sinkage_m;
+        p.footprint.tyre_deflection_m = p.footprint.sinking_m - p.footprint.soil_sinkage_m;
+        p.footprint.bekker_width_m = b;
+        p.soil_sinkage_mm = p.footprint.soil_sinkage_m * 1e3;
+        p.tyre_deflection_mm = p.footprint.tyre_deflection_m * 1e3;
+        p.bekker_width_mm = b * 1e3;
+        // Each unit (a section in contact, in order): its deepest cell's soil sinkage.
+        const Patch3dResult& q = *p.patch3d;
+        std::size_t k = 0;
+        for (int i = 0; i < q.sections && k < p.footprint.units.size(); ++i) {
+          if (!(q.section_force_N[i] > 0)) continue;
+          double deepest = 0;
+          for (int j = 0; j < q.columns; ++j)
+            deepest = std::max(deepest, q.soil_depth_m[std::size_t(i) * q.columns + j]);
+          p.footprint.units[k++].soil_depth_m = deepest;
+        }
+      }
+      if (!std::isfinite(p.sinking_mm) || !std::isfinite(p.length_mm) ||
+          !std::isfinite(p.width_mm)) {
+        return failed("prediction is not finite");
+      }
+      return p;
     }
-    return p;
   } catch (const std::invalid_argument& e) {  // settings a calibration or sweep made invalid
     return failed(e.what());
   }

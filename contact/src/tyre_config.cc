@@ -201,10 +201,14 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
     c.ground = ground::read_ground_settings(g, tree);
     if (c.ground.model != ground::GroundModel::rigid) {
       // What the ground path does not model is refused, not ignored (docs/soil.md section 4).
-      if (c.footprint_3d)
+      if (c.footprint_3d && !c.ground.soil())
         g.fail("model",
-               "the 3D patch (footprint_3d) on a soil or a profile is not built yet: "
-               "use a 2D config (`traction` runs the 2D patch of a 3D config)");
+               "the 3D patch (footprint_3d) on a road profile is not built yet: use a "
+               "2D config");
+      if (c.footprint_3d && c.footprint_3d->lateral_belt.enabled)
+        g.fail("model",
+               "the 3D patch's lateral belt (footprint_3d.lateral_belt) is not combined "
+               "with a soil yet");
       if (c.effects.soil_compliance.enabled)
         g.fail("model",
                "the soil_compliance effect is a soil of its own: use "

@@ -59,6 +59,19 @@ double BekkerWong::unloading_sinkage_m(double p_Pa, double z_max_m) const {
   return std::clamp(z, 0.0, z_max_m);
 }
 
+double BekkerWong::compliance_m_per_Pa(double p_Pa, double z_max_m) const {
+  const double p_max = z_max_m > 0 ? loading_Pa(z_max_m) : 0.0;
+  if (p_Pa < p_max) {  // the branch: vertical (rigid-plastic), or Wong's line above the surface
+    if (!params_.unloading) return 0.0;
+    return unloading_sinkage_m(p_Pa, z_max_m) > 0 || p_Pa >= unloading_Pa(0.0, z_max_m)
+               ? 1.0 / unloading_stiffness_Pa_m(z_max_m)
+               : 0.0;
+  }
+  // Virgin curve z = (p / k)^(1/n): dz/dp = z / (n p); at p = 0 the limit (0 for n < 1).
+  if (p_Pa > 0) return loading_sinkage_m(p_Pa) / (params_.n * p_Pa);
+  return params_.n < 1 ? 0.0 : (params_.n == 1 ? 1.0 / k_ : 1e300);
+}
+
 double BekkerWong::work_J_m2(double p_Pa, double z_max_m) const {
   if (!(p_Pa > 0)) return 0.0;
   // Virgin curve: int_0^q (q'/k)^(1/n) dq' = n / (n + 1) q z(q).

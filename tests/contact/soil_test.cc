@@ -181,3 +181,54 @@ TEST(TyreOnSoil, DrawbarPullRisesWithSlipAndASecondPassSinksLess) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace modaltyre::contact;
+namespace gr = modaltyre::ground;
+
+const std::string kDefault = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+
+// The 3D patch (the default config) on soil: a very stiff soil is the rigid road (the issue's
+// 0.5 %), and on LETE sand the tyre deflects and sinks less than the rigid wheel of its radius
+// and tread width.
+TEST(TyreOnSoil3D, AVeryStiffSoilReproducesTheRigidRoadFootprint) {
+  constexpr double kStiffSoilLimit = 0.005;
+  const TyreConfig road_config = load_tyre_config(kDefault);
+  const TyreConfig soil_config =
+      load_tyre_config(kDefault, {"ground.model=bekker", "ground.bekker.n=1", "ground.bekker.k_c=0",
+                                  "ground.bekker.k_phi=1e9"});
+  const TyreModel road = build_tyre_model(road_config), soil = build_tyre_model(soil_config);
+  const Prediction a = predict(road, road_config.default_conditions(4000));
+  const Prediction b = predict(soil, soil_config.default_conditions(4000));
+  ASSERT_TRUE(a.ok()) << a.message;
+  ASSERT_TRUE(b.ok()) << b.message;
+  EXPECT_NEAR(b.sinking_mm, a.sinking_mm, kStiffSoilLimit * a.sinking_mm);
+  EXPECT_NEAR(b.length_mm, a.length_mm, kStiffSoilLimit * a.length_mm);
+  EXPECT_NEAR(b.width_mm, a.width_mm, kStiffSoilLimit * a.width_mm);
+  EXPECT_TRUE(b.on_soil);
+  EXPECT_LT(b.soil_sinkage_mm, 1e-3 * a.sinking_mm);
+  EXPECT_LT(b.footprint.equilibrium_residual, 1e-9);
+}
+
+TEST(TyreOnSoil3D, TheDefaultTyreSinksLessThanTheRigidWheelAndDeflects) {
+  const TyreConfig c =
+      load_tyre_config(kDefault, {"ground.model=bekker", "ground.bekker.n=0.79",
+                                  "ground.bekker.k_c=102", "ground.bekker.k_phi=5301"});
+  const TyreModel m = build_tyre_model(c);
+  const Prediction p = predict(m, c.default_conditions(4000));
+  ASSERT_TRUE(p.ok()) << p.message;
+  const gr::RigidWheelResult r =
+      gr::rigid_wheel_static(c.ground, {c.outer_radius_m, c.footprint_3d->tread_width_m}, 4000);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_LT(p.soil_sinkage_mm, r.sinkage_m * 1e3);
+  EXPECT_GT(p.tyre_deflection_mm, 0.3 * p.soil_sinkage_mm);
+  EXPECT_NEAR(p.tyre_deflection_mm + p.soil_sinkage_mm, p.sinking_mm, 1e-9);
+  EXPECT_LT(p.footprint.equilibrium_residual, 1e-9);
+  // The soil spreads the load: a longer, lower-pressure footprint than on the road.
+  const TyreModel road = build_tyre_model(load_tyre_config(kDefault));
+  const Prediction q = predict(road, road.config.default_conditions(4000));
+  EXPECT_GT(p.length_mm, q.length_mm);
+}
+
+}  // namespace

@@ -181,3 +181,26 @@ TEST(SoilWork, ClosedFormsEqualTheIntegralOfTheSinkage) {
 
 }  // namespace
 }  // namespace modaltyre::ground
+
+namespace modaltyre::ground {
+namespace {
+
+TEST(SoilCompliance, ClosedFormEqualsTheNumericalDerivative) {
+  BekkerParams rigid_plastic = lete_sand(), elastic = lete_sand();
+  elastic.unloading = WongUnloading{1000, 5e6};
+  for (const BekkerParams& bp : {rigid_plastic, elastic}) {
+    const BekkerWong law(bp, 0.15);
+    const NumericWork numeric(law);  // the base class's numerical derivative
+    for (double zmax : {0.0, 0.02}) {
+      const double pmax = law.loading_Pa(0.03);
+      for (double f : {0.05, 0.3, 0.9, 1.2}) {
+        const double a = law.compliance_m_per_Pa(f * pmax, zmax);
+        const double b = numeric.compliance_m_per_Pa(f * pmax, zmax);
+        EXPECT_NEAR(a, b, 1e-5 * b + 1e-300) << zmax << " " << f;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace modaltyre::ground

@@ -36,8 +36,9 @@ class PressureSinkage {
   /// z(p) for a point that has been to z_max: the branch up to loading_Pa(z_max), then the
   /// virgin curve. Continuous and non-decreasing in p.
   double sinkage_m(double p_Pa, double z_max_m) const;
-  /// dz/dp of sinkage_m at p (right derivative; 0 on a rigid-plastic branch) [m/Pa].
-  double compliance_m_per_Pa(double p_Pa, double z_max_m) const;
+  /// dz/dp of sinkage_m at p (right derivative; 0 on a rigid-plastic branch) [m/Pa]. This
+  /// default differentiates numerically; the laws below override it with their closed forms.
+  virtual double compliance_m_per_Pa(double p_Pa, double z_max_m) const;
   /// The work of the pressure per unit area, int_0^p sinkage_m(q, z_max) dq [J/m^2]: the soil's
   /// complementary energy, convex in p. This default integrates numerically (Gauss-Legendre,
   /// relative error below 1e-9); the laws below override it with their closed forms.
