@@ -6,12 +6,14 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "cli_support.h"
 #include "commands.h"
 #include "footprint_map.h"
 #include "modaltyre/contact/traction.h"
 #include "modaltyre/contact/tyre_config.h"
+#include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/report/traction_json.h"
@@ -80,11 +82,23 @@ void register_traction(CLI::App& app) {
   cmd->callback([a] {
     refuse_repeated_overrides(a->overrides);
     // With --ground, the ground.* overrides go to the soil file, the rest to the tyre config.
+    // tyre.rigid is applied after the ground (the config reader refuses a rigid tyre on a road).
     std::vector<std::string> tyre_overrides, ground_overrides;
-    for (const auto& o : a->overrides)
+    std::optional<bool> rigid;
+    for (const auto& o : a->overrides) {
+      if (o.rfind("tyre.rigid=", 0) == 0) {
+        try {
+          rigid = parse_set_value(o.substr(11), "tyre.rigid").as<bool>();
+        } catch (const YAML::Exception&) {
+          throw InputError({"--set", 0, "tyre.rigid"}, "must be true or false");
+        }
+        continue;
+      }
       (!a->ground.empty() && o.rfind("ground.", 0) == 0 ? ground_overrides : tyre_overrides)
           .push_back(o);
+    }
     contact::TyreConfig config = contact::load_tyre_config(a->config, tyre_overrides);
+    if (rigid) config.rigid = *rigid;
     const ground::GroundSettings g =
         a->ground.empty() ? config.ground : ground::load_ground_file(a->ground, ground_overrides);
     if (!g.soil())

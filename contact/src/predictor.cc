@@ -9,6 +9,7 @@
 #include "modaltyre/contact/ground_patch.h"
 #include "modaltyre/contact/pneumatic_share.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/ground/rigid_wheel.h"
 
 namespace modaltyre::contact {
 namespace {
@@ -243,7 +244,8 @@ bool conditions_act(const TyreConfig& config) {
 
 Prediction predict(const TyreModel& model, const OperatingConditions& c,
                    const PredictOptions& options) {
-  const bool flat_road = model.config.ground.model == ground::GroundModel::rigid;
+  const bool flat_road =
+      model.config.ground.model == ground::GroundModel::rigid && !model.config.rigid;
   if (!conditions_act(model.config) && c.load_N > 0 && !model.config.footprint_3d && flat_road) {
     return effect_free(model, c, options.warm_active);
   }
@@ -485,8 +487,42 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
 
 namespace {
 
+// tyre.rigid on a soil: the rigid cylinder of the outer radius pressed into the soil
+// (ground/rigid_wheel.h, the static symmetric contact), as wide as the tread (3D) or the contact
+// width (2D). Sinking = soil sinkage; no tyre deflection.
+Prediction rigid_wheel_path(const TyreModel& m, const TyreParameters& P,
+                            const OperatingConditions& c) {
+  const double width = P.footprint_3d ? P.footprint_3d->tread_width_m : P.tread.width_m;
+  const ground::RigidWheelResult w =
+      ground::rigid_wheel_static(m.config.ground, {m.config.outer_radius_m, width}, c.load_N);
+  if (!w.ok()) return failed(w.status, w.message);
+  Prediction p;
+  p.status = SolveStatus::converged;
+  p.message = "the rigid wheel (tyre.rigid): " + w.message;
+  p.sinking_mm = p.soil_sinkage_mm = w.sinkage_m * 1e3;
+  p.length_mm = w.contact_length_m * 1e3;
+  p.width_mm = width * 1e3;
+  p.bekker_width_mm = w.bekker_width_m * 1e3;
+  p.on_soil = true;
+  p.elastic_load_N = c.load_N;
+  FootprintResult& f = p.footprint;
+  f.status = SolveStatus::converged;
+  f.message = p.message;
+  f.sinking_m = w.sinkage_m;
+  f.contact_length_m = w.contact_length_m;
+  f.rear_edge_x_m = -0.5 * w.contact_length_m;
+  f.front_edge_x_m = 0.5 * w.contact_length_m;
+  f.equilibrium_residual = std::abs(w.vertical_N - c.load_N) / c.load_N;
+  f.on_soil = true;
+  f.soil_sinkage_m = w.sinkage_m;
+  f.bekker_width_m = w.bekker_width_m;
+  return p;
+}
+
 Prediction structural(const TyreModel& model, const TyreParameters& parameters,
                       const OperatingConditions& c, const PredictOptions& options) {
+  if (model.config.rigid && model.config.ground.soil() && c.load_N > 0)
+    return rigid_wheel_path(model, parameters, c);
   return parameters.footprint_3d ? patch3d_path(model, parameters, c, options)
                                  : effects_path(model, parameters, c, options);
 }

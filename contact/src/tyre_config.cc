@@ -223,6 +223,10 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
                "(`traction` computes the tangential forces)");
     }
   }
+  if (c.rigid && !c.ground.soil())
+    tyre.fail("rigid",
+              "a rigid tyre (the terramechanics reference wheel) needs a soil: "
+              "ground.model bekker or kelvin_voigt (on a road it would not deflect)");
   tree.reject_unknown_keys();
   // Named at the config's line (the hammer reader alone could only name the path), after every
   // key is read so that a bad key is reported first.

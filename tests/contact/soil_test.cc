@@ -8,6 +8,7 @@
 
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/traction.h"
+#include "modaltyre/core/errors.h"
 #include "modaltyre/ground/rigid_wheel.h"
 
 namespace {
@@ -229,6 +230,30 @@ TEST(TyreOnSoil3D, TheDefaultTyreSinksLessThanTheRigidWheelAndDeflects) {
   const TyreModel road = build_tyre_model(load_tyre_config(kDefault));
   const Prediction q = predict(road, road.config.default_conditions(4000));
   EXPECT_GT(p.length_mm, q.length_mm);
+}
+
+}  // namespace
+
+namespace {
+
+using namespace modaltyre::contact;
+
+// tyre.rigid on a soil: the footprint is the rigid wheel's static symmetric contact; on a road
+// the key is refused (the reference wheel needs a soil).
+TEST(TyreOnSoil, TheRigidTyreIsTheRigidWheelsStaticContact) {
+  const std::string config = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+  const TyreConfig c = load_tyre_config(
+      config, {"tyre.rigid=true", "ground.model=bekker", "ground.bekker.n=0.79",
+               "ground.bekker.k_c=102", "ground.bekker.k_phi=5301", "contact.unit_length_mm=2"});
+  const TyreModel m = build_tyre_model(c);
+  const Prediction p = predict(m, c.default_conditions(3000));
+  ASSERT_TRUE(p.ok()) << p.message;
+  const modaltyre::ground::RigidWheelResult r =
+      modaltyre::ground::rigid_wheel_static(c.ground, {c.outer_radius_m, c.tread.width_m}, 3000);
+  EXPECT_EQ(p.soil_sinkage_mm, r.sinkage_m * 1e3);
+  EXPECT_EQ(p.sinking_mm, p.soil_sinkage_mm);
+  EXPECT_EQ(p.tyre_deflection_mm, 0.0);
+  EXPECT_THROW(load_tyre_config(config, {"tyre.rigid=true"}), modaltyre::InputError);
 }
 
 }  // namespace
