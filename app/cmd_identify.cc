@@ -12,6 +12,7 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "identify_output.h"
+#include "identify_soil_plots.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
@@ -136,6 +137,12 @@ void map_and_draw(const IdentifyArgs& a, const report::IdentifyRun& run, Target&
   } else if (const auto* r = std::get_if<report::SoilRun>(&run.fit)) {
     if (into) studies::map_soil(r->data, r->result, *into);
     if (!a.plot.empty()) plot_soil(r->data, r->result, a.plot);
+  } else if (const auto* r = std::get_if<report::BevameterRun>(&run.fit)) {
+    if (into) studies::map_bevameter(r->result, *into);
+    if (!a.plot.empty()) plot_bevameter(r->data, r->result, a.plot);
+  } else if (const auto* r = std::get_if<report::ShearRun>(&run.fit)) {
+    if (into) studies::map_shear(r->result, *into);
+    if (!a.plot.empty()) plot_shear(r->data, r->result, a.plot);
   }
 }
 
@@ -148,12 +155,15 @@ void register_identify(CLI::App& app) {
       "Identify rheological parameters from tyre and soil tests (seed 000): K_Z and C_P from "
       "load-deflection data, the slope factors B1 and B2, K1 and C_P from a contact-stress "
       "profile, the three-element model (eta1 from a free decay, E1 and chi from a static loop) "
-      "and a Kelvin-Voigt soil from rolling tests. Formats and derivations: docs/rheology.md.");
+      "and a Kelvin-Voigt soil from rolling tests; Bekker-Wong soil parameters from plate-sinkage "
+      "tests and Janosi-Hanamoto shear parameters from shear tests. Formats and derivations: "
+      "docs/rheology.md, docs/soil.md.");
   cmd->add_option("METHOD", args->method,
-                  "load-deflection | b-factors | contact-stress | free-vibration | soil-rolling")
+                  "load-deflection | b-factors | contact-stress | free-vibration | soil-rolling | "
+                  "bevameter | shear")
       ->required()
-      ->check(CLI::IsMember(
-          {"load-deflection", "b-factors", "contact-stress", "free-vibration", "soil-rolling"}));
+      ->check(CLI::IsMember({"load-deflection", "b-factors", "contact-stress", "free-vibration",
+                             "soil-rolling", "bevameter", "shear"}));
   cmd->add_option("FILE", args->file, "measurement CSV (not for b-factors)");
   cmd->add_option("--config", args->config,
                   "tyre config: tyre.outer_radius_mm, tyre.inflation_pressure_kPa, "

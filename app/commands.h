@@ -16,6 +16,6 @@ void register_discover(CLI::App& app);
 void register_ema(CLI::App& app);
 void register_tir(CLI::App& app);
 void register_init(CLI::App& app);
-
+void register_traction(CLI::App& app);
 
 }  // namespace modaltyre::app

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   modaltyre::app::register_ema(app);
   modaltyre::app::register_tir(app);
   modaltyre::app::register_init(app);
+  modaltyre::app::register_traction(app);
   modaltyre::app::require_decimal_numbers(app);
   modaltyre::app::check_output_paths(app);
 

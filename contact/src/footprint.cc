@@ -6,6 +6,7 @@
 
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/unilateral_contact.h"
+#include "patch_result.h"
 
 namespace modaltyre::contact {
 
@@ -93,9 +94,6 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
                             std::span<const char> warm_active) {
   MODALTYRE_CHECK(load.load_N > 0, "load must be positive");
   MODALTYRE_CHECK(op.kernels != nullptr && !op.tread_radial_lag.empty(), "incomplete operator");
-  FootprintResult r;
-  r.load = load;
-  const double ratio = op.horizontal_ratio;
   solvers::ContactProblem p;
   p.compliance = std::move(op.compliance);
   p.compliance_operator = op.compliance_operator.get();
@@ -106,6 +104,18 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
   opt.max_iterations = model.config.solver.max_iterations;
   opt.gap_tolerance = model.config.solver.gap_tolerance;
   const solvers::ContactSolution s = solvers::solve_unilateral_contact(p, opt, warm_active);
+  op.compliance = std::move(p.compliance);
+  return detail::patch_result(model, op, load, s, {});
+}
+
+namespace detail {
+
+FootprintResult patch_result(const TyreModel& model, const PatchOperator& op, const LoadCase& load,
+                             const solvers::ContactSolution& s,
+                             std::span<const double> extra_diagonal) {
+  FootprintResult r;
+  r.load = load;
+  const double ratio = op.horizontal_ratio;
   r.iterations = s.iterations;
   r.message = s.message;
   if (!s.ok()) {
@@ -164,9 +174,10 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
   // displacement) inside and -g (gap) outside is interpolated linearly to its zero. For a rigid
   // ring on a Winkler layer phi = delta - sag exactly, so the chord is recovered to O(ds^2).
   auto edge = [&](int inside, int outside) {
-    const double phi_in =
-        f(inside) * (p.compliance_operator ? p.compliance_operator->entry(inside, inside)
-                                           : p.compliance(inside, inside));
+    double cii = op.compliance_operator ? op.compliance_operator->entry(inside, inside)
+                                        : op.compliance(inside, inside);
+    if (!extra_diagonal.empty()) cii += extra_diagonal[inside];
+    const double phi_in = f(inside) * cii;
     const double phi_out = -s.gap(outside);
     const double t = phi_in / (phi_in - phi_out);
     return r.contour_x_m[inside] + t * (r.contour_x_m[outside] - r.contour_x_m[inside]);
@@ -179,6 +190,8 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
   r.message = msg.str();
   return r;
 }
+
+}  // namespace detail
 
 std::vector<FootprintResult> solve_footprints(const TyreModel& model,
                                               const std::vector<LoadCase>& loads) {

@@ -82,6 +82,12 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
     pressure_Pa_ = physics.inflation_pressure_Pa >= 0 ? physics.inflation_pressure_Pa
                                                       : model_.config.inflation_pressure_Pa;
   }
+  if (physics.soil) {
+    if (s.lateral_belt.enabled)
+      throw std::invalid_argument("3D patch: a soil with a lateral belt is not built");
+    soil_ = physics.soil;
+    for (double th : model_.theta) cell_area_m2_.push_back(dy * ds * std::cos(th));
+  }
   if (s.lateral_belt.enabled) {
     if (n > kMaxLateralBeltColumns) {
       throw std::invalid_argument("3D patch: a lateral belt supports at most " +
@@ -171,8 +177,9 @@ Patch3dResult Patch3d::solve_loaded(double load_N, std::span<const char> warm,
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
   const auto opt = contact_options(model_);
   const std::unique_ptr<detail::SectionLaws> laws =
-      G_.size() ? detail::flexible_sections(t_, z_m_, G_, opt.max_iterations)
-                : detail::rigid_sections(t_, z_m_);
+      soil_       ? detail::soil_sections(t_, z_m_, *soil_, cell_area_m2_)
+      : G_.size() ? detail::flexible_sections(t_, z_m_, G_, opt.max_iterations)
+                  : detail::rigid_sections(t_, z_m_);
   Patch3dResult r;
   r.load_N = load_N;
   // The extra carcass loads' gap offset C extra (sidewall softening; empty: none).
@@ -256,6 +263,12 @@ Patch3dResult Patch3d::solve_loaded(double load_N, std::span<const char> warm,
 
 Patch3dResult Patch3d::solve_cells(double load_N) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
+  if (soil_) {
+    Patch3dResult r;
+    r.load_N = load_N;
+    r.message = "solve_cells (the reduction's reference) takes no soil";
+    return r;
+  }
   const int S = sections(), ny = columns();
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
   const detail::CellCompliance op(carcass, ny, t_, G_.size() ? &G_ : nullptr);
@@ -349,13 +362,20 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
     }
   }
   double total = 0, comp = 0, pen = 0;
+  if (soil_) r.soil_depth_m.assign(std::size_t(S) * ny, 0.0);
   for (int i = 0; i < S; ++i) {
     r.section_approach_m[i] = delta - m.sag(i) - CF(i);
     r.section_active[i] = F(i) > 0;
     for (int j = 0; j < ny; ++j) {
       const double fij = f[std::size_t(i) * ny + j];
+      double soil = 0;  // the soil's sinkage under the cell, in series with its tread
+      if (soil_) {
+        soil = soil_->sinkage_m(fij / cell_area_m2_[i], 0.0);
+        r.soil_depth_m[std::size_t(i) * ny + j] = soil;
+        if (fij > 0) r.soil_sinkage_m = std::max(r.soil_sinkage_m, soil);
+      }
       const double g = m.sag(i) + z_m_[j] + CF(i) + r.belt_deflection_m[std::size_t(i) * ny + j] +
-                       t_[i] * fij - delta;
+                       t_[i] * fij + soil - delta;
       total += fij;
       comp = std::max(comp, std::abs(fij * g));
       pen = std::max(pen, -g);

@@ -13,6 +13,8 @@
 #include <memory>
 #include <vector>
 
+#include "modaltyre/ground/pressure_sinkage.h"
+
 namespace modaltyre::contact::detail {
 
 class SectionLaws {
@@ -35,5 +37,12 @@ std::unique_ptr<SectionLaws> rigid_sections(const std::vector<double>& t,
 std::unique_ptr<SectionLaws> flexible_sections(const std::vector<double>& t,
                                                const std::vector<double>& z,
                                                const Eigen::MatrixXd& G, int max_iterations);
+
+/// A soil under every cell in series with its tread (patch3d_soil.cc): `area` the road area of a
+/// cell of each section [m^2]; virgin soil.
+std::unique_ptr<SectionLaws> soil_sections(const std::vector<double>& t,
+                                           const std::vector<double>& z,
+                                           const ground::PressureSinkage& law,
+                                           const std::vector<double>& area);
 
 }  // namespace modaltyre::contact::detail

@@ -6,8 +6,10 @@
 #include <stdexcept>
 #include <utility>
 
+#include "modaltyre/contact/ground_patch.h"
 #include "modaltyre/contact/pneumatic_share.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/ground/rigid_wheel.h"
 
 namespace modaltyre::contact {
 namespace {
@@ -253,7 +255,9 @@ bool conditions_act(const TyreConfig& config) {
 
 Prediction predict(const TyreModel& model, const OperatingConditions& c,
                    const PredictOptions& options) {
-  if (!conditions_act(model.config) && c.load_N > 0 && !model.config.footprint_3d &&
+  const bool flat_road =
+      model.config.ground.model == ground::GroundModel::rigid && !model.config.rigid;
+  if (!conditions_act(model.config) && c.load_N > 0 && !model.config.footprint_3d && flat_road &&
       !pressure_acts(model, c)) {
     return effect_free(model, c, options.warm_active);
   }
@@ -315,7 +319,13 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
     PatchOperator op = assemble(m, assembly, P, kernels, *carcass, horizontal, scale, creep, soil,
                                 ratio, rolling, width);
     const LoadCase lc{elastic, c.horizontal_force_N * elastic / c.load_N};
-    out.footprint = solve_patch(m, std::move(op), lc, warm);
+    if (m.config.ground.model == ground::GroundModel::rigid) {
+      out.footprint = solve_patch(m, std::move(op), lc, warm);
+    } else {  // a profile or a soil (ground_patch.h)
+      GroundPatchInput in;
+      in.warm_active = warm;
+      out.footprint = solve_ground_patch(m, std::move(op), lc, m.config.ground, in);
+    }
     if (!out.footprint.ok()) return failed(out.footprint.status, out.footprint.message);
     warm = out.footprint.active;
     if (!E.contact_width.enabled) break;
@@ -333,6 +343,10 @@ Prediction effects_path(const TyreModel& m, const TyreParameters& P, const Opera
   out.sinking_mm = f.sinking_m * 1e3;
   out.length_mm = f.contact_length_m * 1e3;
   out.width_mm = width * 1e3;
+  out.on_soil = f.on_soil;
+  out.soil_sinkage_mm = f.soil_sinkage_m * 1e3;
+  out.tyre_deflection_mm = f.tyre_deflection_m * 1e3;
+  out.bekker_width_mm = f.bekker_width_m * 1e3;
   double moment = 0;
   for (const auto& u : f.units) moment += u.fz_N * u.x_m;
   out.rolling_resistance_N = rolling ? moment / (m.config.outer_radius_m - f.sinking_m) : 0.0;
@@ -429,16 +443,56 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
     physics.soil_m_per_Pa = E.soil_compliance.layer_m() / E.soil_compliance.modulus_Pa();
   }
   try {
-    const Patch3d patch(m, *P.footprint_3d, physics);
-    const std::span<const char> warm = options.warm_active;
-    const bool warm_fits = static_cast<int>(warm.size()) == patch.sections();
-    Patch3dResult r = patch.solve(elastic, warm_fits ? warm : std::span<const char>());
-    if (!r.ok()) return failed(r.status, r.message);
-    Prediction p = from_patch3d(patch, std::move(r), elastic);
-    if (!std::isfinite(p.sinking_mm) || !std::isfinite(p.length_mm) || !std::isfinite(p.width_mm)) {
-      return failed("prediction is not finite");
+    // On a soil: Bekker's b = min(contact width, contact length), iterated with the solution
+    // (only k_c / b depends on it; docs/soil.md section 4).
+    const ground::GroundSettings& G = m.config.ground;
+    const bool soil = G.soil();
+    const bool b_acts = G.model == ground::GroundModel::bekker && G.bekker.k_c > 0;
+    double b = P.footprint_3d->tread_width_m;
+    std::unique_ptr<ground::PressureSinkage> law;
+    std::vector<char> warm(options.warm_active.begin(), options.warm_active.end());
+    for (int it = 0;; ++it) {
+      if (soil) {
+        law = G.normal_law(b);
+        physics.soil = law.get();
+      }
+      const Patch3d patch(m, *P.footprint_3d, physics);
+      const bool warm_fits = static_cast<int>(warm.size()) == patch.sections();
+      Patch3dResult r = patch.solve(elastic, warm_fits ? warm : std::vector<char>());
+      if (!r.ok()) return failed(r.status, r.message);
+      const double next = std::min(r.width_m, r.length_m);
+      if (soil && b_acts && std::abs(next - b) > 1e-7 * b) {
+        if (it == 50) return failed("Bekker's width b = min(width, length) did not settle");
+        warm = r.section_active;
+        b = it < 10 ? next : 0.5 * (b + next);
+        continue;
+      }
+      Prediction p = from_patch3d(patch, std::move(r), elastic);
+      if (soil) {
+        p.on_soil = p.footprint.on_soil = true;
+        p.footprint.soil_sinkage_m = p.patch3d->soil_sinkage_m;
+        p.footprint.tyre_deflection_m = p.footprint.sinking_m - p.footprint.soil_sinkage_m;
+        p.footprint.bekker_width_m = b;
+        p.soil_sinkage_mm = p.footprint.soil_sinkage_m * 1e3;
+        p.tyre_deflection_mm = p.footprint.tyre_deflection_m * 1e3;
+        p.bekker_width_mm = b * 1e3;
+        // Each unit (a section in contact, in order): its deepest cell's soil sinkage.
+        const Patch3dResult& q = *p.patch3d;
+        std::size_t k = 0;
+        for (int i = 0; i < q.sections && k < p.footprint.units.size(); ++i) {
+          if (!(q.section_force_N[i] > 0)) continue;
+          double deepest = 0;
+          for (int j = 0; j < q.columns; ++j)
+            deepest = std::max(deepest, q.soil_depth_m[std::size_t(i) * q.columns + j]);
+          p.footprint.units[k++].soil_depth_m = deepest;
+        }
+      }
+      if (!std::isfinite(p.sinking_mm) || !std::isfinite(p.length_mm) ||
+          !std::isfinite(p.width_mm)) {
+        return failed("prediction is not finite");
+      }
+      return p;
     }
-    return p;
   } catch (const std::invalid_argument& e) {  // settings a calibration or sweep made invalid
     return failed(e.what());
   }
@@ -448,8 +502,42 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
 
 namespace {
 
+// tyre.rigid on a soil: the rigid cylinder of the outer radius pressed into the soil
+// (ground/rigid_wheel.h, the static symmetric contact), as wide as the tread (3D) or the contact
+// width (2D). Sinking = soil sinkage; no tyre deflection.
+Prediction rigid_wheel_path(const TyreModel& m, const TyreParameters& P,
+                            const OperatingConditions& c) {
+  const double width = P.footprint_3d ? P.footprint_3d->tread_width_m : P.tread.width_m;
+  const ground::RigidWheelResult w =
+      ground::rigid_wheel_static(m.config.ground, {m.config.outer_radius_m, width}, c.load_N);
+  if (!w.ok()) return failed(w.status, w.message);
+  Prediction p;
+  p.status = SolveStatus::converged;
+  p.message = "the rigid wheel (tyre.rigid): " + w.message;
+  p.sinking_mm = p.soil_sinkage_mm = w.sinkage_m * 1e3;
+  p.length_mm = w.contact_length_m * 1e3;
+  p.width_mm = width * 1e3;
+  p.bekker_width_mm = w.bekker_width_m * 1e3;
+  p.on_soil = true;
+  p.elastic_load_N = c.load_N;
+  FootprintResult& f = p.footprint;
+  f.status = SolveStatus::converged;
+  f.message = p.message;
+  f.sinking_m = w.sinkage_m;
+  f.contact_length_m = w.contact_length_m;
+  f.rear_edge_x_m = -0.5 * w.contact_length_m;
+  f.front_edge_x_m = 0.5 * w.contact_length_m;
+  f.equilibrium_residual = std::abs(w.vertical_N - c.load_N) / c.load_N;
+  f.on_soil = true;
+  f.soil_sinkage_m = w.sinkage_m;
+  f.bekker_width_m = w.bekker_width_m;
+  return p;
+}
+
 Prediction structural(const TyreModel& model, const TyreParameters& parameters,
                       const OperatingConditions& c, const PredictOptions& options) {
+  if (model.config.rigid && model.config.ground.soil() && c.load_N > 0)
+    return rigid_wheel_path(model, parameters, c);
   return parameters.footprint_3d ? patch3d_path(model, parameters, c, options)
                                  : effects_path(model, parameters, c, options);
 }

@@ -109,6 +109,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   c.section_width_m = tyre.number("section_width_mm", 0, 0, 2000) * 1e-3;
   c.aspect_ratio = tyre.number("aspect_ratio", 0, 0, 2);
   c.rim_radius_m = tyre.number("rim_radius_mm", 0, 0, 2000) * 1e-3;
+  c.rigid = tyre.boolean("rigid", false);
   if (c.rim_radius_m >= c.outer_radius_m) {
     tyre.fail("rim_radius_mm", "the rim radius must be smaller than outer_radius_mm");
   }
@@ -206,6 +207,37 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
                 "the 3D patch (footprint_3d) takes no horizontal force; use a 2D config");
     }
   }
+  if (root.has("ground")) {
+    const ConfigSection g = root.section("ground");
+    c.ground = ground::read_ground_settings(g, tree);
+    if (c.ground.model != ground::GroundModel::rigid) {
+      // What the ground path does not model is refused, not ignored (docs/soil.md section 4).
+      if (c.footprint_3d && !c.ground.soil())
+        g.fail("model",
+               "the 3D patch (footprint_3d) on a road profile is not built yet: use a "
+               "2D config");
+      if (c.footprint_3d && c.footprint_3d->lateral_belt.enabled)
+        g.fail("model",
+               "the 3D patch's lateral belt (footprint_3d.lateral_belt) is not combined "
+               "with a soil yet");
+      if (c.effects.soil_compliance.enabled)
+        g.fail("model",
+               "the soil_compliance effect is a soil of its own: use "
+               "ground.model: kelvin_voigt instead of both");
+      if (c.effects.rolling_speed.enabled)
+        g.fail("model",
+               "the rolling_speed effect is not combined with a ground other than the "
+               "flat rigid road");
+      if (c.horizontal_force_N != 0)
+        g.fail("model",
+               "a ground other than the flat rigid road takes no horizontal_force_N "
+               "(`traction` computes the tangential forces)");
+    }
+  }
+  if (c.rigid && !c.ground.soil())
+    tyre.fail("rigid",
+              "a rigid tyre (the terramechanics reference wheel) needs a soil: "
+              "ground.model bekker or kelvin_voigt (on a road it would not deflect)");
   tree.reject_unknown_keys();
   // Named at the config's line (the hammer reader alone could only name the path), after every
   // key is read so that a bad key is reported first.

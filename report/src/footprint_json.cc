@@ -83,6 +83,7 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
                        {"fz_N", round_sig(u.fz_N)},
                        {"fx_N", round_sig(u.fx_N)},
                        {"pressure_kPa", round_sig(u.pressure_Pa * 1e-3)}});
+      if (r.on_soil) units.back()["soil_depth_mm"] = round_sig(u.soil_depth_m * 1e3);
     }
     const double peak = peak_pressure_Pa(p);
     const contact::Validity v = contact::validity(model.config, r.sinking_m, r.contact_length_m);
@@ -104,6 +105,11 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
                       {{"vertical_equilibrium", r.equilibrium_residual},
                        {"complementarity", r.complementarity_residual}}},
                      {"units", units}});
+    if (r.on_soil) {  // docs/soil.md section 4
+      cases.back()["soil_sinkage_mm"] = round_sig(r.soil_sinkage_m * 1e3);
+      cases.back()["tyre_deflection_mm"] = round_sig(r.tyre_deflection_m * 1e3);
+      cases.back()["bekker_width_mm"] = round_sig(r.bekker_width_m * 1e3);
+    }
     if (p.patch3d) {
       cases.back()["contact_area_mm2"] = round_sig(cell_area_in_contact_m2(*p.patch3d) * 1e6);
       cases.back()["map"] = pressure_map_json(*p.patch3d);
@@ -113,6 +119,7 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
   nlohmann::json out = {{"tyre", c.name},
                         {"config", c.source},
                         {"effects", enabled_effects(c.effects)},
+                        {"ground", ground::to_string(c.ground.model)},
                         {"model",
                          {{"outer_radius_mm", c.outer_radius_m * 1e3},
                           {"unit_length_mm", round_sig(model.unit_length_m * 1e3)},

@@ -115,6 +115,22 @@ IdentifyRun soil(const IdentifyInputs& a, const Geometry& g) {
   return {std::move(run), out};
 }
 
+IdentifyRun bevameter(const IdentifyInputs& a) {
+  BevameterRun run{rh::read_plate_sinkage_csv(a.file), {}};
+  run.result = rh::identify_bevameter(run.data);
+  nlohmann::json out = fit_report_json(run.result.report);
+  out["law"] = "p[kPa] = (k_c/b + k_phi) z[m]^n; unloading p = p_max - (k0 + Au z_max)(z_max - z)";
+  return {std::move(run), out};
+}
+
+IdentifyRun shear(const IdentifyInputs& a) {
+  ShearRun run{rh::read_shear_csv(a.file), {}};
+  run.result = rh::identify_shear(run.data);
+  nlohmann::json out = fit_report_json(run.result.report);
+  out["law"] = "tau = (c + sigma tan phi)(1 - exp(-j/K))";
+  return {std::move(run), out};
+}
+
 }  // namespace
 
 std::string identify_geometry_config(const std::string& method, const std::string& config) {
@@ -143,12 +159,12 @@ nlohmann::json fit_report_json(const rh::FitReport& r) {
 void check_identify_inputs(const IdentifyInputs& a) {
   const bool known = a.method == "load-deflection" || a.method == "b-factors" ||
                      a.method == "contact-stress" || a.method == "free-vibration" ||
-                     a.method == "soil-rolling";
+                     a.method == "soil-rolling" || a.method == "bevameter" || a.method == "shear";
   if (!known) {
     throw InputError({"METHOD", 0, ""},
                      "'" + a.method +
                          "' is not one of load-deflection, b-factors, contact-stress, "
-                         "free-vibration, soil-rolling");
+                         "free-vibration, soil-rolling, bevameter, shear");
   }
   if (a.method == "b-factors") {
     if (!a.file.empty())
@@ -194,6 +210,10 @@ IdentifyRun run_identify(const IdentifyInputs& a) {
     run = contact_stress(a, g);
   else if (a.method == "free-vibration")
     run = free_vibration(a, g);
+  else if (a.method == "bevameter")
+    run = bevameter(a);
+  else if (a.method == "shear")
+    run = shear(a);
   else
     run = soil(a, g);
   if (!a.file.empty()) run.document["file"] = a.file;

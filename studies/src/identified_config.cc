@@ -188,6 +188,52 @@ void map_soil(const rh::SoilData& data, const rh::SoilResult& res, ConfigTarget&
   note_identified_parameters(res.report, t.mapping);
 }
 
+void map_bevameter(const rh::BevameterResult& res, ConfigTarget& t) {
+  ConfigMapping& m = t.mapping;
+  auto set = [&](const std::string& key, double value, double lo, double hi) {
+    if (!std::isfinite(value) || value < lo || value > hi)
+      throw InputError({t.tyre_path, 0, key}, "the identified value " + number_text(value) +
+                                                  " is outside the range [" + number_text(lo) +
+                                                  ", " + number_text(hi) + "] the reader takes");
+    m.values.emplace_back(key, round_sig(value, 8));
+  };
+  m.words.emplace_back("ground.model", "bekker");
+  set("ground.bekker.n", res.n, 1e-9, 3);
+  set("ground.bekker.k_c", res.k_c, 0, 1e9);
+  set("ground.bekker.k_phi", res.k_phi, 0, 1e12);
+  m.notes.push_back(
+      "ground.model = bekker; n, k_c [kN/m^(n+1)], k_phi [kN/m^(n+2)] from the "
+      "plate-sinkage rows (Bekker's law, docs/soil.md section 6)");
+  if (res.has_unloading) {
+    set("ground.bekker.unloading.k0", std::max(res.k0, 0.0), 0, 1e12);
+    set("ground.bekker.unloading.Au", std::max(res.Au, 0.0), 0, 1e15);
+    m.notes.push_back(
+        "ground.bekker.unloading: Wong's k_u = k0 + Au z_max from the unloading "
+        "cycles (a negative estimate is written as 0)");
+  }
+  note_identified_parameters(res.report, m);
+}
+
+void map_shear(const rh::ShearResult& res, ConfigTarget& t) {
+  const auto model = t.tyre.ground.model;
+  if (!t.tyre.ground.soil())
+    throw InputError({t.tyre_path, 0, "ground.model"},
+                     "identify shear --into-config sets the shear keys of the config's soil; "
+                     "this config's ground is not a soil (run identify bevameter into it first, "
+                     "or set ground.model)");
+  const std::string section =
+      model == ground::GroundModel::bekker ? "ground.bekker." : "ground.kelvin_voigt.";
+  ConfigMapping& m = t.mapping;
+  m.values.emplace_back(section + "cohesion_kPa", round_sig(std::max(res.cohesion_kPa, 0.0), 8));
+  m.values.emplace_back(section + "friction_angle_deg",
+                        round_sig(std::clamp(res.friction_angle_deg, 0.0, 89.0), 8));
+  m.values.emplace_back(section + "shear_modulus_K_mm", round_sig(res.K_mm, 8));
+  m.notes.push_back(section +
+                    "{cohesion_kPa, friction_angle_deg, shear_modulus_K_mm} from the "
+                    "shear rows (Janosi-Hanamoto, docs/soil.md section 6)");
+  note_identified_parameters(res.report, m);
+}
+
 namespace {
 
 // The mapping as overrides of TYRE's keys ("key=value", the form of --set).
@@ -195,6 +241,7 @@ std::vector<std::string> mapping_overrides(const ConfigMapping& m) {
   std::vector<std::string> ov;
   for (const auto& e : m.enabled) ov.push_back("effects." + e + ".enabled=true");
   for (const auto& [key, value] : m.values) ov.push_back(key + "=" + number_text(value));
+  for (const auto& [key, word] : m.words) ov.push_back(key + "=" + word);
   return ov;
 }
 

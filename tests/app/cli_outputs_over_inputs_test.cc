@@ -82,6 +82,17 @@ TEST_F(CliOutputsOverInputs, TransientCsvOverItsConfig) {
                  config2d(), {"--csv", "CONFIG"});
 }
 
+TEST_F(CliOutputsOverInputs, TractionPlotOverItsSoilFileOrConfig) {
+  const std::string soil = (dir_ / "soil.yaml").string();
+  fs::copy_file(kSrc + "/configs/soils/lete_sand.yaml", soil);
+  expect_refused(
+      {"traction", config2d(), "--ground", soil, "--load", "3000", "--slip", "0.2", "--plot", soil},
+      soil, {"--plot", "--ground"});
+  expect_refused({"traction", config2d(), "--ground", soil, "--load", "3000", "--slip", "0.2",
+                  "--plot", hammer()},
+                 hammer(), {"--plot", "modal.hammer_csv"});
+}
+
 TEST_F(CliOutputsOverInputs, FootprintMapOverTheHammerDataAndPlotOverTheMap) {
   expect_refused({"footprint", config3d(), "--load", "4000", "--map-csv", hammer()}, hammer(),
                  {"--map-csv", "modal.hammer_csv"});

@@ -1,9 +1,12 @@
 // The rheology identification CSV readers, each tried on the same input (a file meant for one
 // is rejected by the others' headers), and the identification each feeds, with the geometry of
-// the bundled test data (tests/data/rheology).
+// the bundled test data (tests/data/rheology); the soil's plate-sinkage and shear tests
+// (docs/soil.md) and the ground's road-profile CSV.
 #include <string>
 
 #include "fuzz_support.h"
+#include "modaltyre/ground/road_profile.h"
+#include "modaltyre/rheology/bevameter.h"
 #include "modaltyre/rheology/contact_stress.h"
 #include "modaltyre/rheology/free_vibration.h"
 #include "modaltyre/rheology/load_deflection.h"
@@ -40,6 +43,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size) {
   guarded([&] { (void)r::identify_static_loop(r::read_static_loop_csv(path), three); });
   guarded([&] {
     (void)r::identify_free_vibration(r::read_free_vibration_csv(path), nullptr, three);
+  });
+  guarded([&] { (void)r::identify_bevameter(r::read_plate_sinkage_csv(path)); });
+  guarded([&] { (void)r::identify_shear(r::read_shear_csv(path)); });
+  guarded([&] {
+    const auto profile = modaltyre::ground::read_road_profile_csv(path);
+    (void)profile.height_at(0.5 * (profile.x_m.front() + profile.x_m.back()));
   });
   return 0;
 }

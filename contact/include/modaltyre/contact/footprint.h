@@ -28,6 +28,7 @@ struct PatchUnit {
   double fz_N = 0;        ///< vertical force on the unit
   double fx_N = 0;        ///< horizontal force on the unit
   double pressure_Pa = 0; ///< fz / (dx * contact width)
+  double soil_depth_m = 0; ///< on a soil: the ground's surface under the unit below the undisturbed surface
 };
 
 struct FootprintResult {
@@ -46,6 +47,13 @@ struct FootprintResult {
   std::vector<double> contour_x_m;      ///< deformed tread surface of all candidate units
   std::vector<double> contour_height_m; ///< height above the road (0 in contact)
   std::vector<char> active;             ///< contact flags of the candidate units (warm start)
+  /// On a soil (ground_patch.h): the deepest point of the ground below its undisturbed surface,
+  /// the tyre's own deflection (sinking_m - soil_sinkage_m), Bekker's b used, and the ground's
+  /// surface depth under every candidate unit (the rut where the unit is free). Zero / empty on
+  /// a rigid road.
+  bool on_soil = false;
+  double soil_sinkage_m = 0, tyre_deflection_m = 0, bekker_width_m = 0;
+  std::vector<double> soil_depth_m;
 
   bool ok() const { return modaltyre::ok(status); }
   double vertical_stiffness_N_m() const { return load.load_N / sinking_m; }

@@ -50,6 +50,7 @@
 #include "modaltyre/contact/patch3d_settings.h"
 #include "modaltyre/contact/tyre_model.h"
 #include "modaltyre/core/solve_status.h"
+#include "modaltyre/ground/pressure_sinkage.h"
 
 namespace modaltyre::contact {
 
@@ -98,6 +99,10 @@ struct Patch3dResult {
   std::vector<double> half_width_m;        ///< lateral edge |y| per section (contour per x)
   std::vector<ColumnEdges> column_edges;   ///< longitudinal edges per column (contour per y)
   std::vector<char> section_active;        ///< F_i > 0 (warm start of the next load)
+  /// On a soil (Patch3dPhysics::soil): the soil's sinkage under every cell [m] (at
+  /// [i * columns + j]; empty on the rigid road) and its deepest value.
+  std::vector<double> soil_depth_m;
+  double soil_sinkage_m = 0;
   /// Sidewall softening: the lost sidewall force e(u_i) ds per section [N] (empty: disabled)
   /// and the fixed-point steps taken.
   std::vector<double> sidewall_force_N;
@@ -125,6 +130,9 @@ struct Patch3dPhysics {
   double soil_m_per_Pa = 0;
   /// Inflation pressure for the sidewalls' softening [Pa]; negative: the model config's.
   double inflation_pressure_Pa = -1;
+  /// A deformable soil under every cell in series with its tread (ground/, docs/soil.md section
+  /// 4; virgin soil; not with a lateral belt); null: the rigid road. Must outlive the Patch3d.
+  const ground::PressureSinkage* soil = nullptr;
 };
 
 /// The 3D patch on a tyre model's sections. Keeps a reference to the model (it must outlive
@@ -171,7 +179,9 @@ class Patch3d {
   std::vector<double> y_m_, z_m_;  ///< column centres and their crown drops
   std::vector<double> t_;          ///< cell tread compliance per section
   double k_radial_cell_ = 0, k_tangential_cell_ = 0;
-  Eigen::MatrixXd G_;       ///< lateral belt compliance of a section (empty: laterally rigid)
+  Eigen::MatrixXd G_;  ///< lateral belt compliance of a section (empty: laterally rigid)
+  const ground::PressureSinkage* soil_ = nullptr;  ///< the soil under the cells (null: none)
+  std::vector<double> cell_area_m2_;               ///< road area of a cell of each section
   double pressure_Pa_ = 0;  ///< inflation pressure of the sidewalls' softening
 };
 

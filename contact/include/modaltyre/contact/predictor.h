@@ -71,6 +71,10 @@ struct Prediction {
   double width_mm = 0;
   double rolling_resistance_N = 0;  ///< sum f_z x / (R0 - sinking): 0 for a standing tyre
   double elastic_load_N = 0;        ///< load on the elastic tyre (dry_friction moves it)
+  /// On a soil (config ground:, ground_patch.h): the deepest point of the soil below its
+  /// undisturbed surface, the tyre's own deflection (sinking - soil sinkage), Bekker's b.
+  bool on_soil = false;
+  double soil_sinkage_mm = 0, tyre_deflection_mm = 0, bekker_width_mm = 0;
   /// The footprint; `footprint.load` is the applied load (the conditions'), whatever part of it
   /// dry friction carries. On the 3D patch: one unit per section in contact (its resultant, the
   /// centre-line pressure), the longest column's edges and the centre line's contour.

@@ -10,6 +10,7 @@
 #include "modaltyre/contact/effects.h"
 #include "modaltyre/contact/patch3d_settings.h"
 #include "modaltyre/core/config_tree.h"
+#include "modaltyre/ground/ground_settings.h"
 
 namespace modaltyre::contact {
 
@@ -123,6 +124,11 @@ struct TyreConfig {
   /// Section footprint_3d: when present the footprint is predicted on the 3D patch (width,
   /// contour and pressure map; patch3d.h); absent: the 2D patch of width tread.width_m.
   std::optional<Patch3dSettings> footprint_3d;
+  /// tyre.rigid: the tyre is a rigid cylinder of the outer radius (terramechanics' reference
+  /// wheel, ground/rigid_wheel.h) where a command offers it (traction).
+  bool rigid = false;
+  /// Section ground: (ground/ground_settings.h): the flat rigid road by default.
+  ground::GroundSettings ground;
 
   /// The conditions a row takes when it does not state them: the config's load, horizontal
   /// force and inflation pressure, no hold, standing, loading branch, rigid road.

@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include "modaltyre/rheology/bevameter.h"
 #include "modaltyre/rheology/contact_stress.h"
 #include "modaltyre/rheology/load_deflection.h"
 #include "modaltyre/rheology/slope_factors.h"
@@ -18,7 +19,7 @@ namespace modaltyre::report {
 /// What the command's options give; numbers < 0 are "not given".
 struct IdentifyInputs {
   std::string method;  ///< load-deflection | b-factors | contact-stress | free-vibration |
-                       ///< soil-rolling
+                       ///< soil-rolling | bevameter | shear
   std::string file;    ///< measurement CSV (none for b-factors)
   /// Tyre config the geometry of the tyre tests comes from (tyre.outer_radius_mm,
   /// tyre.inflation_pressure_kPa, tread.contact_width_mm); "" for none (identify_geometry_config).
@@ -60,8 +61,20 @@ struct SoilRun {
   rheology::SoilResult result;
 };
 
+/// Soil parameters from plate-sinkage and shear tests (rheology/bevameter.h, docs/soil.md).
+struct BevameterRun {
+  rheology::PlateData data;
+  rheology::BevameterResult result;
+};
+struct ShearRun {
+  rheology::ShearData data;
+  rheology::ShearResult result;
+};
+
 struct IdentifyRun {
-  std::variant<LoadDeflectionRun, SlopeFactorRun, ContactStressRun, FreeVibrationRun, SoilRun> fit;
+  std::variant<LoadDeflectionRun, SlopeFactorRun, ContactStressRun, FreeVibrationRun, SoilRun,
+               BevameterRun, ShearRun>
+      fit;
   /// method, parameters (value, unit, std_error), residual, rows, notes, the method's extras
   /// and the file (the command adds into_config when it writes a tyre config).
   nlohmann::json document;

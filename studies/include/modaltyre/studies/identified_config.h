@@ -18,6 +18,7 @@
 
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_config.h"
+#include "modaltyre/rheology/bevameter.h"
 #include "modaltyre/rheology/contact_stress.h"
 #include "modaltyre/rheology/load_deflection.h"
 #include "modaltyre/rheology/soil.h"
@@ -30,6 +31,7 @@ namespace modaltyre::studies {
 struct ConfigMapping {
   std::vector<std::string> enabled;                    ///< effect names switched on
   std::vector<std::pair<std::string, double>> values;  ///< dotted key, value in the key's unit
+  std::vector<std::pair<std::string, std::string>> words;  ///< dotted key, a word (ground.model)
   std::vector<std::string> notes;                      ///< how each value was obtained, why
 };
 
@@ -66,6 +68,14 @@ void map_three_element(const rheology::FreeVibrationResult& result,
 /// Kelvin-Voigt soil (rolling tests) -> effects.soil_compliance (modulus E2, layer depth A).
 void map_soil(const rheology::SoilData& data, const rheology::SoilResult& result,
               ConfigTarget& target);
+
+/// Plate-sinkage tests -> the ground: section, ground.model = bekker with n, k_c, k_phi (and
+/// unloading k0, Au when the file has cycles), in Wong's units (docs/soil.md section 6).
+void map_bevameter(const rheology::BevameterResult& result, ConfigTarget& target);
+
+/// Shear tests -> the soil's Janosi-Hanamoto keys of TYRE's ground (bekker or kelvin_voigt);
+/// InputError when TYRE's ground is not a soil (identify bevameter first).
+void map_shear(const rheology::ShearResult& result, ConfigTarget& target);
 
 /// Load-deflection (eq. 3) -> the load and pressure laws the data span, then the carcass level
 /// at which the footprint model sinks eq. (3)'s h_Z at the mean test load (docs/rheology.md 6.5).

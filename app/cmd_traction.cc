@@ -1,0 +1,156 @@
+// modaltyre traction CONFIG [--ground SOIL.yaml] --load N... --slip S... [--passes P]
+//                   [--set key=value]... [--json] [--plot FILE]
+// Steady rolling at slip on a soil (docs/soil.md section 5): drawbar pull, thrust, motion
+// resistance, torque, sinkage and rut; the library computes (contact/traction.h), this prints.
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "cli_support.h"
+#include "commands.h"
+#include "footprint_map.h"
+#include "modaltyre/contact/traction.h"
+#include "modaltyre/contact/tyre_config.h"
+#include "modaltyre/core/command_files.h"
+#include "modaltyre/core/config_tree.h"
+#include "modaltyre/core/errors.h"
+#include "modaltyre/core/gnuplot.h"
+#include "modaltyre/report/command_inputs.h"
+#include "modaltyre/report/traction_json.h"
+
+namespace modaltyre::app {
+namespace {
+
+struct TractionArgs {
+  std::string config, ground;
+  std::vector<double> loads, slips;
+  int passes = 1;
+  std::vector<std::string> overrides;
+  bool json = false;
+  std::string plot;
+};
+
+void plot_drawbar_pull(const std::vector<contact::TractionResult>& results,
+                       const std::string& path) {
+  std::map<std::pair<double, int>, PlotSeries> curves;
+  for (const auto& r : results) {
+    auto& s = curves[{r.load_N, r.pass}];
+    s.title = fixed(r.load_N, 0) + " N" + (r.pass > 1 ? ", pass " + std::to_string(r.pass) : "");
+    s.style = "linespoints";
+    s.x.push_back(r.slip);
+    s.y.push_back(r.drawbar_pull_N / r.load_N);
+  }
+  PlotPanel panel{
+      "drawbar pull against slip (Wong's slip)", "slip s [-]", "drawbar pull / load [-]", {}};
+  for (auto& [key, s] : curves) panel.series.push_back(std::move(s));
+  render_plot(PlotFigure{{panel}}, path);
+}
+
+}  // namespace
+
+void register_traction(CLI::App& app) {
+  auto a = std::make_shared<TractionArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "traction",
+      "Steady rolling at slip on a soil (Bekker-Wong or Kelvin-Voigt, Janosi-Hanamoto shear): "
+      "drawbar pull, thrust, motion resistance, torque, sinkage and rut per load and slip "
+      "(docs/soil.md). --set tyre.rigid=true: the rigid cylinder of the outer radius.");
+  cmd->add_option("CONFIG", a->config, "tyre config (YAML); a 3D config runs its 2D patch")
+      ->required();
+  cmd->add_option("--ground", a->ground,
+                  "soil file (YAML with a ground: section, e.g. configs/soils/lete_sand.yaml); "
+                  "default: the config's ground: section");
+  cmd->add_option("--load", a->loads, "vertical load [N]; repeat for several")
+      ->required()
+      ->check(physical_range(contact::kMinLoad_N, contact::kMaxLoad_N, "N",
+                             "1e7 N (1000 t on one wheel) exceeds any tyre"));
+  cmd->add_option("--slip", a->slips,
+                  "slip (Wong: driven s = 1 - V/(omega R) > 0, braked s = omega R/V - 1 < 0); "
+                  "repeat, or several values after one --slip")
+      ->required()
+      ->check(physical_range(-0.99, 1, "-",
+                             "a braked wheel locks at s = -1, a driven one "
+                             "spins in place at s = 1",
+                             true));
+  cmd->add_option("--passes", a->passes, "passes over the same track (each meets the rut), 1-20")
+      ->check(CLI::Range(1, 20));
+  cmd->add_option("--set", a->overrides,
+                  "override a config key (tyre.rigid=true), or a soil key when --ground is "
+                  "given (ground.bekker.n=0.8)");
+  cmd->add_flag("--json", a->json, "print JSON");
+  cmd->add_option("--plot", a->plot, "draw drawbar pull / load against slip (.svg or .png)");
+  cmd->callback([a] {
+    refuse_repeated_overrides(a->overrides);
+    // With --ground, the ground.* overrides go to the soil file, the rest to the tyre config.
+    // tyre.rigid is applied after the ground (the config reader refuses a rigid tyre on a road).
+    std::vector<std::string> tyre_overrides, ground_overrides;
+    std::optional<bool> rigid;
+    for (const auto& o : a->overrides) {
+      if (o.rfind("tyre.rigid=", 0) == 0) {
+        try {
+          rigid = parse_set_value(o.substr(11), "tyre.rigid").as<bool>();
+        } catch (const YAML::Exception&) {
+          throw InputError({"--set", 0, "tyre.rigid"}, "must be true or false");
+        }
+        continue;
+      }
+      (!a->ground.empty() && o.rfind("ground.", 0) == 0 ? ground_overrides : tyre_overrides)
+          .push_back(o);
+    }
+    contact::TyreConfig config = contact::load_tyre_config(a->config, tyre_overrides);
+    if (rigid) config.rigid = *rigid;
+    const ground::GroundSettings g =
+        a->ground.empty() ? config.ground : ground::load_ground_file(a->ground, ground_overrides);
+    if (!g.soil())
+      throw InputError({a->ground.empty() ? a->config : a->ground, 0, "ground.model"},
+                       "traction needs a soil: model bekker or kelvin_voigt");
+    CommandFiles files;  // before anything is computed: no output over an input
+    report::add_config_inputs(files, config);
+    files.input(a->ground, "--ground");
+    if (!a->plot.empty()) files.output(a->plot, "--plot");
+    files.check();
+    if (config.footprint_3d) {  // the 2D patch of the 3D config's tread (docs/soil.md)
+      config.tread.width_m = config.footprint_3d->tread_width_m;
+      config.footprint_3d.reset();
+    }
+    config.ground = g;
+    contact::TractionOptions opt;
+    opt.rigid = config.rigid;
+    opt.passes = a->passes;
+    std::vector<contact::TractionCase> cases;
+    for (double load : a->loads)
+      for (double s : a->slips) cases.push_back({load, s});
+    contact::TyreModel model = contact::build_tyre_model(config);
+    const auto results = contact::steady_traction(model, g, cases, opt);
+    report::require_traction_converged(results);
+    if (!a->plot.empty()) plot_drawbar_pull(results, a->plot);
+    if (a->json) {
+      print_json(report::traction_json(config, g, results, opt.rigid, a->passes));
+      return;
+    }
+    std::cout << (opt.rigid ? "rigid cylinder" : "flexible tyre (2D patch)") << " R0 "
+              << fixed(config.outer_radius_m * 1e3, 1) << " mm, width "
+              << fixed(config.tread.width_m * 1e3, 1) << " mm on "
+              << (g.name.empty() ? ground::to_string(g.model) : g.name) << "\n";
+    std::cout << "  load_N    slip" << (a->passes > 1 ? "  pass" : "")
+              << "  sinkage_mm  rut_mm  drawbar_N  thrust_N  resist_N  torque_Nm  entry_deg  "
+                 "exit_deg  b_mm\n";
+    for (const auto& r : results) {
+      char line[256];
+      std::snprintf(line, sizeof line, "%8.0f  %6.3f", r.load_N, r.slip);
+      std::cout << line;
+      if (a->passes > 1)
+        std::cout << "  " << std::string(4 - std::to_string(r.pass).size(), ' ') << r.pass;
+      std::snprintf(line, sizeof line,
+                    "  %10.2f  %6.2f  %9.1f  %8.1f  %8.1f  %9.1f  %9.2f  %8.2f  %5.1f\n",
+                    r.soil_sinkage_m * 1e3, r.rut_depth_m * 1e3, r.drawbar_pull_N, r.thrust_N,
+                    r.motion_resistance_N, r.torque_Nm, r.entry_angle_rad * 180 / M_PI,
+                    r.exit_angle_rad * 180 / M_PI, r.bekker_width_m * 1e3);
+      std::cout << line;
+    }
+  });
+}
+
+}  // namespace modaltyre::app

@@ -1,0 +1,55 @@
+// Drawbar-pull curves on LETE sand (docs/soil.md section 5): 20 slips 0.02-0.40 at 3 kN, one
+// pass, the whole curve per iteration (each slip warm-starts from the previous one), on the
+// 2D SF-350 (configs/sf350_2d_table3.yaml), on the 2D patch of the 3D default
+// (configs/sf350.yaml) and for the rigid wheel. Issue 37's targets: < 2 s (2D), < 10 s (3D).
+// The model is built once outside the timing (as one `traction` process builds it once).
+#include <benchmark/benchmark.h>
+
+#include <string>
+#include <vector>
+
+#include "modaltyre/contact/traction.h"
+#include "modaltyre/ground/ground_settings.h"
+
+namespace {
+
+using namespace modaltyre;
+
+const std::string kDir = std::string(MODALTYRE_SOURCE_DIR) + "/configs/";
+
+std::vector<contact::TractionCase> curve() {
+  std::vector<contact::TractionCase> cases;
+  for (int k = 1; k <= 20; ++k) cases.push_back({3000, 0.02 * k});
+  return cases;
+}
+
+void drawbar_curve(benchmark::State& state, const std::string& config, bool rigid) {
+  contact::TyreConfig c = contact::load_tyre_config(kDir + config);
+  if (c.footprint_3d) {  // as `traction` runs a 3D config: its 2D patch at the 3D tread width
+    c.tread.width_m = c.footprint_3d->tread_width_m;
+    c.footprint_3d.reset();
+  }
+  const ground::GroundSettings g = ground::load_ground_file(kDir + "soils/lete_sand.yaml");
+  c.ground = g;
+  const contact::TyreModel model = contact::build_tyre_model(c);
+  contact::TractionOptions o;
+  o.rigid = rigid;
+  for (auto _ : state) {
+    auto r = contact::steady_traction(model, g, curve(), o);
+    if (!r.back().ok()) state.SkipWithError(r.back().message.c_str());
+    benchmark::DoNotOptimize(r);
+  }
+}
+
+void BM_DrawbarCurve2D(benchmark::State& s) { drawbar_curve(s, "sf350_2d_table3.yaml", false); }
+void BM_DrawbarCurve3DDefault(benchmark::State& s) { drawbar_curve(s, "sf350.yaml", false); }
+void BM_DrawbarCurveRigidWheel(benchmark::State& s) {
+  drawbar_curve(s, "sf350_2d_table3.yaml", true);
+}
+BENCHMARK(BM_DrawbarCurve2D)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_DrawbarCurve3DDefault)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_DrawbarCurveRigidWheel)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,81 @@
+#pragma once
+// Steady rolling at slip on a soil (docs/soil.md section 5): drawbar pull, thrust, motion
+// resistance, torque, sinkage and rut of the tyre (2D patch) or of the rigid cylinder of its outer
+// radius (tyre.rigid: ground/rigid_wheel.h).
+//
+// Slip: Wong's definitions, driven s = 1 - V / (omega R) > 0, braked s = omega R / V - 1 < 0,
+// R = the outer radius R0 (the tread's circumferential speed omega R0).
+//
+// The flexible tyre (2D patch, ground_patch.h) in steady rolling, as a fixed point:
+//  1. Normal contact: the static problem on the soil, each unit's ground with the memory of the
+//     ground ahead of it: a ground point under unit i has passed under every unit in front, so
+//     its z_max is max(prior, max_{j ahead of i} z_j). Loading where the unit is the deepest so
+//     far, the unloading branch behind (and the rut's reloading branch on a later pass).
+//  2. Shear: j_i = (s_f - s_i) - (V / omega R0)(x_f - x_i), s the units' arc coordinate R0 theta,
+//     x their deformed position, f the front edge (the rigid wheel's j(theta) when the contour is
+//     the circle); tau_i from the ground's shear law (shear.h) marched from the front;
+//     horizontal force on unit i: tau_i b dx_i minus the normal force's horizontal component
+//     f_i tan alpha_i (alpha_i the soil surface's slope under the unit); the shear's vertical
+//     component tau_i b dx_i tan alpha_i shares the load.
+//  3. The horizontal forces act on the carcass (seed 001's f_xi through H_tr, H_tt: the vertical
+//     displacement they cause enters the gap, vertical_from_horizontal) and on the tread.
+// Repeated until the sinkage profile, the drawbar pull and the load share settle.
+// Resultants: thrust H = sum tau b dx, motion resistance R_c = sum f tan alpha, drawbar pull
+// DP = H - R_c, torque T = sum (f_x h + f_z x) about the axle (h the axle's height above the
+// point, x its position ahead of the axle).
+#include <string>
+#include <vector>
+
+#include "modaltyre/contact/tyre_model.h"
+#include "modaltyre/core/solve_status.h"
+#include "modaltyre/ground/ground_settings.h"
+
+namespace modaltyre::contact {
+
+struct TractionCase {
+  double load_N = 0;
+  double slip = 0;  ///< in (-1, 1]
+};
+
+struct TractionResult {
+  SolveStatus status = SolveStatus::failed;
+  std::string message;
+  double load_N = 0, slip = 0;
+  int pass = 1;
+  double soil_sinkage_m = 0;  ///< deepest point below the undisturbed surface
+  double rut_depth_m = 0;     ///< the track behind the tyre, unloaded
+  double z_max_m = 0;         ///< the track's memory after this pass
+  double sinking_m = 0;       ///< axle approach to the undisturbed surface
+  double tyre_deflection_m = 0;
+  double drawbar_pull_N = 0, thrust_N = 0, motion_resistance_N = 0, torque_Nm = 0;
+  double entry_angle_rad = 0, exit_angle_rad = 0;  ///< contact edges seen from the axle
+  double contact_length_m = 0, bekker_width_m = 0;
+  int iterations = 0;
+  bool ok() const { return modaltyre::ok(status); }
+};
+
+struct TractionOptions {
+  bool rigid = false;  ///< the rigid cylinder of the outer radius (ground/rigid_wheel.h)
+  int passes = 1;      ///< 1..20: each pass meets the previous pass's rut
+  int max_iterations = 200;
+  /// Settled when a step changes the drawbar pull, the shear's load share and every unit's
+  /// horizontal force by at most tolerance x load, Bekker's b by tolerance x width, and the
+  /// sinkage profile by depth_tolerance x the sinkage (the figures printed, to 4-5 digits; the
+  /// ground's memory makes the last digits of the profile creep at the patch's rear).
+  double tolerance = 1e-5;
+  double depth_tolerance = 1e-4;
+};
+
+/// Every case for passes 1..P, in the order case by case, pass by pass. The model must be a
+/// 2D one (no footprint_3d); its width is the contact width. `ground` must be a soil.
+std::vector<TractionResult> steady_traction(const TyreModel& model,
+                                            const ground::GroundSettings& ground,
+                                            const std::vector<TractionCase>& cases,
+                                            const TractionOptions& options = {});
+
+/// One pass of the flexible tyre on a track of memory prior_z_max_m.
+TractionResult traction_pass(const TyreModel& model, const ground::GroundSettings& ground,
+                             const TractionCase& c, double prior_z_max_m,
+                             const TractionOptions& options = {});
+
+}  // namespace modaltyre::contact

@@ -1,0 +1,264 @@
+#include "modaltyre/contact/traction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "modaltyre/contact/ground_patch.h"
+#include "modaltyre/core/errors.h"
+#include "modaltyre/ground/rigid_wheel.h"
+
+namespace modaltyre::contact {
+namespace {
+
+// What one slip's fixed point hands to the next (warm start) and what it iterates on.
+struct RollingState {
+  std::vector<double> depth_m;  ///< ground surface depth under each candidate unit
+  std::vector<double> fx_N;     ///< horizontal force on each unit (on the tyre, +x forward)
+  double shear_vertical_N = 0;  ///< vertical component of the shear forces
+  double bekker_width_m = 0;
+  std::vector<char> active;
+  std::vector<double> force_N;  ///< vertical force per unit (the soil's linearisation point)
+};
+
+TractionResult fail_with(const TractionCase& c, int pass, std::string why,
+                         SolveStatus status = SolveStatus::failed) {
+  TractionResult r;
+  r.load_N = c.load_N;
+  r.slip = c.slip;
+  r.pass = pass;
+  r.status = status;
+  r.message = std::move(why);
+  return r;
+}
+
+TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
+                            const ground::GroundSettings& g, const TractionCase& c, int pass,
+                            double prior, const TractionOptions& o, RollingState& st) {
+  const int m = model.candidates();
+  const double R0 = model.config.outer_radius_m, width = model.config.tread.width_m;
+  const double ds = model.unit_length_m;
+  // The tread's stick stiffness per unit area on a rigid road: G / h (seed 001 eq. 6-9).
+  const TreadSprings unit = tread_springs(model.config.tread, 1.0, 1.0);
+  const std::unique_ptr<ground::ShearLaw> shear = g.shear_law(unit.tangential_N_m);
+  const double rho = ground::speed_ratio(c.slip);
+  if (st.depth_m.size() != std::size_t(m)) st.depth_m.assign(m, 0.0);
+  if (st.fx_N.size() != std::size_t(m)) st.fx_N.assign(m, 0.0);
+  std::vector<double> z_max(m), offset(m), slope(m);
+  const PatchOperator op = static_matrix_free_operator(model);
+  double last_dp = 0;
+  std::vector<Eigen::VectorXd> xs, gs;  // recent states and their images (Anderson mixing)
+  double last_residual = 1e300;
+  for (int it = 1; it <= o.max_iterations; ++it) {
+    // 1. The memory of the ground ahead of each unit (front = the highest index).
+    double ahead = prior;
+    for (int i = m - 1; i >= 0; --i) {
+      z_max[i] = ahead;
+      ahead = std::max(ahead, st.depth_m[i]);
+    }
+    const Eigen::Map<const Eigen::VectorXd> fx(st.fx_N.data(), m);
+    Eigen::Map<Eigen::VectorXd>(offset.data(), m) = V * fx;
+    const double normal_load = c.load_N - st.shear_vertical_N;
+    if (!(normal_load > 0))
+      return fail_with(c, pass, "the shear's vertical component exceeds the load");
+    GroundPatchInput in;
+    if (g.soil()) in.z_max_m = z_max;
+    in.gap_offset_m = offset;
+    // Bekker's b = min(width, contact length) iterates with the rolling state (fixed per step).
+    in.bekker_width_m = st.bekker_width_m > 0 ? st.bekker_width_m : width;
+    in.fixed_bekker_width = true;
+    const double b_used = in.bekker_width_m;
+    in.warm_active = st.active;
+    in.initial_force_N = st.force_N;
+    const FootprintResult f = solve_ground_patch(model, op, {normal_load, 0}, g, in);
+    if (!f.ok()) return fail_with(c, pass, f.message, f.status);
+    st.active = f.active;
+    st.bekker_width_m = std::min(width, f.contact_length_m);
+    const double b_change = std::abs(st.bekker_width_m - b_used);
+    // The sinkage the tyre presses into the ground: the units in contact's (a free unit's
+    // surface depth is the memory it was given, which must not feed the memory back).
+    std::vector<double> depth(m, 0.0), surface(m, 0.0);
+    if (f.on_soil) {
+      surface = f.soil_depth_m;
+      for (int i = 0; i < m; ++i) depth[i] = f.active[i] ? f.soil_depth_m[i] : 0.0;
+    }
+    const std::vector<double>& x = f.contour_x_m;
+    // 2. Slopes of the ground surface, shear from the front edge.
+    for (int i = 1; i + 1 < m; ++i)
+      slope[i] = (surface[i - 1] - surface[i + 1]) / (x[i + 1] - x[i - 1]);
+    int first = -1, last = -1;
+    for (int i = 0; i < m; ++i)
+      if (f.active[i]) {
+        if (first < 0) first = i;
+        last = i;
+      }
+    const double t = (f.front_edge_x_m - x[last]) / (x[last + 1] - x[last]);
+    const double s_front =
+        R0 * (model.theta[last] + t * (model.theta[last + 1] - model.theta[last]));
+    ground::ShearPoint point;
+    double j_prev = 0, H = 0, Rc = 0, shear_v = 0, T = 0;
+    const double axle_height = R0 - f.sinking_m;
+    std::vector<double> fx_new(m, 0.0), fz_unit(m, 0.0);
+    for (std::size_t k = 0, i = 0; i < std::size_t(m); ++i)
+      if (f.active[i]) fz_unit[i] = f.units[k++].fz_N;  // units: the active ones, in order
+    st.force_N = fz_unit;
+    for (int i = last; i >= first; --i) {
+      if (!f.active[i]) continue;
+      const double dx = ds * std::cos(model.theta[i]);
+      const double area = width * dx;
+      const double fz = fz_unit[i];
+      const double sigma = fz / area;  // the normal stress (vertical force over road area)
+      const double j = (s_front - R0 * model.theta[i]) - rho * (f.front_edge_x_m - x[i]);
+      const double tau = shear->advance(point, sigma, j - j_prev);
+      j_prev = j;
+      const double fs = tau * area;
+      H += fs;
+      Rc += fz * slope[i];
+      shear_v += fs * slope[i];
+      fx_new[i] = fs - fz * slope[i];
+      const double h = axle_height + depth[i];
+      T += fx_new[i] * h + (fz + fs * slope[i]) * x[i];
+    }
+    const double dp = H - Rc;
+    // Residual of the fixed point x = G(x) on the state (depth profile, horizontal forces, the
+    // shear's load share), in mm and N so that the mixing weighs them alike.
+    const int n = 2 * m + 1;
+    Eigen::VectorXd state(n), image(n);
+    for (int i = 0; i < m; ++i) {
+      state(i) = st.depth_m[i] * 1e3, image(i) = depth[i] * 1e3;
+      state(m + i) = st.fx_N[i], image(m + i) = fx_new[i];
+    }
+    state(2 * m) = st.shear_vertical_N, image(2 * m) = shear_v;
+    double change = 0, deepest = 1e-12, fx_change = 0;
+    for (int i = 0; i < m; ++i) {
+      change = std::max(change, std::abs(depth[i] - st.depth_m[i]));
+      deepest = std::max(deepest, std::abs(depth[i]));
+      fx_change = std::max(fx_change, std::abs(fx_new[i] - st.fx_N[i]));
+    }
+    const bool settled = it > 1 && change <= o.depth_tolerance * std::max(deepest, f.sinking_m) &&
+                         std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
+                         fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
+                         std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N;
+    last_dp = dp;
+    // Anderson mixing (depth kAnderson): the next state is the combination of the recent images
+    // G(x_j) whose residuals G(x_j) - x_j cancel best; the plain step x <- G(x) converges
+    // linearly at a ratio of ~0.7 here (the ground's memory follows the sinkage of the units
+    // ahead).
+    constexpr int kAnderson = 4;
+    // Safeguard: a residual that does not shrink restarts the history from the plain step.
+    const double residual = (image - state).norm();
+    if (residual >= last_residual) xs.clear(), gs.clear();
+    last_residual = residual;
+    xs.push_back(state), gs.push_back(image);
+    if (static_cast<int>(xs.size()) > kAnderson + 1) xs.erase(xs.begin()), gs.erase(gs.begin());
+    Eigen::VectorXd next = image;
+    const int k = static_cast<int>(xs.size()) - 1;
+    if (k > 0) {
+      Eigen::MatrixXd dR(n, k), dG(n, k);
+      for (int j = 0; j < k; ++j) {
+        dR.col(j) = (gs[j + 1] - xs[j + 1]) - (gs[j] - xs[j]);
+        dG.col(j) = gs[j + 1] - gs[j];
+      }
+      const Eigen::VectorXd gamma = dR.colPivHouseholderQr().solve(gs[k] - xs[k]);
+      if (gamma.allFinite()) next -= dG * gamma;
+    }
+    for (int i = 0; i < m; ++i) {
+      st.depth_m[i] = std::max(next(i) * 1e-3, 0.0);
+      st.fx_N[i] = next(m + i);
+    }
+    st.shear_vertical_N = next(2 * m);
+    if (settled) {
+      TractionResult r;
+      r.status = SolveStatus::converged;
+      r.load_N = c.load_N;
+      r.slip = c.slip;
+      r.pass = pass;
+      r.iterations = it;
+      r.sinking_m = f.sinking_m;
+      r.soil_sinkage_m = f.soil_sinkage_m;
+      r.tyre_deflection_m = f.sinking_m - f.soil_sinkage_m;
+      r.z_max_m = std::max(prior, *std::max_element(depth.begin(), depth.end()));
+      r.rut_depth_m =
+          g.soil() ? g.normal_law(std::max(f.bekker_width_m, 1e-6))->rebound_depth_m(r.z_max_m)
+                   : 0.0;
+      r.thrust_N = H;
+      r.motion_resistance_N = Rc;
+      r.drawbar_pull_N = dp;
+      r.torque_Nm = T;
+      r.entry_angle_rad = std::atan2(f.front_edge_x_m, axle_height);
+      r.exit_angle_rad = std::atan2(f.rear_edge_x_m, axle_height + depth[first]);
+      r.contact_length_m = f.contact_length_m;
+      r.bekker_width_m = f.bekker_width_m;
+      std::ostringstream msg;
+      msg << "converged in " << it << " rolling steps";
+      r.message = msg.str();
+      return r;
+    }
+  }
+  std::ostringstream msg;
+  msg << "steady rolling did not settle in " << o.max_iterations << " steps";
+  return fail_with(c, pass, msg.str(), SolveStatus::max_iterations);
+}
+
+TractionResult rigid_pass(const TyreModel& model, const ground::GroundSettings& g,
+                          const TractionCase& c, int pass, double prior) {
+  const ground::RigidWheel wheel{model.config.outer_radius_m, model.config.tread.width_m};
+  const ground::RigidWheelResult w = ground::rigid_wheel_rolling(g, wheel, c.load_N, c.slip, prior);
+  if (!w.ok()) return fail_with(c, pass, w.message, w.status);
+  TractionResult r;
+  r.status = w.status;
+  r.message = w.message;
+  r.load_N = c.load_N;
+  r.slip = c.slip;
+  r.pass = pass;
+  r.soil_sinkage_m = w.sinkage_m;
+  r.sinking_m = w.sinkage_m;
+  r.rut_depth_m = w.rut_depth_m;
+  r.z_max_m = w.z_max_m;
+  r.drawbar_pull_N = w.drawbar_pull_N;
+  r.thrust_N = w.thrust_N;
+  r.motion_resistance_N = w.motion_resistance_N;
+  r.torque_Nm = w.torque_Nm;
+  r.entry_angle_rad = w.entry_angle_rad;
+  r.exit_angle_rad = w.exit_angle_rad;
+  r.contact_length_m = w.contact_length_m;
+  r.bekker_width_m = w.bekker_width_m;
+  return r;
+}
+
+}  // namespace
+
+TractionResult traction_pass(const TyreModel& model, const ground::GroundSettings& g,
+                             const TractionCase& c, double prior, const TractionOptions& o) {
+  if (o.rigid) return rigid_pass(model, g, c, 1, prior);
+  RollingState st;
+  return rolling_pass(model, vertical_from_horizontal(model), g, c, 1, prior, o, st);
+}
+
+std::vector<TractionResult> steady_traction(const TyreModel& model, const ground::GroundSettings& g,
+                                            const std::vector<TractionCase>& cases,
+                                            const TractionOptions& o) {
+  std::vector<TractionResult> out;
+  if (model.config.footprint_3d)
+    throw std::invalid_argument("steady_traction runs the 2D patch: the model has footprint_3d");
+  if (g.model == ground::GroundModel::profile)
+    throw std::invalid_argument(
+        "traction on a road profile is not built (a soil or the flat road)");
+  const Eigen::MatrixXd V = o.rigid ? Eigen::MatrixXd() : vertical_from_horizontal(model);
+  // Each pass's state warm-starts the same pass of the next case (same load, next slip).
+  std::vector<RollingState> states(std::max(1, o.passes));
+  for (const auto& c : cases) {
+    double prior = 0;
+    for (int p = 1; p <= o.passes; ++p) {
+      TractionResult r = o.rigid ? rigid_pass(model, g, c, p, prior)
+                                 : rolling_pass(model, V, g, c, p, prior, o, states[p - 1]);
+      if (!r.ok()) states[p - 1] = {};
+      prior = r.z_max_m;
+      out.push_back(std::move(r));
+      if (!out.back().ok()) break;
+    }
+  }
+  return out;
+}
+
+}  // namespace modaltyre::contact
