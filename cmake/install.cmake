@@ -3,7 +3,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(_modaltyre_modules core modal ema solvers rheology contact transient studies discover tir
+set(_modaltyre_modules core modal ema solvers rheology ground contact transient studies discover tir
     init report)
 foreach(module IN LISTS _modaltyre_modules)
   set_target_properties(modaltyre_${module} PROPERTIES EXPORT_NAME ${module})

@@ -1,0 +1,77 @@
+#pragma once
+// The ground under the tyre as configured: section `ground:` of a tyre config, or a soil file
+// (a YAML document with a top-level `ground:` section, configs/soils/). Every key can be set
+// with --set ground.KEY=VALUE. Keys (units in the names; Bekker's in Wong's units):
+//
+//   ground:
+//     model: bekker                 # rigid | profile | kelvin_voigt | bekker
+//     name: LETE sand               # free text, printed with the results
+//     source: "Wong, Theory of Ground Vehicles, 4th ed., Table 2.3"
+//     friction_coefficient: 0.8     # rigid, profile: Coulomb mu of the road
+//     profile_csv: road.csv         # profile: x_m,height_m (relative to this file's folder)
+//     bekker:
+//       n: 0.79
+//       k_c: 102                    # kN/m^(n+1)
+//       k_phi: 5301                 # kN/m^(n+2)
+//       cohesion_kPa: 1.3           # Janosi-Hanamoto shear (shear.h)
+//       friction_angle_deg: 31.1
+//       shear_modulus_K_mm: 12
+//       unloading: {k0: 0, Au: 5e5} # Wong's k_u = k0 [kN/m^3] + Au [kN/m^4] z_max; absent:
+//                                   # rigid-plastic (no rebound)
+//     kelvin_voigt:                 # seed 000 eq. 23-28 (kelvin_voigt_soil.h)
+//       E2_MPa: 2
+//       eta2_kPa_s: 0
+//       layer_mm: 200
+//       elastic_share: 1            # k_E (seed 000 eq. 24)
+//       cohesion_kPa: 0             # its Janosi-Hanamoto shear
+//       friction_angle_deg: 30
+//       shear_modulus_K_mm: 25
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "modaltyre/core/config_tree.h"
+#include "modaltyre/ground/bekker_wong.h"
+#include "modaltyre/ground/kelvin_voigt_soil.h"
+#include "modaltyre/ground/road_profile.h"
+#include "modaltyre/ground/shear.h"
+
+namespace modaltyre::ground {
+
+enum class GroundModel { rigid, profile, kelvin_voigt, bekker };
+
+const char* to_string(GroundModel model);
+
+struct GroundSettings {
+  GroundModel model = GroundModel::rigid;
+  std::string name, source;
+  double friction_coefficient = 0.8;           ///< rigid road and profile: Coulomb mu
+  std::string profile_csv;                     ///< resolved path (profile)
+  std::shared_ptr<const RoadProfile> profile;  ///< read from profile_csv by the reader
+  BekkerParams bekker;
+  JanosiParams bekker_shear{0, 30, 25};
+  KelvinVoigtParams kelvin_voigt;
+  JanosiParams kelvin_voigt_shear{0, 30, 25};
+
+  /// A deformable soil (bekker, kelvin_voigt), as opposed to a rigid road.
+  bool soil() const { return model == GroundModel::bekker || model == GroundModel::kelvin_voigt; }
+  /// The soil's normal law with Bekker's width b (ignored by the Kelvin-Voigt soil);
+  /// std::invalid_argument for a rigid ground.
+  std::unique_ptr<PressureSinkage> normal_law(double b_m) const;
+  /// The soil's Janosi-Hanamoto parameters (std::invalid_argument for a rigid ground).
+  const JanosiParams& soil_shear() const;
+  /// The tangential law: Janosi-Hanamoto on soil, Coulomb with the tread's stick stiffness
+  /// [Pa/m] on a rigid road.
+  std::unique_ptr<ShearLaw> shear_law(double stick_stiffness_Pa_m) const;
+};
+
+/// Reads a `ground:` section; errors name file, line and key (InputError). Relative paths are
+/// taken from `tree`'s folder.
+GroundSettings read_ground_settings(const ConfigSection& section, const ConfigTree& tree);
+
+/// Reads a soil file (top-level `ground:` and nothing else) with --set overrides of the form
+/// "ground.KEY=VALUE"; unknown keys refused.
+GroundSettings load_ground_file(const std::string& path,
+                                const std::vector<std::string>& overrides = {});
+
+}  // namespace modaltyre::ground
