@@ -16,6 +16,7 @@ void register_discover(CLI::App& app);
 void register_ema(CLI::App& app);
 void register_tir(CLI::App& app);
 void register_init(CLI::App& app);
+void register_fmu(CLI::App& app);
 
 
 }  // namespace modaltyre::app

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   modaltyre::app::register_ema(app);
   modaltyre::app::register_tir(app);
   modaltyre::app::register_init(app);
+  modaltyre::app::register_fmu(app);
 
   // Every footprint of the effects path allocates and frees a few dense candidate-unit matrices
   // (~250 kB on the 2 mm mesh). glibc returns such memory to the kernel when the top of the heap
