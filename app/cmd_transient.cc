@@ -33,7 +33,21 @@ struct TransientArgs {
   std::string plot;
   bool json = false;
   std::vector<std::string> overrides;
+  std::vector<double> map_times;
+  std::string map_csv;
 };
+
+// The 3D patch's contact maps at the chosen times: time_s,x_mm,y_mm,pressure_kPa, one row per
+// cell (sections in contact and two either side, every column).
+std::string map_csv(const transient::TransientResult& r) {
+  std::ostringstream o;
+  o.precision(10);
+  o << "time_s,x_mm,y_mm,pressure_kPa\n";
+  for (const auto& m : r.maps)
+    for (std::size_t k = 0; k < m.x_mm.size(); ++k)
+      o << m.t_s << ',' << m.x_mm[k] << ',' << m.y_mm[k] << ',' << m.pressure_kPa[k] << '\n';
+  return o.str();
+}
 
 // The CSV of the series report::transient_series gives (one line per sample, 10 digits).
 std::string transient_csv(const transient::TransientResult& r) {
@@ -75,7 +89,14 @@ void transient_plot(const transient::TransientResult& r, const std::string& path
     return m;
   };
   const double force_scale = largest(load);
-  const double scales[] = {force_scale, largest(sink), largest(len), force_scale};
+  std::vector<double> scales = {force_scale, largest(sink), largest(len), force_scale};
+  if (r.patch_3d) {  // the 3D patch: the contact width too
+    PlotSeries wid{"contact width", {}, {}};
+    for (const auto& s : r.samples) wid.x.push_back(s.t_s), wid.y.push_back(s.width_m * 1e3);
+    scales.push_back(largest(wid));
+    fig.panels.push_back({sc + ": contact width", "t [s]", "width [mm]", {wid}});
+    fig.height_px = 1000;
+  }
   for (std::size_t i = 0; i < fig.panels.size(); ++i) {
     ensure_min_y_span(fig.panels[i], 0.01 * scales[i]);
   }
@@ -91,8 +112,10 @@ void register_transient(CLI::App& app) {
       "Time-domain simulation (CVODE BDF + KLU): modal carcass, Kelvin-Voigt tread relaxation, "
       "hub mass, unilateral contact. Scenarios: load-hold, free-vibration, rolling, cleat "
       "(settings in the config's transient: section, see docs/transient.md).");
-  cmd->add_option("CONFIG", a->config,
-                  "tyre config (YAML) on the 2D patch, e.g. configs/sf350_2d_table3.yaml")
+  cmd->add_option(
+         "CONFIG", a->config,
+         "tyre config (YAML): the 3D patch with footprint_3d: (configs/sf350.yaml), else the 2D "
+         "patch (configs/sf350_2d_table3.yaml, the fast variant)")
       ->required();
   cmd->add_option("--scenario", a->scenario, "load-hold | free-vibration | rolling | cleat")
       ->required();
@@ -100,6 +123,11 @@ void register_transient(CLI::App& app) {
                   "write the time series (t_s,load_N,hub_displacement_mm,sinking_mm,"
                   "contact_length_mm,longitudinal_force_N)");
   cmd->add_flag("--json", a->json, "print a JSON summary");
+  cmd->add_option("--map-times", a->map_times,
+                  "3D patch: times [s] of the contact maps, e.g. --map-times 0.1,0.2")
+      ->delimiter(',');
+  cmd->add_option("--map-csv", a->map_csv,
+                  "3D patch: write the contact maps (time_s,x_mm,y_mm,pressure_kPa)");
   cmd->add_option("--plot", a->plot, "draw the time series (.svg or .png)");
   cmd->add_option("--set", a->overrides,
                   "override a config key, e.g. --set transient.load_hold.hold_s=10, or state a "
@@ -112,11 +140,11 @@ void register_transient(CLI::App& app) {
     report::map_transient_conditions(settings, scenario, overrides);
     refuse_repeated_overrides(overrides);  // e.g. hold_s=60 and transient.load_hold.hold_s=10
     const auto config = contact::load_tyre_config(a->config, overrides);
-    report::require_2d_patch(config, a->config);
     CommandFiles files;  // before the run: no output over the config or another output
     report::add_config_inputs(files, config);
     if (cmd->count("--csv")) files.output(a->csv, "--csv");
     if (cmd->count("--plot")) files.output(a->plot, "--plot");
+    if (cmd->count("--map-csv")) files.output(a->map_csv, "--map-csv");
     files.check();
     const auto tyre = contact::build_tyre_model(config);
     const auto model = transient::build_transient_model(tyre);
@@ -138,12 +166,23 @@ void register_transient(CLI::App& app) {
       drawn = true;
       return true;
     };
-    const transient::TransientResult r = transient::run_transient(model, scenario, opts);
+    opts.map_times_s = a->map_times;
+    if (!a->map_times.empty() && a->map_csv.empty())
+      throw InputError({"--map-times", 0, ""}, "needs --map-csv FILE to write the maps to");
+    if (!a->map_csv.empty() && a->map_times.empty())
+      throw InputError({"--map-csv", 0, ""}, "needs --map-times T1,T2,... (s)");
+    if (!a->map_times.empty() && !config.footprint_3d)
+      throw InputError({"--map-times", 0, ""},
+                       "contact maps need the 3D patch (a config with footprint_3d:)");
+    const transient::TransientResult r = config.footprint_3d
+                                             ? transient::run_transient_3d(model, scenario, opts)
+                                             : transient::run_transient(model, scenario, opts);
     if (drawn) std::fprintf(stderr, "\n");
     if (!r.ok()) throw ComputationError(r.message);
 
     if (!a->csv.empty()) write_file_atomically(a->csv, transient_csv(r));
     if (!a->plot.empty()) transient_plot(r, a->plot);
+    if (!a->map_csv.empty()) write_file_atomically(a->map_csv, map_csv(r));
     const auto& fin = r.samples.back();
     if (a->json) {
       auto j = report::transient_json(model, r);

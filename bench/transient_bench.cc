@@ -3,6 +3,8 @@
 // Resolution: the config's mesh unless MODALTYRE_BENCH_UNIT_MM is set (e.g. 2 for a quick run).
 // MODALTYRE_BENCH_HOLD_S shortens the 120 s load hold; MODALTYRE_BENCH_SET adds further
 // `key=value` overrides separated by ';' (e.g. "transient.rolling.duration_s=1.5").
+// MODALTYRE_BENCH_3D=1 runs the same benchmarks on the 3D patch of the default config
+// (configs/sf350.yaml, run_transient_3d; docs/transient.md section 7) instead of the 2D variant.
 // Run: build/bench/transient_bench --benchmark_filter=Transient
 #include <benchmark/benchmark.h>
 
@@ -18,12 +20,19 @@ namespace {
 using namespace modaltyre::contact;
 using namespace modaltyre::transient;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+bool patch_3d() {
+  const char* v = std::getenv("MODALTYRE_BENCH_3D");
+  return v && std::string(v) == "1";
+}
+const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) +
+                            (patch_3d() ? "/configs/sf350.yaml" : "/configs/sf350_2d_table3.yaml");
 
 std::vector<std::string> overrides() {
   std::vector<std::string> o;
-  if (const char* u = std::getenv("MODALTYRE_BENCH_UNIT_MM")) o.push_back(std::string("contact.unit_length_mm=") + u);
-  if (const char* h = std::getenv("MODALTYRE_BENCH_HOLD_S")) o.push_back(std::string("transient.load_hold.hold_s=") + h);
+  if (const char* u = std::getenv("MODALTYRE_BENCH_UNIT_MM"))
+    o.push_back(std::string("contact.unit_length_mm=") + u);
+  if (const char* h = std::getenv("MODALTYRE_BENCH_HOLD_S"))
+    o.push_back(std::string("transient.load_hold.hold_s=") + h);
   if (const char* extra = std::getenv("MODALTYRE_BENCH_SET")) {
     std::string all = extra;
     for (std::size_t from = 0; from < all.size();) {
@@ -49,7 +58,7 @@ void run(benchmark::State& state, Scenario s) {
   TransientResult last;
   for (auto _ : state) {
     const double cpu0 = thread_cpu_s();
-    const TransientResult r = run_transient(model, s);
+    const TransientResult r = patch_3d() ? run_transient_3d(model, s) : run_transient(model, s);
     cpu += thread_cpu_s() - cpu0;
     if (!r.ok()) {
       state.SkipWithError(r.message.c_str());

@@ -91,6 +91,7 @@ TransientSettings read_transient_settings(const ConfigSection& tr, double unit_l
   T.cleat.length_m =
       cl.number("length_mm", T.cleat.length_m * 1e3, 4 * unit_length_m * 1e3, 2000) * 1e-3;
   T.cleat.ramp_s = ramp(cl, T.cleat.ramp_s);
+  T.cleat.width_m = cl.number("width_mm", T.cleat.width_m * 1e3, 0, 2000) * 1e-3;
   return T;
 }
 

@@ -30,6 +30,19 @@ nlohmann::json transient_json(const transient::TransientModel& model,
                 {"hub_displacement_mm", round_sig(fin.hub_displacement_m * 1e3)},
                 {"pressure_centre_mm", round_sig(fin.pressure_centre_m * 1e3)},
                 {"contact_units", fin.contact_units}};
+  if (r.patch_3d) {
+    j["patch"] = "3d";
+    j["final"]["width_mm"] = round_sig(fin.width_m * 1e3);
+    j["final"]["contact_area_mm2"] = round_sig(fin.contact_area_m2 * 1e6);
+  }
+  if (r.scenario == transient::Scenario::free_vibration) {
+    const transient::BounceDecay d = transient::bounce_decay(r);
+    if (d.peaks >= 2) {
+      j["free_vibration"] = {{"period_s", round_sig(d.period_s)},
+                             {"log_decrement", round_sig(d.log_decrement)},
+                             {"peaks", d.peaks}};
+    }
+  }
   j["contact_switches"] = r.contact_events;
   j["solver"] = {{"rhs_evals", r.stats.rhs_evals},
                  {"jacobian_evals", r.stats.jac_evals},
@@ -56,14 +69,22 @@ std::vector<std::pair<std::string, std::vector<double>>> transient_series(
                                                                    {"sinking_mm", {}},
                                                                    {"contact_length_mm", {}},
                                                                    {"longitudinal_force_N", {}}};
+  if (r.patch_3d) {
+    cols.push_back({"width_mm", {}});
+    cols.push_back({"contact_area_mm2", {}});
+  }
   for (const auto& s : r.samples) {
+    if (r.patch_3d) {
+      cols[6].second.push_back(s.width_m * 1e3);
+      cols[7].second.push_back(s.contact_area_m2 * 1e6);
+    }
     const double row[] = {s.t_s,
                           s.load_N,
                           s.hub_displacement_m * 1e3,
                           s.sinking_m * 1e3,
                           s.contact_length_m * 1e3,
                           s.longitudinal_force_N};
-    for (std::size_t c = 0; c < cols.size(); ++c) cols[c].second.push_back(row[c]);
+    for (std::size_t c = 0; c < 6; ++c) cols[c].second.push_back(row[c]);
   }
   return cols;
 }

@@ -242,7 +242,9 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
   I.problem = std::move(problem);
   const int64_t n = I.problem.size;
   MODALTYRE_CHECK(n > 0 && static_cast<int64_t>(y0.size()) == n, "ODE size and y0 disagree");
-  MODALTYRE_CHECK(I.problem.rhs && I.problem.jacobian, "ODE problem needs rhs and Jacobian");
+  // The sparse Jacobian is needed by KLU only; a structured solver forms its own matrices.
+  MODALTYRE_CHECK(I.problem.rhs && (I.problem.jacobian || I.problem.linear_setup),
+                  "ODE problem needs rhs and a Jacobian or a structured linear solver");
   MODALTYRE_CHECK(I.problem.roots == 0 || I.problem.root_functions, "root functions missing");
   if (SUNContext_Create(nullptr, &I.ctx) != 0) throw ComputationError("SUNContext_Create failed");
   I.y = N_VNew_Serial(n, I.ctx);

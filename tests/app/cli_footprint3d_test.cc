@@ -180,14 +180,22 @@ TEST_F(Footprint3dCli, DiscoverOnTable3RefitsTheCrownAndOffersNoRefusedEffect) {
   }
 }
 
-// The transient model runs the 2D patch: a 3D config is refused, not run on a patch it did not
-// ask for.
-TEST_F(Footprint3dCli, TransientRefusesA3dConfigNamingThe2dOne) {
-  const auto r = run({"transient", k3d, "--scenario", "free-vibration"});
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("footprint_3d"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("sf350_2d_table3.yaml"), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty());
+// The transient runs the 3D patch of a 3D config (docs/transient.md section 7): --json carries
+// the width and the contact area, --map-times / --map-csv the contact maps.
+TEST_F(Footprint3dCli, TransientRunsThe3dPatchWithWidthAndMaps) {
+  const auto map = (dir_ / "tmap.csv").string();
+  const auto r =
+      run({"transient", k3d, "--scenario", "free-vibration", "--json", "--set",
+           "contact.unit_length_mm=2", "--set", "footprint_3d.lateral_cell_mm=7.5", "--set",
+           "transient.free_vibration.duration_s=0.06", "--map-times", "0,0.05", "--map-csv", map});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["patch"], "3d");
+  EXPECT_GT(j["final"]["width_mm"].get<double>(), 50.0);
+  EXPECT_GT(j["final"]["contact_area_mm2"].get<double>(), 1000.0);
+  const std::string text = modaltyre_test::slurp(map);
+  EXPECT_EQ(text.rfind("time_s,x_mm,y_mm,pressure_kPa\n", 0), 0u) << text.substr(0, 80);
+  EXPECT_NE(text.find("\n0.05,"), std::string::npos);
 }
 
 }  // namespace

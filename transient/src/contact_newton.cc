@@ -49,9 +49,11 @@ bool ContactNewton::setup(double t, const double* y, double gamma, bool jacobian
       for (int i = first; i <= last; ++i) active_.push_back(i);
     kd_active_ = first >= 0 ? kd_.segment(first, last - first + 1) : Eigen::VectorXd();
     Tt_active_.resize(static_cast<Eigen::Index>(active_.size()), np_);
+    // d g / d z: 1, or 0 under a prescribed hub (z an input, scenario.h).
+    const double hub = sys_.plan().hub_free() ? 1.0 : 0.0;
     for (std::size_t a = 0; a < active_.size(); ++a) {
       Tt_active_.row(a).head(M_.rank) = -M_.T.row(active_[a]);
-      Tt_active_(a, M_.rank) = 1.0;
+      Tt_active_(a, M_.rank) = hub;
     }
     Omega_ = sys_.spin(t);
     dOmega_ = sys_.spin_rate(t);
@@ -85,7 +87,8 @@ void ContactNewton::factor(double gamma) {
     b.inv = d.inverse();
   }
   d_r_inv_ = nr > 0 ? 1.0 / (1.0 + gamma / M.tau_residual_s) : 1.0;
-  d_zw_ = gamma;
+  const bool hub_free = sys_.plan().hub_free();
+  d_zw_ = hub_free ? gamma : 0.0;  // a prescribed hub: z' = w' = 0, D = I on (z, w)
   // M_EE and Y = M_EE^-1 diag(kd / c') T~ over the active range (zero beyond its last unit);
   // Ty_ = diag(kd) (T~ - gamma Y) on the active rows.
   const int na = static_cast<int>(active_.size());
@@ -163,7 +166,7 @@ void ContactNewton::factor(double gamma) {
   for (int l = 0; l < nr; ++l)
     DQ_.row(2 * nq + l).head(rank) =
         -(d_r_inv_ * M.lambda(l) / M.tau_residual_s) * M.Cr.col(l).transpose();
-  DQ_(Z + 1, rank) = -1.0 / M.settings.hub_mass_kg;
+  DQ_(Z + 1, rank) = hub_free ? -1.0 / M.settings.hub_mass_kg : 0.0;
   DQ_(Z, rank) = d_zw_ * DQ_(Z + 1, rank);
   Eigen::MatrixXd& H = H_;
   H.setZero(np_, np_);

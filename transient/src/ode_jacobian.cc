@@ -83,6 +83,8 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
       if (in_pattern_[i]) pattern.push_back(i);
   Eigen::MatrixXd B(na, N), Wt(na, N);
   const double mh = M.settings.hub_mass_kg;
+  // A prescribed hub (scenario.h): z is no state of the contact and the forces do not act on it.
+  const double hub = plan_.hub_free() ? 1.0 : 0.0;
   for (int a = 0; a < na; ++a) {
     const int i = active[a];
     for (int j = 0; j < nq; ++j) B(a, j) = -M.psi(i, j), Wt(a, j) = M.psi(i, j);
@@ -90,8 +92,8 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
       B(a, nq + l) = -M.V(i, l);
       Wt(a, nq + l) = M.lambda(l) / M.tau_residual_s * M.V(i, l);
     }
-    B(a, N - 1) = 1.0;
-    Wt(a, N - 1) = -1.0 / mh;
+    B(a, N - 1) = hub;
+    Wt(a, N - 1) = -hub / mh;
   }
   Eigen::MatrixXd D = Eigen::MatrixXd::Zero(N, N);
   // Coefficient-based product: Eigen's blocked GEMM would start OpenMP threads (the library is
@@ -132,7 +134,7 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
         else if (k < N - 1)
           bi = -M.V(i, k - nq);
         else
-          bi = 1.0;
+          bi = hub;
         push(E + (i - u0), kd(i) * bi / M.c_kv(i));
       }
     }
@@ -163,9 +165,9 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
   J.col_ptr[col] = static_cast<int64_t>(J.row.size());
   coupled_column(N - 1);
   ++col;
-  // w column: z' = w.
+  // w column: z' = w (0 under a prescribed hub).
   J.col_ptr[col] = static_cast<int64_t>(J.row.size());
-  push(Z, 1.0);
+  push(Z, hub);
   ++col;
   // e columns (units_ only; state E + k is unit u0 + k).
   if (relax) {
@@ -177,7 +179,7 @@ void TransientSystem::jacobian(double t, const double* y, solvers::CscMatrix& J)
         for (int j = 0; j < nq; ++j) push(nq + j, M.psi(i, j) * dfde);
         for (int l = 0; l < nr; ++l)
           push(2 * nq + l, M.lambda(l) / M.tau_residual_s * M.V(i, l) * dfde);
-        push(Z + 1, -dfde / mh);
+        push(Z + 1, -hub * dfde / mh);
       }
       // e_{i-2}' and e_{i-1}' depend on e_i (upwind from the front).
       if (k > 1) push(E + k - 2, kUpwind[2] * adv);

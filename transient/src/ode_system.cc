@@ -65,13 +65,9 @@ TransientSystem::TransientSystem(const TransientModel& model, const ScenarioPlan
   CrT_ = model.Cr.transpose();
 }
 
-double TransientSystem::spin(double t) const {
-  return plan_.speed(t) / model_.tyre.config.outer_radius_m;
-}
+double TransientSystem::spin(double t) const { return plan_.spin(t); }
 
-double TransientSystem::spin_rate(double t) const {
-  return plan_.acceleration(t) / model_.tyre.config.outer_radius_m;
-}
+double TransientSystem::spin_rate(double t) const { return plan_.spin_rate(t); }
 
 void TransientSystem::contact_coordinates(const double* y) const {
   const auto& M = model_;
@@ -85,7 +81,7 @@ void TransientSystem::contact_coordinates(const double* y) const {
 
 void TransientSystem::check_outside(double t, const double* y) const {
   const auto& M = model_;
-  const double z = y[M.z_index()];
+  const double z = hub_z(t, y);
   const double H = plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0;
   double p_max = -std::numeric_limits<double>::infinity();
   bool touches = false;
@@ -114,7 +110,7 @@ void TransientSystem::reach(double t, const double* y, int& lo, int& hi) const {
     // as below; only when this bound does not exclude them is their penetration computed.
     const double bound = xi_out_ref_.size() == 0
                              ? std::numeric_limits<double>::infinity()
-                             : p_out_ref_ + (y[M.z_index()] - z_out_ref_) +
+                             : p_out_ref_ + (hub_z(t, y) - z_out_ref_) +
                                    out_row_norm_max_ * (scratch_xi_ - xi_out_ref_).norm() + H;
     if (!(bound <= 0)) check_outside(t, y);
   }
@@ -129,7 +125,7 @@ void TransientSystem::reach(double t, const double* y, int& lo, int& hi) const {
     // g_i <= p_ref_i + (z - z_ref) + max |T_i| |xi - xi_ref| + max h - min(0, min e), a band
     // a few units wider than the patch where the bound from rest spans twice as many units.
     const double delta =
-        y[M.z_index()] - z_ref_ + basis_row_norm_max_ * (scratch_xi_ - xi_ref_).norm() + lift;
+        hub_z(t, y) - z_ref_ + basis_row_norm_max_ * (scratch_xi_ - xi_ref_).norm() + lift;
     lo = u0, hi = u1;
     if (!std::isfinite(delta)) return;
     int a = u0, b = u1;  // locals: the loops then keep them in registers
@@ -141,7 +137,7 @@ void TransientSystem::reach(double t, const double* y, int& lo, int& hi) const {
   }
   // Before an accepted state: the sag grows on both sides of centre_, so the units with
   // sag < bound form a range (NaN bound: every unit).
-  const double bound = y[M.z_index()] + basis_row_norm_max_ * scratch_xi_.norm() + lift;
+  const double bound = hub_z(t, y) + basis_row_norm_max_ * scratch_xi_.norm() + lift;
   const Eigen::VectorXd& sag = M.tyre.sag;
   lo = u0, hi = u1;
   if (std::isnan(bound)) return;
@@ -177,7 +173,7 @@ void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorX
   // u = T xi (model.h's contact basis: rank columns instead of nq + nr).
   auto seg = g.segment(lo, n);
   column_product(M.T.middleRows(lo, n), scratch_xi_, seg);
-  const double z = y[M.z_index()];
+  const double z = hub_z(t, y);
   const double* sag = M.tyre.sag.data() + lo;
   double* u = seg.data();
   if (plan_.cleat) {
@@ -206,7 +202,7 @@ void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorX
 double TransientSystem::tip_penetration_at(double t, const double* y, int i, bool xi_of_y) const {
   const auto& M = model_;
   if (!xi_of_y) contact_coordinates(y);
-  double g = y[M.z_index()] + road(t, i) - M.tyre.sag(i) - M.T_by_unit.col(i).dot(scratch_xi_);
+  double g = hub_z(t, y) + road(t, i) - M.tyre.sag(i) - M.T_by_unit.col(i).dot(scratch_xi_);
   if (ne_ > 0 && units_.contains(i)) g -= y[M.e_index() + (i - units_.lo)];
   return g;
 }
@@ -227,7 +223,7 @@ double TransientSystem::road(double t, int i, double* slope) const {
 
 void TransientSystem::tip_penetration(double t, const double* y, Eigen::VectorXd& g) const {
   const auto& M = model_;
-  const double z = y[M.z_index()];
+  const double z = hub_z(t, y);
   contact_coordinates(y);
   // g = z + h - s - u (- e), u = T xi.
   g.noalias() = -(M.T * scratch_xi_);
@@ -280,15 +276,15 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   contact_coordinates(y);
   const bool refresh =
       p_ref_.size() != units_.size() ||
-      !(std::abs(y[M.z_index()] - z_ref_) + basis_row_norm_max_ * (scratch_xi_ - xi_ref_).norm() <
+      !(std::abs(hub_z(t, y) - z_ref_) + basis_row_norm_max_ * (scratch_xi_ - xi_ref_).norm() <
         kReachRefresh_m);
   const int u0 = units_.lo, nu = units_.size();
   if (refresh) {
     p_ref_.resize(nu);
     column_product(M.T.middleRows(u0, nu), scratch_xi_, p_ref_);
-    p_ref_ = (y[M.z_index()] - M.tyre.sag.segment(u0, nu).array() - p_ref_.array()).matrix();
+    p_ref_ = (hub_z(t, y) - M.tyre.sag.segment(u0, nu).array() - p_ref_.array()).matrix();
     xi_ref_ = scratch_xi_;
-    z_ref_ = y[M.z_index()];
+    z_ref_ = hub_z(t, y);
   }
   int lo = 0, hi = -1;
   scratch_g_.resize(M.m);
@@ -391,8 +387,13 @@ void TransientSystem::rhs(double t, const double* y, double* ydot) const {
       ydot[2 * nq + l] = (M.lambda(l) * Vf(l) - y[2 * nq + l]) / M.tau_residual_s;
   }
   const int Z = M.z_index();
-  ydot[Z] = y[Z + 1];
-  ydot[Z + 1] = (plan_.load(t) - load) / M.settings.hub_mass_kg;
+  if (plan_.hub_free()) {
+    ydot[Z] = y[Z + 1];
+    ydot[Z + 1] = (plan_.load(t) - load) / M.settings.hub_mass_kg;
+  } else {  // a prescribed hub: z is the plan's, the states z, w stay as they are
+    ydot[Z] = 0;
+    ydot[Z + 1] = 0;
+  }
   if (M.settings.relaxation) {
     const int E = M.e_index();
     const double adv = Omega / M.tyre.dtheta_rad;
@@ -442,7 +443,15 @@ std::vector<double> TransientSystem::state_from(const StaticContact& c) const {
   for (int j = 0; j < M.nq; ++j) y[j] = s.q(j);
   for (int l = 0; l < M.nr; ++l) y[2 * M.nq + l] = s.r(l);
   y[M.z_index()] = c.sinking_m;
-  for (int k = 0; k < ne_; ++k) y[M.e_index() + k] = f(units_.lo + k) / M.k_kv(units_.lo + k);
+  // The tread state that gives each unit its static force through the contact spring at the
+  // model's own penetration (e = p - f / k_g; cell_system.cc's state_from() says why).
+  if (ne_ > 0) contact_coordinates(y.data());
+  for (int k = 0; k < ne_; ++k) {
+    const int i = units_.lo + k;
+    const double p =
+        c.sinking_m - M.tyre.sag(i) - M.T_by_unit.col(i).dot(scratch_xi_) + road(0.0, i);
+    y[M.e_index() + k] = f(i) > 0 ? p - f(i) / M.k_contact(i) : std::max(0.0, p);
+  }
   return y;
 }
 

@@ -43,12 +43,14 @@ const char* to_string(Scenario s) {
 // lightly damped carcass modes, and resolving their ringing took ~1000 steps of 0.4 ms in the
 // first 0.4 s of the default rolling run (docs/transient.md section 3).
 double ScenarioPlan::speed(double t) const {
+  if (hub) return hub->speed(t);
   if (speed_m_s == 0) return 0;
   if (ramp_s <= 0 || t >= ramp_s) return speed_m_s;
   const double s = std::max(t, 0.0) / ramp_s;
   return speed_m_s * s * s * (3 - 2 * s);
 }
 double ScenarioPlan::acceleration(double t) const {
+  if (hub) return hub->acceleration(t);
   if (ramp_s <= 0 || t >= ramp_s || t < 0) return 0;
   const double s = t / ramp_s;
   return speed_m_s * 6 * s * (1 - s) / ramp_s;
@@ -61,6 +63,10 @@ double ScenarioPlan::distance(double t) const {
   }
   return 0.5 * speed_m_s * ramp_s + speed_m_s * (t - ramp_s);
 }
+double ScenarioPlan::spin(double t) const { return hub ? hub->spin(t) : speed(t) / radius_m; }
+double ScenarioPlan::spin_rate(double t) const {
+  return hub ? hub->spin_rate(t) : acceleration(t) / radius_m;
+}
 double ScenarioPlan::step_limit(double t) const {
   return t >= step_limit_from_s && t < step_limit_until_s ? step_limit_s : 0.0;
 }
@@ -70,6 +76,7 @@ ScenarioPlan plan_scenario(const TransientModel& model, Scenario s) {
   const std::string src = model.tyre.config.source;
   ScenarioPlan p;
   p.scenario = s;
+  p.radius_m = model.tyre.config.outer_radius_m;
   switch (s) {
     case Scenario::load_hold: {
       const auto& L = T.load_hold;

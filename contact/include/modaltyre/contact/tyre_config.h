@@ -65,6 +65,8 @@ struct TransientSettings {
   } rolling;
   struct Cleat {
     double load_N = 4000, speed_m_s = 30 / 3.6, height_m = 0.01, length_m = 0.02, ramp_s = 0.5;
+    /// Across the tread, centred [m]; 0 = the whole width. The 3D patch only (cell_model.h).
+    double width_m = 0;
   } cleat;
 };
 

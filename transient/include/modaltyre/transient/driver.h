@@ -21,7 +21,18 @@ struct TransientSample {
   double longitudinal_force_N = 0;  ///< -(sum f x)/(R0 - z) - sum f h'(x)
   double pressure_centre_m = 0;     ///< sum f x / sum f (+ forward)
   double speed_m_s = 0;
-  int contact_units = 0;
+  int contact_units = 0;  ///< units (3D: sections) with a contact force
+  /// 3D patch only (cell_model.h; 0 on the 2D patch): the widest section's lateral extent and
+  /// the contact area sum_columns dy (x_front - x_rear).
+  double width_m = 0;
+  double contact_area_m2 = 0;
+};
+
+/// The 3D patch's pressure map at one time: every cell of the sections in contact (and two
+/// either side), x the section's deformed position, y the column centre.
+struct CellMap {
+  double t_s = 0;
+  std::vector<double> x_mm, y_mm, pressure_kPa;  ///< one entry per cell
 };
 
 enum class TransientStatus { completed, failed };
@@ -47,6 +58,9 @@ struct TransientResult {
   /// A unit outside the touchable range reached the road and the run was repeated with all
   /// units (never in the bundled scenarios).
   bool units_escaped = false;
+  /// Run on the 3D patch (cell_model.h): samples carry width_m and contact_area_m2.
+  bool patch_3d = false;
+  std::vector<CellMap> maps;  ///< 3D: the pressure maps at TransientRunOptions::map_times_s
   bool ok() const { return status == TransientStatus::completed; }
   double real_time_factor() const { return wall_s > 0 ? simulated_s / wall_s : 0; }
 };
@@ -72,11 +86,22 @@ struct TransientRunOptions {
   /// Tread states for all candidate units instead of those that can touch in the scenario
   /// (tread_window.h); the same trajectory, kept for comparisons.
   bool all_tread_states = false;
+  /// 3D patch: times at which to record the pressure map (TransientResult::maps; each within
+  /// the scenario).
+  std::vector<double> map_times_s;
+  /// 3D patch: one class per column instead of merging columns of equal drop and road (the
+  /// full per-cell model, for tests of the reduction).
+  bool per_column_cells = false;
 };
 
 /// Runs a scenario. Failures of the integrator are reported in the result (message and time
 /// reached), never thrown; ill-posed settings are InputErrors.
 TransientResult run_transient(const TransientModel& model, Scenario scenario,
                               const TransientRunOptions& options = {});
+
+/// Runs a scenario on the 3D patch of the model's config (footprint_3d:, cell_model.h,
+/// docs/transient.md section 7).
+TransientResult run_transient_3d(const TransientModel& model, Scenario scenario,
+                                 const TransientRunOptions& options = {});
 
 }  // namespace modaltyre::transient

@@ -56,9 +56,12 @@ class TransientSystem {
   /// switching (contact_switched() since the last call), on those within 2 mm beyond the patch
   /// ends too; 0 elsewhere (m entries).
   void jacobian_stiffness(double t, const double* y, Eigen::VectorXd& kd) const;
-  /// Rolling speed of the carcass Omega = V / R0 and its rate at t.
+  /// Rolling speed of the carcass Omega = V / R0 (or the prescribed hub's spin) and its rate.
   double spin(double t) const;
   double spin_rate(double t) const;
+  /// The hub's displacement z at (t, y): the state's, or the prescribed hub's (scenario.h).
+  double hub_z(double t, const double* y) const { return plan_.hub_z(t, y[model_.z_index()]); }
+  const ScenarioPlan& plan() const { return plan_; }
   /// Contact forces f_i at (t, y).
   Eigen::VectorXd forces(double t, const double* y) const;
   /// forces() into `f` (m entries; only units() is written, so a reused `f` costs no

@@ -3,9 +3,11 @@
 // initial condition of load-hold, free-vibration, rolling and cleat (settings: the config's
 // transient: section, docs/transient.md).
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "modaltyre/transient/hub_motion.h"
 #include "modaltyre/transient/model.h"
 
 namespace modaltyre::transient {
@@ -28,10 +30,19 @@ struct ScenarioPlan {
   double cleat_height_m = 0, cleat_length_m = 0, cleat_start_m = 0;  ///< centre at t = 0
   /// Step-size bound while a cleat crosses the window, in force over [from, until) [s].
   double step_limit_s = 0, step_limit_from_s = 0, step_limit_until_s = 0;
-  double step_limit(double t) const;    ///< the bound in force at t (0 = none)
-  double speed(double t) const;         ///< V(t), smoothstep ramp from rest
-  double acceleration(double t) const;  ///< V'(t)
-  double distance(double t) const;      ///< integral of V
+  /// A prescribed hub (hub_motion.h): its deflection, speed and spin replace the load control
+  /// and the speed ramp (load, speed_m_s and ramp_s are then unused; the road is flat).
+  std::shared_ptr<const HubTrack> hub;
+  double radius_m = 0;                    ///< R0: the free-rolling spin V / R0
+  double step_limit(double t) const;      ///< the bound in force at t (0 = none)
+  double speed(double t) const;           ///< V(t), smoothstep ramp from rest (or the hub's)
+  double acceleration(double t) const;    ///< V'(t)
+  double distance(double t) const;        ///< integral of V (the speed ramp's; the cleat's road)
+  double spin(double t) const;            ///< Omega(t): V / R0, or the prescribed hub's spin
+  double spin_rate(double t) const;       ///< Omega'(t)
+  bool hub_free() const { return !hub; }  ///< the hub's z a state (load control)
+  /// The hub's displacement z at t: the state's (load control) or the prescribed one.
+  double hub_z(double t, double state_z) const { return hub ? hub->deflection(t) : state_z; }
 };
 
 /// The plan of a scenario from the settings; InputError for an ill-posed one.

@@ -1,0 +1,57 @@
+#pragma once
+// Newton's linear systems M = I - gamma J of the 3D transient (cell_system.h) through the low
+// rank of the contact, as contact_newton.h for the 2D model (docs/transient.md sections 2, 7).
+// Every cell of section i reaches the carcass through the same row T~_i = [-T_i, 1] of the
+// contact basis, so with Y = M_EE^-1 diag(kd / c') T~ (M_EE: per class an upper band along its
+// sections, the advection) the Schur complement on X is S = D - gamma Q K P with
+//   K = sum_i T~_i^T R_i,   R_i = sum_c mu_c kd_ic (T~_i - gamma Y_ic)   (rank + 1 square),
+// solved by Woodbury's identity with the capacitance matrix I - gamma (P D^-1 Q) K.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "modaltyre/transient/cell_system.h"
+
+namespace modaltyre::transient {
+
+class CellNewton {
+ public:
+  CellNewton(const CellModel& cm, const CellSystem& system);
+  bool setup(double t, const double* y, double gamma, bool jacobian_ok);
+  void solve(double* x) const;
+
+ private:
+  void factor(double gamma);
+  void solve_d(double* x) const;
+  void solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  /// y <- M_EE^-1 y over the tread states (per class, back substitution along its band).
+  void solve_ee(double* y) const;
+
+  const CellModel& cm_;
+  const TransientModel& M_;
+  const CellSystem& sys_;
+  int nx_ = 0, ne_ = 0, np_ = 0;
+  bool jacobian_ready_ = false;
+  Eigen::VectorXd kd_;  ///< per slot
+  double Omega_ = 0, dOmega_ = 0;
+  double gamma_ = 0;
+  struct Block {
+    int n = 0;
+    int idx[4] = {0, 0, 0, 0};
+    Eigen::Matrix4d inv = Eigen::Matrix4d::Zero();
+  };
+  std::vector<Block> blocks_;
+  double d_r_inv_ = 1, d_zw_ = 0;
+  double ee_s1_ = 0, ee_s2_ = 0;
+  Eigen::VectorXd ee_d_inv_;  ///< per slot
+  int s0_ = 0, ns_ = 0;       ///< sections with an active cell: [s0_, s0_ + ns_)
+  Eigen::MatrixXd Tt_;        ///< T~ rows of those sections (ns x np)
+  Eigen::VectorXd w_sec_;     ///< sum_c mu_c kd_ic per section (ns)
+  Eigen::MatrixXd K_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
+  Eigen::MatrixXd CqT_, CrT_, DQ_, H_;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_, Y_;
+  Eigen::VectorXi cap_perm_;
+  mutable Eigen::VectorXd eta_, eta0_, phi_, w_, work_e_, work_s_;
+};
+
+}  // namespace modaltyre::transient

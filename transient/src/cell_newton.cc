@@ -1,0 +1,272 @@
+#include "modaltyre/transient/cell_newton.h"
+
+#include <cmath>
+
+#include "modaltyre/transient/column_product.h"
+#include "modaltyre/transient/ode_system.h"
+
+namespace modaltyre::transient {
+
+CellNewton::CellNewton(const CellModel& cm, const CellSystem& system)
+    : cm_(cm), M_(cm.M()), sys_(system) {
+  const TransientModel& M = M_;
+  nx_ = M.e_index();
+  ne_ = system.tread_states();
+  np_ = M.rank + 1;
+  const int nq = M.nq;
+  for (int j = 0; j < nq; ++j) {
+    const int p = M.partner[j];
+    if (p >= 0 && p < j) continue;
+    Block b;
+    if (p < 0) {
+      b.n = 2;
+      b.idx[0] = j, b.idx[1] = nq + j;
+    } else {
+      b.n = 4;
+      b.idx[0] = j, b.idx[1] = p, b.idx[2] = nq + j, b.idx[3] = nq + p;
+    }
+    blocks_.push_back(b);
+  }
+  CqT_ = M.Cq.transpose();
+  CrT_ = M.Cr.transpose();
+  eta_.resize(np_);
+  eta0_.resize(np_);
+  phi_.resize(np_);
+  w_.resize(np_);
+}
+
+bool CellNewton::setup(double t, const double* y, double gamma, bool jacobian_ok) {
+  if (!jacobian_ok || !jacobian_ready_) {
+    sys_.jacobian_stiffness(t, y, kd_);
+    Omega_ = sys_.spin(t);
+    dOmega_ = sys_.spin_rate(t);
+    jacobian_ready_ = true;
+  }
+  factor(gamma);
+  const Eigen::MatrixXd& lu = cap_.matrixLU();
+  return lu.allFinite() && (lu.diagonal().array() != 0).all() && ee_d_inv_.allFinite();
+}
+
+void CellNewton::factor(double gamma) {
+  const TransientModel& M = M_;
+  const CellClasses& C = cm_.classes;
+  const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank, nc = C.size();
+  gamma_ = gamma;
+  for (Block& b : blocks_) {
+    Eigen::Matrix4d d = Eigen::Matrix4d::Identity();
+    const int h = b.n / 2;
+    for (int a = 0; a < h; ++a) {
+      d(a, h + a) = -gamma;
+      const ModalRow r = modal_row(M, b.idx[a], Omega_, dOmega_);
+      const int o = h == 2 ? 1 - a : a;
+      d(h + a, a) -= gamma * r.dq;
+      d(h + a, h + a) -= gamma * r.dv;
+      if (h == 2) {
+        d(h + a, o) -= gamma * r.dq_p;
+        d(h + a, h + o) -= gamma * r.dv_p;
+      }
+    }
+    b.inv = d.inverse();
+  }
+  d_r_inv_ = nr > 0 ? 1.0 / (1.0 + gamma / M.tau_residual_s) : 1.0;
+  const bool hub_free = sys_.plan().hub_free();
+  d_zw_ = hub_free ? gamma : 0.0;  // a prescribed hub: z' = w' = 0, D = I on (z, w)
+  // Sections with an active cell.
+  int s_first = M.m, s_last = -1;
+  for (int c = 0; c < nc; ++c) {
+    const UnitRange& r = sys_.ranges()[c];
+    const int o = sys_.offset(c);
+    for (int k = 0; k < r.size(); ++k)
+      if (kd_(o + k) > 0)
+        s_first = std::min(s_first, r.lo + k), s_last = std::max(s_last, r.lo + k);
+  }
+  s0_ = s_first;
+  ns_ = s_last >= s_first ? s_last - s_first + 1 : 0;
+  Tt_.resize(ns_, np_);
+  for (int s = 0; s < ns_; ++s) {
+    Tt_.row(s).head(rank) = -M.T.row(s0_ + s);
+    Tt_(s, rank) = hub_free ? 1.0 : 0.0;  // d g / d z (0: z an input)
+  }
+  // M_EE's diagonal per slot, its (uniform) super-diagonals along each class.
+  const double adv = Omega_ / M.tyre.dtheta_rad;
+  ee_s1_ = -gamma * kUpwind[1] * adv;
+  ee_s2_ = -gamma * kUpwind[2] * adv;
+  ee_d_inv_.resize(ne_);
+  for (int c = 0; c < nc && ne_ > 0; ++c) {
+    const UnitRange& r = sys_.ranges()[c];
+    const int o = sys_.offset(c);
+    for (int k = 0; k < r.size(); ++k) {
+      const int i = r.lo + k;
+      ee_d_inv_(o + k) =
+          1.0 / (1.0 - gamma * (kUpwind[0] * adv - (kd_(o + k) + cm_.k_kv(i)) / cm_.c_kv(i)));
+    }
+  }
+  // R_i = sum_c mu_c kd_ic (T~_i - gamma Y_ic); at rest Y_ic = (kd_ic / c'_i) T~_i d_ic^-1, so
+  // R_i = w_i T~_i with w_i = sum_c mu_c kd_ic (1 - gamma kd_ic / c'_i / d_ic).
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(ns_, np_);
+  const bool at_rest = ee_s1_ == 0 && ee_s2_ == 0;
+  w_sec_.setZero(ns_);
+  if (ns_ > 0) {
+    for (int c = 0; c < nc; ++c) {
+      const UnitRange& r = sys_.ranges()[c];
+      const int o = sys_.offset(c), mu = C.multiplicity[c];
+      int kf = -1, kl = -1;
+      for (int k = 0; k < r.size(); ++k)
+        if (kd_(o + k) > 0) kl = k, kf = kf < 0 ? k : kf;
+      if (kf < 0) continue;
+      if (ne_ == 0) {
+        for (int k = kf; k <= kl; ++k) w_sec_(r.lo + k - s0_) += mu * kd_(o + k);
+        continue;
+      }
+      if (at_rest) {
+        for (int k = kf; k <= kl; ++k) {
+          const int i = r.lo + k;
+          const double kd = kd_(o + k);
+          if (kd > 0)
+            w_sec_(i - s0_) += mu * kd * (1.0 - gamma * kd / cm_.c_kv(i) * ee_d_inv_(o + k));
+        }
+        continue;
+      }
+      // Back substitution up the class's band from its last active cell.
+      Y_.setZero(kl - kf + 1, np_);
+      for (int k = kl; k >= kf; --k) {
+        const int i = r.lo + k, row = k - kf;
+        if (kd_(o + k) > 0) Y_.row(row) = kd_(o + k) / cm_.c_kv(i) * Tt_.row(i - s0_);
+        if (row + 1 < Y_.rows()) Y_.row(row) -= ee_s1_ * Y_.row(row + 1);
+        if (row + 2 < Y_.rows()) Y_.row(row) -= ee_s2_ * Y_.row(row + 2);
+        Y_.row(row) *= ee_d_inv_(o + k);
+      }
+      for (int k = kf; k <= kl; ++k) {
+        const double kd = kd_(o + k);
+        if (kd > 0) {
+          const int s = r.lo + k - s0_;
+          R.row(s) += (mu * kd) * (Tt_.row(s) - gamma * Y_.row(k - kf));
+        }
+      }
+    }
+  }
+  if (at_rest || ne_ == 0) {
+    for (int s = 0; s < ns_; ++s) R.row(s) = w_sec_(s) * Tt_.row(s);
+  }
+  K_.noalias() = Tt_.transpose().lazyProduct(R);
+  if (ns_ == 0) K_.setZero(np_, np_);
+  DQ_.setZero(nx_, np_);
+  for (const Block& b : blocks_) {
+    const int h = b.n / 2;
+    for (int r = 0; r < b.n; ++r)
+      for (int c = 0; c < h; ++c)
+        DQ_.row(b.idx[r]).head(rank) -= b.inv(r, h + c) * M.Cq.col(b.idx[c]).transpose();
+  }
+  for (int l = 0; l < nr; ++l)
+    DQ_.row(2 * nq + l).head(rank) =
+        -(d_r_inv_ * M.lambda(l) / M.tau_residual_s) * M.Cr.col(l).transpose();
+  DQ_(Z + 1, rank) = hub_free ? -1.0 / M.settings.hub_mass_kg : 0.0;
+  DQ_(Z, rank) = d_zw_ * DQ_(Z + 1, rank);
+  H_.setZero(np_, np_);
+  for (int k = 0; k < np_; ++k) {
+    column_product(M.Cq, DQ_.col(k).head(nq), H_.col(k));
+    if (nr > 0) column_product(M.Cr, DQ_.col(k).segment(2 * nq, nr), H_.col(k), true);
+  }
+  H_.row(rank) = DQ_.row(Z);
+  const Eigen::MatrixXd cap = Eigen::MatrixXd::Identity(np_, np_) - gamma * H_.lazyProduct(K_);
+  cap_.compute(cap);
+  cap_lu_ = cap_.matrixLU();
+  cap_perm_ = cap_.permutationP().indices();
+}
+
+void CellNewton::solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  const int n = np_;
+  x.resize(n);
+  for (int i = 0; i < n; ++i) x(cap_perm_(i)) = b(i);
+  const double* lu = cap_lu_.data();
+  for (int i = 1; i < n; ++i) {
+    double s = x(i);
+    for (int j = 0; j < i; ++j) s -= lu[i * n + j] * x(j);
+    x(i) = s;
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    double s = x(i);
+    for (int j = i + 1; j < n; ++j) s -= lu[i * n + j] * x(j);
+    x(i) = s / lu[i * n + i];
+  }
+}
+
+void CellNewton::solve_d(double* x) const {
+  for (const Block& b : blocks_) {
+    Eigen::Vector4d v = Eigen::Vector4d::Zero();
+    for (int a = 0; a < b.n; ++a) v(a) = x[b.idx[a]];
+    const Eigen::Vector4d r = b.inv * v;
+    for (int a = 0; a < b.n; ++a) x[b.idx[a]] = r(a);
+  }
+  for (int l = 0; l < M_.nr; ++l) x[2 * M_.nq + l] *= d_r_inv_;
+  x[M_.z_index()] += d_zw_ * x[M_.z_index() + 1];
+}
+
+void CellNewton::solve_ee(double* y) const {
+  if (ee_s1_ == 0 && ee_s2_ == 0) {
+    Eigen::Map<Eigen::VectorXd>(y, ne_).array() *= ee_d_inv_.array();
+    return;
+  }
+  for (int c = 0; c < cm_.classes.size(); ++c) {
+    const int n = sys_.ranges()[c].size(), o = sys_.offset(c);
+    double* yc = y + o;
+    for (int k = n - 1; k >= 0; --k) {
+      double v = yc[k];
+      if (k + 1 < n) v -= ee_s1_ * yc[k + 1];
+      if (k + 2 < n) v -= ee_s2_ * yc[k + 2];
+      yc[k] = v * ee_d_inv_(o + k);
+    }
+  }
+}
+
+void CellNewton::solve(double* x) const {
+  const TransientModel& M = M_;
+  const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank, nc = cm_.classes.size();
+  Eigen::Map<Eigen::VectorXd> xx(x, nx_);
+  double* xe = x + nx_;
+  // phi1 = -gamma sum_i T~_i^T s_i, s_i = sum_c mu_c kd_ic (M_EE^-1 b_E)_ic.
+  phi_.setZero(np_);
+  if (ne_ > 0 && ns_ > 0) {
+    work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
+    solve_ee(work_e_.data());
+    work_s_.setZero(ns_);
+    for (int c = 0; c < nc; ++c) {
+      const UnitRange& r = sys_.ranges()[c];
+      const int o = sys_.offset(c), mu = cm_.classes.multiplicity[c];
+      for (int k = 0; k < r.size(); ++k) {
+        const double kd = kd_(o + k);
+        if (kd > 0) work_s_(r.lo + k - s0_) += mu * kd * work_e_(o + k);
+      }
+    }
+    column_dots(Tt_, work_s_, phi_, -gamma_);
+  }
+  solve_d(x);
+  column_dots(CqT_, xx.head(nq), eta0_);
+  if (nr > 0) column_dots(CrT_, xx.segment(2 * nq, nr), eta0_, 1.0, true);
+  eta0_(rank) = xx(Z);
+  eta_ = eta0_;
+  eta_.noalias() += H_ * phi_;
+  solve_cap(eta_, w_);
+  phi_.noalias() += gamma_ * (K_ * w_);
+  column_product(DQ_, phi_, xx, true);
+  if (ne_ > 0) {
+    if (ns_ > 0) {
+      // x_E = M_EE^-1 (b_E - M_EX x_X), M_EX = -gamma diag(kd / c') T~ P.
+      eta_ = eta0_;
+      eta_.noalias() += H_ * phi_;
+      work_s_.resize(ns_);
+      column_product(Tt_, eta_, work_s_);  // T~_i P x_X per section
+      for (int c = 0; c < nc; ++c) {
+        const UnitRange& r = sys_.ranges()[c];
+        const int o = sys_.offset(c);
+        for (int k = 0; k < r.size(); ++k) {
+          const double kd = kd_(o + k);
+          if (kd > 0) xe[o + k] += gamma_ * kd / cm_.c_kv(r.lo + k) * work_s_(r.lo + k - s0_);
+        }
+      }
+    }
+    solve_ee(xe);
+  }
+}
+
+}  // namespace modaltyre::transient

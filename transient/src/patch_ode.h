@@ -1,0 +1,64 @@
+#pragma once
+// One patch's ODE under a plan, with its Newton solver and its observables (internal to the
+// transient library): the 2D units (ode_system.h, contact_newton.h) or the 3D cells
+// (cell_system.h, cell_newton.h). The scenario runner (run_plan) and the driven tyre
+// (driven_tyre.h) integrate either through this interface.
+#include <memory>
+#include <vector>
+
+#include "modaltyre/solvers/cvode_klu.h"
+#include "modaltyre/transient/cell_model.h"
+#include "modaltyre/transient/cell_system.h"
+#include "modaltyre/transient/driver.h"
+#include "modaltyre/transient/scenario.h"
+#include "modaltyre/transient/tread_window.h"
+
+namespace modaltyre::transient::detail {
+
+class PatchOde {
+ public:
+  virtual ~PatchOde() = default;
+  virtual int size() const = 0;
+  /// States of the model with a tread state for every unit (every section of every class): the
+  /// RMS error test's reference count (ode_options()).
+  virtual int full_size() const = 0;
+  /// The right-hand side, Newton's linear solver (and root functions if the options ask for
+  /// them) into `prob`; the callbacks refer to this object.
+  virtual void configure(solvers::OdeProblem& prob, const TransientRunOptions& options) = 0;
+  virtual int64_t nnz_hint() const = 0;
+  virtual std::vector<double> absolute_tolerances() const = 0;
+  /// The initial state (the plan's static contact).
+  virtual std::vector<double> initial_state() const = 0;
+  /// Units (cells, with their multiplicity) that entered or left since the last accepted step.
+  virtual int update_contact_set(double t, const double* y) = 0;
+  /// A root function reported a switch (2D with located switches).
+  virtual void contact_switched() = 0;
+  /// A unit outside the touchable range reached the road: the run must be repeated with all.
+  virtual bool escaped() const = 0;
+  /// One output sample (and the pressure map on the 3D patch when `map` is given).
+  virtual TransientSample observe(double t, const double* y, CellMap* map = nullptr) = 0;
+  /// units_lo/hi, states and patch_3d of a result.
+  virtual void describe(TransientResult& res) const = 0;
+  /// The state in the layout of every unit (2D: e = 0 for units without a tread state).
+  virtual std::vector<double> full_state(const std::vector<double>& y) const = 0;
+};
+
+/// The 2D units `units` of `model` under `plan`, starting from `initial`.
+std::unique_ptr<PatchOde> make_units_ode(const TransientModel& model, const ScenarioPlan& plan,
+                                         const StaticContact& initial, UnitRange units);
+/// The 3D cells of `cm` under `plan` with tread states on `ranges` (empty: every section),
+/// starting from `initial`.
+std::unique_ptr<PatchOde> make_cells_ode(const CellModel& cm, const ScenarioPlan& plan,
+                                         const StaticCells& initial, std::vector<UnitRange> ranges);
+
+/// The integrator settings of every transient run: BDF orders 1-2, the Newton and setup
+/// settings of docs/transient.md section 2, the tolerances scaled by sqrt(full / states) so that
+/// the RMS error test is that of the full state.
+solvers::OdeOptions ode_options(const PatchOde& ode, const TransientModel& model);
+
+/// Runs the plan on `ode` with output samples every output step (TransientResult); sets
+/// `escaped` (and returns at once) if a unit outside the touchable range reached the road.
+TransientResult run_plan(PatchOde& ode, const TransientModel& model, const ScenarioPlan& plan,
+                         const TransientRunOptions& options, bool& escaped);
+
+}  // namespace modaltyre::transient::detail

@@ -1,0 +1,247 @@
+// The 3D patch's ODE for the run loop and the driven tyre (patch_ode.h): CellSystem with
+// CellNewton, its output samples with the width and the contact area, and the pressure maps.
+#include <algorithm>
+#include <cmath>
+
+#include "modaltyre/transient/cell_newton.h"
+#include "modaltyre/transient/cell_system.h"
+#include "patch_ode.h"
+
+namespace modaltyre::transient::detail {
+namespace {
+
+/// Observables of one state: the 2D sample's (driver.h) plus width and area, and on request the
+/// pressure map. Work vectors are the caller's (reused across samples).
+class CellObserver {
+ public:
+  CellObserver(const CellSystem& sys) : sys_(sys), cm_(sys.cell_model()), M_(cm_.M()) {
+    sag_min_ = M_.tyre.sag.minCoeff();
+    // Columns ordered from the centre outwards on each side: the lateral edge search.
+    const CellClasses& C = cm_.classes;
+    for (int j = 0; j < C.columns; ++j) slot_class_.push_back(C.column_class[j]);
+  }
+
+  TransientSample observe(double t, const double* y, CellMap* map = nullptr) {
+    const ScenarioPlan& plan = sys_.plan();
+    const CellClasses& C = cm_.classes;
+    TransientSample s;
+    s.t_s = t;
+    sys_.forces(t, y, f_, F_);
+    sys_.penetration(t, y, g_, P_);  // P: the undeformed tread's penetration at the crown line
+    const double z = sys_.hub_z(t, y);
+    const double R0 = M_.tyre.config.outer_radius_m;
+    s.applied_load_N = plan.load(t);
+    s.hub_displacement_m = z;
+    s.speed_m_s = plan.speed(t);
+    const UnitRange span = sys_.sections();
+    double load = 0, moment = 0, slope_force = 0, sink = z - sag_min_;
+    int sections = 0, first = -1, last = -1;
+    for (int i = span.lo; i <= span.hi; ++i) {
+      if (!(F_(i) > 0)) continue;
+      load += F_(i);
+      moment += F_(i) * M_.x_road(i);
+      ++sections;
+      first = first < 0 ? i : first;
+      last = i;
+    }
+    for (int c = 0; c < C.size() && plan.cleat; ++c) {
+      const UnitRange& r = sys_.ranges()[c];
+      for (int k = 0; k < r.size(); ++k) {
+        double slope = 0;
+        const double h = sys_.road(t, r.lo + k, c, &slope);
+        if (h > 0) sink = std::max(sink, z + h - M_.tyre.sag(r.lo + k) - C.drop_m[c]);
+        slope_force += C.multiplicity[c] * f_(sys_.offset(c) + k) * slope;
+      }
+    }
+    s.load_N = load;
+    s.contact_units = sections;
+    s.sinking_m = sink;
+    s.pressure_centre_m = load > 0 ? moment / load : 0;
+    s.longitudinal_force_N = -moment / (R0 - z) - slope_force;
+    if (first < 0) return s;
+    // Deformed belt positions of the sections in and around the patch (as the 2D driver: the
+    // dynamic modes from the state, the residual orders quasi-statically from the forces).
+    const int x0 = std::max(0, first - 3), x1 = std::min(M_.m - 1, last + 3);
+    xb_.assign(M_.m, 0.0);
+    ur_.assign(M_.m, 0.0);
+    ut_.assign(M_.m, 0.0);
+    const Eigen::Map<const Eigen::VectorXd> q(y, M_.nq);
+    for (int i = x0; i <= x1; ++i) {
+      double ur = M_.phi_r.row(i).dot(q), ut = M_.phi_t.row(i).dot(q);
+      if (M_.nr > 0) {
+        for (int j = first; j <= last; ++j) {
+          if (!(F_(j) > 0)) continue;
+          const modal::Transfer2x2 h = M_.residual_kernels.at(i - j);
+          const double fr = F_(j) * std::cos(M_.tyre.theta[j]),
+                       ft = F_(j) * std::sin(M_.tyre.theta[j]);
+          ur += h.r_from_r * fr + h.r_from_t * ft;
+          ut += h.t_from_r * fr + h.t_from_t * ft;
+        }
+      }
+      ur_[i] = ur, ut_[i] = ut;
+      const double th = M_.tyre.theta[i];
+      xb_[i] = (R0 - ur) * std::sin(th) + ut * std::cos(th);
+    }
+    auto cell_x = [&](int i, double f) {
+      const double th = M_.tyre.theta[i], c = std::cos(th), sn = std::sin(th);
+      return (R0 - ur_[i] - f * c / cm_.k_radial_cell_N_m) * sn +
+             (ut_[i] + f * sn / cm_.k_tangential_cell_N_m) * c;
+    };
+    // The level function of a cell: the undeformed tread's penetration P_i + h - drop_c (> 0
+    // inside, the gap < 0 outside; at rest the 3D patch's d_i - z_j), linear to its zero.
+    auto level = [&](int i, int c) { return P_(i) + sys_.road(t, i, c) - C.drop_m[c]; };
+    auto force = [&](int i, int c) {
+      const UnitRange& r = sys_.ranges()[c];
+      return r.contains(i) ? f_(sys_.offset(c) + i - r.lo) : 0.0;
+    };
+    // Longitudinal extent per class (= per column of it).
+    double length = 0, area = 0;
+    for (int c = 0; c < C.size(); ++c) {
+      const UnitRange& r = sys_.ranges()[c];
+      int a = -1, b = -1;
+      for (int k = 0; k < r.size(); ++k)
+        if (f_(sys_.offset(c) + k) > 0) b = r.lo + k, a = a < 0 ? r.lo + k : a;
+      if (a < 0) continue;
+      // As the 2D driver and the 3D patch: the level function is the cell's tread compression
+      // f / k_i inside (at rest d_i - z_c, patch3d.cc) and its tip penetration g < 0 outside
+      // (at rest the gap d_i - z_c; behind a rolling patch the relaxed rubber's lift).
+      auto edge = [&](int in, int out) {
+        const double xin = cell_x(in, force(in, c));
+        const UnitRange& r = sys_.ranges()[c];
+        if (out < x0 || out > x1) return xin;
+        const double pin = force(in, c) / cm_.k_relaxed(in);
+        const double pout = r.contains(out) ? g_(sys_.offset(c) + out - r.lo) : level(out, c);
+        if (!(pout < 0)) return xin;
+        return xin + pin / (pin - pout) * (cell_x(out, 0.0) - xin);
+      };
+      const double extent = edge(b, b + 1) - edge(a, a - 1);
+      length = std::max(length, extent);
+      area += C.multiplicity[c] * C.dy_m * extent;
+    }
+    s.contact_length_m = length;
+    s.contact_area_m2 = area;
+    // Lateral extent per section: the outermost column in contact on each side, its zero of the
+    // level function towards the next column out (the tread edge if it is the last).
+    const double half = 0.5 * C.tread_width_m;
+    double width = 0;
+    for (int i = first; i <= last; ++i) {
+      if (!(F_(i) > 0)) continue;
+      int lo = 0, hi = C.columns - 1;
+      while (lo < C.columns && !(force(i, C.column_class[lo]) > 0)) ++lo;
+      while (hi >= 0 && !(force(i, C.column_class[hi]) > 0)) --hi;
+      if (lo > hi) continue;
+      auto side = [&](int in, int out) {
+        const double ein = level(i, C.column_class[in]), eout = level(i, C.column_class[out]);
+        if (!(ein > 0 && eout < 0)) return C.column_y_m[in];
+        return C.column_y_m[in] + ein / (ein - eout) * (C.column_y_m[out] - C.column_y_m[in]);
+      };
+      const double right = hi == C.columns - 1 ? half : side(hi, hi + 1);
+      const double left = lo == 0 ? -half : side(lo, lo - 1);
+      width = std::max(width, right - left);
+    }
+    s.width_m = width;
+    if (map) {
+      map->t_s = t;
+      const int m0 = std::max(0, first - 2), m1 = std::min(M_.m - 1, last + 2);
+      for (int i = m0; i <= m1; ++i) {
+        const double dx = M_.tyre.unit_length_m * std::cos(M_.tyre.theta[i]);
+        for (int j = 0; j < C.columns; ++j) {
+          map->x_mm.push_back(xb_[i] * 1e3);
+          map->y_mm.push_back(C.column_y_m[j] * 1e3);
+          map->pressure_kPa.push_back(force(i, C.column_class[j]) / (dx * C.dy_m) * 1e-3);
+        }
+      }
+    }
+    return s;
+  }
+
+ private:
+  const CellSystem& sys_;
+  const CellModel& cm_;
+  const TransientModel& M_;
+  double sag_min_ = 0;
+  std::vector<int> slot_class_;
+  Eigen::VectorXd f_, F_, g_, P_;
+  std::vector<double> xb_, ur_, ut_;
+};
+
+class CellsOde final : public PatchOde {
+ public:
+  CellsOde(const CellModel& cm, const ScenarioPlan& plan, const StaticCells& initial,
+           std::vector<UnitRange> ranges)
+      : cm_(cm),
+        initial_(initial),
+        sys_(cm, plan, std::move(ranges)),
+        newton_(cm, sys_),
+        obs_(sys_),
+        // Before the first step: forces of the initial state outside the ranges.
+        y0_(sys_.state_from(initial_)) {}
+  int size() const override { return sys_.size(); }
+  int full_size() const override {
+    const TransientModel& M = cm_.M();
+    return M.e_index() + (M.settings.relaxation ? cm_.classes.size() * M.m : 0);
+  }
+  int64_t nnz_hint() const override { return 1; }
+  std::vector<double> absolute_tolerances() const override { return sys_.absolute_tolerances(); }
+  std::vector<double> initial_state() const override { return y0_; }
+  int update_contact_set(double t, const double* y) override {
+    return sys_.update_contact_set(t, y);
+  }
+  void contact_switched() override {}
+  bool escaped() const override { return sys_.escaped(); }
+  TransientSample observe(double t, const double* y, CellMap* map) override {
+    return obs_.observe(t, y, map);
+  }
+  void describe(TransientResult& res) const override {
+    res.patch_3d = true;
+    res.units_lo = sys_.sections().lo;
+    res.units_hi = sys_.sections().hi;
+    res.states = sys_.size();
+  }
+  std::vector<double> full_state(const std::vector<double>& y) const override {
+    // Every section of every class (CellSystem with no ranges): e = 0 outside the ranges.
+    const TransientModel& M = cm_.M();
+    const int E = M.e_index();
+    if (sys_.tread_states() == 0) return y;
+    std::vector<double> full(E + cm_.classes.size() * M.m, 0.0);
+    std::copy(y.begin(), y.begin() + E, full.begin());
+    for (int c = 0; c < cm_.classes.size(); ++c) {
+      const UnitRange& r = sys_.ranges()[c];
+      for (int k = 0; k < r.size(); ++k) full[E + c * M.m + r.lo + k] = y[E + sys_.offset(c) + k];
+    }
+    return full;
+  }
+  void configure(solvers::OdeProblem& prob, const TransientRunOptions&) override {
+    prob.size = sys_.size();
+    prob.rhs = [this](double t, const double* y, double* yd) {
+      sys_.rhs(t, y, yd);
+      return 0;
+    };
+    prob.linear_setup = [this](double t, const double* y, double gamma, bool jacobian_ok) {
+      return newton_.setup(t, y, gamma, jacobian_ok) ? 0 : 1;
+    };
+    prob.linear_solve = [this](double* x) {
+      newton_.solve(x);
+      return 0;
+    };
+    prob.roots = 0;
+  }
+
+ private:
+  const CellModel& cm_;
+  StaticCells initial_;
+  CellSystem sys_;
+  CellNewton newton_;
+  CellObserver obs_;
+  std::vector<double> y0_;
+};
+
+}  // namespace
+
+std::unique_ptr<PatchOde> make_cells_ode(const CellModel& cm, const ScenarioPlan& plan,
+                                         const StaticCells& initial,
+                                         std::vector<UnitRange> ranges) {
+  return std::make_unique<CellsOde>(cm, plan, initial, std::move(ranges));
+}
+
+}  // namespace modaltyre::transient::detail

@@ -1,0 +1,222 @@
+// The scenario runner of both patches (patch_ode.h): one internal CVODE step at a time, output
+// samples interpolated inside each step, restarts at the plan's breakpoints, contact switches
+// counted between accepted steps (or located by root functions on the 2D patch).
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "patch_ode.h"
+#include "sample_reuse.h"
+
+namespace modaltyre::transient::detail {
+namespace {
+
+/// Root returns in a row within kZenoWindow_s of each other before the run is stopped as
+/// chattering (never a hang): a located switch is normally followed by a step.
+constexpr int kZenoRootReturns = 1000;
+constexpr double kZenoWindow_s = 1e-12;
+
+}  // namespace
+
+solvers::OdeOptions ode_options(const PatchOde& ode, const TransientModel& M) {
+  solvers::OdeOptions opt;
+  // CVODE's error test and Newton's convergence test take an RMS over the states. The tread
+  // states the range leaves out are those of units that never touch: zero for good, or
+  // advected behind the patch, either way without influence on any force. Scaling the
+  // tolerances by sqrt(all states / states) keeps the error test of the full state (the same
+  // sum of squares over the same number of states), so that the range changes the cost of a
+  // step and not the steps (docs/transient.md section 2).
+  const std::vector<double> atol = ode.absolute_tolerances();
+  const double norm_scale =
+      std::sqrt(static_cast<double>(ode.full_size()) / static_cast<double>(ode.size()));
+  opt.relative_tolerance = M.settings.relative_tolerance * norm_scale;
+  opt.absolute_tolerance = atol;
+  for (double& a : opt.absolute_tolerance) a *= norm_scale;
+  // BDF2 at most: orders 3-5 are not A-stable, and the lightly damped carcass modes (eigenvalues
+  // near the imaginary axis, up to omega_K) made CVODE's stability-limit detection hold the order
+  // at 2-3 anyway, with many more steps (measured: 5500 steps/s of free vibration at order <= 5
+  // with detection, 1700 at order <= 2; docs/transient.md section 6).
+  opt.max_order = 2;
+  opt.stability_limit_detection = false;
+  opt.lsetup_frequency = 50;
+  opt.delta_gamma_max = 0.6;
+  // Contact switches perturb Newton's matrix by a few springs: allow more (cheap) iterations
+  // before a convergence failure forces a new Jacobian and factorisation (measured: 6 halves
+  // the factorisations of a 0.5 mm load ramp against CVODE's 3).
+  opt.max_nonlinear_iterations = 6;
+  return opt;
+}
+
+TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioPlan& plan,
+                         const TransientRunOptions& options, bool& escaped) {
+  TransientResult res;
+  res.scenario = plan.scenario;
+  sys.describe(res);
+  solvers::OdeProblem prob;
+  sys.configure(prob, options);
+  const bool restart_at_switches = options.restart_at_switches;
+  const bool locate_switches = prob.roots > 0;
+  const solvers::OdeOptions opt = ode_options(sys, M);
+  std::vector<double> y = sys.initial_state();
+  if (sys.escaped()) {
+    escaped = true;
+    return res;
+  }
+  solvers::CvodeKlu ode(prob, opt, 0.0, y, sys.nnz_hint());
+  ode.set_max_step(plan.step_limit(0.0));
+
+  const double T = plan.duration_s, dt = M.settings.output_step_s;
+  std::vector<double> map_times = options.map_times_s;
+  std::sort(map_times.begin(), map_times.end());
+  std::size_t next_map = 0;
+  // The pressure maps (3D) at their times within [t_from, t_to], from y_at or interpolated.
+  auto take_maps = [&](double t_from, double t_to, const std::vector<double>* y_at) {
+    std::vector<double> ym(sys.size());
+    while (next_map < map_times.size() && map_times[next_map] <= t_to * (1 + 1e-14)) {
+      const double tm = map_times[next_map++];
+      if (tm < t_from) continue;
+      if (y_at) {
+        ym = *y_at;
+      } else {
+        ode.interpolate(std::min(tm, t_to), ym);
+      }
+      CellMap map;
+      sys.observe(tm, ym.data(), &map);
+      res.maps.push_back(std::move(map));
+    }
+  };
+  take_maps(0.0, 0.0, &y);
+  res.samples.push_back(sys.observe(0.0, y.data()));
+  const std::vector<double> atol = sys.absolute_tolerances();
+  SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.cleat);
+  reuse.remember(y);
+  std::vector<double> breaks = plan.breakpoints;
+  std::sort(breaks.begin(), breaks.end());
+  std::size_t next_break = 0;
+  long out_index = 1;
+  double t_out = std::min(dt, T), t_prev = 0;
+  bool failed = false, all_out = false;
+  int roots_in_place = 0;
+  double last_root_t = -1;
+  std::vector<double> y_out(sys.size());
+  // The output samples up to t_reached, interpolated inside the step just taken (CVodeGetDky):
+  // one internal step at a time, so that neither the output step bounds the step size nor does
+  // every output time cost an evaluation of the m root functions (advance() to each output
+  // time did: 60000 of them in a 120 s hold at 2 ms, a quarter of its run time).
+  // A step whose both ends repeat the last computed sample lies in a settled stretch (a long
+  // hold): its samples repeat it without interpolating each (the BDF interpolant between two such
+  // history points stays within ~1.25 times their distance; 60000 interpolations and reuse
+  // checks of all states were most of a 120 s hold after the faster Newton solver).
+  std::vector<double> y_step_start = y;
+  auto emit_until = [&](double t_reached) {
+    const bool step_settled = reuse.unchanged(y_step_start) && reuse.unchanged(ode.state());
+    y_step_start = ode.state();
+    while (!all_out && t_out <= t_reached * (1 + 1e-14)) {
+      if (!step_settled) ode.interpolate(std::min(t_out, t_reached), y_out);
+      if (step_settled || reuse.unchanged(y_out)) {
+        // The state moved less than kReuseFraction of the integration tolerance since the
+        // last computed sample (a settled hold, steady rolling on a flat road): the
+        // observables are the same to that accuracy; only the time and the scenario's own
+        // functions advance.
+        TransientSample smp = res.samples.back();
+        smp.t_s = t_out;
+        smp.applied_load_N = plan.load(t_out);
+        smp.speed_m_s = plan.speed(t_out);
+        res.samples.push_back(smp);
+      } else {
+        res.samples.push_back(sys.observe(t_out, y_out.data()));
+        reuse.remember(y_out);
+      }
+      if (options.progress && !options.progress(t_out, T)) {
+        res.message = "cancelled";
+        return false;
+      }
+      if (t_out >= T) {
+        all_out = true;
+        break;
+      }
+      ++out_index;
+      t_out = std::min(out_index * dt, T);
+      if (T - t_out < 1e-9 * T) t_out = T;
+    }
+    return true;
+  };
+  while (!all_out) {
+    while (next_break < breaks.size() && breaks[next_break] <= ode.time()) ++next_break;
+    // Steps run up to the next breakpoint (a kink of F(t) or V(t)) or the end.
+    const double stop = next_break < breaks.size() ? breaks[next_break] : T;
+    const solvers::OdeStatus st = ode.step(stop);
+    if (sys.escaped()) {
+      escaped = true;
+      return res;
+    }
+    if (!st.ok()) {
+      std::ostringstream msg;
+      msg << "integrator failed at t = " << st.t << " s: " << st.message;
+      res.message = msg.str();
+      failed = true;
+      break;
+    }
+    if (st.outcome != solvers::OdeOutcome::root) {
+      // Without root functions: units that entered or left the road during the step (and, on
+      // the 3D patch, the check of the sections beyond each class's range).
+      if (!locate_switches) res.contact_events += sys.update_contact_set(st.t, ode.state().data());
+      if (sys.escaped()) {
+        escaped = true;
+        return res;
+      }
+    }
+    take_maps(t_prev, st.t, nullptr);
+    t_prev = st.t;
+    if (!emit_until(st.t)) {
+      failed = true;
+      break;
+    }
+    if (st.outcome == solvers::OdeOutcome::root) {
+      // Chattering guard: root returns that no longer advance the time would loop for ever.
+      roots_in_place = std::abs(st.t - last_root_t) <= kZenoWindow_s ? roots_in_place + 1 : 0;
+      last_root_t = st.t;
+      if (roots_in_place >= kZenoRootReturns) {
+        std::ostringstream msg;
+        msg << "contact switches chatter at t = " << st.t << " s (" << kZenoRootReturns
+            << " root returns without the time advancing): a tread tip hovers at the road";
+        res.message = msg.str();
+        failed = true;
+        break;
+      }
+      sys.contact_switched();
+      // A unit's tip touched or left the road: f_i = k max(0, g_i) has a kink there, the
+      // right-hand side stays continuous. The located root is counted and the integration
+      // continues; BDF's error test shortens the step over the kink (a restart would also throw
+      // away the history for a kink of one unit among many). Optionally restart as before.
+      ++res.contact_events;
+      if (restart_at_switches) ode.reinit(st.t, ode.state());
+      continue;
+    }
+    if (next_break < breaks.size() && st.t >= breaks[next_break]) {
+      ode.reinit(st.t, ode.state());
+      ode.set_max_step(plan.step_limit(st.t));
+      ++next_break;
+    }
+  }
+  res.simulated_s = ode.time();
+  res.stats = ode.stats();
+  if (options.keep_final_state) res.final_state = sys.full_state(ode.state());
+  res.status = failed ? TransientStatus::failed : TransientStatus::completed;
+  if (!failed) {
+    std::ostringstream msg;
+    msg << "completed: " << res.stats.steps << " steps, " << res.contact_events
+        << (res.patch_3d ? " cell contact switches" : " contact switches");
+    res.message = msg.str();
+  }
+  // Rolling resistance: mean of -F_x over the last 10 % of the run.
+  const double t_from = 0.9 * res.simulated_s;
+  double sum = 0;
+  int cnt = 0;
+  for (const auto& s : res.samples)
+    if (s.t_s >= t_from) sum += -s.longitudinal_force_N, ++cnt;
+  res.rolling_resistance_N = cnt ? sum / cnt : 0;
+  return res;
+}
+
+}  // namespace modaltyre::transient::detail
