@@ -1,35 +1,156 @@
 #include "modaltyre/fmu/tyre_wheel.h"
 
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
 #include "modaltyre/core/errors.h"
+#include "modaltyre/fmu/longitudinal_contact.h"
+#include "modaltyre/transient/driven_tyre.h"
+#include "modaltyre/transient/tread_window.h"
 
 namespace modaltyre::fmu {
+namespace {
 
-// Step 1 of issue 34: the FMU's interface, description and packaging. Driving the transient by
-// the hub's prescribed motion comes with transient/'s prescribed-hub API (branch t3d2); until
-// then the wheel refuses to start, and fmi2ExitInitializationMode reports it as an fmi2Error.
+/// Below this forward speed the slip ratio is not reported (its denominator vanishes); the
+/// tangential contact itself needs no such limit (it integrates slip displacements).
+constexpr double kSlipSpeed_m_s = 0.1;
+/// The tread states are kept for the units that can touch up to this multiple of the initial
+/// deflection (and at least kMinDeflectionBound_m): DrivenTyre redoes a step with every unit
+/// should one beyond touch, so the bound costs time, never accuracy.
+constexpr double kDeflectionBoundFactor = 2.0;
+constexpr double kMinDeflectionBound_m = 0.03;
+
+}  // namespace
+
 struct TyreWheel::Impl {
+  Impl(std::shared_ptr<const transient::TransientModel> m, const WheelSettings& s)
+      : model(std::move(m)), settings(s) {}
+
+  /// The hub as the transient sees it at the start of a step.
+  transient::HubState hub_of(const WheelInput& in) const {
+    transient::HubState h;
+    // On a profile the heights are the world's (the flat road at z = 0); else the host's
+    // single-point terrain height.
+    const double ground = settings.profile ? 0.0 : in.terrain_height_m;
+    h.deflection_m = model->tyre.config.outer_radius_m - (in.plane.z_m - ground);
+    h.speed_m_s = in.plane.speed_m_s;
+    h.spin_rad_s = in.plane.spin_rad_s;
+    return h;
+  }
+
+  /// The road profile's height and slope at ground position x relative to the hub at t (the
+  /// hub carried from x0 at t0 at speed v over the current step).
+  double road(double t, double x, double* slope) const {
+    const double X = x0 + v * (t - t0) + x;
+    if (slope) *slope = settings.profile->slope_at(X);
+    return settings.profile->height_at(X);
+  }
+
+  void refresh(const WheelInput& in, const transient::HubState& hub) {
+    const transient::WheelLoad w = tyre->load();
+    const double r_loaded = model->tyre.config.outer_radius_m - hub.deflection_m;
+    // On a profile the normal forces on its slopes push back: -sum f h'(x) (as the cleat's).
+    double slope_force = 0;
+    if (settings.profile) {
+      const double t = tyre->time();
+      for (int i = 0; i < model->m; ++i) {
+        if (!(forces(i) > 0)) continue;
+        double slope = 0;
+        road(t, model->x_road(i), &slope);
+        slope_force -= forces(i) * slope;
+      }
+    }
+    const double shear = contact->force_N() + slope_force;
+    out.load.fz_N = w.fz_N;
+    // The road's longitudinal force is the tread's shear (the transient's F_x is the drag a
+    // free-rolling wheel would feel, -M / r: with a tangential contact the spin decides).
+    out.load.fx_N = shear;
+    // Moment about the wheel axis: the vertical forces' (-M) and the shear's at the road,
+    // r_loaded below the centre (r x F)_y = r_z F_x = -r_loaded F_x.
+    out.load.my_Nm = w.my_Nm - r_loaded * shear;
+    out.deflection_m = w.sinking_m;
+    out.contact_length_m = w.contact_length_m;
+    const double v = in.plane.speed_m_s;
+    out.slip_ratio =
+        std::abs(v) > kSlipSpeed_m_s
+            ? (in.plane.spin_rad_s * contact->properties().base_radius_m - v) / std::abs(v)
+            : 0.0;
+  }
+
   std::shared_ptr<const transient::TransientModel> model;
   WheelSettings settings;
-  WheelOutput output;
+  std::unique_ptr<transient::DrivenTyre> tyre;
+  std::unique_ptr<LongitudinalContact> contact;
+  Eigen::VectorXd forces;
+  WheelOutput out;
+  double x0 = 0, t0 = 0, v = 0;  ///< the hub along the road over the current step
 };
 
 TyreWheel::TyreWheel(std::shared_ptr<const transient::TransientModel> model,
                      const WheelSettings& settings)
-    : impl_(std::make_unique<Impl>()) {
-  impl_->model = std::move(model);
-  impl_->settings = settings;
-}
+    : impl_(std::make_unique<Impl>(std::move(model), settings)) {}
 
 TyreWheel::~TyreWheel() = default;
 
-void TyreWheel::start(double, const WheelInput&) {
-  throw ComputationError("the hub-driven transient is not in this build yet");
+void TyreWheel::start(double t, const WheelInput& in) {
+  Impl& I = *impl_;
+  const transient::HubState hub = I.hub_of(in);
+  transient::DrivenTyreOptions opt;
+  opt.max_step_s = I.settings.step_size_s;
+  opt.max_deflection_m =
+      std::max(kMinDeflectionBound_m, kDeflectionBoundFactor * std::max(hub.deflection_m, 0.0));
+  I.x0 = in.plane.x_m;
+  I.t0 = t;
+  I.v = in.plane.speed_m_s;
+  if (I.settings.profile) {
+    Impl* self = &I;
+    opt.road_profile = [self](double tt, double x, double* slope) {
+      return self->road(tt, x, slope);
+    };
+    const auto& h = I.settings.profile->height_m;
+    opt.road_max_height_m = std::max(0.0, *std::max_element(h.begin(), h.end()));
+  }
+  I.tyre = std::make_unique<transient::DrivenTyre>(*I.model, opt);
+  I.tyre->reset(hub, t);
+  I.forces.setZero(I.model->m);
+  I.tyre->vertical_forces(I.forces);
+  // The carcass's longitudinal compliance averaged over the patch at the start, or over the
+  // static patch under the config's rolling load when the wheel starts off the road.
+  const Eigen::VectorXd patch =
+      I.forces.maxCoeff() > 0
+          ? Eigen::VectorXd(I.forces)
+          : transient::static_contact(*I.model, I.model->settings.rolling.load_N).f;
+  I.contact = std::make_unique<LongitudinalContact>(longitudinal_properties(I.model->tyre, patch),
+                                                    0, I.model->m - 1);
+  I.refresh(in, hub);
 }
 
-void TyreWheel::step(double, double, const WheelInput&) {
-  throw ComputationError("the hub-driven transient is not in this build yet");
+void TyreWheel::step(double t, double h, const WheelInput& in) {
+  Impl& I = *impl_;
+  MODALTYRE_CHECK(I.tyre, "TyreWheel::step before start");
+  // The hub's state at t, carried at its velocity over the step in sub-steps of at most
+  // step_size: the transient moves it linearly inside each, the tangential contact takes the
+  // vertical forces at each sub-step's end.
+  const transient::HubState h0 = I.hub_of(in);
+  I.x0 = in.plane.x_m;
+  I.t0 = t;
+  I.v = in.plane.speed_m_s;
+  const int n = std::max(1, static_cast<int>(std::ceil(h / I.settings.step_size_s - 1e-9)));
+  const double dt = h / n;
+  transient::HubState hub = h0;
+  for (int k = 1; k <= n; ++k) {
+    const double s = k * dt;
+    hub.deflection_m = h0.deflection_m - in.plane.vertical_m_s * s;
+    const transient::DriveStatus st = I.tyre->advance(t + s, hub);
+    if (!st.ok) throw ComputationError(st.message);
+    I.forces.setZero();
+    I.tyre->vertical_forces(I.forces);
+    I.contact->advance(dt, I.forces.data(), in.plane.spin_rad_s, in.plane.speed_m_s, in.mu);
+  }
+  I.refresh(in, hub);
 }
 
-const WheelOutput& TyreWheel::output() const { return impl_->output; }
+const WheelOutput& TyreWheel::output() const { return impl_->out; }
 
 }  // namespace modaltyre::fmu

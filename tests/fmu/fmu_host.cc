@@ -199,6 +199,11 @@ fmi2Status FmuInstance::step(double h) {
   return s;
 }
 
+fmi2Status FmuInstance::reset() {
+  t_ = 0;
+  return fmu_.api().reset(c_);
+}
+
 bool FmuInstance::logged(const std::string& text) const {
   for (const std::string& m : log_.messages)
     if (m.find(text) != std::string::npos) return true;

@@ -71,6 +71,8 @@ class FmuInstance {
   /// Setup (start 0, no stop), enter and exit initialization.
   fmi2Status initialize();
   fmi2Status step(double h);
+  /// fmi2Reset, and the host's clock back to 0.
+  fmi2Status reset();
   double time() const { return t_; }
   const std::vector<std::string>& messages() const { return log_.messages; }
   bool logged(const std::string& text) const;
