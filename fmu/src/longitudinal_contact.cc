@@ -6,17 +6,6 @@
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::fmu {
-namespace {
-
-/// Newton iterations on the scalar force equation before bisection takes over; the residual
-/// is piecewise linear in F, so Newton ends in as many steps as elements change between
-/// stick and slip, usually one or two.
-constexpr int kNewtonIterations = 30;
-/// The force equation is solved to this fraction of the largest element force plus 1e-9 N.
-constexpr double kForceTolerance = 1e-12;
-
-}  // namespace
-
 LongitudinalProperties longitudinal_properties(const contact::TyreModel& m,
                                                const Eigen::VectorXd& f) {
   LongitudinalProperties p;
@@ -49,74 +38,73 @@ LongitudinalProperties longitudinal_properties(const contact::TyreModel& m,
 }
 
 LongitudinalContact::LongitudinalContact(const LongitudinalProperties& p, int lo, int hi)
-    : p_(p),
-      lo_(lo),
-      hi_(hi),
-      points_(std::max(0, hi - lo + 1)),
-      unit_force_N_(std::max(0, hi - lo + 1), 0.0) {}
+    : p_(p), lo_(lo), hi_(hi), n_(std::max(0, hi - lo + 1)), points_(n_) {}
 
 void LongitudinalContact::shift(int units) {
-  // Material moves backward (toward lower theta) for forward rolling: element i takes element
-  // i + 1's place; fresh rubber enters at the front (hi). Reverse rolling the other way.
-  const int n = static_cast<int>(points_.size());
+  if (n_ == 0 || units == 0) return;
+  // Forward rolling (units > 0): the element over unit i moves to unit i - units; the slots
+  // that left at the rear (the lowest units) come back at the front as fresh rubber.
+  const int k = std::min(std::abs(units), n_);
   if (units > 0) {
-    const int k = std::min(units, n);
-    std::move(points_.begin() + k, points_.end(), points_.begin());
-    std::fill(points_.end() - k, points_.end(), ground::ShearPoint{});
-  } else if (units < 0) {
-    const int k = std::min(-units, n);
-    std::move_backward(points_.begin(), points_.end() - k, points_.end());
-    std::fill(points_.begin(), points_.begin() + k, ground::ShearPoint{});
+    for (int j = 0; j < k; ++j) point(lo_ + j) = ground::ShearPoint{};
+    head_ = (head_ + k) % n_;
+    sheared_lo_ -= k, sheared_hi_ -= k;
+  } else {
+    for (int j = 0; j < k; ++j) point(hi_ - j) = ground::ShearPoint{};
+    head_ = (head_ - k + n_) % n_;
+    sheared_lo_ += k, sheared_hi_ += k;
   }
+  sheared_lo_ = std::max(sheared_lo_, lo_);
+  sheared_hi_ = std::min(sheared_hi_, hi_);
 }
 
-double LongitudinalContact::residual(double F, double dj0, const double* f,
-                                     const ground::CoulombFriction& law, double* slope) {
-  const double dj = dj0 - p_.carcass_compliance_m_N * (F - force_N_);
-  const double A = p_.unit_area_m2;
-  double sum = 0, stick = 0;
-  for (std::size_t k = 0; k < points_.size(); ++k) {
-    const double fk = f[lo_ + static_cast<int>(k)];
-    ground::ShearPoint trial = points_[k];
-    if (!(fk > 0) && trial.elastic_m == 0) continue;
-    const double tau = law.advance(trial, std::max(fk, 0.0) / A, dj);
-    sum += tau * A;
-    if (!trial.sliding) stick += p_.stick_stiffness_Pa_m * A;
+void LongitudinalContact::substep(double dj0, const double* f, const ground::CoulombFriction& law,
+                                  int a, int b) {
+  const double A = p_.unit_area_m2, kA = p_.stick_stiffness_Pa_m * A, C = p_.carcass_compliance_m_N;
+  // Trial at the last force (du = 0): the sticking elements' stiffness.
+  double trial = 0, stick = 0;
+  for (int i = a; i <= b; ++i) {
+    ground::ShearPoint pt = point(i);
+    const double fi = f[i] > 0 ? f[i] : 0.0;
+    trial += law.advance(pt, fi / A, dj0) * A;
+    if (!pt.sliding) stick += kA;
   }
-  *slope = 1 + p_.carcass_compliance_m_N * stick;
-  return F - sum;
-}
-
-void LongitudinalContact::commit(double F, double dj0, const double* f,
-                                 const ground::CoulombFriction& law) {
-  const double dj = dj0 - p_.carcass_compliance_m_N * (F - force_N_);
-  const double A = p_.unit_area_m2;
+  // F = F_trial - C K (F - F_old): exact while no element switches within the sub-step.
+  const double F = (trial + C * stick * force_N_) / (1 + C * stick);
+  const double dj = dj0 - C * (F - force_N_);
   double sum = 0;
-  int loaded = 0, sliding = 0;
-  for (std::size_t k = 0; k < points_.size(); ++k) {
-    const double fk = f[lo_ + static_cast<int>(k)];
-    ground::ShearPoint& pt = points_[k];
-    if (!(fk > 0) && pt.elastic_m == 0) {
-      unit_force_N_[k] = 0;
-      continue;
+  int loaded = 0, sliding = 0, first = -1, last = -1;
+  for (int i = a; i <= b; ++i) {
+    ground::ShearPoint& pt = point(i);
+    const double fi = f[i] > 0 ? f[i] : 0.0;
+    sum += law.advance(pt, fi / A, dj) * A;
+    if (pt.elastic_m != 0) {
+      first = first < 0 ? i : first;
+      last = i;
     }
-    const double tau = law.advance(pt, std::max(fk, 0.0) / A, dj);
-    unit_force_N_[k] = tau * A;
-    sum += tau * A;
-    if (fk > 0) {
+    if (fi > 0) {
       ++loaded;
       sliding += pt.sliding;
     }
   }
-  ux_m_ = p_.carcass_compliance_m_N * sum;
   force_N_ = sum;
+  ux_m_ = C * sum;
   sliding_share_ = loaded > 0 ? double(sliding) / loaded : 0;
+  sheared_lo_ = first < 0 ? 0 : first;
+  sheared_hi_ = first < 0 ? -1 : last;
 }
 
 void LongitudinalContact::advance(double dt, const double* f, double spin, double speed,
                                   double mu) {
-  if (points_.empty() || !(dt > 0)) return;
+  if (n_ == 0 || !(dt > 0)) return;
   const ground::CoulombFriction law(mu, p_.stick_stiffness_Pa_m);
+  // The loaded units (the forces hold over the whole advance).
+  int a = -1, b = -2;
+  for (int i = lo_; i <= hi_; ++i)
+    if (f[i] > 0) {
+      a = a < 0 ? i : a;
+      b = i;
+    }
   const double material = spin * p_.base_radius_m;  // backward through the units [m/s]
   // Sub-steps of at most one unit of travel, so that an element's shear follows its position.
   const int sub =
@@ -129,21 +117,17 @@ void LongitudinalContact::advance(double dt, const double* f, double spin, doubl
       shift(whole);
       carry_ -= whole;
     }
-    const double dj0 = (material - speed) * h;
-    // Solve F = sum tau(dj0 - C (F - F_old)) A: Newton on the piecewise-linear monotone
-    // residual (slope >= 1), bracketed and bisected if it ever fails to contract.
-    double F = force_N_, slope = 1;
-    double r = residual(F, dj0, f, law, &slope);
-    double lo = -1e300, hi = 1e300;
-    const double tol = kForceTolerance * (std::abs(F) + 1) + 1e-9;
-    for (int it = 0; it < kNewtonIterations && std::abs(r) > tol; ++it) {
-      (r > 0 ? hi : lo) = F;
-      double next = F - r / slope;
-      if (!(next > lo && next < hi) && lo > -1e300 && hi < 1e300) next = 0.5 * (lo + hi);
-      F = next;
-      r = residual(F, dj0, f, law, &slope);
+    // Elements that carry no force and no shear stay as they are: skip them.
+    int from = a, to = b;
+    if (sheared_hi_ >= sheared_lo_) {
+      from = from < 0 ? sheared_lo_ : std::min(from, sheared_lo_);
+      to = std::max(to, sheared_hi_);
     }
-    commit(F, dj0, f, law);
+    if (from < 0 || to < from) {
+      force_N_ = ux_m_ = sliding_share_ = 0;
+      continue;
+    }
+    substep((material - speed) * h, f, law, from, to);
   }
 }
 

@@ -17,7 +17,10 @@
 // horizontal-from-horizontal compliance of seed 001's transfer functions, eq. 1-4 with the
 // horizontal forces of eq. 12). Its stress is the Coulomb law's tau(sigma_i, e) with sigma_i =
 // f_i / A (f_i the unit's vertical force from the transient, A its area); F_x = sum tau_i A.
-// F_x and u_x are solved together at each sub-step (a monotone scalar equation). Steady state:
+// F_x and u_x are solved together at each sub-step of at most one unit of travel: a trial pass
+// at the last force gives the sticking elements' stiffness K, F = (F_trial + C_x K F_old) /
+// (1 + C_x K) (exact while no element changes between stick and slip in the sub-step), and the
+// commit pass applies the law at that F. Steady state:
 // the brush model, C_kappa = 2 c_px a^2 (Pacejka, Tyre and Vehicle Dynamics, 3rd ed., sec. 3.2)
 // for c_px = k_t / ds the tread's stiffness per unit length.
 //
@@ -54,25 +57,28 @@ class LongitudinalContact {
   void advance(double dt, const double* f, double spin_rad_s, double speed_m_s, double mu);
   /// Tangential force of the road on the tyre, forward + [N].
   double force_N() const { return force_N_; }
-  /// The elements' forces k e A per unit (entries lo..hi) [N].
-  double unit_force_N(int i) const { return unit_force_N_[i - lo_]; }
   /// Share of the loaded elements that slid in the last sub-step.
   double sliding_share() const { return sliding_share_; }
   double carcass_displacement_m() const { return ux_m_; }
   const LongitudinalProperties& properties() const { return p_; }
 
  private:
-  /// F - sum tau_i(dj0 - C (F - F_old)) A over the loaded units, with the trial points.
-  double residual(double F, double dj0, const double* f, const ground::CoulombFriction& law,
-                  double* slope);
-  void commit(double F, double dj0, const double* f, const ground::CoulombFriction& law);
+  /// The element over unit i (a ring buffer: shifting moves the head, not the elements).
+  ground::ShearPoint& point(int i) {
+    int k = head_ + (i - lo_);
+    if (k >= n_) k -= n_;
+    return points_[k];
+  }
+  /// Material moves `units` units backward (forward rolling: > 0); fresh elements enter.
   void shift(int units);
+  /// The sub-step's trial (stiffness of the sticking elements) and commit passes over [a, b].
+  void substep(double dj0, const double* f, const ground::CoulombFriction& law, int a, int b);
 
   LongitudinalProperties p_;
-  int lo_ = 0, hi_ = -1;
-  std::vector<ground::ShearPoint> points_;  ///< per unit lo..hi
-  std::vector<double> unit_force_N_;
-  double carry_ = 0;  ///< material travel not yet shifted [units]
+  int lo_ = 0, hi_ = -1, n_ = 0, head_ = 0;
+  std::vector<ground::ShearPoint> points_;  ///< ring buffer over the units lo..hi
+  int sheared_lo_ = 0, sheared_hi_ = -1;    ///< units whose element may be sheared (e != 0)
+  double carry_ = 0;                        ///< material travel not yet shifted [units]
   double force_N_ = 0, ux_m_ = 0, sliding_share_ = 0;
 };
 
