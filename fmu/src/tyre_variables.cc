@@ -88,7 +88,7 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
   v.push_back(real("tyre.deflection", vr::deflection, C::output, "m",
                    "radial deflection of the tyre at the road (sinking)"));
   v.push_back(real("tyre.contact_length", vr::contact_length, C::output, "m",
-                   "length of the contact patch"));
+                   "length of the contact patch: the extent of its loaded units along x"));
   v.push_back(real("tyre.slip_ratio", vr::slip_ratio, C::output, "1",
                    "longitudinal slip (spin x rolling radius - speed) / speed, 0 below 0.1 m/s"));
   v.push_back(real("step_size", vr::step_size, C::parameter, "s",

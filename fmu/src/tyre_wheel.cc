@@ -47,30 +47,43 @@ struct TyreWheel::Impl {
     return settings.profile->height_at(X);
   }
 
+  /// The outputs from the vertical unit forces at the step's end (`forces`) and the tangential
+  /// contact. transient::DrivenTyre::load() would give F_z and M_y too, with the patch length
+  /// interpolated on the deformed belt, but its pass over the belt's shape was a third of a 3D
+  /// step (sin/cos per unit); the length here is the loaded units' extent (one unit's
+  /// resolution).
   void refresh(const WheelInput& in, const transient::HubState& hub) {
-    const transient::WheelLoad w = tyre->load();
     const double r_loaded = model->tyre.config.outer_radius_m - hub.deflection_m;
-    // On a profile the normal forces on its slopes push back: -sum f h'(x) (as the cleat's).
-    double slope_force = 0;
-    if (settings.profile) {
-      const double t = tyre->time();
-      for (int i = 0; i < model->m; ++i) {
-        if (!(forces(i) > 0)) continue;
+    const double t = tyre->time();
+    double fz = 0, moment = 0, slope_force = 0, sinking = hub.deflection_m;
+    int first = -1, last = -1;
+    for (int i = 0; i < model->m; ++i) {
+      const double f = forces(i);
+      if (!(f > 0)) continue;
+      first = first < 0 ? i : first;
+      last = i;
+      const double x = model->x_road(i);
+      fz += f;
+      moment += f * x;
+      if (settings.profile) {
+        // On a profile the normal forces on its slopes push back: -sum f h'(x) (as the cleat's).
         double slope = 0;
-        road(t, model->x_road(i), &slope);
-        slope_force -= forces(i) * slope;
+        const double h = road(t, x, &slope);
+        slope_force -= f * slope;
+        sinking = std::max(sinking, hub.deflection_m + h - model->tyre.sag(i));
       }
     }
     const double shear = contact->force_N() + slope_force;
-    out.load.fz_N = w.fz_N;
-    // The road's longitudinal force is the tread's shear (the transient's F_x is the drag a
-    // free-rolling wheel would feel, -M / r: with a tangential contact the spin decides).
+    out.load.fz_N = fz;
+    // The road's longitudinal force is the tread's shear (a free-rolling wheel's drag -M / r
+    // comes out of it when the spin is free: M_y = 0).
     out.load.fx_N = shear;
     // Moment about the wheel axis: the vertical forces' (-M) and the shear's at the road,
-    // r_loaded below the centre (r x F)_y = r_z F_x = -r_loaded F_x.
-    out.load.my_Nm = w.my_Nm - r_loaded * shear;
-    out.deflection_m = w.sinking_m;
-    out.contact_length_m = w.contact_length_m;
+    // r_loaded below the centre: (r x F)_y = r_z F_x = -r_loaded F_x.
+    out.load.my_Nm = -moment - r_loaded * shear;
+    out.deflection_m = first < 0 ? std::max(0.0, hub.deflection_m) : sinking;
+    out.contact_length_m =
+        first < 0 ? 0.0 : model->x_road(last) - model->x_road(first) + model->tyre.unit_length_m;
     const double v = in.plane.speed_m_s;
     out.slip_ratio =
         std::abs(v) > kSlipSpeed_m_s

@@ -72,6 +72,8 @@ TEST(FmuPhysics, PressSettlesToTheFootprintsLoadAtTheSinking) {
     ASSERT_EQ(f.step(kStep_s), fmi2OK) << (f.messages().empty() ? "" : f.messages().back());
   }
   EXPECT_NEAR(f.get("wheel_load.force.z"), kLoad_N, kPressTolerance * kLoad_N);
+  std::cout << "press to the footprint's sinking " << delta * 1e3 << " mm at " << kLoad_N
+            << " N: F_z " << f.get("wheel_load.force.z") << " N\n";
   EXPECT_NEAR(f.get("tyre.deflection"), delta, 1e-3 * delta);
   EXPECT_NEAR(f.get("wheel_load.force.x"), 0, 1e-6 * kLoad_N);  // standing: no shear
 }
