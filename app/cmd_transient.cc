@@ -171,12 +171,7 @@ void register_transient(CLI::App& app) {
       throw InputError({"--map-times", 0, ""}, "needs --map-csv FILE to write the maps to");
     if (!a->map_csv.empty() && a->map_times.empty())
       throw InputError({"--map-csv", 0, ""}, "needs --map-times T1,T2,... (s)");
-    if (!a->map_times.empty() && !config.footprint_3d)
-      throw InputError({"--map-times", 0, ""},
-                       "contact maps need the 3D patch (a config with footprint_3d:)");
-    const transient::TransientResult r = config.footprint_3d
-                                             ? transient::run_transient_3d(model, scenario, opts)
-                                             : transient::run_transient(model, scenario, opts);
+    const transient::TransientResult r = transient::run_scenario(model, scenario, opts);
     if (drawn) std::fprintf(stderr, "\n");
     if (!r.ok()) throw ComputationError(r.message);
 

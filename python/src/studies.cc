@@ -73,9 +73,9 @@ py::object run_transient(const std::string& config_path, const std::string& scen
     report::map_transient_conditions(settings, sc, sets, "conditions");
     refuse_repeated_overrides(sets);  // hold_s and transient.load_hold.hold_s both given
     const auto config = contact::load_tyre_config(config_path, sets);
-    report::require_2d_patch(config, config_path);
     const auto model = transient::build_transient_model(contact::build_tyre_model(config));
-    const transient::TransientResult r = transient::run_transient(model, sc);
+    // The patch the config states, as `modaltyre transient` (2D, or 3D with footprint_3d:).
+    const transient::TransientResult r = transient::run_scenario(model, sc);
     if (!r.ok()) throw ComputationError(r.message);
     j = report::transient_json(model, r);
     j["conditions"] = report::settings_json(settings);
@@ -120,10 +120,12 @@ void bind_studies(py::module_& m) {
         "where a case failed; status, message, valid as str). No CSV is written.");
   m.def("transient", &run_transient, py::arg("config_path"), py::arg("scenario"),
         py::arg("overrides") = py::dict(), py::arg("conditions") = py::dict(),
-        "Time-domain scenario (load-hold | free-vibration | rolling | cleat) on a 2D config: "
+        "Time-domain scenario (load-hold | free-vibration | rolling | cleat) on the config's "
+        "patch (3D with footprint_3d:, e.g. configs/sf350.yaml; else 2D): "
         "the dict of `modaltyre transient --json` plus 'series': {t_s, load_N, "
-        "hub_displacement_mm, sinking_mm, contact_length_mm, longitudinal_force_N} as NumPy "
-        "arrays (the columns of --csv). `conditions`: the scenario's, {'load_N': 3000, "
+        "hub_displacement_mm, sinking_mm, contact_length_mm, longitudinal_force_N, and on the "
+        "3D patch width_mm, contact_area_mm2} as NumPy arrays (the columns of --csv). "
+        "`conditions`: the scenario's, {'load_N': 3000, "
         "'hold_s': 60} = --set load_N=3000 --set hold_s=60.");
   m.def(
       "effects", [] { return py::object(checked(report::effects_json())["effects"]); },

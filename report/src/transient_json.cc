@@ -5,15 +5,6 @@
 
 namespace modaltyre::report {
 
-void require_2d_patch(const contact::TyreConfig& config, const std::string& config_path) {
-  if (config.footprint_3d) {
-    throw InputError({config_path, 0, "footprint_3d"},
-                     "the transient model runs the 2D patch; a config with footprint_3d: (the "
-                     "3D patch) has no transient model yet: use a 2D config such as "
-                     "configs/sf350_2d_table3.yaml");
-  }
-}
-
 nlohmann::json transient_json(const transient::TransientModel& model,
                               const transient::TransientResult& r) {
   const auto& fin = r.samples.back();

@@ -306,6 +306,9 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
           I);
   if (opt.max_nonlinear_iterations > 0)
     check(CVodeSetMaxNonlinIters(I.mem, opt.max_nonlinear_iterations), "CVodeSetMaxNonlinIters", I);
+  if (opt.nonlinear_convergence_coefficient > 0)
+    check(CVodeSetNonlinConvCoef(I.mem, opt.nonlinear_convergence_coefficient),
+          "CVodeSetNonlinConvCoef", I);
   if (I.problem.roots > 0) {
     check(CVodeRootInit(I.mem, I.problem.roots, root_trampoline), "CVodeRootInit", I);
     check(CVodeSetNoInactiveRootWarn(I.mem), "CVodeSetNoInactiveRootWarn", I);

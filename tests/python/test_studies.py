@@ -101,16 +101,27 @@ def test_transient_equals_the_cli(modaltyre, tmp_path):
     assert math.isclose(series["load_N"][-1], 4000, rel_tol=1e-2)
 
 
-def test_transient_refuses_the_3d_patch(modaltyre):
+def test_transient_runs_the_3d_patch_like_the_cli(modaltyre, tmp_path):
+    # The default config's footprint_3d: the 3D patch, as `modaltyre transient` (coarse mesh).
     config = src("configs", "sf350.yaml")
-    try:
-        modaltyre.transient(config, "load-hold")
-    except modaltyre.InputError as e:
-        assert e.key == "footprint_3d"
-        _, err = run_cli("transient", config, "--scenario", "load-hold", expect=2)
-        assert err.strip() == "error: " + str(e)
-    else:
-        raise AssertionError("no InputError")
+    sets = {"contact.unit_length_mm": 2, "footprint_3d.lateral_cell_mm": 7.5,
+            "transient.load_hold.hold_s": 0.2}
+    args = ["transient", config, "--scenario", "load-hold"]
+    for k, v in sets.items():
+        args += ["--set", f"{k}={v}"]
+    series_csv = tmp_path / "hold3d.csv"
+    cli = cli_json(*args, "--csv", str(series_csv))
+    got = modaltyre.transient(config, "load-hold", sets)
+    series = got.pop("series")
+    for timing in ("wall_s", "real_time_factor"):
+        assert got.pop(timing) > 0 and cli.pop(timing) > 0
+    assert got["patch"] == "3d"
+    assert_same(got, cli)
+    rows = list(csv.DictReader(open(series_csv)))
+    assert list(series) == list(rows[0])
+    assert "width_mm" in series and "contact_area_mm2" in series
+    for name, column in series.items():
+        assert [cell(v) for v in column] == [r[name] for r in rows], name
 
 
 def test_discover_equals_the_cli(modaltyre):

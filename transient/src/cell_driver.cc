@@ -61,4 +61,13 @@ TransientResult run_transient_3d(const TransientModel& M, Scenario scenario,
   return res;
 }
 
+TransientResult run_scenario(const TransientModel& M, Scenario scenario,
+                             const TransientRunOptions& options) {
+  if (M.tyre.config.footprint_3d) return run_transient_3d(M, scenario, options);
+  if (!options.map_times_s.empty())
+    throw InputError({"--map-times", 0, ""},
+                     "contact maps need the 3D patch (a config with footprint_3d:)");
+  return run_transient(M, scenario, options);
+}
+
 }  // namespace modaltyre::transient

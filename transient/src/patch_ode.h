@@ -26,6 +26,8 @@ class PatchOde {
   /// them) into `prob`; the callbacks refer to this object.
   virtual void configure(solvers::OdeProblem& prob, const TransientRunOptions& options) = 0;
   virtual int64_t nnz_hint() const = 0;
+  /// Newton's convergence coefficient (solvers::OdeOptions; 0: CVODE's 0.1).
+  virtual double newton_convergence_coefficient() const { return 0; }
   virtual std::vector<double> absolute_tolerances() const = 0;
   /// The initial state (the plan's static contact).
   virtual std::vector<double> initial_state() const = 0;

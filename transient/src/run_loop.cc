@@ -44,6 +44,7 @@ solvers::OdeOptions ode_options(const PatchOde& ode, const TransientModel& M) {
   // before a convergence failure forces a new Jacobian and factorisation (measured: 6 halves
   // the factorisations of a 0.5 mm load ramp against CVODE's 3).
   opt.max_nonlinear_iterations = 6;
+  opt.nonlinear_convergence_coefficient = ode.newton_convergence_coefficient();
   return opt;
 }
 

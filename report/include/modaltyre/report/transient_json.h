@@ -10,11 +10,6 @@
 
 namespace modaltyre::report {
 
-/// InputError naming `config_path` and footprint_3d when the config has the 3D patch: the
-/// transient model runs the 2D patch, and is not silently run on a patch the config did not
-/// ask for.
-void require_2d_patch(const contact::TyreConfig& config, const std::string& config_path);
-
 /// scenario, simulated and wall time, steps, the final state, contact switches, solver
 /// counters and the model's size.
 nlohmann::json transient_json(const transient::TransientModel& model,

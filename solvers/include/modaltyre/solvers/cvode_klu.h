@@ -77,6 +77,9 @@ struct OdeOptions {
   /// Newton iterations per step before CVODE declares a convergence failure (CVODE: 3); a
   /// failure with a stale Jacobian costs a new Jacobian and factorisation. 0 = CVODE's default.
   int max_nonlinear_iterations = 0;
+  /// Newton's convergence test: the iteration stops when its estimated error, in the WRMS norm
+  /// of the error test, is below this coefficient (CVODE: 0.1). 0 = CVODE's default.
+  double nonlinear_convergence_coefficient = 0;
 };
 
 struct OdeStats {

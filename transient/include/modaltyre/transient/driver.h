@@ -104,4 +104,11 @@ TransientResult run_transient(const TransientModel& model, Scenario scenario,
 TransientResult run_transient_3d(const TransientModel& model, Scenario scenario,
                                  const TransientRunOptions& options = {});
 
+/// Runs a scenario on the patch the model's config states: the 3D patch with a footprint_3d:
+/// section (run_transient_3d), else the 2D patch (run_transient). The one place that chooses
+/// (`modaltyre transient` and the Python module's transient call it); map times on the 2D patch
+/// are an InputError.
+TransientResult run_scenario(const TransientModel& model, Scenario scenario,
+                             const TransientRunOptions& options = {});
+
 }  // namespace modaltyre::transient
