@@ -43,8 +43,26 @@ struct TyreWheel::Impl {
   /// hub carried from x0 at t0 at speed v over the current step).
   double road(double t, double x, double* slope) const {
     const double X = x0 + v * (t - t0) + x;
+    // Level beyond the profile's first and last change of height (most units, most of the
+    // time: the transient asks for every unit, and every 3D cell, in each right-hand side).
+    if (X <= level_below_m || X >= level_above_m) {
+      if (slope) *slope = 0;
+      return X <= level_below_m ? settings.profile->height_m.front()
+                                : settings.profile->height_m.back();
+    }
     if (slope) *slope = settings.profile->slope_at(X);
     return settings.profile->height_at(X);
+  }
+
+  /// level_below_m / level_above_m of a profile: the x up to which (from which) it is level.
+  void find_level_ends() {
+    const auto& x = settings.profile->x_m;
+    const auto& h = settings.profile->height_m;
+    std::size_t a = 0, b = x.size() - 1;
+    while (a + 1 < x.size() && h[a + 1] == h.front()) ++a;
+    while (b > 0 && h[b - 1] == h.back()) --b;
+    level_below_m = x[a];
+    level_above_m = x[b];
   }
 
   /// The outputs from the vertical unit forces at the step's end (`forces`) and the tangential
@@ -98,6 +116,7 @@ struct TyreWheel::Impl {
   Eigen::VectorXd forces;
   WheelOutput out;
   double x0 = 0, t0 = 0, v = 0;  ///< the hub along the road over the current step
+  double level_below_m = 0, level_above_m = 0;
 };
 
 TyreWheel::TyreWheel(std::shared_ptr<const transient::TransientModel> model,
@@ -123,6 +142,7 @@ void TyreWheel::start(double t, const WheelInput& in) {
     };
     const auto& h = I.settings.profile->height_m;
     opt.road_max_height_m = std::max(0.0, *std::max_element(h.begin(), h.end()));
+    I.find_level_ends();
   }
   I.tyre = std::make_unique<transient::DrivenTyre>(*I.model, opt);
   I.tyre->reset(hub, t);
