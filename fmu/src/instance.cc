@@ -177,26 +177,28 @@ fmi2Status Instance::exit_initialization() {
                 std::to_string(kMaxStepSize_s) + "] s");
   WheelSettings settings;
   settings.step_size_s = step;
-  try {
-    if (!road_profile_.empty()) {
-      std::filesystem::path p(road_profile_);
-      if (p.is_relative()) p = std::filesystem::path(resource_folder_) / p;
+  if (!road_profile_.empty()) {
+    std::filesystem::path p(road_profile_);
+    if (p.is_relative()) p = std::filesystem::path(resource_folder_) / p;
+    try {
       settings.profile =
           std::make_shared<const ground::RoadProfile>(ground::read_road_profile_csv(p.string()));
+    } catch (const std::exception& e) {
+      return fail(std::string("parameter road_profile: ") + e.what());
     }
-    bool ok = false;
-    const WheelInput in = wheel_input(&ok);
-    if (!ok) return fail("fmi2ExitInitializationMode: the wheel state is not usable");
+  }
+  bool ok = false;
+  const WheelInput in = wheel_input(&ok);
+  if (!ok) return fail("fmi2ExitInitializationMode: the wheel state is not usable");
+  try {
     wheel_ = std::make_unique<TyreWheel>(model_, settings);
     wheel_->start(time_, in);
-    refresh_outputs(in);
-    for (int k = 0; k < 3; ++k)
-      real_[vr::load_point_x + k] = real_[vr::query_x + k] = real_[vr::pos_x + k];
-  } catch (const InputError& e) {
-    return fail(std::string("parameter road_profile: ") + e.what());
   } catch (const std::exception& e) {
     return fail(std::string("fmi2ExitInitializationMode: ") + e.what());
   }
+  refresh_outputs(in);
+  for (int k = 0; k < 3; ++k)
+    real_[vr::load_point_x + k] = real_[vr::query_x + k] = real_[vr::pos_x + k];
   state_ = State::step_complete;
   return fmi2OK;
 }

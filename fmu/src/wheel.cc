@@ -3,6 +3,13 @@
 #include <cmath>
 
 namespace modaltyre::fmu {
+namespace {
+
+/// Largest departure of |q|^2 from 1 accepted (and normalised away): a host integrating the
+/// wheel's rotation drifts by far less; a quaternion off by more is not a rotation.
+constexpr double kQuaternionTolerance = 1e-3;
+
+}  // namespace
 
 Vec3 rotate(const std::array<double, 4>& q, const Vec3& v) {
   // v' = v + 2 w (u x v) + 2 u x (u x v), u = (e1, e2, e3), w = e0.
@@ -13,12 +20,15 @@ Vec3 rotate(const std::array<double, 4>& q, const Vec3& v) {
 }
 
 bool plane_state(const WheelState& s, PlaneState& out, const char** why) {
-  const auto& q = s.rot;
-  const double norm2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-  if (!(std::abs(norm2 - 1) <= 1e-6)) {
-    *why = "wheel_state.rot is not a unit quaternion";
+  const double norm2 =
+      s.rot[0] * s.rot[0] + s.rot[1] * s.rot[1] + s.rot[2] * s.rot[2] + s.rot[3] * s.rot[3];
+  if (!(std::abs(norm2 - 1) <= kQuaternionTolerance)) {
+    *why = "wheel_state.rot is not a unit quaternion (|q|^2 off 1 by more than 1e-3)";
     return false;
   }
+  // A host's integrated quaternion drifts from unit length: normalised here.
+  const double n = std::sqrt(norm2);
+  const std::array<double, 4> q{s.rot[0] / n, s.rot[1] / n, s.rot[2] / n, s.rot[3] / n};
   // The heading does not turn with the spin: it is the spin axis crossed with the vertical
   // (x = y x z in a right-handed frame), horizontal whatever the wheel's rotation angle.
   out.spin_axis = rotate(q, {0, 1, 0});

@@ -35,8 +35,8 @@ struct PlaneState {
 /// Rotates v by the unit quaternion q = (e0, e1, e2, e3).
 Vec3 rotate(const std::array<double, 4>& q, const Vec3& v);
 
-/// The plane state of a wheel state; false (and `why` set) when the quaternion is not a unit
-/// one to 1e-6 or the spin axis is within 1e-6 of vertical (no heading).
+/// The plane state of a wheel state (the quaternion normalised); false (and `why` set) when
+/// |q|^2 is off 1 by more than 1e-3 or the spin axis is within 1e-6 of vertical (no heading).
 bool plane_state(const WheelState& s, PlaneState& out, const char** why);
 
 /// The in-plane forces on the wheel: longitudinal along the heading, vertical, and the moment
