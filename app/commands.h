@@ -17,5 +17,6 @@ void register_ema(CLI::App& app);
 void register_tir(CLI::App& app);
 void register_init(CLI::App& app);
 void register_traction(CLI::App& app);
+void register_fmu(CLI::App& app);
 
 }  // namespace modaltyre::app

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   modaltyre::app::register_tir(app);
   modaltyre::app::register_init(app);
   modaltyre::app::register_traction(app);
+  modaltyre::app::register_fmu(app);
   modaltyre::app::require_decimal_numbers(app);
   modaltyre::app::check_output_paths(app);
 

@@ -4,7 +4,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(_modaltyre_modules core modal ema solvers rheology ground contact transient studies discover tir
-    init uncertainty report)
+    init uncertainty report fmu)
 foreach(module IN LISTS _modaltyre_modules)
   set_target_properties(modaltyre_${module} PROPERTIES EXPORT_NAME ${module})
   install(TARGETS modaltyre_${module} EXPORT ModalTyreTargets

@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config
   libeigen3-dev libsundials-dev libsuitesparse-dev libgtest-dev libgmock-dev
-  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev
+  libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev libzip-dev
   gnuplot-nox python3-numpy python3-scipy libopenmpi-dev openmpi-bin
   pybind11-dev python3-dev python3-pytest
   clang-14 libclang-rt-14-dev libomp-14-dev llvm-14)

@@ -43,8 +43,7 @@ StaticCells static_cells(const CellModel& cm, double load_N) {
 std::vector<UnitRange> touchable_sections(const CellModel& cm, const ScenarioPlan& plan,
                                           const StaticCells& bound) {
   const TransientModel& M = cm.M();
-  const double level = -(kTouchMarginFraction * bound.sinking_m +
-                         (plan.cleat ? std::max(0.0, plan.cleat_height_m) : 0.0));
+  const double level = -(kTouchMarginFraction * bound.sinking_m + plan.road_height_bound());
   std::vector<UnitRange> ranges;
   for (int c = 0; c < cm.classes.size(); ++c) {
     int lo = 0, hi = M.m - 1;
@@ -95,6 +94,8 @@ double CellSystem::spin_rate(double t) const { return plan_.spin_rate(t); }
 
 double CellSystem::road(double t, int i, int c, double* slope) const {
   if (slope) *slope = 0;
+  // A road profile is uniform across the tread (every column class); the cleat may be narrower.
+  if (plan_.road_profile) return plan_.road_profile(t, cm_.M().x_road(i), slope);
   if (!plan_.cleat || !cm_.classes.on_cleat[c]) return 0;
   // The 2D model's cleat profile (ode_system.cc): flat top, raised-cosine edges of L/4.
   const double L = plan_.cleat_length_m, H = plan_.cleat_height_m;
@@ -137,7 +138,7 @@ void CellSystem::penetration(double t, const double* y, Eigen::VectorXd& g,
     double* gc = g.data() + o;
     const double* Pc = P.data() + r.lo;
     for (int k = 0; k < r.size(); ++k) gc[k] = Pc[k] - drop;
-    if (plan_.cleat && cm_.classes.on_cleat[c])
+    if (plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c]))
       for (int k = 0; k < r.size(); ++k) gc[k] += road(t, r.lo + k, c);
     if (relax_)
       for (int k = 0; k < r.size(); ++k) gc[k] -= e[o + k];

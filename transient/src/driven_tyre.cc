@@ -130,6 +130,8 @@ struct DrivenTyre::Impl {
     plan.load = [](double) { return 0.0; };
     plan.radius_m = model.tyre.config.outer_radius_m;
     plan.hub = track;
+    plan.road_profile = opt.road_profile;
+    plan.road_max_height_m = opt.road_max_height_m;
   }
 
   /// A static state at a deflection, of the patch in use.
@@ -285,6 +287,10 @@ HubState DrivenTyre::hub() const { return impl_->track->at(time()); }
 WheelLoad DrivenTyre::load() const {
   Impl& I = *impl_;
   return wheel_load(I.ode->observe(I.cvode->time(), I.cvode->state().data()));
+}
+void DrivenTyre::vertical_forces(Eigen::VectorXd& F) const {
+  Impl& I = *impl_;
+  I.ode->vertical_forces(I.cvode->time(), I.cvode->state().data(), F);
 }
 bool DrivenTyre::patch_3d() const { return impl_->three_d; }
 solvers::OdeStats DrivenTyre::stats() const { return impl_->cvode->stats(); }

@@ -82,7 +82,7 @@ void TransientSystem::contact_coordinates(const double* y) const {
 void TransientSystem::check_outside(double t, const double* y) const {
   const auto& M = model_;
   const double z = hub_z(t, y);
-  const double H = plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0;
+  const double H = plan_.road_height_bound();
   double p_max = -std::numeric_limits<double>::infinity();
   bool touches = false;
   auto scan = [&](int from, int to) {
@@ -104,7 +104,7 @@ void TransientSystem::check_outside(double t, const double* y) const {
 
 void TransientSystem::reach(double t, const double* y, int& lo, int& hi) const {
   const auto& M = model_;
-  const double H = plan_.cleat ? std::max(0.0, plan_.cleat_height_m) : 0.0;
+  const double H = plan_.road_height_bound();
   if (has_outside_) {
     // Units outside units_: p_i <= p_out_ref + (z - z_out_ref) + max|T_i| |xi - xi_out_ref| + h
     // as below; only when this bound does not exclude them is their penetration computed.
@@ -146,6 +146,10 @@ void TransientSystem::reach(double t, const double* y, int& lo, int& hi) const {
 }
 
 void TransientSystem::add_road(double t, int lo, int hi, Eigen::VectorXd& g) const {
+  if (plan_.road_profile) {
+    for (int i = lo; i <= hi; ++i) g(i) += road(t, i);
+    return;
+  }
   if (!plan_.cleat) return;
   // The cleat covers |x - centre| < L/2 only: its units by bisection of the increasing x_i.
   const double centre = plan_.cleat_start_m - plan_.distance(t), half = 0.5 * plan_.cleat_length_m;
@@ -176,7 +180,7 @@ void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorX
   const double z = hub_z(t, y);
   const double* sag = M.tyre.sag.data() + lo;
   double* u = seg.data();
-  if (plan_.cleat) {
+  if (plan_.has_road()) {
     for (int k = 0; k < n; ++k) u[k] = (z - sag[k]) - u[k];
     add_road(t, lo, hi, g);
     if (ne_ > 0) seg -= Eigen::Map<const Eigen::VectorXd>(y + M.e_index() + (lo - units_.lo), n);
@@ -209,6 +213,7 @@ double TransientSystem::tip_penetration_at(double t, const double* y, int i, boo
 
 double TransientSystem::road(double t, int i, double* slope) const {
   if (slope) *slope = 0;
+  if (plan_.road_profile) return plan_.road_profile(t, model_.x_road(i), slope);
   if (!plan_.cleat) return 0;
   const double L = plan_.cleat_length_m, H = plan_.cleat_height_m;
   const double xi = model_.x_road(i) - (plan_.cleat_start_m - plan_.distance(t));

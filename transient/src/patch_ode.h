@@ -39,6 +39,9 @@ class PatchOde {
   virtual bool escaped() const = 0;
   /// One output sample (and the pressure map on the 3D patch when `map` is given).
   virtual TransientSample observe(double t, const double* y, CellMap* map = nullptr) = 0;
+  /// The vertical contact force of every unit (2D) or section (3D: summed over its cells) at
+  /// (t, y) into F (m entries; 0 where nothing touches) [N].
+  virtual void vertical_forces(double t, const double* y, Eigen::VectorXd& F) = 0;
   /// units_lo/hi, states and patch_3d of a result.
   virtual void describe(TransientResult& res) const = 0;
   /// The state in the layout of every unit (2D: e = 0 for units without a tread state).

@@ -31,7 +31,7 @@ TransientSample observe_units(const TransientModel& M, const TransientSystem& sy
   s.load_N = f.segment(u0, u1 - u0 + 1).sum();
   // Sinking max_i (z + h_i - s_i): the least sag on a flat road, over the cleat's units too.
   double sink = z - sag_min, moment = 0, slope_force = 0;
-  if (plan.cleat) {
+  if (plan.has_road()) {
     Eigen::VectorXd h = Eigen::VectorXd::Zero(M.m);
     sys.add_road(t, 0, M.m - 1, h);
     sink = std::max(sink, (z + h.array() - M.tyre.sag.array()).maxCoeff());
@@ -45,7 +45,7 @@ TransientSample observe_units(const TransientModel& M, const TransientSystem& sy
       last = i;
       ++units;
       moment += fp[i] * x[i];
-      if (plan.cleat) {  // on a flat road the slope force stays 0
+      if (plan.has_road()) {  // on a flat road the slope force stays 0
         double slope = 0;
         sys.road(t, i, &slope);
         slope_force += fp[i] * slope;
@@ -110,6 +110,9 @@ class UnitsOde final : public PatchOde {
   bool escaped() const override { return sys_.escaped(); }
   TransientSample observe(double t, const double* y, CellMap*) override {
     return observe_units(M_, sys_, plan_, t, y, f_sample_, sag_min_);
+  }
+  void vertical_forces(double t, const double* y, Eigen::VectorXd& F) override {
+    sys_.forces_into(t, y, F);
   }
   void describe(TransientResult& res) const override {
     res.units_lo = sys_.units().lo;

@@ -54,7 +54,7 @@ class CellObserver {
       first = first < 0 ? i : first;
       last = i;
     }
-    for (int c = 0; c < C.size() && plan.cleat; ++c) {
+    for (int c = 0; c < C.size() && plan.has_road(); ++c) {
       const UnitRange& r = sys_.ranges()[c];
       for (int k = 0; k < r.size(); ++k) {
         double slope = 0;
@@ -220,6 +220,9 @@ class CellsOde final : public PatchOde {
   TransientSample observe(double t, const double* y, CellMap* map) override {
     return obs_.observe(t, y, map);
   }
+  void vertical_forces(double t, const double* y, Eigen::VectorXd& F) override {
+    sys_.forces(t, y, f_forces_, F);
+  }
   void describe(TransientResult& res) const override {
     res.patch_3d = true;
     res.units_lo = sys_.sections().lo;
@@ -262,6 +265,7 @@ class CellsOde final : public PatchOde {
   CellNewton newton_;
   CellObserver obs_;
   std::vector<double> y0_;
+  Eigen::VectorXd f_forces_;  // vertical_forces()' cell forces (work vector)
 };
 
 }  // namespace

@@ -89,7 +89,7 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
   take_maps(0.0, 0.0, &y);
   res.samples.push_back(sys.observe(0.0, y.data()));
   const std::vector<double> atol = sys.absolute_tolerances();
-  SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.cleat);
+  SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.has_road());
   reuse.remember(y);
   std::vector<double> breaks = plan.breakpoints;
   std::sort(breaks.begin(), breaks.end());

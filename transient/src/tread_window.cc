@@ -51,7 +51,7 @@ UnitRange touchable_units(const TransientModel& M, const ScenarioPlan& plan,
   if (M.nr > 0) xi += M.Cr * s.r;
   const Eigen::VectorXd p = (bound.sinking_m - M.tyre.sag.array() - (M.T * xi).array()).matrix();
   const double level = -(kTouchMarginFraction * bound.sinking_m +
-                         (plan.cleat ? std::max(0.0, plan.cleat_height_m) : 0.0));
+                         plan.road_height_bound());
   int lo = 0, hi = M.m - 1;
   while (lo <= hi && !(p(lo) > level)) ++lo;
   while (hi >= lo && !(p(hi) > level)) --hi;

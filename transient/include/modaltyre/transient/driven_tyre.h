@@ -55,6 +55,12 @@ struct DrivenTyreOptions {
   /// 0: every unit. Should a unit beyond it reach the road, the step is redone with every unit
   /// (never a wrong result, only a slower one).
   double max_deflection_m = 0;
+  /// A road under the tyre instead of the flat one (ScenarioPlan::road_profile: height above
+  /// the flat road at ground position x relative to the hub, at time t; the caller keeps the
+  /// hub's position along the road), with a bound of its heights. The static start (reset())
+  /// is on the flat road: start where the profile is flat under the patch.
+  std::function<double(double t, double x_m, double* slope)> road_profile;
+  double road_max_height_m = 0;
 };
 
 /// How one advance() ended.
@@ -92,6 +98,10 @@ class DrivenTyre {
   HubState hub() const;
   /// The wheel load at time().
   WheelLoad load() const;
+  /// The vertical contact force of every unit (2D) or section (3D, summed over its cells) at
+  /// time() into F (m entries, indexed as the model's candidate units; 0 where nothing
+  /// touches) [N]: the pressure distribution along x that a tangential contact needs.
+  void vertical_forces(Eigen::VectorXd& F) const;
   /// Runs on the 3D patch.
   bool patch_3d() const;
   /// Integrator counters since reset().

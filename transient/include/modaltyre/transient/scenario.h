@@ -41,6 +41,17 @@ struct ScenarioPlan {
   double spin(double t) const;            ///< Omega(t): V / R0, or the prescribed hub's spin
   double spin_rate(double t) const;       ///< Omega'(t)
   bool hub_free() const { return !hub; }  ///< the hub's z a state (load control)
+  /// A road under a driven tyre in place of the cleat (the FMU's road_profile, issue 34): its
+  /// height above the flat road at ground position x relative to the hub (a unit's x_road) at
+  /// time t, and its slope dh/dx into `slope` when not null. Empty: the cleat or a flat road.
+  std::function<double(double t, double x_m, double* slope)> road_profile;
+  double road_max_height_m = 0;  ///< >= every height road_profile returns (reach bounds)
+  bool has_road() const { return cleat || static_cast<bool>(road_profile); }
+  /// An upper bound of the road's height over the flat road (>= 0).
+  double road_height_bound() const {
+    if (road_profile) return road_max_height_m > 0 ? road_max_height_m : 0.0;
+    return cleat && cleat_height_m > 0 ? cleat_height_m : 0.0;
+  }
   /// The hub's displacement z at t: the state's (load control) or the prescribed one.
   double hub_z(double t, double state_z) const { return hub ? hub->deflection(t) : state_z; }
   /// The hub's rates (z', w') at t from its states (z, w) and the contact load: m z'' = F(t) -

@@ -1,0 +1,113 @@
+#include "modaltyre/fmu/tyre_variables.h"
+
+namespace modaltyre::fmu {
+namespace {
+
+ScalarVariable real(const std::string& name, unsigned ref, Causality c, const std::string& unit,
+                    const std::string& description, std::optional<double> start = {}) {
+  ScalarVariable v;
+  v.name = name;
+  v.value_reference = ref;
+  v.type = BaseType::real;
+  v.causality = c;
+  v.unit = unit;
+  v.description = description;
+  if (c == Causality::input) {
+    v.variability = Variability::continuous;
+    v.start = start;
+  } else if (c == Causality::output) {
+    v.variability = Variability::continuous;
+    v.initial = Initial::calculated;
+  } else if (c == Causality::parameter) {
+    v.variability = Variability::fixed;
+    v.initial = Initial::exact;
+    v.start = start;
+  }
+  return v;
+}
+
+}  // namespace
+
+ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
+  ModelDescription d;
+  d.model_name = "ModalTyre: " + info.tyre_name;
+  d.guid = info.guid;
+  d.model_identifier = kModelIdentifier;
+  d.generation_tool = "ModalTyre (modaltyre fmu)";
+  d.description =
+      "Transient modal tyre (seed 001 modal carcass, Kelvin-Voigt tread, unilateral contact, "
+      "CVODE/KLU) in the wheel plane. Filled: wheel_load.force.x (longitudinal), .force.z "
+      "(vertical) and .moment.y (about the spin axis), in the world frame along the wheel's "
+      "heading. Not modelled (always 0): lateral force, overturning and aligning moments "
+      "(wheel_load.force.y, moment.x, moment.z along the wheel frame). Load point: the wheel "
+      "centre.";
+  d.default_step_s = info.step_size_s;
+  d.log_categories = {"logStatusError", "logStatusWarning", "logEvents"};
+  for (const char* u : {"1", "m", "s", "m/s", "rad/s", "N", "N.m"})
+    d.units.push_back({u, *unit_exponents(u)});
+
+  using C = Causality;
+  auto& v = d.variables;
+  const char* xyz[] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k)
+    v.push_back(real(std::string("wheel_state.pos.") + xyz[k], vr::pos_x + k, C::input, "m",
+                     "wheel centre position (world frame)", k == 2 ? info.outer_radius_m : 0.0));
+  const char* e[] = {"e0", "e1", "e2", "e3"};
+  for (int k = 0; k < 4; ++k)
+    v.push_back(real(std::string("wheel_state.rot.") + e[k], vr::rot_e0 + k, C::input, "1",
+                     "wheel orientation quaternion (e0 scalar; wheel frame to world)",
+                     k == 0 ? 1.0 : 0.0));
+  for (int k = 0; k < 3; ++k)
+    v.push_back(real(std::string("wheel_state.lin_vel.") + xyz[k], vr::lin_vel_x + k, C::input,
+                     "m/s", "wheel centre velocity (world frame)", 0.0));
+  for (int k = 0; k < 3; ++k)
+    v.push_back(real(std::string("wheel_state.ang_vel.") + xyz[k], vr::ang_vel_x + k, C::input,
+                     "rad/s", "wheel angular velocity (world frame); spin about the wheel's y",
+                     0.0));
+  v.push_back(real("terrain_height", vr::terrain_height, C::input, "m",
+                   "terrain height at query_point (unused when road_profile is set)", 0.0));
+  for (int k = 0; k < 3; ++k)
+    v.push_back(real(std::string("terrain_normal.") + xyz[k], vr::terrain_normal_x + k, C::input,
+                     "1", "terrain normal at query_point (the in-plane model takes z up)",
+                     k == 2 ? 1.0 : 0.0));
+  v.push_back(real("terrain_mu", vr::terrain_mu, C::input, "1",
+                   "friction coefficient of the road (Coulomb mu of the tread)",
+                   info.friction_coefficient));
+  for (int k = 0; k < 3; ++k)
+    v.push_back(real(std::string("wheel_load.point.") + xyz[k], vr::load_point_x + k, C::output,
+                     "m", "application point of wheel_load (the wheel centre)"));
+  for (int k = 0; k < 3; ++k)
+    v.push_back(real(std::string("wheel_load.force.") + xyz[k], vr::force_x + k, C::output, "N",
+                     "force of the road on the wheel through the tyre (world frame)"));
+  for (int k = 0; k < 3; ++k)
+    v.push_back(real(std::string("wheel_load.moment.") + xyz[k], vr::moment_x + k, C::output, "N.m",
+                     "moment about the wheel centre (world frame)"));
+  for (int k = 0; k < 3; ++k)
+    v.push_back(real(std::string("query_point.") + xyz[k], vr::query_x + k, C::output, "m",
+                     "where the host should evaluate terrain_height (the wheel centre)"));
+  v.push_back(real("tyre.deflection", vr::deflection, C::output, "m",
+                   "radial deflection of the tyre at the road (sinking)"));
+  v.push_back(real("tyre.contact_length", vr::contact_length, C::output, "m",
+                   "length of the contact patch: the extent of its loaded units along x"));
+  v.push_back(real("tyre.slip_ratio", vr::slip_ratio, C::output, "1",
+                   "longitudinal slip (spin x rolling radius - speed) / speed, 0 below 0.1 m/s"));
+  v.push_back(real("step_size", vr::step_size, C::parameter, "s",
+                   "largest internal step between two hub states (the integrator takes its "
+                   "own steps inside)",
+                   info.step_size_s));
+  ScalarVariable road;
+  road.name = "road_profile";
+  road.value_reference = vr::road_profile;
+  road.type = BaseType::string;
+  road.causality = C::parameter;
+  road.variability = Variability::fixed;
+  road.initial = Initial::exact;
+  road.start_string = "";
+  road.description =
+      "optional CSV x_m,height_m: the road under the whole tyre in world x (a cleat, a profile); "
+      "absolute or relative to the FMU's resources folder; empty: flat at terrain_height";
+  v.push_back(road);
+  return d;
+}
+
+}  // namespace modaltyre::fmu

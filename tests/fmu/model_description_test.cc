@@ -1,0 +1,162 @@
+// The tyre FMU's description against FMI 2.0's rules (fmu/model_description.h): the generated
+// description is valid, it names the variables as Chrono's tyre FMU does, and each rule the
+// validator checks refuses a description that breaks it.
+#include "modaltyre/fmu/model_description.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "modaltyre/core/errors.h"
+#include "modaltyre/fmu/tyre_variables.h"
+
+namespace modaltyre::fmu {
+namespace {
+
+ModelDescription tyre() {
+  TyreDescriptionInfo info;
+  info.tyre_name = "test tyre";
+  info.guid = "{00000000-0000-0000-0000-000000000000}";
+  info.outer_radius_m = 0.2948;
+  return tyre_model_description(info);
+}
+
+ScalarVariable& named(ModelDescription& d, const std::string& name) {
+  auto it = std::find_if(d.variables.begin(), d.variables.end(),
+                         [&](const ScalarVariable& v) { return v.name == name; });
+  EXPECT_NE(it, d.variables.end()) << name;
+  return *it;
+}
+
+bool mentions(const std::vector<std::string>& problems, const std::string& text) {
+  for (const std::string& p : problems)
+    if (p.find(text) != std::string::npos) return true;
+  return false;
+}
+
+TEST(FmuModelDescription, TyreDescriptionIsValid) {
+  const ModelDescription d = tyre();
+  const std::vector<std::string> problems = validate(d);
+  EXPECT_TRUE(problems.empty()) << (problems.empty() ? "" : problems.front());
+}
+
+TEST(FmuModelDescription, NamesTheVariablesAsChronosTyreFmu) {
+  ModelDescription d = tyre();
+  std::set<std::string> inputs, outputs, parameters;
+  for (const ScalarVariable& v : d.variables) {
+    if (v.causality == Causality::input) inputs.insert(v.name);
+    if (v.causality == Causality::output) outputs.insert(v.name);
+    if (v.causality == Causality::parameter) parameters.insert(v.name);
+  }
+  for (const char* base :
+       {"wheel_state.pos.", "wheel_state.lin_vel.", "wheel_state.ang_vel.", "terrain_normal."})
+    for (const char* c : {"x", "y", "z"})
+      EXPECT_TRUE(inputs.count(std::string(base) + c)) << base << c;
+  for (const char* e : {"e0", "e1", "e2", "e3"})
+    EXPECT_TRUE(inputs.count(std::string("wheel_state.rot.") + e));
+  EXPECT_TRUE(inputs.count("terrain_height"));
+  EXPECT_TRUE(inputs.count("terrain_mu"));
+  for (const char* base :
+       {"wheel_load.point.", "wheel_load.force.", "wheel_load.moment.", "query_point."})
+    for (const char* c : {"x", "y", "z"})
+      EXPECT_TRUE(outputs.count(std::string(base) + c)) << base << c;
+  EXPECT_EQ(parameters, (std::set<std::string>{"step_size", "road_profile"}));
+  EXPECT_EQ(named(d, "step_size").unit, "s");
+  EXPECT_EQ(named(d, "wheel_load.moment.y").unit, "N.m");
+  // The wheel starts touching a road at z = 0: no load before the host moves it.
+  EXPECT_DOUBLE_EQ(*named(d, "wheel_state.pos.z").start, 0.2948);
+}
+
+TEST(FmuModelDescription, XmlDeclaresCoSimulationAndEveryVariableOnce) {
+  const ModelDescription d = tyre();
+  const std::string xml = to_xml(d);
+  EXPECT_NE(xml.find("fmiVersion=\"2.0\""), std::string::npos);
+  EXPECT_NE(xml.find("<CoSimulation modelIdentifier=\"ModalTyre\""), std::string::npos);
+  EXPECT_EQ(xml.find("<ModelExchange"), std::string::npos);
+  for (const ScalarVariable& v : d.variables) {
+    const std::string tag = "name=\"" + v.name + "\"";
+    const auto first = xml.find(tag);
+    ASSERT_NE(first, std::string::npos) << v.name;
+    EXPECT_EQ(xml.find(tag, first + 1), std::string::npos) << v.name;
+  }
+  // Outputs are calculated: no start attribute, listed among the initial unknowns.
+  std::size_t outputs = 0;
+  for (const ScalarVariable& v : d.variables) outputs += v.causality == Causality::output;
+  std::size_t unknowns = 0, at = xml.find("<InitialUnknowns>");
+  const std::size_t end = xml.find("</InitialUnknowns>");
+  while ((at = xml.find("<Unknown ", at + 1)) < end) ++unknowns;
+  EXPECT_EQ(unknowns, outputs);
+}
+
+TEST(FmuModelDescription, RefusesADuplicateValueReferenceWithinAType) {
+  ModelDescription d = tyre();
+  named(d, "terrain_mu").value_reference = named(d, "terrain_height").value_reference;
+  EXPECT_TRUE(mentions(validate(d), "value reference"));
+  EXPECT_THROW(to_xml(d), ComputationError);
+  // The same number in another base type is not an alias (FMI 2.0: per type).
+  ModelDescription ok = tyre();
+  named(ok, "road_profile").value_reference = named(ok, "wheel_state.pos.x").value_reference;
+  EXPECT_TRUE(validate(ok).empty());
+}
+
+TEST(FmuModelDescription, RefusesCausalityVariabilityPairsTheStandardForbids) {
+  ModelDescription d = tyre();
+  named(d, "step_size").variability = Variability::continuous;  // a continuous parameter
+  EXPECT_TRUE(mentions(validate(d), "is not allowed"));
+  ModelDescription e = tyre();
+  named(e, "terrain_mu").variability = Variability::fixed;  // a fixed input
+  EXPECT_TRUE(mentions(validate(e), "is not allowed"));
+  ModelDescription f = tyre();
+  named(f, "road_profile").variability = Variability::continuous;  // a continuous String
+  EXPECT_TRUE(mentions(validate(f), "only a Real can be continuous"));
+}
+
+TEST(FmuModelDescription, RefusesInitialAndStartCombinationsTheStandardForbids) {
+  ModelDescription d = tyre();
+  named(d, "step_size").initial = Initial::calculated;  // a parameter is exact only
+  EXPECT_TRUE(mentions(validate(d), "initial calculated is not allowed"));
+  ModelDescription e = tyre();
+  named(e, "wheel_state.pos.x").initial = Initial::exact;  // an input takes no initial
+  EXPECT_TRUE(mentions(validate(e), "is not allowed"));
+  ModelDescription f = tyre();
+  named(f, "wheel_load.force.z").start = 0.0;  // a calculated output has no start
+  EXPECT_TRUE(mentions(validate(f), "a start value is not allowed"));
+  ModelDescription g = tyre();
+  named(g, "terrain_mu").start.reset();  // an input needs one
+  EXPECT_TRUE(mentions(validate(g), "a start value is required"));
+}
+
+TEST(FmuModelDescription, RefusesUndefinedAndMisdefinedUnits) {
+  ModelDescription d = tyre();
+  named(d, "wheel_load.force.x").unit = "kN";
+  EXPECT_TRUE(mentions(validate(d), "not in UnitDefinitions"));
+  ModelDescription e = tyre();
+  e.units[0].exponents[1] = 1;  // "1" with a metre in it
+  EXPECT_TRUE(mentions(validate(e), "do not match its name"));
+  ModelDescription f = tyre();
+  named(f, "terrain_height").unit.clear();
+  EXPECT_TRUE(mentions(validate(f), "without a unit"));
+  ModelDescription g = tyre();
+  g.units.push_back(g.units.front());
+  EXPECT_TRUE(mentions(validate(g), "defined twice"));
+}
+
+TEST(FmuModelDescription, RefusesNamesThatAreNotStructured) {
+  ModelDescription d = tyre();
+  named(d, "terrain_mu").name = "terrain mu";
+  EXPECT_TRUE(mentions(validate(d), "not a structured name"));
+  ModelDescription e = tyre();
+  named(e, "terrain_mu").name = "terrain_height";
+  EXPECT_TRUE(mentions(validate(e), "declared twice"));
+}
+
+TEST(FmuModelDescription, EscapesTextInAttributes) {
+  ModelDescription d = tyre();
+  d.model_name = "a \"quoted\" <tyre> & more";
+  const std::string xml = to_xml(d);
+  EXPECT_NE(xml.find("a &quot;quoted&quot; &lt;tyre&gt; &amp; more"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace modaltyre::fmu
