@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "modaltyre/contact/parameter_spec.h"
+#include "modaltyre/modal/hammer_data.h"
 
 namespace modaltyre::contact {
 
@@ -250,6 +251,24 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   }
   if (hammer_type != std::filesystem::file_type::regular) {
     modal.fail("hammer_csv", "'" + c.hammer_csv + "' is not a regular file (a folder or device?)");
+  }
+  // Shapes without a mass normalisation (`ema --unscaled`, column scaling = unscaled) have an
+  // arbitrary scale: only the ring's tension can give their modes a mass (docs/ring_model.md).
+  if (modal::read_hammer_csv(c.hammer_csv).unscaled) {
+    if (modal.has("normalisation") && c.carcass.normalisation == ModalNormalisation::shapes) {
+      modal.fail("normalisation",
+                 "'" + c.hammer_csv +
+                     "' holds unscaled shapes (scaling = unscaled): their scale is arbitrary, "
+                     "so 'shapes' cannot give the modal masses; use 'ring'");
+    }
+    c.carcass.normalisation = ModalNormalisation::ring;
+    if (!(c.carcass.mass_per_length_kg_m > 0) && !(c.carcass.belt_width_m > 0)) {
+      modal.fail("hammer_csv", "'" + c.hammer_csv +
+                                   "' holds unscaled shapes (scaling = unscaled): the ring's "
+                                   "normalisation gives them a mass; state modal.belt_width_mm "
+                                   "(the hoop tension T = p b R fixes it) or "
+                                   "modal.mass_per_length_kg_m");
+    }
   }
   return c;
 }

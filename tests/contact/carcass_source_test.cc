@@ -5,8 +5,11 @@
 #include "modaltyre/contact/carcass_source.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -144,6 +147,56 @@ TEST(CarcassSource, UnstatedTestPressureIsSaidNotIgnored) {
 }
 
 // Each refusal names the key that fixes it.
+// Unscaled hammer shapes (`ema --unscaled`, column scaling = unscaled) have no mass of their
+// own: the config takes the ring's normalisation, so the planted ring's compliance comes back
+// as from its frequency list, whatever the shapes' scale; 'shapes' and a missing mass scale
+// are refused naming their keys.
+TEST(CarcassSource, UnscaledShapesTakeTheRingsNormalisation) {
+  const Ring r;
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("modaltyre_unscaled_ring_" + std::to_string(::getpid()) + ".csv");
+  {
+    std::ofstream csv(path);
+    csv.precision(17);
+    csv << "mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential,scaling\n";
+    for (int n = 1; n <= 6; ++n) {
+      const double scale = 0.37 * n;  // arbitrary, different per mode
+      for (int i = 0; i < 12; ++i) {
+        const double th = kTwoPi * i / 12;
+        csv << n << "," << r.hz(n) << ",0.03," << i + 1 << "," << 30 * i << ","
+            << scale * std::cos(n * th) << "," << scale * std::sin(n * th) / n << ",unscaled\n";
+      }
+    }
+  }
+  const std::string head =
+      "tyre:\n  outer_radius_mm: 300\n  inflation_pressure_kPa: 200\n"
+      "modal:\n  hammer_csv: " +
+      path.string() + "\n  test_pressure_kPa: 200\n";
+  const std::string tail =
+      "tread:\n  modulus_MPa: 3\n  thickness_mm: 8\n  contact_width_mm: 150\n"
+      "contact:\n  unit_length_mm: 2\n  window_mm: 300\n";
+  const TyreModel m = build_tyre_model(
+      read_tyre_config(ConfigTree::from_string(head + "  belt_width_mm: 150\n" + tail, "u.yaml")));
+  EXPECT_TRUE(m.carcass.ring);
+  EXPECT_EQ(m.carcass.mass_source, "tension");
+  EXPECT_NEAR(m.carcass.mass_per_length_kg_m, r.mu, 1e-6 * r.mu);
+  for (int n : {1, 2, 4, 6, 20}) {
+    const double expected = 1.0 / (M_PI * r.R * r.K(n, r.p));
+    EXPECT_NEAR(m.basis.static_rr(n), expected, 1e-6 * expected) << n;
+  }
+  auto refused_key = [&](const std::string& modal_extra) -> std::string {
+    try {
+      read_tyre_config(ConfigTree::from_string(head + modal_extra + tail, "u.yaml"));
+    } catch (const InputError& e) {
+      return e.where().key;
+    }
+    return "accepted";
+  };
+  EXPECT_EQ(refused_key("  belt_width_mm: 150\n  normalisation: shapes\n"), "modal.normalisation");
+  EXPECT_EQ(refused_key(""), "modal.hammer_csv");
+  std::filesystem::remove(path);
+}
+
 TEST(CarcassSource, RefusalsNameTheirKeys) {
   auto refused = [](const std::string& modal, const std::string& key) {
     const std::string yaml = "tyre:\n  outer_radius_mm: 300\nmodal:\n" + modal;
