@@ -32,8 +32,13 @@ def test_written_config_runs_the_footprint_as_the_cli(modaltyre, tmp_path):
     got = modaltyre.init("195/60R14", test_pressure_kPa=230, pressure_kPa=200,
                          frequencies_hz=FREQ, orders=ORDERS, wheel_mass_kg=7, output=out)
     assert got["output"] == str(out) and "config" not in got
-    assert_same(modaltyre.Tyre(out).report([4000]),
-                cli_json("footprint", str(out), "--load", "4000"))
+    report = modaltyre.Tyre(out).report([4000])
+    assert_same(report, cli_json("footprint", str(out), "--load", "4000"))
+    # The footprint says where its modal masses came from: init's tension, at both pressures.
+    carcass = report["model"]["carcass"]
+    assert carcass["normalisation"] == "ring" and carcass["mass_source"] == "tension"
+    assert carcass["mass_per_length_kg_m"] == pytest.approx(got["mass_per_length_kg_m"])
+    assert (carcass["test_pressure_kPa"], carcass["operating_pressure_kPa"]) == (230, 200)
     # The operating pressure acts: at 200 kPa the tyre sinks more than at the test's 230 kPa.
     at230 = tmp_path / "tyre230.yaml"
     modaltyre.init("195/60R14", test_pressure_kPa=230, frequencies_hz=FREQ, orders=ORDERS,
