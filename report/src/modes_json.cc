@@ -40,6 +40,12 @@ nlohmann::json modes_json(const modal::ModeIdentification& id) {
         {"coefficient_std", round_sig(m.c_radial_std, 6)},
         {"tangential_coefficient_std", round_sig(m.c_tangential_std, 6)},
         {"amplitude2_rel_std", round_sig(m.amplitude2_rel_std, 6)}};
+    if (m.freq_std_hz > 0 || m.radial_noise_stated > 0) {  // the hammer CSV's (ema)
+      j["freq_std_hz"] = round_sig(m.freq_std_hz, 6);
+      j["damping_std"] = round_sig(m.damping_std, 6);
+      j["radial_noise_stated"] = round_sig(m.radial_noise_stated, 6);
+      j["tangential_noise_stated"] = round_sig(m.tangential_noise_stated, 6);
+    }
     if (m.aliased) {
       j["alias_candidates"] = m.alias_candidates;
       j["likely_order"] = m.likely_order >= 0 ? nlohmann::json(m.likely_order) : nlohmann::json();

@@ -1,5 +1,6 @@
 #include "modaltyre/uncertainty/inputs.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "modaltyre/core/errors.h"
@@ -17,12 +18,25 @@ std::vector<UncertainInput> collect_inputs(const contact::TyreConfig& config,
         m.kind == modal::ModeKind::rotation || (m.kind == modal::ModeKind::radial && !m.aliased);
     const std::string label = "mode " + std::to_string(m.id);
     if (shapes_scale && used && m.amplitude2_rel_std > 0) {
+      const bool from_ema =
+          std::max(m.radial_noise_stated, m.tangential_noise_stated) > 0 &&
+          (m.kind == modal::ModeKind::rotation ? m.tangential_noise == m.tangential_noise_stated
+                                               : m.radial_noise == m.radial_noise_stated);
       out.push_back({InputKind::mode_amplitude, int(i), label + " amplitude", m.amplitude2_rel_std,
-                     "hammer shapes' residual (one-harmonic fit)"});
+                     from_ema ? "hammer CSV radial_std / tangential_std (ema)"
+                              : "hammer shapes' residual (one-harmonic fit)"});
     }
-    if (u.frequency_rel_std > 0 && (used || !shapes_scale)) {
-      out.push_back({InputKind::mode_frequency, int(i), label + " frequency", u.frequency_rel_std,
-                     "modal.frequency_std_percent"});
+    // The measured frequency's own scatter (ema's freq_std_hz) and a stated one (temperature,
+    // preload, test to test) are independent: their variances add.
+    const double f_rel = m.freq_hz > 0 ? m.freq_std_hz / m.freq_hz : 0.0;
+    const double f_std = std::hypot(f_rel, u.frequency_rel_std);
+    if (f_std > 0 && (used || !shapes_scale)) {
+      const std::string source =
+          f_rel > 0 ? (u.frequency_rel_std > 0
+                           ? "hammer CSV freq_std_hz (ema) and modal.frequency_std_percent"
+                           : "hammer CSV freq_std_hz (ema)")
+                    : "modal.frequency_std_percent";
+      out.push_back({InputKind::mode_frequency, int(i), label + " frequency", f_std, source});
     }
   }
   if (u.tread_modulus_rel_std > 0) {
