@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "modaltyre/core/number_format.h"
+#include "modaltyre/uncertainty/order_probability.h"
 
 namespace modaltyre::report {
 
@@ -49,6 +50,14 @@ nlohmann::json modes_json(const modal::ModeIdentification& id) {
     if (m.aliased) {
       j["alias_candidates"] = m.alias_candidates;
       j["likely_order"] = m.likely_order >= 0 ? nlohmann::json(m.likely_order) : nlohmann::json();
+      // docs/uncertainty.md section 6: P(order) from the dispersion fit with each candidate.
+      nlohmann::json chances = nlohmann::json::array();
+      for (const auto& c : uncertainty::alias_order_probabilities(id, m)) {
+        chances.push_back({{"order", c.order},
+                           {"probability", round_sig(c.probability, 4)},
+                           {"chi2", round_sig(c.chi2, 4)}});
+      }
+      j["order_probabilities"] = chances;
     }
     modes.push_back(j);
   }
