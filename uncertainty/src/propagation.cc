@@ -82,7 +82,8 @@ PropagationResult propagate(const contact::TyreConfig& config,
                             const std::vector<contact::OperatingConditions>& cases,
                             const PropagationOptions& o) {
   o.validate();
-  const std::vector<UncertainInput> inputs = collect_inputs(config, modes);
+  std::vector<UncertainInput> inputs = collect_inputs(config, modes);
+  inputs.insert(inputs.end(), o.extra_inputs.begin(), o.extra_inputs.end());
   const std::size_t n = inputs.size(), nc = cases.size(), no = output_names().size();
   PropagationResult r;
   const Outputs nominal = evaluate(config, modes, cases, "the nominal inputs");

@@ -31,6 +31,8 @@ struct PropagationOptions {
   /// Called after each model evaluation (done, total): first the differences (1 + 2 inputs),
   /// then, when sampled, the samples (a new total); may be empty.
   std::function<void(int, int)> progress;
+  /// Inputs beside the config's (collect_inputs), e.g. calibration_inputs() in validate.
+  std::vector<UncertainInput> extra_inputs;
   /// Throws std::invalid_argument naming the field.
   void validate() const;
 };
