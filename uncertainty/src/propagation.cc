@@ -130,9 +130,11 @@ PropagationResult propagate(const contact::TyreConfig& config,
   for (std::size_t j = 0; j < n; ++j) {
     InputEffect e;
     e.input = inputs[j];
+    e.sensitivity.assign(nc, std::vector<double>(no, 0.0));
     for (std::size_t c = 0; c < nc; ++c) {
       for (std::size_t q = 0; q < no; ++q) {
         const double d1 = 0.5 * (plus[j][c][q] - minus[j][c][q]);
+        e.sensitivity[c][q] = d1;
         const bool gridded = q == kPeakOutput;  // a maximum over cells: piecewise, not curved
         const double d2 = 0.5 * (plus[j][c][q] + minus[j][c][q] - 2 * nominal[c][q]);
         // A second difference below the outputs' resolution is not curvature that moves a

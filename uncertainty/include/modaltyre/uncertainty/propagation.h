@@ -59,6 +59,8 @@ struct CaseBands {
 struct InputEffect {
   UncertainInput input;
   std::vector<double> sinking_sensitivity;  ///< d sinking_mm / (1 sigma of the input), per case
+  /// d output / (1 sigma of the input), [case][output_names()], the central differences.
+  std::vector<std::vector<double>> sensitivity;
   double nonlinearity = 0;                  ///< the largest second/first difference ratio
   std::string nonlinear_output;             ///< where it is (output name and load)
 };
