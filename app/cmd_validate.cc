@@ -33,8 +33,7 @@ struct ValidateArgs {
   bool json = false;
   std::string plot;
   bool uncertainty = false;
-  std::string uncertainty_method = "auto";
-  int samples = 200;
+  UncertaintyMethodArgs method;
 };
 
 using report::row_validity;
@@ -274,11 +273,7 @@ void register_validate(CLI::App& app) {
   cmd->add_flag("--uncertainty", a->uncertainty,
                 "the model's band at every row (the config's uncertain inputs and the calibrated "
                 "scalars' covariance; docs/uncertainty.md) and the measured values outside it");
-  cmd->add_option("--uncertainty-method", a->uncertainty_method,
-                  "linear, sampled or auto (default: linear unless its curvature check fails)")
-      ->check(CLI::IsMember({"linear", "sampled", "auto"}));
-  cmd->add_option("--samples", a->samples, "Monte Carlo samples of the sampled method (20-100000)")
-      ->check(CLI::Range(20, 100000));
+  add_uncertainty_method_options(cmd, a->method);
   cmd->callback([a, cmd] {
     // The config decides how the file is read (effects need every row's conditions).
     auto overrides = a->overrides;
@@ -295,12 +290,7 @@ void register_validate(CLI::App& app) {
     warn_outside_validity(rep);
     std::optional<ValidationBands> bands;
     if (a->uncertainty) {
-      uncertainty::PropagationOptions uo;
-      uo.method = a->uncertainty_method == "linear"    ? uncertainty::Method::linear
-                  : a->uncertainty_method == "sampled" ? uncertainty::Method::sampled
-                                                       : uncertainty::Method::automatic;
-      uo.samples = a->samples;
-      bands = validation_bands(rep, uo);
+      bands = validation_bands(rep, a->method.options());
     }
     if (!a->plot.empty()) plot_validation(rep, a->plot, settings, bands ? &*bands : nullptr);
     if (a->json) {

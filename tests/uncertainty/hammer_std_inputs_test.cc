@@ -8,7 +8,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "modaltyre/contact/carcass_source.h"
@@ -16,38 +15,24 @@
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
 #include "modaltyre/uncertainty/inputs.h"
+#include "planted_ring.h"
 
 namespace modaltyre::uncertainty {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kTwoPi = 6.28318530717958647692;
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 constexpr double kRound = 1e-9;  // the CSV's printed digits
 
-// Noise-free planted ring shapes (orders 0-5, 12 points, as propagation_test.cc) with stated
-// standard deviations: freq_std_hz = freq_std_rel f, radial_std = tangential_std = shape_std.
+// Noise-free planted ring shapes (planted_ring.h) with stated standard deviations:
+// freq_std_hz = freq_std_rel f, radial_std = tangential_std = shape_std.
 std::string hammer_csv(double freq_std_rel, double shape_std, bool all_columns = true) {
-  const double mu = 2.5, R = 0.2948;
-  std::ostringstream s;
-  s.precision(12);
-  s << "mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential,freq_std_hz,damping_std,"
-    << (all_columns ? "radial_std," : "") << "tangential_std\n";
-  const int orders[] = {1, 0, 2, 3, 4, 5};
-  for (int i = 0; i < 6; ++i) {
-    const int k = orders[i];
-    const double w2 = 1.9e6 / mu + 4.3e4 * k * k + 90.0 * std::pow(k, 4);
-    const double f = std::sqrt(w2) / kTwoPi + (k == 0 ? 5.0 : 0.0);
-    const double a = std::sqrt(1 / ((k == 0 ? 2 : 1) * M_PI * mu * R));
-    for (int p = 0; p < 12; ++p) {
-      const double th = kTwoPi * p / 12;
-      s << i + 1 << "," << f << ",0.03," << p + 1 << "," << 30.0 * p << ","
-        << a * std::cos(k * (th - 0.3 * i)) << ","
-        << (k > 0 ? a / k * std::sin(k * (th - 0.3 * i)) : 0.0) << "," << freq_std_rel * f
-        << ",0.001," << (all_columns ? std::to_string(shape_std) + "," : "") << shape_std << "\n";
-    }
-  }
-  return s.str();
+  modaltyre_test::PlantedRing o;
+  o.precision = 12;
+  o.freq_std_rel = freq_std_rel;
+  o.shape_std = shape_std;
+  o.radial_std_column = all_columns;
+  return modaltyre_test::planted_ring_csv(o);
 }
 
 class HammerStd : public ::testing::Test {
