@@ -110,4 +110,21 @@ std::string fixed(double v, int decimals) {
   return buf;
 }
 
+uncertainty::PropagationOptions UncertaintyMethodArgs::options() const {
+  uncertainty::PropagationOptions o;
+  o.method = method == "linear"    ? uncertainty::Method::linear
+             : method == "sampled" ? uncertainty::Method::sampled
+                                   : uncertainty::Method::automatic;
+  o.samples = samples;
+  return o;
+}
+
+void add_uncertainty_method_options(CLI::App* cmd, UncertaintyMethodArgs& a) {
+  cmd->add_option("--uncertainty-method", a.method,
+                  "linear, sampled or auto (default: linear unless its curvature check fails)")
+      ->check(CLI::IsMember({"linear", "sampled", "auto"}));
+  cmd->add_option("--samples", a.samples, "Monte Carlo samples of the sampled method (20-100000)")
+      ->check(CLI::Range(20, 100000));
+}
+
 }  // namespace modaltyre::app

@@ -10,6 +10,7 @@
 #include "modaltyre/core/number_format.h"
 #include "modaltyre/report/check_finite.h"
 #include "modaltyre/report/command_inputs.h"
+#include "modaltyre/uncertainty/propagation.h"
 
 namespace modaltyre::app {
 
@@ -51,6 +52,15 @@ std::string pct(double rel);
 
 /// `v`, or +0 when it prints as zero with `decimals` decimals (for printf "%.*f" columns).
 double unsigned_zero(double v, int decimals);
+
+/// The propagation's options of a command (footprint, validate: docs/uncertainty.md):
+/// --uncertainty-method and --samples, added by add_uncertainty_method_options().
+struct UncertaintyMethodArgs {
+  std::string method = "auto";
+  int samples = 200;
+  uncertainty::PropagationOptions options() const;
+};
+void add_uncertainty_method_options(CLI::App* cmd, UncertaintyMethodArgs& a);
 
 /// Rounds to a number of significant digits for JSON (keeps output stable and readable).
 using modaltyre::round_sig;

@@ -42,6 +42,7 @@ struct DiscoverArgs {
   double unit_length_mm = 2;
   int max_effects = 2;
   int exact_rows = 64;
+  bool uncertainty = false;
 };
 
 // "length_mm and sinking_mm": the observables with a relative residual (a non-zero
@@ -87,11 +88,18 @@ void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet
         std::cout << "  " << c.name << ": not testable (" << c.reason << ")\n";
         continue;
       }
-      char line[200];
+      char line[240];
       std::snprintf(line, sizeof line, "  %-20s dBIC %9.1f  CV %8s -> %8s%s\n", c.name.c_str(),
                     c.delta_bic, pct(c.cv_rms_before).c_str(), pct(c.cv_rms_after).c_str(),
                     c.significant ? "  significant" : "");
       std::cout << line;
+      if (c.uncertainty_discount >= 0.05) {  // docs/uncertainty.md section 9
+        std::snprintf(line, sizeof line,
+                      "  %-20s   of which the model's uncertain inputs could produce %.1f: "
+                      "%.1f left\n",
+                      "", c.uncertainty_discount, c.delta_bic - c.uncertainty_discount);
+        std::cout << line;
+      }
     }
   }
   std::cout << "\n" << r.conclusion << "\n";
@@ -219,6 +227,10 @@ void register_discover(CLI::App& app) {
   cmd->add_option("--unit-length-mm", a->unit_length_mm,
                   "patch unit length of the evaluations (default 2 mm; 0 = the config's)")
       ->check(CLI::Range(0.0, 50.0));
+  cmd->add_flag("--uncertainty", a->uncertainty,
+                "weigh each candidate against the model's own uncertainty too (the config's "
+                "uncertain inputs, propagated): the evidence they could produce is taken off its "
+                "Delta BIC (docs/uncertainty.md)");
   cmd->add_option("--max-effects", a->max_effects, "effects to name at most (default 2)")
       ->check(CLI::Range(1, 9));
   cmd->add_option("--exact-rows", a->exact_rows,
@@ -231,6 +243,7 @@ void register_discover(CLI::App& app) {
     opt.unit_length_mm = a->unit_length_mm;
     opt.max_effects = a->max_effects;
     opt.fit.exact_rows = a->exact_rows;
+    opt.model_uncertainty = a->uncertainty;
     opt.validate();  // CLI::Range lets NaN through (every comparison with it is false)
     refuse_repeated_overrides(a->overrides);
     const contact::TyreConfig cfg = contact::load_tyre_config(a->config, a->overrides);

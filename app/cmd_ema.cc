@@ -16,6 +16,7 @@
 #include "modaltyre/ema/ema.h"
 #include "modaltyre/ema/frf_csv.h"
 #include "modaltyre/ema/uff58.h"
+#include "modaltyre/report/uncertainty_json.h"
 
 namespace modaltyre::app {
 namespace {
@@ -69,10 +70,19 @@ nlohmann::json to_json(const ema::EmaResult& r) {
                        {"angle_deg", round_sig(r.angle_deg[i])},
                        {"radial", shape_value(m.radial[i])},
                        {"tangential", shape_value(m.tangential[i])}});
+      if (!m.radial_std.empty()) {  // docs/uncertainty.md section 5
+        shape.back()["radial_std"] = shape_value(m.radial_std[i]);
+        shape.back()["tangential_std"] = shape_value(m.tangential_std[i]);
+      }
     }
+    const auto std_or_null = [](double v) {
+      return std::isfinite(v) ? nlohmann::json(round_sig(v, 4)) : nlohmann::json();
+    };
     modes.push_back({{"mode", k + 1},
                      {"freq_hz", round_sig(m.freq_hz, 8)},
                      {"damping_ratio", round_sig(m.damping_ratio, 6)},
+                     {"freq_std_hz", std_or_null(m.freq_std_hz)},
+                     {"damping_std", std_or_null(m.damping_std)},
                      {"mpc", round_sig(m.mpc, 6)},
                      {"complexity", round_sig(m.complexity, 6)},
                      {"recurrence", round_sig(m.recurrence, 4)},
@@ -101,12 +111,16 @@ void print_table(const ema::EmaResult& r) {
             << to_string(r.reference) << (r.roving_hammer ? " (roving hammer)" : "") << ", "
             << r.points.size() << " points, band " << fixed(r.band_lo_hz, 2) << "-"
             << fixed(r.band_hi_hz, 2) << " Hz\n\n";
-  std::cout << " mode  freq_Hz  damping_%  MPC     complexity  recurrence\n";
+  // Frequency and damping +- 2 sigma from the FRFs' noise (docs/uncertainty.md section 5).
+  std::cout << " mode  freq_Hz (+-2sigma)    damping_% (+-2sigma)  MPC     complexity  "
+               "recurrence\n";
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     const auto& m = r.modes[k];
-    char line[160];
-    std::snprintf(line, sizeof line, " %4zu  %7.3f  %9.3f  %.4f  %10.4f  %10.2f\n", k + 1,
-                  m.freq_hz, 100 * m.damping_ratio, m.mpc, m.complexity, m.recurrence);
+    const std::string f = report::plus_minus(m.freq_hz, 2 * m.freq_std_hz, 3);
+    const std::string z = report::plus_minus(100 * m.damping_ratio, 200 * m.damping_std, 3);
+    char line[200];
+    std::snprintf(line, sizeof line, " %4zu  %-20s  %-20s  %.4f  %10.4f  %10.2f\n", k + 1,
+                  f.c_str(), z.c_str(), m.mpc, m.complexity, m.recurrence);
     std::cout << line;
   }
   for (const auto& d : r.dropped) {

@@ -10,6 +10,7 @@
 #include "modaltyre/modal/hammer_data.h"
 #include "modaltyre/modal/mode_identification.h"
 #include "modaltyre/report/modes_json.h"
+#include "modaltyre/uncertainty/order_probability.h"
 
 namespace modaltyre::app {
 namespace {
@@ -35,6 +36,13 @@ void print_table(const modal::ModeIdentification& id, const std::string& path) {
                   m.aliased ? "yes" : "no", m.r2);
     std::cout << line << m.note;
     if (m.aliased && m.likely_order >= 0) std::cout << " (likely order " << m.likely_order << ")";
+    // The probability of each candidate order (docs/uncertainty.md section 6), best first.
+    const auto chances = uncertainty::alias_order_probabilities(id, m);
+    for (std::size_t c = 0; c < std::min<std::size_t>(chances.size(), 3); ++c) {
+      std::cout << (c ? ", " : "; P(order): ") << chances[c].order << ": "
+                << (chances[c].probability < 1e-3 ? std::string("<0.001")
+                                                  : fixed(chances[c].probability, 3));
+    }
     std::cout << "\n";
   }
   if (id.dispersion.valid) {

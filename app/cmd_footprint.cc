@@ -34,8 +34,7 @@ struct FootprintArgs {
   std::string plot;
   std::string map_csv;
   bool uncertainty = false;
-  std::string uncertainty_method = "auto";
-  int samples = 200;
+  UncertaintyMethodArgs method;
 };
 
 }  // namespace
@@ -68,11 +67,7 @@ void register_footprint(CLI::App& app) {
   cmd->add_flag("--uncertainty", a->uncertainty,
                 "propagate the inputs' uncertainty (the hammer shapes' noise, stated std) to a "
                 "band on every output (docs/uncertainty.md)");
-  cmd->add_option("--uncertainty-method", a->uncertainty_method,
-                  "linear, sampled or auto (default: linear unless its curvature check fails)")
-      ->check(CLI::IsMember({"linear", "sampled", "auto"}));
-  cmd->add_option("--samples", a->samples, "Monte Carlo samples of the sampled method (20-100000)")
-      ->check(CLI::Range(20, 100000));
+  add_uncertainty_method_options(cmd, a->method);
   cmd->add_option("--map-csv", a->map_csv,
                   "write the pressure maps as CSV load_N,x_mm,y_mm,pressure_kPa (footprint_3d:)");
   cmd->callback([a, cmd] {
@@ -107,11 +102,7 @@ void register_footprint(CLI::App& app) {
     if (!a->map_csv.empty()) write_map_csv(results, a->map_csv);
     std::optional<uncertainty::PropagationResult> bands;
     if (a->uncertainty) {
-      uncertainty::PropagationOptions uo;
-      uo.method = a->uncertainty_method == "linear"    ? uncertainty::Method::linear
-                  : a->uncertainty_method == "sampled" ? uncertainty::Method::sampled
-                                                       : uncertainty::Method::automatic;
-      uo.samples = a->samples;
+      uncertainty::PropagationOptions uo = a->method.options();
       std::unique_ptr<ProgressBar> bar;  // one bar per phase: differences, then samples
       int phase_total = 0, shown_done = 0;
       uo.progress = [&](int done, int total) {

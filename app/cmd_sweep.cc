@@ -1,4 +1,5 @@
 // modaltyre sweep SWEEP.yaml [--threads N] [--set key=value]... [--output FILE] [--json]
+//                 [--uncertainty]
 //                            [--warm-start]
 // mpirun -n K modaltyre sweep SWEEP.yaml ...   (built with -DMODALTYRE_WITH_MPI=ON)
 //
@@ -14,16 +15,20 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string_view>
 
 #include "cli_support.h"
 #include "commands.h"
+#include "modaltyre/contact/carcass_source.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/progress.h"
 #include "modaltyre/studies/sweep.h"
+#include "modaltyre/uncertainty/propagation.h"
 #include "mpi_session.h"
 
 namespace modaltyre::app {
@@ -37,6 +42,7 @@ struct SweepArgs {
   bool output_given = false;  ///< --output stated (an empty path is then refused)
   bool json = false;
   bool warm_start = false;
+  bool uncertainty = false;
 };
 
 // The output must be writable before hours of computing go into it.
@@ -144,6 +150,43 @@ std::string first_failure(const studies::SweepResult& res, const std::vector<std
   return "see the CSV";
 }
 
+// sweep --uncertainty (docs/uncertainty.md section 8): per model, its inputs' uncertainty
+// propagated to its ok cases' conditions (footprint --uncertainty's method: linear, sampled
+// where its curvature check fails). A model whose perturbed predictions fail keeps empty cells,
+// with a warning.
+std::vector<studies::SweepStd> sweep_bands(const studies::SweepPlan& plan,
+                                           const studies::SweepResult& res, int threads) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<studies::SweepStd> out(plan.cases.size(), {nan, nan, nan});
+  ProgressBar bar(plan.models.size(), "uncertainty");
+  for (std::size_t m = 0; m < plan.models.size(); ++m) {
+    std::vector<std::size_t> idx;
+    std::vector<contact::OperatingConditions> cases;
+    for (std::size_t i = 0; i < plan.cases.size(); ++i) {
+      if (plan.cases[i].model != m || !res.rows[i].ok) continue;
+      idx.push_back(i);
+      cases.push_back(plan.cases[i].conditions);
+    }
+    bar.tick(1);
+    if (cases.empty()) continue;
+    uncertainty::PropagationOptions o;
+    o.threads = threads;
+    try {
+      const auto& config = plan.models[m];
+      const auto r = uncertainty::propagate(config, contact::config_modes(config), cases, o);
+      for (std::size_t k = 0; k < idx.size(); ++k) {
+        const auto& b = r.cases[k].bands;  // output_names(): sinking, length, width, ...
+        out[idx[k]] = {b[0].std, b[1].std, b[2].std};
+      }
+    } catch (const ComputationError& e) {
+      std::cerr << "warning: no band for model " << m + 1 << " of " << plan.models.size()
+                << " (its std cells are empty): " << e.what() << "\n";
+    }
+  }
+  bar.finish();
+  return out;
+}
+
 // One process: OpenMP threads over every case.
 void run_local(const SweepArgs& a) {
   const Prepared p = prepare(a);
@@ -155,7 +198,9 @@ void run_local(const SweepArgs& a) {
   opt.progress = [&bar](std::size_t n) { bar.tick(n); };
   const studies::SweepResult res = studies::run_sweep(p.plan, opt);
   bar.finish();
-  write_file_atomically(p.spec.output, studies::sweep_csv(p.plan, res));
+  std::optional<std::vector<studies::SweepStd>> stds;
+  if (a.uncertainty) stds = sweep_bands(p.plan, res, a.threads);
+  write_file_atomically(p.spec.output, studies::sweep_csv(p.plan, res, stds ? &*stds : nullptr));
   Summary s;
   s.failed = res.failed;
   s.invalid = res.invalid;
@@ -282,8 +327,17 @@ void register_sweep(CLI::App& app) {
                 "start each case's contact solve from a fixed reference solution of its model "
                 "instead of cold (same contact sets, fewer iterations; still identical for any "
                 "thread count)");
+  cmd->add_flag("--uncertainty", a->uncertainty,
+                "add each case's standard deviation of sinking, length and width "
+                "(sinking_std_mm, length_std_mm, width_std_mm: the inputs' uncertainty "
+                "propagated per model, docs/uncertainty.md); one process only");
   cmd->callback([a, cmd] {
     a->output_given = cmd->count("--output") > 0;
+    if (mpi::launcher_world_size() > 1 && a->uncertainty) {
+      throw InputError({"--uncertainty", 0, ""},
+                       "the bands are computed in one process: run the sweep without mpirun, "
+                       "or without --uncertainty");
+    }
     if (mpi::launcher_world_size() > 1) {
 #ifdef MODALTYRE_WITH_MPI
       run_distributed(*a);

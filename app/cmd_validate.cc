@@ -1,7 +1,9 @@
 // modaltyre validate CONFIG MEASURED.csv [--set key=value]... [--json] [--plot FILE]
+//                    [--uncertainty [--uncertainty-method M] [--samples N]]
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli_support.h"
 #include "commands.h"
@@ -10,8 +12,10 @@
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/footprint_json.h"
+#include "modaltyre/report/uncertainty_json.h"
 #include "modaltyre/report/validation_json.h"
 #include "modaltyre/studies/validation.h"
+#include "validate_bands.h"
 
 namespace modaltyre::app {
 
@@ -28,9 +32,40 @@ struct ValidateArgs {
   std::vector<std::string> overrides;
   bool json = false;
   std::string plot;
+  bool uncertainty = false;
+  UncertaintyMethodArgs method;
 };
 
 using report::row_validity;
+
+// The rows with the model's band: measured (+- 2 sigma where stated) against predicted
+// +- 2 sigma, and whether the measurement lies outside the band (its noise added).
+void print_band_table(const studies::ValidationReport& rep, const ValidationBands& b) {
+  const auto& r = b.result;
+  std::cout << "\nuncertainty (" << r.method << ": " << r.check << "), value +- 2 sigma; "
+            << "'outside': the measured value lies outside the model's 95 % band widened by "
+               "its own stated noise\n";
+  std::cout << " row  load_N  observable   measured             predicted\n";
+  for (std::size_t i = 0; i < b.rows; ++i) {
+    const auto& row = rep.rows[i].measured;
+    for (const auto& o : band_observables()) {
+      const auto v = row.value(o.observable);
+      if (!v) continue;
+      const auto s = row.observed_std.find(o.observable);
+      const auto& band = r.cases[i].bands[o.output];
+      const std::string meas =
+          report::plus_minus(*v, s == row.observed_std.end() ? 0.0 : 2 * s->second, 2);
+      const std::string pred = report::plus_minus(band.value, 2 * band.std, 2);
+      const auto& off = b.outside[i];
+      const bool out = std::find(off.begin(), off.end(), o.observable) != off.end();
+      char line[200];
+      std::snprintf(line, sizeof line, " %3d  %6.0f  %-11s  %-19s  %-19s%s\n", row.row,
+                    row.conditions.load_N, o.observable, meas.c_str(), pred.c_str(),
+                    out ? "  outside" : "");
+      std::cout << line;
+    }
+  }
+}
 
 void print_table(const studies::ValidationReport& rep, const std::string& measured_path,
                  const std::vector<ConditionSetting>& settings) {
@@ -122,20 +157,28 @@ void warn_outside_validity(const studies::ValidationReport& rep) {
   }
 }
 
-void plot_validation(const studies::ValidationReport& rep, const std::string& path,
-                     const std::vector<ConditionSetting>& settings) {
+// The model's curve at the config's conditions and those stated with --set, as every row
+// (effects act as on the rows).
+std::vector<contact::OperatingConditions> validation_curve(
+    const studies::ValidationReport& rep, const std::vector<ConditionSetting>& settings) {
   double lo = 1e300, hi = 0;
   for (const auto& r : rep.rows)
     lo = std::min(lo, r.measured.conditions.load_N),
     hi = std::max(hi, r.measured.conditions.load_N);
-  // The model's curve at the config's conditions and those stated with --set, as every row
-  // (effects act as on the rows).
   std::vector<contact::OperatingConditions> curve;
   const int n = 24;
   for (int i = 0; i <= n; ++i) {
     curve.push_back(rep.model.config.default_conditions(0.8 * lo + (1.1 * hi - 0.8 * lo) * i / n));
     apply_condition_settings(settings, curve.back());
   }
+  return curve;
+}
+
+// With bands: the ends of the model's 95 % band at each row and the measured rows outside it
+// (their noise added) marked apart.
+void plot_validation(const studies::ValidationReport& rep, const std::string& path,
+                     const std::vector<ConditionSetting>& settings, const ValidationBands* bands) {
+  const auto curve = validation_curve(rep, settings);
   const std::string stated = settings.empty() ? "" : " (" + settings_text(settings) + ")";
   const auto res = contact::predict_all(rep.model, curve);
   // One panel per compared observable: the model's curve, the measured rows (calibration rows
@@ -159,11 +202,31 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
     }
     PlotSeries measured{"measured (prediction rows)", {}, {}, "points"};
     PlotSeries calibration{"measured (calibration rows)", {}, {}, "points"};
-    for (const auto& r : rep.rows) {
+    PlotSeries outside{"measured, outside the band", {}, {}, "points"};
+    // The band at the rows (its ends as points: between rows it was not computed, and the rows
+    // may stand at other conditions than the curve's).
+    PlotSeries band{"model 95 % band at the rows (ends)", {}, {}, "points"};
+    std::size_t q = 0;
+    for (const auto& b : band_observables()) {
+      if (o.name == std::string(b.observable)) q = b.output;
+    }
+    for (std::size_t i = 0; i < rep.rows.size(); ++i) {
+      const auto& r = rep.rows[i];
       auto& s = r.calibration ? calibration : measured;
       if (const auto v = r.measured.value(o.name)) {
         s.x.push_back(r.measured.conditions.load_N / 1000);
         s.y.push_back(*v);
+        if (bands) {
+          const auto& b = bands->result.cases[i].bands[q];
+          band.x.insert(band.x.end(), 2, s.x.back());
+          band.y.push_back(b.p025);
+          band.y.push_back(b.p975);
+        }
+        if (bands && std::find(bands->outside[i].begin(), bands->outside[i].end(), o.name) !=
+                         bands->outside[i].end()) {
+          outside.x.push_back(s.x.back());
+          outside.y.push_back(*v);
+        }
       }
     }
     if (measured.x.empty() && calibration.x.empty()) continue;  // not measured: not compared
@@ -173,6 +236,10 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
     panel.ylabel = o.ylabel;
     panel.series = {model, measured};
     if (!calibration.x.empty()) panel.series.push_back(calibration);
+    if (bands) {
+      panel.series.push_back(band);
+      if (!outside.x.empty()) panel.series.push_back(outside);
+    }
     fig.panels.push_back(std::move(panel));
   }
   fig.width_px = 600 * static_cast<int>(fig.panels.size());
@@ -201,7 +268,12 @@ void register_validate(CLI::App& app) {
                   "branch, surface, horizontal_force_N (e.g. --set hold_s=60)");
   cmd->add_flag("--json", a->json, "print JSON");
   cmd->add_option("--plot", a->plot,
-                  "draw sinking, length and (where measured) width versus load (.svg or .png)");
+                  "draw sinking, length and (where measured) width versus load (.svg or .png); "
+                  "with --uncertainty the model's 95 % band and the rows outside it");
+  cmd->add_flag("--uncertainty", a->uncertainty,
+                "the model's band at every row (the config's uncertain inputs and the calibrated "
+                "scalars' covariance; docs/uncertainty.md) and the measured values outside it");
+  add_uncertainty_method_options(cmd, a->method);
   cmd->callback([a, cmd] {
     // The config decides how the file is read (effects need every row's conditions).
     auto overrides = a->overrides;
@@ -216,13 +288,19 @@ void register_validate(CLI::App& app) {
     report::apply_to_measurements(settings, measured, a->measured);
     const auto rep = studies::validate_footprints(config, measured);
     warn_outside_validity(rep);
-    if (!a->plot.empty()) plot_validation(rep, a->plot, settings);
+    std::optional<ValidationBands> bands;
+    if (a->uncertainty) {
+      bands = validation_bands(rep, a->method.options());
+    }
+    if (!a->plot.empty()) plot_validation(rep, a->plot, settings, bands ? &*bands : nullptr);
     if (a->json) {
       auto j = report::validation_json(rep);
       j["conditions"] = settings_json(settings);
+      if (bands) add_validation_bands_json(j, *bands);
       print_json(j);
     } else {
       print_table(rep, a->measured, settings);
+      if (bands) print_band_table(rep, *bands);
     }
   });
 }

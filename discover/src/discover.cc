@@ -351,6 +351,12 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
       scores.push_back(s);
       ids.push_back(info.id);
     }
+    // The model's uncertainty at the current model's fit (model_uncertainty.h).
+    ModelUncertainty mu;
+    if (opt.model_uncertainty) {
+      mu = model_uncertainty(ev, current.fit.config, current.variant, current.fit);
+      rep.uncertainty_inputs = mu.names;
+    }
     std::vector<Stage> stages(ids.size());
     const int total = static_cast<int>(ids.size());
     int testable = 0;
@@ -389,9 +395,24 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
         cv_after.push_back(s.cv_after.at(kv.first));
         entries.push_back(measured[kv.first]);
       }
-      s.significant = s.failures == 0 && rule.names(s.delta_bic, cv_before, cv_after, entries,
+      const auto& r0 = current.fit.residuals;
+      const auto& r1 = stages[c].fit.residuals;
+      if (opt.model_uncertainty && r0.size() == r1.size()) {
+        const Eigen::VectorXd g =
+            Eigen::Map<const Eigen::VectorXd>(r0.data(), static_cast<Eigen::Index>(r0.size())) -
+            Eigen::Map<const Eigen::VectorXd>(r1.data(), static_cast<Eigen::Index>(r1.size()));
+        // The likelihood-ratio part of Delta BIC (model_fit.h: k ln N per parameter).
+        const double dk = static_cast<double>(stages[c].variant.parameters.size() -
+                                              current.variant.parameters.size());
+        const double lr = s.delta_bic + dk * std::log(static_cast<double>(r0.size()));
+        s.uncertainty_discount = uncertain_share(mu, g) * std::max(lr, 0.0);
+      }
+      const double evidence = s.delta_bic - s.uncertainty_discount;
+      s.significant = s.failures == 0 && rule.names(evidence, cv_before, cv_after, entries,
                                                     s.cv_rms_before, s.cv_rms_after);
-      if (s.significant && (best < 0 || s.delta_bic > scores[best].delta_bic)) best = c;
+      if (s.significant &&
+          (best < 0 || evidence > scores[best].delta_bic - scores[best].uncertainty_discount))
+        best = c;
     }
     std::stable_sort(scores.begin(), scores.end(),
                      [](const CandidateScore& a, const CandidateScore& b) {

@@ -9,6 +9,7 @@
 #include "ema_checks.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/ema/lsfd.h"
+#include "modaltyre/ema/lsfd_covariance.h"
 
 namespace modaltyre::ema {
 namespace {
@@ -216,12 +217,14 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
   const int nf = static_cast<int>(idx.size()), no = static_cast<int>(set.channels.size());
   std::vector<double> fb(nf);
   Eigen::MatrixXcd h(nf, no), hn(nf, no);
+  Eigen::VectorXd weight = Eigen::VectorXd::Ones(no);
   for (int i = 0; i < nf; ++i) fb[i] = set.freq_hz[idx[i]];
   for (int o = 0; o < no; ++o) {
     for (int i = 0; i < nf; ++i) h(i, o) = set.channels[o].values[idx[i]];
     const double rms = h.col(o).norm() / std::sqrt(double(nf));
     // Each FRF weighs the same in the pole estimation (radial and tangential differ in level).
     hn.col(o) = rms > 0 ? (h.col(o) / rms).eval() : h.col(o);
+    if (rms > 0) weight(o) = 1 / rms;
   }
   res.band_lo_hz = fb.front();
   res.band_hi_hz = fb.back();
@@ -255,6 +258,10 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
 
   const LsfdFit fit = lsfd(fb, h, set.type, poles);
   res.synthesis_error = fit.relative_error;
+  // The variance of the output-error estimate (docs/uncertainty.md section 5); the LSCF poles
+  // alone (no refinement) have another estimator's, not computed.
+  std::optional<LsfdCovariance> cov;
+  if (options.refine && !poles.empty()) cov = lsfd_covariance(fb, h, set.type, poles, weight);
   int driving_failures = 0;
   for (std::size_t k = 0; k < poles.size(); ++k) {
     const double w = std::abs(poles[k]);
@@ -276,7 +283,8 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
     Eigen::VectorXcd rot = a * std::polar(1.0, -theta);
     m.complexity = rot.imag().norm() / an;
     Eigen::VectorXd real = rot.real();
-    double scale = 1;
+    double scale = 1, exponent = 0.5;
+    int scale_channel = lay.driving;
     if (res.scaled) {
       // A physical mode's driving-point constant phi_ref^2 is positive (phase near 0).
       if (a(lay.driving).real() <= 0) {
@@ -301,6 +309,8 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
       Eigen::Index at;
       real.cwiseAbs().maxCoeff(&at);
       scale = 1.0 / real(at);
+      scale_channel = static_cast<int>(at);
+      exponent = 1;
     }
     // A DOF no FRF measured stays NaN: kept out of the shape, never 0 (issue 38).
     m.radial.assign(res.points.size(), std::numeric_limits<double>::quiet_NaN());
@@ -308,6 +318,19 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options) {
     for (int o = 0; o < no; ++o) {
       const std::size_t i = point_index(lay.moving[o].point);
       (lay.moving[o].dir == Direction::radial ? m.radial : m.tangential)[i] = real(o) * scale;
+    }
+    if (cov) {  // phi_o = q_o q_r^-e (lsfd_covariance.h), q = real
+      const int mp = static_cast<int>(poles.size()), kk = static_cast<int>(k);
+      m.freq_std_hz = m.freq_hz * std::sqrt(cov->pole_cov(kk, kk));
+      m.damping_std = m.damping_ratio * std::sqrt(cov->pole_cov(mp + kk, mp + kk));
+      const cd z = cd(0, 2 * poles[k].imag()) * std::polar(1.0, -theta);
+      const Eigen::VectorXd sd = real_shape_std(*cov, kk, z, real, scale_channel, exponent);
+      m.radial_std.assign(res.points.size(), std::numeric_limits<double>::quiet_NaN());
+      m.tangential_std = m.radial_std;
+      for (int o = 0; o < no; ++o) {
+        const std::size_t i = point_index(lay.moving[o].point);
+        (lay.moving[o].dir == Direction::radial ? m.radial_std : m.tangential_std)[i] = sd(o);
+      }
     }
     res.modes.push_back(m);
   }
@@ -340,7 +363,11 @@ std::string hammer_csv(const EmaResult& r) {
         "# shapes UNSCALED (largest value 1, not kg^-1/2): no driving-point FRF; a footprint "
         "from them has no physical scale\n";
   }
+  // Standard deviations when every mode has them (the refinement on).
+  bool with_std = !r.modes.empty();
+  for (const auto& m : r.modes) with_std = with_std && std::isfinite(m.freq_std_hz);
   out += "mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential";
+  if (with_std) out += ",freq_std_hz,damping_std,radial_std,tangential_std";
   out += r.scaled ? "\n" : ",scaling\n";
   const auto value = [](double v) {
     if (std::isnan(v)) return std::string();  // not measured
@@ -354,8 +381,12 @@ std::string hammer_csv(const EmaResult& r) {
     for (std::size_t i = 0; i < r.points.size(); ++i) {
       std::snprintf(line, sizeof line, "%zu,%.6f,%.6g,%d,%.6f,", k + 1, m.freq_hz, m.damping_ratio,
                     r.points[i], r.angle_deg[i]);
-      out += line + value(m.radial[i]) + "," + value(m.tangential[i]) +
-             (r.scaled ? "\n" : ",unscaled\n");
+      out += line + value(m.radial[i]) + "," + value(m.tangential[i]);
+      if (with_std) {
+        out += "," + value(m.freq_std_hz) + "," + value(m.damping_std) + "," +
+               value(m.radial_std[i]) + "," + value(m.tangential_std[i]);
+      }
+      out += r.scaled ? "\n" : ",unscaled\n";
     }
   }
   return out;

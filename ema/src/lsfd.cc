@@ -4,45 +4,17 @@
 #include <unsupported/Eigen/LevenbergMarquardt>
 #include <unsupported/Eigen/NumericalDiff>
 
+#include "lsfd_basis.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::ema {
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
 using cd = std::complex<double>;
-constexpr int kResiduals = 4;
-
-// Columns 2k and 2k+1: the terms of Re R_k and Im R_k; then the residuals UR, LR and their
-// next terms (j w)^2 UR2 and LR2 / (j w)^4; all times (j w)^p.
-Eigen::MatrixXcd basis(const std::vector<double>& freq_hz, FrfType type,
-                       const std::vector<cd>& poles) {
-  const int nf = static_cast<int>(freq_hz.size());
-  const int m = static_cast<int>(poles.size());
-  const int p = static_cast<int>(type);
-  Eigen::MatrixXcd a(nf, 2 * m + kResiduals);
-  for (int f = 0; f < nf; ++f) {
-    const cd jw(0.0, kTwoPi * freq_hz[f]);
-    const cd gain = std::pow(jw, p);
-    for (int k = 0; k < m; ++k) {
-      const cd u = 1.0 / (jw - poles[k]), v = 1.0 / (jw - std::conj(poles[k]));
-      a(f, 2 * k) = gain * (u + v);
-      a(f, 2 * k + 1) = gain * cd(0, 1) * (u - v);
-    }
-    a(f, 2 * m) = gain;
-    a(f, 2 * m + 1) = gain / (jw * jw);
-    a(f, 2 * m + 2) = gain * jw * jw;
-    a(f, 2 * m + 3) = gain / (jw * jw * jw * jw);
-  }
-  return a;
-}
-
-Eigen::MatrixXd stack(const Eigen::MatrixXcd& z) {
-  Eigen::MatrixXd s(2 * z.rows(), z.cols());
-  s.topRows(z.rows()) = z.real();
-  s.bottomRows(z.rows()) = z.imag();
-  return s;
-}
+using detail::basis;
+using detail::kResiduals;
+using detail::stack;
+constexpr double kTwoPi = detail::kTwoPi;
 
 // Least-squares coefficients of `y` (stacked) on `a`, columns scaled to unit norm first (the
 // residual terms and the resonant terms differ by orders of magnitude).

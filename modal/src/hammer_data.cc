@@ -101,9 +101,11 @@ HammerData read_hammer_csv(const std::string& path) {
   CsvSchema schema;
   schema.required = {"mode",      "freq_hz", "damping_ratio", "point",
                      "angle_deg", "radial",  "tangential"};
-  schema.optional = {"scaling"};
+  schema.optional = {"scaling", "freq_std_hz", "damping_std", "radial_std", "tangential_std"};
   schema.text = {"scaling"};
-  schema.may_be_empty = {"radial", "tangential"};
+  // A std cell is empty where `ema` measured no FRF (the value's cell is empty too) or where a
+  // value was typed by hand: read as 0, no estimate.
+  schema.may_be_empty = {"radial", "tangential", "radial_std", "tangential_std"};
   // The hammer test's FRFs (a UFF file starts with "-1"; the long FRF CSV with response_point)
   // are the input of `ema`, not of the model (issue 38: "unknown column -1").
   const auto header = read_csv_header(path);
@@ -119,6 +121,20 @@ HammerData read_hammer_csv(const std::string& path) {
 
   HammerData data;
   data.path = path;
+  // The standard deviations `ema` writes (docs/uncertainty.md section 5): all four or none.
+  const char* std_cols[] = {"freq_std_hz", "damping_std", "radial_std", "tangential_std"};
+  int std_count = 0;
+  for (const char* col : std_cols) std_count += t.has(col) ? 1 : 0;
+  if (std_count != 0 && std_count != 4) {
+    std::string have;
+    for (const char* col : std_cols) have += t.has(col) ? std::string(" ") + col : "";
+    throw InputError({path, 1, ""},
+                     "the standard-deviation columns come as four "
+                     "(freq_std_hz, damping_std, radial_std, tangential_std); "
+                     "the header has only" +
+                         have);
+  }
+  data.has_std = std_count == 4;
   std::map<int, std::size_t> index;  // mode id -> position in data.modes
   PointLines seen_point;
   for (std::size_t r = 0; r < t.rows(); ++r) {
@@ -153,6 +169,27 @@ HammerData read_hammer_csv(const std::string& path) {
       data.modes.push_back(m);
     }
     MeasuredMode& m = data.modes[it->second];
+    if (data.has_std) {
+      const auto cell = [&](const char* col) { return t.missing(r, col) ? 0.0 : t.number(r, col); };
+      for (const char* col : std_cols) {
+        const double v = cell(col);
+        if (!(v >= 0 && v <= (col[0] == 'f' ? kMaxFrequency_Hz : kMaxShape))) {
+          throw InputError({path, line, col}, "a standard deviation must be >= 0 and finite");
+        }
+      }
+      if (inserted) {
+        m.freq_std_hz = t.number(r, "freq_std_hz");
+        m.damping_std = t.number(r, "damping_std");
+      } else if (m.freq_std_hz != t.number(r, "freq_std_hz") ||
+                 m.damping_std != t.number(r, "damping_std")) {
+        throw InputError({path, line, "freq_std_hz"},
+                         "mode " + std::to_string(id) +
+                             " has a different freq_std_hz or damping_std than on line " +
+                             std::to_string(m.first_line));
+      }
+      m.radial_std.push_back(cell("radial_std"));
+      m.tangential_std.push_back(cell("tangential_std"));
+    }
     if (std::abs(m.freq_hz - f) > 1e-9 * f || std::abs(m.damping_ratio - z) > 1e-12) {
       throw InputError({path, line, "freq_hz"},
                        "mode " + std::to_string(id) +
@@ -222,6 +259,10 @@ HammerData read_hammer_csv(const std::string& path) {
       sorted.angle_rad[i] = m.angle_rad[order[i]];
       sorted.radial[i] = m.radial[order[i]];
       sorted.tangential[i] = m.tangential[order[i]];
+      if (data.has_std) {
+        sorted.radial_std[i] = m.radial_std[order[i]];
+        sorted.tangential_std[i] = m.tangential_std[order[i]];
+      }
     }
     const double spacing = 2 * kPi / n;
     const std::string missing = missing_angles(sorted.angle_rad, seen_point, m.id);

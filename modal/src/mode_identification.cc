@@ -52,8 +52,10 @@ void set_shape_noise(IdentifiedMode& id, int N) {
     const double residual = std::max(h.energy - h.order_energy(k), 0.0);
     return std::sqrt(residual / (N - p));
   };
-  id.radial_noise = noise(id.radial);
-  id.tangential_noise = noise(id.tangential);
+  // Both estimate the same noise; the residual also holds what is not one ring harmonic, the
+  // EMA's covariance the FRFs' noise only: the larger is kept (docs/uncertainty.md section 5).
+  id.radial_noise = std::max(noise(id.radial), id.radial_noise_stated);
+  id.tangential_noise = std::max(noise(id.tangential), id.tangential_noise_stated);
   id.c_radial_std = id.radial_noise / std::sqrt(norm2);
   id.c_tangential_std = id.tangential_noise / std::sqrt(norm2);
   // |c|^2 = A^2 + B^2: var = 4 |c|^2 var(A) for two components (4 A^2 var(A) for one).
@@ -97,6 +99,10 @@ ModeIdentification identify_modes(const HammerData& data, const IdentificationOp
     }
     id.c_radial = id.radial.coefficient(id.apparent_order);
     id.c_tangential = id.tangential.coefficient(id.apparent_order);
+    id.freq_std_hz = m.freq_std_hz;
+    id.damping_std = m.damping_std;
+    id.radial_noise_stated = rms(m.radial_std);
+    id.tangential_noise_stated = rms(m.tangential_std);
     set_shape_noise(id, N);
     out.modes.push_back(std::move(id));
   }

@@ -69,6 +69,7 @@ nlohmann::json candidates_json(const std::vector<discover::CandidateScore>& cs, 
     if (with_limits) put_limit(c, j);
     if (c.testable) {
       j["delta_bic"] = round_sig(c.delta_bic, 6);
+      j["uncertainty_discount"] = round_sig(c.uncertainty_discount, 6);
       j["cv_rms_before"] = round_sig(c.cv_rms_before, 6);
       j["cv_rms_after"] = round_sig(c.cv_rms_after, 6);
       j["rms_after"] = round_sig(c.rms_after, 6);
@@ -147,6 +148,7 @@ nlohmann::json discover_json(const discover::DiscoverReport& r, const std::strin
       {"evaluations", r.evaluations},
       {"footprints", r.footprints},
       {"method", r.method},
+      {"uncertainty_inputs", r.uncertainty_inputs},
       {"conclusion", r.conclusion}};
   if (!r.more_rows.effect.empty()) j["more_rows"] = more_rows_json(r.more_rows);
   return j;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "modaltyre/core/number_format.h"
+#include "modaltyre/uncertainty/order_probability.h"
 
 namespace modaltyre::report {
 
@@ -40,9 +41,23 @@ nlohmann::json modes_json(const modal::ModeIdentification& id) {
         {"coefficient_std", round_sig(m.c_radial_std, 6)},
         {"tangential_coefficient_std", round_sig(m.c_tangential_std, 6)},
         {"amplitude2_rel_std", round_sig(m.amplitude2_rel_std, 6)}};
+    if (m.freq_std_hz > 0 || m.radial_noise_stated > 0) {  // the hammer CSV's (ema)
+      j["freq_std_hz"] = round_sig(m.freq_std_hz, 6);
+      j["damping_std"] = round_sig(m.damping_std, 6);
+      j["radial_noise_stated"] = round_sig(m.radial_noise_stated, 6);
+      j["tangential_noise_stated"] = round_sig(m.tangential_noise_stated, 6);
+    }
     if (m.aliased) {
       j["alias_candidates"] = m.alias_candidates;
       j["likely_order"] = m.likely_order >= 0 ? nlohmann::json(m.likely_order) : nlohmann::json();
+      // docs/uncertainty.md section 6: P(order) from the dispersion fit with each candidate.
+      nlohmann::json chances = nlohmann::json::array();
+      for (const auto& c : uncertainty::alias_order_probabilities(id, m)) {
+        chances.push_back({{"order", c.order},
+                           {"probability", round_sig(c.probability, 4)},
+                           {"chi2", round_sig(c.chi2, 4)}});
+      }
+      j["order_probabilities"] = chances;
     }
     modes.push_back(j);
   }

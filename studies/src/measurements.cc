@@ -35,6 +35,11 @@ double condition_value(const OperatingConditions& c, const std::string& name) {
   return contact::condition_value(c, info->id);
 }
 
+std::string std_column(const std::string& observable) {
+  const auto unit = observable.rfind('_');
+  return observable.substr(0, unit) + "_std" + observable.substr(unit);
+}
+
 MeasurementSet read_measurements(const std::string& path, const TyreConfig& defaults) {
   CsvSchema schema;
   schema.required = {"load_N"};
@@ -52,6 +57,7 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
     schema.optional.push_back(c);
   for (const char* c : {"valid", "status", "message"}) schema.text.push_back(c);
   for (const auto& o : observable_names()) schema.optional.push_back(o);
+  for (const auto& o : observable_names()) schema.optional.push_back(std_column(o));
   // A failed sweep row has empty number cells: the status check below names it before they
   // are read.
   schema.may_be_empty = {"message", "vertical_stiffness_N_mm", "peak_pressure_kPa", "iterations",
@@ -59,6 +65,7 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   // A measurement left out of a row (not measured, or lost) is an empty cell or NA: that row
   // then compares the observables it has (issue 38).
   for (const auto& o : observable_names()) schema.may_be_empty.push_back(o);
+  for (const auto& o : observable_names()) schema.may_be_empty.push_back(std_column(o));
   schema.missing_words = {"NA", "N/A"};  // R, spreadsheets; "nan" stays refused as a number
   // A sweep's parameter columns are dotted config keys, ignored here.
   schema.accept_text_column = [](const std::string& c) { return c.find('.') != std::string::npos; };
@@ -74,7 +81,15 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   set.loads_only = true;
   for (const auto& c : t.columns()) {
     set.loads_only = set.loads_only &&
-                     (c == "load_N" || c == "sinking_mm" || c == "length_mm" || c == "width_mm");
+                     (c == "load_N" || c == "sinking_mm" || c == "length_mm" || c == "width_mm" ||
+                      c == "sinking_std_mm" || c == "length_std_mm" || c == "width_std_mm");
+  }
+  for (const auto& o : observable_names()) {
+    if (t.has(std_column(o)) && !t.has(o)) {
+      throw InputError(
+          {path, 1, std_column(o)},
+          "a standard deviation without its measurement: the file has no " + o + " column");
+    }
   }
   if (set.observables.empty()) {
     throw InputError({path, 1, "sinking_mm"},
@@ -119,6 +134,14 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
       if (o == "rolling_resistance_N" && !(std::abs(v) <= 1e7))
         throw InputError(at(o), "must be in [-1e7, 1e7] N");
       r.observed[o] = v;
+      const std::string sc = std_column(o);
+      if (!t.has(sc) || t.missing(i, sc)) continue;  // its noise not stated
+      const double sd = t.number(i, sc);
+      if (!(sd >= 0 && sd <= std::max(std::abs(v), 1.0) * 1e3)) {
+        throw InputError(at(sc),
+                         "a standard deviation must be >= 0 (and not 1000 times the value)");
+      }
+      r.observed_std[o] = sd;
     }
     if (r.observed.empty()) {
       throw InputError(at(set.observables.front()),

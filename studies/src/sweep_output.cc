@@ -1,5 +1,7 @@
 #include "modaltyre/studies/sweep_output.h"
 
+#include <cmath>
+
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
 
@@ -23,6 +25,11 @@ const std::vector<std::string>& sweep_observable_columns() {
   return cols;
 }
 
+const std::vector<std::string>& sweep_std_columns() {
+  static const std::vector<std::string> cols = {"sinking_std_mm", "length_std_mm", "width_std_mm"};
+  return cols;
+}
+
 std::string sweep_number(double v) { return number_text(v); }
 
 std::string csv_field(const std::string& text) {
@@ -40,7 +47,7 @@ std::string csv_field(const std::string& text) {
   return q;
 }
 
-std::string sweep_csv_header(const SweepPlan& plan) {
+std::string sweep_csv_header(const SweepPlan& plan, bool with_std) {
   std::string out;
   bool first = true;
   for (const auto& c : plan.columns) {
@@ -48,11 +55,15 @@ std::string sweep_csv_header(const SweepPlan& plan) {
     first = false;
   }
   for (const auto& c : sweep_observable_columns()) out += "," + c;
+  if (with_std) {
+    for (const auto& c : sweep_std_columns()) out += "," + c;
+  }
   out += "\n";
   return out;
 }
 
-std::string sweep_csv_row(const SweepPlan& plan, const SweepRow& r, std::size_t i) {
+std::string sweep_csv_row(const SweepPlan& plan, const SweepRow& r, std::size_t i,
+                          const SweepStd* std) {
   std::string out;
   bool first = true;
   for (const auto& cell : plan.cells(i)) {
@@ -66,18 +77,26 @@ std::string sweep_csv_row(const SweepPlan& plan, const SweepRow& r, std::size_t 
       out += "," + sweep_number(v);
     }
     out += "," + std::to_string(r.iterations) + ",ok," + csv_field(r.message) +
-           (r.valid ? ",true\n" : ",false\n");
+           (r.valid ? ",true" : ",false");
   } else {
-    out += ",,,,,,,,failed," + csv_field(r.message) + ",\n";
+    out += ",,,,,,,,failed," + csv_field(r.message) + ",";
   }
+  if (std) {
+    for (double v : *std) out += "," + (r.ok && std::isfinite(v) ? sweep_number(v) : "");
+  }
+  out += "\n";
   return out;
 }
 
-std::string sweep_csv(const SweepPlan& plan, const SweepResult& result) {
+std::string sweep_csv(const SweepPlan& plan, const SweepResult& result,
+                      const std::vector<SweepStd>* stds) {
   MODALTYRE_CHECK(result.rows.size() == plan.cases.size(), "sweep rows and cases disagree");
-  std::string out = sweep_csv_header(plan);
+  MODALTYRE_CHECK(!stds || stds->size() == plan.cases.size(), "sweep stds and cases disagree");
+  std::string out = sweep_csv_header(plan, stds != nullptr);
   out.reserve(plan.cases.size() * 96);
-  for (std::size_t i = 0; i < plan.cases.size(); ++i) out += sweep_csv_row(plan, result.rows[i], i);
+  for (std::size_t i = 0; i < plan.cases.size(); ++i) {
+    out += sweep_csv_row(plan, result.rows[i], i, stds ? &(*stds)[i] : nullptr);
+  }
   return out;
 }
 

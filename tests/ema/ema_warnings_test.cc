@@ -127,17 +127,20 @@ TEST(EmaUnsure, WrongFrfTypeIsNamedWithTheTypeTheDataFit) {
 }
 
 // --unscaled shapes carry a marker column that the hammer reader reads; a mass-normalised file
-// is byte-identical to the one before the marker existed (no column).
+// has no marker column. Both carry the standard deviations (issue 35), which the reader reads.
 TEST(EmaUnsure, UnscaledShapesAreMarkedForTheHammerReader) {
   SynthOptions so;
   so.noise = 0.001;
   FrfSet set = modaltyre_test::synthesise(modaltyre_test::ring_model(), so);
   EmaOptions o = band(60, 330);
   const std::string scaled = hammer_csv(run_ema(set, o));
-  EXPECT_EQ(scaled.rfind("mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential\n", 0), 0u);
+  EXPECT_EQ(scaled.rfind("mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential,"
+                         "freq_std_hz,damping_std,radial_std,tangential_std\n",
+                         0),
+            0u);
   o.unscaled = true;
   const std::string unscaled = hammer_csv(run_ema(set, o));
-  EXPECT_NE(unscaled.find("radial,tangential,scaling\n"), std::string::npos);
+  EXPECT_NE(unscaled.find("radial_std,tangential_std,scaling\n"), std::string::npos);
   EXPECT_NE(unscaled.find(",unscaled\n"), std::string::npos);
   const auto dir = std::filesystem::temp_directory_path();
   const std::string pid = std::to_string(::getpid());
@@ -147,6 +150,8 @@ TEST(EmaUnsure, UnscaledShapesAreMarkedForTheHammerReader) {
   std::ofstream(p2) << unscaled;
   EXPECT_FALSE(modal::read_hammer_csv(p1.string()).unscaled);
   EXPECT_TRUE(modal::read_hammer_csv(p2.string()).unscaled);
+  EXPECT_TRUE(modal::read_hammer_csv(p1.string()).has_std);
+  EXPECT_TRUE(modal::read_hammer_csv(p2.string()).has_std);
   std::filesystem::remove(p1);
   std::filesystem::remove(p2);
 }

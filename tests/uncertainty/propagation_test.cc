@@ -12,18 +12,17 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/modal/hammer_data.h"
+#include "planted_ring.h"
 
 namespace modaltyre::uncertainty {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kTwoPi = 6.28318530717958647692;
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 // The tolerance for the reported standard deviation against the replicates' spread.
 constexpr double kStdFactor = 1.5;
@@ -31,32 +30,12 @@ constexpr double kStdFactor = 1.5;
 constexpr int kReplicates = 30;
 constexpr double kMinCoverage = 0.8;
 
-// A planted ring on 12 points (data/README's recipe: radial a cos k(theta - psi), tangential
-// (a/k) sin, a^2 = 1 / (pi mu R), order 0 1 / (2 pi mu R)), orders 0-5, mu 2.5 kg/m, R 0.2948 m,
-// frequencies of a ring with foundation and tension; Gaussian noise sigma on every value.
+// The planted 12-point ring (planted_ring.h) with shape noise sigma.
 std::string hammer_csv(double sigma, unsigned seed) {
-  const double mu = 2.5, R = 0.2948;
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> noise(0.0, sigma);
-  std::ostringstream s;
-  s << "mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential\n";
-  const int orders[] = {1, 0, 2, 3, 4, 5};
-  for (int i = 0; i < 6; ++i) {
-    const int k = orders[i];
-    const double w2 = 1.9e6 / mu + 4.3e4 * k * k + 90.0 * std::pow(k, 4);
-    const double f = std::sqrt(w2) / kTwoPi + (k == 0 ? 5.0 : 0.0);
-    const double a = std::sqrt(1 / ((k == 0 ? 2 : 1) * M_PI * mu * R));
-    const double psi = 0.3 * i;
-    for (int p = 0; p < 12; ++p) {
-      const double th = kTwoPi * p / 12;
-      const double r = a * std::cos(k * (th - psi)) + (sigma > 0 ? noise(rng) : 0.0);
-      const double t =
-          (k > 0 ? a / k * std::sin(k * (th - psi)) : 0.0) + (sigma > 0 ? noise(rng) : 0.0);
-      s << i + 1 << "," << f << ",0.03," << p + 1 << "," << 30.0 * p << "," << r << "," << t
-        << "\n";
-    }
-  }
-  return s.str();
+  modaltyre_test::PlantedRing o;
+  o.sigma = sigma;
+  o.seed = seed;
+  return modaltyre_test::planted_ring_csv(o);
 }
 
 class Propagation : public ::testing::Test {

@@ -1,7 +1,11 @@
 #include "modaltyre/uncertainty/inputs.h"
 
+#include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
+#include "modaltyre/contact/parameter_spec.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::uncertainty {
@@ -17,21 +21,87 @@ std::vector<UncertainInput> collect_inputs(const contact::TyreConfig& config,
         m.kind == modal::ModeKind::rotation || (m.kind == modal::ModeKind::radial && !m.aliased);
     const std::string label = "mode " + std::to_string(m.id);
     if (shapes_scale && used && m.amplitude2_rel_std > 0) {
-      out.push_back({InputKind::mode_amplitude, int(i), label + " amplitude", m.amplitude2_rel_std,
-                     "hammer shapes' residual (one-harmonic fit)"});
+      const bool from_ema =
+          std::max(m.radial_noise_stated, m.tangential_noise_stated) > 0 &&
+          (m.kind == modal::ModeKind::rotation ? m.tangential_noise == m.tangential_noise_stated
+                                               : m.radial_noise == m.radial_noise_stated);
+      out.push_back({InputKind::mode_amplitude,
+                     int(i),
+                     label + " amplitude",
+                     m.amplitude2_rel_std,
+                     from_ema ? "hammer CSV radial_std / tangential_std (ema)"
+                              : "hammer shapes' residual (one-harmonic fit)",
+                     {},
+                     {}});
     }
-    if (u.frequency_rel_std > 0 && (used || !shapes_scale)) {
-      out.push_back({InputKind::mode_frequency, int(i), label + " frequency", u.frequency_rel_std,
-                     "modal.frequency_std_percent"});
+    // The measured frequency's own scatter (ema's freq_std_hz) and a stated one (temperature,
+    // preload, test to test) are independent: their variances add.
+    const double f_rel = m.freq_hz > 0 ? m.freq_std_hz / m.freq_hz : 0.0;
+    const double f_std = std::hypot(f_rel, u.frequency_rel_std);
+    if (f_std > 0 && (used || !shapes_scale)) {
+      const std::string source =
+          f_rel > 0 ? (u.frequency_rel_std > 0
+                           ? "hammer CSV freq_std_hz (ema) and modal.frequency_std_percent"
+                           : "hammer CSV freq_std_hz (ema)")
+                    : "modal.frequency_std_percent";
+      out.push_back(
+          {InputKind::mode_frequency, int(i), label + " frequency", f_std, source, {}, {}});
     }
   }
   if (u.tread_modulus_rel_std > 0) {
-    out.push_back({InputKind::tread_modulus, -1, "tread modulus", u.tread_modulus_rel_std,
-                   "tread.modulus_std_percent"});
+    out.push_back({InputKind::tread_modulus,
+                   -1,
+                   "tread modulus",
+                   u.tread_modulus_rel_std,
+                   "tread.modulus_std_percent",
+                   {},
+                   {}});
   }
   if (u.belt_width_rel_std > 0 && !shapes_scale) {
-    out.push_back({InputKind::belt_width, -1, "belt width (modal mass)", u.belt_width_rel_std,
-                   "modal.belt_width_std_percent"});
+    out.push_back({InputKind::belt_width,
+                   -1,
+                   "belt width (modal mass)",
+                   u.belt_width_rel_std,
+                   "modal.belt_width_std_percent",
+                   {},
+                   {}});
+  }
+  return out;
+}
+
+std::vector<UncertainInput> calibration_inputs(
+    const std::vector<std::string>& keys, const std::vector<double>& values,
+    const std::vector<double>& std_errors, const std::vector<std::vector<double>>& correlation) {
+  const auto n = static_cast<Eigen::Index>(keys.size());
+  if (n == 0 || std_errors.size() != keys.size() || values.size() != keys.size()) return {};
+  Eigen::MatrixXd cov(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const double corr = i == j ? 1.0 : correlation.at(i).at(j);
+      cov(i, j) = std_errors[i] / values[i] * std_errors[j] / values[j] * corr;
+    }
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(cov);
+  std::vector<UncertainInput> out;
+  for (Eigen::Index d = n - 1; d >= 0; --d) {  // largest variance first
+    const double var = eig.eigenvalues()(d);
+    if (!(var > 0) || !std::isfinite(var)) continue;
+    UncertainInput in;
+    in.kind = InputKind::calibration;
+    in.rel_std = std::sqrt(var);
+    in.keys = keys;
+    std::string along;
+    for (Eigen::Index k = 0; k < n; ++k) {
+      in.direction.push_back(eig.eigenvectors()(k, d));
+      char b[96];
+      std::snprintf(b, sizeof b, "%s%+.2f %s", k ? " " : "", eig.eigenvectors()(k, d),
+                    keys[k].c_str());
+      along += b;
+    }
+    in.name = n == 1 ? keys[0] + " (calibrated)"
+                     : "calibration direction " + std::to_string(n - d) + " (" + along + ")";
+    in.source = "validate's calibration (Jacobian at the fit, residual variance)";
+    out.push_back(std::move(in));
   }
   return out;
 }
@@ -59,6 +129,13 @@ void apply(const UncertainInput& input, double x, contact::TyreConfig& config,
       break;
     case InputKind::belt_width:
       config.carcass.belt_width_m *= 1 + x;
+      break;
+    case InputKind::calibration:
+      for (std::size_t k = 0; k < input.keys.size(); ++k) {
+        const contact::ParameterSpec* p = contact::find_parameter(input.keys[k]);
+        MODALTYRE_CHECK(p != nullptr, "calibration input: unknown key " + input.keys[k]);
+        p->set(config, p->get(config) * std::exp(x * input.direction.at(k)));
+      }
       break;
   }
 }

@@ -82,7 +82,8 @@ PropagationResult propagate(const contact::TyreConfig& config,
                             const std::vector<contact::OperatingConditions>& cases,
                             const PropagationOptions& o) {
   o.validate();
-  const std::vector<UncertainInput> inputs = collect_inputs(config, modes);
+  std::vector<UncertainInput> inputs = collect_inputs(config, modes);
+  inputs.insert(inputs.end(), o.extra_inputs.begin(), o.extra_inputs.end());
   const std::size_t n = inputs.size(), nc = cases.size(), no = output_names().size();
   PropagationResult r;
   const Outputs nominal = evaluate(config, modes, cases, "the nominal inputs");
@@ -129,9 +130,11 @@ PropagationResult propagate(const contact::TyreConfig& config,
   for (std::size_t j = 0; j < n; ++j) {
     InputEffect e;
     e.input = inputs[j];
+    e.sensitivity.assign(nc, std::vector<double>(no, 0.0));
     for (std::size_t c = 0; c < nc; ++c) {
       for (std::size_t q = 0; q < no; ++q) {
         const double d1 = 0.5 * (plus[j][c][q] - minus[j][c][q]);
+        e.sensitivity[c][q] = d1;
         const bool gridded = q == kPeakOutput;  // a maximum over cells: piecewise, not curved
         const double d2 = 0.5 * (plus[j][c][q] + minus[j][c][q] - 2 * nominal[c][q]);
         // A second difference below the outputs' resolution is not curvature that moves a

@@ -31,6 +31,7 @@
 #include "modaltyre/discover/detection_limit.h"
 #include "modaltyre/discover/large_fit.h"
 #include "modaltyre/discover/model_fit.h"
+#include "modaltyre/discover/model_uncertainty.h"
 #include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::discover {
@@ -46,6 +47,10 @@ struct DiscoverOptions {
   /// name in 50 noise-only sets of 24, 96 and 384 rows, and power that grows with the rows.
   double cv_gain_z = 2;
   int max_effects = 2;
+  /// Take the model's own uncertainty (the config's uncertain inputs, propagated) beside the
+  /// measurement noise: each candidate's Delta BIC loses the share of its evidence those inputs
+  /// could have produced (model_uncertainty.h) before the naming rule. Off: as before.
+  bool model_uncertainty = false;
   /// After an effect is named, search for another only if a residual still correlates with a
   /// condition at least this strongly.
   double structure_correlation = 0.5;
@@ -83,6 +88,9 @@ struct CandidateScore {
   std::string reason;  ///< why it cannot be tested on these data, when !testable
   std::map<std::string, double> parameters;  ///< fitted, config keys (effect's and baseline's)
   double delta_bic = 0;
+  /// With DiscoverOptions::model_uncertainty: the evidence the model's uncertain inputs could
+  /// have produced, taken off delta_bic before the naming rule (model_uncertainty.h).
+  double uncertainty_discount = 0;
   double cv_rms_before = 0, cv_rms_after = 0;         ///< all observables pooled, relative
   std::map<std::string, double> cv_before, cv_after;  ///< per observable
   std::map<std::string, double> standard_errors;      ///< of the fitted parameters
@@ -142,6 +150,9 @@ struct DiscoverReport {
   long footprints = 0;   ///< footprints predicted (one per row and evaluation)
   /// "exact" or the approximations used on many rows (large_fit.h), in words.
   std::string method;
+  /// With DiscoverOptions::model_uncertainty: the model's uncertain inputs of the last round
+  /// (empty: none, the discount is 0).
+  std::vector<std::string> uncertainty_inputs;
 };
 
 /// Rows discover accepts at most (InputError above: a 1000-row matrix costs ~20 s of CPU time,

@@ -7,6 +7,7 @@
 // roving-hammer test or the fixed hammer point of a roving-accelerometer test; by reciprocity
 // both give a row of the FRF matrix); the other DOFs are the measured points. Mass
 // normalisation needs the driving-point FRF, whose response and reference are that DOF.
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,6 +45,11 @@ struct EmaMode {
   double peak_receptance = 0;
   /// Per point [kg^-1/2] (unscaled: largest = 1); NaN where no FRF measured the DOF.
   std::vector<double> radial, tangential;
+  /// Standard deviations from the FRFs' noise (lsfd_covariance.h, docs/uncertainty.md section
+  /// 5); NaN without the output-error refinement. The shapes' per point, NaN where unmeasured.
+  double freq_std_hz = std::numeric_limits<double>::quiet_NaN();
+  double damping_std = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> radial_std, tangential_std;
 };
 
 struct DroppedMode {
@@ -80,8 +86,10 @@ EmaResult run_ema(const FrfSet& set, const EmaOptions& options);
 
 /// The hammer CSV of `fit-modes` and the tyre configs:
 /// mode,freq_hz,damping_ratio,point,angle_deg,radial,tangential; a DOF no FRF measured is an
-/// empty cell. Unscaled shapes carry a last column `scaling` = `unscaled` (and a comment line
-/// saying so), which modal::read_hammer_csv reads as HammerData::unscaled.
+/// empty cell. With standard deviations (the refinement on) the optional columns
+/// freq_std_hz,damping_std,radial_std,tangential_std follow. Unscaled shapes carry a last column
+/// `scaling` = `unscaled` (and a comment line saying so), which modal::read_hammer_csv reads as
+/// HammerData::unscaled.
 std::string hammer_csv(const EmaResult& result);
 
 /// Resolves the FRF type: the file's when it states one (a different `given` is an InputError

@@ -8,6 +8,8 @@
 // circumference, the same count for every mode. An optional last column `scaling` says how the
 // shapes are scaled, the same word on every row: `mass_normalised` (the default when the column
 // is absent) or `unscaled` (`modaltyre ema --unscaled`: largest value 1, no physical scale).
+// Optional columns freq_std_hz, damping_std, radial_std, tangential_std (written by `ema`,
+// docs/uncertainty.md section 5): standard deviations of the row's values, all four or none.
 #include <string>
 #include <vector>
 
@@ -20,7 +22,10 @@ struct MeasuredMode {
   std::vector<double> angle_rad;   ///< measurement angles [rad], sorted ascending
   std::vector<double> radial;      ///< radial shape values [kg^-1/2]
   std::vector<double> tangential;  ///< tangential shape values [kg^-1/2]
-  int first_line = 0;              ///< line of its first row (for messages)
+  /// Standard deviations from the file's optional columns; 0 and empty when it has none.
+  double freq_std_hz = 0.0, damping_std = 0.0;
+  std::vector<double> radial_std, tangential_std;  ///< per point, as radial / tangential
+  int first_line = 0;                              ///< line of its first row (for messages)
 };
 
 struct HammerData {
@@ -31,6 +36,7 @@ struct HammerData {
   /// any compliance or footprint built on them, is arbitrary. What the model does with them is
   /// the caller's decision; the reader only reports it.
   bool unscaled = false;
+  bool has_std = false;  ///< the file carries the standard-deviation columns
 };
 
 /// Minimum number of points a mode needs (orders 0..2 resolvable).

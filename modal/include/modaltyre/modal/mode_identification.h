@@ -43,11 +43,11 @@ struct IdentifiedMode {
   double freq_hz = 0;
   double damping_ratio = 0;
   ModeKind kind = ModeKind::unresolved;
-  int apparent_order = 0;   ///< dominant harmonic at the sample points
-  bool aliased = false;     ///< order cannot be resolved from N points
+  int apparent_order = 0;             ///< dominant harmonic at the sample points
+  bool aliased = false;               ///< order cannot be resolved from N points
   std::vector<int> alias_candidates;  ///< possible true orders when aliased
-  int likely_order = -1;    ///< most likely true order (dispersion), -1 if unknown
-  double r2 = 0;            ///< share of radial (rotation: tangential) energy in that harmonic
+  int likely_order = -1;              ///< most likely true order (dispersion), -1 if unknown
+  double r2 = 0;  ///< share of radial (rotation: tangential) energy in that harmonic
   HarmonicSeries radial;
   HarmonicSeries tangential;
   std::complex<double> c_radial;      ///< radial shape = Re(c e^{ik theta}) [kg^-1/2]
@@ -62,6 +62,11 @@ struct IdentifiedMode {
   /// Relative standard deviation of the modal amplitude |c_r|^2 (the mode's compliance scale),
   /// linearised: std(|c|^2) = 2 |c| std(c), relative 2 std(c) / |c| (docs/uncertainty.md).
   double amplitude2_rel_std = 0;
+  /// The hammer file's standard deviations (`ema`, docs/uncertainty.md section 5), 0 without.
+  double freq_std_hz = 0, damping_std = 0;
+  /// The noise the shape values' stated standard deviations imply (their RMS over the points),
+  /// 0 without; radial_noise / tangential_noise above take the larger of it and the residual's.
+  double radial_noise_stated = 0, tangential_noise_stated = 0;
   std::string note;
 
   /// Order to use physically: apparent order when resolved, else likely_order.

@@ -6,6 +6,9 @@
 //                horizontal_force_N, branch (load | unload), surface (rigid | soil): units,
 //                ranges and words of the condition catalogue (core/conditions.h)
 //   observables  any of sinking_mm, length_mm, width_mm (> 0), rolling_resistance_N
+//   their noise  optional standard deviations named with _std before the unit (sinking_std_mm,
+//                length_std_mm, width_std_mm, rolling_resistance_std_N; >= 0, empty or NA
+//                where not known), beside the observable's column (docs/uncertainty.md section 7)
 // Missing optional condition columns take the config's values (TyreConfig::default_conditions).
 // Columns `modaltyre sweep` writes beside them (vertical_stiffness_N_mm, peak_pressure_kPa,
 // iterations, status, message and dotted config keys such as tread.modulus_MPa) are accepted
@@ -21,10 +24,11 @@
 namespace modaltyre::studies {
 
 struct MeasuredRow {
-  int row = 0;                              ///< 1-based data row
-  int line = 0;                             ///< line in the file
-  contact::OperatingConditions conditions;  ///< the file's, the config's where it has none
-  std::map<std::string, double> observed;   ///< observable name -> measured value
+  int row = 0;                                 ///< 1-based data row
+  int line = 0;                                ///< line in the file
+  contact::OperatingConditions conditions;     ///< the file's, the config's where it has none
+  std::map<std::string, double> observed;      ///< observable name -> measured value
+  std::map<std::string, double> observed_std;  ///< observable name -> its stated std, where given
 
   /// A measured observable by name (nullopt when this row does not measure it).
   std::optional<double> value(const std::string& observable) const;
@@ -40,6 +44,9 @@ struct MeasurementSet {
   /// 001 Table 3): its rows state no condition besides the load.
   bool loads_only = false;
 };
+
+/// The column of an observable's standard deviation: "sinking_mm" -> "sinking_std_mm".
+std::string std_column(const std::string& observable);
 
 /// The condition column names (the catalogue's, core/conditions.h), in the order discover
 /// reports them.

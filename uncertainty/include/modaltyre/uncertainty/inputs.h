@@ -17,14 +17,19 @@ enum class InputKind {
   mode_frequency,  ///< a mode's natural frequency (multiplied by 1 + x)
   tread_modulus,   ///< the tread compound's modulus (1 + x)
   belt_width,      ///< the belt width of the ring's tension, i.e. the modal mass (1 + x)
+  /// One principal direction of calibrated scalars' covariance (validate): every key's value
+  /// times exp(x direction_k), x with std sqrt(eigenvalue) of Cov(ln value).
+  calibration,
 };
 
 struct UncertainInput {
   InputKind kind = InputKind::mode_amplitude;
-  int mode = -1;       ///< index into ModeIdentification::modes (mode kinds), else -1
-  std::string name;    ///< e.g. "mode 4 amplitude", "tread modulus"
-  double rel_std = 0;  ///< standard deviation of x
-  std::string source;  ///< e.g. "hammer shapes' residual", "modal.frequency_std_percent"
+  int mode = -1;                  ///< index into ModeIdentification::modes (mode kinds), else -1
+  std::string name;               ///< e.g. "mode 4 amplitude", "tread modulus"
+  double rel_std = 0;             ///< standard deviation of x
+  std::string source;             ///< e.g. "hammer shapes' residual", "modal.frequency_std_percent"
+  std::vector<std::string> keys;  ///< calibration: the config keys (contact/parameter_spec.h)
+  std::vector<double> direction;  ///< calibration: a unit eigenvector of Cov(ln value), per key
 };
 
 /// The inputs with a standard deviation > 0: one amplitude per mode the carcass uses when its
@@ -33,6 +38,15 @@ struct UncertainInput {
 /// tread modulus and the belt width when stated.
 std::vector<UncertainInput> collect_inputs(const contact::TyreConfig& config,
                                            const modal::ModeIdentification& modes);
+
+/// The calibrated scalars' uncertainty (studies::Calibration: standard errors and correlation,
+/// from the Levenberg-Marquardt Jacobian) as independent inputs: the principal directions of
+/// Cov(ln x)_ij = (se_i / x_i)(se_j / x_j) corr_ij, so that the propagation, which takes its
+/// inputs independent, carries the correlation. Directions with zero variance are left out.
+std::vector<UncertainInput> calibration_inputs(const std::vector<std::string>& keys,
+                                               const std::vector<double>& values,
+                                               const std::vector<double>& std_errors,
+                                               const std::vector<std::vector<double>>& correlation);
 
 /// Applies x to the input's quantity on `config` / `modes` (copies the caller made).
 void apply(const UncertainInput& input, double x, contact::TyreConfig& config,

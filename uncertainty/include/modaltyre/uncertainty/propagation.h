@@ -31,6 +31,8 @@ struct PropagationOptions {
   /// Called after each model evaluation (done, total): first the differences (1 + 2 inputs),
   /// then, when sampled, the samples (a new total); may be empty.
   std::function<void(int, int)> progress;
+  /// Inputs beside the config's (collect_inputs), e.g. calibration_inputs() in validate.
+  std::vector<UncertainInput> extra_inputs;
   /// Throws std::invalid_argument naming the field.
   void validate() const;
 };
@@ -57,6 +59,8 @@ struct CaseBands {
 struct InputEffect {
   UncertainInput input;
   std::vector<double> sinking_sensitivity;  ///< d sinking_mm / (1 sigma of the input), per case
+  /// d output / (1 sigma of the input), [case][output_names()], the central differences.
+  std::vector<std::vector<double>> sensitivity;
   double nonlinearity = 0;                  ///< the largest second/first difference ratio
   std::string nonlinear_output;             ///< where it is (output name and load)
 };
