@@ -29,6 +29,7 @@ nlohmann::json transient_json(const transient::TransientModel& model,
   if (r.on_soil) {  // docs/soil.md section 8
     j["ground"] = ground::to_string(model.tyre.config.ground.model);
     j["final"]["soil_sinkage_mm"] = round_sig(fin.soil_sinkage_m * 1e3);
+    j["final"]["compaction_resistance_N"] = round_sig(fin.soil_resistance_N);
     j["final"]["tyre_deflection_mm"] = round_sig((fin.sinking_m - fin.soil_sinkage_m) * 1e3);
   }
   if (r.scenario == transient::Scenario::free_vibration) {
@@ -85,6 +86,8 @@ std::vector<std::pair<std::string, std::vector<double>>> transient_series(
   if (r.on_soil) {
     cols.push_back({"soil_sinkage_mm", {}});
     for (const auto& s : r.samples) cols.back().second.push_back(s.soil_sinkage_m * 1e3);
+    cols.push_back({"compaction_resistance_N", {}});
+    for (const auto& s : r.samples) cols.back().second.push_back(s.soil_resistance_N);
   }
   return cols;
 }

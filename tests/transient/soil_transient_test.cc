@@ -7,6 +7,7 @@
 
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/contact/ground_patch.h"
+#include "modaltyre/contact/traction.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/transient/soil_contact.h"
 #include "modaltyre/transient/transient.h"
@@ -25,6 +26,12 @@ constexpr double kStaticTol = 0.005;
 // tread's) against the rigid road, sample by sample: the soil's share of the sinking is ~1e-3 of
 // the tread's, 1 um of a 14 mm sinking; 0.5 % is the bound for the footprint.
 constexpr double kStiffSoilTol = 0.005;
+// Slow rolling (2 km/h, no tread relaxation) onto a frictionless soil against traction's
+// steady rolling at zero slip (contact/traction.h): the same contact in its steady state, the
+// transient reaching it through the soil's moving memory. Traction settles to 1e-4 of the
+// sinkage profile; the transient's memory is recorded once per step (soil_contact.h). Measured at
+// 5 mm units: soil sinkage, sinking, length within 0.3 %, R_c 0.5 %; 1 % bounds them.
+constexpr double kSteadyRollingTol = 0.01;
 // The series root of one unit: solved to 1e-13 of g (soil_contact.cc).
 constexpr double kRootTol = 1e-10;
 // Its derivative against a central difference (step 1e-6 of g: truncation ~1e-12, rounding
@@ -156,6 +163,26 @@ TEST(SoilTransient, AVeryStiffSoilReproducesTheRoadTransient) {
   EXPECT_LT(worst_sink / scale, kStiffSoilTol);
   EXPECT_LT(worst_load / 4000, kStiffSoilTol);
   EXPECT_LT(b.samples.back().soil_sinkage_m, 1e-3 * scale);
+}
+
+TEST(SoilTransient, SlowRollingOntoTheSoilReachesTractionsSteadyState) {
+  const TransientModel M = model_with(
+      join(coarse({"transient.relaxation=false", "transient.rolling.load_N=3000",
+                   "transient.rolling.speed_km_h=2", "transient.rolling.ramp_s=0.5",
+                   "transient.rolling.duration_s=2"}),
+           join(kLete, {"ground.bekker.cohesion_kPa=0", "ground.bekker.friction_angle_deg=0"})));
+  const TransientResult r = run_transient(M, Scenario::rolling);
+  ASSERT_TRUE(r.ok()) << r.message;
+  const TractionResult s = traction_pass(M.tyre, M.tyre.config.ground, {3000, 0.0}, 0);
+  ASSERT_TRUE(s.ok()) << s.message;
+  const TransientSample& fin = r.samples.back();
+  // The static start sinks less: rolling loads the front half only.
+  EXPECT_GT(fin.soil_sinkage_m, r.samples.front().soil_sinkage_m * 1.2);
+  EXPECT_NEAR(fin.soil_sinkage_m / s.soil_sinkage_m, 1.0, kSteadyRollingTol);
+  EXPECT_NEAR(fin.sinking_m / s.sinking_m, 1.0, kSteadyRollingTol);
+  EXPECT_NEAR(fin.contact_length_m / s.contact_length_m, 1.0, kSteadyRollingTol);
+  EXPECT_NEAR(fin.soil_resistance_N / s.motion_resistance_N, 1.0, kSteadyRollingTol);
+  EXPECT_NEAR(fin.load_N / 3000, 1.0, kSteadyRollingTol);
 }
 
 }  // namespace

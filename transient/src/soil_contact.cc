@@ -43,24 +43,40 @@ void SoilContact::set_memory(const Eigen::VectorXd& z_max_m, double t) {
   if (z_max_m.size() != z_max_.size())
     throw std::invalid_argument("SoilContact: one z_max per unit");
   z_max_ = z_max_m.cwiseMax(0.0);
-  distance_acc_ = distance_ ? distance_(t) : 0.0;
+  z_max_prev_ = z_max_;
+  distance_acc_ = distance_prev_ = distance_ ? distance_(t) : 0.0;
+  t_accepted_ = t;
 }
 
-double SoilContact::memory_at(int i, double shift) const {
-  if (shift == 0.0) return z_max_(i);
+const Eigen::VectorXd& SoilContact::memory(double t, double& shift) const {
+  const double D = distance_ ? distance_(t) : 0.0;
+  if (t < t_accepted_) {
+    shift = distance_ ? D - distance_prev_ : 0.0;
+    return z_max_prev_;
+  }
+  shift = distance_ ? D - distance_acc_ : 0.0;
+  return z_max_;
+}
+
+double SoilContact::memory_at(const Eigen::VectorXd& zm, int i, double shift) const {
+  if (shift == 0.0) return zm(i);
   const int m = static_cast<int>(x_.size());
   const double X = x_(i) + shift;
-  if (X >= x_(m - 1)) return X > x_(m - 1) ? 0.0 : z_max_(m - 1);  // ahead: virgin soil
-  if (X <= x_(0)) return z_max_(0);
+  if (X >= x_(m - 1)) return X > x_(m - 1) ? 0.0 : zm(m - 1);  // ahead: virgin soil
+  if (X <= x_(0)) return zm(0);
   // The step's travel is a few units at most: walk from i.
   int j = i;
   while (j + 1 < m && x_(j + 1) <= X) ++j;
   while (j > 0 && x_(j) > X) --j;
   const double w = (X - x_(j)) / (x_(j + 1) - x_(j));
-  return (1 - w) * z_max_(j) + w * z_max_(j + 1);
+  return (1 - w) * zm(j) + w * zm(j + 1);
 }
 
-double SoilContact::z_max_m(int i, double t) const { return memory_at(i, shift(t)); }
+double SoilContact::z_max_m(int i, double t) const {
+  double s = 0;
+  const Eigen::VectorXd& zm = memory(t, s);
+  return memory_at(zm, i, s);
+}
 
 double SoilContact::rut_m(int i, double t) const {
   const double zm = z_max_m(i, t);
@@ -121,11 +137,12 @@ double SoilContact::unit_force(int i, double g, double zm, double* dfdg, double*
 }
 
 void SoilContact::forces(double t, int lo, int n, double* g) const {
-  const double s = shift(t);
+  double s = 0;
+  const Eigen::VectorXd& zm = memory(t, s);
   for (int k = 0; k < n; ++k) {
     const int i = lo + k;
     double d = 0, z = 0;
-    g[k] = unit_force(i, g[k], memory_at(i, s), &d, &z);
+    g[k] = unit_force(i, g[k], memory_at(zm, i, s), &d, &z);
     stiffness_(i) = d;
     depth_(i) = z;
   }
@@ -138,13 +155,24 @@ double SoilContact::deepest_loaded_m(int lo, int hi) const {
   return deepest;
 }
 
+double SoilContact::compaction_resistance_N(int lo, int hi, const Eigen::VectorXd& f) const {
+  double R = 0;
+  const int m = static_cast<int>(x_.size());
+  for (int i = std::max(lo, 1); i <= std::min(hi, m - 2); ++i)
+    if (f(i) > 0) R += f(i) * (depth_(i - 1) - depth_(i + 1)) / (x_(i + 1) - x_(i - 1));
+  return R;
+}
+
 void SoilContact::accept(double t, int lo, int hi) {
-  const double s = shift(t);
+  z_max_prev_ = z_max_;
+  distance_prev_ = distance_acc_;
+  t_accepted_ = t;
+  const double s = distance_ ? distance_(t) - distance_acc_ : 0.0;
   if (s != 0.0) {
     // Move the memory with the ground (the units' own values read ahead of them).
     const int m = static_cast<int>(z_max_.size());
     Eigen::VectorXd moved(m);
-    for (int i = 0; i < m; ++i) moved(i) = memory_at(i, s);
+    for (int i = 0; i < m; ++i) moved(i) = memory_at(z_max_prev_, i, s);
     z_max_ = moved;
     distance_acc_ += s;
   }

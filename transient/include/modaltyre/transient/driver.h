@@ -25,6 +25,9 @@ struct TransientSample {
   /// On a soil (2D patch): the deepest point of the loaded soil surface below the undisturbed
   /// surface (docs/soil.md section 1); sinking_m is then the axle's approach to that surface.
   double soil_sinkage_m = 0;
+  /// On a soil: the horizontal components of the normal forces on the soil surface's slope,
+  /// sum f_i tan(alpha_i) (traction's motion resistance R_c, docs/soil.md section 5) [N].
+  double soil_resistance_N = 0;
   /// 3D patch only (cell_model.h; 0 on the 2D patch): the widest section's lateral extent and
   /// the contact area sum_columns dy (x_front - x_rear).
   double width_m = 0;

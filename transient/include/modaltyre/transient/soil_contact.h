@@ -16,7 +16,10 @@
 // point under unit i at time t was under hub position x_i + (D(t) - D_acc) at the last accepted
 // step (D the distance rolled), interpolated linearly between the units' x. The recording lags
 // by one step only where a point passes the deepest unit inside a step (where the sinkage's
-// slope along x vanishes, so the lag is second order in the step's travel).
+// slope along x vanishes, so the lag is second order in the step's travel). An evaluation at a
+// time before the last accepted step (the driver's output samples, interpolated inside the step
+// just taken) uses the memory that step was integrated with: the accepted memory already holds
+// the depths of the step's end, which a state inside the step has not reached.
 #include <Eigen/Dense>
 #include <functional>
 #include <memory>
@@ -67,6 +70,11 @@ class SoilContact {
   /// The deepest soil depth under the units [lo, hi] that carried a force at the last forces().
   double deepest_loaded_m(int lo, int hi) const;
 
+  /// sum_i f_i tan(alpha_i) over [lo, hi] at the last forces() evaluation (forces f, m entries):
+  /// the normal forces' backward components on the soil surface's slope tan(alpha_i) =
+  /// -dZ/dx, central differences of the depths over the units' x (contact/traction.cc's R_c).
+  double compaction_resistance_N(int lo, int hi, const Eigen::VectorXd& f) const;
+
   /// An accepted step at t: moves the memory with the ground to t and records the soil depths of
   /// the last forces() evaluation (which must be at the accepted state) over [lo, hi].
   void accept(double t, int lo, int hi);
@@ -75,14 +83,18 @@ class SoilContact {
   double unit_force(int i, double g, double z_max, double* dfdg, double* depth) const;
 
  private:
-  /// Memory at hub position x_i + shift, linear between the units' x (beyond the front: virgin
-  /// soil; behind the rear: the rearmost unit's).
-  double memory_at(int i, double shift) const;
-  double shift(double t) const { return distance_ ? distance_(t) - distance_acc_ : 0.0; }
+  /// Memory `zm` (per unit) at hub position x_i + shift, linear between the units' x (beyond the
+  /// front: virgin soil; behind the rear: the rearmost unit's).
+  double memory_at(const Eigen::VectorXd& zm, int i, double shift) const;
+  /// The memory in force at t (the previous one before the last accepted step) and the shift
+  /// of the ground since it was recorded.
+  const Eigen::VectorXd& memory(double t, double& shift) const;
 
   std::unique_ptr<ground::PressureSinkage> law_;
   Eigen::VectorXd area_, k_, x_;
-  Eigen::VectorXd z_max_;  ///< memory per unit at the last accepted step
+  Eigen::VectorXd z_max_;       ///< memory per unit at the last accepted step
+  Eigen::VectorXd z_max_prev_;  ///< the one before it (evaluations inside the last step)
+  double t_accepted_ = -1e300, distance_prev_ = 0;
   mutable Eigen::VectorXd stiffness_, depth_, pressure_;  ///< last forces() per unit
   std::function<double(double)> distance_;
   double distance_acc_ = 0;
