@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "decay_metrics.h"
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/contact/ground_patch.h"
 #include "modaltyre/contact/traction.h"
@@ -55,15 +56,6 @@ std::vector<std::string> join(std::vector<std::string> a, const std::vector<std:
 
 TransientModel model_with(const std::vector<std::string>& overrides) {
   return build_transient_model(build_tyre_model(load_tyre_config(kConfig, overrides)));
-}
-
-template <class F>
-double mean_over(const TransientResult& r, double t0, double t1, F get) {
-  double s = 0;
-  int n = 0;
-  for (const auto& x : r.samples)
-    if (x.t_s >= t0 && x.t_s < t1 + 1e-12) s += get(x), ++n;
-  return n ? s / n : NAN;
 }
 
 TEST(SoilContact, TheUnitForceSolvesTheSpringInSeriesWithTheSoil) {
