@@ -57,7 +57,7 @@ TransientSample observe_units(const TransientModel& M, const TransientSystem& sy
   s.sinking_m = sink;
   const SoilContact* soil = sys.soil();
   if (soil) {
-    s.soil_sinkage_m = soil->deepest_loaded_m(u0, u1);
+    s.soil_sinkage_m = soil->deepest_loaded_m(u0, u1, f);
     s.soil_resistance_N = soil->compaction_resistance_N(u0, u1, f);
   }
   s.pressure_centre_m = s.load_N > 0 ? moment / s.load_N : 0;

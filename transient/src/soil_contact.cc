@@ -139,6 +139,7 @@ double SoilContact::unit_force(int i, double g, double zm, double* dfdg, double*
 void SoilContact::forces(double t, int lo, int n, double* g) const {
   double s = 0;
   const Eigen::VectorXd& zm = memory(t, s);
+  band_lo_ = lo, band_hi_ = lo + n - 1, t_forces_ = t;
   for (int k = 0; k < n; ++k) {
     const int i = lo + k;
     double d = 0, z = 0;
@@ -148,10 +149,14 @@ void SoilContact::forces(double t, int lo, int n, double* g) const {
   }
 }
 
-double SoilContact::deepest_loaded_m(int lo, int hi) const {
+double SoilContact::depth(int i) const {
+  return i >= band_lo_ && i <= band_hi_ ? depth_(i) : rut_m(i, t_forces_);
+}
+
+double SoilContact::deepest_loaded_m(int lo, int hi, const Eigen::VectorXd& f) const {
   double deepest = 0;
   for (int i = lo; i <= hi; ++i)
-    if (stiffness_(i) > 0 || pressure_(i) > 0) deepest = std::max(deepest, depth_(i));
+    if (f(i) > 0) deepest = std::max(deepest, depth(i));
   return deepest;
 }
 
@@ -159,7 +164,7 @@ double SoilContact::compaction_resistance_N(int lo, int hi, const Eigen::VectorX
   double R = 0;
   const int m = static_cast<int>(x_.size());
   for (int i = std::max(lo, 1); i <= std::min(hi, m - 2); ++i)
-    if (f(i) > 0) R += f(i) * (depth_(i - 1) - depth_(i + 1)) / (x_(i + 1) - x_(i - 1));
+    if (f(i) > 0) R += f(i) * (depth(i - 1) - depth(i + 1)) / (x_(i + 1) - x_(i - 1));
   return R;
 }
 

@@ -56,8 +56,8 @@ class SoilContact {
   /// d phi / d g of unit i at the last forces() evaluation (0 where it carried no force).
   double stiffness(int i) const { return stiffness_(i); }
   /// The soil's surface depth under unit i at the last forces() evaluation (Z_i; the rut where
-  /// the unit carried no force) [m].
-  double depth(int i) const { return depth_(i); }
+  /// the unit carried no force, also outside the units evaluated) [m].
+  double depth(int i) const;
   /// The virgin curve's compliance dZ/df at unit i's pressure of the last forces() [m/N]: the
   /// contact edge's level function (as the static footprint on virgin soil, ground_patch.cc).
   /// On the memory's branch (a rigid-plastic one has dZ/df = 0) the branch's tangent would move
@@ -67,8 +67,9 @@ class SoilContact {
   }
   /// The soil's surface depth under unit i unloaded at time t (Z(0; z_max)) [m].
   double rut_m(int i, double t) const;
-  /// The deepest soil depth under the units [lo, hi] that carried a force at the last forces().
-  double deepest_loaded_m(int lo, int hi) const;
+  /// The deepest soil depth under the units [lo, hi] with a force f_i > 0 (the last forces()
+  /// evaluation's, m entries).
+  double deepest_loaded_m(int lo, int hi, const Eigen::VectorXd& f) const;
 
   /// sum_i f_i tan(alpha_i) over [lo, hi] at the last forces() evaluation (forces f, m entries):
   /// the normal forces' backward components on the soil surface's slope tan(alpha_i) =
@@ -96,6 +97,8 @@ class SoilContact {
   Eigen::VectorXd z_max_prev_;  ///< the one before it (evaluations inside the last step)
   double t_accepted_ = -1e300, distance_prev_ = 0;
   mutable Eigen::VectorXd stiffness_, depth_, pressure_;  ///< last forces() per unit
+  mutable int band_lo_ = 0, band_hi_ = -1;                ///< the units of the last forces()
+  mutable double t_forces_ = 0;                           ///< its time
   std::function<double(double)> distance_;
   double distance_acc_ = 0;
   double bekker_width_m_ = 0;
