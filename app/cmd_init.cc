@@ -10,6 +10,7 @@
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/init/init_tyre.h"
+#include "modaltyre/report/init_json.h"
 
 namespace modaltyre::app {
 namespace {
@@ -38,49 +39,6 @@ std::vector<int> parse_orders(const std::vector<std::string>& words) {
     out.push_back(std::stoi(w));
   }
   return out;
-}
-
-nlohmann::json proposal_json(const modal::OrderProposal& p) {
-  return {{"orders", p.orders},
-          {"score", round_sig(p.score, 6)},
-          {"rms_rel_error", round_sig(p.rms_rel_error, 4)},
-          {"mass_per_length_kg_m", round_sig(p.mass_per_length_kg_m, 4)},
-          {"missing_orders", p.missing}};
-}
-
-nlohmann::json result_json(const init::InitResult& r, const std::string& output) {
-  nlohmann::json alternatives = nlohmann::json::array();
-  for (const auto& p : r.alternatives) alternatives.push_back(proposal_json(p));
-  nlohmann::json decisions = nlohmann::json::array();
-  for (const auto& d : r.decisions)
-    decisions.push_back({{"key", d.key}, {"value", d.value}, {"source", d.source}});
-  const auto& c = r.carcass;
-  nlohmann::json fit = {{"valid", c.fit.valid}};
-  if (c.fit.valid) {
-    fit["radial_foundation_rad2_s2"] = round_sig(c.fit.coefficients.radial_foundation);
-    fit["tension_rad2_s2"] = round_sig(c.fit.coefficients.tension);
-    fit["bending_rad2_s2"] = round_sig(c.fit.coefficients.bending);
-    fit["tangential_foundation_rad2_s2"] = round_sig(c.fit.coefficients.tangential_foundation);
-    fit["rms_rel_error"] = round_sig(c.fit.rms_rel_error, 4);
-  } else {
-    fit["reason"] = c.fit.reason;
-  }
-  nlohmann::json j = {{"orders", r.orders},
-                      {"orders_proposed", r.orders_proposed},
-                      {"alternatives", alternatives},
-                      {"mass_per_length_kg_m", round_sig(c.mass_per_length_kg_m, 6)},
-                      {"mass_source", c.mass_source},
-                      {"implied_tension_N", round_sig(c.tension_N, 6)},
-                      {"membrane_tension_N", round_sig(c.membrane_tension_N, 6)},
-                      {"ring_fit", fit},
-                      {"decisions", decisions},
-                      {"warnings", r.warnings}};
-  if (output.empty()) {
-    j["config"] = r.yaml;
-  } else {
-    j["output"] = output;
-  }
-  return j;
 }
 
 }  // namespace
@@ -128,7 +86,7 @@ void register_init(CLI::App& app) {
     files.check();
     a->in.output_path = a->output;
     const init::InitResult r = init::init_tyre(a->in);
-    const nlohmann::json j = result_json(r, a->output);
+    const nlohmann::json j = report::init_json(r, a->output);
     check_finite(j);
     if (!a->output.empty()) write_file_atomically(a->output, r.yaml);
     if (a->json) {

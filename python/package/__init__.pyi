@@ -104,3 +104,23 @@ def identify(
     intercept: bool = False,
     max_h_r0: float = 0.117,
 ) -> dict[str, Any]: ...
+def init(
+    size: str,
+    *,
+    test_pressure_kPa: float,
+    pressure_kPa: Optional[float] = None,
+    frequencies_hz: Optional[Sequence[float]] = None,
+    damping_ratios: Optional[Sequence[float]] = None,
+    orders: Optional[Sequence[Union[int, str]]] = None,
+    hammer_csv: Optional[StrPath] = None,
+    belt_mass_kg: Optional[float] = None,
+    boundary: str = "free",
+    wheel_mass_kg: Optional[float] = None,
+    belt_width_mm: Optional[float] = None,
+    tread_depth_mm: Optional[float] = None,
+    tread_width_mm: Optional[float] = None,
+    fnomin_N: Optional[float] = None,
+    name: str = "",
+    two_d: bool = False,
+    output: Optional[StrPath] = None,
+) -> dict[str, Any]: ...

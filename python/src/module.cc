@@ -85,4 +85,5 @@ PYBIND11_MODULE(_modaltyre, m) {
   bind_studies(m);
   bind_identify(m);
   bind_traction(m);
+  bind_init(m);
 }

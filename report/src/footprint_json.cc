@@ -138,6 +138,18 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
   } else {
     m["contact_width_mm"] = c.tread.width_m * 1e3;
   }
+  // Where the modal masses came from (docs/ring_model.md): the ring's tension, a stated mass,
+  // or the shapes' own scale, and the tension they imply against the membrane's p b R.
+  const auto& d = model.carcass;
+  m["carcass"] = {{"normalisation", d.ring ? "ring" : "shapes"},
+                  {"mass_per_length_kg_m", round_sig(d.mass_per_length_kg_m, 6)},
+                  {"mass_source", d.mass_source},
+                  {"implied_tension_N", round_sig(d.tension_N, 6)},
+                  {"membrane_tension_N", d.membrane_tension_N > 0
+                                             ? nlohmann::json(round_sig(d.membrane_tension_N, 6))
+                                             : nlohmann::json(nullptr)},  // no belt width
+                  {"test_pressure_kPa", round_sig(d.test_pressure_Pa * 1e-3, 6)},
+                  {"operating_pressure_kPa", round_sig(d.operating_pressure_Pa * 1e-3, 6)}};
   return out;
 }
 
