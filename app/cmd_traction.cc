@@ -83,54 +83,22 @@ void register_traction(CLI::App& app) {
   cmd->add_option("--plot", a->plot, "draw drawbar pull / load against slip (.svg or .png)");
   cmd->callback([a] {
     refuse_repeated_overrides(a->overrides);
-    // With --ground, the ground.* overrides go to the soil file, the rest to the tyre config.
-    // tyre.rigid is applied after the ground (the config reader refuses a rigid tyre on a road).
-    std::vector<std::string> tyre_overrides, ground_overrides;
-    std::optional<bool> rigid;
-    for (const auto& o : a->overrides) {
-      if (o.rfind("tyre.rigid=", 0) == 0) {
-        try {
-          rigid = parse_set_value(o.substr(11), "tyre.rigid").as<bool>();
-        } catch (const YAML::Exception&) {
-          throw InputError({"--set", 0, "tyre.rigid"}, "must be true or false");
-        }
-        continue;
-      }
-      (!a->ground.empty() && o.rfind("ground.", 0) == 0 ? ground_overrides : tyre_overrides)
-          .push_back(o);
-    }
-    contact::TyreConfig config = contact::load_tyre_config(a->config, tyre_overrides);
-    if (rigid) config.rigid = *rigid;
-    const ground::GroundSettings g =
-        a->ground.empty() ? config.ground : ground::load_ground_file(a->ground, ground_overrides);
-    if (!g.soil())
-      throw InputError({a->ground.empty() ? a->config : a->ground, 0, "ground.model"},
-                       "traction needs a soil: model bekker or kelvin_voigt");
+    const report::TractionSetup setup = report::traction_setup(a->config, a->ground, a->overrides);
     CommandFiles files;  // before anything is computed: no output over an input
-    report::add_config_inputs(files, config);
+    report::add_config_inputs(files, setup.config);
     files.input(a->ground, "--ground");
     if (!a->plot.empty()) files.output(a->plot, "--plot");
     files.check();
-    if (config.footprint_3d) {  // the 2D patch of the 3D config's tread (docs/soil.md)
-      config.tread.width_m = config.footprint_3d->tread_width_m;
-      config.footprint_3d.reset();
-    }
-    config.ground = g;
-    contact::TractionOptions opt;
-    opt.rigid = config.rigid;
-    opt.passes = a->passes;
-    std::vector<contact::TractionCase> cases;
-    for (double load : a->loads)
-      for (double s : a->slips) cases.push_back({load, s});
-    contact::TyreModel model = contact::build_tyre_model(config);
-    const auto results = contact::steady_traction(model, g, cases, opt);
-    report::require_traction_converged(results);
+    const auto results = report::run_traction(setup, a->loads, a->slips, a->passes);
+    contact::TyreConfig config = setup.config;  // as run: a 3D config's 2D patch
+    report::use_2d_patch_of_3d(config);
+    const ground::GroundSettings& g = setup.ground;
     if (!a->plot.empty()) plot_drawbar_pull(results, a->plot);
     if (a->json) {
-      print_json(report::traction_json(config, g, results, opt.rigid, a->passes));
+      print_json(report::traction_json(config, g, results, setup.rigid, a->passes));
       return;
     }
-    std::cout << (opt.rigid ? "rigid cylinder" : "flexible tyre (2D patch)") << " R0 "
+    std::cout << (setup.rigid ? "rigid cylinder" : "flexible tyre (2D patch)") << " R0 "
               << fixed(config.outer_radius_m * 1e3, 1) << " mm, width "
               << fixed(config.tread.width_m * 1e3, 1) << " mm on "
               << (g.name.empty() ? ground::to_string(g.model) : g.name) << "\n";

@@ -1,4 +1,5 @@
-// modaltyre transient CONFIG --scenario NAME [--csv FILE] [--json] [--plot FILE] [--set k=v]...
+// modaltyre transient CONFIG --scenario NAME [--ground SOIL.yaml] [--csv FILE] [--json]
+//                     [--plot FILE] [--set k=v]...
 #include <unistd.h>
 
 #include <algorithm>
@@ -35,6 +36,7 @@ struct TransientArgs {
   std::vector<std::string> overrides;
   std::vector<double> map_times;
   std::string map_csv;
+  std::string ground;
 };
 
 // The 3D patch's contact maps at the chosen times: time_s,x_mm,y_mm,pressure_kPa, one row per
@@ -123,6 +125,10 @@ void register_transient(CLI::App& app) {
                   "write the time series (t_s,load_N,hub_displacement_mm,sinking_mm,"
                   "contact_length_mm,longitudinal_force_N)");
   cmd->add_flag("--json", a->json, "print a JSON summary");
+  cmd->add_option("--ground", a->ground,
+                  "soil file (YAML with a ground: section, e.g. configs/soils/lete_sand.yaml; "
+                  "--set ground.KEY=... then goes to it): the 2D tyre onto that soil "
+                  "(docs/soil.md section 8); default: the config's ground: section");
   cmd->add_option("--map-times", a->map_times,
                   "3D patch: times [s] of the contact maps, e.g. --map-times 0.1,0.2")
       ->delimiter(',');
@@ -139,9 +145,26 @@ void register_transient(CLI::App& app) {
     const auto settings = take_condition_settings(overrides);
     report::map_transient_conditions(settings, scenario, overrides);
     refuse_repeated_overrides(overrides);  // e.g. hold_s=60 and transient.load_hold.hold_s=10
-    const auto config = contact::load_tyre_config(a->config, overrides);
+    // With --ground, the ground.* overrides go to the soil file, the rest to the tyre config.
+    std::vector<std::string> tyre_overrides, ground_overrides;
+    for (const auto& o : overrides)
+      (!a->ground.empty() && o.rfind("ground.", 0) == 0 ? ground_overrides : tyre_overrides)
+          .push_back(o);
+    auto config = contact::load_tyre_config(a->config, tyre_overrides);
+    if (!a->ground.empty()) {
+      config.ground = ground::load_ground_file(a->ground, ground_overrides);
+      if (!config.ground.soil())
+        throw InputError({a->ground, 0, "ground.model"},
+                         "--ground takes a soil (model bekker or kelvin_voigt); a road is the "
+                         "config's ground: section");
+      if (config.effects.soil_compliance.enabled)
+        throw InputError({a->config, 0, "effects.soil_compliance"},
+                         "the soil_compliance effect is a soil of its own: with --ground "
+                         "switch it off");
+    }
     CommandFiles files;  // before the run: no output over the config or another output
     report::add_config_inputs(files, config);
+    files.input(a->ground, "--ground");
     if (cmd->count("--csv")) files.output(a->csv, "--csv");
     if (cmd->count("--plot")) files.output(a->plot, "--plot");
     if (cmd->count("--map-csv")) files.output(a->map_csv, "--map-csv");
@@ -192,6 +215,12 @@ void register_transient(CLI::App& app) {
                 << fixed(fin.sinking_m * 1e3, 3) << " mm, contact length "
                 << fixed(fin.contact_length_m * 1e3, 2) << " mm, rolling resistance "
                 << fixed(r.rolling_resistance_N, 2) << " N\n";
+      if (config.ground.soil())
+        std::cout << "on the soil "
+                  << (config.ground.name.empty() ? ground::to_string(config.ground.model)
+                                                 : config.ground.name)
+                  << ": soil sinkage " << fixed(fin.soil_sinkage_m * 1e3, 3)
+                  << " mm (sinking is the axle's approach to the undisturbed surface)\n";
     }
   });
 }

@@ -45,7 +45,7 @@ void print_footprint_table(const contact::TyreModel& model,
     std::cout << "\n";
   }
   // Conditions act only through effects; stated always so that a run says what it assumed.
-  std::cout << "conditions: " << describe_conditions(conditions) << "\n";
+  std::cout << "conditions: " << describe_conditions(conditions, c.ground) << "\n";
   if (c.footprint_3d) {
     const auto& s = *c.footprint_3d;
     std::cout
@@ -70,6 +70,14 @@ void print_footprint_table(const contact::TyreModel& model,
                   r.equilibrium_residual, r.complementarity_residual);
     std::cout << line;
   }
+  // On a soil: sinking is the axle's approach to the undisturbed surface (docs/soil.md 1).
+  if (predictions.empty() || !predictions.front().on_soil) return;
+  std::cout << "\n  load_N  soil_sinkage_mm  tyre_deflection_mm  bekker_width_mm\n";
+  for (const auto& p : predictions) {
+    std::printf("%8.0f  %15.2f  %18.2f  %15.1f\n", p.footprint.load.load_N, p.soil_sinkage_mm,
+                p.tyre_deflection_mm, p.bekker_width_mm);
+  }
+  std::fflush(stdout);
 }
 
 void print_uncertainty_table(const uncertainty::PropagationResult& r) {

@@ -72,6 +72,14 @@ def transient(
     overrides: dict[str, Any] = ...,
     conditions: dict[str, Any] = ...,
 ) -> dict[str, Any]: ...
+def traction(
+    config_path: StrPath,
+    loads_N: Sequence[float],
+    slips: Sequence[float],
+    ground: Optional[StrPath] = None,
+    overrides: dict[str, Any] = ...,
+    passes: int = 1,
+) -> dict[str, Any]: ...
 def effects() -> list[dict[str, Any]]: ...
 def discover(
     config_path: StrPath,

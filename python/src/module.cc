@@ -84,5 +84,6 @@ PYBIND11_MODULE(_modaltyre, m) {
   bind_tyre(m);
   bind_studies(m);
   bind_identify(m);
+  bind_traction(m);
   bind_init(m);
 }

@@ -129,7 +129,9 @@ void bind_studies(py::module_& m) {
         "patch (3D with footprint_3d:, e.g. configs/sf350.yaml; else 2D): "
         "the dict of `modaltyre transient --json` plus 'series': {t_s, load_N, "
         "hub_displacement_mm, sinking_mm, contact_length_mm, longitudinal_force_N, and on the "
-        "3D patch width_mm, contact_area_mm2} as NumPy arrays (the columns of --csv). "
+        "3D patch width_mm, contact_area_mm2, on a soil (overrides {'ground.model': "
+        "'bekker', ...}, 2D) soil_sinkage_mm, compaction_resistance_N} as NumPy arrays (the "
+        "columns of --csv). "
         "`conditions`: the scenario's, {'load_N': 3000, "
         "'hold_s': 60} = --set load_N=3000 --set hold_s=60.");
   m.def(

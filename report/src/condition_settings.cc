@@ -106,13 +106,20 @@ void apply_condition_settings(const std::vector<ConditionSetting>& settings,
   for (const auto& s : settings) contact::set_condition(c, s.id, s.value);
 }
 
-std::string describe_conditions(const contact::OperatingConditions& c) {
+std::string describe_conditions(const contact::OperatingConditions& c,
+                                const ground::GroundSettings& ground) {
   std::string s = number_text(c.pressure_kPa) + " kPa, ";
   s += c.hold_s > 0 ? "held " + number_text(c.hold_s) + " s, " : std::string("no hold, ");
   s += c.speed_kmh > 0 ? "rolling at " + number_text(c.speed_kmh) + " km/h, "
                        : std::string("standing, ");
   s += c.branch == contact::Branch::loading ? "loading branch, " : "unloading branch, ";
-  s += c.surface == contact::Surface::rigid ? "rigid road" : "soil";
+  const std::string model = ground::to_string(ground.model);
+  if (ground.soil())
+    s += "on the soil " + (ground.name.empty() ? model : ground.name + " (" + model + ")");
+  else if (ground.model == ground::GroundModel::profile)
+    s += "on the road profile " + ground.profile_csv;
+  else
+    s += c.surface == contact::Surface::rigid ? "rigid road" : "soil";
   return s;
 }
 

@@ -1,8 +1,10 @@
 #include "modaltyre/report/traction_json.h"
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 
+#include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
 
@@ -66,6 +68,70 @@ void require_traction_converged(const std::vector<contact::TractionResult>& resu
         << r.message;
     throw ComputationError(msg.str());
   }
+}
+
+TractionSetup traction_setup(const std::string& config_path, const std::string& ground_path,
+                             const std::vector<std::string>& overrides) {
+  std::vector<std::string> tyre_overrides, ground_overrides;
+  std::optional<bool> rigid;
+  for (const auto& o : overrides) {
+    if (o.rfind("tyre.rigid=", 0) == 0) {
+      try {
+        rigid = parse_set_value(o.substr(11), "tyre.rigid").as<bool>();
+      } catch (const YAML::Exception&) {
+        throw InputError({"--set", 0, "tyre.rigid"}, "must be true or false");
+      }
+      continue;
+    }
+    (!ground_path.empty() && o.rfind("ground.", 0) == 0 ? ground_overrides : tyre_overrides)
+        .push_back(o);
+  }
+  TractionSetup s;
+  s.config = contact::load_tyre_config(config_path, tyre_overrides);
+  if (rigid) s.config.rigid = *rigid;
+  s.rigid = s.config.rigid;
+  s.ground = ground_path.empty() ? s.config.ground
+                                 : ground::load_ground_file(ground_path, ground_overrides);
+  s.ground_source = ground_path.empty() ? config_path : ground_path;
+  if (!s.ground.soil())
+    throw InputError({s.ground_source, 0, "ground.model"},
+                     "traction needs a soil: model bekker or kelvin_voigt");
+  return s;
+}
+
+void use_2d_patch_of_3d(contact::TyreConfig& config) {
+  if (!config.footprint_3d) return;
+  config.tread.width_m = config.footprint_3d->tread_width_m;
+  config.footprint_3d.reset();
+}
+
+std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
+                                                  const std::vector<double>& loads_N,
+                                                  const std::vector<double>& slips, int passes) {
+  if (loads_N.empty()) throw InputError({"loads_N", 0, ""}, "give at least one load [N]");
+  if (slips.empty()) throw InputError({"slips", 0, ""}, "give at least one slip");
+  // The command's ranges (app/cmd_traction.cc): a braked wheel locks at s = -1, a driven one
+  // spins in place at s = 1; 1e7 N exceeds any tyre; passes 1-20.
+  for (double s : slips)
+    if (!(s >= -0.99 && s <= 1))
+      throw InputError({"slips", 0, ""}, "slip " + std::to_string(s) + " outside [-0.99, 1]");
+  for (double F : loads_N)
+    if (!(F >= contact::kMinLoad_N && F <= contact::kMaxLoad_N))
+      throw InputError({"loads_N", 0, ""}, "load " + std::to_string(F) + " N outside [1e-6, 1e7]");
+  if (passes < 1 || passes > 20) throw InputError({"passes", 0, ""}, "passes must be 1-20");
+  contact::TyreConfig config = setup.config;
+  use_2d_patch_of_3d(config);
+  config.ground = setup.ground;
+  contact::TractionOptions opt;
+  opt.rigid = setup.rigid;
+  opt.passes = passes;
+  std::vector<contact::TractionCase> cases;
+  for (double load : loads_N)
+    for (double s : slips) cases.push_back({load, s});
+  const contact::TyreModel model = contact::build_tyre_model(config);
+  auto results = contact::steady_traction(model, setup.ground, cases, opt);
+  require_traction_converged(results);
+  return results;
 }
 
 }  // namespace modaltyre::report

@@ -26,6 +26,12 @@ nlohmann::json transient_json(const transient::TransientModel& model,
     j["final"]["width_mm"] = round_sig(fin.width_m * 1e3);
     j["final"]["contact_area_mm2"] = round_sig(fin.contact_area_m2 * 1e6);
   }
+  if (r.on_soil) {  // docs/soil.md section 8
+    j["ground"] = ground::to_string(model.tyre.config.ground.model);
+    j["final"]["soil_sinkage_mm"] = round_sig(fin.soil_sinkage_m * 1e3);
+    j["final"]["compaction_resistance_N"] = round_sig(fin.soil_resistance_N);
+    j["final"]["tyre_deflection_mm"] = round_sig((fin.sinking_m - fin.soil_sinkage_m) * 1e3);
+  }
   if (r.scenario == transient::Scenario::free_vibration) {
     const transient::BounceDecay d = transient::bounce_decay(r);
     if (d.peaks >= 2) {
@@ -76,6 +82,12 @@ std::vector<std::pair<std::string, std::vector<double>>> transient_series(
                           s.contact_length_m * 1e3,
                           s.longitudinal_force_N};
     for (std::size_t c = 0; c < 6; ++c) cols[c].second.push_back(row[c]);
+  }
+  if (r.on_soil) {
+    cols.push_back({"soil_sinkage_mm", {}});
+    for (const auto& s : r.samples) cols.back().second.push_back(s.soil_sinkage_m * 1e3);
+    cols.push_back({"compaction_resistance_N", {}});
+    for (const auto& s : r.samples) cols.back().second.push_back(s.soil_resistance_N);
   }
   return cols;
 }

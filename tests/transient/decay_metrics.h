@@ -1,5 +1,6 @@
 #pragma once
-// The free vibration's period and logarithmic decrement as issue 21 defines them (shared by
+// Means over a time window (transient_test.cc, soil_transient_test.cc), and the free
+// vibration's period and logarithmic decrement as issue 21 defines them (shared by
 // reference_test.cc and tread_window_test.cc; scripts/transient_reference_metrics.sh computes
 // the same from the CSV).
 #include <gtest/gtest.h>
@@ -11,6 +12,16 @@
 #include "modaltyre/transient/driver.h"
 
 namespace modaltyre::transient {
+
+/// Mean of a sample quantity over [t0, t1] (NaN without samples there).
+template <class F>
+double mean_over(const TransientResult& r, double t0, double t1, F get) {
+  double s = 0;
+  int n = 0;
+  for (const auto& x : r.samples)
+    if (x.t_s >= t0 && x.t_s < t1 + 1e-12) s += get(x), ++n;
+  return n ? s / n : NAN;
+}
 
 /// Least-squares slope of y over 0, 1, ..., n-1.
 inline double least_squares_slope(const std::vector<double>& y) {

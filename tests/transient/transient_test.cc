@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "decay_metrics.h"
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/core/errors.h"
 
@@ -38,15 +39,6 @@ constexpr double kBlock_s = 0.2;
 // is 2e-4 of the sinking (the 0.5 mm mesh differs from 0.25 mm by 1e-3 of it).
 constexpr double kSolverAgreement_m = 3e-6;
 
-/// Mean of a sample quantity over [t0, t1).
-template <class F>
-double mean_over(const TransientResult& r, double t0, double t1, F get) {
-  double s = 0;
-  int n = 0;
-  for (const auto& x : r.samples)
-    if (x.t_s >= t0 && x.t_s < t1 + 1e-12) s += get(x), ++n;
-  return n ? s / n : NAN;
-}
 // Eq. (22) vs the dashpots given: the contact set breathes with the bounce (a few units at 5 mm
 // resolution), so the effective damping differs from the static-contact sum by some percent.
 constexpr double kViscosityTol = 0.10;

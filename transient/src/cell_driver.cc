@@ -63,6 +63,11 @@ TransientResult run_transient_3d(const TransientModel& M, Scenario scenario,
 
 TransientResult run_scenario(const TransientModel& M, Scenario scenario,
                              const TransientRunOptions& options) {
+  if (M.tyre.config.footprint_3d && M.tyre.config.ground.soil()) {
+    throw InputError(InputLocation{M.tyre.config.source, 0, "ground.model"},
+                     "the transient on a soil runs on the 2D patch (a config without "
+                     "footprint_3d:, e.g. configs/sf350_2d_table3.yaml)");
+  }
   if (M.tyre.config.footprint_3d) return run_transient_3d(M, scenario, options);
   if (!options.map_times_s.empty())
     throw InputError({"--map-times", 0, ""},

@@ -6,6 +6,7 @@
 #include <chrono>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/transient/soil_contact.h"
 #include "modaltyre/transient/tread_window.h"
 #include "patch_ode.h"
 
@@ -20,24 +21,44 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
                      "the 2D patch's road is uniform across the tread: a cleat narrower than the "
                      "tread needs the 3D patch (a config with footprint_3d:)");
   }
-  const StaticContact initial = static_contact(M, plan.initial_load_N);
+  // On a soil (docs/soil.md section 8): the initial contact and the bounding one on it.
+  const bool on_soil = M.tyre.config.ground.soil();
+  if (on_soil && scenario == Scenario::cleat) {
+    throw InputError(InputLocation{M.tyre.config.source, 0, "ground.model"},
+                     "the cleat scenario crosses a rigid cleat on the rigid road; on a soil run "
+                     "load-hold, free-vibration or rolling");
+  }
+  if (on_soil && M.tyre.config.rigid) {
+    throw InputError(InputLocation{M.tyre.config.source, 0, "tyre.rigid"},
+                     "the transient runs the flexible tyre (the rigid wheel is traction's)");
+  }
+  StaticContact initial;
+  std::unique_ptr<SoilContact> soil;
+  if (on_soil)
+    soil = soil_for_plan(M, plan, initial);
+  else
+    initial = static_contact(M, plan.initial_load_N);
   const UnitRange all{0, M.m - 1};
   UnitRange units = all;
   if (!options.all_tread_states) {
-    const std::optional<StaticContact> bound = bounding_contact(M, plan, initial);
+    const std::optional<StaticContact> bound =
+        on_soil ? bounding_soil_contact(M, plan, initial, soil->bekker_width_m())
+                : bounding_contact(M, plan, initial);
     if (bound) units = touchable_units(M, plan, *bound);
   }
   bool escaped = false;
-  TransientResult res =
-      detail::run_plan(*detail::make_units_ode(M, plan, initial, units), M, plan, options, escaped);
+  TransientResult res = detail::run_plan(
+      *detail::make_units_ode(M, plan, initial, units, soil.get()), M, plan, options, escaped);
   if (escaped) {
     // A unit outside the range reached the road: the bound did not hold (section 2 of
-    // docs/transient.md); the run is repeated with every unit.
+    // docs/transient.md); the run is repeated with every unit (on the soil as it started).
     escaped = false;
-    res =
-        detail::run_plan(*detail::make_units_ode(M, plan, initial, all), M, plan, options, escaped);
+    if (soil) soil->set_memory(initial.soil_depth_m, 0.0);
+    res = detail::run_plan(*detail::make_units_ode(M, plan, initial, all, soil.get()), M, plan,
+                           options, escaped);
     res.units_escaped = true;
   }
+  res.on_soil = on_soil;
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return res;
 }

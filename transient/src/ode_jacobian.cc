@@ -9,6 +9,7 @@
 
 #include "modaltyre/core/errors.h"
 #include "modaltyre/transient/ode_system.h"
+#include "modaltyre/transient/soil_contact.h"
 
 namespace modaltyre::transient {
 namespace {
@@ -33,7 +34,8 @@ void TransientSystem::jacobian_stiffness(double t, const double* y, Eigen::Vecto
   const auto& M = model_;
   const int u0 = units_.lo, u1 = units_.hi;
   forces_into(t, y, kd);  // 0 outside units_
-  for (int i = u0; i <= u1; ++i) kd(i) = kd(i) > 0 ? M.k_contact(i) : 0.0;
+  for (int i = u0; i <= u1; ++i)
+    kd(i) = kd(i) > 0 ? (soil_ ? soil_->stiffness(i) : M.k_contact(i)) : 0.0;
   // While the patch is moving (units switched since the last Jacobian), units within
   // kJacobianEdgeMargin of the patch ends enter the Jacobian as if in contact: a unit that
   // touches between two Jacobian evaluations otherwise leaves Newton's matrix without its

@@ -7,6 +7,7 @@
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/transient/column_product.h"
+#include "modaltyre/transient/soil_contact.h"
 
 namespace modaltyre::transient {
 namespace {
@@ -169,6 +170,12 @@ void TransientSystem::tip_penetration_in_reach(double t, const double* y,
 void TransientSystem::penetration_band(double t, const double* y, Eigen::VectorXd& g, int& lo,
                                        int& hi, bool xi_ready, bool forces) const {
   const auto& M = model_;
+  if (forces && soil_) {
+    // On a soil: the penetrations, then the unit's spring in series with the soil (phi_i).
+    penetration_band(t, y, g, lo, hi, xi_ready, /*forces=*/false);
+    if (hi >= lo) soil_->forces(t, lo, hi - lo + 1, g.data() + lo);
+    return;
+  }
   if (!xi_ready) contact_coordinates(y);
   lo = 0, hi = -1;
   reach(t, y, lo, hi);
@@ -278,6 +285,12 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   // bound's measure saves the m x rank product at most steps (it was 9 % of a free vibration).
   // The contact set is the sign of g over the reach (g < 0 outside for certain).
   const auto& M = model_;
+  if (soil_) {
+    // The soil remembers the depths of this accepted state (soil_contact.h).
+    int a = 0, b = -1;
+    forces_band(t, y, scratch_f_, a, b);
+    soil_->accept(t, a, b);
+  }
   contact_coordinates(y);
   const bool refresh =
       p_ref_.size() != units_.size() ||
@@ -447,8 +460,8 @@ std::vector<double> TransientSystem::state_from(const StaticContact& c) const {
   if (ne_ > 0) contact_coordinates(y.data());
   for (int k = 0; k < ne_; ++k) {
     const int i = units_.lo + k;
-    const double p =
-        c.sinking_m - M.tyre.sag(i) - M.T_by_unit.col(i).dot(scratch_xi_) + road(0.0, i);
+    double p = c.sinking_m - M.tyre.sag(i) - M.T_by_unit.col(i).dot(scratch_xi_) + road(0.0, i);
+    if (c.soil_depth_m.size() == M.m) p -= c.soil_depth_m(i);  // on a soil: above its surface
     y[M.e_index() + k] = f(i) > 0 ? p - f(i) / M.k_contact(i) : std::max(0.0, p);
   }
   return y;

@@ -11,6 +11,7 @@
 #include "modaltyre/transient/cell_system.h"
 #include "modaltyre/transient/driver.h"
 #include "modaltyre/transient/scenario.h"
+#include "modaltyre/transient/soil_contact.h"
 #include "modaltyre/transient/tread_window.h"
 
 namespace modaltyre::transient::detail {
@@ -48,9 +49,11 @@ class PatchOde {
   virtual std::vector<double> full_state(const std::vector<double>& y) const = 0;
 };
 
-/// The 2D units `units` of `model` under `plan`, starting from `initial`.
+/// The 2D units `units` of `model` under `plan`, starting from `initial`; on `soil` when given
+/// (soil_contact.h; not owned, its memory that of `initial`).
 std::unique_ptr<PatchOde> make_units_ode(const TransientModel& model, const ScenarioPlan& plan,
-                                         const StaticContact& initial, UnitRange units);
+                                         const StaticContact& initial, UnitRange units,
+                                         SoilContact* soil = nullptr);
 /// The 3D cells of `cm` under `plan` with tread states on `ranges` (empty: every section),
 /// starting from `initial`.
 std::unique_ptr<PatchOde> make_cells_ode(const CellModel& cm, const ScenarioPlan& plan,

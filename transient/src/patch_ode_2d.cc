@@ -6,6 +6,7 @@
 #include "modaltyre/solvers/arrow_lu.h"
 #include "modaltyre/transient/contact_newton.h"
 #include "modaltyre/transient/ode_system.h"
+#include "modaltyre/transient/soil_contact.h"
 #include "patch_ode.h"
 
 namespace modaltyre::transient::detail {
@@ -54,6 +55,11 @@ TransientSample observe_units(const TransientModel& M, const TransientSystem& sy
   }
   s.contact_units = units;
   s.sinking_m = sink;
+  const SoilContact* soil = sys.soil();
+  if (soil) {
+    s.soil_sinkage_m = soil->deepest_loaded_m(u0, u1, f);
+    s.soil_resistance_N = soil->compaction_resistance_N(u0, u1, f);
+  }
   s.pressure_centre_m = s.load_N > 0 ? moment / s.load_N : 0;
   s.longitudinal_force_N = -moment / (R0 - z) - slope_force;
   if (first >= 0) {
@@ -81,8 +87,15 @@ TransientSample observe_units(const TransientModel& M, const TransientSystem& sy
     auto edge = [&](int inside, int outside) {
       const double x_in = deformed_x(inside);
       if (outside < 0 || outside >= M.m) return x_in;
-      const double phi_in = f(inside) * M.tyre.vertical_compliance(inside, inside);
-      const double phi_out = sys.tip_penetration_at(t, y, outside, /*xi_of_y=*/true);
+      double phi_in = f(inside) * M.tyre.vertical_compliance(inside, inside);
+      double phi_out = sys.tip_penetration_at(t, y, outside, /*xi_of_y=*/true);
+      if (soil) {
+        // On a soil (as ground_patch.cc): the soil's compliance dZ/df at the unit's force joins
+        // its own (the virgin curve's: soil_contact.h), and the gap outside is to the soil's
+        // surface.
+        phi_in += f(inside) * soil->virgin_compliance_m_N(inside);
+        phi_out -= soil->rut_m(outside, t);
+      }
       const double w = phi_in / (phi_in - phi_out);
       return x_in + w * (deformed_x(outside) - x_in);
     };
@@ -94,9 +107,10 @@ TransientSample observe_units(const TransientModel& M, const TransientSystem& sy
 class UnitsOde final : public PatchOde {
  public:
   UnitsOde(const TransientModel& M, const ScenarioPlan& plan, const StaticContact& initial,
-           UnitRange units)
+           UnitRange units, SoilContact* soil)
       : M_(M), plan_(plan), initial_(initial), sys_(M, plan, units), newton_(M, sys_) {
     sag_min_ = M.tyre.sag.minCoeff();
+    sys_.set_soil(soil);
   }
   int size() const override { return sys_.size(); }
   int full_size() const override { return M_.state_size(); }
@@ -184,8 +198,9 @@ class UnitsOde final : public PatchOde {
 }  // namespace
 
 std::unique_ptr<PatchOde> make_units_ode(const TransientModel& model, const ScenarioPlan& plan,
-                                         const StaticContact& initial, UnitRange units) {
-  return std::make_unique<UnitsOde>(model, plan, initial, units);
+                                         const StaticContact& initial, UnitRange units,
+                                         SoilContact* soil) {
+  return std::make_unique<UnitsOde>(model, plan, initial, units, soil);
 }
 
 }  // namespace modaltyre::transient::detail

@@ -23,7 +23,7 @@ StaticContact contact_of(const TransientModel& M, const contact::FootprintResult
 }  // namespace
 
 StaticContact static_contact(const TransientModel& M, double load_N) {
-  if (load_N <= 0) return StaticContact{Eigen::VectorXd::Zero(M.m), 0.0};
+  if (load_N <= 0) return StaticContact{Eigen::VectorXd::Zero(M.m), 0.0, {}};
   const contact::FootprintResult fr =
       contact::solve_footprint(M.tyre, contact::LoadCase{load_N, 0});
   if (!fr.ok()) throw ComputationError("static initial state: " + fr.message);

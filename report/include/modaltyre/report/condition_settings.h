@@ -63,8 +63,10 @@ void apply_condition_settings(const std::vector<ConditionSetting>& settings,
                               contact::OperatingConditions& c);
 
 /// "230 kPa, no hold, standing, loading branch, rigid road" (the load and horizontal force are
-/// stated per case).
-std::string describe_conditions(const contact::OperatingConditions& c);
+/// stated per case). On a config's ground other than the flat road the last part names it:
+/// "on the soil LETE sand (bekker)", "on the road profile FILE".
+std::string describe_conditions(const contact::OperatingConditions& c,
+                                const ground::GroundSettings& ground = {});
 
 /// "hold_s=60, surface=soil" (as written), for a header.
 std::string settings_text(const std::vector<ConditionSetting>& settings);

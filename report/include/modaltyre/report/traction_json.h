@@ -1,6 +1,7 @@
 #pragma once
 // The JSON document of `modaltyre traction --json` (docs/soil.md section 5).
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "modaltyre/contact/traction.h"
@@ -21,5 +22,28 @@ nlohmann::json traction_json(const contact::TyreConfig& config,
 
 /// ComputationError naming the first failed case with its reason.
 void require_traction_converged(const std::vector<contact::TractionResult>& results);
+
+/// What `modaltyre traction` runs on (shared by the command and Python's modaltyre.traction).
+struct TractionSetup {
+  contact::TyreConfig config;  ///< a 3D config becomes its 2D patch at the 3D tread width
+  ground::GroundSettings ground;
+  bool rigid = false;         ///< tyre.rigid: the rigid cylinder of the outer radius
+  std::string ground_source;  ///< the file that gave the ground (for its messages)
+};
+
+/// Reads the tyre config and the soil: `ground_path` (a soil file; empty: the config's ground:
+/// section). With a soil file the ground.* overrides go to it, the rest to the config;
+/// tyre.rigid is applied after the ground (the config reader refuses a rigid tyre on a road).
+/// InputError when the ground is not a soil, naming the file and ground.model.
+TractionSetup traction_setup(const std::string& config_path, const std::string& ground_path,
+                             const std::vector<std::string>& overrides);
+
+/// The 3D config's 2D patch (docs/soil.md section 5): the 3D tread width as contact width.
+void use_2d_patch_of_3d(contact::TyreConfig& config);
+
+/// Steady rolling for every load and slip (case by case, pass by pass), checked converged.
+std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
+                                                  const std::vector<double>& loads_N,
+                                                  const std::vector<double>& slips, int passes);
 
 }  // namespace modaltyre::report

@@ -22,6 +22,12 @@ struct TransientSample {
   double pressure_centre_m = 0;     ///< sum f x / sum f (+ forward)
   double speed_m_s = 0;
   int contact_units = 0;  ///< units (3D: sections) with a contact force
+  /// On a soil (2D patch): the deepest point of the loaded soil surface below the undisturbed
+  /// surface (docs/soil.md section 1); sinking_m is then the axle's approach to that surface.
+  double soil_sinkage_m = 0;
+  /// On a soil: the horizontal components of the normal forces on the soil surface's slope,
+  /// sum f_i tan(alpha_i) (traction's motion resistance R_c, docs/soil.md section 5) [N].
+  double soil_resistance_N = 0;
   /// 3D patch only (cell_model.h; 0 on the 2D patch): the widest section's lateral extent and
   /// the contact area sum_columns dy (x_front - x_rear).
   double width_m = 0;
@@ -60,6 +66,8 @@ struct TransientResult {
   bool units_escaped = false;
   /// Run on the 3D patch (cell_model.h): samples carry width_m and contact_area_m2.
   bool patch_3d = false;
+  /// Run on a soil (the config's ground, soil_contact.h): samples carry soil_sinkage_m.
+  bool on_soil = false;
   std::vector<CellMap> maps;  ///< 3D: the pressure maps at TransientRunOptions::map_times_s
   bool ok() const { return status == TransientStatus::completed; }
   double real_time_factor() const { return wall_s > 0 ? simulated_s / wall_s : 0; }

@@ -19,6 +19,8 @@
 
 namespace modaltyre::transient {
 
+class SoilContact;
+
 /// Upwind stencil of the tread advection, de/dtheta ~ (c0 e_i + c1 e_{i+1} + c2 e_{i+2}) / dtheta:
 /// second-order one-sided from the front. First order (-1, 1, 0) converged the rolling resistance
 /// at O(dtheta): 59.3 / 60.6 / 61.2 / 61.5 N at 2 / 1 / 0.5 / 0.25 mm, against 61.3 / 61.6 /
@@ -97,6 +99,11 @@ class TransientSystem {
   /// contact coordinates are then reused (an output sample's edge interpolation).
   double tip_penetration_at(double t, const double* y, int i, bool xi_of_y = false) const;
   int64_t nnz() const;
+  /// A deformable soil in series with every unit's contact spring (soil_contact.h; null: the
+  /// rigid road): forces phi_i(g_i), Newton's stiffness d phi / d g, and the soil's memory
+  /// recorded at every accepted step (update_contact_set()). Not owned.
+  void set_soil(SoilContact* soil) { soil_ = soil; }
+  const SoilContact* soil() const { return soil_; }
 
  private:
   /// g_i = z + h_i - s_i - u_i (- e_i): the tread tip's penetration (root functions).
@@ -153,6 +160,7 @@ class TransientSystem {
   double out_row_norm_max_ = 0;
   bool has_outside_ = false;
   mutable bool escaped_ = false;
+  SoilContact* soil_ = nullptr;
 };
 
 }  // namespace modaltyre::transient

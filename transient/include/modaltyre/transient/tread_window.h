@@ -40,6 +40,8 @@ struct UnitRange {
 struct StaticContact {
   Eigen::VectorXd f;
   double sinking_m = 0;
+  /// On a soil (soil_contact.h): its surface depth under every candidate (empty on a road).
+  Eigen::VectorXd soil_depth_m;
 };
 StaticContact static_contact(const TransientModel& model, double load_N);
 

@@ -1,0 +1,87 @@
+// The tyre on a soil as a user runs it: the footprint's header names the soil (not "rigid
+// road"), `transient --ground` gives the soil's columns, and what the transient on a soil does
+// not model is refused with exit 2 naming the key (docs/soil.md section 8).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli_runner.h"
+
+namespace {
+
+const std::string kSource = MODALTYRE_SOURCE_DIR;
+const std::string kConfig2d = kSource + "/configs/sf350_2d_table3.yaml";
+const std::string kConfig3d = kSource + "/configs/sf350.yaml";
+const std::string kLete = kSource + "/configs/soils/lete_sand.yaml";
+const std::vector<std::string> kCoarse = {"--set", "contact.unit_length_mm=5", "--set",
+                                          "contact.window_mm=300"};
+
+class SoilCli : public modaltyre_test::CliFixture {
+ protected:
+  modaltyre_test::CliRun transient(std::vector<std::string> extra) {
+    std::vector<std::string> a{"transient", kConfig2d,
+                               "--set",     "transient.load_hold.hold_s=0.2",
+                               "--set",     "transient.load_hold.ramp_rate_N_s=20000"};
+    a.insert(a.end(), kCoarse.begin(), kCoarse.end());
+    a.insert(a.end(), extra.begin(), extra.end());
+    return run(a);
+  }
+};
+
+TEST_F(SoilCli, TheFootprintHeaderNamesTheSoil) {
+  std::vector<std::string> a{"footprint", kConfig2d,
+                             "--load",    "3000",
+                             "--set",     "ground.model=bekker",
+                             "--set",     "ground.bekker.n=0.79",
+                             "--set",     "ground.bekker.k_c=102",
+                             "--set",     "ground.bekker.k_phi=5301"};
+  a.insert(a.end(), kCoarse.begin(), kCoarse.end());
+  const auto r = run(a);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("loading branch, on the soil bekker"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("rigid road"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("soil_sinkage_mm  tyre_deflection_mm  bekker_width_mm"), std::string::npos)
+      << r.out;
+}
+
+TEST_F(SoilCli, TransientOntoTheSoilGivesItsColumns) {
+  const auto r = transient({"--scenario", "load-hold", "--ground", kLete, "--json", "--csv",
+                            (dir_ / "lh.csv").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["ground"], "bekker");
+  const double soil = j["final"]["soil_sinkage_mm"].get<double>();
+  EXPECT_GT(soil, 1.0);  // LETE sand at 4 kN: ~14 mm
+  EXPECT_NEAR(j["final"]["tyre_deflection_mm"].get<double>(),
+              j["final"]["sinking_mm"].get<double>() - soil, 1e-6 * soil);
+  const std::string csv = modaltyre_test::slurp(dir_ / "lh.csv");
+  EXPECT_NE(csv.find(",soil_sinkage_mm,compaction_resistance_N\n"), std::string::npos)
+      << csv.substr(0, 200);
+}
+
+TEST_F(SoilCli, WhatTheTransientOnSoilDoesNotModelIsRefused) {
+  // A road given as --ground.
+  const auto road = dir_ / "road.yaml";
+  std::ofstream(road) << "ground:\n  model: rigid\n";
+  const auto a = transient({"--scenario", "load-hold", "--ground", road.string()});
+  EXPECT_EQ(a.exit_code, 2);
+  EXPECT_NE(a.err.find("ground.model"), std::string::npos) << a.err;
+  // The cleat (a rigid obstacle on the road).
+  const auto b = transient({"--scenario", "cleat", "--ground", kLete});
+  EXPECT_EQ(b.exit_code, 2);
+  EXPECT_NE(b.err.find("ground.model"), std::string::npos) << b.err;
+  // The 3D patch.
+  const auto c = run({"transient", kConfig3d, "--scenario", "load-hold", "--ground", kLete});
+  EXPECT_EQ(c.exit_code, 2);
+  EXPECT_NE(c.err.find("ground.model"), std::string::npos) << c.err;
+  // A soil key the file does not know.
+  const auto d = transient(
+      {"--scenario", "load-hold", "--ground", kLete, "--set", "ground.bekker.no_such_key=1"});
+  EXPECT_EQ(d.exit_code, 2);
+  EXPECT_NE(d.err.find("no_such_key"), std::string::npos) << d.err;
+}
+
+}  // namespace

@@ -1,0 +1,245 @@
+#include "modaltyre/transient/soil_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "modaltyre/contact/footprint.h"
+#include "modaltyre/contact/ground_patch.h"
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::transient {
+namespace {
+
+/// The series root is solved until its residual in the penetration is below this share of g:
+/// 1e-13 of a 10 mm penetration is 1e-15 m, a force error of ~1e-9 N on a tread spring of
+/// 1e6 N/m, far below the integrator's tolerances (0.1 um on displacements).
+constexpr double kRootTolerance = 1e-13;
+/// Safeguarded Newton steps before giving up on quadratic convergence (bisection guarantees
+/// progress; 200 halvings reach any double's resolution).
+constexpr int kMaxRootIterations = 200;
+
+}  // namespace
+
+SoilContact::SoilContact(const TransientModel& M, const ground::GroundSettings& ground,
+                         double width_m, double bekker_width_m,
+                         std::function<double(double)> distance)
+    : law_(ground.normal_law(bekker_width_m)),
+      distance_(std::move(distance)),
+      bekker_width_m_(bekker_width_m) {
+  if (!(width_m > 0)) throw std::invalid_argument("SoilContact: contact width must be positive");
+  const int m = M.m;
+  area_.resize(m);
+  for (int i = 0; i < m; ++i) area_(i) = width_m * M.tyre.unit_length_m * std::cos(M.tyre.theta[i]);
+  k_ = M.k_contact;
+  x_ = M.x_road;
+  z_max_.setZero(m);
+  stiffness_.setZero(m);
+  depth_.setZero(m);
+  pressure_.setZero(m);
+}
+
+void SoilContact::set_memory(const Eigen::VectorXd& z_max_m, double t) {
+  if (z_max_m.size() != z_max_.size())
+    throw std::invalid_argument("SoilContact: one z_max per unit");
+  z_max_ = z_max_m.cwiseMax(0.0);
+  z_max_prev_ = z_max_;
+  distance_acc_ = distance_prev_ = distance_ ? distance_(t) : 0.0;
+  t_accepted_ = t;
+}
+
+const Eigen::VectorXd& SoilContact::memory(double t, double& shift) const {
+  const double D = distance_ ? distance_(t) : 0.0;
+  if (t < t_accepted_) {
+    shift = distance_ ? D - distance_prev_ : 0.0;
+    return z_max_prev_;
+  }
+  shift = distance_ ? D - distance_acc_ : 0.0;
+  return z_max_;
+}
+
+double SoilContact::memory_at(const Eigen::VectorXd& zm, int i, double shift) const {
+  if (shift == 0.0) return zm(i);
+  const int m = static_cast<int>(x_.size());
+  const double X = x_(i) + shift;
+  if (X >= x_(m - 1)) return X > x_(m - 1) ? 0.0 : zm(m - 1);  // ahead: virgin soil
+  if (X <= x_(0)) return zm(0);
+  // The step's travel is a few units at most: walk from i.
+  int j = i;
+  while (j + 1 < m && x_(j + 1) <= X) ++j;
+  while (j > 0 && x_(j) > X) --j;
+  const double w = (X - x_(j)) / (x_(j + 1) - x_(j));
+  return (1 - w) * zm(j) + w * zm(j + 1);
+}
+
+double SoilContact::z_max_m(int i, double t) const {
+  double s = 0;
+  const Eigen::VectorXd& zm = memory(t, s);
+  return memory_at(zm, i, s);
+}
+
+double SoilContact::rut_m(int i, double t) const {
+  const double zm = z_max_m(i, t);
+  return zm > 0 ? law_->rebound_depth_m(zm) : 0.0;
+}
+
+double SoilContact::unit_force(int i, double g, double zm, double* dfdg, double* depth) const {
+  const ground::PressureSinkage& L = *law_;
+  const double A = area_(i), k = k_(i);
+  const double rut = zm > 0 ? L.rebound_depth_m(zm) : 0.0;
+  if (!(g > rut)) {
+    *dfdg = 0;
+    *depth = rut;
+    pressure_(i) = 0;
+    return 0;
+  }
+  // h(p) = A p / k + Z(p) - g, increasing in p; the root lies in [0, k (g - rut) / A] since
+  // Z >= rut. The branch is known from h at the memory's virgin pressure.
+  double lo = 0, hi = k * (g - rut) / A;
+  bool virgin = true;
+  if (zm > 0) {
+    const double pv = L.loading_Pa(zm);
+    if (A * pv / k + zm - g >= 0) {
+      virgin = false;
+      hi = std::min(hi, pv);
+      if (L.rigid_plastic()) {  // a vertical branch at z_max: the tread spring alone
+        const double p = k * (g - zm) / A;
+        *dfdg = k;
+        *depth = zm;
+        pressure_(i) = p;
+        return p * A;
+      }
+    } else {
+      lo = pv;
+    }
+  }
+  auto Z = [&](double p) { return virgin ? L.loading_sinkage_m(p) : L.unloading_sinkage_m(p, zm); };
+  double p = pressure_(i);
+  if (!(p > lo && p < hi)) p = 0.5 * (lo + hi);
+  const double tol = kRootTolerance * g;
+  double dZ = 0;
+  for (int it = 0; it < kMaxRootIterations; ++it) {
+    const double h = A * p / k + Z(p) - g;
+    if (h > 0)
+      hi = p;
+    else
+      lo = p;
+    dZ = L.compliance_m_per_Pa(p, virgin ? 0.0 : zm);
+    if (std::abs(h) <= tol || hi - lo <= 1e-15 * hi) break;
+    double next = p - h / (A / k + dZ);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    p = next;
+  }
+  pressure_(i) = p;
+  *depth = Z(p);
+  *dfdg = 1.0 / (1.0 / k + dZ / A);
+  return p * A;
+}
+
+void SoilContact::forces(double t, int lo, int n, double* g) const {
+  double s = 0;
+  const Eigen::VectorXd& zm = memory(t, s);
+  band_lo_ = lo, band_hi_ = lo + n - 1, t_forces_ = t;
+  for (int k = 0; k < n; ++k) {
+    const int i = lo + k;
+    double d = 0, z = 0;
+    g[k] = unit_force(i, g[k], memory_at(zm, i, s), &d, &z);
+    stiffness_(i) = d;
+    depth_(i) = z;
+  }
+}
+
+double SoilContact::depth(int i) const {
+  return i >= band_lo_ && i <= band_hi_ ? depth_(i) : rut_m(i, t_forces_);
+}
+
+double SoilContact::deepest_loaded_m(int lo, int hi, const Eigen::VectorXd& f) const {
+  double deepest = 0;
+  for (int i = lo; i <= hi; ++i)
+    if (f(i) > 0) deepest = std::max(deepest, depth(i));
+  return deepest;
+}
+
+double SoilContact::compaction_resistance_N(int lo, int hi, const Eigen::VectorXd& f) const {
+  double R = 0;
+  const int m = static_cast<int>(x_.size());
+  for (int i = std::max(lo, 1); i <= std::min(hi, m - 2); ++i)
+    if (f(i) > 0) R += f(i) * (depth(i - 1) - depth(i + 1)) / (x_(i + 1) - x_(i - 1));
+  return R;
+}
+
+void SoilContact::accept(double t, int lo, int hi) {
+  z_max_prev_ = z_max_;
+  distance_prev_ = distance_acc_;
+  t_accepted_ = t;
+  const double s = distance_ ? distance_(t) - distance_acc_ : 0.0;
+  if (s != 0.0) {
+    // Move the memory with the ground (the units' own values read ahead of them).
+    const int m = static_cast<int>(z_max_.size());
+    Eigen::VectorXd moved(m);
+    for (int i = 0; i < m; ++i) moved(i) = memory_at(z_max_prev_, i, s);
+    z_max_ = moved;
+    distance_acc_ += s;
+  }
+  for (int i = lo; i <= hi; ++i) z_max_(i) = std::max(z_max_(i), depth_(i));
+}
+
+}  // namespace modaltyre::transient
+
+namespace modaltyre::transient {
+
+StaticContact static_soil_contact(const TransientModel& M, double load_N, double bekker_width_m,
+                                  double* bekker_used) {
+  StaticContact c{Eigen::VectorXd::Zero(M.m), 0.0, Eigen::VectorXd::Zero(M.m)};
+  if (bekker_used) *bekker_used = bekker_width_m;
+  if (load_N <= 0) return c;
+  contact::GroundPatchInput in;
+  in.bekker_width_m = bekker_width_m;
+  in.fixed_bekker_width = bekker_width_m > 0;
+  const contact::FootprintResult fr =
+      contact::solve_ground_patch(M.tyre, contact::static_operator(M.tyre, 0.0),
+                                  contact::LoadCase{load_N, 0}, M.tyre.config.ground, in);
+  if (!fr.ok()) throw ComputationError("static contact on the soil: " + fr.message);
+  std::size_t k = 0;
+  for (int i = 0; i < M.m; ++i)
+    if (fr.active[i]) c.f(i) = fr.units.at(k++).fz_N;
+  c.sinking_m = fr.sinking_m;
+  if (static_cast<int>(fr.soil_depth_m.size()) == M.m)
+    c.soil_depth_m = Eigen::Map<const Eigen::VectorXd>(fr.soil_depth_m.data(), M.m);
+  if (bekker_used) *bekker_used = fr.bekker_width_m;
+  return c;
+}
+
+std::optional<StaticContact> bounding_soil_contact(const TransientModel& M,
+                                                   const ScenarioPlan& plan,
+                                                   const StaticContact& initial,
+                                                   double bekker_width_m) {
+  double F_max = std::max(plan.load(0.0), plan.load(plan.duration_s));
+  for (double t : plan.breakpoints) F_max = std::max(F_max, plan.load(t));
+  if (F_max <= plan.initial_load_N) return initial;
+  try {
+    return static_soil_contact(M, 2 * F_max - plan.initial_load_N, bekker_width_m);
+  } catch (const ComputationError&) {
+    return std::nullopt;
+  }
+}
+
+std::unique_ptr<SoilContact> soil_for_plan(const TransientModel& M, const ScenarioPlan& plan,
+                                           StaticContact& initial) {
+  // Bekker's b (the smaller side of the loaded area) changes with the contact length; the run
+  // keeps the static footprint's at the scenario's largest load (where the sinkage is made).
+  double F_max = std::max({plan.load(0.0), plan.load(plan.duration_s), plan.initial_load_N});
+  for (double t : plan.breakpoints) F_max = std::max(F_max, plan.load(t));
+  double b = 0;
+  static_soil_contact(M, F_max, 0.0, &b);
+  const double width = M.tyre.config.tread.width_m;
+  if (!(b > 0)) b = width;
+  std::function<double(double)> distance;
+  if (plan.speed_m_s != 0) distance = [&plan](double t) { return plan.distance(t); };
+  auto soil = std::make_unique<SoilContact>(M, M.tyre.config.ground, width, b, distance);
+  initial = static_soil_contact(M, plan.initial_load_N, b);
+  soil->set_memory(initial.soil_depth_m, 0.0);
+  return soil;
+}
+
+}  // namespace modaltyre::transient
