@@ -1,5 +1,6 @@
 #include "modaltyre/transient/cell_newton.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "modaltyre/transient/column_product.h"
@@ -29,6 +30,26 @@ CellNewton::CellNewton(const CellModel& cm, const CellSystem& system)
   }
   CqT_ = M.Cq.transpose();
   CrT_ = M.Cr.transpose();
+  // The semismooth update (update_active_set()): per slot its class and contact spring, and
+  // the contact basis transposed (a section's row contiguous).
+  semismooth_ = cm.classes.size() > 1;
+  kc_slot_.resize(system.cells());
+  slot_class_.resize(system.cells());
+  for (int c = 0; c < cm.classes.size(); ++c) {
+    const UnitRange& r = system.ranges()[c];
+    for (int k = 0; k < r.size(); ++k) {
+      kc_slot_(system.offset(c) + k) = cm.k_contact(r.lo + k);
+      slot_class_[system.offset(c) + k] = c;
+    }
+  }
+  TT_ = M.T.transpose();
+  trow_.resize(np_);
+  // solve_ee()'s lanes: the classes with tread states, by the length of their range.
+  for (int c = 0; c < cm.classes.size(); ++c)
+    if (ne_ > 0 && system.ranges()[c].size() > 0) lane_order_.push_back(c);
+  std::stable_sort(lane_order_.begin(), lane_order_.end(), [&](int a, int b) {
+    return system.ranges()[a].size() > system.ranges()[b].size();
+  });
   eta_.resize(np_);
   eta0_.resize(np_);
   phi_.resize(np_);
@@ -50,24 +71,8 @@ bool CellNewton::setup(double t, const double* y, double gamma, bool jacobian_ok
 void CellNewton::factor(double gamma) {
   const TransientModel& M = M_;
   const CellClasses& C = cm_.classes;
-  const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank, nc = C.size();
+  const int nr = M.nr, rank = M.rank, nc = C.size();
   gamma_ = gamma;
-  for (Block& b : blocks_) {
-    Eigen::Matrix4d d = Eigen::Matrix4d::Identity();
-    const int h = b.n / 2;
-    for (int a = 0; a < h; ++a) {
-      d(a, h + a) = -gamma;
-      const ModalRow r = modal_row(M, b.idx[a], Omega_, dOmega_);
-      const int o = h == 2 ? 1 - a : a;
-      d(h + a, a) -= gamma * r.dq;
-      d(h + a, h + a) -= gamma * r.dv;
-      if (h == 2) {
-        d(h + a, o) -= gamma * r.dq_p;
-        d(h + a, h + o) -= gamma * r.dv_p;
-      }
-    }
-    b.inv = d.inverse();
-  }
   d_r_inv_ = nr > 0 ? 1.0 / (1.0 + gamma / M.tau_residual_s) : 1.0;
   const bool hub_free = sys_.plan().hub_free();
   d_zw_ = hub_free ? gamma : 0.0;  // a prescribed hub: z' = w' = 0, D = I on (z, w)
@@ -89,6 +94,7 @@ void CellNewton::factor(double gamma) {
   }
   // M_EE's diagonal per slot, its (uniform) super-diagonals along each class.
   const double adv = Omega_ / M.tyre.dtheta_rad;
+  adv_ = adv;
   ee_s1_ = -gamma * kUpwind[1] * adv;
   ee_s2_ = -gamma * kUpwind[2] * adv;
   ee_d_inv_.resize(ne_);
@@ -148,8 +154,61 @@ void CellNewton::factor(double gamma) {
   if (at_rest || ne_ == 0) {
     for (int s = 0; s < ns_; ++s) R.row(s) = w_sec_(s) * Tt_.row(s);
   }
-  K_.noalias() = Tt_.transpose().lazyProduct(R);
-  if (ns_ == 0) K_.setZero(np_, np_);
+  if (ns_ == 0) {
+    K_.setZero(np_, np_);
+  } else {
+    K_.noalias() = Tt_.transpose().lazyProduct(R);
+  }
+  // D^-1 Q and H = P D^-1 Q depend on gamma and the spin only, not on the contact: kept from
+  // the last factorisation when those are the same.
+  if (!(dq_ready_ && gamma == dq_gamma_ && Omega_ == dq_Omega_ && dOmega_ == dq_dOmega_)) {
+    dq_ready_ = true, dq_gamma_ = gamma, dq_Omega_ = Omega_, dq_dOmega_ = dOmega_;
+    factor_dq(gamma);
+  }
+  // The capacitance matrix in the 2D solver's order of operations (contact_newton.cc): a flat
+  // crown's one class then repeats the 2D transient's arithmetic (FlatCrown test; a
+  // rounding-level change here moved its 0.3 s hold's end load by 0.9 %).
+  cap_mat_ = Eigen::MatrixXd::Identity(np_, np_) - gamma * H_.lazyProduct(K_);
+  factor_cap();
+}
+
+void CellNewton::update_cap(double gamma) {
+  // I - gamma H K by columns (the vectorised product: Eigen's blocked one would hand these sizes
+  // to OpenMP threads, which only wait on the shared cores).
+  cap_mat_.resize(np_, np_);
+  for (int k = 0; k < np_; ++k) column_product(H_, K_.col(k), cap_mat_.col(k));
+  cap_mat_ *= -gamma;
+  cap_mat_.diagonal().array() += 1.0;
+  factor_cap();
+}
+
+void CellNewton::factor_cap() {
+  cap_.compute(cap_mat_);
+  cap_lu_ = cap_.matrixLU();
+  cap_perm_ = cap_.permutationP().indices();
+}
+
+void CellNewton::factor_dq(double gamma) {
+  const TransientModel& M = M_;
+  const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank;
+  const bool hub_free = sys_.plan().hub_free();
+  // D's 2 x 2 / 4 x 4 blocks per mode (pair) and their inverses.
+  for (Block& b : blocks_) {
+    Eigen::Matrix4d d = Eigen::Matrix4d::Identity();
+    const int h = b.n / 2;
+    for (int a = 0; a < h; ++a) {
+      d(a, h + a) = -gamma;
+      const ModalRow r = modal_row(M, b.idx[a], Omega_, dOmega_);
+      const int o = h == 2 ? 1 - a : a;
+      d(h + a, a) -= gamma * r.dq;
+      d(h + a, h + a) -= gamma * r.dv;
+      if (h == 2) {
+        d(h + a, o) -= gamma * r.dq_p;
+        d(h + a, h + o) -= gamma * r.dv_p;
+      }
+    }
+    b.inv = d.inverse();
+  }
   DQ_.setZero(nx_, np_);
   for (const Block& b : blocks_) {
     const int h = b.n / 2;
@@ -168,10 +227,6 @@ void CellNewton::factor(double gamma) {
     if (nr > 0) column_product(M.Cr, DQ_.col(k).segment(2 * nq, nr), H_.col(k), true);
   }
   H_.row(rank) = DQ_.row(Z);
-  const Eigen::MatrixXd cap = Eigen::MatrixXd::Identity(np_, np_) - gamma * H_.lazyProduct(K_);
-  cap_.compute(cap);
-  cap_lu_ = cap_.matrixLU();
-  cap_perm_ = cap_.permutationP().indices();
 }
 
 void CellNewton::solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
@@ -207,19 +262,106 @@ void CellNewton::solve_ee(double* y) const {
     Eigen::Map<Eigen::VectorXd>(y, ne_).array() *= ee_d_inv_.array();
     return;
   }
-  for (int c = 0; c < cm_.classes.size(); ++c) {
-    const int n = sys_.ranges()[c].size(), o = sys_.offset(c);
-    double* yc = y + o;
-    for (int k = n - 1; k >= 0; --k) {
-      double v = yc[k];
-      if (k + 1 < n) v -= ee_s1_ * yc[k + 1];
-      if (k + 2 < n) v -= ee_s2_ * yc[k + 2];
-      yc[k] = v * ee_d_inv_(o + k);
+  // Each class's back substitution is a serial recurrence (its latency, not its arithmetic, is
+  // the cost): kLanes classes of similar length run in lockstep, aligned at their ends, so that
+  // their chains overlap. The same operations per element as one class at a time.
+  const double s1 = ee_s1_, s2 = ee_s2_;
+  const double* dinv = ee_d_inv_.data();
+  auto one = [&](double* yc, const double* dc, int n, int k) {
+    double v = yc[k];
+    if (k + 1 < n) v -= s1 * yc[k + 1];
+    if (k + 2 < n) v -= s2 * yc[k + 2];
+    yc[k] = v * dc[k];
+  };
+  for (std::size_t g = 0; g < lane_order_.size(); g += kLanes) {
+    const int lanes = static_cast<int>(std::min<std::size_t>(kLanes, lane_order_.size() - g));
+    double* yc[kLanes];
+    const double* dc[kLanes];
+    int n[kLanes];
+    int nmin = 1 << 30;
+    for (int l = 0; l < lanes; ++l) {
+      const int c = lane_order_[g + l];
+      n[l] = sys_.ranges()[c].size();
+      yc[l] = y + sys_.offset(c);
+      dc[l] = dinv + sys_.offset(c);
+      nmin = std::min(nmin, n[l]);
     }
+    // Steps t = 0, 1 from each end (the band's boundary), then t = 2 .. nmin - 1 in lockstep,
+    // then each lane's remaining front.
+    const int head = std::min(2, nmin);
+    for (int l = 0; l < lanes; ++l)
+      for (int t = 0; t < head; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
+    if (lanes == kLanes) {
+      double* ye[kLanes];
+      const double* de[kLanes];
+      for (int l = 0; l < kLanes; ++l) ye[l] = yc[l] + n[l] - 1, de[l] = dc[l] + n[l] - 1;
+      for (int t = head; t < nmin; ++t)
+        for (int l = 0; l < kLanes; ++l)
+          ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
+    } else {
+      for (int l = 0; l < lanes; ++l)
+        for (int t = head; t < nmin; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
+    }
+    for (int l = 0; l < lanes; ++l)
+      for (int t = nmin; t < n[l]; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
   }
 }
 
-void CellNewton::solve(double* x) const {
+void CellNewton::update_active_set() {
+  const Eigen::VectorXd& f = sys_.last_forces();
+  const int n = sys_.cells();
+  if (f.size() != n || kd_.size() != n) return;
+  changed_.clear();
+  for (int k = 0; k < n; ++k)
+    if ((f(k) > 0) != (kd_(k) > 0)) changed_.push_back(k);
+  if (changed_.empty()) return;
+  const TransientModel& M = M_;
+  const CellClasses& C = cm_.classes;
+  // Each cell enters K through its section's weight: at rest (M_EE diagonal) exactly w_i =
+  // sum_c mu_c kd_ic (1 - gamma kd_ic / c'_i / d_ic) (factor()), so K changes by
+  // (w_i,new - w_i,old) T~_i^T T~_i for the sections of the switched cells. Rolling, a cell's
+  // stiffness also reaches the cells in front of it along the class's band (Y, factor()): that
+  // part is left to the next setup, i.e. the switched cell's own diagonal term only (an inexact
+  // Jacobian, as the whole matrix is between setups; a new factor() per switch cost a cleat run
+  // 1.6 times its time for 2 % fewer steps).
+  const double gamma = gamma_;
+  const int rank = M.rank;
+  const double dz = sys_.plan().hub_free() ? 1.0 : 0.0;
+  dw_.clear();
+  for (int k : changed_) {
+    const int c = slot_class_[k], i = sys_.ranges()[c].lo + (k - sys_.offset(c));
+    const double mu = C.multiplicity[c], c_kv = ne_ > 0 ? cm_.c_kv(i) : 0.0;
+    auto weight = [&](double kd) {
+      return ne_ > 0 ? mu * kd * (1.0 - gamma * kd / c_kv * ee_d_inv_(k)) : mu * kd;
+    };
+    const double w_old = weight(kd_(k));
+    kd_(k) = f(k) > 0 ? kc_slot_(k) : 0.0;
+    if (ne_ > 0)
+      ee_d_inv_(k) = 1.0 / (1.0 - gamma * (kUpwind[0] * adv_ - (kd_(k) + cm_.k_kv(i)) / c_kv));
+    dw_.emplace_back(i, weight(kd_(k)) - w_old);
+  }
+  for (const auto& [i, dw] : dw_) {
+    trow_.head(rank) = -TT_.col(i);
+    trow_(rank) = dz;
+    K_.noalias() += (dw * trow_) * trow_.transpose();
+  }
+  // The span of sections with an active cell (solve() reads T~ over it) only grows here.
+  int lo = ns_ > 0 ? s0_ : M.m, hi = ns_ > 0 ? s0_ + ns_ - 1 : -1;
+  for (const auto& [i, dw] : dw_) lo = std::min(lo, i), hi = std::max(hi, i);
+  if (lo != s0_ || hi - lo + 1 != ns_) {
+    s0_ = lo;
+    ns_ = hi - lo + 1;
+    Tt_.resize(ns_, np_);
+    for (int s = 0; s < ns_; ++s) {
+      Tt_.row(s).head(rank) = -TT_.col(s0_ + s).transpose();
+      Tt_(s, rank) = dz;
+    }
+  }
+  update_cap(gamma);
+}
+
+void CellNewton::solve(double* x) {
+  if (semismooth_) update_active_set();
   const TransientModel& M = M_;
   const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank, nc = cm_.classes.size();
   Eigen::Map<Eigen::VectorXd> xx(x, nx_);

@@ -24,6 +24,10 @@ class CellObserver {
     for (int i = 0; i < M_.m; ++i)
       cos_[i] = std::cos(M_.tyre.theta[i]), sin_[i] = std::sin(M_.tyre.theta[i]);
     stamp_.assign(M_.m, 0);
+    // The shapes transposed: belt() reads one section's row, contiguous here (a row of the
+    // m x nq column-major matrices strides over nq cache lines).
+    phi_r_t_ = M_.phi_r.transpose();
+    phi_t_t_ = M_.phi_t.transpose();
     ur_.assign(M_.m, 0.0);
     ut_.assign(M_.m, 0.0);
     // Columns ordered from the centre outwards on each side: the lateral edge search.
@@ -106,10 +110,13 @@ class CellObserver {
     double length = 0, area = 0;
     for (int c = 0; c < C.size(); ++c) {
       const UnitRange& r = sys_.ranges()[c];
-      int a = -1, b = -1;
-      for (int k = 0; k < r.size(); ++k)
-        if (f_(sys_.offset(c) + k) > 0) b = r.lo + k, a = a < 0 ? r.lo + k : a;
-      if (a < 0) continue;
+      // The first and last cell in contact, scanned in from either end of the range.
+      const double* fc = f_.data() + sys_.offset(c);
+      int ka = 0, kb = r.size() - 1;
+      while (ka < r.size() && !(fc[ka] > 0)) ++ka;
+      if (ka == r.size()) continue;
+      while (!(fc[kb] > 0)) --kb;
+      const int a = r.lo + ka, b = r.lo + kb;
       // As the 2D driver and the 3D patch: the level function is the cell's tread compression
       // f / k_i inside (at rest d_i - z_c, patch3d.cc) and its tip penetration g < 0 outside
       // (at rest the gap d_i - z_c; behind a rolling patch the relaxed rubber's lift).
@@ -169,7 +176,7 @@ class CellObserver {
   void belt(int i) {
     if (stamp_[i] == belt_stamp_) return;
     stamp_[i] = belt_stamp_;
-    double ur = M_.phi_r.row(i).dot(q_), ut = M_.phi_t.row(i).dot(q_);
+    double ur = phi_r_t_.col(i).dot(q_), ut = phi_t_t_.col(i).dot(q_);
     if (M_.nr > 0) {
       // sum_j h(i - j) (F_j cos_j, F_j sin_j), j over the patch (fr_rev_: j = last - k, so the
       // kernel index i - j + lags - 1 runs up from i - last + lags - 1).
@@ -191,6 +198,7 @@ class CellObserver {
   double sag_min_ = 0;
   std::vector<int> slot_class_;
   Eigen::VectorXd f_, F_, g_, P_, q_, fr_rev_, ft_rev_;
+  Eigen::MatrixXd phi_r_t_, phi_t_t_;  ///< nq x m
   std::vector<double> ur_, ut_, cos_, sin_;
   std::vector<long> stamp_;
   long belt_stamp_ = 0;

@@ -62,6 +62,8 @@ class CellSystem {
   /// the next Jacobian. Also checks the sections just outside each class's range (escaped()).
   int update_contact_set(double t, const double* y) const;
   bool escaped() const { return escaped_; }
+  /// The cell forces of the last rhs() (the Newton iterate CVODE evaluated last).
+  const Eigen::VectorXd& last_forces() const { return f_; }
   double spin(double t) const;
   double spin_rate(double t) const;
   /// The hub's displacement z at (t, y): the state's, or the prescribed hub's (scenario.h).
