@@ -179,7 +179,41 @@ void CellNewton::update_cap(double gamma) {
   for (int k = 0; k < np_; ++k) column_product(H_, K_.col(k), cap_mat_.col(k));
   cap_mat_ *= -gamma;
   cap_mat_.diagonal().array() += 1.0;
-  factor_cap();
+  // Its LU with partial pivoting, unblocked on the row-major copy solve_cap() reads (Eigen's
+  // blocked LU runs these 42 x 42 through its matrix-product kernels).
+  const int n = np_;
+  cap_lu_ = cap_mat_;
+  double* a = cap_lu_.data();
+  rowperm_.resize(n);
+  for (int i = 0; i < n; ++i) rowperm_[i] = i;
+  bool ok = true;
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    for (int i = k + 1; i < n; ++i)
+      if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
+    if (p != k) {
+      std::swap_ranges(a + k * n, a + (k + 1) * n, a + p * n);
+      std::swap(rowperm_[k], rowperm_[p]);
+    }
+    const double pivot = a[k * n + k];
+    if (!(std::isfinite(pivot) && pivot != 0)) {
+      ok = false;
+      break;
+    }
+    const double* rk = a + k * n;
+    for (int i = k + 1; i < n; ++i) {
+      double* ri = a + i * n;
+      const double l = ri[k] / pivot;
+      ri[k] = l;
+      for (int j = k + 1; j < n; ++j) ri[j] -= l * rk[j];
+    }
+  }
+  if (!ok) {
+    factor(gamma);  // the whole factorisation at the current contact set
+    return;
+  }
+  cap_perm_.resize(n);
+  for (int pos = 0; pos < n; ++pos) cap_perm_(rowperm_[pos]) = pos;
 }
 
 void CellNewton::factor_cap() {
@@ -340,10 +374,18 @@ void CellNewton::update_active_set() {
       ee_d_inv_(k) = 1.0 / (1.0 - gamma * (kUpwind[0] * adv_ - (kd_(k) + cm_.k_kv(i)) / c_kv));
     dw_.emplace_back(i, weight(kd_(k)) - w_old);
   }
-  for (const auto& [i, dw] : dw_) {
-    trow_.head(rank) = -TT_.col(i);
-    trow_(rank) = dz;
-    K_.noalias() += (dw * trow_) * trow_.transpose();
+  // dK = Tc^T diag(dw) Tc over the changed sections' rows T~_i (Tc), by columns.
+  const int nchg = static_cast<int>(dw_.size());
+  Tc_.resize(nchg, np_);
+  dwv_.resize(nchg);
+  for (int a = 0; a < nchg; ++a) {
+    Tc_.row(a).head(rank) = -TT_.col(dw_[a].first).transpose();
+    Tc_(a, rank) = dz;
+    dwv_(a) = dw_[a].second;
+  }
+  for (int k = 0; k < np_; ++k) {
+    trow_ = dwv_.cwiseProduct(Tc_.col(k));
+    column_dots(Tc_, trow_, K_.col(k), 1.0, true);
   }
   // The span of sections with an active cell (solve() reads T~ over it) only grows here.
   int lo = ns_ > 0 ? s0_ : M.m, hi = ns_ > 0 ? s0_ + ns_ - 1 : -1;

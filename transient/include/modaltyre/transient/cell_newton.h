@@ -66,8 +66,9 @@ class CellNewton {
   Eigen::VectorXd kc_slot_;      ///< per slot: contact spring
   std::vector<int> slot_class_;  ///< per slot: its class
   Eigen::MatrixXd TT_;           ///< T^T (rank x m)
-  Eigen::VectorXd trow_;
-  std::vector<int> changed_;
+  Eigen::MatrixXd Tc_;           ///< update_active_set(): T~ rows of the changed sections
+  Eigen::VectorXd trow_, dwv_;
+  std::vector<int> changed_, rowperm_;
   std::vector<std::pair<int, double>> dw_;
   double dq_gamma_ = 0, dq_Omega_ = 0, dq_dOmega_ = 0;
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
