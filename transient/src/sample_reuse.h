@@ -2,6 +2,8 @@
 // Output samples that repeat the last computed one (internal to the transient library; used by
 // the 2D and the 3D drivers).
 #include <Eigen/Dense>
+#include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace modaltyre::transient::detail {
@@ -25,6 +27,18 @@ class SampleReuse {
     // One vectorised pass (a 120 s hold checks up to 60000 samples of ~800 states).
     const Eigen::Map<const Eigen::ArrayXd> v(y.data(), last_.size());
     return ((v - last_).abs() <= bound_).all();
+  }
+  bool allowed() const { return allowed_; }
+  /// For a state y that unchanged() accepts and rates bounded by |y'| <= rate (per component):
+  /// the time over which the state stays within the bound, min (bound - |y - last|) / rate
+  /// (infinite where the rate is zero).
+  double slack_s(const std::vector<double>& y, const Eigen::ArrayXd& rate) const {
+    const Eigen::Map<const Eigen::ArrayXd> v(y.data(), last_.size());
+    const Eigen::ArrayXd room = bound_ - (v - last_).abs();
+    double t = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < room.size(); ++i)
+      if (rate(i) > 0) t = std::min(t, room(i) / rate(i));
+    return std::max(t, 0.0);
   }
 
  private:
