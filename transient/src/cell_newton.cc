@@ -110,6 +110,13 @@ void CellNewton::factor(double gamma) {
   // R_i = sum_c mu_c kd_ic (T~_i - gamma Y_ic); at rest Y_ic = (kd_ic / c'_i) T~_i d_ic^-1, so
   // R_i = w_i T~_i with w_i = sum_c mu_c kd_ic (1 - gamma kd_ic / c'_i / d_ic).
   Eigen::MatrixXd R = Eigen::MatrixXd::Zero(ns_, np_);
+  // Rolling: Y and R are built row by row; rows of row-major copies are contiguous (the same
+  // values, so the same K).
+  const bool rows_needed = !(ee_s1_ == 0 && ee_s2_ == 0) && ne_ > 0 && ns_ > 0;
+  if (rows_needed) {
+    TtR_ = Tt_;
+    RR_.setZero(ns_, np_);
+  }
   const bool at_rest = ee_s1_ == 0 && ee_s2_ == 0;
   w_sec_.setZero(ns_);
   if (ns_ > 0) {
@@ -134,23 +141,34 @@ void CellNewton::factor(double gamma) {
         continue;
       }
       // Back substitution up the class's band from its last active cell.
-      Y_.setZero(kl - kf + 1, np_);
+      // One pass per row, (a T~_i - s1 Y_row+1 - s2 Y_row+2) d^-1 (rows beyond the band: zero).
+      const int rows = kl - kf + 1;
+      Y_.resize(rows, np_);
+      zero_row_.setZero(np_);
       for (int k = kl; k >= kf; --k) {
         const int i = r.lo + k, row = k - kf;
-        if (kd_(o + k) > 0) Y_.row(row) = kd_(o + k) / cm_.c_kv(i) * Tt_.row(i - s0_);
-        if (row + 1 < Y_.rows()) Y_.row(row) -= ee_s1_ * Y_.row(row + 1);
-        if (row + 2 < Y_.rows()) Y_.row(row) -= ee_s2_ * Y_.row(row + 2);
-        Y_.row(row) *= ee_d_inv_(o + k);
+        const double kd = kd_(o + k), a = kd > 0 ? kd / cm_.c_kv(i) : 0.0;
+        const double d = ee_d_inv_(o + k), s1 = ee_s1_, s2 = ee_s2_;
+        const double* t = TtR_.row(i - s0_).data();
+        const double* y1 = row + 1 < rows ? Y_.row(row + 1).data() : zero_row_.data();
+        const double* y2 = row + 2 < rows ? Y_.row(row + 2).data() : zero_row_.data();
+        double* y = Y_.row(row).data();
+        if (kd > 0) {
+          for (int j = 0; j < np_; ++j) y[j] = ((a * t[j] - s1 * y1[j]) - s2 * y2[j]) * d;
+        } else {
+          for (int j = 0; j < np_; ++j) y[j] = ((0.0 - s1 * y1[j]) - s2 * y2[j]) * d;
+        }
       }
       for (int k = kf; k <= kl; ++k) {
         const double kd = kd_(o + k);
         if (kd > 0) {
           const int s = r.lo + k - s0_;
-          R.row(s) += (mu * kd) * (Tt_.row(s) - gamma * Y_.row(k - kf));
+          RR_.row(s) += (mu * kd) * (TtR_.row(s) - gamma * Y_.row(k - kf));
         }
       }
     }
   }
+  if (rows_needed) R = RR_;
   if (at_rest || ne_ == 0) {
     for (int s = 0; s < ns_; ++s) R.row(s) = w_sec_(s) * Tt_.row(s);
   }

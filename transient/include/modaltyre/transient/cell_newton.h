@@ -67,13 +67,13 @@ class CellNewton {
   std::vector<int> slot_class_;  ///< per slot: its class
   Eigen::MatrixXd TT_;           ///< T^T (rank x m)
   Eigen::MatrixXd Tc_;           ///< update_active_set(): T~ rows of the changed sections
-  Eigen::VectorXd trow_, dwv_;
+  Eigen::VectorXd trow_, dwv_, zero_row_;
   std::vector<int> changed_, rowperm_;
   std::vector<std::pair<int, double>> dw_;
   double dq_gamma_ = 0, dq_Omega_ = 0, dq_dOmega_ = 0;
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
   Eigen::MatrixXd CqT_, CrT_, DQ_, H_;
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_, Y_;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_, Y_, TtR_, RR_;
   Eigen::VectorXi cap_perm_;
   mutable Eigen::VectorXd eta_, eta0_, phi_, w_, work_e_, work_s_;
 };
