@@ -32,6 +32,9 @@ class CellNewton {
   /// k_g max(0, g) differs at the current iterate (the last rhs()) from the matrix's, updated
   /// before the solve (at rest by rank-one changes of K per section, rolling by a new factor()).
   void update_active_set();
+  /// solve()'s per-slot factors mu_c kd and gamma kd / c' (0 where kd = 0), all or slot k.
+  void slot_coefficients();
+  void slot_coefficient(int k);
   void solve_d(double* x) const;
   void solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// y <- M_EE^-1 y over the tread states (per class, back substitution along its band).
@@ -67,7 +70,7 @@ class CellNewton {
   std::vector<int> slot_class_;  ///< per slot: its class
   Eigen::MatrixXd TT_;           ///< T^T (rank x m)
   Eigen::MatrixXd Tc_;           ///< update_active_set(): T~ rows of the changed sections
-  Eigen::VectorXd trow_, dwv_, zero_row_;
+  Eigen::VectorXd trow_, dwv_, zero_row_, mukd_, gkc_;
   std::vector<int> changed_, rowperm_;
   std::vector<std::pair<int, double>> dw_;
   double dq_gamma_ = 0, dq_Omega_ = 0, dq_dOmega_ = 0;
