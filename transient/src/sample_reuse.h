@@ -2,8 +2,6 @@
 // Output samples that repeat the last computed one (internal to the transient library; used by
 // the 2D and the 3D drivers).
 #include <Eigen/Dense>
-#include <algorithm>
-#include <limits>
 #include <vector>
 
 namespace modaltyre::transient::detail {
@@ -33,12 +31,11 @@ class SampleReuse {
   /// the time over which the state stays within the bound, min (bound - |y - last|) / rate
   /// (infinite where the rate is zero).
   double slack_s(const std::vector<double>& y, const Eigen::ArrayXd& rate) const {
+    // One vectorised pass without a temporary: a zero rate gives +inf (room > 0 for a state
+    // that unchanged() accepts); a NaN (never expected) makes the caller check every sample.
     const Eigen::Map<const Eigen::ArrayXd> v(y.data(), last_.size());
-    const Eigen::ArrayXd room = bound_ - (v - last_).abs();
-    double t = std::numeric_limits<double>::infinity();
-    for (Eigen::Index i = 0; i < room.size(); ++i)
-      if (rate(i) > 0) t = std::min(t, room(i) / rate(i));
-    return std::max(t, 0.0);
+    const double t = ((bound_ - (v - last_).abs()) / rate).minCoeff();
+    return t > 0 ? t : 0.0;
   }
 
  private:
