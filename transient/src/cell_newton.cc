@@ -1,5 +1,6 @@
 #include "modaltyre/transient/cell_newton.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "modaltyre/transient/column_product.h"
@@ -29,6 +30,26 @@ CellNewton::CellNewton(const CellModel& cm, const CellSystem& system)
   }
   CqT_ = M.Cq.transpose();
   CrT_ = M.Cr.transpose();
+  // The semismooth update (update_active_set()): per slot its class and contact spring, and
+  // the contact basis transposed (a section's row contiguous).
+  semismooth_ = cm.classes.size() > 1;
+  kc_slot_.resize(system.cells());
+  slot_class_.resize(system.cells());
+  for (int c = 0; c < cm.classes.size(); ++c) {
+    const UnitRange& r = system.ranges()[c];
+    for (int k = 0; k < r.size(); ++k) {
+      kc_slot_(system.offset(c) + k) = cm.k_contact(r.lo + k);
+      slot_class_[system.offset(c) + k] = c;
+    }
+  }
+  TT_ = M.T.transpose();
+  trow_.resize(np_);
+  // solve_ee()'s lanes: the classes with tread states, by the length of their range.
+  for (int c = 0; c < cm.classes.size(); ++c)
+    if (ne_ > 0 && system.ranges()[c].size() > 0) lane_order_.push_back(c);
+  std::stable_sort(lane_order_.begin(), lane_order_.end(), [&](int a, int b) {
+    return system.ranges()[a].size() > system.ranges()[b].size();
+  });
   eta_.resize(np_);
   eta0_.resize(np_);
   phi_.resize(np_);
@@ -50,24 +71,8 @@ bool CellNewton::setup(double t, const double* y, double gamma, bool jacobian_ok
 void CellNewton::factor(double gamma) {
   const TransientModel& M = M_;
   const CellClasses& C = cm_.classes;
-  const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank, nc = C.size();
+  const int nr = M.nr, rank = M.rank, nc = C.size();
   gamma_ = gamma;
-  for (Block& b : blocks_) {
-    Eigen::Matrix4d d = Eigen::Matrix4d::Identity();
-    const int h = b.n / 2;
-    for (int a = 0; a < h; ++a) {
-      d(a, h + a) = -gamma;
-      const ModalRow r = modal_row(M, b.idx[a], Omega_, dOmega_);
-      const int o = h == 2 ? 1 - a : a;
-      d(h + a, a) -= gamma * r.dq;
-      d(h + a, h + a) -= gamma * r.dv;
-      if (h == 2) {
-        d(h + a, o) -= gamma * r.dq_p;
-        d(h + a, h + o) -= gamma * r.dv_p;
-      }
-    }
-    b.inv = d.inverse();
-  }
   d_r_inv_ = nr > 0 ? 1.0 / (1.0 + gamma / M.tau_residual_s) : 1.0;
   const bool hub_free = sys_.plan().hub_free();
   d_zw_ = hub_free ? gamma : 0.0;  // a prescribed hub: z' = w' = 0, D = I on (z, w)
@@ -89,6 +94,7 @@ void CellNewton::factor(double gamma) {
   }
   // M_EE's diagonal per slot, its (uniform) super-diagonals along each class.
   const double adv = Omega_ / M.tyre.dtheta_rad;
+  adv_ = adv;
   ee_s1_ = -gamma * kUpwind[1] * adv;
   ee_s2_ = -gamma * kUpwind[2] * adv;
   ee_d_inv_.resize(ne_);
@@ -104,6 +110,13 @@ void CellNewton::factor(double gamma) {
   // R_i = sum_c mu_c kd_ic (T~_i - gamma Y_ic); at rest Y_ic = (kd_ic / c'_i) T~_i d_ic^-1, so
   // R_i = w_i T~_i with w_i = sum_c mu_c kd_ic (1 - gamma kd_ic / c'_i / d_ic).
   Eigen::MatrixXd R = Eigen::MatrixXd::Zero(ns_, np_);
+  // Rolling: Y and R are built row by row; rows of row-major copies are contiguous (the same
+  // values, so the same K).
+  const bool rows_needed = !(ee_s1_ == 0 && ee_s2_ == 0) && ne_ > 0 && ns_ > 0;
+  if (rows_needed) {
+    TtR_ = Tt_;
+    RR_.setZero(ns_, np_);
+  }
   const bool at_rest = ee_s1_ == 0 && ee_s2_ == 0;
   w_sec_.setZero(ns_);
   if (ns_ > 0) {
@@ -128,28 +141,83 @@ void CellNewton::factor(double gamma) {
         continue;
       }
       // Back substitution up the class's band from its last active cell.
-      Y_.setZero(kl - kf + 1, np_);
+      // One pass per row, (a T~_i - s1 Y_row+1 - s2 Y_row+2) d^-1 (rows beyond the band: zero).
+      const int rows = kl - kf + 1;
+      Y_.resize(rows, np_);
+      zero_row_.setZero(np_);
       for (int k = kl; k >= kf; --k) {
         const int i = r.lo + k, row = k - kf;
-        if (kd_(o + k) > 0) Y_.row(row) = kd_(o + k) / cm_.c_kv(i) * Tt_.row(i - s0_);
-        if (row + 1 < Y_.rows()) Y_.row(row) -= ee_s1_ * Y_.row(row + 1);
-        if (row + 2 < Y_.rows()) Y_.row(row) -= ee_s2_ * Y_.row(row + 2);
-        Y_.row(row) *= ee_d_inv_(o + k);
+        const double kd = kd_(o + k), a = kd > 0 ? kd / cm_.c_kv(i) : 0.0;
+        const double d = ee_d_inv_(o + k), s1 = ee_s1_, s2 = ee_s2_;
+        const double* t = TtR_.row(i - s0_).data();
+        const double* y1 = row + 1 < rows ? Y_.row(row + 1).data() : zero_row_.data();
+        const double* y2 = row + 2 < rows ? Y_.row(row + 2).data() : zero_row_.data();
+        double* y = Y_.row(row).data();
+        if (kd > 0) {
+          for (int j = 0; j < np_; ++j) y[j] = ((a * t[j] - s1 * y1[j]) - s2 * y2[j]) * d;
+        } else {
+          for (int j = 0; j < np_; ++j) y[j] = ((0.0 - s1 * y1[j]) - s2 * y2[j]) * d;
+        }
       }
       for (int k = kf; k <= kl; ++k) {
         const double kd = kd_(o + k);
         if (kd > 0) {
           const int s = r.lo + k - s0_;
-          R.row(s) += (mu * kd) * (Tt_.row(s) - gamma * Y_.row(k - kf));
+          RR_.row(s) += (mu * kd) * (TtR_.row(s) - gamma * Y_.row(k - kf));
         }
       }
     }
   }
+  if (rows_needed) R = RR_;
   if (at_rest || ne_ == 0) {
     for (int s = 0; s < ns_; ++s) R.row(s) = w_sec_(s) * Tt_.row(s);
   }
-  K_.noalias() = Tt_.transpose().lazyProduct(R);
-  if (ns_ == 0) K_.setZero(np_, np_);
+  if (ns_ == 0) {
+    K_.setZero(np_, np_);
+  } else {
+    K_.noalias() = Tt_.transpose().lazyProduct(R);
+  }
+  // D^-1 Q and H = P D^-1 Q depend on gamma and the spin only, not on the contact: kept from
+  // the last factorisation when those are the same.
+  if (!(dq_ready_ && gamma == dq_gamma_ && Omega_ == dq_Omega_ && dOmega_ == dq_dOmega_)) {
+    dq_ready_ = true, dq_gamma_ = gamma, dq_Omega_ = Omega_, dq_dOmega_ = dOmega_;
+    factor_dq(gamma);
+  }
+  slot_coefficients();
+  // The capacitance matrix in the 2D solver's order of operations (contact_newton.cc): a flat
+  // crown's one class then repeats the 2D transient's arithmetic (FlatCrown test; a
+  // rounding-level change here moved its 0.3 s hold's end load by 0.9 %).
+  cap_mat_ = Eigen::MatrixXd::Identity(np_, np_) - gamma * H_.lazyProduct(K_);
+  factor_cap();
+}
+
+void CellNewton::factor_cap() {
+  cap_.compute(cap_mat_);
+  cap_lu_ = cap_.matrixLU();
+  cap_perm_ = cap_.permutationP().indices();
+}
+
+void CellNewton::factor_dq(double gamma) {
+  const TransientModel& M = M_;
+  const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank;
+  const bool hub_free = sys_.plan().hub_free();
+  // D's 2 x 2 / 4 x 4 blocks per mode (pair) and their inverses.
+  for (Block& b : blocks_) {
+    Eigen::Matrix4d d = Eigen::Matrix4d::Identity();
+    const int h = b.n / 2;
+    for (int a = 0; a < h; ++a) {
+      d(a, h + a) = -gamma;
+      const ModalRow r = modal_row(M, b.idx[a], Omega_, dOmega_);
+      const int o = h == 2 ? 1 - a : a;
+      d(h + a, a) -= gamma * r.dq;
+      d(h + a, h + a) -= gamma * r.dv;
+      if (h == 2) {
+        d(h + a, o) -= gamma * r.dq_p;
+        d(h + a, h + o) -= gamma * r.dv_p;
+      }
+    }
+    b.inv = d.inverse();
+  }
   DQ_.setZero(nx_, np_);
   for (const Block& b : blocks_) {
     const int h = b.n / 2;
@@ -168,10 +236,6 @@ void CellNewton::factor(double gamma) {
     if (nr > 0) column_product(M.Cr, DQ_.col(k).segment(2 * nq, nr), H_.col(k), true);
   }
   H_.row(rank) = DQ_.row(Z);
-  const Eigen::MatrixXd cap = Eigen::MatrixXd::Identity(np_, np_) - gamma * H_.lazyProduct(K_);
-  cap_.compute(cap);
-  cap_lu_ = cap_.matrixLU();
-  cap_perm_ = cap_.permutationP().indices();
 }
 
 void CellNewton::solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
@@ -207,19 +271,53 @@ void CellNewton::solve_ee(double* y) const {
     Eigen::Map<Eigen::VectorXd>(y, ne_).array() *= ee_d_inv_.array();
     return;
   }
-  for (int c = 0; c < cm_.classes.size(); ++c) {
-    const int n = sys_.ranges()[c].size(), o = sys_.offset(c);
-    double* yc = y + o;
-    for (int k = n - 1; k >= 0; --k) {
-      double v = yc[k];
-      if (k + 1 < n) v -= ee_s1_ * yc[k + 1];
-      if (k + 2 < n) v -= ee_s2_ * yc[k + 2];
-      yc[k] = v * ee_d_inv_(o + k);
+  // Each class's back substitution is a serial recurrence (its latency, not its arithmetic, is
+  // the cost): kLanes classes of similar length run in lockstep, aligned at their ends, so that
+  // their chains overlap. The same operations per element as one class at a time.
+  const double s1 = ee_s1_, s2 = ee_s2_;
+  const double* dinv = ee_d_inv_.data();
+  auto one = [&](double* yc, const double* dc, int n, int k) {
+    double v = yc[k];
+    if (k + 1 < n) v -= s1 * yc[k + 1];
+    if (k + 2 < n) v -= s2 * yc[k + 2];
+    yc[k] = v * dc[k];
+  };
+  for (std::size_t g = 0; g < lane_order_.size(); g += kLanes) {
+    const int lanes = static_cast<int>(std::min<std::size_t>(kLanes, lane_order_.size() - g));
+    double* yc[kLanes];
+    const double* dc[kLanes];
+    int n[kLanes];
+    int nmin = 1 << 30;
+    for (int l = 0; l < lanes; ++l) {
+      const int c = lane_order_[g + l];
+      n[l] = sys_.ranges()[c].size();
+      yc[l] = y + sys_.offset(c);
+      dc[l] = dinv + sys_.offset(c);
+      nmin = std::min(nmin, n[l]);
     }
+    // Steps t = 0, 1 from each end (the band's boundary), then t = 2 .. nmin - 1 in lockstep,
+    // then each lane's remaining front.
+    const int head = std::min(2, nmin);
+    for (int l = 0; l < lanes; ++l)
+      for (int t = 0; t < head; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
+    if (lanes == kLanes) {
+      double* ye[kLanes];
+      const double* de[kLanes];
+      for (int l = 0; l < kLanes; ++l) ye[l] = yc[l] + n[l] - 1, de[l] = dc[l] + n[l] - 1;
+      for (int t = head; t < nmin; ++t)
+        for (int l = 0; l < kLanes; ++l)
+          ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
+    } else {
+      for (int l = 0; l < lanes; ++l)
+        for (int t = head; t < nmin; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
+    }
+    for (int l = 0; l < lanes; ++l)
+      for (int t = nmin; t < n[l]; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
   }
 }
 
-void CellNewton::solve(double* x) const {
+void CellNewton::solve(double* x) {
+  if (semismooth_) update_active_set();
   const TransientModel& M = M_;
   const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank, nc = cm_.classes.size();
   Eigen::Map<Eigen::VectorXd> xx(x, nx_);
@@ -230,13 +328,15 @@ void CellNewton::solve(double* x) const {
     work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
     solve_ee(work_e_.data());
     work_s_.setZero(ns_);
+    // Over each class's slots within the sections [s0, s0 + ns) (mu kd = 0 where not active).
     for (int c = 0; c < nc; ++c) {
       const UnitRange& r = sys_.ranges()[c];
-      const int o = sys_.offset(c), mu = cm_.classes.multiplicity[c];
-      for (int k = 0; k < r.size(); ++k) {
-        const double kd = kd_(o + k);
-        if (kd > 0) work_s_(r.lo + k - s0_) += mu * kd * work_e_(o + k);
-      }
+      const int o = sys_.offset(c), k0 = std::max(0, s0_ - r.lo),
+                k1 = std::min(r.size(), s0_ + ns_ - r.lo);
+      const double* mk = mukd_.data() + o;
+      const double* we = work_e_.data() + o;
+      double* ws = work_s_.data() + (r.lo - s0_);
+      for (int k = k0; k < k1; ++k) ws[k] += mk[k] * we[k];
     }
     column_dots(Tt_, work_s_, phi_, -gamma_);
   }
@@ -258,11 +358,12 @@ void CellNewton::solve(double* x) const {
       column_product(Tt_, eta_, work_s_);  // T~_i P x_X per section
       for (int c = 0; c < nc; ++c) {
         const UnitRange& r = sys_.ranges()[c];
-        const int o = sys_.offset(c);
-        for (int k = 0; k < r.size(); ++k) {
-          const double kd = kd_(o + k);
-          if (kd > 0) xe[o + k] += gamma_ * kd / cm_.c_kv(r.lo + k) * work_s_(r.lo + k - s0_);
-        }
+        const int o = sys_.offset(c), k0 = std::max(0, s0_ - r.lo),
+                  k1 = std::min(r.size(), s0_ + ns_ - r.lo);
+        const double* g = gkc_.data() + o;
+        const double* ws = work_s_.data() + (r.lo - s0_);
+        double* xc = xe + o;
+        for (int k = k0; k < k1; ++k) xc[k] += g[k] * ws[k];
       }
     }
     solve_ee(xe);

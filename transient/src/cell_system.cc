@@ -130,6 +130,14 @@ void CellSystem::penetration(double t, const double* y, Eigen::VectorXd& g,
   for (int k = 0; k < n; ++k) seg(k) = (z - M.tyre.sag(lo + k)) - seg(k);
   const double* e = y + M.e_index();
   const int nc = cm_.classes.size();
+  // The road's height per section, once: the same for every class it covers (road()).
+  int road_class = -1;
+  for (int c = 0; c < nc && road_class < 0; ++c)
+    if (plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c])) road_class = c;
+  if (road_class >= 0) {
+    road_.resize(n);
+    for (int k = 0; k < n; ++k) road_(k) = road(t, lo + k, road_class);
+  }
   for (int c = 0; c < nc; ++c) {
     const UnitRange& r = ranges_[c];
     if (r.size() == 0) continue;
@@ -138,17 +146,25 @@ void CellSystem::penetration(double t, const double* y, Eigen::VectorXd& g,
     double* gc = g.data() + o;
     const double* Pc = P.data() + r.lo;
     for (int k = 0; k < r.size(); ++k) gc[k] = Pc[k] - drop;
-    if (plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c]))
-      for (int k = 0; k < r.size(); ++k) gc[k] += road(t, r.lo + k, c);
+    if (plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c])) {
+      const double* hc = road_.data() + (r.lo - lo);
+      for (int k = 0; k < r.size(); ++k) gc[k] += hc[k];
+    }
     if (relax_)
       for (int k = 0; k < r.size(); ++k) gc[k] -= e[o + k];
   }
 }
 
-void CellSystem::forces(double t, const double* y, Eigen::VectorXd& f, Eigen::VectorXd& F) const {
+void CellSystem::forces(double t, const double* y, Eigen::VectorXd& f, Eigen::VectorXd& F,
+                        Eigen::VectorXd* g, Eigen::VectorXd* P) const {
   const TransientModel& M = cm_.M();
-  penetration(t, y, f, P_);
-  f = (f.array() > 0).select(kc_slot_.array() * f.array(), 0.0);
+  if (g) {
+    penetration(t, y, *g, P ? *P : P_);
+    f = (g->array() > 0).select(kc_slot_.array() * g->array(), 0.0);
+  } else {
+    penetration(t, y, f, P ? *P : P_);
+    f = (f.array() > 0).select(kc_slot_.array() * f.array(), 0.0);
+  }
   if (F.size() != M.m) F.resize(M.m);
   F.setZero();
   const int nc = cm_.classes.size();

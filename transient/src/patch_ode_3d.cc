@@ -24,6 +24,10 @@ class CellObserver {
     for (int i = 0; i < M_.m; ++i)
       cos_[i] = std::cos(M_.tyre.theta[i]), sin_[i] = std::sin(M_.tyre.theta[i]);
     stamp_.assign(M_.m, 0);
+    // The shapes transposed: belt() reads one section's row, contiguous here (a row of the
+    // m x nq column-major matrices strides over nq cache lines).
+    phi_r_t_ = M_.phi_r.transpose();
+    phi_t_t_ = M_.phi_t.transpose();
     ur_.assign(M_.m, 0.0);
     ut_.assign(M_.m, 0.0);
     // Columns ordered from the centre outwards on each side: the lateral edge search.
@@ -36,8 +40,9 @@ class CellObserver {
     const CellClasses& C = cm_.classes;
     TransientSample s;
     s.t_s = t;
-    sys_.forces(t, y, f_, F_);
-    sys_.penetration(t, y, g_, P_);  // P: the undeformed tread's penetration at the crown line
+    // f, F and (one pass) the tip penetration g and the undeformed tread's penetration at the
+    // crown line P.
+    sys_.forces(t, y, f_, F_, &g_, &P_);
     const double z = sys_.hub_z(t, y);
     const double R0 = M_.tyre.config.outer_radius_m;
     s.applied_load_N = plan.load(t);
@@ -76,6 +81,18 @@ class CellObserver {
     q_ = Eigen::Map<const Eigen::VectorXd>(y, M_.nq);
     belt_first_ = first, belt_last_ = last;
     ++belt_stamp_;
+    if (M_.nr > 0) {
+      // The patch's radial and tangential forces in reverse order, so that each belt() sum over
+      // the patch is four dot products with contiguous runs of the lag kernels.
+      const int ns = last - first + 1;
+      fr_rev_.resize(ns);
+      ft_rev_.resize(ns);
+      for (int j = first; j <= last; ++j) {
+        const double Fj = F_(j) > 0 ? F_(j) : 0.0;
+        fr_rev_(last - j) = Fj * cos_[j];
+        ft_rev_(last - j) = Fj * sin_[j];
+      }
+    }
     auto cell_x = [&](int i, double f) {
       belt(i);
       const double c = cos_[i], sn = sin_[i];
@@ -93,10 +110,13 @@ class CellObserver {
     double length = 0, area = 0;
     for (int c = 0; c < C.size(); ++c) {
       const UnitRange& r = sys_.ranges()[c];
-      int a = -1, b = -1;
-      for (int k = 0; k < r.size(); ++k)
-        if (f_(sys_.offset(c) + k) > 0) b = r.lo + k, a = a < 0 ? r.lo + k : a;
-      if (a < 0) continue;
+      // The first and last cell in contact, scanned in from either end of the range.
+      const double* fc = f_.data() + sys_.offset(c);
+      int ka = 0, kb = r.size() - 1;
+      while (ka < r.size() && !(fc[ka] > 0)) ++ka;
+      if (ka == r.size()) continue;
+      while (!(fc[kb] > 0)) --kb;
+      const int a = r.lo + ka, b = r.lo + kb;
       // As the 2D driver and the 3D patch: the level function is the cell's tread compression
       // f / k_i inside (at rest d_i - z_c, patch3d.cc) and its tip penetration g < 0 outside
       // (at rest the gap d_i - z_c; behind a rolling patch the relaxed rubber's lift).
@@ -156,15 +176,18 @@ class CellObserver {
   void belt(int i) {
     if (stamp_[i] == belt_stamp_) return;
     stamp_[i] = belt_stamp_;
-    double ur = M_.phi_r.row(i).dot(q_), ut = M_.phi_t.row(i).dot(q_);
+    double ur = phi_r_t_.col(i).dot(q_), ut = phi_t_t_.col(i).dot(q_);
     if (M_.nr > 0) {
-      for (int j = belt_first_; j <= belt_last_; ++j) {
-        if (!(F_(j) > 0)) continue;
-        const modal::Transfer2x2 h = M_.residual_kernels.at(i - j);
-        const double fr = F_(j) * cos_[j], ft = F_(j) * sin_[j];
-        ur += h.r_from_r * fr + h.r_from_t * ft;
-        ut += h.t_from_r * fr + h.t_from_t * ft;
-      }
+      // sum_j h(i - j) (F_j cos_j, F_j sin_j), j over the patch (fr_rev_: j = last - k, so the
+      // kernel index i - j + lags - 1 runs up from i - last + lags - 1).
+      const modal::LagKernels& K = M_.residual_kernels;
+      const int n = static_cast<int>(fr_rev_.size());
+      const std::size_t k0 = static_cast<std::size_t>(i - belt_last_ + K.lags - 1);
+      auto run = [&](const std::vector<double>& h) {
+        return Eigen::Map<const Eigen::VectorXd>(h.data() + k0, n);
+      };
+      ur += run(K.r_from_r).dot(fr_rev_) + run(K.r_from_t).dot(ft_rev_);
+      ut += run(K.t_from_r).dot(fr_rev_) + run(K.t_from_t).dot(ft_rev_);
     }
     ur_[i] = ur, ut_[i] = ut;
   }
@@ -174,7 +197,8 @@ class CellObserver {
   const TransientModel& M_;
   double sag_min_ = 0;
   std::vector<int> slot_class_;
-  Eigen::VectorXd f_, F_, g_, P_, q_;
+  Eigen::VectorXd f_, F_, g_, P_, q_, fr_rev_, ft_rev_;
+  Eigen::MatrixXd phi_r_t_, phi_t_t_;  ///< nq x m
   std::vector<double> ur_, ut_, cos_, sin_;
   std::vector<long> stamp_;
   long belt_stamp_ = 0;
@@ -207,8 +231,8 @@ class CellsOde final : public PatchOde {
   /// Scaled so, a cell is converged as tightly as a 2D unit; a flat crown (one class) keeps 0.1,
   /// the 2D variant's (docs/transient.md section 7).
   double newton_convergence_coefficient() const override {
-    return kCvodeNewtonCoefficient * std::sqrt(static_cast<double>(cm_.M().state_size()) /
-                                               static_cast<double>(full_size()));
+    return kCvodeNewtonCoefficient *
+           std::sqrt(static_cast<double>(cm_.M().state_size()) / static_cast<double>(full_size()));
   }
   std::vector<double> absolute_tolerances() const override { return sys_.absolute_tolerances(); }
   std::vector<double> initial_state() const override { return y0_; }

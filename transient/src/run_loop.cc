@@ -15,6 +15,11 @@ namespace {
 /// chattering (never a hang): a located switch is normally followed by a step.
 constexpr int kZenoRootReturns = 1000;
 constexpr double kZenoWindow_s = 1e-12;
+/// Steps with at least this many output samples bound their interpolant's rate (emit_until):
+/// the bound costs two interpolations and a pass over the states.
+constexpr int kBoundedStepSamples = 4;
+/// Fraction of the proven time a sample is repeated over (rounding of the interpolant).
+constexpr double kSlackSafety = 0.5;
 
 }  // namespace
 
@@ -108,13 +113,41 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
   // hold): its samples repeat it without interpolating each (the BDF interpolant between two such
   // history points stays within ~1.25 times their distance; 60000 interpolations and reuse
   // checks of all states were most of a 120 s hold after the faster Newton solver).
-  std::vector<double> y_step_start = y;
-  auto emit_until = [&](double t_reached) {
+  //
+  // In a long step that is not settled (a hold's creep over seconds, 500 samples a second) the
+  // samples are not each interpolated and checked either: the interpolant of a step is a
+  // polynomial of degree <= 2 (BDF orders <= 2, ode_options()), so its values at the step's ends
+  // and middle give it exactly and bound its rate, |y'| <= D over the step. A sample within
+  // (bound - |y - last|) / D of a checked one (SampleReuse::slack_s) then provably repeats the
+  // last computed sample, as unchecked; the first outside is interpolated and checked as before.
+  std::vector<double> y_step_start = y, y_a, y_m;
+  Eigen::ArrayXd rate;
+  auto emit_until = [&](double t_start, double t_reached) {
     const bool step_settled = reuse.unchanged(y_step_start) && reuse.unchanged(ode.state());
     y_step_start = ode.state();
+    const double h = t_reached - t_start;
+    // (Not with root functions: a return at a located switch ends inside an internal step.)
+    const bool bounded = !step_settled && !locate_switches && reuse.allowed() && h > 0 &&
+                         t_out + kBoundedStepSamples * dt <= t_reached * (1 + 1e-14);
+    double reuse_until = -1;  // samples up to this time repeat the last computed one
+    if (bounded) {
+      ode.interpolate(t_start, y_a);
+      ode.interpolate(t_start + 0.5 * h, y_m);
+      const std::vector<double>& y_b = ode.state();
+      rate.resize(static_cast<Eigen::Index>(y_b.size()));
+      for (std::size_t i = 0; i < y_b.size(); ++i) {
+        // y(s) = b + c1 s + c2 s^2, s = (t - t_reached) / h in [-1, 0]: y'(s) is linear in s,
+        // largest at an end: c1 = 3b - 4m + a at s = 0, c1 - 2 c2 = -(3a - 4m + b) at s = -1.
+        const double a = y_a[i], m = y_m[i], b = y_b[i];
+        rate(static_cast<Eigen::Index>(i)) =
+            std::max(std::abs(3 * b - 4 * m + a), std::abs(3 * a - 4 * m + b)) / h;
+      }
+    }
     while (!all_out && t_out <= t_reached * (1 + 1e-14)) {
-      if (!step_settled) ode.interpolate(std::min(t_out, t_reached), y_out);
-      if (step_settled || reuse.unchanged(y_out)) {
+      const bool proven = bounded && t_out <= reuse_until;
+      if (!step_settled && !proven) ode.interpolate(std::min(t_out, t_reached), y_out);
+      if (step_settled || proven || reuse.unchanged(y_out)) {
+        if (bounded && !proven) reuse_until = t_out + kSlackSafety * reuse.slack_s(y_out, rate);
         // The state moved less than kReuseFraction of the integration tolerance since the
         // last computed sample (a settled hold, steady rolling on a flat road): the
         // observables are the same to that accuracy; only the time and the scenario's own
@@ -127,6 +160,7 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
       } else {
         res.samples.push_back(sys.observe(t_out, y_out.data()));
         reuse.remember(y_out);
+        if (bounded) reuse_until = t_out + kSlackSafety * reuse.slack_s(y_out, rate);
       }
       if (options.progress && !options.progress(t_out, T)) {
         res.message = "cancelled";
@@ -168,8 +202,9 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
       }
     }
     take_maps(t_prev, st.t, nullptr);
+    const double t_step_start = t_prev;
     t_prev = st.t;
-    if (!emit_until(st.t)) {
+    if (!emit_until(t_step_start, st.t)) {
       failed = true;
       break;
     }

@@ -26,6 +26,17 @@ class SampleReuse {
     const Eigen::Map<const Eigen::ArrayXd> v(y.data(), last_.size());
     return ((v - last_).abs() <= bound_).all();
   }
+  bool allowed() const { return allowed_; }
+  /// For a state y that unchanged() accepts and rates bounded by |y'| <= rate (per component):
+  /// the time over which the state stays within the bound, min (bound - |y - last|) / rate
+  /// (infinite where the rate is zero).
+  double slack_s(const std::vector<double>& y, const Eigen::ArrayXd& rate) const {
+    // One vectorised pass without a temporary: a zero rate gives +inf (room > 0 for a state
+    // that unchanged() accepts); a NaN (never expected) makes the caller check every sample.
+    const Eigen::Map<const Eigen::ArrayXd> v(y.data(), last_.size());
+    const double t = ((bound_ - (v - last_).abs()) / rate).minCoeff();
+    return t > 0 ? t : 0.0;
+  }
 
  private:
   /// Far below the integrator's own local error (1 in the same weighted norm).

@@ -7,6 +7,7 @@
 //   K = sum_i T~_i^T R_i,   R_i = sum_c mu_c kd_ic (T~_i - gamma Y_ic)   (rank + 1 square),
 // solved by Woodbury's identity with the capacitance matrix I - gamma (P D^-1 Q) K.
 #include <Eigen/Dense>
+#include <utility>
 #include <vector>
 
 #include "modaltyre/transient/cell_system.h"
@@ -17,10 +18,23 @@ class CellNewton {
  public:
   CellNewton(const CellModel& cm, const CellSystem& system);
   bool setup(double t, const double* y, double gamma, bool jacobian_ok);
-  void solve(double* x) const;
+  void solve(double* x);
 
  private:
   void factor(double gamma);
+  /// D^-1 Q (DQ_) and H = P D^-1 Q (H_) at gamma and the current spin.
+  void factor_dq(double gamma);
+  /// The capacitance matrix I - gamma H K (update_cap(): after rank-one changes of K) and the
+  /// LU of cap_mat_ (factor_cap()).
+  void update_cap(double gamma);
+  void factor_cap();
+  /// Semismooth Newton: the contact stiffness of the cells whose side of the kink of
+  /// k_g max(0, g) differs at the current iterate (the last rhs()) from the matrix's, updated
+  /// before the solve (at rest by rank-one changes of K per section, rolling by a new factor()).
+  void update_active_set();
+  /// solve()'s per-slot factors mu_c kd and gamma kd / c' (0 where kd = 0), all or slot k.
+  void slot_coefficients();
+  void slot_coefficient(int k);
   void solve_d(double* x) const;
   void solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// y <- M_EE^-1 y over the tread states (per class, back substitution along its band).
@@ -41,15 +55,28 @@ class CellNewton {
   };
   std::vector<Block> blocks_;
   double d_r_inv_ = 1, d_zw_ = 0;
-  double ee_s1_ = 0, ee_s2_ = 0;
+  double ee_s1_ = 0, ee_s2_ = 0, adv_ = 0;
   Eigen::VectorXd ee_d_inv_;  ///< per slot
-  int s0_ = 0, ns_ = 0;       ///< sections with an active cell: [s0_, s0_ + ns_)
-  Eigen::MatrixXd Tt_;        ///< T~ rows of those sections (ns x np)
-  Eigen::VectorXd w_sec_;     ///< sum_c mu_c kd_ic per section (ns)
-  Eigen::MatrixXd K_;
+  /// solve_ee(): classes with tread states, longest range first, run kLanes at a time.
+  static constexpr int kLanes = 8;
+  std::vector<int> lane_order_;
+  int s0_ = 0, ns_ = 0;    ///< sections with an active cell: [s0_, s0_ + ns_)
+  Eigen::MatrixXd Tt_;     ///< T~ rows of those sections (ns x np)
+  Eigen::VectorXd w_sec_;  ///< sum_c mu_c kd_ic per section (ns)
+  Eigen::MatrixXd K_, cap_mat_;
+  bool dq_ready_ = false;
+  bool semismooth_ = false;
+  Eigen::VectorXd kc_slot_;      ///< per slot: contact spring
+  std::vector<int> slot_class_;  ///< per slot: its class
+  Eigen::MatrixXd TT_;           ///< T^T (rank x m)
+  Eigen::MatrixXd Tc_;           ///< update_active_set(): T~ rows of the changed sections
+  Eigen::VectorXd trow_, dwv_, zero_row_, mukd_, gkc_;
+  std::vector<int> changed_, rowperm_;
+  std::vector<std::pair<int, double>> dw_;
+  double dq_gamma_ = 0, dq_Omega_ = 0, dq_dOmega_ = 0;
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
   Eigen::MatrixXd CqT_, CrT_, DQ_, H_;
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_, Y_;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_, Y_, TtR_, RR_;
   Eigen::VectorXi cap_perm_;
   mutable Eigen::VectorXd eta_, eta0_, phi_, w_, work_e_, work_s_;
 };

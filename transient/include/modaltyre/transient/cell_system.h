@@ -48,8 +48,10 @@ class CellSystem {
   const ScenarioPlan& plan() const { return plan_; }
 
   void rhs(double t, const double* y, double* ydot) const;
-  /// Cell forces into f (cells() slots) and section forces into F (m; zero outside sections()).
-  void forces(double t, const double* y, Eigen::VectorXd& f, Eigen::VectorXd& F) const;
+  /// Cell forces into f (cells() slots) and section forces into F (m; zero outside sections());
+  /// with g (and P), also penetration()'s outputs of the same pass.
+  void forces(double t, const double* y, Eigen::VectorXd& f, Eigen::VectorXd& F,
+              Eigen::VectorXd* g = nullptr, Eigen::VectorXd* P = nullptr) const;
   /// Tip penetration g of every slot (cells()), and P_i = z - s_i - u_i over sections() into P
   /// (m entries; the penetration of the undeformed tread at the crown line).
   void penetration(double t, const double* y, Eigen::VectorXd& g, Eigen::VectorXd& P) const;
@@ -60,6 +62,8 @@ class CellSystem {
   /// the next Jacobian. Also checks the sections just outside each class's range (escaped()).
   int update_contact_set(double t, const double* y) const;
   bool escaped() const { return escaped_; }
+  /// The cell forces of the last rhs() (the Newton iterate CVODE evaluated last).
+  const Eigen::VectorXd& last_forces() const { return f_; }
   double spin(double t) const;
   double spin_rate(double t) const;
   /// The hub's displacement z at (t, y): the state's, or the prescribed hub's (scenario.h).
@@ -82,7 +86,7 @@ class CellSystem {
   Eigen::VectorXd inv_c_, k_over_c_;  ///< per slot: 1 / c', k' / c'
   Eigen::VectorXd kc_slot_;           ///< per slot: contact spring
   Eigen::VectorXd drop_slot_;         ///< per slot: crown drop of its class
-  mutable Eigen::VectorXd xi_, P_, f_, F_, phi_, G_, Vf_, g_;
+  mutable Eigen::VectorXd xi_, P_, f_, F_, phi_, G_, Vf_, g_, road_;
   mutable std::vector<char> in_contact_;
   mutable long switches_since_jacobian_ = 0;
   mutable bool escaped_ = false;

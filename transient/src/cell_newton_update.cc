@@ -1,0 +1,136 @@
+// The semismooth part of the 3D patch's Newton solver (cell_newton.h, docs/transient.md section
+// 7): the contact stiffness of the cells that switched side of the kink at the current iterate,
+// the changes of K and the capacitance matrix's new LU, and solve()'s per-slot factors.
+#include <algorithm>
+#include <cmath>
+
+#include "modaltyre/transient/cell_newton.h"
+#include "modaltyre/transient/column_product.h"
+#include "modaltyre/transient/ode_system.h"
+
+namespace modaltyre::transient {
+
+void CellNewton::slot_coefficients() {
+  mukd_.setZero(kd_.size());
+  gkc_.setZero(kd_.size());
+  if (ne_ == 0) return;
+  for (int c = 0; c < cm_.classes.size(); ++c) {
+    const UnitRange& r = sys_.ranges()[c];
+    for (int k = 0, o = sys_.offset(c); k < r.size(); ++k) slot_coefficient(o + k);
+  }
+}
+
+void CellNewton::slot_coefficient(int k) {
+  const int c = slot_class_[k], i = sys_.ranges()[c].lo + (k - sys_.offset(c));
+  const double kd = kd_(k);
+  mukd_(k) = kd > 0 ? cm_.classes.multiplicity[c] * kd : 0.0;
+  gkc_(k) = kd > 0 ? gamma_ * kd / cm_.c_kv(i) : 0.0;
+}
+
+void CellNewton::update_cap(double gamma) {
+  // I - gamma H K by columns (the vectorised product: Eigen's blocked one would hand these sizes
+  // to OpenMP threads, which only wait on the shared cores).
+  cap_mat_.resize(np_, np_);
+  for (int k = 0; k < np_; ++k) column_product(H_, K_.col(k), cap_mat_.col(k));
+  cap_mat_ *= -gamma;
+  cap_mat_.diagonal().array() += 1.0;
+  // Its LU with partial pivoting, unblocked on the row-major copy solve_cap() reads (Eigen's
+  // blocked LU runs these 42 x 42 through its matrix-product kernels).
+  const int n = np_;
+  cap_lu_ = cap_mat_;
+  double* a = cap_lu_.data();
+  rowperm_.resize(n);
+  for (int i = 0; i < n; ++i) rowperm_[i] = i;
+  bool ok = true;
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    for (int i = k + 1; i < n; ++i)
+      if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
+    if (p != k) {
+      std::swap_ranges(a + k * n, a + (k + 1) * n, a + p * n);
+      std::swap(rowperm_[k], rowperm_[p]);
+    }
+    const double pivot = a[k * n + k];
+    if (!(std::isfinite(pivot) && pivot != 0)) {
+      ok = false;
+      break;
+    }
+    const double* rk = a + k * n;
+    for (int i = k + 1; i < n; ++i) {
+      double* ri = a + i * n;
+      const double l = ri[k] / pivot;
+      ri[k] = l;
+      for (int j = k + 1; j < n; ++j) ri[j] -= l * rk[j];
+    }
+  }
+  if (!ok) {
+    factor(gamma);  // the whole factorisation at the current contact set
+    return;
+  }
+  cap_perm_.resize(n);
+  for (int pos = 0; pos < n; ++pos) cap_perm_(rowperm_[pos]) = pos;
+}
+
+void CellNewton::update_active_set() {
+  const Eigen::VectorXd& f = sys_.last_forces();
+  const int n = sys_.cells();
+  if (f.size() != n || kd_.size() != n) return;
+  changed_.clear();
+  for (int k = 0; k < n; ++k)
+    if ((f(k) > 0) != (kd_(k) > 0)) changed_.push_back(k);
+  if (changed_.empty()) return;
+  const TransientModel& M = M_;
+  const CellClasses& C = cm_.classes;
+  // Each cell enters K through its section's weight: at rest (M_EE diagonal) exactly w_i =
+  // sum_c mu_c kd_ic (1 - gamma kd_ic / c'_i / d_ic) (factor()), so K changes by
+  // (w_i,new - w_i,old) T~_i^T T~_i for the sections of the switched cells. Rolling, a cell's
+  // stiffness also reaches the cells in front of it along the class's band (Y, factor()): that
+  // part is left to the next setup, i.e. the switched cell's own diagonal term only (an inexact
+  // Jacobian, as the whole matrix is between setups; a new factor() per switch cost a cleat run
+  // 1.6 times its time for 2 % fewer steps).
+  const double gamma = gamma_;
+  const int rank = M.rank;
+  const double dz = sys_.plan().hub_free() ? 1.0 : 0.0;
+  dw_.clear();
+  for (int k : changed_) {
+    const int c = slot_class_[k], i = sys_.ranges()[c].lo + (k - sys_.offset(c));
+    const double mu = C.multiplicity[c], c_kv = ne_ > 0 ? cm_.c_kv(i) : 0.0;
+    auto weight = [&](double kd) {
+      return ne_ > 0 ? mu * kd * (1.0 - gamma * kd / c_kv * ee_d_inv_(k)) : mu * kd;
+    };
+    const double w_old = weight(kd_(k));
+    kd_(k) = f(k) > 0 ? kc_slot_(k) : 0.0;
+    if (ne_ > 0)
+      ee_d_inv_(k) = 1.0 / (1.0 - gamma * (kUpwind[0] * adv_ - (kd_(k) + cm_.k_kv(i)) / c_kv));
+    dw_.emplace_back(i, weight(kd_(k)) - w_old);
+    if (ne_ > 0) slot_coefficient(k);
+  }
+  // dK = Tc^T diag(dw) Tc over the changed sections' rows T~_i (Tc), by columns.
+  const int nchg = static_cast<int>(dw_.size());
+  Tc_.resize(nchg, np_);
+  dwv_.resize(nchg);
+  for (int a = 0; a < nchg; ++a) {
+    Tc_.row(a).head(rank) = -TT_.col(dw_[a].first).transpose();
+    Tc_(a, rank) = dz;
+    dwv_(a) = dw_[a].second;
+  }
+  for (int k = 0; k < np_; ++k) {
+    trow_ = dwv_.cwiseProduct(Tc_.col(k));
+    column_dots(Tc_, trow_, K_.col(k), 1.0, true);
+  }
+  // The span of sections with an active cell (solve() reads T~ over it) only grows here.
+  int lo = ns_ > 0 ? s0_ : M.m, hi = ns_ > 0 ? s0_ + ns_ - 1 : -1;
+  for (const auto& [i, dw] : dw_) lo = std::min(lo, i), hi = std::max(hi, i);
+  if (lo != s0_ || hi - lo + 1 != ns_) {
+    s0_ = lo;
+    ns_ = hi - lo + 1;
+    Tt_.resize(ns_, np_);
+    for (int s = 0; s < ns_; ++s) {
+      Tt_.row(s).head(rank) = -TT_.col(s0_ + s).transpose();
+      Tt_(s, rank) = dz;
+    }
+  }
+  update_cap(gamma);
+}
+
+}  // namespace modaltyre::transient
