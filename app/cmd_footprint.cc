@@ -1,5 +1,5 @@
-// modaltyre footprint CONFIG [--load N]... [--set key=value]... [--json] [--plot FILE]
-//                    [--map-csv FILE]
+// modaltyre footprint CONFIG [--load N]... [--ground FILE] [--set key=value]... [--json]
+//                    [--plot FILE] [--map-csv FILE]
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -15,6 +15,7 @@
 #include "modaltyre/core/progress.h"
 #include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/footprint_json.h"
+#include "modaltyre/report/ground_input.h"
 #include "modaltyre/report/uncertainty_json.h"
 #include "modaltyre/report/validation_json.h"
 #include "modaltyre/uncertainty/propagation.h"
@@ -33,6 +34,7 @@ struct FootprintArgs {
   bool json = false;
   std::string plot;
   std::string map_csv;
+  std::string ground;
   bool uncertainty = false;
   UncertaintyMethodArgs method;
 };
@@ -43,7 +45,8 @@ void register_footprint(CLI::App& app) {
   auto a = std::make_shared<FootprintArgs>();
   CLI::App* cmd = app.add_subcommand(
       "footprint",
-      "Static footprint on a rigid flat road: sinking, contact length and pressure distribution "
+      "Static footprint on the ground (a rigid flat road unless --ground or a ground: section "
+      "says otherwise): sinking, contact length and pressure distribution "
       "for each vertical load (load control, carcass and tread in series, seed 001); effects "
       "switched on in the config act at its default conditions.");
   cmd->add_option("CONFIG", a->config, "tyre config (YAML), e.g. configs/sf350.yaml")->required();
@@ -59,6 +62,10 @@ void register_footprint(CLI::App& app) {
                   "override a config key, e.g. --set tread.modulus_MPa=8, or state a condition "
                   "for every load: pressure_kPa, hold_s, speed_kmh, branch, surface (as in a "
                   "sweep), e.g. --set hold_s=60 --set surface=soil");
+  cmd->add_option("--ground", a->ground,
+                  "ground file (YAML with a ground: section: a soil, e.g. "
+                  "configs/soils/lete_sand.yaml, or a road profile; --set ground.KEY=... then "
+                  "goes to it); default: the config's ground: section (docs/soil.md)");
   cmd->add_flag("--json", a->json, "print JSON");
   cmd->add_option("--plot", a->plot,
                   "draw the pressure distributions (.svg or .png); with footprint_3d: the "
@@ -74,7 +81,7 @@ void register_footprint(CLI::App& app) {
     auto overrides = a->overrides;
     const auto settings = take_condition_settings(overrides);
     report::refuse_footprint_settings(settings, "--load", "--fx");
-    const auto config = contact::load_tyre_config(a->config, overrides);
+    const auto config = report::config_on_ground(a->config, a->ground, overrides);
     if (cmd->count("--map-csv") && !config.footprint_3d) {
       throw InputError({a->config, 0, "--map-csv"},
                        "a pressure map needs the 3D patch: the config has no footprint_3d: "
@@ -82,6 +89,7 @@ void register_footprint(CLI::App& app) {
     }
     CommandFiles files;  // before anything is computed: no output over an input or another
     report::add_config_inputs(files, config);
+    files.input(a->ground, "--ground");
     if (cmd->count("--plot")) files.output(a->plot, "--plot");
     if (cmd->count("--map-csv")) files.output(a->map_csv, "--map-csv");
     files.check();

@@ -211,29 +211,8 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   if (root.has("ground")) {
     const ConfigSection g = root.section("ground");
     c.ground = ground::read_ground_settings(g, tree);
-    if (c.ground.model != ground::GroundModel::rigid) {
-      // What the ground path does not model is refused, not ignored (docs/soil.md section 4).
-      if (c.footprint_3d && !c.ground.soil())
-        g.fail("model",
-               "the 3D patch (footprint_3d) on a road profile is not built yet: use a "
-               "2D config");
-      if (c.footprint_3d && c.footprint_3d->lateral_belt.enabled)
-        g.fail("model",
-               "the 3D patch's lateral belt (footprint_3d.lateral_belt) is not combined "
-               "with a soil yet");
-      if (c.effects.soil_compliance.enabled)
-        g.fail("model",
-               "the soil_compliance effect is a soil of its own: use "
-               "ground.model: kelvin_voigt instead of both");
-      if (c.effects.rolling_speed.enabled)
-        g.fail("model",
-               "the rolling_speed effect is not combined with a ground other than the "
-               "flat rigid road");
-      if (c.horizontal_force_N != 0)
-        g.fail("model",
-               "a ground other than the flat rigid road takes no horizontal_force_N "
-               "(`traction` computes the tangential forces)");
-    }
+    const std::string refusal = ground_refusal(c);
+    if (!refusal.empty()) g.fail("model", refusal);
   }
   if (c.rigid && !c.ground.soil())
     tyre.fail("rigid",
@@ -271,6 +250,26 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
     }
   }
   return c;
+}
+
+std::string ground_refusal(const TyreConfig& c) {
+  if (c.ground.model == ground::GroundModel::rigid) return "";
+  // What the ground path does not model is refused, not ignored (docs/soil.md section 4).
+  if (c.footprint_3d && !c.ground.soil())
+    return "the 3D patch (footprint_3d) on a road profile is not built yet: use a 2D config";
+  if (c.footprint_3d && c.footprint_3d->lateral_belt.enabled)
+    return "the 3D patch's lateral belt (footprint_3d.lateral_belt) is not combined with a soil "
+           "yet";
+  if (c.effects.soil_compliance.enabled)
+    return "the soil_compliance effect is a soil of its own: use ground.model: kelvin_voigt "
+           "instead of both";
+  if (c.effects.rolling_speed.enabled)
+    return "the rolling_speed effect is not combined with a ground other than the flat rigid "
+           "road";
+  if (c.horizontal_force_N != 0)
+    return "a ground other than the flat rigid road takes no horizontal_force_N (`traction` "
+           "computes the tangential forces)";
+  return "";
 }
 
 OperatingConditions TyreConfig::default_conditions(double load_N) const {

@@ -7,6 +7,7 @@
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
+#include "modaltyre/report/ground_input.h"
 
 namespace modaltyre::report {
 
@@ -72,26 +73,10 @@ void require_traction_converged(const std::vector<contact::TractionResult>& resu
 
 TractionSetup traction_setup(const std::string& config_path, const std::string& ground_path,
                              const std::vector<std::string>& overrides) {
-  std::vector<std::string> tyre_overrides, ground_overrides;
-  std::optional<bool> rigid;
-  for (const auto& o : overrides) {
-    if (o.rfind("tyre.rigid=", 0) == 0) {
-      try {
-        rigid = parse_set_value(o.substr(11), "tyre.rigid").as<bool>();
-      } catch (const YAML::Exception&) {
-        throw InputError({"--set", 0, "tyre.rigid"}, "must be true or false");
-      }
-      continue;
-    }
-    (!ground_path.empty() && o.rfind("ground.", 0) == 0 ? ground_overrides : tyre_overrides)
-        .push_back(o);
-  }
   TractionSetup s;
-  s.config = contact::load_tyre_config(config_path, tyre_overrides);
-  if (rigid) s.config.rigid = *rigid;
+  s.config = config_on_ground(config_path, ground_path, overrides);
   s.rigid = s.config.rigid;
-  s.ground = ground_path.empty() ? s.config.ground
-                                 : ground::load_ground_file(ground_path, ground_overrides);
+  s.ground = s.config.ground;
   s.ground_source = ground_path.empty() ? config_path : ground_path;
   if (!s.ground.soil())
     throw InputError({s.ground_source, 0, "ground.model"},

@@ -47,6 +47,51 @@ TEST_F(SoilCli, TheFootprintHeaderNamesTheSoil) {
       << r.out;
 }
 
+// `footprint --ground SOIL.yaml` is the soil as the config's ground: section would give it (the
+// same document), ground.* overrides go to the soil file, tyre.rigid may follow it; a rigid
+// tyre on the road is refused naming tyre.rigid.
+TEST_F(SoilCli, FootprintTakesTheSoilFileAsItsGround) {
+  std::vector<std::string> by_file{"footprint", kConfig2d, "--load",
+                                   "3000",      "--json",  "--ground",
+                                   kLete,       "--set",   "ground.bekker.n=0.8"};
+  std::vector<std::string> by_set{"footprint",
+                                  kConfig2d,
+                                  "--load",
+                                  "3000",
+                                  "--json",
+                                  "--set",
+                                  "ground.model=bekker",
+                                  "--set",
+                                  "ground.name=LETE sand",
+                                  "--set",
+                                  "ground.bekker.n=0.8",
+                                  "--set",
+                                  "ground.bekker.k_c=102",
+                                  "--set",
+                                  "ground.bekker.k_phi=5301"};
+  by_file.insert(by_file.end(), kCoarse.begin(), kCoarse.end());
+  by_set.insert(by_set.end(), kCoarse.begin(), kCoarse.end());
+  const auto f = run(by_file);
+  const auto s = run(by_set);
+  ASSERT_EQ(f.exit_code, 0) << f.err;
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const auto cf = nlohmann::json::parse(f.out)["cases"][0];
+  const auto cs = nlohmann::json::parse(s.out)["cases"][0];
+  EXPECT_GT(cf["soil_sinkage_mm"].get<double>(), 1.0);  // LETE sand at 3 kN sinks centimetres
+  EXPECT_EQ(cf["soil_sinkage_mm"], cs["soil_sinkage_mm"]);
+  EXPECT_EQ(cf["sinking_mm"], cs["sinking_mm"]);
+  EXPECT_EQ(cf["contact_length_mm"], cs["contact_length_mm"]);
+
+  const auto rigid = run({"footprint", kConfig2d, "--load", "3000", "--ground", kLete, "--set",
+                          "tyre.rigid=true", "--json"});
+  ASSERT_EQ(rigid.exit_code, 0) << rigid.err;
+  EXPECT_EQ(nlohmann::json::parse(rigid.out)["cases"][0]["tyre_deflection_mm"], 0.0);
+
+  const auto road = run({"footprint", kConfig2d, "--load", "3000", "--set", "tyre.rigid=true"});
+  EXPECT_EQ(road.exit_code, 2);
+  EXPECT_NE(road.err.find("tyre.rigid"), std::string::npos) << road.err;
+}
+
 TEST_F(SoilCli, TransientOntoTheSoilGivesItsColumns) {
   const auto r = transient({"--scenario", "load-hold", "--ground", kLete, "--json", "--csv",
                             (dir_ / "lh.csv").string()});

@@ -140,6 +140,11 @@ struct TyreConfig {
 /// 3D patch cannot take (effect_refused_with_3d) and a horizontal force are refused too.
 TyreConfig read_tyre_config(const ConfigTree& tree);
 
+/// Why the config's ground cannot be run with the rest of the config (the 3D patch on a road
+/// profile, the lateral belt or the soil_compliance or rolling_speed effect on a soil, a
+/// horizontal force off the flat road), or "" when it can (docs/soil.md section 4).
+std::string ground_refusal(const TyreConfig& config);
+
 /// Convenience: load a YAML file with --set overrides and read it.
 TyreConfig load_tyre_config(const std::string& path,
                             const std::vector<std::string>& overrides = {});
