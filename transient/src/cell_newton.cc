@@ -5,6 +5,7 @@
 
 #include "modaltyre/transient/column_product.h"
 #include "modaltyre/transient/ode_system.h"
+#include "row_lu_solve.h"
 
 namespace modaltyre::transient {
 
@@ -239,20 +240,7 @@ void CellNewton::factor_dq(double gamma) {
 }
 
 void CellNewton::solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
-  const int n = np_;
-  x.resize(n);
-  for (int i = 0; i < n; ++i) x(cap_perm_(i)) = b(i);
-  const double* lu = cap_lu_.data();
-  for (int i = 1; i < n; ++i) {
-    double s = x(i);
-    for (int j = 0; j < i; ++j) s -= lu[i * n + j] * x(j);
-    x(i) = s;
-  }
-  for (int i = n - 1; i >= 0; --i) {
-    double s = x(i);
-    for (int j = i + 1; j < n; ++j) s -= lu[i * n + j] * x(j);
-    x(i) = s / lu[i * n + i];
-  }
+  row_lu_solve(cap_lu_, cap_perm_, b, x);
 }
 
 void CellNewton::solve_d(double* x) const {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "modaltyre/transient/column_product.h"
+#include "row_lu_solve.h"
 
 namespace modaltyre::transient {
 
@@ -190,22 +191,7 @@ void ContactNewton::factor(double gamma) {
 }
 
 void ContactNewton::solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
-  // P cap = L U (partial pivoting): x = U^-1 L^-1 P b, as plain loops over the np x np factors
-  // (Eigen's dynamic-size triangular solver costs several times this for np = 14).
-  const int n = np_;
-  x.resize(n);
-  for (int i = 0; i < n; ++i) x(cap_perm_(i)) = b(i);
-  const double* lu = cap_lu_.data();
-  for (int i = 1; i < n; ++i) {
-    double s = x(i);
-    for (int j = 0; j < i; ++j) s -= lu[i * n + j] * x(j);
-    x(i) = s;
-  }
-  for (int i = n - 1; i >= 0; --i) {
-    double s = x(i);
-    for (int j = i + 1; j < n; ++j) s -= lu[i * n + j] * x(j);
-    x(i) = s / lu[i * n + i];
-  }
+  row_lu_solve(cap_lu_, cap_perm_, b, x);
 }
 
 void ContactNewton::solve_d(double* x) const {
