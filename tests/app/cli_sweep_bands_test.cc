@@ -62,7 +62,9 @@ TEST_F(SweepBands, CasesCarryFootprintsStdAndReadBackAsNoise) {
   const auto v = run({"validate", kSource + "/configs/sf350_2d_table3.yaml", csv.string(),
                       "--uncertainty", "--json", "--set", "validation.calibrate=[]"});
   ASSERT_EQ(v.exit_code, 0) << v.err;
-  for (const auto& r : nlohmann::json::parse(v.out)["rows"]) {
+  // Parsed into a named value: a range-for over a temporary's member dangles before C++23.
+  const auto vj = nlohmann::json::parse(v.out);
+  for (const auto& r : vj["rows"]) {
     EXPECT_TRUE(r["outside_band"].empty()) << r;
   }
 }

@@ -30,7 +30,9 @@ if [[ -z ${ASAN_SYMBOLIZER_PATH:-} ]]; then
   done
 fi
 
+# -O1 with line tables, as OSS-Fuzz builds: half the compile time of -O2 -g, the same coverage.
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMODALTYRE_FUZZ=ON \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
   -DMODALTYRE_BUILD_TESTS=OFF -DMODALTYRE_BUILD_BENCH=OFF >/dev/null
 cmake --build "$build" --target "${targets[@]}" ${FUZZ_JOBS:+-j "$FUZZ_JOBS"}
 
