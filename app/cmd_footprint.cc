@@ -111,19 +111,10 @@ void register_footprint(CLI::App& app) {
     std::optional<uncertainty::PropagationResult> bands;
     if (a->uncertainty) {
       uncertainty::PropagationOptions uo = a->method.options();
-      std::unique_ptr<ProgressBar> bar;  // one bar per phase: differences, then samples
-      int phase_total = 0, shown_done = 0;
-      uo.progress = [&](int done, int total) {
-        if (!bar || total != phase_total) {
-          if (bar) bar->finish();
-          bar = std::make_unique<ProgressBar>(static_cast<std::size_t>(total), "uncertainty");
-          phase_total = total, shown_done = 0;
-        }
-        if (done > shown_done) bar->tick(static_cast<std::size_t>(done - shown_done));
-        shown_done = std::max(shown_done, done);
-      };
+      UncertaintyProgress bar;
+      uo.progress = bar.callback();
       bands = uncertainty::propagate(config, contact::config_modes(config), cases, uo);
-      if (bar) bar->finish();
+      bar.finish();
     }
     if (a->json) {
       auto j = report::footprint_json(model, results);

@@ -205,6 +205,8 @@ std::string tir_text(const TirFit& f, const contact::TyreConfig& config,
     << " N/m; VERTICAL_STIFFNESS = dF/drho of the fitted (A3.3) at FNOMIN\n"
     << "! : COMMENT :           WIDTH from " << f.width_source << "\n";
   if (!f.pfz1) s << "! : COMMENT :           " << f.pfz1_reason << "\n";
+  for (const auto& c : options.comments)
+    s << "! : COMMENT :           " << printable(c, 400) << "\n";
   s << "! : COMMENT :           [STRUCTURAL] and [INERTIA] left out: the hammer test's modes are "
        "those of its own boundary condition, not MF-Swift's rigid ring on a fixed rim\n"
     << "! : COMMENT :           no force and moment (slip) coefficients: the model predicts "

@@ -58,11 +58,12 @@ struct CaseBands {
 
 struct InputEffect {
   UncertainInput input;
-  std::vector<double> sinking_sensitivity;  ///< d sinking_mm / (1 sigma of the input), per case
+  /// d sinking_mm / (1 sigma of the input), per case (footprint outputs; else the first output)
+  std::vector<double> sinking_sensitivity;
   /// d output / (1 sigma of the input), [case][output_names()], the central differences.
   std::vector<std::vector<double>> sensitivity;
-  double nonlinearity = 0;                  ///< the largest second/first difference ratio
-  std::string nonlinear_output;             ///< where it is (output name and load)
+  double nonlinearity = 0;       ///< the largest second/first difference ratio
+  std::string nonlinear_output;  ///< where it is (output name and load)
 };
 
 struct PropagationResult {
@@ -72,6 +73,27 @@ struct PropagationResult {
   std::vector<CaseBands> cases;
   int evaluations = 0;  ///< model builds
 };
+
+/// Any outputs of a model of (config, modes), [row][output], e.g. tir export's fitted
+/// coefficients or a transient's summary; `what` names the evaluation for an error message.
+/// Throws ComputationError when the model fails. Called from several threads at once.
+using Evaluator = std::function<std::vector<std::vector<double>>(
+    const contact::TyreConfig&, const modal::ModeIdentification&, const std::string& what)>;
+
+struct OutputSet {
+  std::vector<std::string> names;  ///< per output
+  /// Per output: false for a quantity whose second differences are a grid's, not the physics'
+  /// (a maximum over cells); it is left out of the curvature check. Empty: all checked.
+  std::vector<bool> curved;
+  std::vector<std::string> row_labels;  ///< per row, for the check's words (e.g. "4000 N")
+};
+
+/// The same propagation for any outputs (propagate() is it with the footprint's outputs).
+/// The result's cases are the rows (load_N 0), their bands per `outputs.names`.
+PropagationResult propagate_outputs(const contact::TyreConfig& config,
+                                    const modal::ModeIdentification& modes,
+                                    const Evaluator& evaluate, const OutputSet& outputs,
+                                    const PropagationOptions& options = {});
 
 /// Propagates the config's inputs (collect_inputs) to the cases. With no uncertain input every
 /// band has zero width (method "linear", said in `check`). ComputationError when the nominal or a
