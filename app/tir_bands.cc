@@ -1,12 +1,10 @@
 #include "tir_bands.h"
 
-#include <cstdio>
-#include <iostream>
 #include <sstream>
 
+#include "footprint_report.h"
 #include "modaltyre/contact/tyre_model.h"
 #include "modaltyre/core/errors.h"
-#include "modaltyre/report/uncertainty_json.h"
 
 namespace modaltyre::app {
 namespace {
@@ -73,22 +71,9 @@ std::vector<std::string> tir_band_comments(const TirBands& bands) {
 }
 
 void print_tir_bands(const TirBands& bands) {
-  const auto& r = bands.result;
-  std::cout << "uncertainty (" << r.method << ": " << r.check << "), value +- 2 sigma:\n";
-  const auto& row = r.cases.front().bands;
-  for (std::size_t q = 0; q < bands.names.size(); ++q) {
-    std::printf("  %-19s %s%s\n", bands.names[q].c_str(),
-                report::plus_minus(row[q].value, 2 * row[q].std, 4).c_str(),
-                unit(bands.names[q]).c_str());
-  }
-  std::cout << "inputs (relative standard deviation, source):";
-  if (r.inputs.empty()) std::cout << " none";
-  std::cout << "\n";
-  for (const auto& e : r.inputs) {
-    std::printf("  %-28s %6.2f %%  %s\n", e.input.name.c_str(), 100 * e.input.rel_std,
-                e.input.source.c_str());
-  }
-  std::fflush(stdout);
+  std::vector<std::string> shown;
+  for (const auto& n : bands.names) shown.push_back(n + unit(n));
+  print_named_bands(shown, bands.result);
 }
 
 }  // namespace modaltyre::app
