@@ -76,7 +76,8 @@ void register_footprint(CLI::App& app) {
                 "band on every output (docs/uncertainty.md)");
   add_uncertainty_method_options(cmd, a->method);
   cmd->add_option("--map-csv", a->map_csv,
-                  "write the pressure maps as CSV load_N,x_mm,y_mm,pressure_kPa (footprint_3d:)");
+                  "write the pressure maps as CSV load_N,x_mm,y_mm,pressure_kPa (footprint_3d:); "
+                  "with --uncertainty also pressure_p025_kPa,pressure_p975_kPa");
   cmd->callback([a, cmd] {
     auto overrides = a->overrides;
     const auto settings = take_condition_settings(overrides);
@@ -107,15 +108,20 @@ void register_footprint(CLI::App& app) {
         plot_pressures(results, config, a->plot);
       }
     }
-    if (!a->map_csv.empty()) write_map_csv(results, a->map_csv);
     std::optional<uncertainty::PropagationResult> bands;
+    std::optional<MapBands> map_bands;
     if (a->uncertainty) {
       uncertainty::PropagationOptions uo = a->method.options();
       UncertaintyProgress bar;
       uo.progress = bar.callback();
-      bands = uncertainty::propagate(config, contact::config_modes(config), cases, uo);
+      // With a map, its cells ride along the same model evaluations (their band: two maps).
+      const auto extra =
+          a->map_csv.empty() ? uncertainty::ExtraOutputs{} : map_cell_outputs(results);
+      bands = uncertainty::propagate(config, contact::config_modes(config), cases, uo, extra);
       bar.finish();
+      if (extra.count > 0) map_bands = take_map_bands(*bands);
     }
+    if (!a->map_csv.empty()) write_map_csv(results, a->map_csv, map_bands ? &*map_bands : nullptr);
     if (a->json) {
       auto j = report::footprint_json(model, results);
       j["conditions"] = report::footprint_conditions_json(shown);

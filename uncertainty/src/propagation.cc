@@ -31,7 +31,7 @@ using Outputs = std::vector<std::vector<double>>;  // [case][output]
 
 Outputs footprint_outputs(const contact::TyreConfig& config, const modal::ModeIdentification& modes,
                           const std::vector<contact::OperatingConditions>& cases,
-                          const std::string& what) {
+                          const ExtraOutputs& extra, const std::string& what) {
   const contact::TyreModel model = contact::build_tyre_model(config, modes);
   Outputs out;
   for (const auto& c : cases) {
@@ -40,8 +40,12 @@ Outputs footprint_outputs(const contact::TyreConfig& config, const modal::ModeId
       throw ComputationError("uncertainty: the prediction at " + std::to_string(c.load_N) +
                              " N with " + what + " failed: " + p.message);
     }
-    out.push_back({p.sinking_mm, p.length_mm, p.width_mm, contact::peak_pressure_Pa(p) * 1e-3,
-                   contact::smooth_mean_pressure_Pa(p) * 1e-3});
+    out.push_back(footprint_output_values(p));
+    if (extra.count > 0) {
+      std::vector<double> more = extra.values(out.size() - 1, p);
+      more.resize(extra.count, 0.0);
+      out.back().insert(out.back().end(), more.begin(), more.end());
+    }
   }
   return out;
 }
@@ -80,6 +84,11 @@ double percentile(std::vector<double> v, double q) {
 }
 
 }  // namespace
+
+std::vector<double> footprint_output_values(const contact::Prediction& p) {
+  return {p.sinking_mm, p.length_mm, p.width_mm, contact::peak_pressure_Pa(p) * 1e-3,
+          contact::smooth_mean_pressure_Pa(p) * 1e-3};
+}
 
 void PropagationOptions::validate() const {
   if (samples < 20 || samples > 100000) {
@@ -203,10 +212,19 @@ PropagationResult propagate_outputs(const contact::TyreConfig& config,
   }
   check << ", threshold " << o.max_nonlinearity;
   if (!outputs.curved.empty() && std::count(outputs.curved.begin(), outputs.curved.end(), false)) {
-    check << " (not checked: a maximum over cells";
+    // Not checked: grid quantities (a maximum over cells, a map's cells); a few named.
+    check << " (not checked, a grid's quantities:";
+    std::size_t named = 0, unnamed = 0;
     for (std::size_t q = 0; q < no; ++q) {
-      if (!outputs.curved[q]) check << ", " << outputs.names[q];
+      if (outputs.curved[q]) continue;
+      if (named < 3) {
+        check << (named ? ", " : " ") << outputs.names[q];
+        ++named;
+      } else {
+        ++unnamed;
+      }
     }
+    if (unnamed) check << " and " << unnamed << " more";
     check << ")";
   }
   const bool sample =
@@ -267,16 +285,32 @@ PropagationResult propagate(const contact::TyreConfig& config,
                             const modal::ModeIdentification& modes,
                             const std::vector<contact::OperatingConditions>& cases,
                             const PropagationOptions& options) {
+  return propagate(config, modes, cases, options, ExtraOutputs{});
+}
+
+PropagationResult propagate(const contact::TyreConfig& config,
+                            const modal::ModeIdentification& modes,
+                            const std::vector<contact::OperatingConditions>& cases,
+                            const PropagationOptions& options, const ExtraOutputs& extra) {
+  if (extra.count > 0 && !extra.values) {
+    throw std::invalid_argument("uncertainty: ExtraOutputs.count > 0 needs its values function");
+  }
   OutputSet outputs;
   outputs.names = output_names();
   outputs.curved.assign(outputs.names.size(), true);
   outputs.curved[kPeakOutput] = false;  // a maximum over the grid's cells: piecewise, not curved
+  for (std::size_t k = 0; k < extra.count; ++k) {
+    outputs.names.push_back(extra.label + " " + std::to_string(k + 1));
+    outputs.curved.push_back(false);
+  }
   for (const auto& c : cases) {
     outputs.row_labels.push_back(std::to_string(static_cast<long>(c.load_N)) + " N");
   }
-  const Evaluator footprints =
-      [&cases](const contact::TyreConfig& c, const modal::ModeIdentification& m,
-               const std::string& what) { return footprint_outputs(c, m, cases, what); };
+  const Evaluator footprints = [&cases, &extra](const contact::TyreConfig& c,
+                                                const modal::ModeIdentification& m,
+                                                const std::string& what) {
+    return footprint_outputs(c, m, cases, extra, what);
+  };
   PropagationResult r = propagate_outputs(config, modes, footprints, outputs, options);
   for (std::size_t c = 0; c < cases.size(); ++c) r.cases[c].load_N = cases[c].load_N;
   return r;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "modaltyre/contact/operating_conditions.h"
+#include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/modal/mode_identification.h"
 #include "modaltyre/uncertainty/inputs.h"
@@ -44,6 +45,9 @@ inline const std::vector<std::string>& output_names() {
                                                  "peak_pressure_kPa", "mean_pressure_kPa"};
   return names;
 }
+
+/// A prediction's values of output_names(), in that order.
+std::vector<double> footprint_output_values(const contact::Prediction& p);
 
 struct Band {
   double value = 0;  ///< at the nominal inputs (linear) or the samples' mean (sampled)
@@ -95,6 +99,15 @@ PropagationResult propagate_outputs(const contact::TyreConfig& config,
                                     const Evaluator& evaluate, const OutputSet& outputs,
                                     const PropagationOptions& options = {});
 
+/// Outputs a caller adds to the footprint's per case, from each (perturbed) prediction: e.g.
+/// the pressure map's cells. Their curvature is not checked (a grid's quantities); a case with
+/// fewer than `count` values is padded with zeros (a band of zero width).
+struct ExtraOutputs {
+  std::size_t count = 0;
+  std::string label = "extra output";  ///< their name in the check's words ("map cell")
+  std::function<std::vector<double>(std::size_t case_index, const contact::Prediction&)> values;
+};
+
 /// Propagates the config's inputs (collect_inputs) to the cases. With no uncertain input every
 /// band has zero width (method "linear", said in `check`). ComputationError when the nominal or a
 /// perturbed prediction fails (with the input and its message).
@@ -102,5 +115,11 @@ PropagationResult propagate(const contact::TyreConfig& config,
                             const modal::ModeIdentification& modes,
                             const std::vector<contact::OperatingConditions>& cases,
                             const PropagationOptions& options = {});
+
+/// The same with `extra` outputs after output_names() in every case's bands.
+PropagationResult propagate(const contact::TyreConfig& config,
+                            const modal::ModeIdentification& modes,
+                            const std::vector<contact::OperatingConditions>& cases,
+                            const PropagationOptions& options, const ExtraOutputs& extra);
 
 }  // namespace modaltyre::uncertainty
