@@ -136,6 +136,31 @@ CarcassSettings read_carcass_settings(const ConfigSection& modal) {
     modal.fail(s.orders.empty() ? "damping_ratios" : "orders",
                "belongs to a frequency list (modal.frequencies_hz)");
   }
+  // Alternative order assignments: at most init's max_alternatives (5) plus a few of the user's.
+  constexpr std::size_t kMaxAlternatives = 10;
+  for (const auto& alt : modal.integer_lists("order_alternatives", 0, 1000, kMaxAlternatives)) {
+    s.order_alternatives.emplace_back(alt.begin(), alt.end());
+    if (!s.frequency_list() || s.order_alternatives.back().size() != s.frequencies_hz.size()) {
+      modal.fail("order_alternatives",
+                 "each alternative gives one order per frequency of modal.frequencies_hz");
+    }
+  }
+  s.order_alternative_probabilities = modal.numbers("order_alternative_probabilities", {}, 0, 1);
+  if (s.order_alternative_probabilities.size() != s.order_alternatives.size()) {
+    modal.fail(
+        s.order_alternatives.empty() ? "order_alternative_probabilities" : "order_alternatives",
+        "one probability per alternative (modal.order_alternative_probabilities)");
+  }
+  double sum = 0;
+  for (double p : s.order_alternative_probabilities) {
+    if (!(p > 0)) modal.fail("order_alternative_probabilities", "every probability must be > 0");
+    sum += p;
+  }
+  if (!(sum < 1)) {
+    modal.fail("order_alternative_probabilities",
+               "the alternatives' probabilities must sum to less than 1 (modal.orders has the "
+               "rest)");
+  }
   s.rotation_frequency_hz = modal.number("rotation_frequency_hz", 0, 0, 1e5);
   s.rotation_damping_ratio = modal.number("rotation_damping_ratio", 0, 0, 0.999);
   const std::string norm =

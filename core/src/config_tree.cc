@@ -332,4 +332,31 @@ std::vector<std::string> ConfigSection::texts(const std::string& key,
   return out;
 }
 
+std::vector<std::vector<long>> ConfigSection::integer_lists(const std::string& key, long min,
+                                                            long max, std::size_t max_lists) const {
+  const YAML::Node n = child(key);
+  if (!n) return {};
+  if (!n.IsSequence()) fail(key, "expected a list of lists, e.g. [[1, 2, 3], [2, 3, 4]]");
+  if (n.size() > max_lists) {
+    fail(key, "at most " + std::to_string(max_lists) + " lists, got " + std::to_string(n.size()));
+  }
+  std::vector<std::vector<long>> out;
+  for (const auto& list : n) {
+    if (!list.IsSequence()) fail(key, "every item must be a list, e.g. [1, 2, 3]");
+    std::vector<long> v;
+    for (const auto& item : list) {
+      const auto x = item.IsScalar() ? parse_finite_double(item.Scalar()) : std::nullopt;
+      if (!x || std::floor(*x) != *x) fail(key, "every list item must be an integer");
+      if (*x < static_cast<double>(min) || *x > static_cast<double>(max)) {
+        fail(key, "list value " + std::to_string(static_cast<long long>(*x)) +
+                      " is out of range [" + std::to_string(min) + ", " + std::to_string(max) +
+                      "]");
+      }
+      v.push_back(static_cast<long>(*x));
+    }
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
 }  // namespace modaltyre

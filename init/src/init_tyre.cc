@@ -194,6 +194,38 @@ InitResult init_tyre(const InitInputs& in) {
         << "\n";
     decide("modal.orders", list(o_list),
            r.orders_proposed ? "proposed (ring dispersion)" : "input");
+    // The near-ties the frequencies cannot decide: written with their Akaike weights
+    // exp(-(score - best) / 2) over the best and the near-ties, so that --uncertainty mixes them
+    // into its bands (issue 35; docs/uncertainty.md section 2).
+    if (r.orders_proposed) {
+      const double best = r.alternatives.front().score;
+      std::vector<const modal::OrderProposal*> ties;
+      double total = 1;  // the best's weight
+      for (std::size_t k = 1; k < r.alternatives.size(); ++k) {
+        if (r.alternatives[k].score < best + kNearTie) {
+          ties.push_back(&r.alternatives[k]);
+          total += std::exp(-(r.alternatives[k].score - best) / 2);
+        }
+      }
+      if (!ties.empty()) {
+        std::string lists = "[", probs = "[";
+        for (std::size_t k = 0; k < ties.size(); ++k) {
+          lists += (k ? ", " : "") + list(ties[k]->orders);
+          const double p = std::exp(-(ties[k]->score - best) / 2) / total;
+          probs += (k ? ", " : "") + num(std::round(p * 1e4) / 1e4);
+        }
+        y << "  # Assignments that fit nearly as well (scores within " << num(kNearTie)
+          << " of the best), with their Akaike\n"
+          << "  # weights exp(-(score - best)/2); the prediction uses `orders` (probability "
+          << num(std::round(1e4 / total) / 1e4) << "),\n"
+          << "  # --uncertainty mixes these into its bands. State --orders if the shapes "
+             "decide.\n";
+        y << "  order_alternatives: " << lists << "]\n";
+        y << "  order_alternative_probabilities: " << probs << "]\n";
+        decide("modal.order_alternatives", lists + "]",
+               "near-ties of the proposal (Akaike weights)");
+      }
+    }
   } else {
     std::string path = in.hammer_csv;
     if (!in.output_path.empty()) {

@@ -12,6 +12,7 @@
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_model.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/uncertainty/order_mixture.h"
 
 namespace modaltyre::uncertainty {
 namespace {
@@ -100,10 +101,15 @@ void PropagationOptions::validate() const {
   if (threads < 0 || threads > 4096) throw std::invalid_argument("threads must be in 0..4096");
 }
 
-PropagationResult propagate_outputs(const contact::TyreConfig& config,
-                                    const modal::ModeIdentification& modes,
-                                    const Evaluator& evaluate, const OutputSet& outputs,
-                                    const PropagationOptions& o) {
+namespace {
+
+// The continuous inputs' bands; `nominal_out` gets the nominal outputs and, when sampled,
+// `samples_out` the samples.
+PropagationResult propagate_continuous(const contact::TyreConfig& config,
+                                       const modal::ModeIdentification& modes,
+                                       const Evaluator& evaluate, const OutputSet& outputs,
+                                       const PropagationOptions& o, Outputs& nominal_out,
+                                       std::vector<Outputs>& samples_out) {
   o.validate();
   std::vector<UncertainInput> inputs = collect_inputs(config, modes);
   inputs.insert(inputs.end(), o.extra_inputs.begin(), o.extra_inputs.end());
@@ -116,6 +122,7 @@ PropagationResult propagate_outputs(const contact::TyreConfig& config,
   const Outputs nominal = evaluate(config, modes, "the nominal inputs");
   const std::size_t nc = nominal.size();
   check_shape(nominal, nc, no, "the nominal inputs");
+  nominal_out = nominal;
   const auto row_label = [&](std::size_t c) {
     return c < outputs.row_labels.size() ? outputs.row_labels[c] : "row " + std::to_string(c + 1);
   };
@@ -278,6 +285,72 @@ PropagationResult propagate_outputs(const contact::TyreConfig& config,
         << (o.method == Method::sampled ? " as asked"
                                         : " because the linearisation is not trusted");
   r.check = check.str();
+  samples_out = std::move(s);
+  return r;
+}
+
+// A frequency list's alternative order assignments (modal.order_alternatives) mixed into the
+// bands: each alternative's nominal prediction shifts the continuous distribution
+// (order_mixture.h).
+void mix_order_alternatives(PropagationResult& r, const contact::TyreConfig& config,
+                            const modal::ModeIdentification& modes, const Evaluator& evaluate,
+                            const Outputs& nominal, const std::vector<Outputs>& samples) {
+  const contact::CarcassSettings& s = config.carcass;
+  const std::size_t na = s.order_alternatives.size();
+  if (na == 0) return;
+  std::vector<Outputs> alt(na);
+  for (std::size_t a = 0; a < na; ++a) {
+    contact::TyreConfig c = config;
+    c.carcass.orders = s.order_alternatives[a];
+    modal::ModeIdentification m = modes;
+    // config_modes: the list's modes first, in the list's order.
+    for (std::size_t i = 0; i < c.carcass.orders.size() && i < m.modes.size(); ++i) {
+      m.modes[i].apparent_order = c.carcass.orders[i];
+    }
+    const std::string what = "order alternative " + std::to_string(a + 1);
+    alt[a] = evaluate(c, m, what);
+    check_shape(alt[a], nominal.size(), nominal.front().size(), what);
+  }
+  r.evaluations += static_cast<int>(na);
+  if (r.inputs.empty())
+    r.check = "no continuous uncertain input (noise-free shapes, nothing stated)";
+  double rest = 1;
+  for (double p : s.order_alternative_probabilities) rest -= p;
+  r.order_alternatives.push_back({s.orders, rest});
+  for (std::size_t a = 0; a < na; ++a) {
+    r.order_alternatives.push_back({s.order_alternatives[a], s.order_alternative_probabilities[a]});
+  }
+  for (std::size_t c = 0; c < nominal.size(); ++c) {
+    for (std::size_t q = 0; q < nominal[c].size(); ++q) {
+      std::vector<MixtureComponent> comps = {{rest, 0.0}};
+      for (std::size_t a = 0; a < na; ++a) {
+        comps.push_back({s.order_alternative_probabilities[a], alt[a][c][q] - nominal[c][q]});
+      }
+      std::vector<double> column;
+      for (const auto& sample : samples) column.push_back(sample[c][q]);
+      r.cases[c].bands[q] =
+          mix_band(r.cases[c].bands[q], samples.empty() ? nullptr : &column, comps);
+    }
+  }
+  std::ostringstream words;
+  words.precision(3);
+  words << "; mixed with " << na << " alternative order assignment" << (na > 1 ? "s" : "")
+        << " of the frequency list (modal.order_alternatives, probabilities";
+  for (double p : s.order_alternative_probabilities) words << " " << p;
+  words << "; modal.orders " << rest << ")";
+  r.check += words.str();
+}
+
+}  // namespace
+
+PropagationResult propagate_outputs(const contact::TyreConfig& config,
+                                    const modal::ModeIdentification& modes,
+                                    const Evaluator& evaluate, const OutputSet& outputs,
+                                    const PropagationOptions& o) {
+  Outputs nominal;
+  std::vector<Outputs> samples;
+  PropagationResult r = propagate_continuous(config, modes, evaluate, outputs, o, nominal, samples);
+  mix_order_alternatives(r, config, modes, evaluate, nominal, samples);
   return r;
 }
 

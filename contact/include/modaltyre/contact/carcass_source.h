@@ -26,6 +26,12 @@ struct CarcassSettings {
   std::vector<double> frequencies_hz;
   std::vector<int> orders;
   std::vector<double> damping_ratios;
+  /// modal.order_alternatives / order_alternative_probabilities: other order assignments of the
+  /// frequency list that fit nearly as well (init's near-ties, issue 36 item 3), each with its
+  /// probability; `orders` has the rest (1 - their sum). The uncertainty propagation mixes them
+  /// (docs/uncertainty.md section 2); the prediction itself uses `orders`.
+  std::vector<std::vector<int>> order_alternatives;
+  std::vector<double> order_alternative_probabilities;
   /// modal.rotation_frequency_hz / rotation_damping_ratio: the rigid rotation mode, 0 = none.
   double rotation_frequency_hz = 0;
   double rotation_damping_ratio = 0;

@@ -85,6 +85,10 @@ class ConfigSection {
                              long max) const;
   std::vector<std::string> texts(const std::string& key,
                                  const std::vector<std::string>& fallback) const;
+  /// A list of integer lists, e.g. [[1, 2, 3], [2, 3, 4]]: empty when absent; at most
+  /// `max_lists` lists, every item an integer in [min, max].
+  std::vector<std::vector<long>> integer_lists(const std::string& key, long min, long max,
+                                               std::size_t max_lists) const;
 
   /// Location of a key for error messages (file:line or --set).
   InputLocation where(const std::string& key) const;

@@ -70,9 +70,17 @@ struct InputEffect {
   std::string nonlinear_output;  ///< where it is (output name and load)
 };
 
+/// An order assignment of a frequency list mixed into the bands (modal.order_alternatives).
+struct OrderAlternative {
+  std::vector<int> orders;
+  double probability = 0;
+};
+
 struct PropagationResult {
   std::string method;  ///< "linear" or "sampled"
   std::string check;   ///< how the method was checked, in words
+  /// The assignments mixed in, the config's modal.orders first; empty without alternatives.
+  std::vector<OrderAlternative> order_alternatives;
   std::vector<InputEffect> inputs;
   std::vector<CaseBands> cases;
   int evaluations = 0;  ///< model builds
