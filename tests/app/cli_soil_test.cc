@@ -118,8 +118,8 @@ TEST_F(SoilCli, WhatTheTransientOnSoilDoesNotModelIsRefused) {
   const auto b = transient({"--scenario", "cleat", "--ground", kLete});
   EXPECT_EQ(b.exit_code, 2);
   EXPECT_NE(b.err.find("ground.model"), std::string::npos) << b.err;
-  // The 3D patch.
-  const auto c = run({"transient", kConfig3d, "--scenario", "load-hold", "--ground", kLete});
+  // The cleat on the 3D patch (its soil transient runs load-hold, free vibration, rolling).
+  const auto c = run({"transient", kConfig3d, "--scenario", "cleat", "--ground", kLete});
   EXPECT_EQ(c.exit_code, 2);
   EXPECT_NE(c.err.find("ground.model"), std::string::npos) << c.err;
   // A soil key the file does not know.

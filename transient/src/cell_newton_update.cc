@@ -99,7 +99,7 @@ void CellNewton::update_active_set() {
       return ne_ > 0 ? mu * kd * (1.0 - gamma * kd / c_kv * ee_d_inv_(k)) : mu * kd;
     };
     const double w_old = weight(kd_(k));
-    kd_(k) = f(k) > 0 ? kc_slot_(k) : 0.0;
+    kd_(k) = f(k) > 0 ? sys_.slot_stiffness(k) : 0.0;
     if (ne_ > 0)
       ee_d_inv_(k) = 1.0 / (1.0 - gamma * (kUpwind[0] * adv_ - (kd_(k) + cm_.k_kv(i)) / c_kv));
     dw_.emplace_back(i, weight(kd_(k)) - w_old);
