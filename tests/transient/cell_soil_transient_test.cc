@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "decay_metrics.h"
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/transient.h"
@@ -157,9 +158,11 @@ class FlatCrownOnSoil : public ::testing::TestWithParam<Scenario> {};
 
 TEST_P(FlatCrownOnSoil, Equals2dSoilTransientOfTheTreadWidth) {
   TyreConfig cfg = load_tyre_config(
-      kConfig, join(coarse({"transient.load_hold.hold_s=0.3", "transient.rolling.duration_s=1.0",
-                            "transient.rolling.ramp_s=0.5", "transient.rolling.load_N=3000"}),
-                    join(kLete, kWongUnloading)));
+      kConfig,
+      join(coarse({"transient.load_hold.hold_s=0.3", "transient.free_vibration.duration_s=0.4",
+                   "transient.rolling.duration_s=1.0", "transient.rolling.ramp_s=0.5",
+                   "transient.rolling.load_N=3000"}),
+           join(kLete, kWongUnloading)));
   // 1 mm sections, as the road's flat-crown test (cell_transient_test.cc): the two patches
   // interpolate the edge with different level functions, the same to O(unit).
   cfg.mesh.unit_length_m = 1e-3;
@@ -194,6 +197,14 @@ TEST_P(FlatCrownOnSoil, Equals2dSoilTransientOfTheTreadWidth) {
     scale = std::max(scale, std::abs(r2.samples[k].sinking_m));
   }
   EXPECT_LT(worst, kFlatCrownTol * scale);
+  if (sc == Scenario::free_vibration) {
+    const BounceDecay d3 = bounce_decay(r3, 6), d2 = bounce_decay(r2, 6);
+    ASSERT_GE(d2.peaks, 4);
+    EXPECT_LT(rel(d3.period_s, d2.period_s), kFlatCrownTol);
+    EXPECT_LT(rel(d3.log_decrement, d2.log_decrement), kFlatCrownTol);
+    RecordProperty("period", std::to_string(d3.period_s / d2.period_s - 1));
+    RecordProperty("log_decrement", std::to_string(d3.log_decrement / d2.log_decrement - 1));
+  }
   if (sc == Scenario::rolling) {
     ASSERT_GT(r2.samples.back().soil_resistance_N, 0);
     both([](const TransientSample& x) { return x.soil_resistance_N; }, "compaction_resistance");
@@ -201,8 +212,9 @@ TEST_P(FlatCrownOnSoil, Equals2dSoilTransientOfTheTreadWidth) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(LoadHoldAndRolling, FlatCrownOnSoil,
-                         ::testing::Values(Scenario::load_hold, Scenario::rolling),
+INSTANTIATE_TEST_SUITE_P(EverySoilScenario, FlatCrownOnSoil,
+                         ::testing::Values(Scenario::load_hold, Scenario::free_vibration,
+                                           Scenario::rolling),
                          [](const ::testing::TestParamInfo<Scenario>& info) {
                            std::string name = to_string(info.param);
                            std::replace(name.begin(), name.end(), '-', '_');
