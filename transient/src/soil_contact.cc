@@ -134,9 +134,10 @@ double SoilContact::unit_force(int i, double g, double zm, double* dfdg, double*
   double p = pressure_(i);
   if (!(p > lo && p < hi)) p = 0.5 * (lo + hi);
   const double tol = kRootTolerance * g;
-  double dZ = 0;
+  double dZ = 0, Zp = 0, p_of_Zp = -1;  // Z at p_of_Zp (the last evaluation, reused below)
   for (int it = 0; it < kMaxRootIterations; ++it) {
-    const double h = A * p / k + Z(p) - g;
+    Zp = Z(p), p_of_Zp = p;
+    const double h = A * p / k + Zp - g;
     if (h > 0)
       hi = p;
     else
@@ -148,7 +149,7 @@ double SoilContact::unit_force(int i, double g, double zm, double* dfdg, double*
     p = next;
   }
   pressure_(i) = p;
-  *depth = Z(p);
+  *depth = p == p_of_Zp ? Zp : Z(p);
   *dfdg = 1.0 / (1.0 / k + dZ / A);
   return p * A;
 }
