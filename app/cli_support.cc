@@ -127,4 +127,20 @@ void add_uncertainty_method_options(CLI::App* cmd, UncertaintyMethodArgs& a) {
       ->check(CLI::Range(20, 100000));
 }
 
+std::function<void(int, int)> UncertaintyProgress::callback() {
+  return [this](int done, int total) {
+    if (!bar_ || total != phase_total_) {
+      if (bar_) bar_->finish();
+      bar_ = std::make_unique<ProgressBar>(static_cast<std::size_t>(total), "uncertainty");
+      phase_total_ = total, shown_done_ = 0;
+    }
+    if (done > shown_done_) bar_->tick(static_cast<std::size_t>(done - shown_done_));
+    shown_done_ = std::max(shown_done_, done);
+  };
+}
+
+void UncertaintyProgress::finish() {
+  if (bar_) bar_->finish();
+}
+
 }  // namespace modaltyre::app

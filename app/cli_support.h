@@ -2,12 +2,15 @@
 // Small helpers shared by the subcommands: output routing and number formatting.
 // The library never prints; only the app does.
 #include <CLI/CLI.hpp>
+#include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "modaltyre/core/command_files.h"
 #include "modaltyre/core/number_format.h"
+#include "modaltyre/core/progress.h"
 #include "modaltyre/report/check_finite.h"
 #include "modaltyre/report/command_inputs.h"
 #include "modaltyre/uncertainty/propagation.h"
@@ -61,6 +64,18 @@ struct UncertaintyMethodArgs {
   uncertainty::PropagationOptions options() const;
 };
 void add_uncertainty_method_options(CLI::App* cmd, UncertaintyMethodArgs& a);
+
+/// The propagation's progress on stderr, one bar per phase (the differences, then the samples):
+/// set options.progress = bar.callback() and call finish() after the propagation.
+class UncertaintyProgress {
+ public:
+  std::function<void(int, int)> callback();
+  void finish();
+
+ private:
+  std::unique_ptr<ProgressBar> bar_;
+  int phase_total_ = 0, shown_done_ = 0;
+};
 
 /// Rounds to a number of significant digits for JSON (keeps output stable and readable).
 using modaltyre::round_sig;

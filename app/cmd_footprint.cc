@@ -76,7 +76,8 @@ void register_footprint(CLI::App& app) {
                 "band on every output (docs/uncertainty.md)");
   add_uncertainty_method_options(cmd, a->method);
   cmd->add_option("--map-csv", a->map_csv,
-                  "write the pressure maps as CSV load_N,x_mm,y_mm,pressure_kPa (footprint_3d:)");
+                  "write the pressure maps as CSV load_N,x_mm,y_mm,pressure_kPa (footprint_3d:); "
+                  "with --uncertainty also pressure_p025_kPa,pressure_p975_kPa");
   cmd->callback([a, cmd] {
     auto overrides = a->overrides;
     const auto settings = take_condition_settings(overrides);
@@ -107,24 +108,20 @@ void register_footprint(CLI::App& app) {
         plot_pressures(results, config, a->plot);
       }
     }
-    if (!a->map_csv.empty()) write_map_csv(results, a->map_csv);
     std::optional<uncertainty::PropagationResult> bands;
+    std::optional<MapBands> map_bands;
     if (a->uncertainty) {
       uncertainty::PropagationOptions uo = a->method.options();
-      std::unique_ptr<ProgressBar> bar;  // one bar per phase: differences, then samples
-      int phase_total = 0, shown_done = 0;
-      uo.progress = [&](int done, int total) {
-        if (!bar || total != phase_total) {
-          if (bar) bar->finish();
-          bar = std::make_unique<ProgressBar>(static_cast<std::size_t>(total), "uncertainty");
-          phase_total = total, shown_done = 0;
-        }
-        if (done > shown_done) bar->tick(static_cast<std::size_t>(done - shown_done));
-        shown_done = std::max(shown_done, done);
-      };
-      bands = uncertainty::propagate(config, contact::config_modes(config), cases, uo);
-      if (bar) bar->finish();
+      UncertaintyProgress bar;
+      uo.progress = bar.callback();
+      // With a map, its cells ride along the same model evaluations (their band: two maps).
+      const auto extra =
+          a->map_csv.empty() ? uncertainty::ExtraOutputs{} : map_cell_outputs(results);
+      bands = uncertainty::propagate(config, contact::config_modes(config), cases, uo, extra);
+      bar.finish();
+      if (extra.count > 0) map_bands = take_map_bands(*bands);
     }
+    if (!a->map_csv.empty()) write_map_csv(results, a->map_csv, map_bands ? &*map_bands : nullptr);
     if (a->json) {
       auto j = report::footprint_json(model, results);
       j["conditions"] = report::footprint_conditions_json(shown);

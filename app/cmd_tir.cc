@@ -1,4 +1,5 @@
 // modaltyre tir export CONFIG --output FILE.tir [--loads N...] [--fnomin N] [--set k=v]...
+//                      [--uncertainty [--uncertainty-method M] [--samples K]]
 // modaltyre tir compare CONFIG FILE.tir [--json] [--plot FILE] [--fnomin N] [--points K]
 // The MF-Tyre/MF-Swift .tir bridge (tir/, docs/tir.md).
 #include <iostream>
@@ -12,6 +13,7 @@
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/tir/tir_compare.h"
 #include "modaltyre/tir/tir_export.h"
+#include "tir_bands.h"
 
 namespace modaltyre::app {
 namespace {
@@ -23,6 +25,8 @@ struct TirArgs {
   int points = 12;
   std::vector<std::string> overrides;
   bool json = false;
+  bool uncertainty = false;
+  UncertaintyMethodArgs method;
 };
 
 nlohmann::json opt(const std::optional<double>& v, double scale = 1) {
@@ -44,6 +48,15 @@ void run_export(const TirArgs& a, CLI::App* cmd) {
   o.loads_N = a.loads;
   o.config_label = a.config;
   const tir::TirFit f = tir::fit_tir(model, o);
+  std::optional<TirBands> bands;
+  if (a.uncertainty) {
+    uncertainty::PropagationOptions uo = a.method.options();
+    UncertaintyProgress bar;
+    uo.progress = bar.callback();
+    bands = tir_bands(config, o, f, uo);
+    bar.finish();
+    o.comments = tir_band_comments(*bands);
+  }
   write_file_atomically(a.output, tir::tir_text(f, config, o));
   std::cout << "wrote " << a.output << " (MF-Tyre 6.2, FITTYP 62, SI units)\n"
             << "  FNOMIN              " << fixed(f.fnomin_N, 1) << " N\n"
@@ -61,6 +74,7 @@ void run_export(const TirArgs& a, CLI::App* cmd) {
             << (f.width ? "RMS " + pct(f.width->rms_rel) : "not fitted: " + f.curve.width_reason)
             << "\n";
   if (!f.pfz1) std::cout << "  " << f.pfz1_reason << "\n";
+  if (bands) print_tir_bands(*bands);
 }
 
 nlohmann::json comparison_json(const tir::TirComparison& c) {
@@ -206,6 +220,10 @@ void register_tir(CLI::App& app) {
   ex->add_option("--loads", e->loads, "loads to fit [N] (default: 12 over 0.25-2 x FNOMIN)");
   ex->add_option("--fnomin", e->fnomin, "nominal load FNOMIN [N] (default: middle of loads_N)");
   ex->add_option("--set", e->overrides, "override a config key");
+  ex->add_flag("--uncertainty", e->uncertainty,
+               "propagate the inputs' uncertainty (the hammer shapes' noise, stated std) to the "
+               "fitted coefficients: printed and in the header's comments (docs/uncertainty.md)");
+  add_uncertainty_method_options(ex, e->method);
   ex->callback([e, ex] { run_export(*e, ex); });
 
   auto c = std::make_shared<TirArgs>();

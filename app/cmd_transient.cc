@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "cli_support.h"
@@ -19,6 +20,7 @@
 #include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/transient_json.h"
 #include "modaltyre/transient/transient.h"
+#include "transient_bands.h"
 
 namespace modaltyre::app {
 
@@ -33,6 +35,8 @@ struct TransientArgs {
   std::string csv;
   std::string plot;
   bool json = false;
+  bool uncertainty = false;
+  UncertaintyMethodArgs method;
   std::vector<std::string> overrides;
   std::vector<double> map_times;
   std::string map_csv;
@@ -135,6 +139,10 @@ void register_transient(CLI::App& app) {
   cmd->add_option("--map-csv", a->map_csv,
                   "3D patch: write the contact maps (time_s,x_mm,y_mm,pressure_kPa)");
   cmd->add_option("--plot", a->plot, "draw the time series (.svg or .png)");
+  cmd->add_flag("--uncertainty", a->uncertainty,
+                "propagate the inputs' uncertainty (the hammer shapes' noise, stated std) to the "
+                "run's summary by re-running the scenario (docs/uncertainty.md section 8)");
+  add_uncertainty_method_options(cmd, a->method);
   cmd->add_option("--set", a->overrides,
                   "override a config key, e.g. --set transient.load_hold.hold_s=10, or state a "
                   "condition of the scenario: load_N; hold_s (load-hold); speed_kmh (rolling, "
@@ -197,6 +205,14 @@ void register_transient(CLI::App& app) {
     const transient::TransientResult r = transient::run_scenario(model, scenario, opts);
     if (drawn) std::fprintf(stderr, "\n");
     if (!r.ok()) throw ComputationError(r.message);
+    std::optional<TransientBands> bands;
+    if (a->uncertainty) {
+      uncertainty::PropagationOptions uo = a->method.options();
+      UncertaintyProgress bar;
+      uo.progress = bar.callback();
+      bands = transient_bands(config, scenario, r, uo);
+      bar.finish();
+    }
 
     if (!a->csv.empty()) write_file_atomically(a->csv, transient_csv(r));
     if (!a->plot.empty()) transient_plot(r, a->plot);
@@ -205,6 +221,7 @@ void register_transient(CLI::App& app) {
     if (a->json) {
       auto j = report::transient_json(model, r);
       j["conditions"] = settings_json(settings);
+      if (bands) add_transient_bands_json(j, *bands);
       print_json(j);
     } else {
       std::cout << "scenario " << transient::to_string(scenario) << ": " << r.message << "\n";
@@ -221,6 +238,7 @@ void register_transient(CLI::App& app) {
                                                  : config.ground.name)
                   << ": soil sinkage " << fixed(fin.soil_sinkage_m * 1e3, 3)
                   << " mm (sinking is the axle's approach to the undisturbed surface)\n";
+      if (bands) print_transient_bands(*bands);
     }
   });
 }

@@ -62,16 +62,69 @@ PlotSeries contour(const contact::Patch3dResult& r) {
 
 }  // namespace
 
-void write_map_csv(const std::vector<contact::Prediction>& cases, const std::string& path) {
-  std::string text = "load_N,x_mm,y_mm,pressure_kPa\n";
-  char line[128];
-  for (const auto& p : cases) {
+uncertainty::ExtraOutputs map_cell_outputs(const std::vector<contact::Prediction>& nominal) {
+  // The nominal maps fix which cells each case reports: a perturbed patch is read at the same
+  // sections and columns.
+  std::vector<std::pair<int, int>> range;  // first section, sections
+  std::size_t count = 0;
+  int columns = 0;
+  for (const auto& p : nominal) {
     const contact::PressureMap map = contact::pressure_map(patch_of(p));
+    range.emplace_back(map.first_section, static_cast<int>(map.x_mm.size()));
+    columns = static_cast<int>(map.y_mm.size());
+    count = std::max(count, map.x_mm.size() * map.y_mm.size());
+  }
+  uncertainty::ExtraOutputs e;
+  e.count = count;
+  e.label = "map cell";
+  e.values = [range, columns](std::size_t c, const contact::Prediction& p) {
+    const contact::Patch3dResult& r = patch_of(p);
+    std::vector<double> v;
+    const auto [first, nx] = range[c];
+    for (int j = 0; j < std::min(columns, r.columns); ++j) {
+      for (int i = first; i < first + nx; ++i) {
+        v.push_back(i < r.sections ? r.pressure_Pa(i, j) * 1e-3 : 0.0);
+      }
+    }
+    return v;
+  };
+  return e;
+}
+
+MapBands take_map_bands(uncertainty::PropagationResult& r) {
+  MapBands m;
+  const std::size_t keep = uncertainty::output_names().size();
+  for (auto& c : r.cases) {
+    m.cells.emplace_back(c.bands.begin() + static_cast<std::ptrdiff_t>(keep), c.bands.end());
+    c.bands.resize(keep);
+  }
+  for (auto& e : r.inputs) {
+    for (auto& s : e.sensitivity) s.resize(keep);
+  }
+  return m;
+}
+
+void write_map_csv(const std::vector<contact::Prediction>& cases, const std::string& path,
+                   const MapBands* bands) {
+  std::string text = bands ? "load_N,x_mm,y_mm,pressure_kPa,pressure_p025_kPa,pressure_p975_kPa\n"
+                           : "load_N,x_mm,y_mm,pressure_kPa\n";
+  char line[192];
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const auto& p = cases[c];
+    const contact::PressureMap map = contact::pressure_map(patch_of(p));
+    const std::size_t nx = map.x_mm.size();
     for (std::size_t j = 0; j < map.y_mm.size(); ++j) {
-      for (std::size_t i = 0; i < map.x_mm.size(); ++i) {
-        std::snprintf(line, sizeof line, "%.10g,%.6f,%.6f,%.6g\n", p.footprint.load.load_N,
-                      map.x_mm[i], map.y_mm[j], map.pressure_kPa[j][i]);
+      for (std::size_t i = 0; i < nx; ++i) {
+        int n = std::snprintf(line, sizeof line, "%.10g,%.6f,%.6f,%.6g", p.footprint.load.load_N,
+                              map.x_mm[i], map.y_mm[j], map.pressure_kPa[j][i]);
+        if (bands) {
+          // A band never below zero: a cell's pressure is a contact force's, >= 0.
+          const auto& b = bands->cells[c][j * nx + i];
+          n += std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), ",%.6g,%.6g",
+                             std::max(b.p025, 0.0), std::max(b.p975, 0.0));
+        }
         text += line;
+        text += '\n';
       }
     }
   }

@@ -80,6 +80,21 @@ void print_footprint_table(const contact::TyreModel& model,
   std::fflush(stdout);
 }
 
+namespace {
+
+void print_uncertainty_inputs(const uncertainty::PropagationResult& r) {
+  std::cout << "inputs (relative standard deviation, source):";
+  if (r.inputs.empty()) std::cout << " none";
+  std::cout << "\n";
+  for (const auto& e : r.inputs) {
+    std::printf("  %-28s %6.2f %%  %s\n", e.input.name.c_str(), 100 * e.input.rel_std,
+                e.input.source.c_str());
+  }
+  std::fflush(stdout);
+}
+
+}  // namespace
+
 void print_uncertainty_table(const uncertainty::PropagationResult& r) {
   std::cout << "\nuncertainty (" << r.method << ": " << r.check << "), value +- 2 sigma:\n";
   std::cout << "  load_N  sinking_mm        length_mm        width_mm         peak_kPa     "
@@ -93,14 +108,18 @@ void print_uncertainty_table(const uncertainty::PropagationResult& r) {
     }
     std::printf("\n");
   }
-  std::cout << "inputs (relative standard deviation, source):";
-  if (r.inputs.empty()) std::cout << " none";
-  std::cout << "\n";
-  for (const auto& e : r.inputs) {
-    std::printf("  %-28s %6.2f %%  %s\n", e.input.name.c_str(), 100 * e.input.rel_std,
-                e.input.source.c_str());
+  print_uncertainty_inputs(r);
+}
+
+void print_named_bands(const std::vector<std::string>& names,
+                       const uncertainty::PropagationResult& r) {
+  std::cout << "uncertainty (" << r.method << ": " << r.check << "), value +- 2 sigma:\n";
+  const auto& row = r.cases.front().bands;
+  for (std::size_t q = 0; q < names.size() && q < row.size(); ++q) {
+    std::printf("  %-26s %s\n", names[q].c_str(),
+                report::plus_minus(row[q].value, 2 * row[q].std, 4).c_str());
   }
-  std::fflush(stdout);
+  print_uncertainty_inputs(r);
 }
 
 void plot_pressures(const std::vector<contact::Prediction>& predictions,

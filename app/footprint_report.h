@@ -20,6 +20,11 @@ void print_footprint_table(const contact::TyreModel& model,
 /// The bands of `footprint --uncertainty`: each output as value +- 2 sigma to the digits the
 /// band supports, the method and its check, the inputs.
 void print_uncertainty_table(const uncertainty::PropagationResult& r);
+
+/// One row's bands as `name  value +- 2 sigma` lines (names in the bands' order), after the
+/// method and its check, then the inputs: tir export's and transient's --uncertainty.
+void print_named_bands(const std::vector<std::string>& names,
+                       const uncertainty::PropagationResult& r);
 void plot_pressures(const std::vector<contact::Prediction>& cases,
                     const contact::TyreConfig& config, const std::string& path);
 

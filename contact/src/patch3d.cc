@@ -459,6 +459,7 @@ PressureMap pressure_map(const Patch3dResult& r, int margin) {
   if (first < 0) return map;
   first = std::max(0, first - margin);
   last = std::min(r.sections - 1, last + margin);
+  map.first_section = first;
   for (int i = first; i <= last; ++i) map.x_mm.push_back(r.x_m[i] * 1e3);
   for (int j = 0; j < r.columns; ++j) {
     map.y_mm.push_back(r.y_m[j] * 1e3);

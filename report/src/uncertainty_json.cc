@@ -8,20 +8,21 @@
 
 namespace modaltyre::report {
 
-void add_uncertainty_json(nlohmann::json& document, const uncertainty::PropagationResult& r) {
-  const auto& names = uncertainty::output_names();
-  auto& cases = document["cases"];
-  for (std::size_t c = 0; c < r.cases.size() && c < cases.size(); ++c) {
-    nlohmann::json u = nlohmann::json::object();
-    for (std::size_t q = 0; q < names.size(); ++q) {
-      const auto& b = r.cases[c].bands[q];
-      u[names[q]] = {{"value", round_sig(b.value)},
-                     {"std", round_sig(b.std)},
-                     {"p025", round_sig(b.p025)},
-                     {"p975", round_sig(b.p975)}};
-    }
-    cases[c]["uncertainty"] = u;
+nlohmann::json bands_json(const std::vector<std::string>& names,
+                          const std::vector<uncertainty::Band>& bands) {
+  nlohmann::json u = nlohmann::json::object();
+  for (std::size_t q = 0; q < names.size() && q < bands.size(); ++q) {
+    const auto& b = bands[q];
+    u[names[q]] = {{"value", round_sig(b.value)},
+                   {"std", round_sig(b.std)},
+                   {"p025", round_sig(b.p025)},
+                   {"p975", round_sig(b.p975)}};
   }
+  return u;
+}
+
+void add_uncertainty_method_json(nlohmann::json& document,
+                                 const uncertainty::PropagationResult& r) {
   nlohmann::json inputs = nlohmann::json::array();
   for (const auto& e : r.inputs) {
     inputs.push_back({{"name", e.input.name},
@@ -33,6 +34,14 @@ void add_uncertainty_json(nlohmann::json& document, const uncertainty::Propagati
   document["uncertainty_check"] = r.check;
   document["uncertainty_inputs"] = inputs;
   document["uncertainty_evaluations"] = r.evaluations;
+}
+
+void add_uncertainty_json(nlohmann::json& document, const uncertainty::PropagationResult& r) {
+  auto& cases = document["cases"];
+  for (std::size_t c = 0; c < r.cases.size() && c < cases.size(); ++c) {
+    cases[c]["uncertainty"] = bands_json(uncertainty::output_names(), r.cases[c].bands);
+  }
+  add_uncertainty_method_json(document, r);
 }
 
 std::string plus_minus(double value, double two_sigma, int plain_decimals) {

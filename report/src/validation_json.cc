@@ -88,7 +88,9 @@ nlohmann::json validation_json(const studies::ValidationReport& rep) {
             {"evaluations", c.evaluations},
             {"std_errors", std_errors},
             {"correlation", c.correlation},
-            {"covariance", c.covariance_note}}}};
+            {"covariance", c.covariance_note},
+            {"weights", c.noise_weighted ? "the rows' stated noise (*_std columns)"
+                                         : "equal (relative residuals)"}}}};
 }
 
 }  // namespace modaltyre::report

@@ -54,11 +54,14 @@ void require_converged(const std::vector<Prediction>& res, const std::string& st
 
 // The calibrated scalars' covariance from the Jacobian at the fit (central differences in
 // ln x) and the residual variance (Calibration's comment).
+// With the rows' stated noise as weights (`cal.noise_weighted`) the residuals are in units of
+// their standard deviations and the covariance is (J^T J)^-1 itself (known noise: no residual
+// variance to estimate, so m = n residuals suffice).
 template <class Residual>
 void set_covariance(Calibration& cal, const Residual& residual, const Eigen::VectorXd& x,
                     const Eigen::VectorXd& r) {
   const Eigen::Index n = x.size(), m = r.size();
-  if (m <= n) {
+  if (cal.noise_weighted ? m < n : m <= n) {
     cal.covariance_note = "no standard errors: " + std::to_string(m) +
                           " calibration residuals for " + std::to_string(n) +
                           " scalars leave no degree of freedom to estimate the noise";
@@ -72,7 +75,7 @@ void set_covariance(Calibration& cal, const Residual& residual, const Eigen::Vec
     down(k) -= kStep;
     J.col(k) = (residual(up) - residual(down)) / (2 * kStep);
   }
-  const double s2 = r.squaredNorm() / static_cast<double>(m - n);
+  const double s2 = cal.noise_weighted ? 1.0 : r.squaredNorm() / static_cast<double>(m - n);
   const Eigen::MatrixXd JtJ = J.transpose() * J;
   Eigen::FullPivLU<Eigen::MatrixXd> lu(JtJ);
   if (!lu.isInvertible()) {
@@ -91,8 +94,14 @@ void set_covariance(Calibration& cal, const Residual& residual, const Eigen::Vec
     for (Eigen::Index j = 0; j < n; ++j)
       cal.correlation[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
           cov(i, j) / std::sqrt(cov(i, i) * cov(j, j));
-  cal.covariance_note = "from the Jacobian at the fit and the residual variance (" +
-                        std::to_string(m - n) + " degrees of freedom)";
+  cal.covariance_note =
+      cal.noise_weighted
+          ? "from the Jacobian at the fit and the calibration rows' stated noise (the *_std "
+            "columns; chi-square " +
+                std::to_string(r.squaredNorm()) + " on " + std::to_string(m - n) +
+                " degrees of freedom)"
+          : "from the Jacobian at the fit and the residual variance (" + std::to_string(m - n) +
+                " degrees of freedom)";
 }
 
 // What a user with their own file can do when the config's calibration block does not fit it
@@ -233,6 +242,22 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
   if (!cal.keys.empty()) {
     // Parameters are positive: fit their logarithms (relative steps, no sign flips).
     const std::size_t n_res = cal_rows.size() * cal.observables.size();
+    // The rows' stated noise (docs/uncertainty.md section 4): when every calibration residual
+    // has a standard deviation > 0, each relative residual is divided by its relative std (a
+    // chi-square fit); otherwise all weigh alike, as without the columns.
+    std::vector<double> rel_sigma;
+    cal.noise_weighted = true;
+    for (const auto& row : cal_rows) {
+      for (const auto& obs : cal.observables) {
+        const auto it = row.observed_std.find(obs);
+        if (it == row.observed_std.end() || !(it->second > 0)) {
+          cal.noise_weighted = false;
+        } else {
+          rel_sigma.push_back(it->second / std::abs(*row.value(obs)));
+        }
+      }
+    }
+    if (!cal.noise_weighted) rel_sigma.assign(n_res, 1.0);
     auto residual = [&](const Eigen::VectorXd& lx) {
       // Outside the plausible range: a large residual makes the step fail instead of the model.
       for (std::size_t k = 0; k < cal.keys.size(); ++k) {
@@ -247,7 +272,8 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
       std::vector<double> r;
       for (std::size_t i = 0; i < cal_rows.size(); ++i) {
         for (const auto& obs : cal.observables) {
-          r.push_back(res[i].observable(obs) / *cal_rows[i].value(obs) - 1.0);
+          r.push_back((res[i].observable(obs) / *cal_rows[i].value(obs) - 1.0) /
+                      rel_sigma[r.size()]);
         }
       }
       return Eigen::Map<Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size())).eval();
@@ -260,8 +286,11 @@ ValidationReport validate_footprints(const TyreConfig& base, const MeasurementSe
     x = fit.x;
     cal.status = fit.status;
     cal.evaluations = fit.evaluations;
+    const Eigen::VectorXd rel_residual =
+        fit.residual.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(
+            rel_sigma.data(), static_cast<Eigen::Index>(rel_sigma.size())));
     cal.rms_rel_residual =
-        fit.residual.size() ? std::sqrt(fit.residual.squaredNorm() / fit.residual.size()) : 0.0;
+        rel_residual.size() ? std::sqrt(rel_residual.squaredNorm() / rel_residual.size()) : 0.0;
     for (std::size_t k = 0; k < cal.keys.size(); ++k) {
       const double v = std::exp(x(static_cast<Eigen::Index>(k)));
       const SearchRange& range = *specs[k]->calibration;

@@ -101,6 +101,38 @@ TEST_F(Footprint3dCli, MapCsvHasOneLinePerCellOfEachCaseAndMatchesTheJson) {
   EXPECT_NEAR(peak, j["cases"][0]["peak_pressure_kPa"].get<double>(), 1e-3 * peak);
 }
 
+// footprint --uncertainty --map-csv (issue 35): the band as two more maps. Every cell lies in
+// its band; the peak cell's band is the peak pressure's (the same quantity while the peak stays
+// in that cell under the +-1 sigma perturbations); cells out of contact have none.
+TEST_F(Footprint3dCli, MapCsvCarriesTheBandAsTwoMaps) {
+  const auto csv = (dir_ / "map_band.csv").string();
+  const auto r = run({"footprint", k3d, "--load", "5478", "--json", "--map-csv", csv,
+                      "--uncertainty", "--uncertainty-method", "linear"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  std::istringstream in(modaltyre_test::slurp(csv));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "load_N,x_mm,y_mm,pressure_kPa,pressure_p025_kPa,pressure_p975_kPa");
+  double peak = -1, peak_lo = 0, peak_hi = 0;
+  std::size_t rows = 0, outside = 0;
+  while (std::getline(in, line)) {
+    double load = 0, x = 0, y = 0, p = 0, lo = 0, hi = 0;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &load, &x, &y, &p, &lo, &hi), 6)
+        << line;
+    EXPECT_LE(lo, p + 1e-6 * (1 + p)) << line;
+    EXPECT_GE(hi, p - 1e-6 * (1 + p)) << line;
+    if (p == 0 && hi == 0) ++outside;
+    if (p > peak) peak = p, peak_lo = lo, peak_hi = hi;
+    ++rows;
+  }
+  EXPECT_GT(outside, 0u);  // the map's margin and the tread's corners
+  const auto& band = j["cases"][0]["uncertainty"]["peak_pressure_kPa"];
+  const double width = band["p975"].get<double>() - band["p025"].get<double>();
+  ASSERT_GT(width, 0);
+  EXPECT_NEAR((peak_hi - peak_lo) / width, 1.0, 0.02);
+}
+
 TEST_F(Footprint3dCli, MapCsvIsRefusedWithExitTwoOnA2dConfigOrABadPath) {
   auto r = run({"footprint", k2d, "--load", "5000", "--map-csv", (dir_ / "m.csv").string()});
   EXPECT_EQ(r.exit_code, 2);

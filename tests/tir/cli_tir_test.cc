@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 #include "../app/cli_runner.h"
@@ -47,6 +48,35 @@ TEST_F(TirCli, ExportThenCompareInAbsoluteUnits) {
   EXPECT_LT(j["rms_rel_diff"]["length"].get<double>(), 0.03);
   EXPECT_TRUE(j["rms_rel_diff"]["width"].is_null());
   EXPECT_FALSE(j["reasons"]["width"].get<std::string>().empty());
+}
+
+// --uncertainty (issue 35): the coefficients' bands are printed and written as header comments;
+// the file is otherwise the plain export's, byte for byte, so every reader takes it alike.
+TEST_F(TirCli, UncertaintyAddsTheCoefficientsBandsAsCommentsOnly) {
+  const std::string plain = (dir_ / "plain.tir").string(), banded = (dir_ / "banded.tir").string();
+  ASSERT_EQ(run({"tir", "export", kConfig, "--output", plain}).exit_code, 0);
+  const CliRun u = run({"tir", "export", kConfig, "--output", banded, "--uncertainty"});
+  ASSERT_EQ(u.exit_code, 0) << u.err;
+  EXPECT_NE(u.out.find("VERTICAL_STIFFNESS"), std::string::npos);
+  EXPECT_NE(u.out.find("+-"), std::string::npos) << u.out;
+  const std::string text = modaltyre_test::slurp(banded);
+  std::string kept, line;
+  std::istringstream in(text);
+  int band_lines = 0;
+  bool in_block = false;
+  while (std::getline(in, line)) {
+    const bool head = line.find("! : COMMENT :           uncertainty (") == 0;
+    const bool item = in_block && line.find("! : COMMENT :             ") == 0;
+    in_block = head || item;
+    if (head || item) {
+      ++band_lines;
+      continue;
+    }
+    kept += line + "\n";
+  }
+  // The header line and one per coefficient: VERTICAL_STIFFNESS, Q_FZ2, Q_RA1, Q_RA2, PFZ1.
+  EXPECT_EQ(band_lines, 6) << text;
+  EXPECT_EQ(kept, modaltyre_test::slurp(plain));
 }
 
 TEST_F(TirCli, OtherTyreSizeIsComparedDimensionless) {

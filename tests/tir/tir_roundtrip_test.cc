@@ -1,7 +1,7 @@
-// Round trips through the .tir bridge on the 2D config (configs/sf350_2d_table3.yaml, the default before issue 18):
-// export -> parse the text -> evaluate the MF formulas (Pacejka 2012 App. 3) -> the model's own
-// footprints, at loads between the fitted ones over 0.5-1.5 x FNOMIN (issue 20 item 4); and
-// compare on hand-made files whose laws are known in closed form.
+// Round trips through the .tir bridge on the 2D config (configs/sf350_2d_table3.yaml, the default
+// before issue 18): export -> parse the text -> evaluate the MF formulas (Pacejka 2012 App. 3) ->
+// the model's own footprints, at loads between the fitted ones over 0.5-1.5 x FNOMIN (issue 20 item
+// 4); and compare on hand-made files whose laws are known in closed form.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,8 +17,8 @@ using namespace modaltyre;
 using namespace modaltyre::tir;
 
 const contact::TyreModel& default_model() {
-  static const contact::TyreModel model = contact::build_tyre_model(
-      contact::load_tyre_config(std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml"));
+  static const contact::TyreModel model = contact::build_tyre_model(contact::load_tyre_config(
+      std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml"));
   return model;
 }
 
@@ -192,6 +192,32 @@ TEST(TirRoundTrip, PressureEffectIsExportedAsPfz1) {
     const double rel = t.vertical_stiffness_N_m() / model_cz - 1;
     RecordProperty(s < 1 ? "cz_rel_diff_at_0.8p" : "cz_rel_diff_at_1.2p", std::to_string(rel));
     EXPECT_LT(std::abs(rel), 0.05) << "at " << s << " x the pressure";
+  }
+}
+
+// With the effect off the pressure still acts through the ring's pressure terms (issue 36,
+// docs/ring_model.md): the default config's .tir carries PFZ1, inside MF 6.x's range for
+// passenger tyres (0.5-1.0), and the read-back law carries the stiffness to 0.8 and 1.2 x the
+// pressure as the model does.
+TEST(TirRoundTrip, RingPressureTermsAreExportedAsPfz1WithTheEffectOff) {
+  auto config = contact::load_tyre_config(std::string(MODALTYRE_SOURCE_DIR) +
+                                          "/configs/sf350_2d_table3.yaml");
+  ASSERT_FALSE(config.effects.inflation_pressure.enabled);
+  const contact::TyreModel model = contact::build_tyre_model(config);
+  ASSERT_TRUE(model.carcass.fit.valid) << model.carcass.fit.reason;
+  TirExportOptions o;
+  o.loads_N = load_grid(5226, 0.25, 2, 8);
+  const TirFit f = fit_tir(model, o);
+  ASSERT_TRUE(f.pfz1) << f.pfz1_reason;
+  RecordProperty("pfz1", std::to_string(*f.pfz1));
+  EXPECT_GT(*f.pfz1, 0.5);
+  EXPECT_LT(*f.pfz1, 1.0);
+  MfTyre t = interpret_tir(parse_tir(tir_text(f, config, o), "p.tir"));
+  for (double s : {0.8, 1.2}) {
+    t.inflation_pressure_Pa = s * config.inflation_pressure_Pa;
+    const double model_cz =
+        model_tangent_stiffness_N_m(model, f.fnomin_N, s * config.inflation_pressure_Pa);
+    EXPECT_LT(std::abs(t.vertical_stiffness_N_m() / model_cz - 1), 0.05) << "at " << s << " p";
   }
 }
 

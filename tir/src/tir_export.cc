@@ -121,10 +121,14 @@ void fit_patch(TirFit& f) {
 }
 
 void fit_pressure(const contact::TyreModel& model, TirFit& f) {
-  if (!model.config.effects.inflation_pressure.enabled) {
-    f.pfz1_reason =
-        "PFZ1 left out: the config's inflation_pressure effect is off, so the "
-        "model's stiffness does not depend on the pressure";
+  // The pressure moves the model's stiffness through the ring's pressure terms whenever the
+  // modes give a ring fit (contact/carcass_source.h, docs/ring_model.md), and through the
+  // optional inflation_pressure effect; with neither it does not act and PFZ1 is not a fit.
+  if (!model.carcass.fit.valid && !model.config.effects.inflation_pressure.enabled) {
+    f.pfz1_reason = "PFZ1 left out: the modes give no ring fit to move with the pressure (" +
+                    model.carcass.fit.reason +
+                    ") and the config's inflation_pressure effect is off, so the model's "
+                    "stiffness does not depend on the pressure";
     return;
   }
   constexpr double kStep = 0.1;
@@ -201,6 +205,8 @@ std::string tir_text(const TirFit& f, const contact::TyreConfig& config,
     << " N/m; VERTICAL_STIFFNESS = dF/drho of the fitted (A3.3) at FNOMIN\n"
     << "! : COMMENT :           WIDTH from " << f.width_source << "\n";
   if (!f.pfz1) s << "! : COMMENT :           " << f.pfz1_reason << "\n";
+  for (const auto& c : options.comments)
+    s << "! : COMMENT :           " << printable(c, 400) << "\n";
   s << "! : COMMENT :           [STRUCTURAL] and [INERTIA] left out: the hammer test's modes are "
        "those of its own boundary condition, not MF-Swift's rigid ring on a fixed rim\n"
     << "! : COMMENT :           no force and moment (slip) coefficients: the model predicts "

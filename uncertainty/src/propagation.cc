@@ -29,8 +29,9 @@ constexpr double kOutputResolution = 1e-4;
 
 using Outputs = std::vector<std::vector<double>>;  // [case][output]
 
-Outputs evaluate(const contact::TyreConfig& config, const modal::ModeIdentification& modes,
-                 const std::vector<contact::OperatingConditions>& cases, const std::string& what) {
+Outputs footprint_outputs(const contact::TyreConfig& config, const modal::ModeIdentification& modes,
+                          const std::vector<contact::OperatingConditions>& cases,
+                          const ExtraOutputs& extra, const std::string& what) {
   const contact::TyreModel model = contact::build_tyre_model(config, modes);
   Outputs out;
   for (const auto& c : cases) {
@@ -39,22 +40,39 @@ Outputs evaluate(const contact::TyreConfig& config, const modal::ModeIdentificat
       throw ComputationError("uncertainty: the prediction at " + std::to_string(c.load_N) +
                              " N with " + what + " failed: " + p.message);
     }
-    out.push_back({p.sinking_mm, p.length_mm, p.width_mm, contact::peak_pressure_Pa(p) * 1e-3,
-                   contact::smooth_mean_pressure_Pa(p) * 1e-3});
+    out.push_back(footprint_output_values(p));
+    if (extra.count > 0) {
+      std::vector<double> more = extra.values(out.size() - 1, p);
+      more.resize(extra.count, 0.0);
+      out.back().insert(out.back().end(), more.begin(), more.end());
+    }
   }
   return out;
 }
 
 Outputs perturbed(const contact::TyreConfig& config, const modal::ModeIdentification& modes,
-                  const std::vector<contact::OperatingConditions>& cases,
-                  const std::vector<UncertainInput>& inputs, const std::vector<double>& x,
-                  const std::string& what) {
+                  const Evaluator& evaluate, const std::vector<UncertainInput>& inputs,
+                  const std::vector<double>& x, const std::string& what) {
   contact::TyreConfig c = config;
   modal::ModeIdentification m = modes;
   for (std::size_t j = 0; j < inputs.size(); ++j) {
     if (x[j] != 0) apply(inputs[j], std::max(x[j], kMinFactor - 1), c, m);
   }
-  return evaluate(c, m, cases, what);
+  return evaluate(c, m, what);
+}
+
+/// Every row has one value per output, all finite: a model that returns fewer, or NaN, would
+/// make a band of garbage.
+void check_shape(const Outputs& v, std::size_t rows, std::size_t outputs, const std::string& what) {
+  bool ok = v.size() == rows;
+  for (const auto& r : v) {
+    ok = ok && r.size() == outputs;
+    for (double x : r) ok = ok && std::isfinite(x);
+  }
+  if (!ok) {
+    throw ComputationError("uncertainty: the model with " + what +
+                           " gave a different number of outputs, or a non-finite one");
+  }
 }
 
 double percentile(std::vector<double> v, double q) {
@@ -67,6 +85,11 @@ double percentile(std::vector<double> v, double q) {
 
 }  // namespace
 
+std::vector<double> footprint_output_values(const contact::Prediction& p) {
+  return {p.sinking_mm, p.length_mm, p.width_mm, contact::peak_pressure_Pa(p) * 1e-3,
+          contact::smooth_mean_pressure_Pa(p) * 1e-3};
+}
+
 void PropagationOptions::validate() const {
   if (samples < 20 || samples > 100000) {
     throw std::invalid_argument("samples must be in 20..100000, got " + std::to_string(samples));
@@ -77,16 +100,25 @@ void PropagationOptions::validate() const {
   if (threads < 0 || threads > 4096) throw std::invalid_argument("threads must be in 0..4096");
 }
 
-PropagationResult propagate(const contact::TyreConfig& config,
-                            const modal::ModeIdentification& modes,
-                            const std::vector<contact::OperatingConditions>& cases,
-                            const PropagationOptions& o) {
+PropagationResult propagate_outputs(const contact::TyreConfig& config,
+                                    const modal::ModeIdentification& modes,
+                                    const Evaluator& evaluate, const OutputSet& outputs,
+                                    const PropagationOptions& o) {
   o.validate();
   std::vector<UncertainInput> inputs = collect_inputs(config, modes);
   inputs.insert(inputs.end(), o.extra_inputs.begin(), o.extra_inputs.end());
-  const std::size_t n = inputs.size(), nc = cases.size(), no = output_names().size();
+  const std::size_t n = inputs.size(), no = outputs.names.size();
+  if (no == 0) throw std::invalid_argument("uncertainty: no outputs to propagate to");
+  if (!outputs.curved.empty() && outputs.curved.size() != no) {
+    throw std::invalid_argument("uncertainty: OutputSet.curved must have one flag per output");
+  }
   PropagationResult r;
-  const Outputs nominal = evaluate(config, modes, cases, "the nominal inputs");
+  const Outputs nominal = evaluate(config, modes, "the nominal inputs");
+  const std::size_t nc = nominal.size();
+  check_shape(nominal, nc, no, "the nominal inputs");
+  const auto row_label = [&](std::size_t c) {
+    return c < outputs.row_labels.size() ? outputs.row_labels[c] : "row " + std::to_string(c + 1);
+  };
   r.evaluations = 1;
   const int total = static_cast<int>(1 + 2 * n);
   if (o.progress) o.progress(1, total);
@@ -105,7 +137,8 @@ PropagationResult propagate(const contact::TyreConfig& config,
     std::vector<double> x(n, 0.0);
     x[j] = sign * inputs[j].rel_std;
     try {
-      Outputs v = perturbed(config, modes, cases, inputs, x, inputs[j].name);
+      Outputs v = perturbed(config, modes, evaluate, inputs, x, inputs[j].name);
+      check_shape(v, nc, no, inputs[j].name);
 #pragma omp critical
       {
         (sign > 0 ? plus[j] : minus[j]) = std::move(v);
@@ -123,10 +156,7 @@ PropagationResult propagate(const contact::TyreConfig& config,
   double worst = 0;
   std::string worst_name;
   r.cases.assign(nc, {});
-  for (std::size_t c = 0; c < nc; ++c) {
-    r.cases[c].load_N = cases[c].load_N;
-    r.cases[c].bands.assign(no, {});
-  }
+  for (std::size_t c = 0; c < nc; ++c) r.cases[c].bands.assign(no, {});
   for (std::size_t j = 0; j < n; ++j) {
     InputEffect e;
     e.input = inputs[j];
@@ -135,7 +165,7 @@ PropagationResult propagate(const contact::TyreConfig& config,
       for (std::size_t q = 0; q < no; ++q) {
         const double d1 = 0.5 * (plus[j][c][q] - minus[j][c][q]);
         e.sensitivity[c][q] = d1;
-        const bool gridded = q == kPeakOutput;  // a maximum over cells: piecewise, not curved
+        const bool gridded = !outputs.curved.empty() && !outputs.curved[q];
         const double d2 = 0.5 * (plus[j][c][q] + minus[j][c][q] - 2 * nominal[c][q]);
         // A second difference below the outputs' resolution is not curvature that moves a
         // band: the 3D width and peak step with the cells (a 2.5 mm column), and any output is
@@ -145,8 +175,7 @@ PropagationResult propagate(const contact::TyreConfig& config,
           const double ratio = std::abs(d2) / std::max(std::abs(d1), resolution);
           if (ratio > e.nonlinearity) {
             e.nonlinearity = ratio;
-            e.nonlinear_output = output_names()[q] + " at " +
-                                 std::to_string(static_cast<long>(cases[c].load_N)) + " N";
+            e.nonlinear_output = outputs.names[q] + " at " + row_label(c);
           }
         }
         r.cases[c].bands[q].std += d1 * d1;  // variance for now
@@ -181,8 +210,23 @@ PropagationResult propagate(const contact::TyreConfig& config,
   } else {
     check << "no second difference above the outputs' resolution (1e-4)";
   }
-  check << ", threshold " << o.max_nonlinearity
-        << " (the peak pressure, a maximum over cells, is not checked)";
+  check << ", threshold " << o.max_nonlinearity;
+  if (!outputs.curved.empty() && std::count(outputs.curved.begin(), outputs.curved.end(), false)) {
+    // Not checked: grid quantities (a maximum over cells, a map's cells); a few named.
+    check << " (not checked, a grid's quantities:";
+    std::size_t named = 0, unnamed = 0;
+    for (std::size_t q = 0; q < no; ++q) {
+      if (outputs.curved[q]) continue;
+      if (named < 3) {
+        check << (named ? ", " : " ") << outputs.names[q];
+        ++named;
+      } else {
+        ++unnamed;
+      }
+    }
+    if (unnamed) check << " and " << unnamed << " more";
+    check << ")";
+  }
   const bool sample =
       o.method == Method::sampled || (o.method == Method::automatic && worst > o.max_nonlinearity);
   if (!sample) {
@@ -202,8 +246,9 @@ PropagationResult propagate(const contact::TyreConfig& config,
     std::vector<double> x(n);
     for (std::size_t j = 0; j < n; ++j) x[j] = inputs[j].rel_std * normal(rng);
     try {
-      s[static_cast<std::size_t>(k)] =
-          perturbed(config, modes, cases, inputs, x, "sample " + std::to_string(k));
+      const std::string what = "sample " + std::to_string(k);
+      s[static_cast<std::size_t>(k)] = perturbed(config, modes, evaluate, inputs, x, what);
+      check_shape(s[static_cast<std::size_t>(k)], nc, no, what);
 #pragma omp critical
       if (o.progress) o.progress(++sampled, m);
     } catch (const std::exception& e) {
@@ -233,6 +278,41 @@ PropagationResult propagate(const contact::TyreConfig& config,
         << (o.method == Method::sampled ? " as asked"
                                         : " because the linearisation is not trusted");
   r.check = check.str();
+  return r;
+}
+
+PropagationResult propagate(const contact::TyreConfig& config,
+                            const modal::ModeIdentification& modes,
+                            const std::vector<contact::OperatingConditions>& cases,
+                            const PropagationOptions& options) {
+  return propagate(config, modes, cases, options, ExtraOutputs{});
+}
+
+PropagationResult propagate(const contact::TyreConfig& config,
+                            const modal::ModeIdentification& modes,
+                            const std::vector<contact::OperatingConditions>& cases,
+                            const PropagationOptions& options, const ExtraOutputs& extra) {
+  if (extra.count > 0 && !extra.values) {
+    throw std::invalid_argument("uncertainty: ExtraOutputs.count > 0 needs its values function");
+  }
+  OutputSet outputs;
+  outputs.names = output_names();
+  outputs.curved.assign(outputs.names.size(), true);
+  outputs.curved[kPeakOutput] = false;  // a maximum over the grid's cells: piecewise, not curved
+  for (std::size_t k = 0; k < extra.count; ++k) {
+    outputs.names.push_back(extra.label + " " + std::to_string(k + 1));
+    outputs.curved.push_back(false);
+  }
+  for (const auto& c : cases) {
+    outputs.row_labels.push_back(std::to_string(static_cast<long>(c.load_N)) + " N");
+  }
+  const Evaluator footprints = [&cases, &extra](const contact::TyreConfig& c,
+                                                const modal::ModeIdentification& m,
+                                                const std::string& what) {
+    return footprint_outputs(c, m, cases, extra, what);
+  };
+  PropagationResult r = propagate_outputs(config, modes, footprints, outputs, options);
+  for (std::size_t c = 0; c < cases.size(); ++c) r.cases[c].load_N = cases[c].load_N;
   return r;
 }
 

@@ -69,6 +69,7 @@ struct ColumnEdges {
 /// The pressure map as a footprint image: one row per y (pressure_kPa[j][i] at x_mm[i],
 /// y_mm[j]).
 struct PressureMap {
+  int first_section = 0;  ///< the section of x_mm[0] (the map spans the contact and a margin)
   std::vector<double> x_mm, y_mm;
   std::vector<std::vector<double>> pressure_kPa;
 };

@@ -4,6 +4,7 @@
 // document's `uncertainty_method`, `uncertainty_check` and `uncertainty_inputs`.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "modaltyre/uncertainty/propagation.h"
 
@@ -11,6 +12,13 @@ namespace modaltyre::report {
 
 /// Adds the bands to the document's `cases` (same order) and the method, check and inputs.
 void add_uncertainty_json(nlohmann::json& document, const uncertainty::PropagationResult& r);
+
+/// {name: {value, std, p025, p975}} of one row's bands (names and bands in the same order).
+nlohmann::json bands_json(const std::vector<std::string>& names,
+                          const std::vector<uncertainty::Band>& bands);
+
+/// Adds only the document's `uncertainty_method`, `_check`, `_inputs` and `_evaluations`.
+void add_uncertainty_method_json(nlohmann::json& document, const uncertainty::PropagationResult& r);
 
 /// "14.5 +- 0.4": the value to the digits its 2-sigma half-width supports (two significant
 /// digits of the half-width), or the value alone to `plain_decimals` when the width is zero.

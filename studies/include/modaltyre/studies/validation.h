@@ -67,6 +67,9 @@ struct Calibration {
   std::vector<double> std_errors;
   std::vector<std::vector<double>> correlation;  ///< n x n, when std_errors are given
   std::string covariance_note;
+  /// Every calibration residual had a stated noise (*_std columns > 0): the fit weighed each by
+  /// it (chi-square) and the covariance is (J^T J)^-1 of the weighted residuals, s^2 = 1.
+  bool noise_weighted = false;
 };
 
 struct ValidationReport {

@@ -9,9 +9,9 @@
 //           q_Fz1 (derived from C_z0 by A3.4) is the fitted one
 //   (A3.7)  a/R0 = Q_RA2 x' + Q_RA1 sqrt(x'),   x' = F/(C_z0 R0)
 //   (A3.8)  b/W  = Q_RB2 x' + Q_RB1 x'^(1/3)    only when the predictions carry a width
-//   (A3.5)  PFZ1 = (C_z(1.1 p) - C_z(0.9 p)) / (0.2 C_z(p)), tangent stiffnesses at F_z0, only
-//           when the config's inflation_pressure effect is on (else the model's stiffness does
-//           not depend on the pressure and PFZ1 is left out: 0 in any MF evaluator)
+//   (A3.5)  PFZ1 = (C_z(1.1 p) - C_z(0.9 p)) / (0.2 C_z(p)), tangent stiffnesses at F_z0, when
+//           the pressure moves the model (the ring's pressure terms, or the inflation_pressure
+//           effect); else PFZ1 is left out (0 in any MF evaluator) and the header says why
 // [STRUCTURAL] and [INERTIA] are left out, and the header says why: the hammer test's modes are
 // those of the tested tyre's boundary condition, not MF-Swift's rigid ring on a fixed rim.
 #include <optional>
@@ -26,6 +26,8 @@ struct TirExportOptions {
   std::optional<double> fnomin_N;  ///< default: the middle of the config's loads
   std::vector<double> loads_N;     ///< default: load_grid(FNOMIN, 0.25, 2, 12)
   std::string config_label;        ///< the config path as the user gave it (for the header)
+  /// Lines added to the header's comments (e.g. the coefficients' uncertainty); printable text.
+  std::vector<std::string> comments;
 };
 
 /// One fitted law and how well it follows the model (relative residuals).

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "modaltyre/contact/operating_conditions.h"
+#include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/modal/mode_identification.h"
 #include "modaltyre/uncertainty/inputs.h"
@@ -45,6 +46,9 @@ inline const std::vector<std::string>& output_names() {
   return names;
 }
 
+/// A prediction's values of output_names(), in that order.
+std::vector<double> footprint_output_values(const contact::Prediction& p);
+
 struct Band {
   double value = 0;  ///< at the nominal inputs (linear) or the samples' mean (sampled)
   double std = 0;
@@ -58,11 +62,12 @@ struct CaseBands {
 
 struct InputEffect {
   UncertainInput input;
-  std::vector<double> sinking_sensitivity;  ///< d sinking_mm / (1 sigma of the input), per case
+  /// d sinking_mm / (1 sigma of the input), per case (footprint outputs; else the first output)
+  std::vector<double> sinking_sensitivity;
   /// d output / (1 sigma of the input), [case][output_names()], the central differences.
   std::vector<std::vector<double>> sensitivity;
-  double nonlinearity = 0;                  ///< the largest second/first difference ratio
-  std::string nonlinear_output;             ///< where it is (output name and load)
+  double nonlinearity = 0;       ///< the largest second/first difference ratio
+  std::string nonlinear_output;  ///< where it is (output name and load)
 };
 
 struct PropagationResult {
@@ -73,6 +78,36 @@ struct PropagationResult {
   int evaluations = 0;  ///< model builds
 };
 
+/// Any outputs of a model of (config, modes), [row][output], e.g. tir export's fitted
+/// coefficients or a transient's summary; `what` names the evaluation for an error message.
+/// Throws ComputationError when the model fails. Called from several threads at once.
+using Evaluator = std::function<std::vector<std::vector<double>>(
+    const contact::TyreConfig&, const modal::ModeIdentification&, const std::string& what)>;
+
+struct OutputSet {
+  std::vector<std::string> names;  ///< per output
+  /// Per output: false for a quantity whose second differences are a grid's, not the physics'
+  /// (a maximum over cells); it is left out of the curvature check. Empty: all checked.
+  std::vector<bool> curved;
+  std::vector<std::string> row_labels;  ///< per row, for the check's words (e.g. "4000 N")
+};
+
+/// The same propagation for any outputs (propagate() is it with the footprint's outputs).
+/// The result's cases are the rows (load_N 0), their bands per `outputs.names`.
+PropagationResult propagate_outputs(const contact::TyreConfig& config,
+                                    const modal::ModeIdentification& modes,
+                                    const Evaluator& evaluate, const OutputSet& outputs,
+                                    const PropagationOptions& options = {});
+
+/// Outputs a caller adds to the footprint's per case, from each (perturbed) prediction: e.g.
+/// the pressure map's cells. Their curvature is not checked (a grid's quantities); a case with
+/// fewer than `count` values is padded with zeros (a band of zero width).
+struct ExtraOutputs {
+  std::size_t count = 0;
+  std::string label = "extra output";  ///< their name in the check's words ("map cell")
+  std::function<std::vector<double>(std::size_t case_index, const contact::Prediction&)> values;
+};
+
 /// Propagates the config's inputs (collect_inputs) to the cases. With no uncertain input every
 /// band has zero width (method "linear", said in `check`). ComputationError when the nominal or a
 /// perturbed prediction fails (with the input and its message).
@@ -80,5 +115,11 @@ PropagationResult propagate(const contact::TyreConfig& config,
                             const modal::ModeIdentification& modes,
                             const std::vector<contact::OperatingConditions>& cases,
                             const PropagationOptions& options = {});
+
+/// The same with `extra` outputs after output_names() in every case's bands.
+PropagationResult propagate(const contact::TyreConfig& config,
+                            const modal::ModeIdentification& modes,
+                            const std::vector<contact::OperatingConditions>& cases,
+                            const PropagationOptions& options, const ExtraOutputs& extra);
 
 }  // namespace modaltyre::uncertainty
