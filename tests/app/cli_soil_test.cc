@@ -107,6 +107,28 @@ TEST_F(SoilCli, TransientOntoTheSoilGivesItsColumns) {
       << csv.substr(0, 200);
 }
 
+TEST_F(SoilCli, TheDefault3dConfigRunsOntoTheSoil) {
+  // The 3D patch's transient on the soil (docs/soil.md section 8.3): the soil's columns beside
+  // the 3D ones (coarse mesh: 5 mm sections, 15 mm columns).
+  const auto r =
+      run({"transient", kConfig3d, "--scenario", "load-hold", "--ground", kLete, "--set",
+           "transient.load_hold.hold_s=0.2", "--set", "transient.load_hold.ramp_rate_N_s=20000",
+           "--set", "contact.unit_length_mm=5", "--set", "footprint_3d.lateral_cell_mm=15",
+           "--json", "--csv", (dir_ / "lh3d.csv").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["patch"], "3d");
+  EXPECT_EQ(j["ground"], "bekker");
+  const double soil = j["final"]["soil_sinkage_mm"].get<double>();
+  EXPECT_GT(soil, 1.0);  // LETE sand at 4 kN: ~13 mm
+  EXPECT_NEAR(j["final"]["tyre_deflection_mm"].get<double>(),
+              j["final"]["sinking_mm"].get<double>() - soil, 1e-6 * soil);
+  const std::string csv = modaltyre_test::slurp(dir_ / "lh3d.csv");
+  EXPECT_NE(csv.find(",width_mm,contact_area_mm2,soil_sinkage_mm,compaction_resistance_N\n"),
+            std::string::npos)
+      << csv.substr(0, 200);
+}
+
 TEST_F(SoilCli, WhatTheTransientOnSoilDoesNotModelIsRefused) {
   // A road given as --ground.
   const auto road = dir_ / "road.yaml";
