@@ -131,8 +131,8 @@ void register_transient(CLI::App& app) {
   cmd->add_flag("--json", a->json, "print a JSON summary");
   cmd->add_option("--ground", a->ground,
                   "soil file (YAML with a ground: section, e.g. configs/soils/lete_sand.yaml; "
-                  "--set ground.KEY=... then goes to it): the 2D tyre onto that soil "
-                  "(docs/soil.md section 8); default: the config's ground: section");
+                  "--set ground.KEY=... then goes to it): the tyre (3D patch or 2D) onto that "
+                  "soil (docs/soil.md section 8); default: the config's ground: section");
   cmd->add_option("--map-times", a->map_times,
                   "3D patch: times [s] of the contact maps, e.g. --map-times 0.1,0.2")
       ->delimiter(',');

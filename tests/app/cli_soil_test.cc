@@ -107,6 +107,28 @@ TEST_F(SoilCli, TransientOntoTheSoilGivesItsColumns) {
       << csv.substr(0, 200);
 }
 
+TEST_F(SoilCli, TheDefault3dConfigRunsOntoTheSoil) {
+  // The 3D patch's transient on the soil (docs/soil.md section 8.3): the soil's columns beside
+  // the 3D ones (coarse mesh: 5 mm sections, 15 mm columns).
+  const auto r =
+      run({"transient", kConfig3d, "--scenario", "load-hold", "--ground", kLete, "--set",
+           "transient.load_hold.hold_s=0.2", "--set", "transient.load_hold.ramp_rate_N_s=20000",
+           "--set", "contact.unit_length_mm=5", "--set", "footprint_3d.lateral_cell_mm=15",
+           "--json", "--csv", (dir_ / "lh3d.csv").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["patch"], "3d");
+  EXPECT_EQ(j["ground"], "bekker");
+  const double soil = j["final"]["soil_sinkage_mm"].get<double>();
+  EXPECT_GT(soil, 1.0);  // LETE sand at 4 kN: ~13 mm
+  EXPECT_NEAR(j["final"]["tyre_deflection_mm"].get<double>(),
+              j["final"]["sinking_mm"].get<double>() - soil, 1e-6 * soil);
+  const std::string csv = modaltyre_test::slurp(dir_ / "lh3d.csv");
+  EXPECT_NE(csv.find(",width_mm,contact_area_mm2,soil_sinkage_mm,compaction_resistance_N\n"),
+            std::string::npos)
+      << csv.substr(0, 200);
+}
+
 TEST_F(SoilCli, WhatTheTransientOnSoilDoesNotModelIsRefused) {
   // A road given as --ground.
   const auto road = dir_ / "road.yaml";
@@ -118,8 +140,8 @@ TEST_F(SoilCli, WhatTheTransientOnSoilDoesNotModelIsRefused) {
   const auto b = transient({"--scenario", "cleat", "--ground", kLete});
   EXPECT_EQ(b.exit_code, 2);
   EXPECT_NE(b.err.find("ground.model"), std::string::npos) << b.err;
-  // The 3D patch.
-  const auto c = run({"transient", kConfig3d, "--scenario", "load-hold", "--ground", kLete});
+  // The cleat on the 3D patch (its soil transient runs load-hold, free vibration, rolling).
+  const auto c = run({"transient", kConfig3d, "--scenario", "cleat", "--ground", kLete});
   EXPECT_EQ(c.exit_code, 2);
   EXPECT_NE(c.err.find("ground.model"), std::string::npos) << c.err;
   // A soil key the file does not know.

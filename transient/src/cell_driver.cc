@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/cell_system.h"
 #include "modaltyre/transient/driver.h"
 #include "patch_ode.h"
@@ -45,17 +46,46 @@ TransientResult run_transient_3d(const TransientModel& M, Scenario scenario,
       throw InputError(InputLocation{"--map-times", 0, ""}, msg.str());
     }
   }
-  const StaticCells initial = static_cells(cm, plan.initial_load_N);
+  // On a soil (docs/soil.md section 8.3): the initial and the bounding contact on it.
+  const bool on_soil = M.tyre.config.ground.soil();
+  if (on_soil && scenario == Scenario::cleat) {
+    throw InputError(InputLocation{M.tyre.config.source, 0, "ground.model"},
+                     "the cleat scenario crosses a rigid cleat on the rigid road; on a soil run "
+                     "load-hold, free-vibration or rolling");
+  }
+  if (on_soil && M.tyre.config.rigid) {
+    throw InputError(InputLocation{M.tyre.config.source, 0, "tyre.rigid"},
+                     "the transient runs the flexible tyre (the rigid wheel is traction's)");
+  }
+  StaticCells initial, soil_bound;
+  std::unique_ptr<CellSoil> soil;
+  bool bounded = true;
+  if (on_soil)
+    soil = cell_soil_for_plan(cm, plan, initial, soil_bound, bounded);
+  else
+    initial = static_cells(cm, plan.initial_load_N);
   std::vector<UnitRange> ranges;
-  if (!options.all_tread_states) ranges = touchable_cells(cm, plan, initial);
+  if (!options.all_tread_states) {
+    if (!on_soil)
+      ranges = touchable_cells(cm, plan, initial);
+    else if (bounded)
+      ranges = touchable_sections(cm, plan, soil_bound);
+  }
   bool escaped = false;
-  TransientResult res = detail::run_plan(*detail::make_cells_ode(cm, plan, initial, ranges), M,
-                                         plan, options, escaped);
+  TransientResult res = detail::run_plan(
+      *detail::make_cells_ode(cm, plan, initial, ranges, soil.get()), M, plan, options, escaped);
   if (escaped) {
     escaped = false;
-    res =
-        detail::run_plan(*detail::make_cells_ode(cm, plan, initial, {}), M, plan, options, escaped);
+    if (soil) soil->set_memory(initial.soil_depth_m, 0.0);  // the soil as it started
+    res = detail::run_plan(*detail::make_cells_ode(cm, plan, initial, {}, soil.get()), M, plan,
+                           options, escaped);
     res.units_escaped = true;
+  }
+  res.on_soil = on_soil;
+  if (soil) {
+    for (int c = 0; c < soil->classes(); ++c)
+      for (int i = 0; i < M.m; ++i)
+        res.rut_depth_m = std::max(res.rut_depth_m, soil->rut_m(c, i, res.simulated_s));
   }
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return res;
@@ -63,11 +93,6 @@ TransientResult run_transient_3d(const TransientModel& M, Scenario scenario,
 
 TransientResult run_scenario(const TransientModel& M, Scenario scenario,
                              const TransientRunOptions& options) {
-  if (M.tyre.config.footprint_3d && M.tyre.config.ground.soil()) {
-    throw InputError(InputLocation{M.tyre.config.source, 0, "ground.model"},
-                     "the transient on a soil runs on the 2D patch (a config without "
-                     "footprint_3d:, e.g. configs/sf350_2d_table3.yaml)");
-  }
   if (M.tyre.config.footprint_3d) return run_transient_3d(M, scenario, options);
   if (!options.map_times_s.empty())
     throw InputError({"--map-times", 0, ""},

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/column_product.h"
 #include "modaltyre/transient/ode_system.h"
 
@@ -55,8 +56,13 @@ std::vector<UnitRange> touchable_sections(const CellModel& cm, const ScenarioPla
   return ranges;
 }
 
-CellSystem::CellSystem(const CellModel& cm, const ScenarioPlan& plan, std::vector<UnitRange> ranges)
-    : cm_(cm), plan_(plan), relax_(cm.M().settings.relaxation), ranges_(std::move(ranges)) {
+CellSystem::CellSystem(const CellModel& cm, const ScenarioPlan& plan, std::vector<UnitRange> ranges,
+                       CellSoil* soil)
+    : cm_(cm),
+      plan_(plan),
+      relax_(cm.M().settings.relaxation),
+      ranges_(std::move(ranges)),
+      soil_(soil) {
   const TransientModel& M = cm.M();
   const int nc = cm.classes.size();
   if (ranges_.empty()) ranges_.assign(nc, UnitRange{0, M.m - 1});
@@ -87,6 +93,7 @@ CellSystem::CellSystem(const CellModel& cm, const ScenarioPlan& plan, std::vecto
   CqT_ = M.Cq.transpose();
   CrT_ = M.Cr.transpose();
   in_contact_.assign(ncells_, 0);
+  if (soil_) kd_soil_.setZero(ncells_);
 }
 
 double CellSystem::spin(double t) const { return plan_.spin(t); }
@@ -158,7 +165,16 @@ void CellSystem::penetration(double t, const double* y, Eigen::VectorXd& g,
 void CellSystem::forces(double t, const double* y, Eigen::VectorXd& f, Eigen::VectorXd& F,
                         Eigen::VectorXd* g, Eigen::VectorXd* P) const {
   const TransientModel& M = cm_.M();
-  if (g) {
+  if (soil_) {
+    // On a soil: each cell's spring in series with the soil under it (cell_soil.h).
+    if (g) {
+      penetration(t, y, *g, P ? *P : P_);
+      f = *g;
+    } else {
+      penetration(t, y, f, P ? *P : P_);
+    }
+    soil_->forces(t, ranges_, offset_, f.data(), kd_soil_.data());
+  } else if (g) {
     penetration(t, y, *g, P ? *P : P_);
     f = (g->array() > 0).select(kc_slot_.array() * g->array(), 0.0);
   } else {
@@ -223,8 +239,13 @@ void CellSystem::rhs(double t, const double* y, double* ydot) const {
 
 void CellSystem::jacobian_stiffness(double t, const double* y, Eigen::VectorXd& kd) const {
   const TransientModel& M = cm_.M();
-  penetration(t, y, kd, P_);
-  kd = (kd.array() > 0).select(kc_slot_.array(), 0.0);
+  if (soil_) {
+    forces(t, y, kd, F_);
+    kd = (kd.array() > 0).select(kd_soil_.array(), 0.0);
+  } else {
+    penetration(t, y, kd, P_);
+    kd = (kd.array() > 0).select(kc_slot_.array(), 0.0);
+  }
   const bool moving = switches_since_jacobian_ > 0;
   switches_since_jacobian_ = 0;
   if (!moving) return;
@@ -243,7 +264,15 @@ void CellSystem::jacobian_stiffness(double t, const double* y, Eigen::VectorXd& 
 
 int CellSystem::update_contact_set(double t, const double* y) const {
   const TransientModel& M = cm_.M();
-  penetration(t, y, g_, P_);
+  if (soil_) {
+    // On a soil: the contact set is where cells carry a force (g beyond the rut), and the soil
+    // remembers the depths of this accepted state (cell_soil.h).
+    forces(t, y, f_acc_, F_, &g_, &P_);
+    soil_->accept(t, ranges_);
+    g_ = f_acc_;
+  } else {
+    penetration(t, y, g_, P_);
+  }
   long changed = 0;
   const int nc = cm_.classes.size();
   for (int c = 0; c < nc; ++c) {
@@ -259,7 +288,8 @@ int CellSystem::update_contact_set(double t, const double* y) const {
     const double z = hub_z(t, y);
     auto outside = [&](int i) {
       const double u = M.T.row(i).dot(xi_);
-      return z - M.tyre.sag(i) - u - cm_.classes.drop_m[c] + road(t, i, c) > 0;
+      const double rut = soil_ ? soil_->rut_m(c, i, t) : 0.0;
+      return z - M.tyre.sag(i) - u - cm_.classes.drop_m[c] + road(t, i, c) - rut > 0;
     };
     for (int k = 1; k <= kEscapeCheckSections; ++k) {
       if (r.lo - k >= 0 && outside(r.lo - k)) escaped_ = true;
@@ -292,7 +322,9 @@ std::vector<double> CellSystem::state_from(const StaticCells& s) const {
         const double p =
             z - M.tyre.sag(i) - M.T.row(i).dot(xi_) - cm_.classes.drop_m[c] + road(0.0, i, c);
         const double f = s.f(i, c);
-        y[M.e_index() + k] = f > 0 ? p - f / cm_.k_contact(i) : std::max(0.0, p);
+        // On a soil the tip sits on the soil's surface, its depth below the undisturbed one.
+        const double below = s.soil_depth_m.size() > 0 ? s.soil_depth_m(i, c) : 0.0;
+        y[M.e_index() + k] = f > 0 ? p - below - f / cm_.k_contact(i) : std::max(0.0, p - below);
         if (f > 0) in_contact_[k] = 1;
       }
     }

@@ -8,6 +8,7 @@
 
 #include "modaltyre/solvers/cvode_klu.h"
 #include "modaltyre/transient/cell_model.h"
+#include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/cell_system.h"
 #include "modaltyre/transient/driver.h"
 #include "modaltyre/transient/scenario.h"
@@ -55,9 +56,11 @@ std::unique_ptr<PatchOde> make_units_ode(const TransientModel& model, const Scen
                                          const StaticContact& initial, UnitRange units,
                                          SoilContact* soil = nullptr);
 /// The 3D cells of `cm` under `plan` with tread states on `ranges` (empty: every section),
-/// starting from `initial`.
+/// starting from `initial`; on `soil` when given (cell_soil.h; not owned, its memory that of
+/// `initial`).
 std::unique_ptr<PatchOde> make_cells_ode(const CellModel& cm, const ScenarioPlan& plan,
-                                         const StaticCells& initial, std::vector<UnitRange> ranges);
+                                         const StaticCells& initial, std::vector<UnitRange> ranges,
+                                         CellSoil* soil = nullptr);
 
 /// The integrator settings of every transient run: BDF orders 1-2, the Newton and setup
 /// settings of docs/transient.md section 2, the tolerances scaled by sqrt(full / states) so that

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "modaltyre/transient/cell_newton.h"
+#include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/cell_system.h"
 #include "patch_ode.h"
 
@@ -70,6 +71,13 @@ class CellObserver {
     }
     s.load_N = load;
     s.contact_units = sections;
+    const CellSoil* soil = sys_.soil();
+    if (soil) {  // docs/soil.md section 8.3
+      std::vector<int> offsets(C.size());
+      for (int c = 0; c < C.size(); ++c) offsets[c] = sys_.offset(c);
+      s.soil_sinkage_m = soil->deepest_loaded_m(sys_.ranges(), offsets, f_);
+      s.soil_resistance_N = soil->compaction_resistance_N(sys_.ranges(), offsets, f_);
+    }
     s.sinking_m = sink;
     s.pressure_centre_m = load > 0 ? moment / load : 0;
     s.longitudinal_force_N = -moment / (R0 - z) - slope_force;
@@ -101,7 +109,11 @@ class CellObserver {
     };
     // The level function of a cell: the undeformed tread's penetration P_i + h - drop_c (> 0
     // inside, the gap < 0 outside; at rest the 3D patch's d_i - z_j), linear to its zero.
-    auto level = [&](int i, int c) { return P_(i) + sys_.road(t, i, c) - C.drop_m[c]; };
+    // On a soil: to the soil's surface (its rut outside the contact; cell_soil.h).
+    auto level = [&](int i, int c) {
+      const double rut = soil ? soil->rut_m(c, i, t) : 0.0;
+      return P_(i) + sys_.road(t, i, c) - C.drop_m[c] - rut;
+    };
     auto force = [&](int i, int c) {
       const UnitRange& r = sys_.ranges()[c];
       return r.contains(i) ? f_(sys_.offset(c) + i - r.lo) : 0.0;
@@ -124,8 +136,14 @@ class CellObserver {
         const double xin = cell_x(in, force(in, c));
         const UnitRange& r = sys_.ranges()[c];
         if (out < x0 || out > x1) return xin;
-        const double pin = force(in, c) / cm_.k_relaxed(in);
-        const double pout = r.contains(out) ? g_(sys_.offset(c) + out - r.lo) : level(out, c);
+        double pin = force(in, c) / cm_.k_relaxed(in);
+        double pout = r.contains(out) ? g_(sys_.offset(c) + out - r.lo) : level(out, c);
+        if (soil) {
+          // As the 3D static footprint on a soil (patch3d.cc): the compression into the
+          // undisturbed surface inside (tread and soil), the gap to the soil's surface outside.
+          pin += soil->depth(c, in);
+          if (r.contains(out)) pout -= soil->rut_m(c, out, t);
+        }
         if (!(pout < 0)) return xin;
         return xin + pin / (pin - pout) * (cell_x(out, 0.0) - xin);
       };
@@ -208,10 +226,10 @@ class CellObserver {
 class CellsOde final : public PatchOde {
  public:
   CellsOde(const CellModel& cm, const ScenarioPlan& plan, const StaticCells& initial,
-           std::vector<UnitRange> ranges)
+           std::vector<UnitRange> ranges, CellSoil* soil)
       : cm_(cm),
         initial_(initial),
-        sys_(cm, plan, std::move(ranges)),
+        sys_(cm, plan, std::move(ranges), soil),
         newton_(cm, sys_),
         obs_(sys_),
         // Before the first step: forces of the initial state outside the ranges.
@@ -295,9 +313,9 @@ class CellsOde final : public PatchOde {
 }  // namespace
 
 std::unique_ptr<PatchOde> make_cells_ode(const CellModel& cm, const ScenarioPlan& plan,
-                                         const StaticCells& initial,
-                                         std::vector<UnitRange> ranges) {
-  return std::make_unique<CellsOde>(cm, plan, initial, std::move(ranges));
+                                         const StaticCells& initial, std::vector<UnitRange> ranges,
+                                         CellSoil* soil) {
+  return std::make_unique<CellsOde>(cm, plan, initial, std::move(ranges), soil);
 }
 
 }  // namespace modaltyre::transient::detail

@@ -21,18 +21,35 @@ constexpr int kMaxRootIterations = 200;
 
 }  // namespace
 
+namespace {
+
+Eigen::VectorXd unit_areas(const TransientModel& M, double width_m) {
+  if (!(width_m > 0)) throw std::invalid_argument("SoilContact: contact width must be positive");
+  Eigen::VectorXd a(M.m);
+  for (int i = 0; i < M.m; ++i) a(i) = width_m * M.tyre.unit_length_m * std::cos(M.tyre.theta[i]);
+  return a;
+}
+
+}  // namespace
+
 SoilContact::SoilContact(const TransientModel& M, const ground::GroundSettings& ground,
                          double width_m, double bekker_width_m,
                          std::function<double(double)> distance)
+    : SoilContact(ground, unit_areas(M, width_m), M.k_contact, M.x_road, bekker_width_m,
+                  std::move(distance)) {}
+
+SoilContact::SoilContact(const ground::GroundSettings& ground, Eigen::VectorXd area_m2,
+                         Eigen::VectorXd k_N_m, Eigen::VectorXd x_m, double bekker_width_m,
+                         std::function<double(double)> distance)
     : law_(ground.normal_law(bekker_width_m)),
+      area_(std::move(area_m2)),
+      k_(std::move(k_N_m)),
+      x_(std::move(x_m)),
       distance_(std::move(distance)),
       bekker_width_m_(bekker_width_m) {
-  if (!(width_m > 0)) throw std::invalid_argument("SoilContact: contact width must be positive");
-  const int m = M.m;
-  area_.resize(m);
-  for (int i = 0; i < m; ++i) area_(i) = width_m * M.tyre.unit_length_m * std::cos(M.tyre.theta[i]);
-  k_ = M.k_contact;
-  x_ = M.x_road;
+  const int m = static_cast<int>(area_.size());
+  if (k_.size() != m || x_.size() != m || !(area_.array() > 0).all())
+    throw std::invalid_argument("SoilContact: one positive area, spring and x per contact");
   z_max_.setZero(m);
   stiffness_.setZero(m);
   depth_.setZero(m);
@@ -117,9 +134,10 @@ double SoilContact::unit_force(int i, double g, double zm, double* dfdg, double*
   double p = pressure_(i);
   if (!(p > lo && p < hi)) p = 0.5 * (lo + hi);
   const double tol = kRootTolerance * g;
-  double dZ = 0;
+  double dZ = 0, Zp = 0, p_of_Zp = -1;  // Z at p_of_Zp (the last evaluation, reused below)
   for (int it = 0; it < kMaxRootIterations; ++it) {
-    const double h = A * p / k + Z(p) - g;
+    Zp = Z(p), p_of_Zp = p;
+    const double h = A * p / k + Zp - g;
     if (h > 0)
       hi = p;
     else
@@ -131,7 +149,7 @@ double SoilContact::unit_force(int i, double g, double zm, double* dfdg, double*
     p = next;
   }
   pressure_(i) = p;
-  *depth = Z(p);
+  *depth = p == p_of_Zp ? Zp : Z(p);
   *dfdg = 1.0 / (1.0 / k + dZ / A);
   return p * A;
 }

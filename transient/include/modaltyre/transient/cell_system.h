@@ -15,6 +15,8 @@
 
 namespace modaltyre::transient {
 
+class CellSoil;
+
 /// The static 3D footprint as the transient's initial state: section forces, per-class cell
 /// forces (class-major, m per class) and the sinking (zero forces for no load).
 struct StaticCells {
@@ -22,6 +24,9 @@ struct StaticCells {
   Eigen::MatrixXd f;  ///< cell force per (section, class): m x classes
   Eigen::VectorXd d;  ///< section approach d_i = delta - s_i - (C F)_i (m)
   double sinking_m = 0;
+  /// On a soil (cell_soil.h): the soil's depth under each (section, class) (m x classes; empty
+  /// on the road).
+  Eigen::MatrixXd soil_depth_m;
 };
 /// Patch3d::solve at `load_N` (ComputationError if it fails); the empty contact at 0.
 StaticCells static_cells(const CellModel& cm, double load_N);
@@ -36,7 +41,14 @@ class CellSystem {
  public:
   /// `ranges`: the sections of each class that carry forces and tread states (empty: every
   /// section for every class; an empty range: the class never touches).
-  CellSystem(const CellModel& cm, const ScenarioPlan& plan, std::vector<UnitRange> ranges = {});
+  /// `soil`: the cells' contact springs in series with a soil (cell_soil.h; not owned; null:
+  /// the rigid road).
+  CellSystem(const CellModel& cm, const ScenarioPlan& plan, std::vector<UnitRange> ranges = {},
+             CellSoil* soil = nullptr);
+  const CellSoil* soil() const { return soil_; }
+  /// A contact cell's d f / d g (the contact spring; on a soil the series stiffness of the last
+  /// forces()).
+  double slot_stiffness(int k) const { return soil_ ? kd_soil_(k) : kc_slot_(k); }
   int size() const { return cm_.M().e_index() + ncells_ * (relax_ ? 1 : 0); }
   int cells() const { return ncells_; }  ///< (class, section) slots
   int tread_states() const { return relax_ ? ncells_ : 0; }
@@ -88,6 +100,8 @@ class CellSystem {
   Eigen::VectorXd drop_slot_;         ///< per slot: crown drop of its class
   mutable Eigen::VectorXd xi_, P_, f_, F_, phi_, G_, Vf_, g_, road_;
   mutable std::vector<char> in_contact_;
+  CellSoil* soil_ = nullptr;
+  mutable Eigen::VectorXd kd_soil_, f_acc_;  ///< on a soil: d f / d g per slot of the last forces()
   mutable long switches_since_jacobian_ = 0;
   mutable bool escaped_ = false;
 };

@@ -68,6 +68,9 @@ struct TransientResult {
   bool patch_3d = false;
   /// Run on a soil (the config's ground, soil_contact.h): samples carry soil_sinkage_m.
   bool on_soil = false;
+  /// On a soil, 3D patch (cell_soil.h): the deepest rut in the soil's memory at the run's end,
+  /// the surface unloaded from its deepest sinkage Z(0; z_max) [m].
+  double rut_depth_m = 0;
   std::vector<CellMap> maps;  ///< 3D: the pressure maps at TransientRunOptions::map_times_s
   bool ok() const { return status == TransientStatus::completed; }
   double real_time_factor() const { return wall_s > 0 ? simulated_s / wall_s : 0; }

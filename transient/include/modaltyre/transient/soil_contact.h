@@ -40,6 +40,11 @@ class SoilContact {
   /// `distance` is the distance rolled D(t) [m] (empty: at rest).
   SoilContact(const TransientModel& model, const ground::GroundSettings& ground, double width_m,
               double bekker_width_m, std::function<double(double)> distance = {});
+  /// The same on any row of contacts (the 3D patch's cells of one column class, cell_soil.h):
+  /// road area, contact spring and road position x per entry.
+  SoilContact(const ground::GroundSettings& ground, Eigen::VectorXd area_m2, Eigen::VectorXd k_N_m,
+              Eigen::VectorXd x_m, double bekker_width_m,
+              std::function<double(double)> distance = {});
 
   const ground::PressureSinkage& law() const { return *law_; }
   double bekker_width_m() const { return bekker_width_m_; }
