@@ -31,6 +31,8 @@ nlohmann::json transient_json(const transient::TransientModel& model,
     j["final"]["soil_sinkage_mm"] = round_sig(fin.soil_sinkage_m * 1e3);
     j["final"]["compaction_resistance_N"] = round_sig(fin.soil_resistance_N);
     j["final"]["tyre_deflection_mm"] = round_sig((fin.sinking_m - fin.soil_sinkage_m) * 1e3);
+    // The 3D run keeps the soil's memory per cell: the deepest rut at the run's end.
+    if (r.patch_3d) j["final"]["rut_depth_mm"] = round_sig(r.rut_depth_m * 1e3);
   }
   if (r.scenario == transient::Scenario::free_vibration) {
     const transient::BounceDecay d = transient::bounce_decay(r);
