@@ -27,10 +27,14 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
       floor_(t_.size()),
       d_(t_.size()) {
   const int S = static_cast<int>(t_.size()), K = classes();
+  last_.assign(std::size_t(S) * K, -1.0);
   if (!zmax_.empty()) {
     rut_.resize(zmax_.size());
-    for (std::size_t a = 0; a < zmax_.size(); ++a)
+    pv_.resize(zmax_.size());
+    for (std::size_t a = 0; a < zmax_.size(); ++a) {
       rut_[a] = zmax_[a] > 0 ? law_.rebound_depth_m(zmax_[a]) : 0.0;
+      pv_[a] = zmax_[a] > 0 ? law_.loading_Pa(zmax_[a]) : 0.0;
+    }
   }
   for (int i = 0; i < S; ++i) {
     double lowest = 1e300;
@@ -42,27 +46,47 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
 }
 
 // The cell force at compression e: the root of t f + Z(f / A; z_max) = e, with its derivative
-// df/de = 1 / (t + Z'(p) / A). Newton from the series estimate of tread and soil alone (the
-// root lies below both (e - rut) / t and A p_soil(e)), safeguarded by bisection.
+// df/de = 1 / (t + Z'(p) / A). The memory's branch ends where the cell meets its virgin curve,
+// at e_v = t A p_v + z_max (p_v = p(z_max)): beyond it the root is on the virgin curve
+// (f > A p_v), below it on the branch (for a rigid-plastic soil the vertical branch at z_max:
+// f = (e - z_max) / t exactly). Newton from the cell's last root (or the series estimate of tread
+// and soil alone), safeguarded by bisection on the branch's bracket.
 double SoilSections::cell(int i, int k, double e, double* dfde) const {
   if (dfde) *dfde = 0;
-  const double zmax = memory(i, k), rut = rut_.empty() ? 0.0 : rut_[idx(i, k)];
+  const std::size_t a = idx(i, k);
+  const double zmax = memory(i, k), rut = rut_.empty() ? 0.0 : rut_[a];
   if (!(e > rut)) return 0.0;
   const double t = t_[i], A = area_[i];
-  double lo = 0, hi = (e - rut) / t;
-  const double soil_alone = A * law_.pressure_Pa(e, zmax);
-  double f = soil_alone > 0 ? 1.0 / (1.0 / hi + 1.0 / soil_alone) : hi;
+  const double pv = pv_.empty() ? 0.0 : pv_[a];
+  const bool virgin = e >= t * A * pv + zmax;
+  if (!virgin && law_.rigid_plastic()) {
+    if (dfde) *dfde = 1.0 / t;
+    return (e - zmax) / t;
+  }
+  double lo = virgin ? A * pv : 0, hi = (e - (virgin ? zmax : rut)) / t;
+  if (!virgin) hi = std::min(hi, A * pv);
+  double f = last_[a];
+  if (!(f > lo && f < hi)) {
+    const double soil_alone = A * law_.pressure_Pa(e, zmax);
+    f = soil_alone > 0 ? 1.0 / (1.0 / hi + 1.0 / soil_alone) : hi;
+    f = std::clamp(f, lo, hi);
+  }
   double slope = t;
   for (int it = 0; it < 100; ++it) {
     const double p = f / A;
-    const double g = t * f + law_.sinkage_m(p, zmax) - e;
-    slope = t + law_.compliance_m_per_Pa(p, zmax) / A;
+    double dz = 0;
+    // On the virgin curve Z(p; z_max) = Z(p; 0): z_max is reached below A p_v.
+    const double z = virgin ? law_.virgin_sinkage_m(p, dz) : law_.sinkage_m(p, zmax);
+    if (!virgin) dz = law_.compliance_m_per_Pa(p, zmax);
+    const double g = t * f + z - e;
+    slope = t + dz / A;
     (g > 0 ? hi : lo) = f;
     if (std::abs(g) <= 1e-13 * e || hi - lo <= 1e-14 * hi) break;
     double next = f - g / slope;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     f = next;
   }
+  last_[a] = f;
   if (dfde) *dfde = 1.0 / slope;
   return f;
 }
@@ -127,9 +151,15 @@ void SoilSections::cell_forces(int i, double d, double* f) const {
 }
 
 double SoilSections::energy(int i, double F, bool update) {
-  F = std::max(F, 0.0);
-  const double d = approach(i, F);
+  double d = 0;
+  const double psi = energy_at(i, F, d);
   if (update) d_[i] = d;
+  return psi;
+}
+
+double SoilSections::energy_at(int i, double F, double& d) const {
+  F = std::max(F, 0.0);
+  d = approach(i, F);
   if (!(F > 0)) return 0.0;
   const double A = area_[i];
   double psi = 0;

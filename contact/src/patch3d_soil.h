@@ -51,12 +51,17 @@ class SoilSections final : public SectionLaws {
   /// Per class (not per column): f[k] for k < classes().
   void cell_forces(int i, double d, double* f) const override;
   double energy(int i, double F, bool update) override;
+  /// Psi_i(F) and the approach d = Phi_i^-1(F) it is taken at (the section's own approach is
+  /// left as it is).
+  double energy_at(int i, double F, double& d) const;
 
  private:
   std::size_t idx(int i, int k) const { return std::size_t(i) * z_.size() + k; }
   std::vector<double> t_, z_, w_;
   const ground::PressureSinkage& law_;
   std::vector<double> area_, zmax_, rut_;  ///< rut per cell (empty: virgin)
+  std::vector<double> pv_;                 ///< virgin pressure at the memory per cell
+  mutable std::vector<double> last_;       ///< each cell's last root (Newton's start)
   std::vector<double> floor_;              ///< per section
   std::vector<double> d_;                  ///< each section's approach (linearisation point)
 };

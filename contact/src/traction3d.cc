@@ -22,6 +22,9 @@ constexpr int kAndersonDepth = 4;  ///< as the 2D fixed point (traction.cc)
 // crown's mirrored columns differ by rounding only.
 constexpr double kSameDrop_m = 1e-12;
 
+// The consistency of a section's linear model with its own law (SoilSections::consistent).
+constexpr double kConsistentFloor_m = 1e-9;
+
 Eigen::VectorXd carcass_product(const solvers::ComplianceOperator& C, const Eigen::VectorXd& F) {
   const int S = C.size();
   Eigen::MatrixXd out(S, 1);
@@ -49,15 +52,18 @@ NormalSolution solve_normal(const solvers::ComplianceOperator& carcass, const Ei
                             std::vector<char> active, int max_steps) {
   const int S = carcass.size();
   NormalSolution out;
-  auto energies = [&](const Eigen::VectorXd& F, bool update) {
-    double e = 0;
-    for (int i = 0; i < S; ++i) e += laws.energy(i, std::max(F(i), 0.0), update);
-    return e;
-  };
+  // J at F, and each section's approach there (the sections' own laws).
+  std::vector<double> trial_d(S);
   auto objective = [&](const Eigen::VectorXd& F) {
-    return 0.5 * F.dot(carcass_product(carcass, F)) + gap0.dot(F) + energies(F, false);
+    double e = 0;
+    for (int i = 0; i < S; ++i) e += laws.energy_at(i, F(i), trial_d[i]);
+    return 0.5 * F.dot(carcass_product(carcass, F)) + gap0.dot(F) + e;
+  };
+  auto commit = [&] {
+    for (int i = 0; i < S; ++i) laws.set_approach(i, trial_d[i]);
   };
   Eigen::VectorXd F;
+  double JF = 0;  // J(F)
   for (int it = 1; it <= max_steps; ++it) {
     out.steps = it;
     std::vector<double> diag(S);
@@ -82,10 +88,16 @@ NormalSolution solve_normal(const solvers::ComplianceOperator& carcass, const Ei
     const Eigen::VectorXd CF = carcass_product(carcass, s.force);
     std::vector<double> d(S);
     for (int i = 0; i < S; ++i) d[i] = s.approach_m - gap0(i) - CF(i);
-    const double tol = opt.gap_tolerance * std::max(std::abs(s.approach_m), 1e-12);
+    // The sections' own approaches at the step's forces (and J there, the full step's trial):
+    // consistent when the linear model's approaches are theirs (within the gap tolerance or
+    // 1 nm: the energies come from root solves, SoilSections::consistent).
+    const double J1 = objective(s.force);
+    const double tol =
+        std::max(opt.gap_tolerance * std::max(std::abs(s.approach_m), 1e-12), kConsistentFloor_m);
     bool consistent = true;
     for (int i = 0; i < S && consistent; ++i)
-      consistent = laws.consistent(i, s.force(i), d[i], tol);
+      consistent =
+          s.force(i) > 0 ? std::abs(trial_d[i] - d[i]) <= tol : d[i] <= laws.floor(i) + tol;
     if (consistent) {
       out.status = SolveStatus::converged;
       out.force = s.force;
@@ -94,16 +106,18 @@ NormalSolution solve_normal(const solvers::ComplianceOperator& carcass, const Ei
       out.active = std::move(active);
       return out;
     }
-    if (F.size() == 0) {
+    // A step towards the linear problem's forces, backtracked while J does not decrease.
+    if (F.size() == 0 || J1 <= JF) {
       F = s.force;
+      JF = J1;
     } else {
       const Eigen::VectorXd dF = s.force - F;
-      const double j0 = objective(F);
-      double alpha = 1;
-      for (int k = 0; k < 40 && objective(F + alpha * dF) > j0; ++k) alpha *= 0.5;
+      double alpha = 0.5, J = objective(F + alpha * dF);
+      for (int k = 0; k < 40 && J > JF; ++k) J = objective(F + (alpha *= 0.5) * dF);
       F += alpha * dF;
+      JF = J;
     }
-    energies(F, true);
+    commit();
   }
   out.status = SolveStatus::max_iterations;
   out.message = "3D rolling: the soil's section laws did not settle in " +
@@ -193,6 +207,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   const solvers::LagConvolution2x2 H({HK.r_from_r, HK.r_from_t, HK.t_from_r, HK.t_from_t}, HK.lags);
   AndersonMixer mixer(kAndersonDepth);
   double last_dp = 0;
+  int normal_steps = 0;  // the section laws' linearisations over the rolling steps
   std::vector<double> zmax(cells), f(cells), depth(cells), surface(cells), x(cells);
   std::vector<double> fr(S), ft(S), ur(S), ut(S);
   for (int it = 1; it <= o.max_iterations; ++it) {
@@ -217,6 +232,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     const NormalSolution n = solve_normal(carcass, gap0, laws, normal_load, copt, st.active,
                                           patch_.settings().max_pattern_iterations);
     if (!ok(n.status)) return failed(c, pass, n.message, n.status);
+    normal_steps += n.steps;
     st.active = n.active;
     st.approach_m = n.approach_m;
     // Cell forces, the soil under them, and the cells' deformed positions (patch3d.h).
@@ -352,7 +368,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     r.contact_length_m = length;
     r.bekker_width_m = b_used;
     std::ostringstream msg;
-    msg << "converged in " << it << " rolling steps (3D patch, " << K << " column classes)";
+    msg << "converged in " << it << " rolling steps (3D patch, " << K << " column classes, "
+        << normal_steps << " section-law linearisations)";
     r.message = msg.str();
     return r;
   }
