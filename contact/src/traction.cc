@@ -25,16 +25,7 @@ struct RollingState {
   std::vector<double> force_N;  ///< vertical force per unit (the soil's linearisation point)
 };
 
-TractionResult fail_with(const TractionCase& c, int pass, std::string why,
-                         SolveStatus status = SolveStatus::failed) {
-  TractionResult r;
-  r.load_N = c.load_N;
-  r.slip = c.slip;
-  r.pass = pass;
-  r.status = status;
-  r.message = std::move(why);
-  return r;
-}
+using detail::traction_failure;
 
 TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
                             const ground::GroundSettings& g, const TractionCase& c, int pass,
@@ -63,7 +54,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     Eigen::Map<Eigen::VectorXd>(offset.data(), m) = V * fx;
     const double normal_load = c.load_N - st.shear_vertical_N;
     if (!(normal_load > 0))
-      return fail_with(c, pass, "the shear's vertical component exceeds the load");
+      return traction_failure(c, pass, "the shear's vertical component exceeds the load");
     GroundPatchInput in;
     if (g.soil()) in.z_max_m = z_max;
     in.gap_offset_m = offset;
@@ -74,7 +65,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     in.warm_active = st.active;
     in.initial_force_N = st.force_N;
     const FootprintResult f = solve_ground_patch(model, op, {normal_load, 0}, g, in);
-    if (!f.ok()) return fail_with(c, pass, f.message, f.status);
+    if (!f.ok()) return traction_failure(c, pass, f.message, f.status);
     st.active = f.active;
     st.bekker_width_m = std::min(width, f.contact_length_m);
     const double b_change = std::abs(st.bekker_width_m - b_used);
@@ -181,14 +172,14 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   }
   std::ostringstream msg;
   msg << "steady rolling did not settle in " << o.max_iterations << " steps";
-  return fail_with(c, pass, msg.str(), SolveStatus::max_iterations);
+  return traction_failure(c, pass, msg.str(), SolveStatus::max_iterations);
 }
 
 TractionResult rigid_pass(const TyreModel& model, const ground::GroundSettings& g,
                           const TractionCase& c, int pass, double prior) {
   const ground::RigidWheel wheel{model.config.outer_radius_m, model.config.tread.width_m};
   const ground::RigidWheelResult w = ground::rigid_wheel_rolling(g, wheel, c.load_N, c.slip, prior);
-  if (!w.ok()) return fail_with(c, pass, w.message, w.status);
+  if (!w.ok()) return traction_failure(c, pass, w.message, w.status);
   TractionResult r;
   r.status = w.status;
   r.message = w.message;

@@ -125,8 +125,10 @@ NormalSolution solve_normal(const solvers::ComplianceOperator& carcass, const Ei
   return out;
 }
 
-TractionResult failed(const TractionCase& c, int pass, std::string why,
-                      SolveStatus status = SolveStatus::failed) {
+}  // namespace
+
+TractionResult traction_failure(const TractionCase& c, int pass, std::string why,
+                                SolveStatus status) {
   TractionResult r;
   r.load_N = c.load_N;
   r.slip = c.slip;
@@ -135,8 +137,6 @@ TractionResult failed(const TractionCase& c, int pass, std::string why,
   r.message = std::move(why);
   return r;
 }
-
-}  // namespace
 
 Rolling3d::Rolling3d(const TyreModel& model, const ground::GroundSettings& ground)
     : model_(model),
@@ -221,7 +221,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     }
     const double normal_load = c.load_N - st.shear_vertical_N;
     if (!(normal_load > 0))
-      return failed(c, pass, "the shear's vertical component exceeds the load");
+      return traction_failure(c, pass, "the shear's vertical component exceeds the load");
     const double b_used = st.bekker_width_m > 0 ? st.bekker_width_m : width;
     const std::unique_ptr<ground::PressureSinkage> law = ground_.normal_law(b_used);
     SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_, zmax);
@@ -231,7 +231,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     const Eigen::VectorXd gap0 = m.sag + V_ * fx;
     const NormalSolution n = solve_normal(carcass, gap0, laws, normal_load, copt, st.active,
                                           patch_.settings().max_pattern_iterations);
-    if (!ok(n.status)) return failed(c, pass, n.message, n.status);
+    if (!ok(n.status)) return traction_failure(c, pass, n.message, n.status);
     normal_steps += n.steps;
     st.active = n.active;
     st.approach_m = n.approach_m;
@@ -271,9 +271,9 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
         }
       if (first < 0) continue;
       if (first == 0 || last == S - 1)
-        return failed(c, pass,
-                      "contact reached the edge of the candidate window: increase "
-                      "contact.window_mm");
+        return traction_failure(c, pass,
+                                "contact reached the edge of the candidate window: increase "
+                                "contact.window_mm");
       columns_in_contact += class_weight_[k];
       // The level e - rut (the compression beyond the surface inside, minus the gap outside),
       // linear to its zero between the last cell in contact and the next.
@@ -375,7 +375,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   }
   std::ostringstream msg;
   msg << "steady rolling on the 3D patch did not settle in " << o.max_iterations << " steps";
-  return failed(c, pass, msg.str(), SolveStatus::max_iterations);
+  return traction_failure(c, pass, msg.str(), SolveStatus::max_iterations);
 }
 
 }  // namespace modaltyre::contact::detail

@@ -13,12 +13,17 @@
 //     carcass, the shear's vertical component tau A tan alpha sharing the load.
 // Repeated (Anderson-mixed, traction_anderson.h) until the cells' sinkage, the sections'
 // horizontal forces, the drawbar pull and the load share settle.
+#include <string>
 #include <vector>
 
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/contact/traction.h"
 
 namespace modaltyre::contact::detail {
+
+/// A failed case: its load, slip and pass with the reason.
+TractionResult traction_failure(const TractionCase& c, int pass, std::string why,
+                                SolveStatus status = SolveStatus::failed);
 
 /// What one slip hands to the next (warm start).
 struct Rolling3dState {
