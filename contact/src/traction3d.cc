@@ -22,8 +22,12 @@ constexpr int kAndersonDepth = 4;  ///< as the 2D fixed point (traction.cc)
 // crown's mirrored columns differ by rounding only.
 constexpr double kSameDrop_m = 1e-12;
 
-// The consistency of a section's linear model with its own law (SoilSections::consistent).
+// The consistency of a section's linear model with its own law: 1 nm at least
+// (SoilSections::consistent: the energies come from root solves), and within a rolling step a
+// hundredth of the rolling fixed point's depth tolerance, which is all the rolling steps
+// resolve (the normal solve's error then stays 1 % of what the steps settle on).
 constexpr double kConsistentFloor_m = 1e-9;
+constexpr double kInnerShare = 0.01;
 
 Eigen::VectorXd carcass_product(const solvers::ComplianceOperator& C, const Eigen::VectorXd& F) {
   const int S = C.size();
@@ -49,7 +53,7 @@ struct NormalSolution {
 // is consistent with the sections' own laws.
 NormalSolution solve_normal(const solvers::ComplianceOperator& carcass, const Eigen::VectorXd& gap0,
                             SoilSections& laws, double load_N, const solvers::ContactOptions& opt,
-                            std::vector<char> active, int max_steps) {
+                            std::vector<char> active, int max_steps, double floor_m) {
   const int S = carcass.size();
   NormalSolution out;
   // J at F, and each section's approach there (the sections' own laws).
@@ -90,10 +94,10 @@ NormalSolution solve_normal(const solvers::ComplianceOperator& carcass, const Ei
     for (int i = 0; i < S; ++i) d[i] = s.approach_m - gap0(i) - CF(i);
     // The sections' own approaches at the step's forces (and J there, the full step's trial):
     // consistent when the linear model's approaches are theirs (within the gap tolerance or
-    // 1 nm: the energies come from root solves, SoilSections::consistent).
+    // floor_m).
     const double J1 = objective(s.force);
     const double tol =
-        std::max(opt.gap_tolerance * std::max(std::abs(s.approach_m), 1e-12), kConsistentFloor_m);
+        std::max(opt.gap_tolerance * std::max(std::abs(s.approach_m), 1e-12), floor_m);
     bool consistent = true;
     for (int i = 0; i < S && consistent; ++i)
       consistent =
@@ -207,7 +211,9 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   const solvers::LagConvolution2x2 H({HK.r_from_r, HK.r_from_t, HK.t_from_r, HK.t_from_t}, HK.lags);
   AndersonMixer mixer(kAndersonDepth);
   double last_dp = 0;
-  int normal_steps = 0;  // the section laws' linearisations over the rolling steps
+  int normal_steps = 0;
+  double sinking = st.sinking_m;  // the last rolling step's (0: none yet)  // the section laws'
+                                  // linearisations over the rolling steps
   std::vector<double> zmax(cells), f(cells), depth(cells), surface(cells), x(cells);
   std::vector<double> fr(S), ft(S), ur(S), ut(S);
   for (int it = 1; it <= o.max_iterations; ++it) {
@@ -229,10 +235,12 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       for (int i = 0; i < S; ++i) laws.set_approach(i, std::max(st.approach_m[i], laws.floor(i)));
     const Eigen::Map<const Eigen::VectorXd> fx(st.fx_N.data(), S);
     const Eigen::VectorXd gap0 = m.sag + V_ * fx;
+    const double floor_m = std::max(kConsistentFloor_m, kInnerShare * o.depth_tolerance * sinking);
     const NormalSolution n = solve_normal(carcass, gap0, laws, normal_load, copt, st.active,
-                                          patch_.settings().max_pattern_iterations);
+                                          patch_.settings().max_pattern_iterations, floor_m);
     if (!ok(n.status)) return traction_failure(c, pass, n.message, n.status);
     normal_steps += n.steps;
+    sinking = n.delta_m;
     st.active = n.active;
     st.approach_m = n.approach_m;
     // Cell forces, the soil under them, and the cells' deformed positions (patch3d.h).
@@ -314,6 +322,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       }
     }
     const double dp = H_N - Rc;
+    st.sinking_m = n.delta_m;
     const double b_new = std::min(columns_in_contact * dy, length);
     const double b_change = std::abs(b_new - b_used);
     st.bekker_width_m = b_new;

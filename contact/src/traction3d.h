@@ -31,6 +31,7 @@ struct Rolling3dState {
   std::vector<double> fx_N;     ///< horizontal force per section
   double shear_vertical_N = 0;
   double bekker_width_m = 0;
+  double sinking_m = 0;            ///< the axle's approach (0: none yet)
   std::vector<char> active;        ///< sections in contact
   std::vector<double> approach_m;  ///< sections' approaches (the soil's linearisation)
 };
