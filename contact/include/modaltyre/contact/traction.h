@@ -1,7 +1,8 @@
 #pragma once
-// Steady rolling at slip on a soil (docs/soil.md section 5): drawbar pull, thrust, motion
-// resistance, torque, sinkage and rut of the tyre (2D patch) or of the rigid cylinder of its outer
-// radius (tyre.rigid: ground/rigid_wheel.h).
+// Steady rolling at slip on a soil (docs/soil.md sections 5 and 9): drawbar pull, thrust, motion
+// resistance, torque, sinkage and rut of the tyre (2D patch below; a footprint_3d model on the 3D
+// patch, contact/src/traction3d.h: the same fixed point per column) or of the rigid cylinder of
+// its outer radius (tyre.rigid: ground/rigid_wheel.h).
 //
 // Slip: Wong's definitions, driven s = 1 - V / (omega R) > 0, braked s = omega R / V - 1 < 0,
 // R = the outer radius R0 (the tread's circumferential speed omega R0).
