@@ -235,9 +235,18 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
     double prior = 0;
     std::vector<double> prior_columns;  // 3D: the track's memory per column
     for (int p = 1; p <= o.passes; ++p) {
-      TractionResult r = o.rigid   ? rigid_pass(model, g, c, p, prior)
-                         : three_d ? rolling3d->pass(c, p, prior_columns, o, states3d[p - 1])
-                                   : rolling_pass(model, V, g, c, p, prior, o, states[p - 1]);
+      auto run = [&] {
+        return o.rigid   ? rigid_pass(model, g, c, p, prior)
+               : three_d ? rolling3d->pass(c, p, prior_columns, o, states3d[p - 1])
+                         : rolling_pass(model, V, g, c, p, prior, o, states[p - 1]);
+      };
+      const bool warm =
+          !o.rigid && (three_d ? !states3d[p - 1].depth_m.empty() : !states[p - 1].depth_m.empty());
+      TractionResult r = run();
+      // A warm start that does not settle is tried once more from the virgin state (the previous
+      // slip's state can sit across a change of the contact's edges from this slip's).
+      if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
+      if (!r.ok() && warm) r = run();
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
       prior = r.z_max_m;
       prior_columns = r.column_z_max_m;
