@@ -25,7 +25,7 @@ struct RollingState {
   std::vector<double> force_N;  ///< vertical force per unit (the soil's linearisation point)
 };
 
-using detail::traction_failure;
+using detail::case_result;
 
 TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
                             const ground::GroundSettings& g, const TractionCase& c, int pass,
@@ -54,7 +54,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     Eigen::Map<Eigen::VectorXd>(offset.data(), m) = V * fx;
     const double normal_load = c.load_N - st.shear_vertical_N;
     if (!(normal_load > 0))
-      return traction_failure(c, pass, "the shear's vertical component exceeds the load");
+      return case_result(c, pass, "the shear's vertical component exceeds the load");
     GroundPatchInput in;
     if (g.soil()) in.z_max_m = z_max;
     in.gap_offset_m = offset;
@@ -65,7 +65,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     in.warm_active = st.active;
     in.initial_force_N = st.force_N;
     const FootprintResult f = solve_ground_patch(model, op, {normal_load, 0}, g, in);
-    if (!f.ok()) return traction_failure(c, pass, f.message, f.status);
+    if (!f.ok()) return case_result(c, pass, f.message, f.status);
     st.active = f.active;
     st.bekker_width_m = std::min(width, f.contact_length_m);
     const double b_change = std::abs(st.bekker_width_m - b_used);
@@ -143,11 +143,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     }
     st.shear_vertical_N = next(2 * m);
     if (settled) {
-      TractionResult r;
-      r.status = SolveStatus::converged;
-      r.load_N = c.load_N;
-      r.slip = c.slip;
-      r.pass = pass;
+      TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
       r.iterations = it;
       r.sinking_m = f.sinking_m;
       r.soil_sinkage_m = f.soil_sinkage_m;
@@ -172,20 +168,15 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   }
   std::ostringstream msg;
   msg << "steady rolling did not settle in " << o.max_iterations << " steps";
-  return traction_failure(c, pass, msg.str(), SolveStatus::max_iterations);
+  return case_result(c, pass, msg.str(), SolveStatus::max_iterations);
 }
 
 TractionResult rigid_pass(const TyreModel& model, const ground::GroundSettings& g,
                           const TractionCase& c, int pass, double prior) {
   const ground::RigidWheel wheel{model.config.outer_radius_m, model.config.tread.width_m};
   const ground::RigidWheelResult w = ground::rigid_wheel_rolling(g, wheel, c.load_N, c.slip, prior);
-  if (!w.ok()) return traction_failure(c, pass, w.message, w.status);
-  TractionResult r;
-  r.status = w.status;
-  r.message = w.message;
-  r.load_N = c.load_N;
-  r.slip = c.slip;
-  r.pass = pass;
+  if (!w.ok()) return case_result(c, pass, w.message, w.status);
+  TractionResult r = case_result(c, pass, w.message, w.status);
   r.soil_sinkage_m = w.sinkage_m;
   r.sinking_m = w.sinkage_m;
   r.rut_depth_m = w.rut_depth_m;

@@ -131,14 +131,14 @@ NormalSolution solve_normal(const solvers::ComplianceOperator& carcass, const Ei
 
 }  // namespace
 
-TractionResult traction_failure(const TractionCase& c, int pass, std::string why,
-                                SolveStatus status) {
+TractionResult case_result(const TractionCase& c, int pass, std::string message,
+                           SolveStatus status) {
   TractionResult r;
   r.load_N = c.load_N;
   r.slip = c.slip;
   r.pass = pass;
   r.status = status;
-  r.message = std::move(why);
+  r.message = std::move(message);
   return r;
 }
 
@@ -227,7 +227,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     }
     const double normal_load = c.load_N - st.shear_vertical_N;
     if (!(normal_load > 0))
-      return traction_failure(c, pass, "the shear's vertical component exceeds the load");
+      return case_result(c, pass, "the shear's vertical component exceeds the load");
     const double b_used = st.bekker_width_m > 0 ? st.bekker_width_m : width;
     const std::unique_ptr<ground::PressureSinkage> law = ground_.normal_law(b_used);
     SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_, zmax);
@@ -238,7 +238,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     const double floor_m = std::max(kConsistentFloor_m, kInnerShare * o.depth_tolerance * sinking);
     const NormalSolution n = solve_normal(carcass, gap0, laws, normal_load, copt, st.active,
                                           patch_.settings().max_pattern_iterations, floor_m);
-    if (!ok(n.status)) return traction_failure(c, pass, n.message, n.status);
+    if (!ok(n.status)) return case_result(c, pass, n.message, n.status);
     normal_steps += n.steps;
     sinking = n.delta_m;
     st.active = n.active;
@@ -279,9 +279,9 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
         }
       if (first < 0) continue;
       if (first == 0 || last == S - 1)
-        return traction_failure(c, pass,
-                                "contact reached the edge of the candidate window: increase "
-                                "contact.window_mm");
+        return case_result(c, pass,
+                           "contact reached the edge of the candidate window: increase "
+                           "contact.window_mm");
       columns_in_contact += class_weight_[k];
       // The level e - rut (the compression beyond the surface inside, minus the gap outside),
       // linear to its zero between the last cell in contact and the next.
@@ -350,11 +350,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     for (int i = 0; i < S; ++i) st.fx_N[i] = next(cells + i);
     st.shear_vertical_N = next(nstate - 1);
     if (!settled) continue;
-    TractionResult r;
-    r.status = SolveStatus::converged;
-    r.load_N = c.load_N;
-    r.slip = c.slip;
-    r.pass = pass;
+    TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
     r.iterations = it;
     r.sinking_m = n.delta_m;
     r.soil_sinkage_m = soil_sinkage;
@@ -384,7 +380,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   }
   std::ostringstream msg;
   msg << "steady rolling on the 3D patch did not settle in " << o.max_iterations << " steps";
-  return traction_failure(c, pass, msg.str(), SolveStatus::max_iterations);
+  return case_result(c, pass, msg.str(), SolveStatus::max_iterations);
 }
 
 }  // namespace modaltyre::contact::detail

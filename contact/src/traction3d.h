@@ -21,9 +21,9 @@
 
 namespace modaltyre::contact::detail {
 
-/// A failed case: its load, slip and pass with the reason.
-TractionResult traction_failure(const TractionCase& c, int pass, std::string why,
-                                SolveStatus status = SolveStatus::failed);
+/// A case's result with its load, slip, pass, status and message (failed by default).
+TractionResult case_result(const TractionCase& c, int pass, std::string message,
+                           SolveStatus status = SolveStatus::failed);
 
 /// What one slip hands to the next (warm start).
 struct Rolling3dState {
