@@ -1,5 +1,5 @@
 // modaltyre traction CONFIG [--ground SOIL.yaml] --load N... --slip S... [--passes P]
-//                   [--set key=value]... [--json] [--plot FILE]
+//                   [--patch 3d|2d] [--set key=value]... [--json] [--plot FILE]
 // Steady rolling at slip on a soil (docs/soil.md section 5): drawbar pull, thrust, motion
 // resistance, torque, sinkage and rut; the library computes (contact/traction.h), this prints.
 #include <cstdio>
@@ -27,6 +27,7 @@ struct TractionArgs {
   std::string config, ground;
   std::vector<double> loads, slips;
   int passes = 1;
+  std::string patch;  ///< "3d" (a 3D config's default), "2d"; empty: the config's own
   std::vector<std::string> overrides;
   bool json = false;
   std::string plot;
@@ -57,7 +58,8 @@ void register_traction(CLI::App& app) {
       "Steady rolling at slip on a soil (Bekker-Wong or Kelvin-Voigt, Janosi-Hanamoto shear): "
       "drawbar pull, thrust, motion resistance, torque, sinkage and rut per load and slip "
       "(docs/soil.md). --set tyre.rigid=true: the rigid cylinder of the outer radius.");
-  cmd->add_option("CONFIG", a->config, "tyre config (YAML); a 3D config runs its 2D patch")
+  cmd->add_option("CONFIG", a->config,
+                  "tyre config (YAML); a 3D config (footprint_3d:) runs its 3D patch")
       ->required();
   cmd->add_option("--ground", a->ground,
                   "soil file (YAML with a ground: section, e.g. configs/soils/lete_sand.yaml); "
@@ -76,6 +78,10 @@ void register_traction(CLI::App& app) {
                              true));
   cmd->add_option("--passes", a->passes, "passes over the same track (each meets the rut), 1-20")
       ->check(CLI::Range(1, 20));
+  cmd->add_option("--patch", a->patch,
+                  "3d: the 3D patch (a 3D config's default); 2d: a 3D config's 2D patch at its "
+                  "tread width (the fast variant, docs/soil.md section 9)")
+      ->check(CLI::IsMember({"3d", "2d"}));
   cmd->add_option("--set", a->overrides,
                   "override a config key (tyre.rigid=true), or a soil key when --ground is "
                   "given (ground.bekker.n=0.8)");
@@ -83,25 +89,33 @@ void register_traction(CLI::App& app) {
   cmd->add_option("--plot", a->plot, "draw drawbar pull / load against slip (.svg or .png)");
   cmd->callback([a] {
     refuse_repeated_overrides(a->overrides);
-    const report::TractionSetup setup = report::traction_setup(a->config, a->ground, a->overrides);
+    report::TractionSetup setup = report::traction_setup(a->config, a->ground, a->overrides);
+    if (a->patch == "3d" && !setup.config.footprint_3d)
+      throw InputError({a->config, 0, "footprint_3d"},
+                       "--patch 3d needs a 3D config (a footprint_3d: section)");
+    setup.patch_2d = a->patch == "2d";
     CommandFiles files;  // before anything is computed: no output over an input
     report::add_config_inputs(files, setup.config);
     files.input(a->ground, "--ground");
     if (!a->plot.empty()) files.output(a->plot, "--plot");
     files.check();
     const auto results = report::run_traction(setup, a->loads, a->slips, a->passes);
-    contact::TyreConfig config = setup.config;  // as run: a 3D config's 2D patch
-    report::use_2d_patch_of_3d(config);
+    contact::TyreConfig config = setup.config;  // as run
+    if (setup.patch_2d || setup.rigid) report::use_2d_patch_of_3d(config);
     const ground::GroundSettings& g = setup.ground;
     if (!a->plot.empty()) plot_drawbar_pull(results, a->plot);
     if (a->json) {
       print_json(report::traction_json(config, g, results, setup.rigid, a->passes));
       return;
     }
-    std::cout << (setup.rigid ? "rigid cylinder" : "flexible tyre (2D patch)") << " R0 "
-              << fixed(config.outer_radius_m * 1e3, 1) << " mm, width "
-              << fixed(config.tread.width_m * 1e3, 1) << " mm on "
-              << (g.name.empty() ? ground::to_string(g.model) : g.name) << "\n";
+    const bool patch_3d = !setup.rigid && config.footprint_3d.has_value();
+    std::cout << (setup.rigid ? "rigid cylinder"
+                  : patch_3d  ? "flexible tyre (3D patch)"
+                              : "flexible tyre (2D patch)")
+              << " R0 " << fixed(config.outer_radius_m * 1e3, 1) << " mm, width "
+              << fixed((patch_3d ? config.footprint_3d->tread_width_m : config.tread.width_m) * 1e3,
+                       1)
+              << " mm on " << (g.name.empty() ? ground::to_string(g.model) : g.name) << "\n";
     std::cout << "  load_N    slip" << (a->passes > 1 ? "  pass" : "")
               << "  sinkage_mm  rut_mm  drawbar_N  thrust_N  resist_N  torque_Nm  entry_deg  "
                  "exit_deg  b_mm\n";

@@ -1,139 +1,182 @@
-// The soil's section law for the 3D patch (patch3d_sections.h, docs/soil.md section 4): each cell
-// of section i is its tread spring t_i in series with the soil under it, so a cell compressed by
-// e = d - z_j carries f = phi(e), the root of t_i f + Z(f / A_i) = e (Z the soil's sinkage under
-// the pressure on the cell's road area A_i, ground/pressure_sinkage.h, virgin soil). The section
-// carries Phi(d) = sum_j phi(d - z_j), continuous and increasing; its least energy is
-//   Psi(F) = sum_j [t f_j^2 / 2 + A W(f_j / A) + z_j f_j]   at d = Phi^-1(F),
-// W the soil's work (int Z dp). The reduction's outer iteration linearises Phi at each section's
-// current approach: d = c F + o with c = 1 / Phi'(d_k), o = d_k - c Phi(d_k).
+// The soil's section law of the 3D patch: see patch3d_soil.h. The reduction's outer iteration
+// (patch3d.cc, traction3d.cc) linearises Phi at each section's current approach:
+// d = c F + o with c = 1 / Phi'(d_k), o = d_k - c Phi(d_k).
+#include "patch3d_soil.h"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
-
-#include "modaltyre/ground/pressure_sinkage.h"
-#include "patch3d_sections.h"
 
 namespace modaltyre::contact::detail {
 namespace {
 
 constexpr double kGapFloor_m = 1e-9;
 
-class Soil final : public SectionLaws {
- public:
-  Soil(const std::vector<double>& t, const std::vector<double>& z,
-       const ground::PressureSinkage& law, const std::vector<double>& area)
-      : t_(t), z_(z), law_(law), area_(area), d_(t.size()) {
-    zmin_ = *std::min_element(z_.begin(), z_.end());
-    for (std::size_t i = 0; i < t.size(); ++i) d_[i] = zmin_;  // at the lowest drop: F = 0
-  }
-
-  // The cell force at compression e: the root of t f + Z(f / A) = e, with its derivative
-  // df/de = 1 / (t + Z'(p) / A). Newton from the series estimate of tread and soil alone (the
-  // root lies below both e / t and A p_soil(e)), safeguarded by bisection.
-  double cell(int i, double e, double* dfde = nullptr) const {
-    if (dfde) *dfde = 0;
-    if (!(e > 0)) return 0.0;
-    const double t = t_[i], A = area_[i];
-    double lo = 0, hi = e / t;
-    const double soil_alone = A * law_.loading_Pa(e);
-    double f = soil_alone > 0 ? 1.0 / (1.0 / hi + 1.0 / soil_alone) : hi;
-    double slope = t;
-    for (int k = 0; k < 100; ++k) {
-      const double p = f / A;
-      const double g = t * f + law_.sinkage_m(p, 0.0) - e;
-      slope = t + law_.compliance_m_per_Pa(p, 0.0) / A;
-      (g > 0 ? hi : lo) = f;
-      if (std::abs(g) <= 1e-13 * e || hi - lo <= 1e-14 * hi) break;
-      double next = f - g / slope;
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      f = next;
-    }
-    if (dfde) *dfde = 1.0 / slope;
-    return f;
-  }
-  // Phi(d) and dPhi/dd in one pass over the cells; at a section just touching, the stiffness
-  // of the tread of its lowest cells.
-  double section(int i, double d, double* stiffness = nullptr) const {
-    double F = 0, k = 0;
-    for (double zj : z_) {
-      double dfde = 0;
-      F += cell(i, d - zj, stiffness ? &dfde : nullptr);
-      if (stiffness) k += d - zj > 0 ? dfde : (zj <= zmin_ ? 1.0 / t_[i] : 0.0);
-    }
-    if (stiffness) *stiffness = k;
-    return F;
-  }
-  double stiffness(int i, double d) const {
-    double k = 0;
-    section(i, d, &k);
-    return k;
-  }
-  // The approach at force F: Phi(d) = F by Newton from the last approach, safeguarded by
-  // bisection.
-  double approach(int i, double F) const {
-    if (!(F > 0)) return zmin_;
-    double lo = zmin_, hi = zmin_ + F * t_[i];  // every cell's tread alone at least that long
-    while (section(i, hi) < F) hi = zmin_ + 2 * (hi - zmin_);
-    double d = std::clamp(d_[i], lo, hi);
-    for (int k = 0; k < 100; ++k) {
-      double slope = 0;
-      const double g = section(i, d, &slope) - F;
-      (g > 0 ? hi : lo) = d;
-      if (std::abs(g) <= 1e-12 * F || hi - lo <= 1e-13 * std::max(std::abs(hi), 1e-3)) break;
-      double next = d - g / std::max(slope, 1e-300);
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      d = next;
-    }
-    return d;
-  }
-
-  void reduced(int i, double& c, double& o) const override {
-    const double d = std::max(d_[i], zmin_);
-    double k = 0;
-    const double F = section(i, d, &k);
-    c = 1.0 / k;
-    o = d - c * F;
-  }
-  bool consistent(int i, double F, double d, double tol) const override {
-    if (!(F > 0)) return d <= zmin_ + tol;
-    // The linear model's approach against the section's own at F, within the gap tolerance or
-    // 1 nm (the energies the outer line search compares come from root solves: their last
-    // digits cannot resolve the relative 1e-10 of the rigid law's exact patterns).
-    return std::abs(approach(i, F) - d) <= std::max(tol, kGapFloor_m);
-  }
-  void cell_forces(int i, double d, double* f) const override {
-    for (std::size_t j = 0; j < z_.size(); ++j) f[j] = cell(i, d - z_[j]);
-  }
-  double energy(int i, double F, bool update) override {
-    F = std::max(F, 0.0);
-    const double d = approach(i, F);
-    if (update) d_[i] = d;
-    if (!(F > 0)) return 0.0;
-    const double A = area_[i];
-    double psi = 0;
-    for (double zj : z_) {
-      const double f = cell(i, d - zj);
-      if (f > 0) psi += t_[i] * f * f / 2 + A * law_.work_J_m2(f / A, 0.0) + zj * f;
-    }
-    return psi;
-  }
-
- private:
-  std::vector<double> t_, z_;
-  const ground::PressureSinkage& law_;
-  std::vector<double> area_;
-  std::vector<double> d_;  ///< each section's current approach (its linearisation point)
-  double zmin_ = 0;
-};
-
 }  // namespace
+
+SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::vector<double> weight,
+                           const ground::PressureSinkage& law, std::vector<double> area,
+                           std::vector<double> z_max)
+    : t_(std::move(t)),
+      z_(std::move(z)),
+      w_(std::move(weight)),
+      law_(law),
+      area_(std::move(area)),
+      zmax_(std::move(z_max)),
+      floor_(t_.size()),
+      d_(t_.size()) {
+  const int S = static_cast<int>(t_.size()), K = classes();
+  last_.assign(std::size_t(S) * K, -1.0);
+  if (!zmax_.empty()) {
+    rut_.resize(zmax_.size());
+    pv_.resize(zmax_.size());
+    for (std::size_t a = 0; a < zmax_.size(); ++a) {
+      rut_[a] = zmax_[a] > 0 ? law_.rebound_depth_m(zmax_[a]) : 0.0;
+      pv_[a] = zmax_[a] > 0 ? law_.loading_Pa(zmax_[a]) : 0.0;
+    }
+  }
+  for (int i = 0; i < S; ++i) {
+    double lowest = 1e300;
+    for (int k = 0; k < K; ++k)
+      lowest = std::min(lowest, z_[k] + (rut_.empty() ? 0 : rut_[idx(i, k)]));
+    floor_[i] = lowest;
+    d_[i] = lowest;  // at the floor: F = 0
+  }
+}
+
+// The cell force at compression e: the root of t f + Z(f / A; z_max) = e, with its derivative
+// df/de = 1 / (t + Z'(p) / A). The memory's branch ends where the cell meets its virgin curve,
+// at e_v = t A p_v + z_max (p_v = p(z_max)): beyond it the root is on the virgin curve
+// (f > A p_v), below it on the branch (for a rigid-plastic soil the vertical branch at z_max:
+// f = (e - z_max) / t exactly). Newton from the cell's last root (or the series estimate of tread
+// and soil alone), safeguarded by bisection on the branch's bracket.
+double SoilSections::cell(int i, int k, double e, double* dfde) const {
+  if (dfde) *dfde = 0;
+  const std::size_t a = idx(i, k);
+  const double zmax = memory(i, k), rut = rut_.empty() ? 0.0 : rut_[a];
+  if (!(e > rut)) return 0.0;
+  const double t = t_[i], A = area_[i];
+  const double pv = pv_.empty() ? 0.0 : pv_[a];
+  const bool virgin = e >= t * A * pv + zmax;
+  if (!virgin && law_.rigid_plastic()) {
+    if (dfde) *dfde = 1.0 / t;
+    return (e - zmax) / t;
+  }
+  double lo = virgin ? A * pv : 0, hi = (e - (virgin ? zmax : rut)) / t;
+  if (!virgin) hi = std::min(hi, A * pv);
+  double f = last_[a];
+  if (!(f > lo && f < hi)) {
+    const double soil_alone = A * law_.pressure_Pa(e, zmax);
+    f = soil_alone > 0 ? 1.0 / (1.0 / hi + 1.0 / soil_alone) : hi;
+    f = std::clamp(f, lo, hi);
+  }
+  double slope = t;
+  for (int it = 0; it < 100; ++it) {
+    const double p = f / A;
+    double dz = 0;
+    // On the virgin curve Z(p; z_max) = Z(p; 0): z_max is reached below A p_v.
+    const double z = virgin ? law_.virgin_sinkage_m(p, dz) : law_.sinkage_m(p, zmax);
+    if (!virgin) dz = law_.compliance_m_per_Pa(p, zmax);
+    const double g = t * f + z - e;
+    slope = t + dz / A;
+    (g > 0 ? hi : lo) = f;
+    if (std::abs(g) <= 1e-13 * e || hi - lo <= 1e-14 * hi) break;
+    double next = f - g / slope;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    f = next;
+  }
+  last_[a] = f;
+  if (dfde) *dfde = 1.0 / slope;
+  return f;
+}
+
+// Phi(d) and dPhi/dd in one pass over the classes; at a section just touching, the stiffness of
+// the tread of its lowest cells.
+double SoilSections::section(int i, double d, double* stiffness) const {
+  double F = 0, kk = 0;
+  for (int k = 0; k < classes(); ++k) {
+    double dfde = 0;
+    const double e = d - z_[k];
+    F += w_[k] * cell(i, k, e, stiffness ? &dfde : nullptr);
+    if (stiffness) {
+      const double lowest = z_[k] + (rut_.empty() ? 0.0 : rut_[idx(i, k)]);
+      kk += w_[k] * (e > lowest - z_[k] ? dfde : (lowest <= floor_[i] ? 1.0 / t_[i] : 0.0));
+    }
+  }
+  if (stiffness) *stiffness = kk;
+  return F;
+}
+
+double SoilSections::approach(int i, double F) const {
+  const double z0 = floor_[i];
+  if (!(F > 0)) return z0;
+  double lo = z0, hi = z0 + F * t_[i];  // every cell's tread alone at least that long
+  while (section(i, hi) < F) hi = z0 + 2 * (hi - z0);
+  double d = std::clamp(d_[i], lo, hi);
+  for (int it = 0; it < 100; ++it) {
+    double slope = 0;
+    const double g = section(i, d, &slope) - F;
+    (g > 0 ? hi : lo) = d;
+    if (std::abs(g) <= 1e-12 * F || hi - lo <= 1e-13 * std::max(std::abs(hi), 1e-3)) break;
+    double next = d - g / std::max(slope, 1e-300);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    d = next;
+  }
+  return d;
+}
+
+double SoilSections::depth(int i, int k, double f) const {
+  return law_.sinkage_m(f / area_[i], memory(i, k));
+}
+
+void SoilSections::reduced(int i, double& c, double& o) const {
+  const double d = std::max(d_[i], floor_[i]);
+  double k = 0;
+  const double F = section(i, d, &k);
+  c = 1.0 / k;
+  o = d - c * F;
+}
+
+bool SoilSections::consistent(int i, double F, double d, double tol) const {
+  if (!(F > 0)) return d <= floor_[i] + tol;
+  // The linear model's approach against the section's own at F, within the gap tolerance or
+  // 1 nm (the energies the outer line search compares come from root solves: their last digits
+  // cannot resolve the relative 1e-10 of the rigid law's exact patterns).
+  return std::abs(approach(i, F) - d) <= std::max(tol, kGapFloor_m);
+}
+
+void SoilSections::cell_forces(int i, double d, double* f) const {
+  for (int k = 0; k < classes(); ++k) f[k] = cell(i, k, d - z_[k]);
+}
+
+double SoilSections::energy(int i, double F, bool update) {
+  double d = 0;
+  const double psi = energy_at(i, F, d);
+  if (update) d_[i] = d;
+  return psi;
+}
+
+double SoilSections::energy_at(int i, double F, double& d) const {
+  F = std::max(F, 0.0);
+  d = approach(i, F);
+  if (!(F > 0)) return 0.0;
+  const double A = area_[i];
+  double psi = 0;
+  for (int k = 0; k < classes(); ++k) {
+    const double f = cell(i, k, d - z_[k]);
+    if (f > 0)
+      psi += w_[k] * (t_[i] * f * f / 2 + A * law_.work_J_m2(f / A, memory(i, k)) + z_[k] * f);
+  }
+  return psi;
+}
 
 std::unique_ptr<SectionLaws> soil_sections(const std::vector<double>& t,
                                            const std::vector<double>& z,
                                            const ground::PressureSinkage& law,
                                            const std::vector<double>& area) {
-  return std::make_unique<Soil>(t, z, law, area);
+  // The static footprint: one class per column (its cell forces are read per column), virgin.
+  return std::make_unique<SoilSections>(t, z, std::vector<double>(z.size(), 1.0), law, area);
 }
 
 }  // namespace modaltyre::contact::detail

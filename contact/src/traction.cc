@@ -7,9 +7,13 @@
 #include "modaltyre/contact/ground_patch.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/ground/rigid_wheel.h"
+#include "traction3d.h"
+#include "traction_anderson.h"
 
 namespace modaltyre::contact {
 namespace {
+
+constexpr int kAndersonDepth = 4;  ///< the rolling fixed points' mixing depth
 
 // What one slip's fixed point hands to the next (warm start) and what it iterates on.
 struct RollingState {
@@ -21,16 +25,7 @@ struct RollingState {
   std::vector<double> force_N;  ///< vertical force per unit (the soil's linearisation point)
 };
 
-TractionResult fail_with(const TractionCase& c, int pass, std::string why,
-                         SolveStatus status = SolveStatus::failed) {
-  TractionResult r;
-  r.load_N = c.load_N;
-  r.slip = c.slip;
-  r.pass = pass;
-  r.status = status;
-  r.message = std::move(why);
-  return r;
-}
+using detail::case_result;
 
 TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
                             const ground::GroundSettings& g, const TractionCase& c, int pass,
@@ -47,8 +42,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   std::vector<double> z_max(m), offset(m), slope(m);
   const PatchOperator op = static_matrix_free_operator(model);
   double last_dp = 0;
-  std::vector<Eigen::VectorXd> xs, gs;  // recent states and their images (Anderson mixing)
-  double last_residual = 1e300;
+  detail::AndersonMixer mixer(kAndersonDepth);
   for (int it = 1; it <= o.max_iterations; ++it) {
     // 1. The memory of the ground ahead of each unit (front = the highest index).
     double ahead = prior;
@@ -60,7 +54,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     Eigen::Map<Eigen::VectorXd>(offset.data(), m) = V * fx;
     const double normal_load = c.load_N - st.shear_vertical_N;
     if (!(normal_load > 0))
-      return fail_with(c, pass, "the shear's vertical component exceeds the load");
+      return case_result(c, pass, "the shear's vertical component exceeds the load");
     GroundPatchInput in;
     if (g.soil()) in.z_max_m = z_max;
     in.gap_offset_m = offset;
@@ -71,7 +65,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     in.warm_active = st.active;
     in.initial_force_N = st.force_N;
     const FootprintResult f = solve_ground_patch(model, op, {normal_load, 0}, g, in);
-    if (!f.ok()) return fail_with(c, pass, f.message, f.status);
+    if (!f.ok()) return case_result(c, pass, f.message, f.status);
     st.active = f.active;
     st.bekker_width_m = std::min(width, f.contact_length_m);
     const double b_change = std::abs(st.bekker_width_m - b_used);
@@ -140,39 +134,16 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
                          fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
                          std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N;
     last_dp = dp;
-    // Anderson mixing (depth kAnderson): the next state is the combination of the recent images
-    // G(x_j) whose residuals G(x_j) - x_j cancel best; the plain step x <- G(x) converges
-    // linearly at a ratio of ~0.7 here (the ground's memory follows the sinkage of the units
-    // ahead).
-    constexpr int kAnderson = 4;
-    // Safeguard: a residual that does not shrink restarts the history from the plain step.
-    const double residual = (image - state).norm();
-    if (residual >= last_residual) xs.clear(), gs.clear();
-    last_residual = residual;
-    xs.push_back(state), gs.push_back(image);
-    if (static_cast<int>(xs.size()) > kAnderson + 1) xs.erase(xs.begin()), gs.erase(gs.begin());
-    Eigen::VectorXd next = image;
-    const int k = static_cast<int>(xs.size()) - 1;
-    if (k > 0) {
-      Eigen::MatrixXd dR(n, k), dG(n, k);
-      for (int j = 0; j < k; ++j) {
-        dR.col(j) = (gs[j + 1] - xs[j + 1]) - (gs[j] - xs[j]);
-        dG.col(j) = gs[j + 1] - gs[j];
-      }
-      const Eigen::VectorXd gamma = dR.colPivHouseholderQr().solve(gs[k] - xs[k]);
-      if (gamma.allFinite()) next -= dG * gamma;
-    }
+    // Anderson mixing (traction_anderson.h): the plain step x <- G(x) converges linearly at a
+    // ratio of ~0.7 here (the ground's memory follows the sinkage of the units ahead).
+    const Eigen::VectorXd next = mixer.next(state, image);
     for (int i = 0; i < m; ++i) {
       st.depth_m[i] = std::max(next(i) * 1e-3, 0.0);
       st.fx_N[i] = next(m + i);
     }
     st.shear_vertical_N = next(2 * m);
     if (settled) {
-      TractionResult r;
-      r.status = SolveStatus::converged;
-      r.load_N = c.load_N;
-      r.slip = c.slip;
-      r.pass = pass;
+      TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
       r.iterations = it;
       r.sinking_m = f.sinking_m;
       r.soil_sinkage_m = f.soil_sinkage_m;
@@ -197,20 +168,15 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   }
   std::ostringstream msg;
   msg << "steady rolling did not settle in " << o.max_iterations << " steps";
-  return fail_with(c, pass, msg.str(), SolveStatus::max_iterations);
+  return case_result(c, pass, msg.str(), SolveStatus::max_iterations);
 }
 
 TractionResult rigid_pass(const TyreModel& model, const ground::GroundSettings& g,
                           const TractionCase& c, int pass, double prior) {
   const ground::RigidWheel wheel{model.config.outer_radius_m, model.config.tread.width_m};
   const ground::RigidWheelResult w = ground::rigid_wheel_rolling(g, wheel, c.load_N, c.slip, prior);
-  if (!w.ok()) return fail_with(c, pass, w.message, w.status);
-  TractionResult r;
-  r.status = w.status;
-  r.message = w.message;
-  r.load_N = c.load_N;
-  r.slip = c.slip;
-  r.pass = pass;
+  if (!w.ok()) return case_result(c, pass, w.message, w.status);
+  TractionResult r = case_result(c, pass, w.message, w.status);
   r.soil_sinkage_m = w.sinkage_m;
   r.sinking_m = w.sinkage_m;
   r.rut_depth_m = w.rut_depth_m;
@@ -231,6 +197,11 @@ TractionResult rigid_pass(const TyreModel& model, const ground::GroundSettings& 
 TractionResult traction_pass(const TyreModel& model, const ground::GroundSettings& g,
                              const TractionCase& c, double prior, const TractionOptions& o) {
   if (o.rigid) return rigid_pass(model, g, c, 1, prior);
+  if (model.config.footprint_3d) {
+    const detail::Rolling3d rolling(model, g);
+    detail::Rolling3dState st;
+    return rolling.pass(c, 1, std::vector<double>(rolling.columns(), prior), o, st);
+  }
   RollingState st;
   return rolling_pass(model, vertical_from_horizontal(model), g, c, 1, prior, o, st);
 }
@@ -239,21 +210,37 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
                                             const std::vector<TractionCase>& cases,
                                             const TractionOptions& o) {
   std::vector<TractionResult> out;
-  if (model.config.footprint_3d)
-    throw std::invalid_argument("steady_traction runs the 2D patch: the model has footprint_3d");
   if (g.model == ground::GroundModel::profile)
     throw std::invalid_argument(
         "traction on a road profile is not built (a soil or the flat road)");
-  const Eigen::MatrixXd V = o.rigid ? Eigen::MatrixXd() : vertical_from_horizontal(model);
+  const bool three_d = !o.rigid && model.config.footprint_3d.has_value();
+  const Eigen::MatrixXd V =
+      o.rigid || three_d ? Eigen::MatrixXd() : vertical_from_horizontal(model);
+  std::unique_ptr<detail::Rolling3d> rolling3d;
+  if (three_d) rolling3d = std::make_unique<detail::Rolling3d>(model, g);
   // Each pass's state warm-starts the same pass of the next case (same load, next slip).
-  std::vector<RollingState> states(std::max(1, o.passes));
+  const std::size_t P = std::max(1, o.passes);
+  std::vector<RollingState> states(P);
+  std::vector<detail::Rolling3dState> states3d(P);
   for (const auto& c : cases) {
     double prior = 0;
+    std::vector<double> prior_columns;  // 3D: the track's memory per column
     for (int p = 1; p <= o.passes; ++p) {
-      TractionResult r = o.rigid ? rigid_pass(model, g, c, p, prior)
-                                 : rolling_pass(model, V, g, c, p, prior, o, states[p - 1]);
-      if (!r.ok()) states[p - 1] = {};
+      auto run = [&] {
+        return o.rigid   ? rigid_pass(model, g, c, p, prior)
+               : three_d ? rolling3d->pass(c, p, prior_columns, o, states3d[p - 1])
+                         : rolling_pass(model, V, g, c, p, prior, o, states[p - 1]);
+      };
+      const bool warm =
+          !o.rigid && (three_d ? !states3d[p - 1].depth_m.empty() : !states[p - 1].depth_m.empty());
+      TractionResult r = run();
+      // A warm start that does not settle is tried once more from the virgin state (the previous
+      // slip's state can sit across a change of the contact's edges from this slip's).
+      if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
+      if (!r.ok() && warm) r = run();
+      if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
       prior = r.z_max_m;
+      prior_columns = r.column_z_max_m;
       out.push_back(std::move(r));
       if (!out.back().ok()) break;
     }

@@ -72,6 +72,16 @@ double BekkerWong::compliance_m_per_Pa(double p_Pa, double z_max_m) const {
   return params_.n < 1 ? 0.0 : (params_.n == 1 ? 1.0 / k_ : 1e300);
 }
 
+double BekkerWong::virgin_sinkage_m(double p_Pa, double& dz_dp_m_per_Pa) const {
+  if (!(p_Pa > 0)) {
+    dz_dp_m_per_Pa = compliance_m_per_Pa(0.0, 0.0);
+    return 0.0;
+  }
+  const double z = loading_sinkage_m(p_Pa);  // z = (p / k)^(1/n), dz/dp = z / (n p)
+  dz_dp_m_per_Pa = z / (params_.n * p_Pa);
+  return z;
+}
+
 double BekkerWong::work_J_m2(double p_Pa, double z_max_m) const {
   if (!(p_Pa > 0)) return 0.0;
   // Virgin curve: int_0^q (q'/k)^(1/n) dq' = n / (n + 1) q z(q).

@@ -9,6 +9,11 @@ double PressureSinkage::pressure_Pa(double z_m, double z_max_m) const {
   return z_m >= z_max_m ? loading_Pa(z_m) : unloading_Pa(z_m, z_max_m);
 }
 
+double PressureSinkage::virgin_sinkage_m(double p_Pa, double& dz_dp_m_per_Pa) const {
+  dz_dp_m_per_Pa = compliance_m_per_Pa(p_Pa, 0.0);
+  return loading_sinkage_m(p_Pa);
+}
+
 double PressureSinkage::sinkage_m(double p_Pa, double z_max_m) const {
   if (z_max_m > 0 && p_Pa < loading_Pa(z_max_m)) return unloading_sinkage_m(p_Pa, z_max_m);
   return std::max(loading_sinkage_m(p_Pa), z_max_m);

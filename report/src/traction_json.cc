@@ -37,7 +37,11 @@ nlohmann::json traction_json(const contact::TyreConfig& config, const ground::Gr
                              const std::vector<contact::TractionResult>& results, bool rigid,
                              int passes) {
   nlohmann::json cases = nlohmann::json::array();
-  for (const auto& r : results) cases.push_back(traction_case_json(r, passes > 1));
+  bool patch_3d = false;  // the 3D patch's results carry the track per column
+  for (const auto& r : results) {
+    cases.push_back(traction_case_json(r, passes > 1));
+    patch_3d = patch_3d || !r.column_z_max_m.empty();
+  }
   nlohmann::json ground = {
       {"model", ground::to_string(g.model)}, {"name", g.name}, {"source", g.source}};
   if (g.model == ground::GroundModel::bekker) {
@@ -52,9 +56,12 @@ nlohmann::json traction_json(const contact::TyreConfig& config, const ground::Gr
   return {
       {"tyre", config.name},
       {"config", config.source},
-      {"model", rigid ? "rigid cylinder (tyre.rigid)" : "flexible tyre, 2D patch"},
+      {"model", rigid      ? "rigid cylinder (tyre.rigid)"
+                : patch_3d ? "flexible tyre, 3D patch"
+                           : "flexible tyre, 2D patch"},
       {"outer_radius_mm", config.outer_radius_m * 1e3},
-      {"width_mm", config.tread.width_m * 1e3},
+      {"width_mm",
+       (config.footprint_3d ? config.footprint_3d->tread_width_m : config.tread.width_m) * 1e3},
       {"slip_definition", "Wong: driven s = 1 - V/(omega R0) > 0, braked s = omega R0/V - 1 < 0"},
       {"ground", ground},
       {"passes", passes},
@@ -105,7 +112,7 @@ std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
       throw InputError({"loads_N", 0, ""}, "load " + std::to_string(F) + " N outside [1e-6, 1e7]");
   if (passes < 1 || passes > 20) throw InputError({"passes", 0, ""}, "passes must be 1-20");
   contact::TyreConfig config = setup.config;
-  use_2d_patch_of_3d(config);
+  if (setup.patch_2d || setup.rigid) use_2d_patch_of_3d(config);
   config.ground = setup.ground;
   contact::TractionOptions opt;
   opt.rigid = setup.rigid;

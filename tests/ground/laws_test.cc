@@ -202,5 +202,21 @@ TEST(SoilCompliance, ClosedFormEqualsTheNumericalDerivative) {
   }
 }
 
+// The virgin curve's sinkage and slope in one evaluation (the 3D patch's cell roots): Bekker-Wong's
+// closed form and the base class's default (NumericWork: its numerical derivative) against z(p)
+// and the virgin compliance.
+TEST(SoilCompliance, TheVirginSinkageAndSlopeAreTheLawsOwn) {
+  const BekkerWong law(lete_sand(), 0.15);
+  const NumericWork numeric(law);
+  for (double z : {1e-4, 0.01, 0.05}) {
+    const double p = law.loading_Pa(z);
+    double a = 0, b = 0;
+    EXPECT_NEAR(law.virgin_sinkage_m(p, a), z, kRoundOff * z);
+    EXPECT_NEAR(a, law.compliance_m_per_Pa(p, 0.0), kRoundOff * a);
+    EXPECT_NEAR(numeric.virgin_sinkage_m(p, b), z, kRoundOff * z);
+    EXPECT_NEAR(b, a, 1e-5 * a);
+  }
+}
+
 }  // namespace
 }  // namespace modaltyre::ground

@@ -1,7 +1,8 @@
 #pragma once
-// Steady rolling at slip on a soil (docs/soil.md section 5): drawbar pull, thrust, motion
-// resistance, torque, sinkage and rut of the tyre (2D patch) or of the rigid cylinder of its outer
-// radius (tyre.rigid: ground/rigid_wheel.h).
+// Steady rolling at slip on a soil (docs/soil.md sections 5 and 9): drawbar pull, thrust, motion
+// resistance, torque, sinkage and rut of the tyre (2D patch below; a footprint_3d model on the 3D
+// patch, contact/src/traction3d.h: the same fixed point per column) or of the rigid cylinder of
+// its outer radius (tyre.rigid: ground/rigid_wheel.h).
 //
 // Slip: Wong's definitions, driven s = 1 - V / (omega R) > 0, braked s = omega R / V - 1 < 0,
 // R = the outer radius R0 (the tread's circumferential speed omega R0).
@@ -45,7 +46,9 @@ struct TractionResult {
   double soil_sinkage_m = 0;  ///< deepest point below the undisturbed surface
   double rut_depth_m = 0;     ///< the track behind the tyre, unloaded
   double z_max_m = 0;         ///< the track's memory after this pass
-  double sinking_m = 0;       ///< axle approach to the undisturbed surface
+  /// 3D patch: the track's memory per column after this pass (empty on the 2D patch).
+  std::vector<double> column_z_max_m;
+  double sinking_m = 0;  ///< axle approach to the undisturbed surface
   double tyre_deflection_m = 0;
   double drawbar_pull_N = 0, thrust_N = 0, motion_resistance_N = 0, torque_Nm = 0;
   double entry_angle_rad = 0, exit_angle_rad = 0;  ///< contact edges seen from the axle
@@ -66,14 +69,15 @@ struct TractionOptions {
   double depth_tolerance = 1e-4;
 };
 
-/// Every case for passes 1..P, in the order case by case, pass by pass. The model must be a
-/// 2D one (no footprint_3d); its width is the contact width. `ground` must be a soil.
+/// Every case for passes 1..P, in the order case by case, pass by pass. A 2D model runs its
+/// patch at its contact width; a model with footprint_3d runs the 3D patch (docs/soil.md
+/// section 9; laterally rigid belt, no sidewall softening). `ground` must be a soil.
 std::vector<TractionResult> steady_traction(const TyreModel& model,
                                             const ground::GroundSettings& ground,
                                             const std::vector<TractionCase>& cases,
                                             const TractionOptions& options = {});
 
-/// One pass of the flexible tyre on a track of memory prior_z_max_m.
+/// One pass of the flexible tyre on a track of memory prior_z_max_m (2D or 3D patch).
 TractionResult traction_pass(const TyreModel& model, const ground::GroundSettings& ground,
                              const TractionCase& c, double prior_z_max_m,
                              const TractionOptions& options = {});

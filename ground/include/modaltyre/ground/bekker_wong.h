@@ -47,6 +47,7 @@ class BekkerWong final : public PressureSinkage {
   bool rigid_plastic() const override { return !params_.unloading.has_value(); }
   double work_J_m2(double p_Pa, double z_max_m) const override;
   double compliance_m_per_Pa(double p_Pa, double z_max_m) const override;
+  double virgin_sinkage_m(double p_Pa, double& dz_dp_m_per_Pa) const override;
 
   double b_m() const { return b_m_; }
   /// Wong's unloading stiffness k_u at z_max, at least the secant p_max / z_max [Pa/m] (0 when

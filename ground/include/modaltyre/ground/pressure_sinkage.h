@@ -39,6 +39,10 @@ class PressureSinkage {
   /// dz/dp of sinkage_m at p (right derivative; 0 on a rigid-plastic branch) [m/Pa]. This
   /// default differentiates numerically; the laws below override it with their closed forms.
   virtual double compliance_m_per_Pa(double p_Pa, double z_max_m) const;
+  /// The virgin curve's sinkage z(p) and its slope dz/dp at p >= 0 in one evaluation (the 3D
+  /// patch's cell roots, contact/src/patch3d_soil.cc). This default calls loading_sinkage_m and
+  /// compliance_m_per_Pa(p, 0); Bekker-Wong shares its power between the two.
+  virtual double virgin_sinkage_m(double p_Pa, double& dz_dp_m_per_Pa) const;
   /// The work of the pressure per unit area, int_0^p sinkage_m(q, z_max) dq [J/m^2]: the soil's
   /// complementary energy, convex in p. This default integrates numerically (Gauss-Legendre,
   /// relative error below 1e-9); the laws below override it with their closed forms.

@@ -14,7 +14,8 @@ namespace modaltyre::report {
 /// `pass` when passes > 1.
 nlohmann::json traction_case_json(const contact::TractionResult& r, bool with_pass);
 
-/// The document: tyre, ground, model (flexible 2D patch or rigid cylinder), cases.
+/// The document: tyre, ground, model (flexible tyre on the 2D or the 3D patch, as the results
+/// were computed, or the rigid cylinder), cases.
 nlohmann::json traction_json(const contact::TyreConfig& config,
                              const ground::GroundSettings& ground,
                              const std::vector<contact::TractionResult>& results, bool rigid,
@@ -25,9 +26,12 @@ void require_traction_converged(const std::vector<contact::TractionResult>& resu
 
 /// What `modaltyre traction` runs on (shared by the command and Python's modaltyre.traction).
 struct TractionSetup {
-  contact::TyreConfig config;  ///< a 3D config becomes its 2D patch at the 3D tread width
+  contact::TyreConfig config;  ///< as read: a 3D config runs its 3D patch unless patch_2d
   ground::GroundSettings ground;
-  bool rigid = false;         ///< tyre.rigid: the rigid cylinder of the outer radius
+  bool rigid = false;  ///< tyre.rigid: the rigid cylinder of the outer radius
+  /// A 3D config's 2D patch at its 3D tread width (`traction --patch 2d`, the fast variant;
+  /// docs/soil.md section 9); the rigid cylinder takes the tread width either way.
+  bool patch_2d = false;
   std::string ground_source;  ///< the file that gave the ground (for its messages)
 };
 
@@ -38,7 +42,7 @@ struct TractionSetup {
 TractionSetup traction_setup(const std::string& config_path, const std::string& ground_path,
                              const std::vector<std::string>& overrides);
 
-/// The 3D config's 2D patch (docs/soil.md section 5): the 3D tread width as contact width.
+/// The 3D config's 2D patch (docs/soil.md sections 5, 9): the 3D tread width as contact width.
 void use_2d_patch_of_3d(contact::TyreConfig& config);
 
 /// Steady rolling for every load and slip (case by case, pass by pass), checked converged.
