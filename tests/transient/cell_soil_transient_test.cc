@@ -213,7 +213,10 @@ TEST_P(FlatCrownOnSoil, Equals2dSoilTransientOfTheTreadWidth) {
   if (sc == Scenario::rolling) {
     ASSERT_GT(r2.samples.back().soil_resistance_N, 0);
     both([](const TransientSample& x) { return x.soil_resistance_N; }, "compaction_resistance");
-    EXPECT_LT(rel(r3.rolling_resistance_N, r2.rolling_resistance_N), kFlatCrownTol);
+    // The rolling resistance as the other rolling quantities: the mean over the last 0.4 s
+    // (the driver's rolling_resistance_N averages the run's last tenth, 0.1 s here, over which
+    // the two runs' ripples have drifted apart by up to 0.6 %).
+    both([](const TransientSample& x) { return -x.longitudinal_force_N; }, "rolling_resistance");
   }
 }
 
