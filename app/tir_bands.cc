@@ -4,7 +4,6 @@
 
 #include "footprint_report.h"
 #include "modaltyre/contact/tyre_model.h"
-#include "modaltyre/core/errors.h"
 
 namespace modaltyre::app {
 namespace {
@@ -33,24 +32,15 @@ TirBands tir_bands(const contact::TyreConfig& config, const tir::TirExportOption
                    const tir::TirFit& f, const uncertainty::PropagationOptions& propagation) {
   TirBands b;
   b.names = coefficient_names(f);
-  const std::size_t n = b.names.size();
-  const uncertainty::Evaluator refit = [&options, n](const contact::TyreConfig& c,
+  // A perturbation that takes the width or the pressure law away is not a band.
+  const uncertainty::RowEvaluator refit = [&options](const contact::TyreConfig& c,
                                                      const modal::ModeIdentification& m,
-                                                     const std::string& what) {
+                                                     const std::string&) {
     const tir::TirFit g = tir::fit_tir(contact::build_tyre_model(c, m), options);
-    std::vector<double> v = coefficients(g);
-    if (v.size() != n) {
-      // A perturbation that takes the width or the pressure law away is not a band.
-      throw ComputationError("tir export --uncertainty: with " + what +
-                             " the fit carries other coefficients than at the nominal inputs");
-    }
-    return std::vector<std::vector<double>>{std::move(v)};
+    return std::make_pair(coefficient_names(g), coefficients(g));
   };
-  uncertainty::OutputSet outputs;
-  outputs.names = b.names;
-  outputs.row_labels = {"FNOMIN"};
-  b.result = uncertainty::propagate_outputs(config, contact::config_modes(config), refit, outputs,
-                                            propagation);
+  b.result = uncertainty::propagate_row(config, contact::config_modes(config), refit, b.names,
+                                        "FNOMIN", "tir export", propagation);
   return b;
 }
 

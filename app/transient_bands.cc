@@ -48,31 +48,22 @@ TransientBands transient_bands(const contact::TyreConfig& config, transient::Sce
                                const uncertainty::PropagationOptions& propagation) {
   TransientBands b;
   (void)transient_summary(nominal, &b.names);
-  const std::vector<std::string> names = b.names;
-  const uncertainty::Evaluator rerun = [scenario, names](const contact::TyreConfig& c,
-                                                         const modal::ModeIdentification& m,
-                                                         const std::string& what) {
+  // e.g. a perturbed free vibration that decays in fewer than two peaks: not a band.
+  const uncertainty::RowEvaluator rerun = [scenario](const contact::TyreConfig& c,
+                                                     const modal::ModeIdentification& m,
+                                                     const std::string& what) {
     const auto model = transient::build_transient_model(contact::build_tyre_model(c, m));
     const transient::TransientResult r = transient::run_scenario(model, scenario, {});
     if (!r.ok()) {
       throw ComputationError("transient --uncertainty: the run with " + what +
                              " failed: " + r.message);
     }
-    std::vector<std::string> got;
-    std::vector<double> v = transient_summary(r, &got);
-    if (got != names) {
-      // e.g. a perturbed free vibration that decays in fewer than two peaks
-      throw ComputationError("transient --uncertainty: with " + what +
-                             " the run's summary carries other quantities than at the nominal "
-                             "inputs");
-    }
-    return std::vector<std::vector<double>>{std::move(v)};
+    std::vector<std::string> names;
+    std::vector<double> v = transient_summary(r, &names);
+    return std::make_pair(std::move(names), std::move(v));
   };
-  uncertainty::OutputSet outputs;
-  outputs.names = b.names;
-  outputs.row_labels = {"the run's end"};
-  b.result = uncertainty::propagate_outputs(config, contact::config_modes(config), rerun, outputs,
-                                            propagation);
+  b.result = uncertainty::propagate_row(config, contact::config_modes(config), rerun, b.names,
+                                        "the run's end", "transient", propagation);
   return b;
 }
 

@@ -13,6 +13,7 @@
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/transient.h"
+#include "scenario_print.h"
 
 namespace modaltyre::transient {
 namespace {

@@ -11,11 +11,9 @@
 
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/transient/transient.h"
+#include "scenario_print.h"
 
 namespace modaltyre::transient {
-
-// Readable test parameters (tests/readable_names_test.cmake).
-void PrintTo(Scenario s, std::ostream* os) { *os << to_string(s); }
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/cell_system.h"
 #include "modaltyre/transient/driver.h"
+#include "modaltyre/transient/soil_contact.h"
 #include "patch_ode.h"
 
 namespace modaltyre::transient {
@@ -48,15 +49,7 @@ TransientResult run_transient_3d(const TransientModel& M, Scenario scenario,
   }
   // On a soil (docs/soil.md section 8.3): the initial and the bounding contact on it.
   const bool on_soil = M.tyre.config.ground.soil();
-  if (on_soil && scenario == Scenario::cleat) {
-    throw InputError(InputLocation{M.tyre.config.source, 0, "ground.model"},
-                     "the cleat scenario crosses a rigid cleat on the rigid road; on a soil run "
-                     "load-hold, free-vibration or rolling");
-  }
-  if (on_soil && M.tyre.config.rigid) {
-    throw InputError(InputLocation{M.tyre.config.source, 0, "tyre.rigid"},
-                     "the transient runs the flexible tyre (the rigid wheel is traction's)");
-  }
+  if (on_soil) refuse_on_soil(M, scenario);
   StaticCells initial, soil_bound;
   std::unique_ptr<CellSoil> soil;
   bool bounded = true;

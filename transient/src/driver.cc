@@ -23,15 +23,7 @@ TransientResult run_transient(const TransientModel& M, Scenario scenario,
   }
   // On a soil (docs/soil.md section 8): the initial contact and the bounding one on it.
   const bool on_soil = M.tyre.config.ground.soil();
-  if (on_soil && scenario == Scenario::cleat) {
-    throw InputError(InputLocation{M.tyre.config.source, 0, "ground.model"},
-                     "the cleat scenario crosses a rigid cleat on the rigid road; on a soil run "
-                     "load-hold, free-vibration or rolling");
-  }
-  if (on_soil && M.tyre.config.rigid) {
-    throw InputError(InputLocation{M.tyre.config.source, 0, "tyre.rigid"},
-                     "the transient runs the flexible tyre (the rigid wheel is traction's)");
-  }
+  if (on_soil) refuse_on_soil(M, scenario);
   StaticContact initial;
   std::unique_ptr<SoilContact> soil;
   if (on_soil)

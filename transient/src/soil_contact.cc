@@ -260,4 +260,17 @@ std::unique_ptr<SoilContact> soil_for_plan(const TransientModel& M, const Scenar
   return soil;
 }
 
+void refuse_on_soil(const TransientModel& model, Scenario scenario) {
+  const auto& config = model.tyre.config;
+  if (scenario == Scenario::cleat) {
+    throw InputError(InputLocation{config.source, 0, "ground.model"},
+                     "the cleat scenario crosses a rigid cleat on the rigid road; on a soil run "
+                     "load-hold, free-vibration or rolling");
+  }
+  if (config.rigid) {
+    throw InputError(InputLocation{config.source, 0, "tyre.rigid"},
+                     "the transient runs the flexible tyre (the rigid wheel is traction's)");
+  }
+}
+
 }  // namespace modaltyre::transient

@@ -354,6 +354,26 @@ PropagationResult propagate_outputs(const contact::TyreConfig& config,
   return r;
 }
 
+PropagationResult propagate_row(const contact::TyreConfig& config,
+                                const modal::ModeIdentification& modes,
+                                const RowEvaluator& evaluate, const std::vector<std::string>& names,
+                                const std::string& label, const std::string& command,
+                                const PropagationOptions& options) {
+  const Evaluator rows = [&](const contact::TyreConfig& c, const modal::ModeIdentification& m,
+                             const std::string& what) {
+    auto [got, values] = evaluate(c, m, what);
+    if (got != names) {
+      throw ComputationError(command + " --uncertainty: with " + what +
+                             " the result carries other quantities than at the nominal inputs");
+    }
+    return Outputs{std::move(values)};
+  };
+  OutputSet outputs;
+  outputs.names = names;
+  outputs.row_labels = {label};
+  return propagate_outputs(config, modes, rows, outputs, options);
+}
+
 PropagationResult propagate(const contact::TyreConfig& config,
                             const modal::ModeIdentification& modes,
                             const std::vector<contact::OperatingConditions>& cases,

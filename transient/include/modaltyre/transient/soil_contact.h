@@ -125,6 +125,10 @@ std::optional<StaticContact> bounding_soil_contact(const TransientModel& model,
                                                    const StaticContact& initial,
                                                    double bekker_width_m);
 
+/// What a run on the config's soil does not model, refused naming the key (both patches): the
+/// cleat (a rigid cleat on the rigid road) and the rigid wheel (traction's).
+void refuse_on_soil(const TransientModel& model, Scenario scenario);
+
 /// The soil of a 2D run (the config's ground: a soil) under `plan`: Bekker's b of the static
 /// footprint at the scenario's largest load, fixed for the run, the ground moving with the
 /// distance rolled. The initial contact on it into `initial` (its memory set from it).

@@ -10,6 +10,7 @@
 // evaluations run in parallel (OpenMP).
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "modaltyre/contact/operating_conditions.h"
@@ -106,6 +107,19 @@ PropagationResult propagate_outputs(const contact::TyreConfig& config,
                                     const modal::ModeIdentification& modes,
                                     const Evaluator& evaluate, const OutputSet& outputs,
                                     const PropagationOptions& options = {});
+
+/// One row of named outputs (a command's summary, fitted coefficients) at (config, modes).
+using RowEvaluator = std::function<std::pair<std::vector<std::string>, std::vector<double>>(
+    const contact::TyreConfig&, const modal::ModeIdentification&, const std::string& what)>;
+
+/// propagate_outputs for one row whose outputs are `names` (the nominal run's): a perturbation
+/// whose row carries other names (a quantity that appears or vanishes) is a ComputationError
+/// naming `command` and the input, not a band.
+PropagationResult propagate_row(const contact::TyreConfig& config,
+                                const modal::ModeIdentification& modes,
+                                const RowEvaluator& evaluate, const std::vector<std::string>& names,
+                                const std::string& label, const std::string& command,
+                                const PropagationOptions& options = {});
 
 /// Outputs a caller adds to the footprint's per case, from each (perturbed) prediction: e.g.
 /// the pressure map's cells. Their curvature is not checked (a grid's quantities); a case with
