@@ -12,7 +12,7 @@
 // state (no soil state in the ODE): Bekker-Wong and the elastic Kelvin-Voigt law are
 // rate-independent.
 //
-// The Kelvin-Voigt soil's rate term (eta2 > 0, docs/soil.md section 1.2): on either branch
+// The Kelvin-Voigt soil's rate term (eta2 > 0, docs/soil.md sections 1.2, 8.4): on either branch
 // E2 (z - z_0) + eta2 dz/dt = H p / s (s = k_E loading, 1 unloading), i.e. the soil surface z
 // relaxes towards the elastic law's depth Z_el(p; z_max) with the one time constant
 // tau = eta2 / E2. Each unit's soil surface z_i is a state kept here beside z_max (not in the
