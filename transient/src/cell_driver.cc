@@ -49,7 +49,7 @@ TransientResult run_transient_3d(const TransientModel& M, Scenario scenario,
   }
   // On a soil (docs/soil.md section 8.3): the initial and the bounding contact on it.
   const bool on_soil = M.tyre.config.ground.soil();
-  if (on_soil) refuse_on_soil(M, scenario);
+  if (on_soil) refuse_on_soil(M, scenario, /*cells=*/true);
   StaticCells initial, soil_bound;
   std::unique_ptr<CellSoil> soil;
   bool bounded = true;

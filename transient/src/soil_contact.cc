@@ -18,6 +18,15 @@ constexpr double kRootTolerance = 1e-13;
 /// Safeguarded Newton steps before giving up on quadratic convergence (bisection guarantees
 /// progress; 200 halvings reach any double's resolution).
 constexpr int kMaxRootIterations = 200;
+/// A viscous soil's surface counts as frozen over a step when 1 - w is below this (the step is
+/// below 1e-12 of eta2 / E2): the tread spring alone on the surface of the last accepted step.
+constexpr double kFrozenSurface = 1e-12;
+
+/// The Kelvin-Voigt soil's time constant eta2 / E2 [s] (seed 000 eq. 23), 0 for another soil.
+double soil_time_constant_s(const ground::GroundSettings& g) {
+  if (g.model != ground::GroundModel::kelvin_voigt) return 0.0;
+  return g.kelvin_voigt.eta2_kPa_s * 1e3 / (g.kelvin_voigt.E2_MPa * 1e6);
+}
 
 }  // namespace
 
@@ -45,12 +54,15 @@ SoilContact::SoilContact(const ground::GroundSettings& ground, Eigen::VectorXd a
       area_(std::move(area_m2)),
       k_(std::move(k_N_m)),
       x_(std::move(x_m)),
+      tau_s_(soil_time_constant_s(ground)),
       distance_(std::move(distance)),
       bekker_width_m_(bekker_width_m) {
   const int m = static_cast<int>(area_.size());
   if (k_.size() != m || x_.size() != m || !(area_.array() > 0).all())
     throw std::invalid_argument("SoilContact: one positive area, spring and x per contact");
   z_max_.setZero(m);
+  surface_.setZero(m);
+  surface_prev_.setZero(m);
   stiffness_.setZero(m);
   depth_.setZero(m);
   pressure_.setZero(m);
@@ -61,8 +73,16 @@ void SoilContact::set_memory(const Eigen::VectorXd& z_max_m, double t) {
     throw std::invalid_argument("SoilContact: one z_max per unit");
   z_max_ = z_max_m.cwiseMax(0.0);
   z_max_prev_ = z_max_;
+  surface_ = surface_prev_ = z_max_;  // a static contact: the soil at rest under its load
   distance_acc_ = distance_prev_ = distance_ ? distance_(t) : 0.0;
-  t_accepted_ = t;
+  t_accepted_ = t_accepted_prev_ = t;
+}
+
+const Eigen::VectorXd& SoilContact::surface(double t, double& w) const {
+  const bool prev = t < t_accepted_;
+  const double h = std::max(0.0, t - (prev ? t_accepted_prev_ : t_accepted_));
+  w = tau_s_ > 0 ? std::exp(-h / tau_s_) : 0.0;
+  return prev ? surface_prev_ : surface_;
 }
 
 const Eigen::VectorXd& SoilContact::memory(double t, double& shift) const {
@@ -97,12 +117,37 @@ double SoilContact::z_max_m(int i, double t) const {
 
 double SoilContact::rut_m(int i, double t) const {
   const double zm = z_max_m(i, t);
-  return zm > 0 ? law_->rebound_depth_m(zm) : 0.0;
+  const double rut = zm > 0 ? law_->rebound_depth_m(zm) : 0.0;
+  if (!(tau_s_ > 0)) return rut;
+  // A viscous soil recovers towards its rut with eta2 / E2 (soil_contact.h).
+  double s = 0, w = 0;
+  memory(t, s);
+  const double za = memory_at(surface(t, w), i, s);
+  return w * za + (1 - w) * rut;
 }
 
-double SoilContact::unit_force(int i, double g, double zm, double* dfdg, double* depth) const {
+double SoilContact::unit_force(int i, double g, double zm, double* dfdg, double* depth, double za,
+                               double w) const {
+  if (!(w > 0)) return elastic_force(i, g, zm, k_(i), dfdg, depth);
+  const double k = k_(i), one_w = 1 - w;
+  if (one_w < kFrozenSurface) {  // the surface of the last accepted step, the tread spring alone
+    *depth = za;
+    *dfdg = g > za ? k : 0.0;
+    pressure_(i) = g > za ? k * (g - za) / area_(i) : 0.0;
+    return pressure_(i) * area_(i);
+  }
+  // Z(p; t) = w z_a + (1 - w) Z_el(p): the elastic root with k (1 - w) at (g - w z_a) / (1 - w).
+  double d = 0, z = 0;
+  const double f = elastic_force(i, (g - w * za) / one_w, zm, k * one_w, &d, &z);
+  *dfdg = d / one_w;
+  *depth = w * za + one_w * z;
+  return f;
+}
+
+double SoilContact::elastic_force(int i, double g, double zm, double k, double* dfdg,
+                                  double* depth) const {
   const ground::PressureSinkage& L = *law_;
-  const double A = area_(i), k = k_(i);
+  const double A = area_(i);
   const double rut = zm > 0 ? L.rebound_depth_m(zm) : 0.0;
   if (!(g > rut)) {
     *dfdg = 0;
@@ -155,13 +200,14 @@ double SoilContact::unit_force(int i, double g, double zm, double* dfdg, double*
 }
 
 void SoilContact::forces(double t, int lo, int n, double* g) const {
-  double s = 0;
+  double s = 0, w = 0;
   const Eigen::VectorXd& zm = memory(t, s);
+  const Eigen::VectorXd& za = surface(t, w);
   band_lo_ = lo, band_hi_ = lo + n - 1, t_forces_ = t;
   for (int k = 0; k < n; ++k) {
     const int i = lo + k;
     double d = 0, z = 0;
-    g[k] = unit_force(i, g[k], memory_at(zm, i, s), &d, &z);
+    g[k] = unit_force(i, g[k], memory_at(zm, i, s), &d, &z, w > 0 ? memory_at(za, i, s) : 0.0, w);
     stiffness_(i) = d;
     depth_(i) = z;
   }
@@ -187,19 +233,32 @@ double SoilContact::compaction_resistance_N(int lo, int hi, const Eigen::VectorX
 }
 
 void SoilContact::accept(double t, int lo, int hi) {
+  const int m = static_cast<int>(z_max_.size());
+  // A viscous soil: every unit's surface at t, the evaluated units' from forces() (at t), the
+  // others recovering towards their rut (before the memory moves: rut_m reads the last one).
+  Eigen::VectorXd surface_now;
+  if (tau_s_ > 0) {
+    surface_now.resize(m);
+    for (int i = 0; i < m; ++i) surface_now(i) = i >= lo && i <= hi ? depth_(i) : rut_m(i, t);
+  }
   z_max_prev_ = z_max_;
+  surface_prev_ = surface_;
   distance_prev_ = distance_acc_;
+  t_accepted_prev_ = t_accepted_;
   t_accepted_ = t;
   const double s = distance_ ? distance_(t) - distance_acc_ : 0.0;
   if (s != 0.0) {
     // Move the memory with the ground (the units' own values read ahead of them).
-    const int m = static_cast<int>(z_max_.size());
     Eigen::VectorXd moved(m);
     for (int i = 0; i < m; ++i) moved(i) = memory_at(z_max_prev_, i, s);
     z_max_ = moved;
     distance_acc_ += s;
   }
   for (int i = lo; i <= hi; ++i) z_max_(i) = std::max(z_max_(i), depth_(i));
+  if (tau_s_ > 0) {
+    surface_ = surface_now;
+    z_max_ = z_max_.cwiseMax(surface_);
+  }
 }
 
 }  // namespace modaltyre::transient
@@ -260,8 +319,13 @@ std::unique_ptr<SoilContact> soil_for_plan(const TransientModel& M, const Scenar
   return soil;
 }
 
-void refuse_on_soil(const TransientModel& model, Scenario scenario) {
+void refuse_on_soil(const TransientModel& model, Scenario scenario, bool cells) {
   const auto& config = model.tyre.config;
+  if (cells && soil_time_constant_s(config.ground) > 0) {
+    throw InputError(InputLocation{config.source, 0, "ground.kelvin_voigt.eta2_kPa_s"},
+                     "the 3D patch's transient on the Kelvin-Voigt soil models its elastic law "
+                     "only; set eta2_kPa_s to 0 or run a 2D config (docs/soil.md section 8.3)");
+  }
   if (scenario == Scenario::cleat) {
     throw InputError(InputLocation{config.source, 0, "ground.model"},
                      "the cleat scenario crosses a rigid cleat on the rigid road; on a soil run "

@@ -12,7 +12,8 @@
 // rut depth over the layer depth (< 1 % for sinkages below H/100) and would make the reloading
 // branch overshoot the virgin one; H is used on both branches here (docs/soil.md section 1.3).
 // k_E = 1 is the elastic Winkler soil of the soil_compliance effect: z = p H / E2.
-// The static laws below leave out the rate term (dz/dt = 0); rolling adds it (docs/soil.md).
+// The static laws below leave out the rate term (dz/dt = 0); the 2D transient adds it
+// (transient/soil_contact.h, docs/soil.md sections 1.2 and 8.4).
 #include "modaltyre/ground/pressure_sinkage.h"
 
 namespace modaltyre::ground {

@@ -9,7 +9,20 @@
 // non-decreasing, so phi is continuous and non-decreasing in g with
 //   d phi / d g = 1 / (1 / k + Z'(p) / A_i),
 // the stiffness Newton's matrix takes in place of k. The force stays an explicit function of the
-// state (no soil state in the ODE): the soil law is rate-independent.
+// state (no soil state in the ODE): Bekker-Wong and the elastic Kelvin-Voigt law are
+// rate-independent.
+//
+// The Kelvin-Voigt soil's rate term (eta2 > 0, docs/soil.md sections 1.2, 8.4): on either branch
+// E2 (z - z_0) + eta2 dz/dt = H p / s (s = k_E loading, 1 unloading), i.e. the soil surface z
+// relaxes towards the elastic law's depth Z_el(p; z_max) with the one time constant
+// tau = eta2 / E2. Each unit's soil surface z_i is a state kept here beside z_max (not in the
+// ODE): from its value z_a at the last accepted step it is advanced to t by the exact solution
+// for the pressure of t held over the step (exponential Euler, first order in the pressure's
+// change over a step, exact for a held pressure):
+//   Z(p; t) = w z_a + (1 - w) Z_el(p; z_max),   w = exp(-(t - t_a) / tau),
+// continuous and non-decreasing in p, so the series root above carries over with k (1 - w) and
+// (g - w z_a) / (1 - w) in place of k and g, and d phi / d g = 1 / (1 / k + (1 - w) Z_el' / A).
+// A unit out of contact recovers towards the rut the same way. eta2 = 0 is w = 0: the elastic law.
 //
 // Memory: z_max per unit in the ground frame. It is recorded at every accepted step (the soil
 // depth Z_i of the units in contact), and while rolling it moves with the ground: the ground
@@ -85,8 +98,13 @@ class SoilContact {
   /// the last forces() evaluation (which must be at the accepted state) over [lo, hi].
   void accept(double t, int lo, int hi);
 
-  /// Unit i's force and d phi / d g at penetration g with memory z_max (the series root).
-  double unit_force(int i, double g, double z_max, double* dfdg, double* depth) const;
+  /// Unit i's force and d phi / d g at penetration g with memory z_max (the series root); on a
+  /// viscous soil the surface z_a at the last accepted step and the weight w = exp(-h / tau)
+  /// of the time h since it (w = 0: the elastic law).
+  double unit_force(int i, double g, double z_max, double* dfdg, double* depth, double z_a = 0,
+                    double w = 0) const;
+  /// The Kelvin-Voigt soil's time constant eta2 / E2 [s] (0: a rate-independent soil).
+  double time_constant_s() const { return tau_s_; }
 
  private:
   /// Memory `zm` (per unit) at hub position x_i + shift, linear between the units' x (beyond the
@@ -95,12 +113,20 @@ class SoilContact {
   /// The memory in force at t (the previous one before the last accepted step) and the shift
   /// of the ground since it was recorded.
   const Eigen::VectorXd& memory(double t, double& shift) const;
+  /// The soil surface recorded with memory(t) and the weight w = exp(-h / tau) of the time h
+  /// since it was recorded (w = 0 on a rate-independent soil).
+  const Eigen::VectorXd& surface(double t, double& w) const;
+  /// Unit i's force at penetration g with memory z_max on the elastic law, tread spring k.
+  double elastic_force(int i, double g, double z_max, double k, double* dfdg, double* depth) const;
 
   std::unique_ptr<ground::PressureSinkage> law_;
   Eigen::VectorXd area_, k_, x_;
-  Eigen::VectorXd z_max_;       ///< memory per unit at the last accepted step
-  Eigen::VectorXd z_max_prev_;  ///< the one before it (evaluations inside the last step)
-  double t_accepted_ = -1e300, distance_prev_ = 0;
+  Eigen::VectorXd z_max_;         ///< memory per unit at the last accepted step
+  Eigen::VectorXd z_max_prev_;    ///< the one before it (evaluations inside the last step)
+  Eigen::VectorXd surface_;       ///< viscous soil: surface depth per unit, last accepted step
+  Eigen::VectorXd surface_prev_;  ///< the one before it
+  double tau_s_ = 0;              ///< eta2 / E2 (0: rate-independent)
+  double t_accepted_ = -1e300, t_accepted_prev_ = -1e300, distance_prev_ = 0;
   mutable Eigen::VectorXd stiffness_, depth_, pressure_;  ///< last forces() per unit
   mutable int band_lo_ = 0, band_hi_ = -1;                ///< the units of the last forces()
   mutable double t_forces_ = 0;                           ///< its time
@@ -127,7 +153,9 @@ std::optional<StaticContact> bounding_soil_contact(const TransientModel& model,
 
 /// What a run on the config's soil does not model, refused naming the key (both patches): the
 /// cleat (a rigid cleat on the rigid road) and the rigid wheel (traction's).
-void refuse_on_soil(const TransientModel& model, Scenario scenario);
+/// On the 3D patch (`cells`) also the Kelvin-Voigt soil's rate term (eta2 > 0), which only the 2D
+/// units model.
+void refuse_on_soil(const TransientModel& model, Scenario scenario, bool cells = false);
 
 /// The soil of a 2D run (the config's ground: a soil) under `plan`: Bekker's b of the static
 /// footprint at the scenario's largest load, fixed for the run, the ground moving with the
