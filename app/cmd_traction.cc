@@ -99,6 +99,14 @@ void register_traction(CLI::App& app) {
     files.input(a->ground, "--ground");
     if (!a->plot.empty()) files.output(a->plot, "--plot");
     files.check();
+    // Steady rolling takes the Kelvin-Voigt soil's elastic law only (docs/soil.md section 7):
+    // its rate term eta2 acts in the transient (section 8.4), not here; said, not dropped quietly.
+    if (setup.ground.model == ground::GroundModel::kelvin_voigt &&
+        setup.ground.kelvin_voigt.eta2_kPa_s > 0) {
+      std::cerr << "warning: traction leaves out the soil's viscous term "
+                   "(ground.kelvin_voigt.eta2_kPa_s): steady rolling on its elastic law; the "
+                   "transient models it (docs/soil.md 8.4)\n";
+    }
     const auto results = report::run_traction(setup, a->loads, a->slips, a->passes);
     contact::TyreConfig config = setup.config;  // as run
     if (setup.patch_2d || setup.rigid) report::use_2d_patch_of_3d(config);
