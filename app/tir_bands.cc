@@ -40,7 +40,7 @@ TirBands tir_bands(const contact::TyreConfig& config, const tir::TirExportOption
     return std::make_pair(coefficient_names(g), coefficients(g));
   };
   b.result = uncertainty::propagate_row(config, contact::config_modes(config), refit, b.names,
-                                        "FNOMIN", "tir export", propagation);
+                                        coefficients(f), "FNOMIN", "tir export", propagation);
   return b;
 }
 

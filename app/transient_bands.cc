@@ -47,7 +47,7 @@ TransientBands transient_bands(const contact::TyreConfig& config, transient::Sce
                                const transient::TransientResult& nominal,
                                const uncertainty::PropagationOptions& propagation) {
   TransientBands b;
-  (void)transient_summary(nominal, &b.names);
+  const std::vector<double> values = transient_summary(nominal, &b.names);
   // e.g. a perturbed free vibration that decays in fewer than two peaks: not a band.
   const uncertainty::RowEvaluator rerun = [scenario](const contact::TyreConfig& c,
                                                      const modal::ModeIdentification& m,
@@ -63,7 +63,7 @@ TransientBands transient_bands(const contact::TyreConfig& config, transient::Sce
     return std::make_pair(std::move(names), std::move(v));
   };
   b.result = uncertainty::propagate_row(config, contact::config_modes(config), rerun, b.names,
-                                        "the run's end", "transient", propagation);
+                                        values, "the run's end", "transient", propagation);
   return b;
 }
 

@@ -104,6 +104,44 @@ TEST(Init, MissingOrderIsProposedAndNamed) {
   EXPECT_EQ(r.alternatives.front().missing, std::vector<int>{4});
 }
 
+// An ambiguous list (Vervoort 2007's six free-tyre frequencies of a 205/60 R15): the near-ties of
+// the proposal (scores within 2 of the best) are written as modal.order_alternatives with their
+// Akaike weights exp(-(score - best)/2) over the best and the near-ties (4-decimal rounding), and
+// the config reads back; stated orders write none.
+TEST(Init, NearTieOrdersAreWrittenWithTheirAkaikeWeights) {
+  InitInputs in;
+  in.size = "205/60R15";
+  in.test_pressure_kPa = 160;
+  in.pressure_kPa = 220;
+  in.frequencies_hz = {114, 137, 165, 196, 228, 260};
+  in.two_d = true;
+  const InitResult r = init_tyre(in);
+  ASSERT_TRUE(r.orders_proposed);
+  const double best = r.alternatives.front().score;
+  std::vector<std::vector<int>> ties;
+  std::vector<double> weights;
+  double total = 1;
+  for (std::size_t k = 1; k < r.alternatives.size(); ++k) {
+    if (r.alternatives[k].score < best + 2) {
+      ties.push_back(r.alternatives[k].orders);
+      weights.push_back(std::exp(-(r.alternatives[k].score - best) / 2));
+      total += weights.back();
+    }
+  }
+  ASSERT_FALSE(ties.empty()) << "the list must be ambiguous to be a test";
+  const auto config =
+      contact::read_tyre_config(ConfigTree::from_string(r.yaml, kSrc + "/configs/init.yaml", {}));
+  ASSERT_EQ(config.carcass.order_alternatives.size(), ties.size());
+  for (std::size_t k = 0; k < ties.size(); ++k) {
+    EXPECT_EQ(config.carcass.order_alternatives[k], ties[k]);
+    EXPECT_NEAR(config.carcass.order_alternative_probabilities[k], weights[k] / total, 5.1e-5);
+  }
+  in.orders = {1, 2, 3, 4, 5, 6};
+  const auto stated = contact::read_tyre_config(
+      ConfigTree::from_string(init_tyre(in).yaml, kSrc + "/configs/init.yaml", {}));
+  EXPECT_TRUE(stated.carcass.order_alternatives.empty());
+}
+
 // A belt mass far from the tension's is reported, not silently used.
 TEST(Init, DisagreeingBeltMassIsAWarning) {
   InitInputs in = sf350();

@@ -30,7 +30,7 @@ struct PropagateOutputs : ::testing::Test {
     const double e = c.tread.modulus_Pa * 1e-6;
     return std::vector<std::vector<double>>{{e, e * e}, {2 * e, -e}};
   };
-  OutputSet outputs{{"E_MPa", "E2_MPa2"}, {}, {"a", "b"}};
+  OutputSet outputs{{"E_MPa", "E2_MPa2"}, {}, {"a", "b"}, {}};
 };
 
 TEST_F(PropagateOutputs, LinearBandsAreTheClosedForm) {
@@ -48,6 +48,23 @@ TEST_F(PropagateOutputs, LinearBandsAreTheClosedForm) {
   EXPECT_NEAR(r.cases[0].bands[0].p975 - r.cases[0].bands[0].p025, 2 * 1.959964 * e0 * kSigma,
               1e-5 * e0);
   EXPECT_EQ(r.method, "linear");
+}
+
+// A caller's own nominal run is taken, not repeated: the same bands, one evaluation fewer.
+TEST_F(PropagateOutputs, ASuppliedNominalIsNotEvaluatedAgain) {
+  PropagationOptions o;
+  o.method = Method::linear;
+  const PropagationResult own = propagate_outputs(config, modes, modulus, outputs, o);
+  OutputSet given = outputs;
+  given.nominal = modulus(config, modes, "the caller's run");
+  const PropagationResult r = propagate_outputs(config, modes, modulus, given, o);
+  EXPECT_EQ(r.evaluations, own.evaluations - 1);
+  for (std::size_t c = 0; c < 2; ++c) {
+    for (std::size_t q = 0; q < 2; ++q) {
+      EXPECT_EQ(r.cases[c].bands[q].value, own.cases[c].bands[q].value);
+      EXPECT_EQ(r.cases[c].bands[q].std, own.cases[c].bands[q].std);
+    }
+  }
 }
 
 TEST_F(PropagateOutputs, SampledMeanAndStdMatchTheMoments) {
@@ -75,7 +92,7 @@ TEST_F(PropagateOutputs, MalformedOutputsAreRefused) {
     if (c.tread.modulus_Pa != 3e6) row.push_back(1.0);
     return std::vector<std::vector<double>>{row};
   };
-  OutputSet one{{"E"}, {}, {}};
+  OutputSet one{{"E"}, {}, {}, {}};
   config.tread.modulus_Pa = 3e6;
   EXPECT_THROW(propagate_outputs(config, modes, ragged, one), ComputationError);
   const Evaluator nan = [](const contact::TyreConfig&, const modal::ModeIdentification&,
@@ -83,7 +100,7 @@ TEST_F(PropagateOutputs, MalformedOutputsAreRefused) {
     return std::vector<std::vector<double>>{{std::nan("")}};
   };
   EXPECT_THROW(propagate_outputs(config, modes, nan, one), ComputationError);
-  OutputSet wrong{{"E"}, {true, false}, {}};
+  OutputSet wrong{{"E"}, {true, false}, {}, {}};
   EXPECT_THROW(propagate_outputs(config, modes, modulus, wrong), std::invalid_argument);
 }
 

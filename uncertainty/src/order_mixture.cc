@@ -25,8 +25,6 @@ double weighted_quantile(std::vector<std::pair<double, double>> points, double q
 Band mix_band(const Band& band, const std::vector<double>* samples,
               const std::vector<MixtureComponent>& components) {
   Band out = band;
-  double mean = 0;
-  for (const auto& c : components) mean += c.weight * (band.value + c.shift);
   if (samples && !samples->empty()) {
     // Pooled samples, each alternative's copy shifted and weighted by its probability.
     const double m = static_cast<double>(samples->size());
@@ -47,6 +45,8 @@ Band mix_band(const Band& band, const std::vector<double>* samples,
     out.p975 = weighted_quantile(points, 0.975);
     return out;
   }
+  double mean = 0;
+  for (const auto& c : components) mean += c.weight * (band.value + c.shift);
   double var = band.std * band.std;
   for (const auto& c : components) {
     const double d = band.value + c.shift - mean;

@@ -87,14 +87,15 @@ PropagationResult propagate_continuous(const contact::TyreConfig& config,
     throw std::invalid_argument("uncertainty: OutputSet.curved must have one flag per output");
   }
   PropagationResult r;
-  const Outputs nominal = evaluate(config, modes, "the nominal inputs");
+  const Outputs nominal =
+      outputs.nominal.empty() ? evaluate(config, modes, "the nominal inputs") : outputs.nominal;
   const std::size_t nc = nominal.size();
   check_shape(nominal, nc, no, "the nominal inputs");
   nominal_out = nominal;
   const auto row_label = [&](std::size_t c) {
     return c < outputs.row_labels.size() ? outputs.row_labels[c] : "row " + std::to_string(c + 1);
   };
-  r.evaluations = 1;
+  r.evaluations = outputs.nominal.empty() ? 1 : 0;  // model evaluations made here
   const int total = static_cast<int>(1 + 2 * n);
   if (o.progress) o.progress(1, total);
 
@@ -325,8 +326,8 @@ PropagationResult propagate_outputs(const contact::TyreConfig& config,
 PropagationResult propagate_row(const contact::TyreConfig& config,
                                 const modal::ModeIdentification& modes,
                                 const RowEvaluator& evaluate, const std::vector<std::string>& names,
-                                const std::string& label, const std::string& command,
-                                const PropagationOptions& options) {
+                                const std::vector<double>& nominal, const std::string& label,
+                                const std::string& command, const PropagationOptions& options) {
   const Evaluator rows = [&](const contact::TyreConfig& c, const modal::ModeIdentification& m,
                              const std::string& what) {
     auto [got, values] = evaluate(c, m, what);
@@ -339,6 +340,7 @@ PropagationResult propagate_row(const contact::TyreConfig& config,
   OutputSet outputs;
   outputs.names = names;
   outputs.row_labels = {label};
+  outputs.nominal = {nominal};
   return propagate_outputs(config, modes, rows, outputs, options);
 }
 

@@ -99,6 +99,9 @@ struct OutputSet {
   /// (a maximum over cells); it is left out of the curvature check. Empty: all checked.
   std::vector<bool> curved;
   std::vector<std::string> row_labels;  ///< per row, for the check's words (e.g. "4000 N")
+  /// The outputs at the nominal inputs when the caller already has them (its own run), [row]
+  /// [output]; empty: evaluated here.
+  std::vector<std::vector<double>> nominal;
 };
 
 /// The same propagation for any outputs (propagate() is it with the footprint's outputs).
@@ -112,14 +115,15 @@ PropagationResult propagate_outputs(const contact::TyreConfig& config,
 using RowEvaluator = std::function<std::pair<std::vector<std::string>, std::vector<double>>(
     const contact::TyreConfig&, const modal::ModeIdentification&, const std::string& what)>;
 
-/// propagate_outputs for one row whose outputs are `names` (the nominal run's): a perturbation
+/// propagate_outputs for one row whose outputs are `names` with the values `nominal` (the
+/// caller's own run at the nominal inputs, not repeated here): a perturbation
 /// whose row carries other names (a quantity that appears or vanishes) is a ComputationError
 /// naming `command` and the input, not a band.
 PropagationResult propagate_row(const contact::TyreConfig& config,
                                 const modal::ModeIdentification& modes,
                                 const RowEvaluator& evaluate, const std::vector<std::string>& names,
-                                const std::string& label, const std::string& command,
-                                const PropagationOptions& options = {});
+                                const std::vector<double>& nominal, const std::string& label,
+                                const std::string& command, const PropagationOptions& options = {});
 
 /// Outputs a caller adds to the footprint's per case, from each (perturbed) prediction: e.g.
 /// the pressure map's cells. Their curvature is not checked (a grid's quantities); a case with
