@@ -103,7 +103,8 @@ void register_init(CLI::App& app) {
     for (int k : r.orders) std::cout << " " << (k < 0 ? std::string("r") : std::to_string(k));
     std::cout << "\n  modal mass " << fixed(r.carcass.mass_per_length_kg_m, 3) << " kg/m from the "
               << r.carcass.mass_source << "; hoop tension " << fixed(r.carcass.tension_N, 0)
-              << " N (p b R = " << fixed(r.carcass.membrane_tension_N, 0) << " N)\n";
+              << " N (net of the sidewalls' pull, share x p b R = "
+              << fixed(r.carcass.membrane_tension_N, 0) << " N)\n";
     if (r.orders_proposed && r.alternatives.size() > 1) {
       std::cout << "  alternatives (score, lower is better):\n";
       for (const auto& p : r.alternatives) {

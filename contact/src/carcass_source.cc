@@ -182,6 +182,7 @@ CarcassSettings read_carcass_settings(const ConfigSection& modal) {
                "the order-1 and rotation modes; a passenger-car wheel weighs 5-12 kg)");
   }
   s.belt_width_m = modal.number("belt_width_mm", 0, 0, 5000) * 1e-3;
+  s.net_tension_share = modal.number("net_tension_share", 1.0, 0.2, 1.0);
   s.mass_per_length_kg_m = modal.number("mass_per_length_kg_m", 0, 0, 1e4);
   s.belt_mass_kg = modal.number("belt_mass_kg", 0, 0, 1e5);
   s.foundation_pneumatic_fraction = modal.number("foundation_pneumatic_fraction", 1.0, 0, 1);
@@ -262,8 +263,9 @@ modal::ModalBasis carcass_basis(const TyreConfig& config, const modal::ModeIdent
                            "modal.mass_per_length_kg_m");
     }
     source = "tension";
-    return modal::mass_per_length_from_tension(fit.coefficients, d.test_pressure_Pa, s.belt_width_m,
-                                               R);
+    // The net tension H = share p b R (docs/ring_model.md section 3a) is the ring's tension term.
+    return modal::mass_per_length_from_tension(fit.coefficients, d.test_pressure_Pa,
+                                               s.net_tension_share * s.belt_width_m, R);
   };
   std::vector<DataMode> high;
   std::vector<double> high_hz;
@@ -284,7 +286,8 @@ modal::ModalBasis carcass_basis(const TyreConfig& config, const modal::ModeIdent
   }
   d.mass_per_length_kg_m = mu;
   d.mass_source = source;
-  if (s.belt_width_m > 0) d.membrane_tension_N = d.test_pressure_Pa * s.belt_width_m * R;
+  if (s.belt_width_m > 0)
+    d.membrane_tension_N = s.net_tension_share * d.test_pressure_Pa * s.belt_width_m * R;
   if (d.fit.valid && mu > 0) d.tension_N = modal::implied_tension_N(d.fit.coefficients, mu, R);
   if (s.belt_mass_kg > 0 && mu > 0) {
     const double mu_belt = s.belt_mass_kg / (kTwoPi * R);

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
+#include "modaltyre/modal/ring_model.h"
 
 namespace modaltyre::init {
 namespace {
@@ -39,7 +41,13 @@ constexpr double kFnomin_N = 4000;
 /// The patch's candidate window as a multiple of the outer radius (the SF-350's 360 mm on
 /// 294.8 mm; the window must hold the longest footprint, 2a < 0.6 R0 up to 2 x FNOMIN).
 constexpr double kWindowPerRadius = 1.22;
-/// Order proposals whose scores differ by less than this are near-ties (Akaike's margin).
+/// The belt's net hoop tension (docs/ring_model.md section 3a) needs the section's shape, which a
+/// designation does not give; stated: the widest point at mid-height of the section (radial
+/// passenger sidewalls: 0.45-0.55 of the height), the sidewall leaving the belt edge at 37.5 deg
+/// to the axis (30-45 deg), the carcass line 4 mm under the tread (belt plies and under-tread).
+constexpr double kWidestPointShare = 0.5, kEdgeAngle_deg = 37.5, kUnderTread_mm = 4;
+/// Order proposals whose scores differ by less than this are
+/// near-ties (Akaike's margin).
 constexpr double kNearTie = 2.0;
 
 std::string num(double v) {
@@ -117,6 +125,7 @@ InitResult init_tyre(const InitInputs& in) {
     if (in.orders.empty()) {
       modal::OrderProposalOptions o;
       o.pressure_Pa = in.test_pressure_kPa * 1e3;
+      // The proposal's mass plausibility (1-8 kg/m) is on the gross tension p b R.
       o.belt_width_m = belt_w * 1e-3;
       o.radius_m = R0_mm * 1e-3;
       // A free test's order 1 is scored at the held wheel; a rim-fixed one as it is.
@@ -254,8 +263,43 @@ InitResult init_tyre(const InitInputs& in) {
     << (in.belt_width_mm > 0 ? "input" : "the tread width (the belt spans the tread; assumed)")
     << ".\n";
   y << "  belt_width_mm: " << num(belt_w) << "\n";
-  decide("modal.belt_width_mm", num(belt_w),
-         in.belt_width_mm > 0 ? "input" : "= tread width (assumed)");
+  {
+    // The ring's tension term is the belt's net hoop tension (docs/ring_model.md section 3a):
+    // p b R less the sidewalls' pull, for the stated section; the section's ranges (widest point
+    // 0.45-0.55 of the height, edge angle 30-45 deg) are its uncertainty, as a uniform range
+    // (b - a) / sqrt(12) of the nominal, carried as the tension's width.
+    auto share_at = [&](double widest_share, double angle_deg) {
+      modal::BeltSection sec;
+      sec.belt_width_m = belt_w * 1e-3;
+      sec.edge_radius_m = (R0_mm - depth - kUnderTread_mm) * 1e-3;
+      sec.max_width_radius_m =
+          (size.rim_radius_mm() + widest_share * size.aspect_ratio * size.section_width_mm) * 1e-3;
+      sec.edge_angle_rad = angle_deg * M_PI / 180;
+      if (!(sec.max_width_radius_m < sec.edge_radius_m)) return 1.0;
+      return modal::net_hoop_tension_N(1.0, sec) / (sec.belt_width_m * sec.edge_radius_m);
+    };
+    const double share = std::clamp(share_at(kWidestPointShare, kEdgeAngle_deg), 0.2, 1.0);
+    const double hi =
+        std::clamp(share_at(kWidestPointShare + 0.05, kEdgeAngle_deg - 7.5), 0.2, 1.0);
+    const double lo =
+        std::clamp(share_at(kWidestPointShare - 0.05, kEdgeAngle_deg + 7.5), 0.2, 1.0);
+    const double share_r = std::round(share * 1000) / 1000;
+    const double std_percent = std::round(1000 * (hi - lo) / std::sqrt(12.0) / share) / 10;
+    y << "  # The ring's tension is the belt's net hoop tension: p b R less the sidewalls' pull at "
+         "the\n"
+      << "  # belt edges, H = p [b r_e - (r_e^2 - r_m^2) tan psi_e] (docs/ring_model.md 3a), for "
+         "the\n"
+      << "  # stated section: widest point at mid-height (0.45-0.55), psi_e 37.5 deg (30-45).\n";
+    y << "  net_tension_share: " << num(share_r) << "\n";
+    y << "  # The section's ranges as the tension's uncertainty (uniform, (b - a)/sqrt(12)): "
+      << num(std::round(lo * 100) / 100) << "-" << num(std::round(hi * 100) / 100) << ".\n";
+    y << "  belt_width_std_percent: " << num(std_percent) << "\n";
+    decide("modal.net_tension_share", num(share_r),
+           "sidewall pull on the stated section (docs/ring_model.md 3a)");
+    decide("modal.belt_width_std_percent", num(std_percent),
+           "the section's ranges " + num(std::round(lo * 100) / 100) + "-" +
+               num(std::round(hi * 100) / 100) + " as a uniform range");
+  }
   if (in.belt_mass_kg > 0) {
     y << "  # The maker's belt mass (input): checks the tension's mass, and is the order-1 mass.\n";
     y << "  belt_mass_kg: " << num(in.belt_mass_kg) << "\n";

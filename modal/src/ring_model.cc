@@ -82,6 +82,15 @@ double implied_tension_N(const RingCoefficients& c, double mass_per_length_kg_m,
   return mass_per_length_kg_m * radius_m * radius_m * c.tension;
 }
 
+double net_hoop_tension_N(double pressure_Pa, const BeltSection& s) {
+  MODALTYRE_CHECK(pressure_Pa > 0 && s.belt_width_m > 0 && s.edge_radius_m > 0 &&
+                      s.max_width_radius_m > 0 && s.max_width_radius_m <= s.edge_radius_m &&
+                      s.edge_angle_rad >= 0 && s.edge_angle_rad < M_PI / 2,
+                  "net hoop tension needs p, b > 0, 0 < r_m <= r_e and 0 <= psi_e < 90 deg");
+  const double re = s.edge_radius_m, rm = s.max_width_radius_m;
+  return pressure_Pa * (s.belt_width_m * re - (re * re - rm * rm) * std::tan(s.edge_angle_rad));
+}
+
 double rim_held_frequency_hz(double free_hz, double belt_mass, double wheel_mass) {
   MODALTYRE_CHECK(belt_mass > 0 && wheel_mass > 0, "masses must be positive");
   return free_hz * std::sqrt(wheel_mass / (belt_mass + wheel_mass));

@@ -14,6 +14,7 @@
 #include "modaltyre/core/errors.h"
 #include "modaltyre/init/init_tyre.h"
 #include "modaltyre/init/tyre_size.h"
+#include "modaltyre/modal/ring_model.h"
 
 namespace modaltyre::init {
 namespace {
@@ -59,7 +60,9 @@ TEST(Init, Sf350FromTable2Runs) {
   const InitResult r = init_tyre(sf350());
   EXPECT_FALSE(r.orders_proposed);
   EXPECT_EQ(r.carcass.mass_source, "tension");
-  EXPECT_GT(r.carcass.mass_per_length_kg_m, 2.0);
+  // The net tension's mass (share 0.56 of p b R; the gross 2.37 kg/m): within a passenger
+  // belt's plausible 1-4 kg/m.
+  EXPECT_GT(r.carcass.mass_per_length_kg_m, 1.0);
   EXPECT_LT(r.carcass.mass_per_length_kg_m, 4.0);
   const contact::TyreModel m = model_of(r);
   const auto p = contact::predict(m, m.config.default_conditions(4000));
@@ -170,6 +173,50 @@ TEST(Init, OperatingPressureStiffensLikeRealTyres) {
   const double pfz1 = (hi - lo) / k0 / 0.4;
   EXPECT_GT(pfz1, 0.5);
   EXPECT_LT(pfz1, 1.0);
+}
+
+// The ring's tension is the belt's net hoop tension (docs/ring_model.md section 3a): init writes
+// its share of p b R for the stated section and the section's ranges as the tension's
+// uncertainty. The sidewalls' pull grows with the height between the belt edge and the widest
+// point, so a 60-series section keeps less of p b R than a 45-series one; the modal mass follows
+// the share exactly (mu = share p b / (R b_coefficient)).
+TEST(Init, NetTensionShareOfTheStatedSection) {
+  auto written = [](const std::string& size) {
+    InitInputs in;
+    in.size = size;
+    in.test_pressure_kPa = 220;
+    in.frequencies_hz = {80, 100, 118, 137, 157};
+    in.orders = {1, 2, 3, 4, 5};
+    in.boundary = "rim-fixed";  // a free test's order-1 correction moves with the mass
+    in.two_d = true;
+    const InitResult r = init_tyre(in);
+    const auto c = contact::read_tyre_config(ConfigTree::from_string(r.yaml, "init.yaml", {}));
+    const TyreSize t = parse_tyre_size(size);
+    auto share = [&](double widest, double psi_deg) {
+      modal::BeltSection sec;
+      sec.belt_width_m = c.carcass.belt_width_m;
+      sec.edge_radius_m = (t.outer_radius_mm() - 8 - 4) * 1e-3;
+      sec.max_width_radius_m =
+          (t.rim_radius_mm() + widest * t.aspect_ratio * t.section_width_mm) * 1e-3;
+      sec.edge_angle_rad = psi_deg * M_PI / 180;
+      return modal::net_hoop_tension_N(1.0, sec) / (sec.belt_width_m * sec.edge_radius_m);
+    };
+    const double nominal = share(0.5, 37.5);
+    EXPECT_NEAR(c.carcass.net_tension_share, nominal, 1e-3) << size;
+    EXPECT_NEAR(c.uncertainty.belt_width_rel_std,
+                (share(0.55, 30) - share(0.45, 45)) / std::sqrt(12.0) / nominal, 1e-3)
+        << size;
+    // The mass is the net tension's: the same config at the gross p b R is heavier by 1/share.
+    const contact::TyreModel net = model_of(r);
+    const contact::TyreModel gross = model_of(r, {"modal.net_tension_share=1"});
+    EXPECT_NEAR(net.carcass.mass_per_length_kg_m / gross.carcass.mass_per_length_kg_m,
+                c.carcass.net_tension_share, 1e-9);
+    return c.carcass.net_tension_share;
+  };
+  const double tall = written("195/60R14"), low = written("225/45R17");
+  EXPECT_GT(tall, 0.4);
+  EXPECT_LT(tall, 0.7);
+  EXPECT_GT(low, tall);
 }
 
 TEST(Init, RefusesWhatCannotBeAConfig) {

@@ -160,5 +160,38 @@ TEST(RingModel, PressureMovesTensionExactlyAndBendingNot) {
   }
 }
 
+// The belt's net hoop tension (docs/ring_model.md section 3a) from a second free body: the upper
+// section between the two widest points, on a radial carcass's natural sidewall shape (no hoop
+// force in the sidewall: r N = C along the meridian, so cos psi = (r^2 - r_m^2) cos psi_e /
+// (r_e^2 - r_m^2)). Its radial equilibrium, H = p (b r_e + 2 int r dy) - 2 C with the sidewall's
+// integral by quadrature, must equal the belt-edge free body's closed form.
+TEST(RingModel, NetHoopTensionHoldsForBothFreeBodies) {
+  const double p = 220e3;
+  for (double psi_deg : {10.0, 30.0, 45.0, 60.0}) {
+    BeltSection s;
+    s.belt_width_m = 0.158, s.edge_radius_m = 0.3015, s.max_width_radius_m = 0.252;
+    s.edge_angle_rad = psi_deg * M_PI / 180;
+    const double re = s.edge_radius_m, rm = s.max_width_radius_m;
+    const double a = std::cos(s.edge_angle_rad) / (re * re - rm * rm);
+    const int n = 20000;  // Simpson on r in [r_m, r_e]
+    auto f = [&](double r) {
+      const double c = a * (r * r - rm * rm);
+      return r * c / std::sqrt(1 - c * c);
+    };
+    double sum = f(rm) + f(re);
+    const double h = (re - rm) / n;
+    for (int i = 1; i < n; ++i) sum += (i % 2 ? 4 : 2) * f(rm + i * h);
+    const double integral = sum * h / 3;
+    const double C = p * (re * re - rm * rm) / (2 * std::cos(s.edge_angle_rad));
+    const double widest_body = p * (s.belt_width_m * re + 2 * integral) - 2 * C;
+    EXPECT_NEAR(net_hoop_tension_N(p, s), widest_body, 1e-8 * p * s.belt_width_m * re) << psi_deg;
+  }
+  // Limits: a sidewall leaving axially, or a belt at the widest point, pulls nothing radially.
+  BeltSection flat{0.15, 0.28, 0.236, 0.0};
+  EXPECT_DOUBLE_EQ(net_hoop_tension_N(p, flat), p * 0.15 * 0.28);
+  BeltSection level{0.15, 0.28, 0.28, 0.7};
+  EXPECT_DOUBLE_EQ(net_hoop_tension_N(p, level), p * 0.15 * 0.28);
+}
+
 }  // namespace
 }  // namespace modaltyre::modal

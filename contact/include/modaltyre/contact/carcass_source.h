@@ -45,6 +45,9 @@ struct CarcassSettings {
   double wheel_mass_kg = 0;  ///< modal.wheel_mass_kg, required for a free test
   /// modal.belt_width_mm: b of the hoop tension T = p b R [m]; 0 = not stated.
   double belt_width_m = 0;
+  /// modal.net_tension_share: the belt's net hoop tension as a share of p b R, after the
+  /// sidewalls' pull at the belt edges (docs/ring_model.md section 3a); 1 = the gross p b R.
+  double net_tension_share = 1.0;
   /// modal.mass_per_length_kg_m: a stated ring mass mu (overrides the tension's); 0 = none.
   double mass_per_length_kg_m = 0;
   /// modal.belt_mass_kg: the belt's mass as a maker states it (MF-Swift BELT_MASS): a check of
@@ -68,7 +71,7 @@ struct CarcassDerivation {
   double mass_per_length_kg_m = 0;  ///< mu used (ring) or implied by the shapes (median)
   std::string mass_source;          ///< "tension", "stated", "belt_mass", "shapes"
   double tension_N = 0;             ///< T implied by mu and the fit (at the test pressure)
-  double membrane_tension_N = 0;    ///< p b R (0 without a belt width)
+  double membrane_tension_N = 0;    ///< share x p b R, the net tension (0 without a belt width)
   double test_pressure_Pa = 0, operating_pressure_Pa = 0;
   std::vector<std::string> warnings;
 };

@@ -67,6 +67,22 @@ double mass_per_length_from_tension(const RingCoefficients& c, double pressure_P
 /// The hoop tension T = mu R^2 b_coefficient a mass per length implies [N].
 double implied_tension_N(const RingCoefficients& c, double mass_per_length_kg_m, double radius_m);
 
+/// The section geometry the belt's net hoop tension depends on (docs/ring_model.md section 3a).
+struct BeltSection {
+  double belt_width_m = 0;        ///< b: the belt band the pressure pushes out
+  double edge_radius_m = 0;       ///< r_e: the carcass line's radius at the belt edge
+  double max_width_radius_m = 0;  ///< r_m: the radius of the section's widest point (r_m < r_e)
+  double edge_angle_rad = 0;      ///< psi_e: the sidewall meridian's angle to the axis at r_e
+};
+
+/// The belt's net hoop tension of a radial-carcass section [N]: radial equilibrium of the belt
+/// band, p b r_e = H + 2 N_e sin(psi_e) r_e, with the sidewall's meridional tension N_e from the
+/// axial equilibrium of the sidewall between the belt edge and its widest point (where the
+/// meridian is radial), N_e cos(psi_e) r_e = p (r_e^2 - r_m^2) / 2:
+///     H = p [b r_e - (r_e^2 - r_m^2) tan(psi_e)].
+/// psi_e = 0 or r_e = r_m gives the gross p b r_e. InputError-free: checks its arguments.
+double net_hoop_tension_N(double pressure_Pa, const BeltSection& section);
+
 /// A free test's frequency of an order-1 (translation) or rotation mode moved to the rim-held
 /// boundary: omega_fixed = omega_free sqrt(m_wheel / (m_belt + m_wheel)) (inertias for the
 /// rotation). Both masses > 0.
