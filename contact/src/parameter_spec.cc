@@ -89,6 +89,12 @@ std::vector<ParameterSpec> tyre_scalars() {
       {"modal.pneumatic_share", "-", ValueRange{0, 1}, ln_search(1e-3, 1), std::nullopt,
        [](const TyreConfig& c) { return c.pneumatic_share > 0 ? c.pneumatic_share : 0.1; },
        [](TyreConfig& c, double v) { c.pneumatic_share = v; }},
+      // The belt's net hoop tension as a share of p b R (ring normalisation; docs/ring_model.md
+      // section 3a): validate may calibrate it on a measured load-deflection row, which settles
+      // the section's unknown pull for one tyre.
+      {"modal.net_tension_share", "-", ValueRange{0.2, 1}, ln_search(0.2, 1), std::nullopt,
+       [](const TyreConfig& c) { return c.carcass.net_tension_share; },
+       [](TyreConfig& c, double v) { c.carcass.net_tension_share = v; }},
       // Starts at 10 rad^2/s^2 when not stated (the fit to resolved orders may give 0).
       {"modal.extension_bending_s2_rad2_s2", "rad^2/s^2", ValueRange{0, 1e12}, ln_search(1e-3, 1e6),
        std::nullopt, [](const TyreConfig& c) { return c.extension_s2 > 0 ? c.extension_s2 : 10.0; },
