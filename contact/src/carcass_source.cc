@@ -183,6 +183,7 @@ CarcassSettings read_carcass_settings(const ConfigSection& modal) {
   }
   s.belt_width_m = modal.number("belt_width_mm", 0, 0, 5000) * 1e-3;
   s.net_tension_share = modal.number("net_tension_share", 1.0, 0.2, 1.0);
+  s.net_tension_share_stated = modal.has("net_tension_share");
   s.mass_per_length_kg_m = modal.number("mass_per_length_kg_m", 0, 0, 1e4);
   s.belt_mass_kg = modal.number("belt_mass_kg", 0, 0, 1e5);
   s.foundation_pneumatic_fraction = modal.number("foundation_pneumatic_fraction", 1.0, 0, 1);
@@ -286,6 +287,12 @@ modal::ModalBasis carcass_basis(const TyreConfig& config, const modal::ModeIdent
   }
   d.mass_per_length_kg_m = mu;
   d.mass_source = source;
+  if (source == "tension" && !s.net_tension_share_stated) {
+    d.warnings.push_back(
+        "modal.net_tension_share not stated: the modal mass takes the gross tension p b R; the "
+        "sidewalls' pull lowers it to about 0.4-0.7 of that (docs/ring_model.md section 3a; "
+        "init states it)");
+  }
   if (s.belt_width_m > 0)
     d.membrane_tension_N = s.net_tension_share * d.test_pressure_Pa * s.belt_width_m * R;
   if (d.fit.valid && mu > 0) d.tension_N = modal::implied_tension_N(d.fit.coefficients, mu, R);

@@ -219,6 +219,26 @@ TEST(Init, NetTensionShareOfTheStatedSection) {
   EXPECT_GT(low, tall);
 }
 
+// A ring-normalised config without modal.net_tension_share takes the gross tension, and says so;
+// init's configs state the share and carry no such warning.
+TEST(Init, UnstatedNetTensionShareIsAWarning) {
+  const InitResult r = init_tyre(sf350());
+  auto warns = [](const contact::TyreModel& m) {
+    for (const auto& w : m.basis.warnings)
+      if (w.find("net_tension_share") != std::string::npos) return true;
+    return false;
+  };
+  EXPECT_FALSE(warns(model_of(r)));
+  std::string text = r.yaml;
+  const auto at = text.find("  net_tension_share:");
+  ASSERT_NE(at, std::string::npos);
+  text.erase(at, text.find('\n', at) - at + 1);
+  const auto unstated = contact::build_tyre_model(
+      contact::read_tyre_config(ConfigTree::from_string(text, kSrc + "/configs/init.yaml", {})));
+  EXPECT_TRUE(warns(unstated));
+  EXPECT_GT(unstated.carcass.mass_per_length_kg_m, model_of(r).carcass.mass_per_length_kg_m);
+}
+
 TEST(Init, RefusesWhatCannotBeAConfig) {
   InitInputs none = sf350();
   none.frequencies_hz.clear();

@@ -48,6 +48,7 @@ struct CarcassSettings {
   /// modal.net_tension_share: the belt's net hoop tension as a share of p b R, after the
   /// sidewalls' pull at the belt edges (docs/ring_model.md section 3a); 1 = the gross p b R.
   double net_tension_share = 1.0;
+  bool net_tension_share_stated = false;  ///< the key was in the config
   /// modal.mass_per_length_kg_m: a stated ring mass mu (overrides the tension's); 0 = none.
   double mass_per_length_kg_m = 0;
   /// modal.belt_mass_kg: the belt's mass as a maker states it (MF-Swift BELT_MASS): a check of
