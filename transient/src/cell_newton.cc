@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cell_kernels.h"
 #include "modaltyre/transient/column_product.h"
 #include "modaltyre/transient/ode_system.h"
 #include "row_lu_solve.h"
 
 namespace modaltyre::transient {
+
+using detail::band_row;
 
 CellNewton::CellNewton(const CellModel& cm, const CellSystem& system)
     : cm_(cm), M_(cm.M()), sys_(system) {
@@ -65,8 +68,7 @@ bool CellNewton::setup(double t, const double* y, double gamma, bool jacobian_ok
     jacobian_ready_ = true;
   }
   factor(gamma);
-  const Eigen::MatrixXd& lu = cap_.matrixLU();
-  return lu.allFinite() && (lu.diagonal().array() != 0).all() && ee_d_inv_.allFinite();
+  return cap_lu_.allFinite() && (cap_lu_.diagonal().array() != 0).all() && ee_d_inv_.allFinite();
 }
 
 void CellNewton::factor(double gamma) {
@@ -146,26 +148,16 @@ void CellNewton::factor(double gamma) {
       const int rows = kl - kf + 1;
       Y_.resize(rows, np_);
       zero_row_.setZero(np_);
+      // With this row's term of R in the same pass (per section, the classes' terms are added in
+      // the classes' order, as before).
       for (int k = kl; k >= kf; --k) {
         const int i = r.lo + k, row = k - kf;
         const double kd = kd_(o + k), a = kd > 0 ? kd / cm_.c_kv(i) : 0.0;
-        const double d = ee_d_inv_(o + k), s1 = ee_s1_, s2 = ee_s2_;
         const double* t = TtR_.row(i - s0_).data();
         const double* y1 = row + 1 < rows ? Y_.row(row + 1).data() : zero_row_.data();
         const double* y2 = row + 2 < rows ? Y_.row(row + 2).data() : zero_row_.data();
-        double* y = Y_.row(row).data();
-        if (kd > 0) {
-          for (int j = 0; j < np_; ++j) y[j] = ((a * t[j] - s1 * y1[j]) - s2 * y2[j]) * d;
-        } else {
-          for (int j = 0; j < np_; ++j) y[j] = ((0.0 - s1 * y1[j]) - s2 * y2[j]) * d;
-        }
-      }
-      for (int k = kf; k <= kl; ++k) {
-        const double kd = kd_(o + k);
-        if (kd > 0) {
-          const int s = r.lo + k - s0_;
-          RR_.row(s) += (mu * kd) * (TtR_.row(s) - gamma * Y_.row(k - kf));
-        }
+        band_row(np_, kd > 0, a, t, y1, y2, ee_s1_, ee_s2_, ee_d_inv_(o + k), Y_.row(row).data(),
+                 kd > 0 ? RR_.row(i - s0_).data() : nullptr, mu * kd, gamma);
       }
     }
   }
@@ -175,6 +167,11 @@ void CellNewton::factor(double gamma) {
   }
   if (ns_ == 0) {
     K_.setZero(np_, np_);
+  } else if (semismooth_) {
+    // More than one class: K by the vectorised column products (a flat crown keeps the 2D
+    // solver's order of operations below).
+    K_.resize(np_, np_);
+    for (int k = 0; k < np_; ++k) column_dots(Tt_, R.col(k), K_.col(k));
   } else {
     K_.noalias() = Tt_.transpose().lazyProduct(R);
   }
@@ -188,8 +185,15 @@ void CellNewton::factor(double gamma) {
   // The capacitance matrix in the 2D solver's order of operations (contact_newton.cc): a flat
   // crown's one class then repeats the 2D transient's arithmetic (FlatCrown test; a
   // rounding-level change here moved its 0.3 s hold's end load by 0.9 %).
-  cap_mat_ = Eigen::MatrixXd::Identity(np_, np_) - gamma * H_.lazyProduct(K_);
-  factor_cap();
+  if (semismooth_) {
+    // More than one class: the vectorised product and LU of update_cap() (Eigen's LU where a
+    // pivot vanishes, so that setup() reports the singular matrix as before).
+    cap_product(gamma);
+    if (!lu_cap()) factor_cap();
+  } else {
+    cap_mat_ = Eigen::MatrixXd::Identity(np_, np_) - gamma * H_.lazyProduct(K_);
+    factor_cap();
+  }
 }
 
 void CellNewton::factor_cap() {

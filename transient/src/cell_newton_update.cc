@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cell_kernels.h"
 #include "modaltyre/transient/cell_newton.h"
 #include "modaltyre/transient/column_product.h"
 #include "modaltyre/transient/ode_system.h"
@@ -37,20 +38,28 @@ void CellNewton::slot_coefficient(int k) {
 }
 
 void CellNewton::update_cap(double gamma) {
+  cap_product(gamma);
+  if (!lu_cap()) factor(gamma);  // the whole factorisation at the current contact set
+}
+
+void CellNewton::cap_product(double gamma) {
   // I - gamma H K by columns (the vectorised product: Eigen's blocked one would hand these sizes
   // to OpenMP threads, which only wait on the shared cores).
   cap_mat_.resize(np_, np_);
   for (int k = 0; k < np_; ++k) column_product(H_, K_.col(k), cap_mat_.col(k));
   cap_mat_ *= -gamma;
   cap_mat_.diagonal().array() += 1.0;
-  // Its LU with partial pivoting, unblocked on the row-major copy solve_cap() reads (Eigen's
-  // blocked LU runs these 42 x 42 through its matrix-product kernels).
+}
+
+bool CellNewton::lu_cap() {
+  // The LU of cap_mat_ with partial pivoting, unblocked on the row-major copy solve_cap() reads
+  // (Eigen's blocked LU runs these 42 x 42 through its matrix-product kernels); each row update
+  // a fused multiply-add per entry (detail::lu_row_update).
   const int n = np_;
   cap_lu_ = cap_mat_;
   double* a = cap_lu_.data();
   rowperm_.resize(n);
   for (int i = 0; i < n; ++i) rowperm_[i] = i;
-  bool ok = true;
   for (int k = 0; k < n; ++k) {
     int p = k;
     for (int i = k + 1; i < n; ++i)
@@ -60,24 +69,18 @@ void CellNewton::update_cap(double gamma) {
       std::swap(rowperm_[k], rowperm_[p]);
     }
     const double pivot = a[k * n + k];
-    if (!(std::isfinite(pivot) && pivot != 0)) {
-      ok = false;
-      break;
-    }
+    if (!(std::isfinite(pivot) && pivot != 0)) return false;
     const double* rk = a + k * n;
     for (int i = k + 1; i < n; ++i) {
       double* ri = a + i * n;
       const double l = ri[k] / pivot;
       ri[k] = l;
-      for (int j = k + 1; j < n; ++j) ri[j] -= l * rk[j];
+      detail::lu_row_update(n - k - 1, l, rk + k + 1, ri + k + 1);
     }
-  }
-  if (!ok) {
-    factor(gamma);  // the whole factorisation at the current contact set
-    return;
   }
   cap_perm_.resize(n);
   for (int pos = 0; pos < n; ++pos) cap_perm_(rowperm_[pos]) = pos;
+  return true;
 }
 
 void CellNewton::update_active_set() {

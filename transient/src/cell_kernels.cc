@@ -1,0 +1,149 @@
+#include "cell_kernels.h"
+
+#include <cmath>
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define MODALTYRE_CELL_KERNELS_AVX2 1
+#endif
+
+namespace modaltyre::transient::detail {
+namespace {
+
+/// Rows [k, n) of one output in order onto its combined partial sums s.
+double tail(int k, int n, const double* a, const double* x, const double* c, const double* y,
+            double s) {
+  for (; k < n; ++k) {
+    s = std::fma(a[k], x[k], s);
+    if (y) s = std::fma(c[k], y[k], s);
+  }
+  return s;
+}
+
+/// band_row()'s entries [j0, n).
+void band_row_scalar(int j0, int n, bool with_t, double a, const double* t, const double* y1,
+                     const double* y2, double s1, double s2, double d, double* y, double* r,
+                     double w, double gamma) {
+  for (int j = j0; j < n; ++j) {
+    y[j] =
+        with_t ? ((a * t[j] - s1 * y1[j]) - s2 * y2[j]) * d : ((0.0 - s1 * y1[j]) - s2 * y2[j]) * d;
+    if (r) r[j] += w * (t[j] - gamma * y[j]);
+  }
+}
+
+void pair_dots_scalar(int n, const double* a, const double* b, const double* x, const double* c,
+                      const double* d, const double* y, double out[2]) {
+  double sa[8] = {0, 0, 0, 0, 0, 0, 0, 0}, sb[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  const int n8 = n / 8 * 8;
+  for (int k = 0; k < n8; k += 8) {
+    for (int l = 0; l < 8; ++l) {
+      sa[l] = std::fma(a[k + l], x[k + l], sa[l]);
+      sb[l] = std::fma(b[k + l], x[k + l], sb[l]);
+      if (y) {
+        sa[l] = std::fma(c[k + l], y[k + l], sa[l]);
+        sb[l] = std::fma(d[k + l], y[k + l], sb[l]);
+      }
+    }
+  }
+  auto combine = [](const double* s) {
+    const double l0 = s[0] + s[4], l1 = s[1] + s[5], l2 = s[2] + s[6], l3 = s[3] + s[7];
+    return (l0 + l1) + (l2 + l3);
+  };
+  out[0] = tail(n8, n, a, x, c, y, combine(sa));
+  out[1] = tail(n8, n, b, x, d, y, combine(sb));
+}
+
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+__attribute__((target("avx2,fma"))) double combine_avx2(__m256d lo, __m256d hi) {
+  alignas(32) double l[4];
+  _mm256_store_pd(l, _mm256_add_pd(lo, hi));
+  return (l[0] + l[1]) + (l[2] + l[3]);
+}
+
+__attribute__((target("avx2,fma"))) void pair_dots_avx2(int n, const double* a, const double* b,
+                                                        const double* x, const double* c,
+                                                        const double* d, const double* y,
+                                                        double out[2]) {
+  __m256d a0 = _mm256_setzero_pd(), a1 = a0, b0 = a0, b1 = a0;
+  const int n8 = n / 8 * 8;
+  for (int k = 0; k < n8; k += 8) {
+    const __m256d x0 = _mm256_loadu_pd(x + k), x1 = _mm256_loadu_pd(x + k + 4);
+    a0 = _mm256_fmadd_pd(_mm256_loadu_pd(a + k), x0, a0);
+    a1 = _mm256_fmadd_pd(_mm256_loadu_pd(a + k + 4), x1, a1);
+    b0 = _mm256_fmadd_pd(_mm256_loadu_pd(b + k), x0, b0);
+    b1 = _mm256_fmadd_pd(_mm256_loadu_pd(b + k + 4), x1, b1);
+    if (y) {
+      const __m256d y0 = _mm256_loadu_pd(y + k), y1 = _mm256_loadu_pd(y + k + 4);
+      a0 = _mm256_fmadd_pd(_mm256_loadu_pd(c + k), y0, a0);
+      a1 = _mm256_fmadd_pd(_mm256_loadu_pd(c + k + 4), y1, a1);
+      b0 = _mm256_fmadd_pd(_mm256_loadu_pd(d + k), y0, b0);
+      b1 = _mm256_fmadd_pd(_mm256_loadu_pd(d + k + 4), y1, b1);
+    }
+  }
+  out[0] = tail(n8, n, a, x, c, y, combine_avx2(a0, a1));
+  out[1] = tail(n8, n, b, x, d, y, combine_avx2(b0, b1));
+}
+
+__attribute__((target("avx2"))) void band_row_avx(int n, bool with_t, double a, const double* t,
+                                                  const double* y1, const double* y2, double s1,
+                                                  double s2, double d, double* y, double* r,
+                                                  double w, double gamma) {
+  const __m256d va = _mm256_set1_pd(a), v1 = _mm256_set1_pd(s1), v2 = _mm256_set1_pd(s2),
+                vd = _mm256_set1_pd(d), vw = _mm256_set1_pd(w), vg = _mm256_set1_pd(gamma),
+                zero = _mm256_setzero_pd();
+  int j = 0;
+  for (; j + 4 <= n; j += 4) {
+    const __m256d tj = _mm256_loadu_pd(t + j);
+    const __m256d first = with_t ? _mm256_mul_pd(va, tj) : zero;
+    const __m256d u =
+        _mm256_sub_pd(_mm256_sub_pd(first, _mm256_mul_pd(v1, _mm256_loadu_pd(y1 + j))),
+                      _mm256_mul_pd(v2, _mm256_loadu_pd(y2 + j)));
+    const __m256d yj = _mm256_mul_pd(u, vd);
+    _mm256_storeu_pd(y + j, yj);
+    if (r) {
+      const __m256d term = _mm256_mul_pd(vw, _mm256_sub_pd(tj, _mm256_mul_pd(vg, yj)));
+      _mm256_storeu_pd(r + j, _mm256_add_pd(_mm256_loadu_pd(r + j), term));
+    }
+  }
+  band_row_scalar(j, n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
+}
+
+__attribute__((target("avx2,fma"))) void lu_row_update_avx2(int n, double l, const double* k,
+                                                            double* r) {
+  const __m256d vl = _mm256_set1_pd(l);
+  int j = 0;
+  for (; j + 4 <= n; j += 4)
+    _mm256_storeu_pd(r + j, _mm256_fnmadd_pd(vl, _mm256_loadu_pd(k + j), _mm256_loadu_pd(r + j)));
+  for (; j < n; ++j) r[j] = std::fma(-l, k[j], r[j]);
+}
+#endif
+
+}  // namespace
+
+void lu_row_update(int n, double l, const double* k, double* r) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  if (avx2) return lu_row_update_avx2(n, l, k, r);
+#endif
+  for (int j = 0; j < n; ++j) r[j] = std::fma(-l, k[j], r[j]);
+}
+
+void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,
+              double s1, double s2, double d, double* y, double* r, double w, double gamma) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  static const bool avx = __builtin_cpu_supports("avx2");
+  if (avx) return band_row_avx(n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
+#endif
+  band_row_scalar(0, n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
+}
+
+void pair_dots(int n, const double* a, const double* b, const double* x, const double* c,
+               const double* d, const double* y, double out[2]) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  if (avx2) return pair_dots_avx2(n, a, b, x, c, d, y, out);
+#endif
+  pair_dots_scalar(n, a, b, x, c, d, y, out);
+}
+
+}  // namespace modaltyre::transient::detail
