@@ -116,9 +116,36 @@ __attribute__((target("avx2,fma"))) void lu_row_update_avx2(int n, double l, con
     _mm256_storeu_pd(r + j, _mm256_fnmadd_pd(vl, _mm256_loadu_pd(k + j), _mm256_loadu_pd(r + j)));
   for (; j < n; ++j) r[j] = std::fma(-l, k[j], r[j]);
 }
+
+__attribute__((target("avx2"))) int sign_mismatches_avx2(int n, const double* a, const double* b,
+                                                         std::vector<int>& out) {
+  const __m256d zero = _mm256_setzero_pd();
+  int k = 0;
+  for (; k + 8 <= n; k += 8) {
+    const __m256d x0 = _mm256_xor_pd(_mm256_cmp_pd(_mm256_loadu_pd(a + k), zero, _CMP_GT_OQ),
+                                     _mm256_cmp_pd(_mm256_loadu_pd(b + k), zero, _CMP_GT_OQ));
+    const __m256d x1 = _mm256_xor_pd(_mm256_cmp_pd(_mm256_loadu_pd(a + k + 4), zero, _CMP_GT_OQ),
+                                     _mm256_cmp_pd(_mm256_loadu_pd(b + k + 4), zero, _CMP_GT_OQ));
+    const int mask = _mm256_movemask_pd(x0) | (_mm256_movemask_pd(x1) << 4);
+    if (mask == 0) continue;
+    for (int l = 0; l < 8; ++l)
+      if (mask & (1 << l)) out.push_back(k + l);
+  }
+  return k;
+}
 #endif
 
 }  // namespace
+
+void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& out) {
+  int k = 0;
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) k = sign_mismatches_avx2(n, a, b, out);
+#endif
+  for (; k < n; ++k)
+    if ((a[k] > 0) != (b[k] > 0)) out.push_back(k);
+}
 
 void lu_row_update(int n, double l, const double* k, double* r) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2

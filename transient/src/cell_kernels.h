@@ -2,6 +2,8 @@
 // Small vector kernels of the 3D transient (internal to the transient library), each with an AVX2
 // path chosen at run time and a portable one that gives the same bits.
 
+#include <vector>
+
 namespace modaltyre::transient::detail {
 
 /// The 3D observer's belt displacement of one section (patch_ode_3d.cc), radial and tangential,
@@ -24,5 +26,10 @@ void band_row(int n, bool with_t, double a, const double* t, const double* y1, c
 
 /// r_j = fma(-l, k_j, r_j), j < n: one row update of an LU factorisation (CellNewton::lu_cap()).
 void lu_row_update(int n, double l, const double* k, double* r);
+
+/// Appends to `out` every k < n where (a[k] > 0) != (b[k] > 0), in increasing order (the cells
+/// whose side of the contact kink differs between the iterate's forces a and the matrix's
+/// stiffness b: CellNewton::update_active_set()).
+void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& out);
 
 }  // namespace modaltyre::transient::detail

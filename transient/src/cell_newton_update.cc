@@ -88,8 +88,7 @@ void CellNewton::update_active_set() {
   const int n = sys_.cells();
   if (f.size() != n || kd_.size() != n) return;
   changed_.clear();
-  for (int k = 0; k < n; ++k)
-    if ((f(k) > 0) != (kd_(k) > 0)) changed_.push_back(k);
+  detail::sign_mismatches(n, f.data(), kd_.data(), changed_);
   if (sys_.soil()) {
     // On a soil a cell in contact also changes side of a kink: between the virgin curve and
     // its memory's branch (cell_soil.h) its series stiffness jumps (to k on a rigid-plastic

@@ -92,6 +92,7 @@ CellSystem::CellSystem(const CellModel& cm, const ScenarioPlan& plan, std::vecto
   }
   CqT_ = M.Cq.transpose();
   CrT_ = M.Cr.transpose();
+  TT_ = M.T.transpose();
   in_contact_.assign(ncells_, 0);
   if (soil_) kd_soil_.setZero(ncells_);
 }
@@ -152,13 +153,21 @@ void CellSystem::penetration(double t, const double* y, Eigen::VectorXd& g,
     const double drop = cm_.classes.drop_m[c];
     double* gc = g.data() + o;
     const double* Pc = P.data() + r.lo;
-    for (int k = 0; k < r.size(); ++k) gc[k] = Pc[k] - drop;
+    const double* ec = e + o;
+    const int n = r.size();
+    // g = ((P - drop) + h) - e in one pass (the same operations in the same order as three).
     if (plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c])) {
       const double* hc = road_.data() + (r.lo - lo);
-      for (int k = 0; k < r.size(); ++k) gc[k] += hc[k];
+      if (relax_) {
+        for (int k = 0; k < n; ++k) gc[k] = ((Pc[k] - drop) + hc[k]) - ec[k];
+      } else {
+        for (int k = 0; k < n; ++k) gc[k] = (Pc[k] - drop) + hc[k];
+      }
+    } else if (relax_) {
+      for (int k = 0; k < n; ++k) gc[k] = (Pc[k] - drop) - ec[k];
+    } else {
+      for (int k = 0; k < n; ++k) gc[k] = Pc[k] - drop;
     }
-    if (relax_)
-      for (int k = 0; k < r.size(); ++k) gc[k] -= e[o + k];
   }
 }
 
@@ -224,16 +233,27 @@ void CellSystem::rhs(double t, const double* y, double* ydot) const {
   const int E = M.e_index();
   const Eigen::Map<const Eigen::VectorXd> e(y + E, ncells_);
   Eigen::Map<Eigen::VectorXd> de(ydot + E, ncells_);
-  de = f_.cwiseProduct(inv_c_) - e.cwiseProduct(k_over_c_);
   const double adv = Omega / M.tyre.dtheta_rad;
-  if (adv == 0) return;
+  if (adv == 0) {
+    de = f_.cwiseProduct(inv_c_) - e.cwiseProduct(k_over_c_);
+    return;
+  }
+  // Per class in one pass: (((f / c' - e k' / c') + a0 e_k) + a1 e_k+1) + a2 e_k+2, the upwind
+  // terms that reach beyond the range left out (the same operations in the same order as a pass
+  // per term).
+  const double a0 = kUpwind[0] * adv, a1 = kUpwind[1] * adv, a2 = kUpwind[2] * adv;
+  const double *fv = f_.data(), *ic = inv_c_.data(), *kc = k_over_c_.data(), *ev = y + E;
+  double* dv = ydot + E;
   const int nc = cm_.classes.size();
   for (int c = 0; c < nc; ++c) {
     const int n = ranges_[c].size(), o = offset_[c];
-    if (n == 0) continue;
-    de.segment(o, n) += kUpwind[0] * adv * e.segment(o, n);
-    if (n > 1) de.segment(o, n - 1) += kUpwind[1] * adv * e.segment(o + 1, n - 1);
-    if (n > 2) de.segment(o, n - 2) += kUpwind[2] * adv * e.segment(o + 2, n - 2);
+    const double *f = fv + o, *ik = ic + o, *kk = kc + o, *ec = ev + o;
+    double* d = dv + o;
+    int k = 0;
+    for (; k + 2 < n; ++k)
+      d[k] = (((f[k] * ik[k] - ec[k] * kk[k]) + a0 * ec[k]) + a1 * ec[k + 1]) + a2 * ec[k + 2];
+    for (; k + 1 < n; ++k) d[k] = ((f[k] * ik[k] - ec[k] * kk[k]) + a0 * ec[k]) + a1 * ec[k + 1];
+    for (; k < n; ++k) d[k] = (f[k] * ik[k] - ec[k] * kk[k]) + a0 * ec[k];
   }
 }
 
@@ -275,21 +295,27 @@ int CellSystem::update_contact_set(double t, const double* y) const {
   }
   long changed = 0;
   const int nc = cm_.classes.size();
+  const double z = hub_z(t, y);
   for (int c = 0; c < nc; ++c) {
     const UnitRange& r = ranges_[c];
     const int o = offset_[c], mu = cm_.classes.multiplicity[c];
+    const double* gc = g_.data() + o;
+    char* in = in_contact_.data() + o;
+    int flips = 0;
     for (int k = 0; k < r.size(); ++k) {
-      const char now = g_(o + k) > 0;
-      if (now != in_contact_[o + k]) changed += mu, in_contact_[o + k] = now;
+      const char now = gc[k] > 0 ? 1 : 0;
+      flips += now ^ in[k];
+      in[k] = now;
     }
+    changed += static_cast<long>(mu) * flips;
     // Sections just outside the range (e = 0 there): a positive penetration means the range
-    // did not hold the scenario's contact.
+    // did not hold the scenario's contact. The undeformed tread's penetration z - s_i - u_i is
+    // penetration()'s P over the span, and from a contiguous row of T^T beyond it.
     if (r.size() == 0) continue;
-    const double z = hub_z(t, y);
     auto outside = [&](int i) {
-      const double u = M.T.row(i).dot(xi_);
+      const double p = span_.contains(i) ? P_(i) : (z - M.tyre.sag(i)) - TT_.col(i).dot(xi_);
       const double rut = soil_ ? soil_->rut_m(c, i, t) : 0.0;
-      return z - M.tyre.sag(i) - u - cm_.classes.drop_m[c] + road(t, i, c) - rut > 0;
+      return p - cm_.classes.drop_m[c] + road(t, i, c) - rut > 0;
     };
     for (int k = 1; k <= kEscapeCheckSections; ++k) {
       if (r.lo - k >= 0 && outside(r.lo - k)) escaped_ = true;

@@ -94,7 +94,7 @@ class CellSystem {
   std::vector<int> offset_;
   UnitRange span_;
   int ncells_ = 0;
-  Eigen::MatrixXd CqT_, CrT_;
+  Eigen::MatrixXd CqT_, CrT_, TT_;    ///< Cq^T, Cr^T and T^T (a section's row contiguous)
   Eigen::VectorXd inv_c_, k_over_c_;  ///< per slot: 1 / c', k' / c'
   Eigen::VectorXd kc_slot_;           ///< per slot: contact spring
   Eigen::VectorXd drop_slot_;         ///< per slot: crown drop of its class
