@@ -1,5 +1,6 @@
 #include "cell_kernels.h"
 
+#include <algorithm>
 #include <cmath>
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -133,9 +134,96 @@ __attribute__((target("avx2"))) int sign_mismatches_avx2(int n, const double* a,
   }
   return k;
 }
+
+__attribute__((target("avx2"))) int first_positive_avx2(const double* a, int n) {
+  const __m256d zero = _mm256_setzero_pd();
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const int mask = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(a + k), zero, _CMP_GT_OQ));
+    if (mask) return k + __builtin_ctz(static_cast<unsigned>(mask));
+  }
+  for (; k < n; ++k)
+    if (a[k] > 0) return k;
+  return n;
+}
+
+__attribute__((target("avx2"))) int last_positive_avx2(const double* a, int n) {
+  const __m256d zero = _mm256_setzero_pd();
+  int k = n;
+  for (; k >= 4; k -= 4) {
+    const int mask =
+        _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(a + k - 4), zero, _CMP_GT_OQ));
+    if (mask) return k - 4 + 31 - __builtin_clz(static_cast<unsigned>(mask));
+  }
+  for (--k; k >= 0; --k)
+    if (a[k] > 0) return k;
+  return -1;
+}
+
+__attribute__((target("avx2"))) int count_positive_avx2(const double* a, int n) {
+  const __m256d zero = _mm256_setzero_pd();
+  int k = 0, count = 0;
+  for (; k + 4 <= n; k += 4)
+    count += __builtin_popcount(static_cast<unsigned>(
+        _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(a + k), zero, _CMP_GT_OQ))));
+  for (; k < n; ++k) count += a[k] > 0 ? 1 : 0;
+  return count;
+}
+
+__attribute__((target("avx2"))) void min_max_fill_avx2(int* lo, int* hi, int n, int v_lo,
+                                                       int v_hi) {
+  const __m256i vl = _mm256_set1_epi32(v_lo), vh = _mm256_set1_epi32(v_hi);
+  int k = 0;
+  for (; k + 8 <= n; k += 8) {
+    __m256i* pl = reinterpret_cast<__m256i*>(lo + k);
+    __m256i* ph = reinterpret_cast<__m256i*>(hi + k);
+    _mm256_storeu_si256(pl, _mm256_min_epi32(_mm256_loadu_si256(pl), vl));
+    _mm256_storeu_si256(ph, _mm256_max_epi32(_mm256_loadu_si256(ph), vh));
+  }
+  for (; k < n; ++k) lo[k] = std::min(lo[k], v_lo), hi[k] = std::max(hi[k], v_hi);
+}
+
 #endif
 
 }  // namespace
+
+int count_positive(const double* a, int n) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) return count_positive_avx2(a, n);
+#endif
+  int count = 0;
+  for (int k = 0; k < n; ++k) count += a[k] > 0 ? 1 : 0;
+  return count;
+}
+
+void min_max_fill(int* lo, int* hi, int n, int v_lo, int v_hi) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) return min_max_fill_avx2(lo, hi, n, v_lo, v_hi);
+#endif
+  for (int k = 0; k < n; ++k) lo[k] = std::min(lo[k], v_lo), hi[k] = std::max(hi[k], v_hi);
+}
+
+int first_positive(const double* a, int n) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) return first_positive_avx2(a, n);
+#endif
+  int k = 0;
+  while (k < n && !(a[k] > 0)) ++k;
+  return k;
+}
+
+int last_positive(const double* a, int n) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) return last_positive_avx2(a, n);
+#endif
+  int k = n - 1;
+  while (k >= 0 && !(a[k] > 0)) --k;
+  return k;
+}
 
 void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& out) {
   int k = 0;

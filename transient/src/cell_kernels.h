@@ -32,4 +32,14 @@ void lu_row_update(int n, double l, const double* k, double* r);
 /// stiffness b: CellNewton::update_active_set()).
 void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& out);
 
+/// The first k < n with a[k] > 0 (n if none) and the last (-1 if none): a class's contact ends
+/// (the 3D observer).
+int first_positive(const double* a, int n);
+int last_positive(const double* a, int n);
+/// How many a[k] > 0, k < n.
+int count_positive(const double* a, int n);
+/// lo[k] = min(lo[k], v_lo) and hi[k] = max(hi[k], v_hi), k < n (the 3D observer's outermost
+/// columns in contact per section).
+void min_max_fill(int* lo, int* hi, int n, int v_lo, int v_hi);
+
 }  // namespace modaltyre::transient::detail

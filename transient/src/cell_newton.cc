@@ -66,6 +66,9 @@ bool CellNewton::setup(double t, const double* y, double gamma, bool jacobian_ok
     Omega_ = sys_.spin(t);
     dOmega_ = sys_.spin_rate(t);
     jacobian_ready_ = true;
+  } else if (semismooth_) {
+    Omega_ = sys_.spin(t);
+    dOmega_ = sys_.spin_rate(t);
   }
   factor(gamma);
   return cap_lu_.allFinite() && (cap_lu_.diagonal().array() != 0).all() && ee_d_inv_.allFinite();
@@ -91,10 +94,9 @@ void CellNewton::factor(double gamma) {
   s0_ = s_first;
   ns_ = s_last >= s_first ? s_last - s_first + 1 : 0;
   Tt_.resize(ns_, np_);
-  for (int s = 0; s < ns_; ++s) {
-    Tt_.row(s).head(rank) = -M.T.row(s0_ + s);
-    Tt_(s, rank) = hub_free ? 1.0 : 0.0;  // d g / d z (0: z an input)
-  }
+  // T~ = [-T, d g / d z] over the sections, column by column (contiguous in both).
+  if (ns_ > 0) Tt_.leftCols(rank) = -M.T.middleRows(s0_, ns_);
+  Tt_.col(rank).setConstant(hub_free ? 1.0 : 0.0);  // d g / d z (0: z an input)
   // M_EE's diagonal per slot, its (uniform) super-diagonals along each class.
   const double adv = Omega_ / M.tyre.dtheta_rad;
   adv_ = adv;
@@ -287,6 +289,7 @@ void CellNewton::solve_ee(double* y) const {
       dc[l] = dinv + sys_.offset(c);
       nmin = std::min(nmin, n[l]);
     }
+
     // Steps t = 0, 1 from each end (the band's boundary), then t = 2 .. nmin - 1 in lockstep,
     // then each lane's remaining front.
     const int head = std::min(2, nmin);

@@ -126,6 +126,11 @@ void CellSystem::contact_coordinates(const double* y) const {
 
 void CellSystem::penetration(double t, const double* y, Eigen::VectorXd& g,
                              Eigen::VectorXd& P) const {
+  slots(t, y, g, P, nullptr, nullptr);
+}
+
+void CellSystem::slots(double t, const double* y, Eigen::VectorXd& g, Eigen::VectorXd& P,
+                       Eigen::VectorXd* f, Eigen::VectorXd* F) const {
   const TransientModel& M = cm_.M();
   contact_coordinates(y);
   if (P.size() != M.m) P.setZero(M.m);
@@ -168,6 +173,19 @@ void CellSystem::penetration(double t, const double* y, Eigen::VectorXd& g,
     } else {
       for (int k = 0; k < n; ++k) gc[k] = Pc[k] - drop;
     }
+    if (!f) continue;
+    // The class's forces and its share of the section forces while its g is in cache (as
+    // forces() computed them in passes over all slots: the same values).
+    const double* __restrict kc = kc_slot_.data() + o;
+    const double* __restrict gk = gc;
+    double* __restrict fc = f->data() + o;
+    double* __restrict Fc = F->data() + r.lo;
+    const double mu = cm_.classes.multiplicity[c];
+    for (int k = 0; k < n; ++k) {
+      const double fk = gk[k] > 0 ? kc[k] * gk[k] : 0.0;
+      fc[k] = fk;
+      Fc[k] += mu * fk;
+    }
   }
 }
 
@@ -183,12 +201,13 @@ void CellSystem::forces(double t, const double* y, Eigen::VectorXd& f, Eigen::Ve
       penetration(t, y, f, P ? *P : P_);
     }
     soil_->forces(t, ranges_, offset_, f.data(), kd_soil_.data());
-  } else if (g) {
-    penetration(t, y, *g, P ? *P : P_);
-    f = (g->array() > 0).select(kc_slot_.array() * g->array(), 0.0);
   } else {
-    penetration(t, y, f, P ? *P : P_);
-    f = (f.array() > 0).select(kc_slot_.array() * f.array(), 0.0);
+    // The rigid road: f = k max(0, g) and F = sum_c mu_c f_c in penetration's pass (slots()).
+    if (F.size() != M.m) F.resize(M.m);
+    F.setZero();
+    f.resize(ncells_);
+    slots(t, y, g ? *g : g_work_, P ? *P : P_, &f, &F);
+    return;
   }
   if (F.size() != M.m) F.resize(M.m);
   F.setZero();

@@ -134,9 +134,16 @@ class CellObserver {
     // The level function of a cell: the undeformed tread's penetration P_i + h - drop_c (> 0
     // inside, the gap < 0 outside; at rest the 3D patch's d_i - z_j), linear to its zero.
     // On a soil: to the soil's surface (its rut outside the contact; cell_soil.h).
+    // The road under section i for class c: CellSystem::road(), from the heights above where
+    // they were computed (0 off the road).
+    const bool heights = plan.has_road() && span.size() > 0;
+    auto road_at = [&](int i, int c) {
+      if (!heights || !on_road(c)) return 0.0;
+      return span.contains(i) ? road_h_[i - span.lo] : sys_.road(t, i, c);
+    };
     auto level = [&](int i, int c) {
       const double rut = soil ? soil->rut_m(c, i, t) : 0.0;
-      return P_(i) + sys_.road(t, i, c) - C.drop_m[c] - rut;
+      return P_(i) + road_at(i, c) - C.drop_m[c] - rut;
     };
     auto force = [&](int i, int c) {
       const UnitRange& r = sys_.ranges()[c];
@@ -151,14 +158,12 @@ class CellObserver {
       const UnitRange& r = sys_.ranges()[c];
       // The first and last cell in contact, scanned in from either end of the range.
       const double* fc = f_.data() + sys_.offset(c);
-      int ka = 0, kb = r.size() - 1;
-      while (ka < r.size() && !(fc[ka] > 0)) ++ka;
+      const int ka = detail::first_positive(fc, r.size());
       if (ka == r.size()) continue;
-      while (!(fc[kb] > 0)) --kb;
+      const int kb = detail::last_positive(fc, r.size());
       const int a = r.lo + ka, b = r.lo + kb;
       // Whether every cell between is in contact (the width below then needs only a and b).
-      int inside = 0;
-      for (int k = ka; k <= kb; ++k) inside += fc[k] > 0 ? 1 : 0;
+      const int inside = detail::count_positive(fc + ka, kb - ka + 1);
       contact_a_[c] = a, contact_b_[c] = b, contiguous_[c] = inside == kb - ka + 1;
       // As the 2D driver and the 3D patch: the level function is the cell's tread compression
       // f / k_i inside (at rest d_i - z_c, patch3d.cc) and its tip penetration g < 0 outside
@@ -201,8 +206,8 @@ class CellObserver {
       int* lo = col_lo_.data() - first;
       int* hi = col_hi_.data() - first;
       if (contiguous_[c]) {
-        for (int i = contact_a_[c]; i <= contact_b_[c]; ++i)
-          lo[i] = std::min(lo[i], jlo), hi[i] = std::max(hi[i], jhi);
+        const int a = contact_a_[c];
+        detail::min_max_fill(lo + a, hi + a, contact_b_[c] - a + 1, jlo, jhi);
         continue;
       }
       const UnitRange& r = sys_.ranges()[c];
