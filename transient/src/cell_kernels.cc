@@ -183,9 +183,71 @@ __attribute__((target("avx2"))) void min_max_fill_avx2(int* lo, int* hi, int n, 
   for (; k < n; ++k) lo[k] = std::min(lo[k], v_lo), hi[k] = std::max(hi[k], v_hi);
 }
 
+/// small_gemm()'s rows [i0, i0 + 4 v) x columns [j0, j0 + w), v <= 3 vectors, w <= 4.
+template <int V, int W>
+__attribute__((target("avx2,fma"))) inline void gemm_block(int i0, int j0, int k, const double* A,
+                                                           int lda, const double* B, int ldb,
+                                                           double* C, int ldc, bool accumulate) {
+  __m256d acc[V][W];
+  for (int v = 0; v < V; ++v)
+    for (int w = 0; w < W; ++w) acc[v][w] = _mm256_setzero_pd();
+  for (int p = 0; p < k; ++p) {
+    __m256d a[V];
+    for (int v = 0; v < V; ++v) a[v] = _mm256_loadu_pd(A + p * lda + i0 + 4 * v);
+    for (int w = 0; w < W; ++w) {
+      const __m256d b = _mm256_broadcast_sd(B + (j0 + w) * ldb + p);
+      for (int v = 0; v < V; ++v) acc[v][w] = _mm256_fmadd_pd(a[v], b, acc[v][w]);
+    }
+  }
+  for (int w = 0; w < W; ++w)
+    for (int v = 0; v < V; ++v) {
+      double* c = C + (j0 + w) * ldc + i0 + 4 * v;
+      _mm256_storeu_pd(
+          c, _mm256_add_pd(acc[v][w], accumulate ? _mm256_loadu_pd(c) : _mm256_setzero_pd()));
+    }
+}
+
+template <int W>
+__attribute__((target("avx2,fma"))) void gemm_columns(int m, int j0, int k, const double* A,
+                                                      int lda, const double* B, int ldb, double* C,
+                                                      int ldc, bool accumulate) {
+  int i = 0;
+  for (; i + 12 <= m; i += 12) gemm_block<3, W>(i, j0, k, A, lda, B, ldb, C, ldc, accumulate);
+  for (; i + 4 <= m; i += 4) gemm_block<1, W>(i, j0, k, A, lda, B, ldb, C, ldc, accumulate);
+  for (; i < m; ++i)  // the last m % 4 rows, in the same order
+    for (int w = 0; w < W; ++w) {
+      double s = 0.0;
+      for (int p = 0; p < k; ++p) s = __builtin_fma(A[p * lda + i], B[(j0 + w) * ldb + p], s);
+      double* c = C + (j0 + w) * ldc + i;
+      *c = s + (accumulate ? *c : 0.0);
+    }
+}
+
+__attribute__((target("avx2,fma"))) void small_gemm_avx2(int m, int n, int k, const double* A,
+                                                         int lda, const double* B, int ldb,
+                                                         double* C, int ldc, bool accumulate) {
+  int j = 0;
+  for (; j + 4 <= n; j += 4) gemm_columns<4>(m, j, k, A, lda, B, ldb, C, ldc, accumulate);
+  for (; j < n; ++j) gemm_columns<1>(m, j, k, A, lda, B, ldb, C, ldc, accumulate);
+}
 #endif
 
 }  // namespace
+
+void small_gemm(int m, int n, int k, const double* A, int lda, const double* B, int ldb, double* C,
+                int ldc, bool accumulate) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  static const bool fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  if (fma) return small_gemm_avx2(m, n, k, A, lda, B, ldb, C, ldc, accumulate);
+#endif
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < m; ++i) {
+      double s = 0.0;
+      for (int p = 0; p < k; ++p) s = std::fma(A[p * lda + i], B[j * ldb + p], s);
+      double* c = C + j * ldc + i;
+      *c = s + (accumulate ? *c : 0.0);
+    }
+}
 
 int count_positive(const double* a, int n) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2

@@ -32,6 +32,13 @@ void lu_row_update(int n, double l, const double* k, double* r);
 /// stiffness b: CellNewton::update_active_set()).
 void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& out);
 
+/// C (=, or += with accumulate) A B for small column-major matrices (A: m x k, lda; B: k x n,
+/// ldb; C: m x n, ldc): each entry fma(A_i,k-1, B_k-1,j, ... fma(A_i0, B_0j, 0)) over the inner
+/// index in order (+ C_ij), as column_product() per column of B (the same bits), register-blocked
+/// on the AVX2 + FMA path (12 rows x 4 columns), std::fma on the portable path.
+void small_gemm(int m, int n, int k, const double* A, int lda, const double* B, int ldb, double* C,
+                int ldc, bool accumulate = false);
+
 /// The first k < n with a[k] > 0 (n if none) and the last (-1 if none): a class's contact ends
 /// (the 3D observer).
 int first_positive(const double* a, int n);

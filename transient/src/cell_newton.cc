@@ -83,13 +83,17 @@ void CellNewton::factor(double gamma) {
   const bool hub_free = sys_.plan().hub_free();
   d_zw_ = hub_free ? gamma : 0.0;  // a prescribed hub: z' = w' = 0, D = I on (z, w)
   // Sections with an active cell.
+  // Per class its first and last active slot (kf_, kl_; kf_ = the range's size if none).
   int s_first = M.m, s_last = -1;
+  kf_.resize(nc);
+  kl_.resize(nc);
   for (int c = 0; c < nc; ++c) {
     const UnitRange& r = sys_.ranges()[c];
-    const int o = sys_.offset(c);
-    for (int k = 0; k < r.size(); ++k)
-      if (kd_(o + k) > 0)
-        s_first = std::min(s_first, r.lo + k), s_last = std::max(s_last, r.lo + k);
+    const double* kd = kd_.data() + sys_.offset(c);
+    kf_[c] = detail::first_positive(kd, r.size());
+    kl_[c] = detail::last_positive(kd, r.size());
+    if (kf_[c] < r.size())
+      s_first = std::min(s_first, r.lo + kf_[c]), s_last = std::max(s_last, r.lo + kl_[c]);
   }
   s0_ = s_first;
   ns_ = s_last >= s_first ? s_last - s_first + 1 : 0;
@@ -128,10 +132,8 @@ void CellNewton::factor(double gamma) {
     for (int c = 0; c < nc; ++c) {
       const UnitRange& r = sys_.ranges()[c];
       const int o = sys_.offset(c), mu = C.multiplicity[c];
-      int kf = -1, kl = -1;
-      for (int k = 0; k < r.size(); ++k)
-        if (kd_(o + k) > 0) kl = k, kf = kf < 0 ? k : kf;
-      if (kf < 0) continue;
+      const int kf = kf_[c], kl = kl_[c];
+      if (kf == r.size()) continue;
       if (ne_ == 0) {
         for (int k = kf; k <= kl; ++k) w_sec_(r.lo + k - s0_) += mu * kd_(o + k);
         continue;
@@ -238,10 +240,13 @@ void CellNewton::factor_dq(double gamma) {
   DQ_(Z + 1, rank) = hub_free ? -1.0 / M.settings.hub_mass_kg : 0.0;
   DQ_(Z, rank) = d_zw_ * DQ_(Z + 1, rank);
   H_.setZero(np_, np_);
-  for (int k = 0; k < np_; ++k) {
-    column_product(M.Cq, DQ_.col(k).head(nq), H_.col(k));
-    if (nr > 0) column_product(M.Cr, DQ_.col(k).segment(2 * nq, nr), H_.col(k), true);
-  }
+  // Cq (D^-1 Q)_q + Cr (D^-1 Q)_r (the bits of a column_product() per column, register-blocked).
+  const int ld = static_cast<int>(DQ_.rows());
+  detail::small_gemm(rank, np_, nq, M.Cq.data(), static_cast<int>(M.Cq.rows()), DQ_.data(), ld,
+                     H_.data(), np_);
+  if (nr > 0)
+    detail::small_gemm(rank, np_, nr, M.Cr.data(), static_cast<int>(M.Cr.rows()),
+                       DQ_.data() + 2 * nq, ld, H_.data(), np_, true);
   H_.row(rank) = DQ_.row(Z);
 }
 

@@ -46,7 +46,8 @@ void CellNewton::cap_product(double gamma) {
   // I - gamma H K by columns (the vectorised product: Eigen's blocked one would hand these sizes
   // to OpenMP threads, which only wait on the shared cores).
   cap_mat_.resize(np_, np_);
-  for (int k = 0; k < np_; ++k) column_product(H_, K_.col(k), cap_mat_.col(k));
+  // H K (the bits of a column_product() per column of K, register-blocked).
+  detail::small_gemm(np_, np_, np_, H_.data(), np_, K_.data(), np_, cap_mat_.data(), np_);
   cap_mat_ *= -gamma;
   cap_mat_.diagonal().array() += 1.0;
 }
@@ -129,19 +130,18 @@ void CellNewton::update_active_set() {
     dw_.emplace_back(i, weight(kd_(k)) - w_old);
     if (ne_ > 0) slot_coefficient(k);
   }
-  // dK = Tc^T diag(dw) Tc over the changed sections' rows T~_i (Tc), by columns.
+  // dK = Tc^T diag(dw) Tc over the changed sections' rows T~_i: Tc^T (np x changes, a row T~_i
+  // per column, contiguous) times W = diag(dw) Tc, one register-blocked product.
   const int nchg = static_cast<int>(dw_.size());
-  Tc_.resize(nchg, np_);
-  dwv_.resize(nchg);
+  Tc_.resize(np_, nchg);
+  W_.resize(nchg, np_);
   for (int a = 0; a < nchg; ++a) {
-    Tc_.row(a).head(rank) = -TT_.col(dw_[a].first).transpose();
-    Tc_(a, rank) = dz;
-    dwv_(a) = dw_[a].second;
+    Tc_.col(a).head(rank) = -TT_.col(dw_[a].first);
+    Tc_(rank, a) = dz;
   }
-  for (int k = 0; k < np_; ++k) {
-    trow_ = dwv_.cwiseProduct(Tc_.col(k));
-    column_dots(Tc_, trow_, K_.col(k), 1.0, true);
-  }
+  for (int b = 0; b < np_; ++b)
+    for (int a = 0; a < nchg; ++a) W_(a, b) = dw_[a].second * Tc_(b, a);
+  detail::small_gemm(np_, np_, nchg, Tc_.data(), np_, W_.data(), nchg, K_.data(), np_, true);
   // The span of sections with an active cell (solve() reads T~ over it) only grows here.
   int lo = ns_ > 0 ? s0_ : M.m, hi = ns_ > 0 ? s0_ + ns_ - 1 : -1;
   for (const auto& [i, dw] : dw_) lo = std::min(lo, i), hi = std::max(hi, i);

@@ -182,7 +182,9 @@ void CellSystem::slots(double t, const double* y, Eigen::VectorXd& g, Eigen::Vec
     double* __restrict Fc = F->data() + r.lo;
     const double mu = cm_.classes.multiplicity[c];
     for (int k = 0; k < n; ++k) {
-      const double fk = gk[k] > 0 ? kc[k] * gk[k] : 0.0;
+      // k max(0, g) with the select before the product (k > 0: the same values), so that the
+      // loop vectorises.
+      const double fk = kc[k] * (gk[k] > 0 ? gk[k] : 0.0);
       fc[k] = fk;
       Fc[k] += mu * fk;
     }

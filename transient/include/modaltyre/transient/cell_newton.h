@@ -72,9 +72,11 @@ class CellNewton {
   Eigen::VectorXd kc_slot_;      ///< per slot: contact spring
   std::vector<int> slot_class_;  ///< per slot: its class
   Eigen::MatrixXd TT_;           ///< T^T (rank x m)
-  Eigen::MatrixXd Tc_;           ///< update_active_set(): T~ rows of the changed sections
-  Eigen::VectorXd trow_, dwv_, zero_row_, mukd_, gkc_;
-  std::vector<int> changed_, rowperm_;
+  /// update_active_set(): T~ rows of the changed sections as columns (Tc_) and scaled by their
+  /// change of weight (W_ = diag(dw) Tc_^T).
+  Eigen::MatrixXd Tc_, W_;
+  Eigen::VectorXd trow_, zero_row_, mukd_, gkc_;
+  std::vector<int> changed_, rowperm_, kf_, kl_;
   std::vector<std::pair<int, double>> dw_;
   double dq_gamma_ = 0, dq_Omega_ = 0, dq_dOmega_ = 0;
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
