@@ -214,13 +214,22 @@ __attribute__((target("avx2,fma"))) void gemm_columns(int m, int j0, int k, cons
   int i = 0;
   for (; i + 12 <= m; i += 12) gemm_block<3, W>(i, j0, k, A, lda, B, ldb, C, ldc, accumulate);
   for (; i + 4 <= m; i += 4) gemm_block<1, W>(i, j0, k, A, lda, B, ldb, C, ldc, accumulate);
-  for (; i < m; ++i)  // the last m % 4 rows, in the same order
-    for (int w = 0; w < W; ++w) {
-      double s = 0.0;
-      for (int p = 0; p < k; ++p) s = __builtin_fma(A[p * lda + i], B[(j0 + w) * ldb + p], s);
-      double* c = C + (j0 + w) * ldc + i;
-      *c = s + (accumulate ? *c : 0.0);
-    }
+  if (i == m) return;
+  // The last m % 4 rows as one masked vector (the same operations per entry; masked lanes are
+  // neither read nor written).
+  const __m256i mask = _mm256_setr_epi64x(-1, m - i > 1 ? -1 : 0, m - i > 2 ? -1 : 0, 0);
+  __m256d acc[W];
+  for (int w = 0; w < W; ++w) acc[w] = _mm256_setzero_pd();
+  for (int p = 0; p < k; ++p) {
+    const __m256d a = _mm256_maskload_pd(A + p * lda + i, mask);
+    for (int w = 0; w < W; ++w)
+      acc[w] = _mm256_fmadd_pd(a, _mm256_broadcast_sd(B + (j0 + w) * ldb + p), acc[w]);
+  }
+  for (int w = 0; w < W; ++w) {
+    double* c = C + (j0 + w) * ldc + i;
+    const __m256d old = accumulate ? _mm256_maskload_pd(c, mask) : _mm256_setzero_pd();
+    _mm256_maskstore_pd(c, mask, _mm256_add_pd(acc[w], old));
+  }
 }
 
 __attribute__((target("avx2,fma"))) void small_gemm_avx2(int m, int n, int k, const double* A,
