@@ -11,6 +11,18 @@
 namespace modaltyre::transient::detail {
 namespace {
 
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+/// Whether this CPU runs the AVX2 (and FMA) paths (checked once).
+bool avx2() {
+  static const bool yes = __builtin_cpu_supports("avx2");
+  return yes;
+}
+bool avx2_fma() {
+  static const bool yes = avx2() && __builtin_cpu_supports("fma");
+  return yes;
+}
+#endif
+
 /// Rows [k, n) of one output in order onto its combined partial sums s.
 double tail(int k, int n, const double* a, const double* x, const double* c, const double* y,
             double s) {
@@ -246,8 +258,7 @@ __attribute__((target("avx2,fma"))) void small_gemm_avx2(int m, int n, int k, co
 void small_gemm(int m, int n, int k, const double* A, int lda, const double* B, int ldb, double* C,
                 int ldc, bool accumulate) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  static const bool fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  if (fma) return small_gemm_avx2(m, n, k, A, lda, B, ldb, C, ldc, accumulate);
+  if (avx2_fma()) return small_gemm_avx2(m, n, k, A, lda, B, ldb, C, ldc, accumulate);
 #endif
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < m; ++i) {
@@ -260,8 +271,7 @@ void small_gemm(int m, int n, int k, const double* A, int lda, const double* B, 
 
 int count_positive(const double* a, int n) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) return count_positive_avx2(a, n);
+  if (avx2()) return count_positive_avx2(a, n);
 #endif
   int count = 0;
   for (int k = 0; k < n; ++k) count += a[k] > 0 ? 1 : 0;
@@ -270,16 +280,14 @@ int count_positive(const double* a, int n) {
 
 void min_max_fill(int* lo, int* hi, int n, int v_lo, int v_hi) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) return min_max_fill_avx2(lo, hi, n, v_lo, v_hi);
+  if (avx2()) return min_max_fill_avx2(lo, hi, n, v_lo, v_hi);
 #endif
   for (int k = 0; k < n; ++k) lo[k] = std::min(lo[k], v_lo), hi[k] = std::max(hi[k], v_hi);
 }
 
 int first_positive(const double* a, int n) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) return first_positive_avx2(a, n);
+  if (avx2()) return first_positive_avx2(a, n);
 #endif
   int k = 0;
   while (k < n && !(a[k] > 0)) ++k;
@@ -288,8 +296,7 @@ int first_positive(const double* a, int n) {
 
 int last_positive(const double* a, int n) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) return last_positive_avx2(a, n);
+  if (avx2()) return last_positive_avx2(a, n);
 #endif
   int k = n - 1;
   while (k >= 0 && !(a[k] > 0)) --k;
@@ -299,8 +306,7 @@ int last_positive(const double* a, int n) {
 void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& out) {
   int k = 0;
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) k = sign_mismatches_avx2(n, a, b, out);
+  if (avx2()) k = sign_mismatches_avx2(n, a, b, out);
 #endif
   for (; k < n; ++k)
     if ((a[k] > 0) != (b[k] > 0)) out.push_back(k);
@@ -308,8 +314,7 @@ void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& 
 
 void lu_row_update(int n, double l, const double* k, double* r) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  if (avx2) return lu_row_update_avx2(n, l, k, r);
+  if (avx2_fma()) return lu_row_update_avx2(n, l, k, r);
 #endif
   for (int j = 0; j < n; ++j) r[j] = std::fma(-l, k[j], r[j]);
 }
@@ -317,8 +322,7 @@ void lu_row_update(int n, double l, const double* k, double* r) {
 void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,
               double s1, double s2, double d, double* y, double* r, double w, double gamma) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  static const bool avx = __builtin_cpu_supports("avx2");
-  if (avx) return band_row_avx(n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
+  if (avx2()) return band_row_avx(n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
 #endif
   band_row_scalar(0, n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
 }
@@ -326,8 +330,7 @@ void band_row(int n, bool with_t, double a, const double* t, const double* y1, c
 void pair_dots(int n, const double* a, const double* b, const double* x, const double* c,
                const double* d, const double* y, double out[2]) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  if (avx2) return pair_dots_avx2(n, a, b, x, c, d, y, out);
+  if (avx2_fma()) return pair_dots_avx2(n, a, b, x, c, d, y, out);
 #endif
   pair_dots_scalar(n, a, b, x, c, d, y, out);
 }
