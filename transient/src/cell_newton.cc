@@ -327,9 +327,14 @@ void CellNewton::solve(double* x) {
   double* xe = x + nx_;
   // phi1 = -gamma sum_i T~_i^T s_i, s_i = sum_c mu_c kd_ic (M_EE^-1 b_E)_ic.
   phi_.setZero(np_);
+  // At rest M_EE is diagonal: its solves are products with d^-1 inside the passes below (the
+  // same operations, without a copy and a pass of their own).
+  const bool at_rest = ee_s1_ == 0 && ee_s2_ == 0;
   if (ne_ > 0 && ns_ > 0) {
-    work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
-    solve_ee(work_e_.data());
+    if (!at_rest) {
+      work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
+      solve_ee(work_e_.data());
+    }
     work_s_.setZero(ns_);
     // Over each class's slots within the sections [s0, s0 + ns) (mu kd = 0 where not active).
     for (int c = 0; c < nc; ++c) {
@@ -337,9 +342,15 @@ void CellNewton::solve(double* x) {
       const int o = sys_.offset(c), k0 = std::max(0, s0_ - r.lo),
                 k1 = std::min(r.size(), s0_ + ns_ - r.lo);
       const double* mk = mukd_.data() + o;
-      const double* we = work_e_.data() + o;
       double* ws = work_s_.data() + (r.lo - s0_);
-      for (int k = k0; k < k1; ++k) ws[k] += mk[k] * we[k];
+      if (at_rest) {
+        const double* b = xe + o;
+        const double* d = ee_d_inv_.data() + o;
+        for (int k = k0; k < k1; ++k) ws[k] += mk[k] * (b[k] * d[k]);
+      } else {
+        const double* we = work_e_.data() + o;
+        for (int k = k0; k < k1; ++k) ws[k] += mk[k] * we[k];
+      }
     }
     column_dots(Tt_, work_s_, phi_, -gamma_);
   }
@@ -366,8 +377,16 @@ void CellNewton::solve(double* x) {
         const double* g = gkc_.data() + o;
         const double* ws = work_s_.data() + (r.lo - s0_);
         double* xc = xe + o;
-        for (int k = k0; k < k1; ++k) xc[k] += g[k] * ws[k];
+        if (at_rest) {
+          const double* d = ee_d_inv_.data() + o;
+          for (int k = 0; k < std::min(k0, r.size()); ++k) xc[k] *= d[k];
+          for (int k = k0; k < k1; ++k) xc[k] = (xc[k] + g[k] * ws[k]) * d[k];
+          for (int k = std::max(k0, k1); k < r.size(); ++k) xc[k] *= d[k];
+        } else {
+          for (int k = k0; k < k1; ++k) xc[k] += g[k] * ws[k];
+        }
       }
+      if (at_rest) return;
     }
     solve_ee(xe);
   }
