@@ -333,10 +333,15 @@ int CellSystem::update_contact_set(double t, const double* y) const {
     // did not hold the scenario's contact. The undeformed tread's penetration z - s_i - u_i is
     // penetration()'s P over the span, and from a contiguous row of T^T beyond it.
     if (r.size() == 0) continue;
+    // The road's height from penetration()'s per-section heights where it has them (the same
+    // values; a cleat's cosine per check before).
+    const bool on_road = plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c]);
     auto outside = [&](int i) {
-      const double p = span_.contains(i) ? P_(i) : (z - M.tyre.sag(i)) - TT_.col(i).dot(xi_);
+      const bool in_span = span_.contains(i);
+      const double p = in_span ? P_(i) : (z - M.tyre.sag(i)) - TT_.col(i).dot(xi_);
+      const double h = !on_road ? 0.0 : in_span ? road_(i - span_.lo) : road(t, i, c);
       const double rut = soil_ ? soil_->rut_m(c, i, t) : 0.0;
-      return p - cm_.classes.drop_m[c] + road(t, i, c) - rut > 0;
+      return p - cm_.classes.drop_m[c] + h - rut > 0;
     };
     for (int k = 1; k <= kEscapeCheckSections; ++k) {
       if (r.lo - k >= 0 && outside(r.lo - k)) escaped_ = true;
