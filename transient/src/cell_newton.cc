@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cell_kernels.h"
 #include "modaltyre/transient/column_product.h"
 #include "modaltyre/transient/ode_system.h"
 #include "row_lu_solve.h"
 
 namespace modaltyre::transient {
+
+using detail::band_row;
 
 CellNewton::CellNewton(const CellModel& cm, const CellSystem& system)
     : cm_(cm), M_(cm.M()), sys_(system) {
@@ -63,10 +66,12 @@ bool CellNewton::setup(double t, const double* y, double gamma, bool jacobian_ok
     Omega_ = sys_.spin(t);
     dOmega_ = sys_.spin_rate(t);
     jacobian_ready_ = true;
+  } else if (semismooth_) {
+    Omega_ = sys_.spin(t);
+    dOmega_ = sys_.spin_rate(t);
   }
   factor(gamma);
-  const Eigen::MatrixXd& lu = cap_.matrixLU();
-  return lu.allFinite() && (lu.diagonal().array() != 0).all() && ee_d_inv_.allFinite();
+  return cap_lu_.allFinite() && (cap_lu_.diagonal().array() != 0).all() && ee_d_inv_.allFinite();
 }
 
 void CellNewton::factor(double gamma) {
@@ -78,21 +83,24 @@ void CellNewton::factor(double gamma) {
   const bool hub_free = sys_.plan().hub_free();
   d_zw_ = hub_free ? gamma : 0.0;  // a prescribed hub: z' = w' = 0, D = I on (z, w)
   // Sections with an active cell.
+  // Per class its first and last active slot (kf_, kl_; kf_ = the range's size if none).
   int s_first = M.m, s_last = -1;
+  kf_.resize(nc);
+  kl_.resize(nc);
   for (int c = 0; c < nc; ++c) {
     const UnitRange& r = sys_.ranges()[c];
-    const int o = sys_.offset(c);
-    for (int k = 0; k < r.size(); ++k)
-      if (kd_(o + k) > 0)
-        s_first = std::min(s_first, r.lo + k), s_last = std::max(s_last, r.lo + k);
+    const double* kd = kd_.data() + sys_.offset(c);
+    kf_[c] = detail::first_positive(kd, r.size());
+    kl_[c] = detail::last_positive(kd, r.size());
+    if (kf_[c] < r.size())
+      s_first = std::min(s_first, r.lo + kf_[c]), s_last = std::max(s_last, r.lo + kl_[c]);
   }
   s0_ = s_first;
   ns_ = s_last >= s_first ? s_last - s_first + 1 : 0;
   Tt_.resize(ns_, np_);
-  for (int s = 0; s < ns_; ++s) {
-    Tt_.row(s).head(rank) = -M.T.row(s0_ + s);
-    Tt_(s, rank) = hub_free ? 1.0 : 0.0;  // d g / d z (0: z an input)
-  }
+  // T~ = [-T, d g / d z] over the sections, column by column (contiguous in both).
+  if (ns_ > 0) Tt_.leftCols(rank) = -M.T.middleRows(s0_, ns_);
+  Tt_.col(rank).setConstant(hub_free ? 1.0 : 0.0);  // d g / d z (0: z an input)
   // M_EE's diagonal per slot, its (uniform) super-diagonals along each class.
   const double adv = Omega_ / M.tyre.dtheta_rad;
   adv_ = adv;
@@ -124,10 +132,8 @@ void CellNewton::factor(double gamma) {
     for (int c = 0; c < nc; ++c) {
       const UnitRange& r = sys_.ranges()[c];
       const int o = sys_.offset(c), mu = C.multiplicity[c];
-      int kf = -1, kl = -1;
-      for (int k = 0; k < r.size(); ++k)
-        if (kd_(o + k) > 0) kl = k, kf = kf < 0 ? k : kf;
-      if (kf < 0) continue;
+      const int kf = kf_[c], kl = kl_[c];
+      if (kf == r.size()) continue;
       if (ne_ == 0) {
         for (int k = kf; k <= kl; ++k) w_sec_(r.lo + k - s0_) += mu * kd_(o + k);
         continue;
@@ -146,26 +152,16 @@ void CellNewton::factor(double gamma) {
       const int rows = kl - kf + 1;
       Y_.resize(rows, np_);
       zero_row_.setZero(np_);
+      // With this row's term of R in the same pass (per section, the classes' terms are added in
+      // the classes' order, as before).
       for (int k = kl; k >= kf; --k) {
         const int i = r.lo + k, row = k - kf;
         const double kd = kd_(o + k), a = kd > 0 ? kd / cm_.c_kv(i) : 0.0;
-        const double d = ee_d_inv_(o + k), s1 = ee_s1_, s2 = ee_s2_;
         const double* t = TtR_.row(i - s0_).data();
         const double* y1 = row + 1 < rows ? Y_.row(row + 1).data() : zero_row_.data();
         const double* y2 = row + 2 < rows ? Y_.row(row + 2).data() : zero_row_.data();
-        double* y = Y_.row(row).data();
-        if (kd > 0) {
-          for (int j = 0; j < np_; ++j) y[j] = ((a * t[j] - s1 * y1[j]) - s2 * y2[j]) * d;
-        } else {
-          for (int j = 0; j < np_; ++j) y[j] = ((0.0 - s1 * y1[j]) - s2 * y2[j]) * d;
-        }
-      }
-      for (int k = kf; k <= kl; ++k) {
-        const double kd = kd_(o + k);
-        if (kd > 0) {
-          const int s = r.lo + k - s0_;
-          RR_.row(s) += (mu * kd) * (TtR_.row(s) - gamma * Y_.row(k - kf));
-        }
+        band_row(np_, kd > 0, a, t, y1, y2, ee_s1_, ee_s2_, ee_d_inv_(o + k), Y_.row(row).data(),
+                 kd > 0 ? RR_.row(i - s0_).data() : nullptr, mu * kd, gamma);
       }
     }
   }
@@ -175,6 +171,11 @@ void CellNewton::factor(double gamma) {
   }
   if (ns_ == 0) {
     K_.setZero(np_, np_);
+  } else if (semismooth_) {
+    // More than one class: K by the vectorised column products (a flat crown keeps the 2D
+    // solver's order of operations below).
+    K_.resize(np_, np_);
+    for (int k = 0; k < np_; ++k) column_dots(Tt_, R.col(k), K_.col(k));
   } else {
     K_.noalias() = Tt_.transpose().lazyProduct(R);
   }
@@ -188,8 +189,15 @@ void CellNewton::factor(double gamma) {
   // The capacitance matrix in the 2D solver's order of operations (contact_newton.cc): a flat
   // crown's one class then repeats the 2D transient's arithmetic (FlatCrown test; a
   // rounding-level change here moved its 0.3 s hold's end load by 0.9 %).
-  cap_mat_ = Eigen::MatrixXd::Identity(np_, np_) - gamma * H_.lazyProduct(K_);
-  factor_cap();
+  if (semismooth_) {
+    // More than one class: the vectorised product and LU of update_cap() (Eigen's LU where a
+    // pivot vanishes, so that setup() reports the singular matrix as before).
+    cap_product(gamma);
+    if (!lu_cap()) factor_cap();
+  } else {
+    cap_mat_ = Eigen::MatrixXd::Identity(np_, np_) - gamma * H_.lazyProduct(K_);
+    factor_cap();
+  }
 }
 
 void CellNewton::factor_cap() {
@@ -232,10 +240,13 @@ void CellNewton::factor_dq(double gamma) {
   DQ_(Z + 1, rank) = hub_free ? -1.0 / M.settings.hub_mass_kg : 0.0;
   DQ_(Z, rank) = d_zw_ * DQ_(Z + 1, rank);
   H_.setZero(np_, np_);
-  for (int k = 0; k < np_; ++k) {
-    column_product(M.Cq, DQ_.col(k).head(nq), H_.col(k));
-    if (nr > 0) column_product(M.Cr, DQ_.col(k).segment(2 * nq, nr), H_.col(k), true);
-  }
+  // Cq (D^-1 Q)_q + Cr (D^-1 Q)_r (the bits of a column_product() per column, register-blocked).
+  const int ld = static_cast<int>(DQ_.rows());
+  detail::small_gemm(rank, np_, nq, M.Cq.data(), static_cast<int>(M.Cq.rows()), DQ_.data(), ld,
+                     H_.data(), np_);
+  if (nr > 0)
+    detail::small_gemm(rank, np_, nr, M.Cr.data(), static_cast<int>(M.Cr.rows()),
+                       DQ_.data() + 2 * nq, ld, H_.data(), np_, true);
   H_.row(rank) = DQ_.row(Z);
 }
 
@@ -283,21 +294,25 @@ void CellNewton::solve_ee(double* y) const {
       dc[l] = dinv + sys_.offset(c);
       nmin = std::min(nmin, n[l]);
     }
+
     // Steps t = 0, 1 from each end (the band's boundary), then t = 2 .. nmin - 1 in lockstep,
     // then each lane's remaining front.
     const int head = std::min(2, nmin);
     for (int l = 0; l < lanes; ++l)
       for (int t = 0; t < head; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
+    double* ye[kLanes];
+    const double* de[kLanes];
+    for (int l = 0; l < lanes; ++l) ye[l] = yc[l] + n[l] - 1, de[l] = dc[l] + n[l] - 1;
     if (lanes == kLanes) {
-      double* ye[kLanes];
-      const double* de[kLanes];
-      for (int l = 0; l < kLanes; ++l) ye[l] = yc[l] + n[l] - 1, de[l] = dc[l] + n[l] - 1;
       for (int t = head; t < nmin; ++t)
         for (int l = 0; l < kLanes; ++l)
           ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
     } else {
-      for (int l = 0; l < lanes; ++l)
-        for (int t = head; t < nmin; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
+      // A last group of fewer classes in lockstep too (one class at a time, the 6 classes left
+      // of 30 were the cleat's longest chain).
+      for (int t = head; t < nmin; ++t)
+        for (int l = 0; l < lanes; ++l)
+          ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
     }
     for (int l = 0; l < lanes; ++l)
       for (int t = nmin; t < n[l]; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
@@ -312,9 +327,14 @@ void CellNewton::solve(double* x) {
   double* xe = x + nx_;
   // phi1 = -gamma sum_i T~_i^T s_i, s_i = sum_c mu_c kd_ic (M_EE^-1 b_E)_ic.
   phi_.setZero(np_);
+  // At rest M_EE is diagonal: its solves are products with d^-1 inside the passes below (the
+  // same operations, without a copy and a pass of their own).
+  const bool at_rest = ee_s1_ == 0 && ee_s2_ == 0;
   if (ne_ > 0 && ns_ > 0) {
-    work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
-    solve_ee(work_e_.data());
+    if (!at_rest) {
+      work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
+      solve_ee(work_e_.data());
+    }
     work_s_.setZero(ns_);
     // Over each class's slots within the sections [s0, s0 + ns) (mu kd = 0 where not active).
     for (int c = 0; c < nc; ++c) {
@@ -322,9 +342,15 @@ void CellNewton::solve(double* x) {
       const int o = sys_.offset(c), k0 = std::max(0, s0_ - r.lo),
                 k1 = std::min(r.size(), s0_ + ns_ - r.lo);
       const double* mk = mukd_.data() + o;
-      const double* we = work_e_.data() + o;
       double* ws = work_s_.data() + (r.lo - s0_);
-      for (int k = k0; k < k1; ++k) ws[k] += mk[k] * we[k];
+      if (at_rest) {
+        const double* b = xe + o;
+        const double* d = ee_d_inv_.data() + o;
+        for (int k = k0; k < k1; ++k) ws[k] += mk[k] * (b[k] * d[k]);
+      } else {
+        const double* we = work_e_.data() + o;
+        for (int k = k0; k < k1; ++k) ws[k] += mk[k] * we[k];
+      }
     }
     column_dots(Tt_, work_s_, phi_, -gamma_);
   }
@@ -351,8 +377,16 @@ void CellNewton::solve(double* x) {
         const double* g = gkc_.data() + o;
         const double* ws = work_s_.data() + (r.lo - s0_);
         double* xc = xe + o;
-        for (int k = k0; k < k1; ++k) xc[k] += g[k] * ws[k];
+        if (at_rest) {
+          const double* d = ee_d_inv_.data() + o;
+          for (int k = 0; k < std::min(k0, r.size()); ++k) xc[k] *= d[k];
+          for (int k = k0; k < k1; ++k) xc[k] = (xc[k] + g[k] * ws[k]) * d[k];
+          for (int k = std::max(k0, k1); k < r.size(); ++k) xc[k] *= d[k];
+        } else {
+          for (int k = k0; k < k1; ++k) xc[k] += g[k] * ws[k];
+        }
       }
+      if (at_rest) return;
     }
     solve_ee(xe);
   }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cell_kernels.h"
 #include "modaltyre/transient/cell_newton.h"
 #include "modaltyre/transient/column_product.h"
 #include "modaltyre/transient/ode_system.h"
@@ -37,20 +38,29 @@ void CellNewton::slot_coefficient(int k) {
 }
 
 void CellNewton::update_cap(double gamma) {
+  cap_product(gamma);
+  if (!lu_cap()) factor(gamma);  // the whole factorisation at the current contact set
+}
+
+void CellNewton::cap_product(double gamma) {
   // I - gamma H K by columns (the vectorised product: Eigen's blocked one would hand these sizes
   // to OpenMP threads, which only wait on the shared cores).
   cap_mat_.resize(np_, np_);
-  for (int k = 0; k < np_; ++k) column_product(H_, K_.col(k), cap_mat_.col(k));
+  // H K (the bits of a column_product() per column of K, register-blocked).
+  detail::small_gemm(np_, np_, np_, H_.data(), np_, K_.data(), np_, cap_mat_.data(), np_);
   cap_mat_ *= -gamma;
   cap_mat_.diagonal().array() += 1.0;
-  // Its LU with partial pivoting, unblocked on the row-major copy solve_cap() reads (Eigen's
-  // blocked LU runs these 42 x 42 through its matrix-product kernels).
+}
+
+bool CellNewton::lu_cap() {
+  // The LU of cap_mat_ with partial pivoting, unblocked on the row-major copy solve_cap() reads
+  // (Eigen's blocked LU runs these 42 x 42 through its matrix-product kernels); each row update
+  // a fused multiply-add per entry (detail::lu_row_update).
   const int n = np_;
   cap_lu_ = cap_mat_;
   double* a = cap_lu_.data();
   rowperm_.resize(n);
   for (int i = 0; i < n; ++i) rowperm_[i] = i;
-  bool ok = true;
   for (int k = 0; k < n; ++k) {
     int p = k;
     for (int i = k + 1; i < n; ++i)
@@ -60,24 +70,18 @@ void CellNewton::update_cap(double gamma) {
       std::swap(rowperm_[k], rowperm_[p]);
     }
     const double pivot = a[k * n + k];
-    if (!(std::isfinite(pivot) && pivot != 0)) {
-      ok = false;
-      break;
-    }
+    if (!(std::isfinite(pivot) && pivot != 0)) return false;
     const double* rk = a + k * n;
     for (int i = k + 1; i < n; ++i) {
       double* ri = a + i * n;
       const double l = ri[k] / pivot;
       ri[k] = l;
-      for (int j = k + 1; j < n; ++j) ri[j] -= l * rk[j];
+      detail::lu_row_update(n - k - 1, l, rk + k + 1, ri + k + 1);
     }
-  }
-  if (!ok) {
-    factor(gamma);  // the whole factorisation at the current contact set
-    return;
   }
   cap_perm_.resize(n);
   for (int pos = 0; pos < n; ++pos) cap_perm_(rowperm_[pos]) = pos;
+  return true;
 }
 
 void CellNewton::update_active_set() {
@@ -85,8 +89,7 @@ void CellNewton::update_active_set() {
   const int n = sys_.cells();
   if (f.size() != n || kd_.size() != n) return;
   changed_.clear();
-  for (int k = 0; k < n; ++k)
-    if ((f(k) > 0) != (kd_(k) > 0)) changed_.push_back(k);
+  detail::sign_mismatches(n, f.data(), kd_.data(), changed_);
   if (sys_.soil()) {
     // On a soil a cell in contact also changes side of a kink: between the virgin curve and
     // its memory's branch (cell_soil.h) its series stiffness jumps (to k on a rigid-plastic
@@ -127,19 +130,18 @@ void CellNewton::update_active_set() {
     dw_.emplace_back(i, weight(kd_(k)) - w_old);
     if (ne_ > 0) slot_coefficient(k);
   }
-  // dK = Tc^T diag(dw) Tc over the changed sections' rows T~_i (Tc), by columns.
+  // dK = Tc^T diag(dw) Tc over the changed sections' rows T~_i: Tc^T (np x changes, a row T~_i
+  // per column, contiguous) times W = diag(dw) Tc, one register-blocked product.
   const int nchg = static_cast<int>(dw_.size());
-  Tc_.resize(nchg, np_);
-  dwv_.resize(nchg);
+  Tc_.resize(np_, nchg);
+  W_.resize(nchg, np_);
   for (int a = 0; a < nchg; ++a) {
-    Tc_.row(a).head(rank) = -TT_.col(dw_[a].first).transpose();
-    Tc_(a, rank) = dz;
-    dwv_(a) = dw_[a].second;
+    Tc_.col(a).head(rank) = -TT_.col(dw_[a].first);
+    Tc_(rank, a) = dz;
   }
-  for (int k = 0; k < np_; ++k) {
-    trow_ = dwv_.cwiseProduct(Tc_.col(k));
-    column_dots(Tc_, trow_, K_.col(k), 1.0, true);
-  }
+  for (int b = 0; b < np_; ++b)
+    for (int a = 0; a < nchg; ++a) W_(a, b) = dw_[a].second * Tc_(b, a);
+  detail::small_gemm(np_, np_, nchg, Tc_.data(), np_, W_.data(), nchg, K_.data(), np_, true);
   // The span of sections with an active cell (solve() reads T~ over it) only grows here.
   int lo = ns_ > 0 ? s0_ : M.m, hi = ns_ > 0 ? s0_ + ns_ - 1 : -1;
   for (const auto& [i, dw] : dw_) lo = std::min(lo, i), hi = std::max(hi, i);

@@ -92,6 +92,7 @@ CellSystem::CellSystem(const CellModel& cm, const ScenarioPlan& plan, std::vecto
   }
   CqT_ = M.Cq.transpose();
   CrT_ = M.Cr.transpose();
+  TT_ = M.T.transpose();
   in_contact_.assign(ncells_, 0);
   if (soil_) kd_soil_.setZero(ncells_);
 }
@@ -125,6 +126,11 @@ void CellSystem::contact_coordinates(const double* y) const {
 
 void CellSystem::penetration(double t, const double* y, Eigen::VectorXd& g,
                              Eigen::VectorXd& P) const {
+  slots(t, y, g, P, nullptr, nullptr);
+}
+
+void CellSystem::slots(double t, const double* y, Eigen::VectorXd& g, Eigen::VectorXd& P,
+                       Eigen::VectorXd* f, Eigen::VectorXd* F) const {
   const TransientModel& M = cm_.M();
   contact_coordinates(y);
   if (P.size() != M.m) P.setZero(M.m);
@@ -152,13 +158,36 @@ void CellSystem::penetration(double t, const double* y, Eigen::VectorXd& g,
     const double drop = cm_.classes.drop_m[c];
     double* gc = g.data() + o;
     const double* Pc = P.data() + r.lo;
-    for (int k = 0; k < r.size(); ++k) gc[k] = Pc[k] - drop;
+    const double* ec = e + o;
+    const int n = r.size();
+    // g = ((P - drop) + h) - e in one pass (the same operations in the same order as three).
     if (plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c])) {
       const double* hc = road_.data() + (r.lo - lo);
-      for (int k = 0; k < r.size(); ++k) gc[k] += hc[k];
+      if (relax_) {
+        for (int k = 0; k < n; ++k) gc[k] = ((Pc[k] - drop) + hc[k]) - ec[k];
+      } else {
+        for (int k = 0; k < n; ++k) gc[k] = (Pc[k] - drop) + hc[k];
+      }
+    } else if (relax_) {
+      for (int k = 0; k < n; ++k) gc[k] = (Pc[k] - drop) - ec[k];
+    } else {
+      for (int k = 0; k < n; ++k) gc[k] = Pc[k] - drop;
     }
-    if (relax_)
-      for (int k = 0; k < r.size(); ++k) gc[k] -= e[o + k];
+    if (!f) continue;
+    // The class's forces and its share of the section forces while its g is in cache (as
+    // forces() computed them in passes over all slots: the same values).
+    const double* __restrict kc = kc_slot_.data() + o;
+    const double* __restrict gk = gc;
+    double* __restrict fc = f->data() + o;
+    double* __restrict Fc = F->data() + r.lo;
+    const double mu = cm_.classes.multiplicity[c];
+    for (int k = 0; k < n; ++k) {
+      // k max(0, g) with the select before the product (k > 0: the same values), so that the
+      // loop vectorises.
+      const double fk = kc[k] * (gk[k] > 0 ? gk[k] : 0.0);
+      fc[k] = fk;
+      Fc[k] += mu * fk;
+    }
   }
 }
 
@@ -174,12 +203,13 @@ void CellSystem::forces(double t, const double* y, Eigen::VectorXd& f, Eigen::Ve
       penetration(t, y, f, P ? *P : P_);
     }
     soil_->forces(t, ranges_, offset_, f.data(), kd_soil_.data());
-  } else if (g) {
-    penetration(t, y, *g, P ? *P : P_);
-    f = (g->array() > 0).select(kc_slot_.array() * g->array(), 0.0);
   } else {
-    penetration(t, y, f, P ? *P : P_);
-    f = (f.array() > 0).select(kc_slot_.array() * f.array(), 0.0);
+    // The rigid road: f = k max(0, g) and F = sum_c mu_c f_c in penetration's pass (slots()).
+    if (F.size() != M.m) F.resize(M.m);
+    F.setZero();
+    f.resize(ncells_);
+    slots(t, y, g ? *g : g_work_, P ? *P : P_, &f, &F);
+    return;
   }
   if (F.size() != M.m) F.resize(M.m);
   F.setZero();
@@ -224,16 +254,27 @@ void CellSystem::rhs(double t, const double* y, double* ydot) const {
   const int E = M.e_index();
   const Eigen::Map<const Eigen::VectorXd> e(y + E, ncells_);
   Eigen::Map<Eigen::VectorXd> de(ydot + E, ncells_);
-  de = f_.cwiseProduct(inv_c_) - e.cwiseProduct(k_over_c_);
   const double adv = Omega / M.tyre.dtheta_rad;
-  if (adv == 0) return;
+  if (adv == 0) {
+    de = f_.cwiseProduct(inv_c_) - e.cwiseProduct(k_over_c_);
+    return;
+  }
+  // Per class in one pass: (((f / c' - e k' / c') + a0 e_k) + a1 e_k+1) + a2 e_k+2, the upwind
+  // terms that reach beyond the range left out (the same operations in the same order as a pass
+  // per term).
+  const double a0 = kUpwind[0] * adv, a1 = kUpwind[1] * adv, a2 = kUpwind[2] * adv;
+  const double *fv = f_.data(), *ic = inv_c_.data(), *kc = k_over_c_.data(), *ev = y + E;
+  double* dv = ydot + E;
   const int nc = cm_.classes.size();
   for (int c = 0; c < nc; ++c) {
     const int n = ranges_[c].size(), o = offset_[c];
-    if (n == 0) continue;
-    de.segment(o, n) += kUpwind[0] * adv * e.segment(o, n);
-    if (n > 1) de.segment(o, n - 1) += kUpwind[1] * adv * e.segment(o + 1, n - 1);
-    if (n > 2) de.segment(o, n - 2) += kUpwind[2] * adv * e.segment(o + 2, n - 2);
+    const double *f = fv + o, *ik = ic + o, *kk = kc + o, *ec = ev + o;
+    double* d = dv + o;
+    int k = 0;
+    for (; k + 2 < n; ++k)
+      d[k] = (((f[k] * ik[k] - ec[k] * kk[k]) + a0 * ec[k]) + a1 * ec[k + 1]) + a2 * ec[k + 2];
+    for (; k + 1 < n; ++k) d[k] = ((f[k] * ik[k] - ec[k] * kk[k]) + a0 * ec[k]) + a1 * ec[k + 1];
+    for (; k < n; ++k) d[k] = (f[k] * ik[k] - ec[k] * kk[k]) + a0 * ec[k];
   }
 }
 
@@ -275,21 +316,32 @@ int CellSystem::update_contact_set(double t, const double* y) const {
   }
   long changed = 0;
   const int nc = cm_.classes.size();
+  const double z = hub_z(t, y);
   for (int c = 0; c < nc; ++c) {
     const UnitRange& r = ranges_[c];
     const int o = offset_[c], mu = cm_.classes.multiplicity[c];
+    const double* gc = g_.data() + o;
+    char* in = in_contact_.data() + o;
+    int flips = 0;
     for (int k = 0; k < r.size(); ++k) {
-      const char now = g_(o + k) > 0;
-      if (now != in_contact_[o + k]) changed += mu, in_contact_[o + k] = now;
+      const char now = gc[k] > 0 ? 1 : 0;
+      flips += now ^ in[k];
+      in[k] = now;
     }
+    changed += static_cast<long>(mu) * flips;
     // Sections just outside the range (e = 0 there): a positive penetration means the range
-    // did not hold the scenario's contact.
+    // did not hold the scenario's contact. The undeformed tread's penetration z - s_i - u_i is
+    // penetration()'s P over the span, and from a contiguous row of T^T beyond it.
     if (r.size() == 0) continue;
-    const double z = hub_z(t, y);
+    // The road's height from penetration()'s per-section heights where it has them (the same
+    // values; a cleat's cosine per check before).
+    const bool on_road = plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c]);
     auto outside = [&](int i) {
-      const double u = M.T.row(i).dot(xi_);
+      const bool in_span = span_.contains(i);
+      const double p = in_span ? P_(i) : (z - M.tyre.sag(i)) - TT_.col(i).dot(xi_);
+      const double h = !on_road ? 0.0 : in_span ? road_(i - span_.lo) : road(t, i, c);
       const double rut = soil_ ? soil_->rut_m(c, i, t) : 0.0;
-      return z - M.tyre.sag(i) - u - cm_.classes.drop_m[c] + road(t, i, c) - rut > 0;
+      return p - cm_.classes.drop_m[c] + h - rut > 0;
     };
     for (int k = 1; k <= kEscapeCheckSections; ++k) {
       if (r.lo - k >= 0 && outside(r.lo - k)) escaped_ = true;

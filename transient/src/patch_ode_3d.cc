@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cell_kernels.h"
 #include "modaltyre/transient/cell_newton.h"
 #include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/cell_system.h"
@@ -31,9 +32,15 @@ class CellObserver {
     phi_t_t_ = M_.phi_t.transpose();
     ur_.assign(M_.m, 0.0);
     ut_.assign(M_.m, 0.0);
-    // Columns ordered from the centre outwards on each side: the lateral edge search.
+    // The first and the last column of each class (the lateral edge search).
     const CellClasses& C = cm_.classes;
-    for (int j = 0; j < C.columns; ++j) slot_class_.push_back(C.column_class[j]);
+    class_col_lo_.assign(C.size(), C.columns);
+    class_col_hi_.assign(C.size(), -1);
+    for (int j = 0; j < C.columns; ++j) {
+      const int c = C.column_class[j];
+      class_col_lo_[c] = std::min(class_col_lo_[c], j);
+      class_col_hi_[c] = std::max(class_col_hi_[c], j);
+    }
   }
 
   TransientSample observe(double t, const double* y, CellMap* map = nullptr) {
@@ -60,13 +67,30 @@ class CellObserver {
       first = first < 0 ? i : first;
       last = i;
     }
-    for (int c = 0; c < C.size() && plan.has_road(); ++c) {
-      const UnitRange& r = sys_.ranges()[c];
-      for (int k = 0; k < r.size(); ++k) {
-        double slope = 0;
-        const double h = sys_.road(t, r.lo + k, c, &slope);
-        if (h > 0) sink = std::max(sink, z + h - M_.tyre.sag(r.lo + k) - C.drop_m[c]);
-        slope_force += C.multiplicity[c] * f_(sys_.offset(c) + k) * slope;
+    if (plan.has_road() && span.size() > 0) {
+      // The road's height and slope once per section (CellSystem::road() is the same for every
+      // class it covers, 0 for the others): a cleat's cosine per slot was 5 % of its run.
+      int road_class = -1;
+      for (int c = 0; c < C.size() && road_class < 0; ++c)
+        if (on_road(c)) road_class = c;
+      road_h_.resize(span.size());
+      road_s_.resize(span.size());
+      // The sections where the road is raised or sloped ([lo, hi]; elsewhere h = 0 and a zero
+      // slope adds nothing).
+      int lo = span.hi + 1, hi = span.lo - 1;
+      for (int k = 0; road_class >= 0 && k < span.size(); ++k) {
+        road_h_[k] = sys_.road(t, span.lo + k, road_class, &road_s_[k]);
+        if (road_h_[k] > 0 || road_s_[k] != 0)
+          lo = std::min(lo, span.lo + k), hi = std::max(hi, span.lo + k);
+      }
+      for (int c = 0; c < C.size() && road_class >= 0; ++c) {
+        if (!on_road(c)) continue;
+        const UnitRange& r = sys_.ranges()[c];
+        for (int k = std::max(0, lo - r.lo); k <= std::min(r.size() - 1, hi - r.lo); ++k) {
+          const double h = road_h_[r.lo + k - span.lo], slope = road_s_[r.lo + k - span.lo];
+          if (h > 0) sink = std::max(sink, z + h - M_.tyre.sag(r.lo + k) - C.drop_m[c]);
+          slope_force += C.multiplicity[c] * f_(sys_.offset(c) + k) * slope;
+        }
       }
     }
     s.load_N = load;
@@ -110,9 +134,16 @@ class CellObserver {
     // The level function of a cell: the undeformed tread's penetration P_i + h - drop_c (> 0
     // inside, the gap < 0 outside; at rest the 3D patch's d_i - z_j), linear to its zero.
     // On a soil: to the soil's surface (its rut outside the contact; cell_soil.h).
+    // The road under section i for class c: CellSystem::road(), from the heights above where
+    // they were computed (0 off the road).
+    const bool heights = plan.has_road() && span.size() > 0;
+    auto road_at = [&](int i, int c) {
+      if (!heights || !on_road(c)) return 0.0;
+      return span.contains(i) ? road_h_[i - span.lo] : sys_.road(t, i, c);
+    };
     auto level = [&](int i, int c) {
       const double rut = soil ? soil->rut_m(c, i, t) : 0.0;
-      return P_(i) + sys_.road(t, i, c) - C.drop_m[c] - rut;
+      return P_(i) + road_at(i, c) - C.drop_m[c] - rut;
     };
     auto force = [&](int i, int c) {
       const UnitRange& r = sys_.ranges()[c];
@@ -120,15 +151,20 @@ class CellObserver {
     };
     // Longitudinal extent per class (= per column of it).
     double length = 0, area = 0;
+    contact_a_.assign(C.size(), 0);
+    contact_b_.assign(C.size(), -1);
+    contiguous_.assign(C.size(), 0);
     for (int c = 0; c < C.size(); ++c) {
       const UnitRange& r = sys_.ranges()[c];
       // The first and last cell in contact, scanned in from either end of the range.
       const double* fc = f_.data() + sys_.offset(c);
-      int ka = 0, kb = r.size() - 1;
-      while (ka < r.size() && !(fc[ka] > 0)) ++ka;
+      const int ka = detail::first_positive(fc, r.size());
       if (ka == r.size()) continue;
-      while (!(fc[kb] > 0)) --kb;
+      const int kb = detail::last_positive(fc, r.size());
       const int a = r.lo + ka, b = r.lo + kb;
+      // Whether every cell between is in contact (the width below then needs only a and b).
+      const int inside = detail::count_positive(fc + ka, kb - ka + 1);
+      contact_a_[c] = a, contact_b_[c] = b, contiguous_[c] = inside == kb - ka + 1;
       // As the 2D driver and the 3D patch: the level function is the cell's tread compression
       // f / k_i inside (at rest d_i - z_c, patch3d.cc) and its tip penetration g < 0 outside
       // (at rest the gap d_i - z_c; behind a rolling patch the relaxed rubber's lift).
@@ -157,11 +193,31 @@ class CellObserver {
     // level function towards the next column out (the tread edge if it is the last).
     const double half = 0.5 * C.tread_width_m;
     double width = 0;
+    // Per section, the outermost columns in contact: over the classes in contact there, the
+    // smallest and the largest index of their columns (per class its contact run [a, b] when
+    // every cell between touches, otherwise its cells one by one; not a scan of the columns per
+    // section, 9 us a sample).
+    const int np = last - first + 1;
+    col_lo_.assign(np, C.columns);
+    col_hi_.assign(np, -1);
+    for (int c = 0; c < C.size(); ++c) {
+      if (contact_b_[c] < contact_a_[c]) continue;
+      const int jlo = class_col_lo_[c], jhi = class_col_hi_[c];
+      int* lo = col_lo_.data() - first;
+      int* hi = col_hi_.data() - first;
+      if (contiguous_[c]) {
+        const int a = contact_a_[c];
+        detail::min_max_fill(lo + a, hi + a, contact_b_[c] - a + 1, jlo, jhi);
+        continue;
+      }
+      const UnitRange& r = sys_.ranges()[c];
+      const double* fc = f_.data() + sys_.offset(c) - r.lo;
+      for (int i = contact_a_[c]; i <= contact_b_[c]; ++i)
+        if (fc[i] > 0) lo[i] = std::min(lo[i], jlo), hi[i] = std::max(hi[i], jhi);
+    }
     for (int i = first; i <= last; ++i) {
       if (!(F_(i) > 0)) continue;
-      int lo = 0, hi = C.columns - 1;
-      while (lo < C.columns && !(force(i, C.column_class[lo]) > 0)) ++lo;
-      while (hi >= 0 && !(force(i, C.column_class[hi]) > 0)) --hi;
+      const int lo = col_lo_[i - first], hi = col_hi_[i - first];
       if (lo > hi) continue;
       auto side = [&](int in, int out) {
         const double ein = level(i, C.column_class[in]), eout = level(i, C.column_class[out]);
@@ -189,24 +245,29 @@ class CellObserver {
   }
 
  private:
+  /// Whether the road input (a profile, or the cleat) reaches class c (CellSystem::road()).
+  bool on_road(int c) const {
+    const ScenarioPlan& plan = sys_.plan();
+    return static_cast<bool>(plan.road_profile) || (plan.cleat && cm_.classes.on_cleat[c]);
+  }
   /// The belt's radial and tangential displacement of section i at the state of the current
   /// observe() into ur_, ut_ (once per sample: stamp_).
   void belt(int i) {
     if (stamp_[i] == belt_stamp_) return;
     stamp_[i] = belt_stamp_;
-    double ur = phi_r_t_.col(i).dot(q_), ut = phi_t_t_.col(i).dot(q_);
+    double modal[2], res[2] = {0, 0};
+    pair_dots(M_.nq, phi_r_t_.col(i).data(), phi_t_t_.col(i).data(), q_.data(), nullptr, nullptr,
+              nullptr, modal);
     if (M_.nr > 0) {
       // sum_j h(i - j) (F_j cos_j, F_j sin_j), j over the patch (fr_rev_: j = last - k, so the
       // kernel index i - j + lags - 1 runs up from i - last + lags - 1).
       const modal::LagKernels& K = M_.residual_kernels;
       const int n = static_cast<int>(fr_rev_.size());
       const std::size_t k0 = static_cast<std::size_t>(i - belt_last_ + K.lags - 1);
-      auto run = [&](const std::vector<double>& h) {
-        return Eigen::Map<const Eigen::VectorXd>(h.data() + k0, n);
-      };
-      ur += run(K.r_from_r).dot(fr_rev_) + run(K.r_from_t).dot(ft_rev_);
-      ut += run(K.t_from_r).dot(fr_rev_) + run(K.t_from_t).dot(ft_rev_);
+      pair_dots(n, K.r_from_r.data() + k0, K.t_from_r.data() + k0, fr_rev_.data(),
+                K.r_from_t.data() + k0, K.t_from_t.data() + k0, ft_rev_.data(), res);
     }
+    const double ur = modal[0] + res[0], ut = modal[1] + res[1];
     ur_[i] = ur, ut_[i] = ut;
   }
 
@@ -214,10 +275,14 @@ class CellObserver {
   const CellModel& cm_;
   const TransientModel& M_;
   double sag_min_ = 0;
-  std::vector<int> slot_class_;
+  /// Per class: its first and last column; per sample, its first and last section in contact
+  /// and whether all between are (contiguous_); per section of the patch, its outermost columns
+  /// in contact.
+  std::vector<int> class_col_lo_, class_col_hi_, contact_a_, contact_b_, col_lo_, col_hi_;
+  std::vector<char> contiguous_;
   Eigen::VectorXd f_, F_, g_, P_, q_, fr_rev_, ft_rev_;
   Eigen::MatrixXd phi_r_t_, phi_t_t_;  ///< nq x m
-  std::vector<double> ur_, ut_, cos_, sin_;
+  std::vector<double> ur_, ut_, cos_, sin_, road_h_, road_s_;
   std::vector<long> stamp_;
   long belt_stamp_ = 0;
   int belt_first_ = 0, belt_last_ = -1;

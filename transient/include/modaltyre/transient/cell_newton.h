@@ -24,9 +24,12 @@ class CellNewton {
   void factor(double gamma);
   /// D^-1 Q (DQ_) and H = P D^-1 Q (H_) at gamma and the current spin.
   void factor_dq(double gamma);
-  /// The capacitance matrix I - gamma H K (update_cap(): after rank-one changes of K) and the
-  /// LU of cap_mat_ (factor_cap()).
+  /// The capacitance matrix I - gamma H K and its LU (update_cap(): after rank-one changes of K;
+  /// cap_product(): the matrix by vectorised column products; lu_cap(): its unblocked LU, false
+  /// at a zero or non-finite pivot; factor_cap(): Eigen's product order and LU, a flat crown's).
   void update_cap(double gamma);
+  void cap_product(double gamma);
+  bool lu_cap();
   void factor_cap();
   /// Semismooth Newton: the contact stiffness of the cells whose side of the kink of
   /// k_g max(0, g) differs at the current iterate (the last rhs()) from the matrix's, updated
@@ -69,9 +72,11 @@ class CellNewton {
   Eigen::VectorXd kc_slot_;      ///< per slot: contact spring
   std::vector<int> slot_class_;  ///< per slot: its class
   Eigen::MatrixXd TT_;           ///< T^T (rank x m)
-  Eigen::MatrixXd Tc_;           ///< update_active_set(): T~ rows of the changed sections
-  Eigen::VectorXd trow_, dwv_, zero_row_, mukd_, gkc_;
-  std::vector<int> changed_, rowperm_;
+  /// update_active_set(): T~ rows of the changed sections as columns (Tc_) and scaled by their
+  /// change of weight (W_ = diag(dw) Tc_^T).
+  Eigen::MatrixXd Tc_, W_;
+  Eigen::VectorXd trow_, zero_row_, mukd_, gkc_;
+  std::vector<int> changed_, rowperm_, kf_, kl_;
   std::vector<std::pair<int, double>> dw_;
   double dq_gamma_ = 0, dq_Omega_ = 0, dq_dOmega_ = 0;
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;

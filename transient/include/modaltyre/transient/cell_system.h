@@ -87,6 +87,10 @@ class CellSystem {
 
  private:
   void contact_coordinates(const double* y) const;
+  /// penetration()'s pass; with f and F (sized), also the rigid road's cell and section forces
+  /// (F zeroed by the caller).
+  void slots(double t, const double* y, Eigen::VectorXd& g, Eigen::VectorXd& P, Eigen::VectorXd* f,
+             Eigen::VectorXd* F) const;
   const CellModel& cm_;
   const ScenarioPlan& plan_;
   bool relax_ = false;
@@ -94,11 +98,11 @@ class CellSystem {
   std::vector<int> offset_;
   UnitRange span_;
   int ncells_ = 0;
-  Eigen::MatrixXd CqT_, CrT_;
+  Eigen::MatrixXd CqT_, CrT_, TT_;    ///< Cq^T, Cr^T and T^T (a section's row contiguous)
   Eigen::VectorXd inv_c_, k_over_c_;  ///< per slot: 1 / c', k' / c'
   Eigen::VectorXd kc_slot_;           ///< per slot: contact spring
   Eigen::VectorXd drop_slot_;         ///< per slot: crown drop of its class
-  mutable Eigen::VectorXd xi_, P_, f_, F_, phi_, G_, Vf_, g_, road_;
+  mutable Eigen::VectorXd xi_, P_, f_, F_, phi_, G_, Vf_, g_, road_, g_work_;
   mutable std::vector<char> in_contact_;
   CellSoil* soil_ = nullptr;
   mutable Eigen::VectorXd kd_soil_, f_acc_;  ///< on a soil: d f / d g per slot of the last forces()

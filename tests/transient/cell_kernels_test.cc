@@ -1,0 +1,159 @@
+// The 3D transient's vector kernels (transient/src/cell_kernels.h) against their stated
+// operations to the bit (the AVX2 paths on this CPU, the portable ones elsewhere: the same bits)
+// and the scans against plain loops.
+#include "../../transient/src/cell_kernels.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "modaltyre/transient/column_product.h"
+
+namespace modaltyre::transient::detail {
+namespace {
+
+std::vector<double> random_values(std::mt19937& rng, int n) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> v(n);
+  for (double& x : v) x = u(rng) * std::exp(6 * u(rng));
+  return v;
+}
+
+TEST(CellKernels, SmallGemmHasTheBitsOfAColumnProductPerColumn) {
+  // The capacitance matrix H K was a column_product() per column of K: the register-blocked
+  // product must give the same bits (a flat crown's arithmetic depends on them).
+  std::mt19937 rng(33);
+  for (int m : {1, 2, 3, 5, 12, 13, 41, 42}) {
+    for (int n : {1, 3, 4, 42}) {
+      for (int k : {1, 7, 42, 47, 114}) {
+        const int lda = m + 3, ldb = k + 2, ldc = m + 1;
+        const std::vector<double> A = random_values(rng, lda * k), B = random_values(rng, ldb * n);
+        const std::vector<double> base = random_values(rng, ldc * n);
+        std::vector<double> got(ldc * n, 0.0), added = base;
+        small_gemm(m, n, k, A.data(), lda, B.data(), ldb, got.data(), ldc);
+        small_gemm(m, n, k, A.data(), lda, B.data(), ldb, added.data(), ldc, /*accumulate=*/true);
+        for (int j = 0; j < n; ++j) {
+          std::vector<double> col(m), acc(base.begin() + j * ldc, base.begin() + j * ldc + m);
+          column_product(m, k, A.data(), lda, B.data() + j * ldb, col.data());
+          column_product(m, k, A.data(), lda, B.data() + j * ldb, acc.data(), true);
+          for (int i = 0; i < m; ++i) {
+            ASSERT_EQ(col[i], got[j * ldc + i]) << m << " x " << n << " x " << k;
+            ASSERT_EQ(acc[i], added[j * ldc + i]) << m << " x " << n << " x " << k;
+          }
+        }
+        // Entries outside the m rows of each column are left alone.
+        for (int j = 0; j < n; ++j)
+          for (int i = m; i < ldc; ++i) ASSERT_EQ(base[j * ldc + i], added[j * ldc + i]);
+      }
+    }
+  }
+}
+
+TEST(CellKernels, BandRowIsTheScalarExpression) {
+  // factor()'s back substitution row: ((a t - s1 y1) - s2 y2) d, and r += w (t - gamma y), the
+  // same operations as the loops it replaced (no fused multiply-add).
+  std::mt19937 rng(7);
+  for (int n : {1, 4, 5, 42}) {
+    for (bool with_t : {true, false}) {
+      const std::vector<double> t = random_values(rng, n), y1 = random_values(rng, n),
+                                y2 = random_values(rng, n), r0 = random_values(rng, n);
+      const double a = 0.37, s1 = -0.8, s2 = 0.2, d = 0.93, w = 4.5e5, gamma = 1.3e-4;
+      std::vector<double> y(n), r = r0;
+      band_row(n, with_t, a, t.data(), y1.data(), y2.data(), s1, s2, d, y.data(), r.data(), w,
+               gamma);
+      for (int j = 0; j < n; ++j) {
+        const double want = with_t ? ((a * t[j] - s1 * y1[j]) - s2 * y2[j]) * d
+                                   : ((0.0 - s1 * y1[j]) - s2 * y2[j]) * d;
+        ASSERT_EQ(want, y[j]);
+        ASSERT_EQ(r0[j] + w * (t[j] - gamma * want), r[j]);
+      }
+    }
+  }
+}
+
+TEST(CellKernels, PairDotsSumInTheirStatedOrder) {
+  // Eight partial sums per output (rows k mod 8), lane-wise (k mod 4) + (k mod 4 + 4), then
+  // (s0 + s1) + (s2 + s3), then the last n % 8 rows in order; and the dot products to rounding.
+  std::mt19937 rng(11);
+  for (int n : {0, 3, 8, 13, 114, 223}) {
+    for (bool second : {true, false}) {
+      const std::vector<double> a = random_values(rng, n), b = random_values(rng, n),
+                                x = random_values(rng, n), c = random_values(rng, n),
+                                dd = random_values(rng, n), y = random_values(rng, n);
+      double out[2];
+      pair_dots(n, a.data(), b.data(), x.data(), second ? c.data() : nullptr,
+                second ? dd.data() : nullptr, second ? y.data() : nullptr, out);
+      auto stated = [&](const std::vector<double>& p, const std::vector<double>& q) {
+        double s[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+        const int n8 = n / 8 * 8;
+        for (int k = 0; k < n8; ++k) {
+          s[k % 8] = std::fma(p[k], x[k], s[k % 8]);
+          if (second) s[k % 8] = std::fma(q[k], y[k], s[k % 8]);
+        }
+        double r = ((s[0] + s[4]) + (s[1] + s[5])) + ((s[2] + s[6]) + (s[3] + s[7]));
+        for (int k = n8; k < n; ++k) {
+          r = std::fma(p[k], x[k], r);
+          if (second) r = std::fma(q[k], y[k], r);
+        }
+        return r;
+      };
+      ASSERT_EQ(stated(a, c), out[0]) << n;
+      ASSERT_EQ(stated(b, dd), out[1]) << n;
+      double plain = 0, scale = 0;
+      for (int k = 0; k < n; ++k) {
+        plain += a[k] * x[k] + (second ? c[k] * y[k] : 0.0);
+        scale += std::abs(a[k] * x[k]) + (second ? std::abs(c[k] * y[k]) : 0.0);
+      }
+      EXPECT_NEAR(plain, out[0], 1e-13 * scale);
+    }
+  }
+}
+
+TEST(CellKernels, ScansEqualPlainLoops) {
+  // Signs, zeros of either sign and NaN (never a force, but never "in contact" either).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> pick(0, 4);
+  const double values[] = {1.5, -2.0, 0.0, -0.0, nan};
+  for (int n : {0, 1, 3, 4, 7, 8, 9, 31, 240}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      std::vector<double> a(n), b(n);
+      for (int k = 0; k < n; ++k) a[k] = values[pick(rng)], b[k] = values[pick(rng)];
+      std::vector<int> got, want;
+      sign_mismatches(n, a.data(), b.data(), got);
+      int first = n, last = -1, count = 0;
+      for (int k = 0; k < n; ++k) {
+        if ((a[k] > 0) != (b[k] > 0)) want.push_back(k);
+        if (a[k] > 0) first = std::min(first, k), last = k, ++count;
+      }
+      ASSERT_EQ(want, got);
+      ASSERT_EQ(first, first_positive(a.data(), n));
+      ASSERT_EQ(last, last_positive(a.data(), n));
+      ASSERT_EQ(count, count_positive(a.data(), n));
+    }
+    std::vector<int> lo(n), hi(n);
+    for (int k = 0; k < n; ++k) lo[k] = k % 5, hi[k] = 10 - k % 7;
+    std::vector<int> lo0 = lo, hi0 = hi;
+    min_max_fill(lo.data(), hi.data(), n, 2, 6);
+    for (int k = 0; k < n; ++k) {
+      ASSERT_EQ(std::min(lo0[k], 2), lo[k]);
+      ASSERT_EQ(std::max(hi0[k], 6), hi[k]);
+    }
+  }
+}
+
+TEST(CellKernels, LuRowUpdateIsOneFusedMultiplyAddPerEntry) {
+  std::mt19937 rng(3);
+  for (int n : {0, 1, 4, 6, 41}) {
+    const std::vector<double> k = random_values(rng, n), r0 = random_values(rng, n);
+    std::vector<double> r = r0;
+    lu_row_update(n, 0.731, k.data(), r.data());
+    for (int j = 0; j < n; ++j) ASSERT_EQ(std::fma(-0.731, k[j], r0[j]), r[j]);
+  }
+}
+
+}  // namespace
+}  // namespace modaltyre::transient::detail

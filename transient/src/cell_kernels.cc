@@ -1,0 +1,338 @@
+#include "cell_kernels.h"
+
+#include <algorithm>
+#include <cmath>
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define MODALTYRE_CELL_KERNELS_AVX2 1
+#endif
+
+namespace modaltyre::transient::detail {
+namespace {
+
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+/// Whether this CPU runs the AVX2 (and FMA) paths (checked once).
+bool avx2() {
+  static const bool yes = __builtin_cpu_supports("avx2");
+  return yes;
+}
+bool avx2_fma() {
+  static const bool yes = avx2() && __builtin_cpu_supports("fma");
+  return yes;
+}
+#endif
+
+/// Rows [k, n) of one output in order onto its combined partial sums s.
+double tail(int k, int n, const double* a, const double* x, const double* c, const double* y,
+            double s) {
+  for (; k < n; ++k) {
+    s = std::fma(a[k], x[k], s);
+    if (y) s = std::fma(c[k], y[k], s);
+  }
+  return s;
+}
+
+/// band_row()'s entries [j0, n).
+void band_row_scalar(int j0, int n, bool with_t, double a, const double* t, const double* y1,
+                     const double* y2, double s1, double s2, double d, double* y, double* r,
+                     double w, double gamma) {
+  for (int j = j0; j < n; ++j) {
+    y[j] =
+        with_t ? ((a * t[j] - s1 * y1[j]) - s2 * y2[j]) * d : ((0.0 - s1 * y1[j]) - s2 * y2[j]) * d;
+    if (r) r[j] += w * (t[j] - gamma * y[j]);
+  }
+}
+
+void pair_dots_scalar(int n, const double* a, const double* b, const double* x, const double* c,
+                      const double* d, const double* y, double out[2]) {
+  double sa[8] = {0, 0, 0, 0, 0, 0, 0, 0}, sb[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  const int n8 = n / 8 * 8;
+  for (int k = 0; k < n8; k += 8) {
+    for (int l = 0; l < 8; ++l) {
+      sa[l] = std::fma(a[k + l], x[k + l], sa[l]);
+      sb[l] = std::fma(b[k + l], x[k + l], sb[l]);
+      if (y) {
+        sa[l] = std::fma(c[k + l], y[k + l], sa[l]);
+        sb[l] = std::fma(d[k + l], y[k + l], sb[l]);
+      }
+    }
+  }
+  auto combine = [](const double* s) {
+    const double l0 = s[0] + s[4], l1 = s[1] + s[5], l2 = s[2] + s[6], l3 = s[3] + s[7];
+    return (l0 + l1) + (l2 + l3);
+  };
+  out[0] = tail(n8, n, a, x, c, y, combine(sa));
+  out[1] = tail(n8, n, b, x, d, y, combine(sb));
+}
+
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+__attribute__((target("avx2,fma"))) double combine_avx2(__m256d lo, __m256d hi) {
+  alignas(32) double l[4];
+  _mm256_store_pd(l, _mm256_add_pd(lo, hi));
+  return (l[0] + l[1]) + (l[2] + l[3]);
+}
+
+__attribute__((target("avx2,fma"))) void pair_dots_avx2(int n, const double* a, const double* b,
+                                                        const double* x, const double* c,
+                                                        const double* d, const double* y,
+                                                        double out[2]) {
+  __m256d a0 = _mm256_setzero_pd(), a1 = a0, b0 = a0, b1 = a0;
+  const int n8 = n / 8 * 8;
+  for (int k = 0; k < n8; k += 8) {
+    const __m256d x0 = _mm256_loadu_pd(x + k), x1 = _mm256_loadu_pd(x + k + 4);
+    a0 = _mm256_fmadd_pd(_mm256_loadu_pd(a + k), x0, a0);
+    a1 = _mm256_fmadd_pd(_mm256_loadu_pd(a + k + 4), x1, a1);
+    b0 = _mm256_fmadd_pd(_mm256_loadu_pd(b + k), x0, b0);
+    b1 = _mm256_fmadd_pd(_mm256_loadu_pd(b + k + 4), x1, b1);
+    if (y) {
+      const __m256d y0 = _mm256_loadu_pd(y + k), y1 = _mm256_loadu_pd(y + k + 4);
+      a0 = _mm256_fmadd_pd(_mm256_loadu_pd(c + k), y0, a0);
+      a1 = _mm256_fmadd_pd(_mm256_loadu_pd(c + k + 4), y1, a1);
+      b0 = _mm256_fmadd_pd(_mm256_loadu_pd(d + k), y0, b0);
+      b1 = _mm256_fmadd_pd(_mm256_loadu_pd(d + k + 4), y1, b1);
+    }
+  }
+  out[0] = tail(n8, n, a, x, c, y, combine_avx2(a0, a1));
+  out[1] = tail(n8, n, b, x, d, y, combine_avx2(b0, b1));
+}
+
+__attribute__((target("avx2"))) void band_row_avx(int n, bool with_t, double a, const double* t,
+                                                  const double* y1, const double* y2, double s1,
+                                                  double s2, double d, double* y, double* r,
+                                                  double w, double gamma) {
+  const __m256d va = _mm256_set1_pd(a), v1 = _mm256_set1_pd(s1), v2 = _mm256_set1_pd(s2),
+                vd = _mm256_set1_pd(d), vw = _mm256_set1_pd(w), vg = _mm256_set1_pd(gamma),
+                zero = _mm256_setzero_pd();
+  int j = 0;
+  for (; j + 4 <= n; j += 4) {
+    const __m256d tj = _mm256_loadu_pd(t + j);
+    const __m256d first = with_t ? _mm256_mul_pd(va, tj) : zero;
+    const __m256d u =
+        _mm256_sub_pd(_mm256_sub_pd(first, _mm256_mul_pd(v1, _mm256_loadu_pd(y1 + j))),
+                      _mm256_mul_pd(v2, _mm256_loadu_pd(y2 + j)));
+    const __m256d yj = _mm256_mul_pd(u, vd);
+    _mm256_storeu_pd(y + j, yj);
+    if (r) {
+      const __m256d term = _mm256_mul_pd(vw, _mm256_sub_pd(tj, _mm256_mul_pd(vg, yj)));
+      _mm256_storeu_pd(r + j, _mm256_add_pd(_mm256_loadu_pd(r + j), term));
+    }
+  }
+  band_row_scalar(j, n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
+}
+
+__attribute__((target("avx2,fma"))) void lu_row_update_avx2(int n, double l, const double* k,
+                                                            double* r) {
+  const __m256d vl = _mm256_set1_pd(l);
+  int j = 0;
+  for (; j + 4 <= n; j += 4)
+    _mm256_storeu_pd(r + j, _mm256_fnmadd_pd(vl, _mm256_loadu_pd(k + j), _mm256_loadu_pd(r + j)));
+  for (; j < n; ++j) r[j] = std::fma(-l, k[j], r[j]);
+}
+
+__attribute__((target("avx2"))) int sign_mismatches_avx2(int n, const double* a, const double* b,
+                                                         std::vector<int>& out) {
+  const __m256d zero = _mm256_setzero_pd();
+  int k = 0;
+  for (; k + 8 <= n; k += 8) {
+    const __m256d x0 = _mm256_xor_pd(_mm256_cmp_pd(_mm256_loadu_pd(a + k), zero, _CMP_GT_OQ),
+                                     _mm256_cmp_pd(_mm256_loadu_pd(b + k), zero, _CMP_GT_OQ));
+    const __m256d x1 = _mm256_xor_pd(_mm256_cmp_pd(_mm256_loadu_pd(a + k + 4), zero, _CMP_GT_OQ),
+                                     _mm256_cmp_pd(_mm256_loadu_pd(b + k + 4), zero, _CMP_GT_OQ));
+    const int mask = _mm256_movemask_pd(x0) | (_mm256_movemask_pd(x1) << 4);
+    if (mask == 0) continue;
+    for (int l = 0; l < 8; ++l)
+      if (mask & (1 << l)) out.push_back(k + l);
+  }
+  return k;
+}
+
+__attribute__((target("avx2"))) int first_positive_avx2(const double* a, int n) {
+  const __m256d zero = _mm256_setzero_pd();
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const int mask = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(a + k), zero, _CMP_GT_OQ));
+    if (mask) return k + __builtin_ctz(static_cast<unsigned>(mask));
+  }
+  for (; k < n; ++k)
+    if (a[k] > 0) return k;
+  return n;
+}
+
+__attribute__((target("avx2"))) int last_positive_avx2(const double* a, int n) {
+  const __m256d zero = _mm256_setzero_pd();
+  int k = n;
+  for (; k >= 4; k -= 4) {
+    const int mask =
+        _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(a + k - 4), zero, _CMP_GT_OQ));
+    if (mask) return k - 4 + 31 - __builtin_clz(static_cast<unsigned>(mask));
+  }
+  for (--k; k >= 0; --k)
+    if (a[k] > 0) return k;
+  return -1;
+}
+
+__attribute__((target("avx2"))) int count_positive_avx2(const double* a, int n) {
+  const __m256d zero = _mm256_setzero_pd();
+  int k = 0, count = 0;
+  for (; k + 4 <= n; k += 4)
+    count += __builtin_popcount(static_cast<unsigned>(
+        _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(a + k), zero, _CMP_GT_OQ))));
+  for (; k < n; ++k) count += a[k] > 0 ? 1 : 0;
+  return count;
+}
+
+__attribute__((target("avx2"))) void min_max_fill_avx2(int* lo, int* hi, int n, int v_lo,
+                                                       int v_hi) {
+  const __m256i vl = _mm256_set1_epi32(v_lo), vh = _mm256_set1_epi32(v_hi);
+  int k = 0;
+  for (; k + 8 <= n; k += 8) {
+    __m256i* pl = reinterpret_cast<__m256i*>(lo + k);
+    __m256i* ph = reinterpret_cast<__m256i*>(hi + k);
+    _mm256_storeu_si256(pl, _mm256_min_epi32(_mm256_loadu_si256(pl), vl));
+    _mm256_storeu_si256(ph, _mm256_max_epi32(_mm256_loadu_si256(ph), vh));
+  }
+  for (; k < n; ++k) lo[k] = std::min(lo[k], v_lo), hi[k] = std::max(hi[k], v_hi);
+}
+
+/// small_gemm()'s rows [i0, i0 + 4 v) x columns [j0, j0 + w), v <= 3 vectors, w <= 4.
+template <int V, int W>
+__attribute__((target("avx2,fma"))) inline void gemm_block(int i0, int j0, int k, const double* A,
+                                                           int lda, const double* B, int ldb,
+                                                           double* C, int ldc, bool accumulate) {
+  __m256d acc[V][W];
+  for (int v = 0; v < V; ++v)
+    for (int w = 0; w < W; ++w) acc[v][w] = _mm256_setzero_pd();
+  for (int p = 0; p < k; ++p) {
+    __m256d a[V];
+    for (int v = 0; v < V; ++v) a[v] = _mm256_loadu_pd(A + p * lda + i0 + 4 * v);
+    for (int w = 0; w < W; ++w) {
+      const __m256d b = _mm256_broadcast_sd(B + (j0 + w) * ldb + p);
+      for (int v = 0; v < V; ++v) acc[v][w] = _mm256_fmadd_pd(a[v], b, acc[v][w]);
+    }
+  }
+  for (int w = 0; w < W; ++w)
+    for (int v = 0; v < V; ++v) {
+      double* c = C + (j0 + w) * ldc + i0 + 4 * v;
+      _mm256_storeu_pd(
+          c, _mm256_add_pd(acc[v][w], accumulate ? _mm256_loadu_pd(c) : _mm256_setzero_pd()));
+    }
+}
+
+template <int W>
+__attribute__((target("avx2,fma"))) void gemm_columns(int m, int j0, int k, const double* A,
+                                                      int lda, const double* B, int ldb, double* C,
+                                                      int ldc, bool accumulate) {
+  int i = 0;
+  for (; i + 12 <= m; i += 12) gemm_block<3, W>(i, j0, k, A, lda, B, ldb, C, ldc, accumulate);
+  for (; i + 4 <= m; i += 4) gemm_block<1, W>(i, j0, k, A, lda, B, ldb, C, ldc, accumulate);
+  if (i == m) return;
+  // The last m % 4 rows as one masked vector (the same operations per entry; masked lanes are
+  // neither read nor written).
+  const __m256i mask = _mm256_setr_epi64x(-1, m - i > 1 ? -1 : 0, m - i > 2 ? -1 : 0, 0);
+  __m256d acc[W];
+  for (int w = 0; w < W; ++w) acc[w] = _mm256_setzero_pd();
+  for (int p = 0; p < k; ++p) {
+    const __m256d a = _mm256_maskload_pd(A + p * lda + i, mask);
+    for (int w = 0; w < W; ++w)
+      acc[w] = _mm256_fmadd_pd(a, _mm256_broadcast_sd(B + (j0 + w) * ldb + p), acc[w]);
+  }
+  for (int w = 0; w < W; ++w) {
+    double* c = C + (j0 + w) * ldc + i;
+    const __m256d old = accumulate ? _mm256_maskload_pd(c, mask) : _mm256_setzero_pd();
+    _mm256_maskstore_pd(c, mask, _mm256_add_pd(acc[w], old));
+  }
+}
+
+__attribute__((target("avx2,fma"))) void small_gemm_avx2(int m, int n, int k, const double* A,
+                                                         int lda, const double* B, int ldb,
+                                                         double* C, int ldc, bool accumulate) {
+  int j = 0;
+  for (; j + 4 <= n; j += 4) gemm_columns<4>(m, j, k, A, lda, B, ldb, C, ldc, accumulate);
+  for (; j < n; ++j) gemm_columns<1>(m, j, k, A, lda, B, ldb, C, ldc, accumulate);
+}
+#endif
+
+}  // namespace
+
+void small_gemm(int m, int n, int k, const double* A, int lda, const double* B, int ldb, double* C,
+                int ldc, bool accumulate) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2_fma()) return small_gemm_avx2(m, n, k, A, lda, B, ldb, C, ldc, accumulate);
+#endif
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < m; ++i) {
+      double s = 0.0;
+      for (int p = 0; p < k; ++p) s = std::fma(A[p * lda + i], B[j * ldb + p], s);
+      double* c = C + j * ldc + i;
+      *c = s + (accumulate ? *c : 0.0);
+    }
+}
+
+int count_positive(const double* a, int n) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2()) return count_positive_avx2(a, n);
+#endif
+  int count = 0;
+  for (int k = 0; k < n; ++k) count += a[k] > 0 ? 1 : 0;
+  return count;
+}
+
+void min_max_fill(int* lo, int* hi, int n, int v_lo, int v_hi) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2()) return min_max_fill_avx2(lo, hi, n, v_lo, v_hi);
+#endif
+  for (int k = 0; k < n; ++k) lo[k] = std::min(lo[k], v_lo), hi[k] = std::max(hi[k], v_hi);
+}
+
+int first_positive(const double* a, int n) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2()) return first_positive_avx2(a, n);
+#endif
+  int k = 0;
+  while (k < n && !(a[k] > 0)) ++k;
+  return k;
+}
+
+int last_positive(const double* a, int n) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2()) return last_positive_avx2(a, n);
+#endif
+  int k = n - 1;
+  while (k >= 0 && !(a[k] > 0)) --k;
+  return k;
+}
+
+void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& out) {
+  int k = 0;
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2()) k = sign_mismatches_avx2(n, a, b, out);
+#endif
+  for (; k < n; ++k)
+    if ((a[k] > 0) != (b[k] > 0)) out.push_back(k);
+}
+
+void lu_row_update(int n, double l, const double* k, double* r) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2_fma()) return lu_row_update_avx2(n, l, k, r);
+#endif
+  for (int j = 0; j < n; ++j) r[j] = std::fma(-l, k[j], r[j]);
+}
+
+void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,
+              double s1, double s2, double d, double* y, double* r, double w, double gamma) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2()) return band_row_avx(n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
+#endif
+  band_row_scalar(0, n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
+}
+
+void pair_dots(int n, const double* a, const double* b, const double* x, const double* c,
+               const double* d, const double* y, double out[2]) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2_fma()) return pair_dots_avx2(n, a, b, x, c, d, y, out);
+#endif
+  pair_dots_scalar(n, a, b, x, c, d, y, out);
+}
+
+}  // namespace modaltyre::transient::detail

@@ -1,0 +1,52 @@
+#pragma once
+// Small vector kernels of the 3D transient (internal to the transient library), each with an AVX2
+// path chosen at run time and a portable one that gives the same bits.
+
+#include <vector>
+
+namespace modaltyre::transient::detail {
+
+/// The 3D observer's belt displacement of one section (patch_ode_3d.cc), radial and tangential,
+/// each a modal sum over the state and a residual sum over the patch's forces:
+/// out[0] = sum_k a[k] x[k] + c[k] y[k] and out[1] = sum_k b[k] x[k] + d[k] y[k], k < n (y, c
+/// and d may be null: the x terms only). Eight partial sums per output (rows k mod 8), added
+/// lane-wise as (k mod 4) + (k mod 4 + 4), then (s0 + s1) + (s2 + s3), then the last n % 8 rows
+/// in order, every product fused with its addition: the same bits on the AVX2 + FMA path (chosen
+/// at run time) and the portable one (std::fma).
+void pair_dots(int n, const double* a, const double* b, const double* x, const double* c,
+               const double* d, const double* y, double out[2]);
+
+/// One row of CellNewton::factor()'s back substitution along a class's band, and its term of R:
+///   y_j = ((a t_j - s1 y1_j) - s2 y2_j) d   (with_t; otherwise ((0 - s1 y1_j) - s2 y2_j) d),
+///   r_j += w (t_j - gamma y_j)              (r not null),
+/// j < n, in exactly these operations (no fused multiply-add): the AVX path is the scalar
+/// expression four entries at a time, so a flat crown's one class keeps the 2D solver's bits.
+void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,
+              double s1, double s2, double d, double* y, double* r, double w, double gamma);
+
+/// r_j = fma(-l, k_j, r_j), j < n: one row update of an LU factorisation (CellNewton::lu_cap()).
+void lu_row_update(int n, double l, const double* k, double* r);
+
+/// Appends to `out` every k < n where (a[k] > 0) != (b[k] > 0), in increasing order (the cells
+/// whose side of the contact kink differs between the iterate's forces a and the matrix's
+/// stiffness b: CellNewton::update_active_set()).
+void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& out);
+
+/// C (=, or += with accumulate) A B for small column-major matrices (A: m x k, lda; B: k x n,
+/// ldb; C: m x n, ldc): each entry fma(A_i,k-1, B_k-1,j, ... fma(A_i0, B_0j, 0)) over the inner
+/// index in order (+ C_ij), as column_product() per column of B (the same bits), register-blocked
+/// on the AVX2 + FMA path (12 rows x 4 columns), std::fma on the portable path.
+void small_gemm(int m, int n, int k, const double* A, int lda, const double* B, int ldb, double* C,
+                int ldc, bool accumulate = false);
+
+/// The first k < n with a[k] > 0 (n if none) and the last (-1 if none): a class's contact ends
+/// (the 3D observer).
+int first_positive(const double* a, int n);
+int last_positive(const double* a, int n);
+/// How many a[k] > 0, k < n.
+int count_positive(const double* a, int n);
+/// lo[k] = min(lo[k], v_lo) and hi[k] = max(hi[k], v_hi), k < n (the 3D observer's outermost
+/// columns in contact per section).
+void min_max_fill(int* lo, int* hi, int n, int v_lo, int v_hi);
+
+}  // namespace modaltyre::transient::detail
