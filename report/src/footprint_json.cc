@@ -139,7 +139,7 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
     m["contact_width_mm"] = c.tread.width_m * 1e3;
   }
   // Where the modal masses came from (docs/ring_model.md): the ring's tension, a stated mass,
-  // or the shapes' own scale, and the tension they imply against the membrane's p b R.
+  // or the shapes' own scale, and the tension they imply against the membrane's net tension.
   const auto& d = model.carcass;
   m["carcass"] = {{"normalisation", d.ring ? "ring" : "shapes"},
                   {"mass_per_length_kg_m", round_sig(d.mass_per_length_kg_m, 6)},
@@ -148,6 +148,8 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
                   {"membrane_tension_N", d.membrane_tension_N > 0
                                              ? nlohmann::json(round_sig(d.membrane_tension_N, 6))
                                              : nlohmann::json(nullptr)},  // no belt width
+                  // membrane_tension_N is this share of p b R (docs/ring_model.md section 3a).
+                  {"net_tension_share", round_sig(c.carcass.net_tension_share, 6)},
                   {"test_pressure_kPa", round_sig(d.test_pressure_Pa * 1e-3, 6)},
                   {"operating_pressure_kPa", round_sig(d.operating_pressure_Pa * 1e-3, 6)}};
   return out;
