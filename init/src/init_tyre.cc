@@ -352,6 +352,18 @@ InitResult init_tyre(const InitInputs& in) {
   const contact::TyreModel model = contact::build_tyre_model(config);
   r.carcass = model.carcass;
   r.warnings.insert(r.warnings.end(), model.basis.warnings.begin(), model.basis.warnings.end());
+  if (in.boundary == "free" && !(in.belt_mass_kg > 0)) {
+    // The ring's mu is the mass that makes its frequencies and statics agree, not the belt's
+    // weighed mass; the two-mass correction of a free test's order 1 wants the latter.
+    r.warnings.push_back(
+        "a free test without --belt-mass-kg: the order-1 correction takes the ring's mass 2 pi R "
+        "mu = " +
+        num(std::round(2 * M_PI * R0_mm * 1e-3 * model.carcass.mass_per_length_kg_m * 10) / 10) +
+        " kg as the belt's, lighter than a passenger belt with its tread (the TNO 205/60R15 file's "
+        "BELT_MASS: 7.7 kg); state the "
+        "maker's BELT_MASS (docs/validation.md: +21 % stiffness on the held-out 205/60R15 without "
+        "it)");
+  }
   if (!list_given) {
     for (const auto& m : contact::config_modes(config).modes) {
       if (m.kind == modal::ModeKind::rotation)

@@ -148,8 +148,15 @@ TEST(Init, NearTieOrdersAreWrittenWithTheirAkaikeWeights) {
 // A belt mass far from the tension's is reported, not silently used.
 TEST(Init, DisagreeingBeltMassIsAWarning) {
   InitInputs in = sf350();
-  in.belt_mass_kg = 25;  // 13.5 kg/m on this ring: a truck belt
+  auto says_free_without_mass = [](const InitResult& res) {
+    for (const auto& w : res.warnings)
+      if (w.find("without --belt-mass-kg") != std::string::npos) return true;
+    return false;
+  };
+  EXPECT_TRUE(says_free_without_mass(init_tyre(in)));  // a free test, no belt mass stated
+  in.belt_mass_kg = 25;                                // 13.5 kg/m on this ring: a truck belt
   const InitResult r = init_tyre(in);
+  EXPECT_FALSE(says_free_without_mass(r));
   bool said = false;
   for (const auto& w : r.warnings) said = said || w.find("belt_mass_kg") != std::string::npos;
   EXPECT_TRUE(said);
