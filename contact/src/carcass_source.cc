@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "modaltyre/contact/parameter_spec.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
@@ -182,7 +183,8 @@ CarcassSettings read_carcass_settings(const ConfigSection& modal) {
                "the order-1 and rotation modes; a passenger-car wheel weighs 5-12 kg)");
   }
   s.belt_width_m = modal.number("belt_width_mm", 0, 0, 5000) * 1e-3;
-  s.net_tension_share = modal.number("net_tension_share", 1.0, 0.2, 1.0);
+  const ValueRange& share = accepted_range("modal.net_tension_share");
+  s.net_tension_share = modal.number("net_tension_share", 1.0, share.min, share.max);
   s.net_tension_share_stated = modal.has("net_tension_share");
   s.mass_per_length_kg_m = modal.number("mass_per_length_kg_m", 0, 0, 1e4);
   s.belt_mass_kg = modal.number("belt_mass_kg", 0, 0, 1e5);

@@ -46,8 +46,7 @@ constexpr double kWindowPerRadius = 1.22;
 /// passenger sidewalls: 0.45-0.55 of the height), the sidewall leaving the belt edge at 37.5 deg
 /// to the axis (30-45 deg), the carcass line 4 mm under the tread (belt plies and under-tread).
 constexpr double kWidestPointShare = 0.5, kEdgeAngle_deg = 37.5, kUnderTread_mm = 4;
-/// Order proposals whose scores differ by less than this are
-/// near-ties (Akaike's margin).
+/// Order proposals whose scores differ by less than this are near-ties (Akaike's margin).
 constexpr double kNearTie = 2.0;
 
 std::string num(double v) {
@@ -263,6 +262,8 @@ InitResult init_tyre(const InitInputs& in) {
     << (in.belt_width_mm > 0 ? "input" : "the tread width (the belt spans the tread; assumed)")
     << ".\n";
   y << "  belt_width_mm: " << num(belt_w) << "\n";
+  decide("modal.belt_width_mm", num(belt_w),
+         in.belt_width_mm > 0 ? "input" : "= tread width (assumed)");
   {
     // The ring's tension term is the belt's net hoop tension (docs/ring_model.md section 3a):
     // p b R less the sidewalls' pull, for the stated section; the section's ranges (widest point

@@ -4,6 +4,7 @@
 // warning when a stated belt mass disagrees with the tension.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -197,6 +198,13 @@ TEST(Init, NetTensionShareOfTheStatedSection) {
     in.boundary = "rim-fixed";  // a free test's order-1 correction moves with the mass
     in.two_d = true;
     const InitResult r = init_tyre(in);
+    // init --json lists each of the three with its source.
+    for (const char* key :
+         {"modal.belt_width_mm", "modal.net_tension_share", "modal.belt_width_std_percent"}) {
+      EXPECT_TRUE(std::any_of(r.decisions.begin(), r.decisions.end(), [&](const InitDecision& d) {
+        return d.key == key;
+      })) << key;
+    }
     const auto c = contact::read_tyre_config(ConfigTree::from_string(r.yaml, "init.yaml", {}));
     const TyreSize t = parse_tyre_size(size);
     auto share = [&](double widest, double psi_deg) {

@@ -77,5 +77,36 @@ TEST(OrderProposal, TooFewFrequenciesProposeNothing) {
   EXPECT_TRUE(propose_orders({100, 120}).empty());
 }
 
+// A free test's list without an order 1 costs one choice (Akaike: 2 in the score): the planted
+// family 2-7 scores exactly 2 worse when the list is a free test's (a wheel mass given) than
+// when it is not. On Vervoort 2007's free 205/60 R15 list (114-260 Hz, 1.6 bar) the first six
+// are read as orders 1-6, and the shift 2-7 stays a near-tie (docs/ring_model.md section 6).
+TEST(OrderProposal, AFreeTestsListWithoutOrderOneCostsOneChoice) {
+  std::vector<double> f;
+  for (int n = 2; n <= 7; ++n) f.push_back(hz(n));
+  OrderProposalOptions plain = with_mass_check(), free_test = with_mass_check();
+  plain.max_alternatives = free_test.max_alternatives = 40;
+  free_test.wheel_mass_kg = 7.0;
+  auto score_of = [&](const OrderProposalOptions& o, const std::vector<int>& orders) {
+    for (const auto& a : propose_orders(f, o))
+      if (a.orders == orders) return a.score;
+    ADD_FAILURE() << "assignment not proposed";
+    return 0.0;
+  };
+  const std::vector<int> truth = {2, 3, 4, 5, 6, 7};
+  EXPECT_NEAR(score_of(free_test, truth) - score_of(plain, truth), 2.0, 1e-9);
+
+  OrderProposalOptions vv;
+  vv.pressure_Pa = 160e3, vv.belt_width_m = 0.158, vv.radius_m = 0.3135, vv.wheel_mass_kg = 7.7;
+  const auto p = propose_orders({114, 137, 165, 196, 228, 260}, vv);
+  ASSERT_GT(p.size(), 1u);
+  EXPECT_EQ(p.front().orders, (std::vector<int>{1, 2, 3, 4, 5, 6}));
+  bool shift_is_a_near_tie = false;
+  for (const auto& a : p)
+    shift_is_a_near_tie |=
+        a.orders == std::vector<int>{2, 3, 4, 5, 6, 7} && a.score < p.front().score + 2;
+  EXPECT_TRUE(shift_is_a_near_tie);
+}
+
 }  // namespace
 }  // namespace modaltyre::modal
