@@ -115,6 +115,7 @@ class UnitsOde final : public PatchOde {
   int size() const override { return sys_.size(); }
   int full_size() const override { return M_.state_size(); }
   int64_t nnz_hint() const override { return sys_.nnz(); }
+  double newton_convergence_coefficient() const override { return kNewtonConvergenceCoefficient; }
   std::vector<double> absolute_tolerances() const override { return sys_.absolute_tolerances(); }
   std::vector<double> initial_state() const override { return sys_.state_from(initial_); }
   int update_contact_set(double t, const double* y) override {

@@ -61,6 +61,8 @@ SoilContact::SoilContact(const ground::GroundSettings& ground, Eigen::VectorXd a
   if (k_.size() != m || x_.size() != m || !(area_.array() > 0).all())
     throw std::invalid_argument("SoilContact: one positive area, spring and x per contact");
   z_max_.setZero(m);
+  depth_acc_.setZero(m);
+  depth_acc_prev_.setZero(m);
   surface_.setZero(m);
   surface_prev_.setZero(m);
   stiffness_.setZero(m);
@@ -73,7 +75,8 @@ void SoilContact::set_memory(const Eigen::VectorXd& z_max_m, double t) {
     throw std::invalid_argument("SoilContact: one z_max per unit");
   z_max_ = z_max_m.cwiseMax(0.0);
   z_max_prev_ = z_max_;
-  surface_ = surface_prev_ = z_max_;  // a static contact: the soil at rest under its load
+  depth_acc_ = depth_acc_prev_ = z_max_;  // at rest under its load the soil stands at z_max
+  surface_ = surface_prev_ = z_max_;      // a static contact: the soil at rest under its load
   distance_acc_ = distance_prev_ = distance_ ? distance_(t) : 0.0;
   t_accepted_ = t_accepted_prev_ = t;
 }
@@ -85,14 +88,29 @@ const Eigen::VectorXd& SoilContact::surface(double t, double& w) const {
   return prev ? surface_prev_ : surface_;
 }
 
-const Eigen::VectorXd& SoilContact::memory(double t, double& shift) const {
+const Eigen::VectorXd& SoilContact::memory(double t, double& shift,
+                                           const Eigen::VectorXd** depths) const {
   const double D = distance_ ? distance_(t) : 0.0;
-  if (t < t_accepted_) {
-    shift = distance_ ? D - distance_prev_ : 0.0;
-    return z_max_prev_;
-  }
-  shift = distance_ ? D - distance_acc_ : 0.0;
-  return z_max_;
+  const bool prev = t < t_accepted_;
+  shift = distance_ ? D - (prev ? distance_prev_ : distance_acc_) : 0.0;
+  if (depths) *depths = prev ? &depth_acc_prev_ : &depth_acc_;
+  return prev ? z_max_prev_ : z_max_;
+}
+
+double SoilContact::swept_memory_at(const Eigen::VectorXd& zm, const Eigen::VectorXd& depths, int i,
+                                    double shift) const {
+  const double recorded = memory_at(zm, i, shift);
+  if (shift == 0.0) return recorded;
+  // The depths the ground point passed over since the memory was recorded: the units between
+  // its position then (x_i + shift) and now (x_i), at the recording's depths.
+  const int m = static_cast<int>(x_.size());
+  const double X = x_(i) + shift;
+  double swept = depths(i);
+  if (shift > 0)
+    for (int j = i + 1; j < m && x_(j) < X; ++j) swept = std::max(swept, depths(j));
+  else
+    for (int j = i - 1; j >= 0 && x_(j) > X; --j) swept = std::max(swept, depths(j));
+  return std::max(recorded, swept);
 }
 
 double SoilContact::memory_at(const Eigen::VectorXd& zm, int i, double shift) const {
@@ -111,8 +129,9 @@ double SoilContact::memory_at(const Eigen::VectorXd& zm, int i, double shift) co
 
 double SoilContact::z_max_m(int i, double t) const {
   double s = 0;
-  const Eigen::VectorXd& zm = memory(t, s);
-  return memory_at(zm, i, s);
+  const Eigen::VectorXd* d = nullptr;
+  const Eigen::VectorXd& zm = memory(t, s, &d);
+  return swept_memory_at(zm, *d, i, s);
 }
 
 double SoilContact::rut_m(int i, double t) const {
@@ -201,13 +220,15 @@ double SoilContact::elastic_force(int i, double g, double zm, double k, double* 
 
 void SoilContact::forces(double t, int lo, int n, double* g) const {
   double s = 0, w = 0;
-  const Eigen::VectorXd& zm = memory(t, s);
+  const Eigen::VectorXd* swept = nullptr;
+  const Eigen::VectorXd& zm = memory(t, s, &swept);
   const Eigen::VectorXd& za = surface(t, w);
   band_lo_ = lo, band_hi_ = lo + n - 1, t_forces_ = t;
   for (int k = 0; k < n; ++k) {
     const int i = lo + k;
     double d = 0, z = 0;
-    g[k] = unit_force(i, g[k], memory_at(zm, i, s), &d, &z, w > 0 ? memory_at(za, i, s) : 0.0, w);
+    g[k] = unit_force(i, g[k], swept_memory_at(zm, *swept, i, s), &d, &z,
+                      w > 0 ? memory_at(za, i, s) : 0.0, w);
     stiffness_(i) = d;
     depth_(i) = z;
   }
@@ -248,13 +269,19 @@ void SoilContact::accept(double t, int lo, int hi) {
   t_accepted_ = t;
   const double s = distance_ ? distance_(t) - distance_acc_ : 0.0;
   if (s != 0.0) {
-    // Move the memory with the ground (the units' own values read ahead of them).
+    // Move the memory with the ground (the units' own values read ahead of them, with the
+    // depths each ground point passed over during the step).
     Eigen::VectorXd moved(m);
-    for (int i = 0; i < m; ++i) moved(i) = memory_at(z_max_prev_, i, s);
+    for (int i = 0; i < m; ++i) moved(i) = swept_memory_at(z_max_prev_, depth_acc_, i, s);
     z_max_ = moved;
     distance_acc_ += s;
   }
   for (int i = lo; i <= hi; ++i) z_max_(i) = std::max(z_max_(i), depth_(i));
+  // The depths of this accepted state (the units carrying no force stand at their rut, below
+  // every depth a ground point passing them had reached, so 0 there).
+  std::swap(depth_acc_prev_, depth_acc_);
+  depth_acc_.setZero(m);
+  for (int i = lo; i <= hi; ++i) depth_acc_(i) = depth_(i);
   if (tau_s_ > 0) {
     surface_ = surface_now;
     z_max_ = z_max_.cwiseMax(surface_);

@@ -27,12 +27,17 @@
 // Memory: z_max per unit in the ground frame. It is recorded at every accepted step (the soil
 // depth Z_i of the units in contact), and while rolling it moves with the ground: the ground
 // point under unit i at time t was under hub position x_i + (D(t) - D_acc) at the last accepted
-// step (D the distance rolled), interpolated linearly between the units' x. The recording lags
-// by one step only where a point passes the deepest unit inside a step (where the sinkage's
-// slope along x vanishes, so the lag is second order in the step's travel). An evaluation at a
-// time before the last accepted step (the driver's output samples, interpolated inside the step
-// just taken) uses the memory that step was integrated with: the accepted memory already holds
-// the depths of the step's end, which a state inside the step has not reached.
+// step (D the distance rolled), interpolated linearly between the units' x. Inside a step the
+// point also passes over the units between x_i + (D(t) - D_acc) and x_i, so its memory is raised
+// to the deepest of their depths at the accepted step (the sinkage profile taken as steady over
+// a step, the rolling's quasi-steady state). Without that sweep a step that carries a point
+// past the deepest unit (tens of units at 60 km/h) recorded the depths at the step ends only,
+// and the rear's unloading branch, hence the compaction resistance, moved with the step size:
+// 13.5-14.4 N on the flat-crown test of cell_soil_transient_test.cc at tolerances 1e-5 to 1e-7
+// (docs/soil.md section 8). An evaluation at a time before the last accepted step (the driver's
+// output samples, interpolated inside the step just taken) uses the memory that step was
+// integrated with: the accepted memory already holds the depths of the step's end, which a
+// state inside the step has not reached.
 #include <Eigen/Dense>
 #include <functional>
 #include <memory>
@@ -110,9 +115,14 @@ class SoilContact {
   /// Memory `zm` (per unit) at hub position x_i + shift, linear between the units' x (beyond the
   /// front: virgin soil; behind the rear: the rearmost unit's).
   double memory_at(const Eigen::VectorXd& zm, int i, double shift) const;
-  /// The memory in force at t (the previous one before the last accepted step) and the shift
-  /// of the ground since it was recorded.
-  const Eigen::VectorXd& memory(double t, double& shift) const;
+  /// The memory in force at t (the previous one before the last accepted step), the shift of
+  /// the ground since it was recorded and (depths) the soil depths recorded with it.
+  const Eigen::VectorXd& memory(double t, double& shift,
+                                const Eigen::VectorXd** depths = nullptr) const;
+  /// memory_at, raised to the deepest recorded depth the ground point passed over since the
+  /// recording (the units between x_i + shift and x_i): the sweep of a step's travel.
+  double swept_memory_at(const Eigen::VectorXd& zm, const Eigen::VectorXd& depths, int i,
+                         double shift) const;
   /// The soil surface recorded with memory(t) and the weight w = exp(-h / tau) of the time h
   /// since it was recorded (w = 0 on a rate-independent soil).
   const Eigen::VectorXd& surface(double t, double& w) const;
@@ -121,11 +131,13 @@ class SoilContact {
 
   std::unique_ptr<ground::PressureSinkage> law_;
   Eigen::VectorXd area_, k_, x_;
-  Eigen::VectorXd z_max_;         ///< memory per unit at the last accepted step
-  Eigen::VectorXd z_max_prev_;    ///< the one before it (evaluations inside the last step)
-  Eigen::VectorXd surface_;       ///< viscous soil: surface depth per unit, last accepted step
-  Eigen::VectorXd surface_prev_;  ///< the one before it
-  double tau_s_ = 0;              ///< eta2 / E2 (0: rate-independent)
+  Eigen::VectorXd z_max_;           ///< memory per unit at the last accepted step
+  Eigen::VectorXd z_max_prev_;      ///< the one before it (evaluations inside the last step)
+  Eigen::VectorXd depth_acc_;       ///< soil depths at the last accepted step (0: no force)
+  Eigen::VectorXd depth_acc_prev_;  ///< the ones before it
+  Eigen::VectorXd surface_;         ///< viscous soil: surface depth per unit, last accepted step
+  Eigen::VectorXd surface_prev_;    ///< the one before it
+  double tau_s_ = 0;                ///< eta2 / E2 (0: rate-independent)
   double t_accepted_ = -1e300, t_accepted_prev_ = -1e300, distance_prev_ = 0;
   mutable Eigen::VectorXd stiffness_, depth_, pressure_;  ///< last forces() per unit
   mutable int band_lo_ = 0, band_hi_ = -1;                ///< the units of the last forces()
