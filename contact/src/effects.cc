@@ -49,7 +49,7 @@ void with_3d_patch(EffectInfo& e) {
   }
 }
 
-std::vector<EffectInfo> make_catalogue() {
+std::vector<EffectInfo> make_effect_catalogue() {
   std::vector<EffectInfo> c;
   c.push_back({EffectId::inflation_pressure,
                "inflation_pressure",
@@ -181,7 +181,7 @@ bool EffectsConfig::any() const {
 }
 
 const std::vector<EffectInfo>& effect_catalogue() {
-  static const std::vector<EffectInfo> c = make_catalogue();
+  static const std::vector<EffectInfo> c = make_effect_catalogue();
   return c;
 }
 

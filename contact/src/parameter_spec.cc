@@ -102,7 +102,7 @@ std::vector<ParameterSpec> tyre_scalars() {
   };
 }
 
-std::vector<ParameterSpec> make_catalogue() {
+std::vector<ParameterSpec> make_parameter_catalogue() {
   std::vector<ParameterSpec> out = tyre_scalars();
   for (const auto& e : effect_catalogue()) {
     for (const auto& p : e.parameters) {
@@ -125,7 +125,7 @@ SearchRange logistic_search(double min, double max) {
 }
 
 const std::vector<ParameterSpec>& parameter_catalogue() {
-  static const std::vector<ParameterSpec> c = make_catalogue();
+  static const std::vector<ParameterSpec> c = make_parameter_catalogue();
   return c;
 }
 

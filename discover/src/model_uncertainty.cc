@@ -18,7 +18,7 @@ int output_of(const std::string& observable) {
 }
 
 // Relative noise floor of model_fit.h's BIC: keeps D invertible on noise-free data.
-constexpr double kNoiseFloor = 1e-4;
+constexpr double kFitNoiseFloor = 1e-4;
 
 }  // namespace
 
@@ -31,7 +31,7 @@ ModelUncertainty model_uncertainty(const Evaluator& ev, const contact::TyreConfi
   mu.noise_var.resize(m);
   for (Eigen::Index i = 0; i < m; ++i) {
     const double s = fit.rms.at(data.observables[e[i].observable]);
-    mu.noise_var(i) = std::max(s * s, kNoiseFloor * kNoiseFloor);
+    mu.noise_var(i) = std::max(s * s, kFitNoiseFloor * kFitNoiseFloor);
   }
   mu.cov = Eigen::MatrixXd::Zero(m, m);
   std::vector<contact::OperatingConditions> cases;

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "ema_checks.h"
+#include "lsfd_basis.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/ema/lsfd.h"
 #include "modaltyre/ema/lsfd_covariance.h"
@@ -14,7 +15,7 @@
 namespace modaltyre::ema {
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
+using detail::kTwoPi;  // lsfd_basis.h
 using cd = std::complex<double>;
 
 struct Layout {

@@ -4,12 +4,13 @@
 #include <cmath>
 #include <unsupported/Eigen/Polynomials>
 
+#include "lsfd_basis.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::ema {
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
+using detail::kTwoPi;  // lsfd_basis.h
 
 struct OrderPoles {
   std::vector<DiagramPole> poles;

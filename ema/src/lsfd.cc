@@ -13,8 +13,8 @@ namespace {
 using cd = std::complex<double>;
 using detail::basis;
 using detail::kResiduals;
+using detail::kTwoPi;
 using detail::stack;
-constexpr double kTwoPi = detail::kTwoPi;
 
 // Least-squares coefficients of `y` (stacked) on `a`, columns scaled to unit norm first (the
 // residual terms and the resonant terms differ by orders of magnitude).

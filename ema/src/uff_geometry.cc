@@ -17,7 +17,7 @@ using Vec = Eigen::Vector3d;
 constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kMaxNodes = 100000;  // a tyre test has tens of nodes; a car body thousands
 
-std::vector<std::string> tokens(const std::string& s) {
+std::vector<std::string> words(const std::string& s) {
   std::istringstream in(s);
   std::vector<std::string> out;
   for (std::string t; in >> t;) out.push_back(t);
@@ -46,7 +46,7 @@ std::optional<long> whole(const std::string& t) {
 std::array<long, 4> node_record(const UffDatasetLines& d, std::size_t i, int dataset) {
   const std::string& s = d.lines[i];
   std::array<long, 4> v{};
-  auto t = tokens(s);
+  auto t = words(s);
   if (t.size() < 4) {
     fail(d, i, "dataset " + std::to_string(dataset) + " record 1",
          "expected node label, definition and displacement coordinate systems and colour");
@@ -107,7 +107,7 @@ void read_uff_nodes(const UffDatasetLines& d, bool double_precision, UffGeometry
   const int dataset = double_precision ? 2411 : 15;
   if (!double_precision) {
     for (std::size_t i = 0; i < d.lines.size(); ++i) {
-      const auto t = tokens(d.lines[i]);
+      const auto t = words(d.lines[i]);
       if (t.empty()) continue;
       if (t.size() != 7) {
         fail(d, i, "dataset 15",
@@ -123,14 +123,14 @@ void read_uff_nodes(const UffDatasetLines& d, bool double_precision, UffGeometry
   }
   std::size_t i = 0;
   while (i < d.lines.size()) {
-    if (tokens(d.lines[i]).empty()) {
+    if (words(d.lines[i]).empty()) {
       ++i;
       continue;
     }
     const auto r = node_record(d, i, dataset);
     UffNode n{r[0], r[1], r[2], {}, d.first_line + static_cast<int>(i)};
     if (i + 1 >= d.lines.size()) fail(d, i, "dataset 2411 record 2", "missing coordinates");
-    n.coordinates = reals3(d, i + 1, "dataset 2411 record 2 (coordinates)", tokens(d.lines[i + 1]));
+    n.coordinates = reals3(d, i + 1, "dataset 2411 record 2 (coordinates)", words(d.lines[i + 1]));
     add_node(d, i, n, g);
     i += 2;
   }
@@ -141,11 +141,11 @@ void read_uff_coordinate_systems(const UffDatasetLines& d, UffGeometry& g) {
   if (d.lines.size() < 2) fail(d, 0, "dataset 2420 record 1", "missing part UID and name");
   std::size_t i = 2;
   while (i < d.lines.size()) {
-    if (tokens(d.lines[i]).empty()) {
+    if (words(d.lines[i]).empty()) {
       ++i;
       continue;
     }
-    const auto t = tokens(d.lines[i]);
+    const auto t = words(d.lines[i]);
     const auto label = t.size() >= 2 ? whole(t[0]) : std::nullopt;
     const auto type = t.size() >= 2 ? whole(t[1]) : std::nullopt;
     if (!label || !type) {
@@ -163,7 +163,7 @@ void read_uff_coordinate_systems(const UffDatasetLines& d, UffGeometry& g) {
       const auto row = reals3(d, at,
                               "dataset 2420 record " + std::to_string(5 + r) +
                                   " (transformation matrix row " + std::to_string(r + 1) + ")",
-                              tokens(d.lines[at]));
+                              words(d.lines[at]));
       const double norm = vec(row).norm();
       if (!(std::abs(norm - 1) < 1e-3)) {
         fail(d, at, "dataset 2420 record " + std::to_string(5 + r),
@@ -172,7 +172,7 @@ void read_uff_coordinate_systems(const UffDatasetLines& d, UffGeometry& g) {
       }
       cs.axes[r] = row;
     }
-    cs.origin = reals3(d, i + 5, "dataset 2420 record 8 (origin)", tokens(d.lines[i + 5]));
+    cs.origin = reals3(d, i + 5, "dataset 2420 record 8 (origin)", words(d.lines[i + 5]));
     if (cs.label <= 0) fail(d, i, "dataset 2420 record 3 field 1", "label must be positive");
     if (g.systems.count(cs.label)) {
       fail(d, i, "dataset 2420 record 3 field 1",

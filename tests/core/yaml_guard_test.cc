@@ -15,7 +15,7 @@ namespace modaltyre {
 namespace {
 
 // The InputError thrown by parsing `yaml`, or a failure when none is thrown.
-InputError error_of(const std::string& yaml) {
+InputError guard_error_of(const std::string& yaml) {
   try {
     (void)parse_yaml(yaml, "c.yaml");
   } catch (const InputError& e) {
@@ -27,7 +27,7 @@ InputError error_of(const std::string& yaml) {
 
 TEST(YamlGuard, KeyTwiceInASectionNamesBothLines) {
   const InputError e =
-      error_of("tread:\n  modulus_MPa: 1.0\n  thickness_mm: 8\n  modulus_MPa: 9\n");
+      guard_error_of("tread:\n  modulus_MPa: 1.0\n  thickness_mm: 8\n  modulus_MPa: 9\n");
   EXPECT_EQ(e.where().file, "c.yaml");
   EXPECT_EQ(e.where().line, 4);
   EXPECT_EQ(e.where().key, "tread.modulus_MPa");
@@ -36,14 +36,14 @@ TEST(YamlGuard, KeyTwiceInASectionNamesBothLines) {
 }
 
 TEST(YamlGuard, SectionTwiceNamesBothLines) {
-  const InputError e = error_of("tread:\n  a: 1\nmodal:\n  b: 2\ntread:\n  c: 3\n");
+  const InputError e = guard_error_of("tread:\n  a: 1\nmodal:\n  b: 2\ntread:\n  c: 3\n");
   EXPECT_EQ(e.where().line, 5);
   EXPECT_EQ(e.where().key, "tread");
   EXPECT_NE(std::string(e.what()).find("first at line 1"), std::string::npos) << e.what();
 }
 
 TEST(YamlGuard, KeyTwiceInAFlowMapping) {
-  const InputError e = error_of("grid: {load_N: [1], load_N: [2]}\n");
+  const InputError e = guard_error_of("grid: {load_N: [1], load_N: [2]}\n");
   EXPECT_EQ(e.where().key, "grid.load_N");
 }
 
@@ -61,7 +61,7 @@ TEST(YamlGuard, AliasBombIsRefusedAtTheFirstAlias) {
             ", " + p + ", " + p + ", " + p + ", " + p + ", " + p + ", " + p + ", " + p + "]\n";
   }
   const auto t0 = std::chrono::steady_clock::now();
-  const InputError e = error_of(bomb);
+  const InputError e = guard_error_of(bomb);
   EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(5));
   EXPECT_EQ(e.where().line, 2);
   EXPECT_EQ(e.where().key, "a1");
@@ -69,12 +69,12 @@ TEST(YamlGuard, AliasBombIsRefusedAtTheFirstAlias) {
 }
 
 TEST(YamlGuard, MergeKeyIsAnAlias) {
-  const InputError e = error_of("base: &b {x: 1}\nother:\n  <<: *b\n");
+  const InputError e = guard_error_of("base: &b {x: 1}\nother:\n  <<: *b\n");
   EXPECT_EQ(e.where().line, 3);
 }
 
 TEST(YamlGuard, SecondDocumentIsRefused) {
-  const InputError e = error_of("a: 1\n---\na: 2\n");
+  const InputError e = guard_error_of("a: 1\n---\na: 2\n");
   EXPECT_EQ(e.where().line, 2);
 }
 
@@ -82,7 +82,7 @@ TEST(YamlGuard, NodeCountIsBounded) {
   std::string big = "x: [";
   for (long i = 0; i <= kMaxYamlNodes; ++i) big += "0,";
   big += "0]\n";
-  const InputError e = error_of(big);
+  const InputError e = guard_error_of(big);
   EXPECT_NE(std::string(e.what()).find("YAML nodes"), std::string::npos) << e.what();
 }
 
@@ -132,7 +132,7 @@ std::string nested_config(const Nesting& n, int depth) {
 class YamlNesting : public ::testing::TestWithParam<Nesting> {};
 
 TEST_P(YamlNesting, TenThousandLevelsAreRefusedAtTheirLine) {
-  const InputError e = error_of(nested_config(GetParam(), 10000));
+  const InputError e = guard_error_of(nested_config(GetParam(), 10000));
   EXPECT_EQ(e.where().file, "c.yaml");
   EXPECT_EQ(e.where().line, GetParam().block ? 3 : 2);
   EXPECT_NE(std::string(e.what()).find("nesting deeper than 64 levels"), std::string::npos)

@@ -25,7 +25,7 @@ constexpr double kStdFactor = 1.5;
 constexpr int kReplicates = 24;
 constexpr double kNoise = 0.03;  // of each FRF's RMS, as the bundled hammer data's 3 %
 
-EmaOptions ring_band() {
+EmaOptions std_ring_band() {
   EmaOptions o;
   o.band_lo_hz = 60;
   o.band_hi_hz = 330;
@@ -59,7 +59,7 @@ TEST(ModeStd, FrequencyDampingAndShapeStdMatchTheReplicatesSpread) {
     SynthOptions so;
     so.noise = kNoise;
     so.seed = 1000 + rep;
-    const EmaResult r = run_ema(modaltyre_test::synthesise(model, so), ring_band());
+    const EmaResult r = run_ema(modaltyre_test::synthesise(model, so), std_ring_band());
     for (std::size_t j = 0; j < n; ++j) {
       const auto m = match(*planted[j], r, planted[j]->radial[0], 0);
       ASSERT_NE(m.found, nullptr) << planted[j]->freq_hz << " Hz, replicate " << rep;

@@ -20,19 +20,20 @@
 namespace modaltyre::fmu::test {
 namespace {
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+const std::string kPhysicsConfig =
+    std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 constexpr double kStep_s = 1e-3;
 constexpr double kLoad_N = 4000;
 
-const FmuFolder& packed() {
-  static const std::string folder = pack_and_unzip(kConfig);
+const FmuFolder& packed_physics() {
+  static const std::string folder = pack_and_unzip(kPhysicsConfig);
   static const FmuFolder fmu(folder);
   return fmu;
 }
 
 const transient::TransientModel& model() {
   static const transient::TransientModel m = transient::build_transient_model(
-      contact::build_tyre_model(contact::load_tyre_config(kConfig)));
+      contact::build_tyre_model(contact::load_tyre_config(kPhysicsConfig)));
   return m;
 }
 
@@ -59,7 +60,7 @@ TEST(FmuPhysics, PressSettlesToTheFootprintsLoadAtTheSinking) {
       contact::predict(model().tyre, model().tyre.config.default_conditions(kLoad_N));
   ASSERT_TRUE(p.ok());
   const double delta = p.sinking_mm * 1e-3;
-  FmuInstance f(packed());
+  FmuInstance f(packed_physics());
   ASSERT_TRUE(f.ok());
   set_wheel(f, 0, R0(), 0, 0, 0, 0);
   ASSERT_EQ(f.initialize(), fmi2OK);
@@ -125,7 +126,7 @@ TEST(FmuPhysics, FreeRollingGivesTheRollingScenariosResistance) {
   const double rr_over_load = ref.rolling_resistance_N / model().settings.rolling.load_N;
   const contact::Prediction p =
       contact::predict(model().tyre, model().tyre.config.default_conditions(kLoad_N));
-  FmuInstance f(packed());
+  FmuInstance f(packed_physics());
   Rolling r;
   r.z = R0() - p.sinking_mm * 1e-3;
   set_wheel(f, 0, r.z, 0, 0, 0, 0);
@@ -155,7 +156,7 @@ constexpr double kSlipStiffnessTolerance = 0.10;
 TEST(FmuPhysics, BrakingForceRisesWithSlipAndSaturatesAtMuFz) {
   const contact::Prediction p =
       contact::predict(model().tyre, model().tyre.config.default_conditions(kLoad_N));
-  FmuInstance f(packed());
+  FmuInstance f(packed_physics());
   Rolling r;
   r.speed = 30 / 3.6;
   r.ramp_s = 0.5;
@@ -207,9 +208,9 @@ QuarterCar quarter_car(FmuInstance& f, const std::string& profile, double durati
   const double h = kStep_s, g = 9.81, ms = 300, mu = 35, ks = 25e3, cs = 2e3, Iw = 0.9;
   const double speed = 30 / 3.6;
   f.set("step_size", h);
-  const fmi2ValueReference r = packed().vr("road_profile");
+  const fmi2ValueReference r = packed_physics().vr("road_profile");
   const fmi2String p = profile.c_str();
-  EXPECT_EQ(packed().api().set_string(f.component(), &r, 1, &p), fmi2OK);
+  EXPECT_EQ(packed_physics().api().set_string(f.component(), &r, 1, &p), fmi2OK);
   // Start at the static equilibrium: the tyre at its footprint's sinking under the car's
   // weight, the suspension compressed by the body's.
   const contact::Prediction p0 =
@@ -243,7 +244,7 @@ QuarterCar quarter_car(FmuInstance& f, const std::string& profile, double durati
 }
 
 std::string cleat_profile(double x_centre) {
-  const std::string path = packed().folder() + "/cleat_test.csv";
+  const std::string path = packed_physics().folder() + "/cleat_test.csv";
   std::ofstream out(path);
   out << "x_m,height_m\n-1000,0\n";
   const double H = 0.01, L = 0.02, edge = L / 4;
@@ -264,7 +265,7 @@ constexpr double kSettledLoadTolerance = 0.01;
 TEST(FmuPhysics, QuarterCarOverACleatSettlesBackToStaticEquilibrium) {
   const double speed = 30 / 3.6, t_cleat = 0.6;
   const std::string profile = cleat_profile(speed * t_cleat);
-  FmuInstance a(packed(), "car a"), b(packed(), "car b");
+  FmuInstance a(packed_physics(), "car a"), b(packed_physics(), "car b");
   const QuarterCar qa = quarter_car(a, profile, 3.0);
   ASSERT_EQ(qa.t.size(), 3000u);
   const double weight = (300 + 35) * 9.81;

@@ -3,7 +3,7 @@
 # each for a bounded time on a scratch copy of its seed corpus. Exit status non-zero on any
 # finding (crash, unexpected exception, sanitizer report, timeout, out-of-memory) or build error.
 #
-#   tests/fuzz/run.sh                     # 60 s per target (CI)
+#   tests/fuzz/run.sh                     # 60 s per target (CI: FUZZ_TIME=40, .ci/run)
 #   FUZZ_TIME=600 tests/fuzz/run.sh       # longer local run
 #   FUZZ_TARGETS="fuzz_csv fuzz_sweep" tests/fuzz/run.sh
 # Environment: FUZZ_BUILD_DIR (default build-fuzz), FUZZ_TIME (seconds per target, 60),
@@ -31,6 +31,7 @@ if [[ -z ${ASAN_SYMBOLIZER_PATH:-} ]]; then
 fi
 
 # -O1 with line tables, as OSS-Fuzz builds: half the compile time of -O2 -g, the same coverage.
+# The libraries are unity translation units here too (cmake/unity.cmake).
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMODALTYRE_FUZZ=ON \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
   -DMODALTYRE_BUILD_TESTS=OFF -DMODALTYRE_BUILD_BENCH=OFF >/dev/null

@@ -16,7 +16,7 @@ namespace {
 using modaltyre::InputError;
 using namespace modaltyre::tir;
 
-const std::string kData = std::string(MODALTYRE_SOURCE_DIR) + "/tests/data/tir/";
+const std::string kTirData = std::string(MODALTYRE_SOURCE_DIR) + "/tests/data/tir/";
 
 MfVerticalLaw law(double q_fz2) {
   MfVerticalLaw v;
@@ -77,7 +77,7 @@ TEST(MfFormulas, PatchLawsAtKnownDeflection) {
 TEST(MfTyreFile, NonSiUnitsGiveSiLaws) {
   // tests/data/tir/mfswift62_mm_kN.tir: R0 310 mm, W 205 mm, FNOMIN 4.2 kN, C_z 0.21 kN/mm,
   // INFLPRES 2.4 bar, NOMPRES 2.2 bar, PFZ1 0.7, Q_RA1/2 0.65/0.75, Q_RB1/2 1.05/-1.2.
-  const MfTyre t = read_mf_tyre(kData + "mfswift62_mm_kN.tir");
+  const MfTyre t = read_mf_tyre(kTirData + "mfswift62_mm_kN.tir");
   EXPECT_EQ(t.fittyp, 62);
   EXPECT_DOUBLE_EQ(t.unloaded_radius_m, 0.31);
   EXPECT_DOUBLE_EQ(*t.width_m, 0.205);
@@ -93,7 +93,7 @@ TEST(MfTyreFile, NonSiUnitsGiveSiLaws) {
 }
 
 TEST(MfTyreFile, OlderFileUsesItsDeflectionLoadTable) {
-  const MfTyre t = read_mf_tyre(kData + "mf52_load_curve_table.tir");
+  const MfTyre t = read_mf_tyre(kTirData + "mf52_load_curve_table.tir");
   EXPECT_TRUE(t.table_law);
   EXPECT_NEAR(*t.load_N(0.0125), 2700, 1e-9);  // between (0.010, 2100) and (0.015, 3300)
   EXPECT_FALSE(t.load_N(0.031));               // beyond the table
@@ -103,7 +103,7 @@ TEST(MfTyreFile, OlderFileUsesItsDeflectionLoadTable) {
 }
 
 TEST(MfTyreFile, Pac2002WithoutContactPatchSaysWhy) {
-  const MfTyre t = read_mf_tyre(kData + "pac2002_mf52.tir");
+  const MfTyre t = read_mf_tyre(kTirData + "pac2002_mf52.tir");
   EXPECT_FALSE(t.table_law);
   EXPECT_NEAR(*t.load_N(0.02), 2e5 * 0.02, 1e-9);  // VERTICAL_STIFFNESS 2.0D+05, no Q_FZ2
   EXPECT_FALSE(t.length_m(4000));
@@ -112,7 +112,7 @@ TEST(MfTyreFile, Pac2002WithoutContactPatchSaysWhy) {
 
 TEST(MfTyreFile, FtireIsRefusedWithWhatItIs) {
   try {
-    read_mf_tyre(kData + "ftire_model.tir");
+    read_mf_tyre(kTirData + "ftire_model.tir");
     FAIL() << "accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("is an FTire tyre model file"), std::string::npos)

@@ -12,7 +12,7 @@
 namespace modaltyre::tir {
 namespace {
 
-std::string upper(std::string s) {
+std::string uppercase(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return s;
 }
@@ -26,7 +26,9 @@ std::string num(double v) {
 
 // Whether the file names FTire anywhere: sections, keys, values or header comments.
 bool mentions_ftire(const TirFile& f) {
-  const auto has = [](const std::string& s) { return upper(s).find("FTIRE") != std::string::npos; };
+  const auto has = [](const std::string& s) {
+    return uppercase(s).find("FTIRE") != std::string::npos;
+  };
   if (std::any_of(f.comments.begin(), f.comments.end(), has)) return true;
   for (const auto& s : f.sections) {
     if (has(s.name)) return true;
@@ -101,7 +103,7 @@ class Reader {
 void identify_model(const TirFile& f, MfTyre& t) {
   const TirValue* fittyp = f.value("MODEL", "FITTYP");
   const TirValue* format = f.value("MODEL", "PROPERTY_FILE_FORMAT");
-  const std::string fmt = format ? upper(format->text) : "";
+  const std::string fmt = format ? uppercase(format->text) : "";
   if (fittyp) {
     if (!fittyp->number || *fittyp->number != std::floor(*fittyp->number) || *fittyp->number < 1 ||
         *fittyp->number > 999) {
