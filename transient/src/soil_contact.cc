@@ -99,18 +99,29 @@ const Eigen::VectorXd& SoilContact::memory(double t, double& shift,
 
 double SoilContact::swept_memory_at(const Eigen::VectorXd& zm, const Eigen::VectorXd& depths, int i,
                                     double shift) const {
-  const double recorded = memory_at(zm, i, shift);
-  if (shift == 0.0) return recorded;
-  // The depths the ground point passed over since the memory was recorded: the units between
-  // its position then (x_i + shift) and now (x_i), at the recording's depths.
+  if (shift == 0.0) return zm(i);
+  // One walk from i to the ground point's position at the recording, X = x_i + shift: the units
+  // strictly between are the depths it passed over since (with its own unit's), the bracket of X
+  // the recorded memory read there (memory_at's interpolation, virgin soil ahead of the front).
   const int m = static_cast<int>(x_.size());
   const double X = x_(i) + shift;
   double swept = depths(i);
-  if (shift > 0)
-    for (int j = i + 1; j < m && x_(j) < X; ++j) swept = std::max(swept, depths(j));
-  else
-    for (int j = i - 1; j >= 0 && x_(j) > X; --j) swept = std::max(swept, depths(j));
-  return std::max(recorded, swept);
+  int j = i;
+  if (shift > 0) {
+    while (j + 1 < m && x_(j + 1) <= X) {
+      ++j;
+      if (x_(j) < X) swept = std::max(swept, depths(j));
+    }
+    if (j == m - 1) return std::max(X > x_(m - 1) ? 0.0 : zm(m - 1), swept);
+  } else {
+    while (j > 0 && x_(j) > X) {
+      --j;
+      if (x_(j) > X) swept = std::max(swept, depths(j));
+    }
+    if (X <= x_(0)) return std::max(zm(0), swept);
+  }
+  const double w = (X - x_(j)) / (x_(j + 1) - x_(j));
+  return std::max((1 - w) * zm(j) + w * zm(j + 1), swept);
 }
 
 double SoilContact::memory_at(const Eigen::VectorXd& zm, int i, double shift) const {
@@ -119,7 +130,7 @@ double SoilContact::memory_at(const Eigen::VectorXd& zm, int i, double shift) co
   const double X = x_(i) + shift;
   if (X >= x_(m - 1)) return X > x_(m - 1) ? 0.0 : zm(m - 1);  // ahead: virgin soil
   if (X <= x_(0)) return zm(0);
-  // The step's travel is a few units at most: walk from i.
+  // Walk from i over the step's travel (tens of units at 60 km/h).
   int j = i;
   while (j + 1 < m && x_(j + 1) <= X) ++j;
   while (j > 0 && x_(j) > X) --j;

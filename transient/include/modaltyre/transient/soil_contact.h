@@ -120,7 +120,8 @@ class SoilContact {
   const Eigen::VectorXd& memory(double t, double& shift,
                                 const Eigen::VectorXd** depths = nullptr) const;
   /// memory_at, raised to the deepest recorded depth the ground point passed over since the
-  /// recording (the units between x_i + shift and x_i): the sweep of a step's travel.
+  /// recording (the units between x_i + shift and x_i): the sweep of a step's travel, in the
+  /// same walk over the units.
   double swept_memory_at(const Eigen::VectorXd& zm, const Eigen::VectorXd& depths, int i,
                          double shift) const;
   /// The soil surface recorded with memory(t) and the weight w = exp(-h / tau) of the time h
