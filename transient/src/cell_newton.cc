@@ -47,6 +47,13 @@ CellNewton::CellNewton(const CellModel& cm, const CellSystem& system)
     }
   }
   TT_ = M.T.transpose();
+  // T~ of every section of the span as columns (update_active_set() takes H T~_i^T from HT_).
+  const UnitRange span = system.sections();
+  TspanT_.resize(np_, span.size());
+  for (int s = 0; s < span.size(); ++s) {
+    TspanT_.col(s).head(M.rank) = -TT_.col(span.lo + s);
+    TspanT_(M.rank, s) = system.plan().hub_free() ? 1.0 : 0.0;
+  }
   trow_.resize(np_);
   // solve_ee()'s lanes: the classes with tread states, by the length of their range.
   for (int c = 0; c < cm.classes.size(); ++c)
@@ -190,7 +197,7 @@ void CellNewton::factor(double gamma) {
   // crown's one class then repeats the 2D transient's arithmetic (FlatCrown test; a
   // rounding-level change here moved its 0.3 s hold's end load by 0.9 %).
   if (semismooth_) {
-    // More than one class: the vectorised product and LU of update_cap() (Eigen's LU where a
+    // More than one class: the vectorised product and the unblocked LU (Eigen's LU where a
     // pivot vanishes, so that setup() reports the singular matrix as before).
     cap_product(gamma);
     if (!lu_cap()) factor_cap();
@@ -248,6 +255,11 @@ void CellNewton::factor_dq(double gamma) {
     detail::small_gemm(rank, np_, nr, M.Cr.data(), static_cast<int>(M.Cr.rows()),
                        DQ_.data() + 2 * nq, ld, H_.data(), np_, true);
   H_.row(rank) = DQ_.row(Z);
+  if (semismooth_ && TspanT_.cols() > 0) {
+    HT_.resize(np_, TspanT_.cols());
+    detail::small_gemm(np_, static_cast<int>(TspanT_.cols()), np_, H_.data(), np_, TspanT_.data(),
+                       np_, HT_.data(), np_);
+  }
 }
 
 void CellNewton::solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {

@@ -37,11 +37,6 @@ void CellNewton::slot_coefficient(int k) {
   gkc_(k) = kd > 0 ? gamma_ * kd / cm_.c_kv(i) : 0.0;
 }
 
-void CellNewton::update_cap(double gamma) {
-  cap_product(gamma);
-  if (!lu_cap()) factor(gamma);  // the whole factorisation at the current contact set
-}
-
 void CellNewton::cap_product(double gamma) {
   // I - gamma H K by columns (the vectorised product: Eigen's blocked one would hand these sizes
   // to OpenMP threads, which only wait on the shared cores).
@@ -130,9 +125,21 @@ void CellNewton::update_active_set() {
     dw_.emplace_back(i, weight(kd_(k)) - w_old);
     if (ne_ > 0) slot_coefficient(k);
   }
-  // dK = Tc^T diag(dw) Tc over the changed sections' rows T~_i: Tc^T (np x changes, a row T~_i
-  // per column, contiguous) times W = diag(dw) Tc, one register-blocked product.
-  const int nchg = static_cast<int>(dw_.size());
+  // Per section one change of weight (a section's cells share its row T~_i): dK = Tc^T diag(dw)
+  // Tc over the changed sections, and the capacitance matrix changes by -gamma H dK = (-gamma H
+  // Tc) W, with H T~_i^T taken from HT_ (factor_dq()): two register-blocked products of rank
+  // nchg, ~2 np^2 nchg instead of the np^3 of a new product H K (the matrix then differs from
+  // I - gamma H K by rounding only, until the next factor()). Measured on the free vibration at
+  // 1 mm / 5 mm (~11 sections a Newton iteration): CPU real-time factor 19.2 -> 20.8x.
+  std::sort(dw_.begin(), dw_.end());
+  int nchg = 0;
+  for (const auto& [i, dw] : dw_) {
+    if (nchg > 0 && dw_[nchg - 1].first == i)
+      dw_[nchg - 1].second += dw;
+    else
+      dw_[nchg++] = {i, dw};
+  }
+  dw_.resize(nchg);
   Tc_.resize(np_, nchg);
   W_.resize(nchg, np_);
   for (int a = 0; a < nchg; ++a) {
@@ -142,6 +149,10 @@ void CellNewton::update_active_set() {
   for (int b = 0; b < np_; ++b)
     for (int a = 0; a < nchg; ++a) W_(a, b) = dw_[a].second * Tc_(b, a);
   detail::small_gemm(np_, np_, nchg, Tc_.data(), np_, W_.data(), nchg, K_.data(), np_, true);
+  HTc_.resize(np_, nchg);
+  const int span_lo = sys_.sections().lo;
+  for (int a = 0; a < nchg; ++a) HTc_.col(a) = -gamma * HT_.col(dw_[a].first - span_lo);
+  detail::small_gemm(np_, np_, nchg, HTc_.data(), np_, W_.data(), nchg, cap_mat_.data(), np_, true);
   // The span of sections with an active cell (solve() reads T~ over it) only grows here.
   int lo = ns_ > 0 ? s0_ : M.m, hi = ns_ > 0 ? s0_ + ns_ - 1 : -1;
   for (const auto& [i, dw] : dw_) lo = std::min(lo, i), hi = std::max(hi, i);
@@ -154,7 +165,7 @@ void CellNewton::update_active_set() {
       Tt_(s, rank) = dz;
     }
   }
-  update_cap(gamma);
+  if (!lu_cap()) factor(gamma);  // the whole factorisation at the current contact set
 }
 
 }  // namespace modaltyre::transient

@@ -24,10 +24,10 @@ class CellNewton {
   void factor(double gamma);
   /// D^-1 Q (DQ_) and H = P D^-1 Q (H_) at gamma and the current spin.
   void factor_dq(double gamma);
-  /// The capacitance matrix I - gamma H K and its LU (update_cap(): after rank-one changes of K;
-  /// cap_product(): the matrix by vectorised column products; lu_cap(): its unblocked LU, false
-  /// at a zero or non-finite pivot; factor_cap(): Eigen's product order and LU, a flat crown's).
-  void update_cap(double gamma);
+  /// The capacitance matrix I - gamma H K and its LU (cap_product(): the matrix by vectorised
+  /// column products, update_active_set() then changes it by low-rank products; lu_cap(): its
+  /// unblocked LU, false at a zero or non-finite pivot; factor_cap(): Eigen's product order and
+  /// LU, a flat crown's).
   void cap_product(double gamma);
   bool lu_cap();
   void factor_cap();
@@ -74,7 +74,9 @@ class CellNewton {
   Eigen::MatrixXd TT_;           ///< T^T (rank x m)
   /// update_active_set(): T~ rows of the changed sections as columns (Tc_) and scaled by their
   /// change of weight (W_ = diag(dw) Tc_^T).
-  Eigen::MatrixXd Tc_, W_;
+  Eigen::MatrixXd Tc_, W_, HTc_;
+  /// T~ of the span's sections as columns, and H times it (factor_dq(); more than one class).
+  Eigen::MatrixXd TspanT_, HT_;
   Eigen::VectorXd trow_, zero_row_, mukd_, gkc_;
   std::vector<int> changed_, rowperm_, kf_, kl_;
   std::vector<std::pair<int, double>> dw_;
