@@ -145,14 +145,44 @@ TEST(CellKernels, ScansEqualPlainLoops) {
   }
 }
 
-TEST(CellKernels, LuRowUpdateIsOneFusedMultiplyAddPerEntry) {
+TEST(CellKernels, LuInPlaceIsPartialPivotingWithOneFusedMultiplyAddPerEntry) {
+  // The stated steps as a plain loop, to the bit, and the factors reproduce the matrix.
   std::mt19937 rng(3);
-  for (int n : {0, 1, 4, 6, 41}) {
-    const std::vector<double> k = random_values(rng, n), r0 = random_values(rng, n);
-    std::vector<double> r = r0;
-    lu_row_update(n, 0.731, k.data(), r.data());
-    for (int j = 0; j < n; ++j) ASSERT_EQ(std::fma(-0.731, k[j], r0[j]), r[j]);
+  for (int n : {1, 2, 5, 6, 41, 42}) {
+    const std::vector<double> a0 = random_values(rng, n * n);
+    std::vector<double> a = a0, want = a0;
+    std::vector<int> rows(n), want_rows(n);
+    ASSERT_TRUE(lu_in_place(n, a.data(), rows.data()));
+    for (int i = 0; i < n; ++i) want_rows[i] = i;
+    for (int k = 0; k < n; ++k) {
+      int p = k;
+      for (int i = k + 1; i < n; ++i)
+        if (std::abs(want[i * n + k]) > std::abs(want[p * n + k])) p = i;
+      for (int j = 0; j < n; ++j) std::swap(want[k * n + j], want[p * n + j]);
+      std::swap(want_rows[k], want_rows[p]);
+      for (int i = k + 1; i < n; ++i) {
+        const double l = want[i * n + k] / want[k * n + k];
+        want[i * n + k] = l;
+        for (int j = k + 1; j < n; ++j)
+          want[i * n + j] = std::fma(-l, want[k * n + j], want[i * n + j]);
+      }
+    }
+    ASSERT_EQ(want_rows, rows);
+    for (int e = 0; e < n * n; ++e) ASSERT_EQ(want[e], a[e]) << "n " << n << " entry " << e;
+    // L U = P A.
+    double worst = 0, scale = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        double s = 0;
+        for (int k = 0; k <= std::min(i, j); ++k) s += (k == i ? 1.0 : a[i * n + k]) * a[k * n + j];
+        worst = std::max(worst, std::abs(s - a0[rows[i] * n + j]));
+        scale = std::max(scale, std::abs(a0[i * n + j]));
+      }
+    EXPECT_LT(worst, 1e-12 * n * scale) << n;
   }
+  std::vector<double> singular = {1, 2, 2, 4};
+  std::vector<int> rows(2);
+  EXPECT_FALSE(lu_in_place(2, singular.data(), rows.data()));
 }
 
 }  // namespace

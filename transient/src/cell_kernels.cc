@@ -121,13 +121,35 @@ __attribute__((target("avx2"))) void band_row_avx(int n, bool with_t, double a, 
   band_row_scalar(j, n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
 }
 
-__attribute__((target("avx2,fma"))) void lu_row_update_avx2(int n, double l, const double* k,
-                                                            double* r) {
-  const __m256d vl = _mm256_set1_pd(l);
-  int j = 0;
-  for (; j + 4 <= n; j += 4)
-    _mm256_storeu_pd(r + j, _mm256_fnmadd_pd(vl, _mm256_loadu_pd(k + j), _mm256_loadu_pd(r + j)));
-  for (; j < n; ++j) r[j] = std::fma(-l, k[j], r[j]);
+__attribute__((target("avx2,fma"))) bool lu_in_place_avx2(int n, double* a, int* rows) {
+  // lu_in_place()'s steps (the portable function below), the row update four entries at a time.
+  for (int i = 0; i < n; ++i) rows[i] = i;
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    for (int i = k + 1; i < n; ++i)
+      if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
+    if (p != k) {
+      std::swap_ranges(a + k * n, a + (k + 1) * n, a + p * n);
+      std::swap(rows[k], rows[p]);
+    }
+    const double pivot = a[k * n + k];
+    if (!(std::isfinite(pivot) && pivot != 0)) return false;
+    const double* rk = a + k * n + k + 1;
+    const int m = n - k - 1;
+    for (int i = k + 1; i < n; ++i) {
+      double* ri = a + i * n;
+      const double l = ri[k] / pivot;
+      ri[k] = l;
+      double* r = ri + k + 1;
+      const __m256d vl = _mm256_set1_pd(l);
+      int j = 0;
+      for (; j + 4 <= m; j += 4)
+        _mm256_storeu_pd(r + j,
+                         _mm256_fnmadd_pd(vl, _mm256_loadu_pd(rk + j), _mm256_loadu_pd(r + j)));
+      for (; j < m; ++j) r[j] = std::fma(-l, rk[j], r[j]);
+    }
+  }
+  return true;
 }
 
 __attribute__((target("avx2"))) int sign_mismatches_avx2(int n, const double* a, const double* b,
@@ -312,11 +334,30 @@ void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& 
     if ((a[k] > 0) != (b[k] > 0)) out.push_back(k);
 }
 
-void lu_row_update(int n, double l, const double* k, double* r) {
+bool lu_in_place(int n, double* a, int* rows) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  if (avx2_fma()) return lu_row_update_avx2(n, l, k, r);
+  if (avx2_fma()) return lu_in_place_avx2(n, a, rows);
 #endif
-  for (int j = 0; j < n; ++j) r[j] = std::fma(-l, k[j], r[j]);
+  for (int i = 0; i < n; ++i) rows[i] = i;
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    for (int i = k + 1; i < n; ++i)
+      if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
+    if (p != k) {
+      std::swap_ranges(a + k * n, a + (k + 1) * n, a + p * n);
+      std::swap(rows[k], rows[p]);
+    }
+    const double pivot = a[k * n + k];
+    if (!(std::isfinite(pivot) && pivot != 0)) return false;
+    const double* rk = a + k * n + k + 1;
+    for (int i = k + 1; i < n; ++i) {
+      double* ri = a + i * n;
+      const double l = ri[k] / pivot;
+      ri[k] = l;
+      for (int j = 0; j < n - k - 1; ++j) ri[k + 1 + j] = std::fma(-l, rk[j], ri[k + 1 + j]);
+    }
+  }
+  return true;
 }
 
 void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,

@@ -24,8 +24,14 @@ void pair_dots(int n, const double* a, const double* b, const double* x, const d
 void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,
               double s1, double s2, double d, double* y, double* r, double w, double gamma);
 
-/// r_j = fma(-l, k_j, r_j), j < n: one row update of an LU factorisation (CellNewton::lu_cap()).
-void lu_row_update(int n, double l, const double* k, double* r);
+/// In-place LU with partial pivoting of the row-major n x n matrix a (unit L below the diagonal,
+/// U on and above it; CellNewton::lu_cap()): at step k the first row i >= k with the largest
+/// |a_ik| is swapped into row k (rows[k] <-> rows[i]: rows[pos] = the original row at pos), and
+/// each row below updated as l = a_ik / a_kk, a_ij = fma(-l, a_kj, a_ij) for j > k. False at a
+/// zero or non-finite pivot (a and rows then partly factored). One function per instruction set
+/// (the AVX2 path four entries at a time, the same operations): a call per row update had cost
+/// more than its arithmetic on the 42-square capacitance matrices.
+bool lu_in_place(int n, double* a, int* rows);
 
 /// Appends to `out` every k < n where (a[k] > 0) != (b[k] > 0), in increasing order (the cells
 /// whose side of the contact kink differs between the iterate's forces a and the matrix's

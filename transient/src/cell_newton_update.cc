@@ -49,31 +49,11 @@ void CellNewton::cap_product(double gamma) {
 
 bool CellNewton::lu_cap() {
   // The LU of cap_mat_ with partial pivoting, unblocked on the row-major copy solve_cap() reads
-  // (Eigen's blocked LU runs these 42 x 42 through its matrix-product kernels); each row update
-  // a fused multiply-add per entry (detail::lu_row_update).
+  // (Eigen's blocked LU runs these 42 x 42 through its matrix-product kernels).
   const int n = np_;
   cap_lu_ = cap_mat_;
-  double* a = cap_lu_.data();
   rowperm_.resize(n);
-  for (int i = 0; i < n; ++i) rowperm_[i] = i;
-  for (int k = 0; k < n; ++k) {
-    int p = k;
-    for (int i = k + 1; i < n; ++i)
-      if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
-    if (p != k) {
-      std::swap_ranges(a + k * n, a + (k + 1) * n, a + p * n);
-      std::swap(rowperm_[k], rowperm_[p]);
-    }
-    const double pivot = a[k * n + k];
-    if (!(std::isfinite(pivot) && pivot != 0)) return false;
-    const double* rk = a + k * n;
-    for (int i = k + 1; i < n; ++i) {
-      double* ri = a + i * n;
-      const double l = ri[k] / pivot;
-      ri[k] = l;
-      detail::lu_row_update(n - k - 1, l, rk + k + 1, ri + k + 1);
-    }
-  }
+  if (!detail::lu_in_place(n, cap_lu_.data(), rowperm_.data())) return false;
   cap_perm_.resize(n);
   for (int pos = 0; pos < n; ++pos) cap_perm_(rowperm_[pos]) = pos;
   return true;
