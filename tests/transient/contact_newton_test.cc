@@ -112,6 +112,47 @@ TEST_P(ContactNewtonTest, SolvesNewtonsSystemAtRestLikeADenseLu) {
   expect_solves_like_dense_lu(M, sys, t, y, {1e-5, 4e-4, 1e-2});
 }
 
+TEST_P(ContactNewtonTest, SemismoothUpdateSolvesAtTheIteratesContactSet) {
+  // At rest the solver gives the units whose side of the contact's kink changed since the setup
+  // the stiffness of the current iterate (the last rhs()) and changes K and the capacitance
+  // matrix by their rank-one terms: the solve is then the exact one at the iterate, also after
+  // a second update in a row (the hub pushed down 2 mm, then lifted 2 mm from the setup's
+  // state: units enter at the patch ends, then leave).
+  const TransientModel M = model_with(GetParam().overrides);
+  const ScenarioPlan plan = plan_scenario(M, Scenario::free_vibration);
+  TransientSystem sys(M, plan);
+  const std::vector<double> y0 = sys.static_state(4000);
+  const double t = 0.01, gamma = 4e-4;
+  ASSERT_EQ(sys.spin(t), 0.0);
+  ContactNewton newton(M, sys);
+  ASSERT_TRUE(newton.setup(t, y0.data(), gamma, false));
+  const Eigen::VectorXd f0 = sys.forces(t, y0.data());
+  const int n = sys.size(), Z = M.z_index();
+  std::vector<double> ydot(n);
+  for (const double dz_m : {2e-3, -2e-3}) {
+    SCOPED_TRACE(dz_m);
+    std::vector<double> y = y0;
+    y[Z] += dz_m;
+    const Eigen::VectorXd f = sys.forces(t, y.data());
+    int switched = 0;
+    for (int i = 0; i < M.m; ++i) switched += (f(i) > 0) != (f0(i) > 0);
+    EXPECT_GE(switched, 2);
+    solvers::CscMatrix J;
+    sys.jacobian(t, y.data(), J);
+    Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n, n);
+    for (int c = 0; c < n; ++c)
+      for (int64_t p = J.col_ptr[c]; p < J.col_ptr[c + 1]; ++p)
+        A(J.row[p], c) -= gamma * J.value[p];
+    sys.rhs(t, y.data(), ydot.data());  // the iterate whose contact set the update takes
+    Eigen::VectorXd b(n);
+    for (int k = 0; k < n; ++k) b(k) = std::cos(0.7 * k) * (1.0 + k % 5);
+    Eigen::VectorXd x = b;
+    newton.solve(x.data());
+    const Eigen::VectorXd want = A.partialPivLu().solve(b);
+    EXPECT_LT((x - want).cwiseAbs().maxCoeff(), kSolveTol * want.cwiseAbs().maxCoeff());
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Carcasses, ContactNewtonTest, ::testing::ValuesIn(kCarcasses),
                          [](const auto& info) { return std::string(info.param.name); });
 

@@ -21,6 +21,7 @@
 // O(rank (nq + n_contact) + m), against O((nq + nr)^2 n_contact + (2 nq + nr)^3) for the
 // Schur complement on X (solvers::ArrowLu) and more for KLU on the whole matrix.
 #include <Eigen/Dense>
+#include <utility>
 #include <vector>
 
 #include "modaltyre/transient/model.h"
@@ -35,11 +36,16 @@ class ContactNewton {
   /// are kept when `jacobian_ok` (CVODE judges the last Jacobian still good). Returns false if
   /// a pivot is not finite or zero (CVODE then retries with a smaller step).
   bool setup(double t, const double* y, double gamma, bool jacobian_ok);
-  /// x <- M^-1 x (system.size() entries).
-  void solve(double* x) const;
+  /// x <- M^-1 x (system.size() entries). First the semismooth update: the units whose side of
+  /// the contact's kink differs at the current iterate (the last rhs()) from the matrix's get
+  /// the iterate's stiffness (docs/transient.md section 2; off on a soil).
+  void solve(double* x);
 
  private:
   void factor(double gamma);
+  void update_active_set();
+  /// The capacitance's LU from cap_mat_ into cap_lu_ / cap_perm_ (false at a zero pivot).
+  bool lu_cap();
   /// x <- D^-1 x on the X states.
   void solve_d(double* x) const;
   /// x = cap^-1 b from the factors of factor().
@@ -84,6 +90,11 @@ class ContactNewton {
   /// The capacitance's LU factors (row-major) and row permutation, for solve_cap().
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_;
   Eigen::VectorXi cap_perm_;
+  /// The capacitance matrix I - gamma H K (the semismooth update changes it by low-rank terms).
+  Eigen::MatrixXd cap_mat_;
+  std::vector<int> rowperm_;
+  std::vector<std::pair<int, double>> dw_;  ///< update_active_set(): (unit, change of weight)
+  Eigen::VectorXd t_col_, ht_col_;
   mutable Eigen::VectorXd eta_, eta0_, phi_, w_, work_x_, work_e_, work_a_;
 };
 

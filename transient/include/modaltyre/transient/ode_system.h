@@ -64,6 +64,9 @@ class TransientSystem {
   /// The hub's displacement z at (t, y): the state's, or the prescribed hub's (scenario.h).
   double hub_z(double t, const double* y) const { return plan_.hub_z(t, y[model_.z_index()]); }
   const ScenarioPlan& plan() const { return plan_; }
+  /// The contact forces of the last rhs() (the Newton iterate CVODE evaluated last) over units()
+  /// (m entries; zero outside the reach; on a soil update_contact_set() also writes them).
+  const Eigen::VectorXd& last_forces() const { return scratch_f_; }
   /// Contact forces f_i at (t, y).
   Eigen::VectorXd forces(double t, const double* y) const;
   /// forces() into `f` (m entries; only units() is written, so a reused `f` costs no
