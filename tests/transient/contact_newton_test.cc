@@ -27,28 +27,39 @@ TransientModel model_with(const std::vector<std::string>& extra) {
   return build_transient_model(build_tyre_model(load_tyre_config(kConfig, o)));
 }
 
+/// I - gamma J at (t, y), dense, from the sparse Jacobian.
+Eigen::MatrixXd dense_newton_matrix(const TransientSystem& sys, double t,
+                                    const std::vector<double>& y, double gamma) {
+  solvers::CscMatrix J;
+  sys.jacobian(t, y.data(), J);
+  const int n = sys.size();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n, n);
+  for (int c = 0; c < n; ++c)
+    for (int64_t p = J.col_ptr[c]; p < J.col_ptr[c + 1]; ++p) A(J.row[p], c) -= gamma * J.value[p];
+  return A;
+}
+
+/// newton.solve() of A x = b against A's dense LU (b a fixed smooth vector).
+void expect_solve_equals_dense_lu(ContactNewton& newton, const Eigen::MatrixXd& A) {
+  const Eigen::Index n = A.rows();
+  Eigen::VectorXd b(n);
+  for (int k = 0; k < n; ++k) b(k) = std::cos(0.7 * k) * (1.0 + k % 5);
+  Eigen::VectorXd x = b;
+  newton.solve(x.data());
+  const Eigen::VectorXd want = A.partialPivLu().solve(b);
+  EXPECT_LT((x - want).cwiseAbs().maxCoeff(), kSolveTol * want.cwiseAbs().maxCoeff());
+  EXPECT_LT((A * x - b).cwiseAbs().maxCoeff(), kSolveTol * b.cwiseAbs().maxCoeff());
+}
+
 /// ContactNewton's solve of (I - gamma J) x = b at (t, y) against a dense LU of the matrix
 /// assembled from the sparse Jacobian, for each gamma.
 void expect_solves_like_dense_lu(const TransientModel& M, const TransientSystem& sys, double t,
                                  const std::vector<double>& y, const std::vector<double>& gammas) {
-  solvers::CscMatrix J;
-  sys.jacobian(t, y.data(), J);
-  const int n = sys.size();
   for (const double gamma : gammas) {
     SCOPED_TRACE(gamma);
-    Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n, n);
-    for (int c = 0; c < n; ++c)
-      for (int64_t p = J.col_ptr[c]; p < J.col_ptr[c + 1]; ++p)
-        A(J.row[p], c) -= gamma * J.value[p];
     ContactNewton newton(M, sys);
     ASSERT_TRUE(newton.setup(t, y.data(), gamma, false));
-    Eigen::VectorXd b(n);
-    for (int k = 0; k < n; ++k) b(k) = std::cos(0.7 * k) * (1.0 + k % 5);
-    Eigen::VectorXd x = b;
-    newton.solve(x.data());
-    const Eigen::VectorXd want = A.partialPivLu().solve(b);
-    EXPECT_LT((x - want).cwiseAbs().maxCoeff(), kSolveTol * want.cwiseAbs().maxCoeff());
-    EXPECT_LT((A * x - b).cwiseAbs().maxCoeff(), kSolveTol * b.cwiseAbs().maxCoeff());
+    expect_solve_equals_dense_lu(newton, dense_newton_matrix(sys, t, y, gamma));
   }
 }
 
@@ -137,19 +148,9 @@ TEST_P(ContactNewtonTest, SemismoothUpdateSolvesAtTheIteratesContactSet) {
     int switched = 0;
     for (int i = 0; i < M.m; ++i) switched += (f(i) > 0) != (f0(i) > 0);
     EXPECT_GE(switched, 2);
-    solvers::CscMatrix J;
-    sys.jacobian(t, y.data(), J);
-    Eigen::MatrixXd A = Eigen::MatrixXd::Identity(n, n);
-    for (int c = 0; c < n; ++c)
-      for (int64_t p = J.col_ptr[c]; p < J.col_ptr[c + 1]; ++p)
-        A(J.row[p], c) -= gamma * J.value[p];
+    const Eigen::MatrixXd A = dense_newton_matrix(sys, t, y, gamma);
     sys.rhs(t, y.data(), ydot.data());  // the iterate whose contact set the update takes
-    Eigen::VectorXd b(n);
-    for (int k = 0; k < n; ++k) b(k) = std::cos(0.7 * k) * (1.0 + k % 5);
-    Eigen::VectorXd x = b;
-    newton.solve(x.data());
-    const Eigen::VectorXd want = A.partialPivLu().solve(b);
-    EXPECT_LT((x - want).cwiseAbs().maxCoeff(), kSolveTol * want.cwiseAbs().maxCoeff());
+    expect_solve_equals_dense_lu(newton, A);
   }
 }
 

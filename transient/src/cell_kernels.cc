@@ -11,6 +11,20 @@
 namespace modaltyre::transient::detail {
 namespace {
 
+/// lu_in_place()'s step k up to the row updates: the first row i >= k with the largest |a_ik|
+/// swapped into row k; false at a zero or non-finite pivot.
+inline bool lu_pivot(int n, double* a, int* rows, int k) {
+  int p = k;
+  for (int i = k + 1; i < n; ++i)
+    if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
+  if (p != k) {
+    std::swap_ranges(a + k * n, a + (k + 1) * n, a + p * n);
+    std::swap(rows[k], rows[p]);
+  }
+  const double pivot = a[k * n + k];
+  return std::isfinite(pivot) && pivot != 0;
+}
+
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
 /// Whether this CPU runs the AVX2 (and FMA) paths (checked once).
 bool avx2() {
@@ -122,18 +136,11 @@ __attribute__((target("avx2"))) void band_row_avx(int n, bool with_t, double a, 
 }
 
 __attribute__((target("avx2,fma"))) bool lu_in_place_avx2(int n, double* a, int* rows) {
-  // lu_in_place()'s steps (the portable function below), the row update four entries at a time.
+  // lu_in_place()'s steps, the row update four entries at a time.
   for (int i = 0; i < n; ++i) rows[i] = i;
   for (int k = 0; k < n; ++k) {
-    int p = k;
-    for (int i = k + 1; i < n; ++i)
-      if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
-    if (p != k) {
-      std::swap_ranges(a + k * n, a + (k + 1) * n, a + p * n);
-      std::swap(rows[k], rows[p]);
-    }
+    if (!lu_pivot(n, a, rows, k)) return false;
     const double pivot = a[k * n + k];
-    if (!(std::isfinite(pivot) && pivot != 0)) return false;
     const double* rk = a + k * n + k + 1;
     const int m = n - k - 1;
     for (int i = k + 1; i < n; ++i) {
@@ -340,15 +347,8 @@ bool lu_in_place(int n, double* a, int* rows) {
 #endif
   for (int i = 0; i < n; ++i) rows[i] = i;
   for (int k = 0; k < n; ++k) {
-    int p = k;
-    for (int i = k + 1; i < n; ++i)
-      if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
-    if (p != k) {
-      std::swap_ranges(a + k * n, a + (k + 1) * n, a + p * n);
-      std::swap(rows[k], rows[p]);
-    }
+    if (!lu_pivot(n, a, rows, k)) return false;
     const double pivot = a[k * n + k];
-    if (!(std::isfinite(pivot) && pivot != 0)) return false;
     const double* rk = a + k * n + k + 1;
     for (int i = k + 1; i < n; ++i) {
       double* ri = a + i * n;

@@ -8,6 +8,7 @@
 #include "modaltyre/transient/cell_newton.h"
 #include "modaltyre/transient/column_product.h"
 #include "modaltyre/transient/ode_system.h"
+#include "row_lu_solve.h"
 
 namespace modaltyre::transient {
 namespace {
@@ -47,17 +48,7 @@ void CellNewton::cap_product(double gamma) {
   cap_mat_.diagonal().array() += 1.0;
 }
 
-bool CellNewton::lu_cap() {
-  // The LU of cap_mat_ with partial pivoting, unblocked on the row-major copy solve_cap() reads
-  // (Eigen's blocked LU runs these 42 x 42 through its matrix-product kernels).
-  const int n = np_;
-  cap_lu_ = cap_mat_;
-  rowperm_.resize(n);
-  if (!detail::lu_in_place(n, cap_lu_.data(), rowperm_.data())) return false;
-  cap_perm_.resize(n);
-  for (int pos = 0; pos < n; ++pos) cap_perm_(rowperm_[pos]) = pos;
-  return true;
-}
+bool CellNewton::lu_cap() { return row_lu_factor(cap_mat_, cap_lu_, cap_perm_, rowperm_); }
 
 void CellNewton::update_active_set() {
   const Eigen::VectorXd& f = sys_.last_forces();

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cell_kernels.h"
 #include "modaltyre/transient/column_product.h"
 #include "row_lu_solve.h"
 
@@ -193,14 +192,7 @@ void ContactNewton::factor(double gamma) {
   cap_perm_ = cap_.permutationP().indices();
 }
 
-bool ContactNewton::lu_cap() {
-  cap_lu_ = cap_mat_;
-  rowperm_.resize(np_);
-  if (!detail::lu_in_place(np_, cap_lu_.data(), rowperm_.data())) return false;
-  cap_perm_.resize(np_);
-  for (int pos = 0; pos < np_; ++pos) cap_perm_(rowperm_[pos]) = pos;
-  return true;
-}
+bool ContactNewton::lu_cap() { return row_lu_factor(cap_mat_, cap_lu_, cap_perm_, rowperm_); }
 
 void ContactNewton::update_active_set() {
   // As CellNewton's (cell_newton_update.cc): CVODE's modified Newton keeps the matrix of the

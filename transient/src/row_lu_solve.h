@@ -1,10 +1,31 @@
 #pragma once
 // x = U^-1 L^-1 P b for a small dense P A = L U (partial pivoting, row-major factors, unit L):
 // plain loops, which for the Newton solves' capacitance matrices (n ~ 10-40) cost several times
-// less than Eigen's dynamic-size triangular solver. Shared by ContactNewton and CellNewton.
+// less than Eigen's dynamic-size triangular solver; row_lu_factor() makes the factors. Shared by
+// ContactNewton and CellNewton.
 #include <Eigen/Dense>
+#include <vector>
+
+#include "cell_kernels.h"
 
 namespace modaltyre::transient {
+
+/// The row-major LU of a (n x n, partial pivoting, detail::lu_in_place) and the permutation
+/// row_lu_solve() reads (perm(original row) = its position); rows is work space. False at a
+/// zero or non-finite pivot. Eigen's blocked LU would run these 10-42 squares through its
+/// matrix-product kernels.
+inline bool row_lu_factor(
+    const Eigen::MatrixXd& a,
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& lu_matrix,
+    Eigen::VectorXi& perm, std::vector<int>& rows) {
+  const int n = static_cast<int>(a.rows());
+  lu_matrix = a;
+  rows.resize(n);
+  if (!detail::lu_in_place(n, lu_matrix.data(), rows.data())) return false;
+  perm.resize(n);
+  for (int pos = 0; pos < n; ++pos) perm(rows[pos]) = pos;
+  return true;
+}
 
 inline void row_lu_solve(
     const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& lu_matrix,
