@@ -55,6 +55,11 @@ struct TransientSettings {
   /// displacements have 0.1 um). One unit's state moves one unit's force (k_g de), where the
   /// hub's moves every unit's in contact; docs/transient.md section 2 gives the measurements.
   double tread_tolerance_m = 1e-6;
+  /// Singular values of the units' shapes [psi V] kept in the contact basis (transient/model.h):
+  /// those above this fraction of the largest. Numerical, not a config key: 1e-9 drops
+  /// displacements of ~1e-11 m (the default's rank 41 -> 36; its outputs move by < 1e-7
+  /// relative, test ContactBasisCutoffMovesNoOutput); 1e-13 keeps every shape to rounding.
+  double contact_basis_cutoff = 1e-9;
   struct LoadHold {
     double load_N = 4000, ramp_rate_N_s = 4000, hold_s = 120;
   } load_hold;

@@ -79,8 +79,10 @@ struct TransientModel {
   double residual_min_omega = 0;
   // Contact basis: the carcass's vertical displacement at the units lies in a space of small
   // rank (the default carcass's 44 shapes are trigonometric of orders 0-6 in theta: rank 13).
-  // [psi V] = T [Cq Cr] exactly (SVD, singular values below kContactBasisCutoff of the largest
-  // dropped: rounding level), so u = T xi with xi = Cq q + Cr r, and the generalised forces are
+  // [psi V] = T [Cq Cr] to settings.contact_basis_cutoff of its norm (SVD, smaller singular
+  // values dropped: 1e-9 of the largest, ~1e-11 m of displacement; the default carcass's
+  // singular values fall by ~5 per index beyond the 26th), so u = T xi with xi = Cq q + Cr r,
+  // and the generalised forces are
   // psi^T f = Cq^T (T^T f), V^T f = Cr^T (T^T f): every product over the units costs rank
   // instead of nq + nr per unit, and the contact's coupling in Newton's matrix has that rank.
   int rank = 0;
