@@ -255,7 +255,7 @@ void CellNewton::factor_dq(double gamma) {
     detail::small_gemm(rank, np_, nr, M.Cr.data(), static_cast<int>(M.Cr.rows()),
                        DQ_.data() + 2 * nq, ld, H_.data(), np_, true);
   H_.row(rank) = DQ_.row(Z);
-  if (TspanT_.cols() > 0) {
+  if (updates_active_set() && TspanT_.cols() > 0) {
     HT_.resize(np_, TspanT_.cols());
     detail::small_gemm(np_, static_cast<int>(TspanT_.cols()), np_, H_.data(), np_, TspanT_.data(),
                        np_, HT_.data(), np_);
@@ -331,11 +331,15 @@ void CellNewton::solve_ee(double* y) const {
   }
 }
 
-void CellNewton::solve(double* x) {
+bool CellNewton::updates_active_set() const {
   // One class (a flat crown) takes the update where the 2D patch's ContactNewton takes it, at
   // rest off a soil, so that it keeps repeating the 2D transient (test FlatCrown); more classes
   // rolling and on a soil too (measured: docs/transient.md section 7, third round).
-  if (semismooth_ || (ee_s1_ == 0 && ee_s2_ == 0 && !sys_.soil())) update_active_set();
+  return semismooth_ || (ee_s1_ == 0 && ee_s2_ == 0 && !sys_.soil());
+}
+
+void CellNewton::solve(double* x) {
+  if (updates_active_set()) update_active_set();
   const TransientModel& M = M_;
   const int nq = M.nq, nr = M.nr, Z = M.z_index(), rank = M.rank, nc = cm_.classes.size();
   Eigen::Map<Eigen::VectorXd> xx(x, nx_);

@@ -80,8 +80,6 @@ void CellNewton::update_active_set() {
   // Jacobian, as the whole matrix is between setups; a new factor() per switch cost a cleat run
   // 1.6 times its time for 2 % fewer steps).
   const double gamma = gamma_;
-  const int rank = M.rank;
-  const double dz = sys_.plan().hub_free() ? 1.0 : 0.0;
   dw_.clear();
   for (int k : changed_) {
     const int c = slot_class_[k], i = sys_.ranges()[c].lo + (k - sys_.offset(c));
@@ -111,17 +109,15 @@ void CellNewton::update_active_set() {
       dw_[nchg++] = {i, dw};
   }
   dw_.resize(nchg);
+  // T~_i^T of the changed sections from the span's columns (constructor).
+  const int span_lo = sys_.sections().lo;
   Tc_.resize(np_, nchg);
   W_.resize(nchg, np_);
-  for (int a = 0; a < nchg; ++a) {
-    Tc_.col(a).head(rank) = -TT_.col(dw_[a].first);
-    Tc_(rank, a) = dz;
-  }
+  for (int a = 0; a < nchg; ++a) Tc_.col(a) = TspanT_.col(dw_[a].first - span_lo);
   for (int b = 0; b < np_; ++b)
     for (int a = 0; a < nchg; ++a) W_(a, b) = dw_[a].second * Tc_(b, a);
   detail::small_gemm(np_, np_, nchg, Tc_.data(), np_, W_.data(), nchg, K_.data(), np_, true);
   HTc_.resize(np_, nchg);
-  const int span_lo = sys_.sections().lo;
   for (int a = 0; a < nchg; ++a) HTc_.col(a) = -gamma * HT_.col(dw_[a].first - span_lo);
   detail::small_gemm(np_, np_, nchg, HTc_.data(), np_, W_.data(), nchg, cap_mat_.data(), np_, true);
   // The span of sections with an active cell (solve() reads T~ over it) only grows here.
@@ -130,11 +126,7 @@ void CellNewton::update_active_set() {
   if (lo != s0_ || hi - lo + 1 != ns_) {
     s0_ = lo;
     ns_ = hi - lo + 1;
-    Tt_.resize(ns_, np_);
-    for (int s = 0; s < ns_; ++s) {
-      Tt_.row(s).head(rank) = -TT_.col(s0_ + s).transpose();
-      Tt_(s, rank) = dz;
-    }
+    Tt_ = TspanT_.middleCols(s0_ - span_lo, ns_).transpose();
   }
   if (!lu_cap()) factor(gamma);  // the whole factorisation at the current contact set
 }

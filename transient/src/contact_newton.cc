@@ -38,25 +38,37 @@ ContactNewton::ContactNewton(const TransientModel& model, const TransientSystem&
   work_e_.resize(ne_);
 }
 
+void ContactNewton::set_active_span(int first, int last) {
+  active_.clear();
+  for (int i = first; first >= 0 && i <= last; ++i) active_.push_back(i);
+  Tt_active_.resize(static_cast<Eigen::Index>(active_.size()), np_);
+  // d g / d z: 1, or 0 under a prescribed hub (z an input, scenario.h).
+  const double hub = sys_.plan().hub_free() ? 1.0 : 0.0;
+  for (std::size_t a = 0; a < active_.size(); ++a) {
+    Tt_active_.row(a).head(M_.rank) = -M_.T.row(active_[a]);
+    Tt_active_(a, M_.rank) = hub;
+  }
+}
+
+double ContactNewton::ee_diagonal(int i, double kd) const {
+  const double adv = Omega_ / M_.tyre.dtheta_rad;
+  return 1.0 - gamma_ * (kUpwind[0] * adv - (kd + M_.k_kv(i)) / M_.c_kv(i));
+}
+
+double ContactNewton::rest_weight(int i, double kd, double d) const {
+  return kd * (1.0 - gamma_ * (kd / M_.c_kv(i) / d));
+}
+
 bool ContactNewton::setup(double t, const double* y, double gamma, bool jacobian_ok) {
   if (!jacobian_ok || !jacobian_ready_) {
     sys_.jacobian_stiffness(t, y, kd_);
     // The active units: the span from the first to the last unit with a spring (a unit of a
     // gap in it has kd = 0 and adds nothing), so that their tread states are contiguous.
-    active_.clear();
     int first = -1, last = -1;
     for (int i = sys_.units().lo; i <= sys_.units().hi; ++i)
       if (kd_(i) > 0) last = i, first = first < 0 ? i : first;
-    if (first >= 0)
-      for (int i = first; i <= last; ++i) active_.push_back(i);
+    set_active_span(first, last);
     kd_active_ = first >= 0 ? kd_.segment(first, last - first + 1) : Eigen::VectorXd();
-    Tt_active_.resize(static_cast<Eigen::Index>(active_.size()), np_);
-    // d g / d z: 1, or 0 under a prescribed hub (z an input, scenario.h).
-    const double hub = sys_.plan().hub_free() ? 1.0 : 0.0;
-    for (std::size_t a = 0; a < active_.size(); ++a) {
-      Tt_active_.row(a).head(M_.rank) = -M_.T.row(active_[a]);
-      Tt_active_(a, M_.rank) = hub;
-    }
     Omega_ = sys_.spin(t);
     dOmega_ = sys_.spin_rate(t);
     jacobian_ready_ = true;
@@ -102,10 +114,7 @@ void ContactNewton::factor(double gamma) {
     ee_s2_ = -gamma * kUpwind[2] * adv;
     at_rest = ee_s1_ == 0 && ee_s2_ == 0;
     ee_d_.resize(ne_);
-    for (int k = 0; k < ne_; ++k) {
-      const int i = u0_ + k;
-      ee_d_(k) = 1.0 - gamma * (kUpwind[0] * adv - (kd_(i) + M.k_kv(i)) / M.c_kv(i));
-    }
+    for (int k = 0; k < ne_; ++k) ee_d_(k) = ee_diagonal(u0_ + k, kd_(u0_ + k));
     ee_d_inv_ = ee_d_.cwiseInverse();
   } else {
     ee_d_.resize(0);
@@ -133,7 +142,7 @@ void ContactNewton::factor(double gamma) {
     work_s_.resize(na);
     for (int a = 0; a < na; ++a) {
       const int i = active_[a];
-      work_s_(a) = kd_(i) * (1.0 - gamma * (kd_(i) / M.c_kv(i) / ee_d_(i - u0_)));
+      work_s_(a) = rest_weight(i, kd_(i), ee_d_(i - u0_));
     }
     for (int j = 0; j < np_; ++j) Ty_.col(j) = Tt_active_.col(j).cwiseProduct(work_s_);
     K_.resize(np_, np_);
@@ -211,18 +220,16 @@ void ContactNewton::update_active_set() {
   if (f.size() != M.m || kd_.size() != M.m) return;
   dw_.clear();
   const double gamma = gamma_;
-  const double adv = ne_ > 0 ? Omega_ / M.tyre.dtheta_rad : 0.0;
   for (int i = u0; i <= u1; ++i) {
     const bool on = f(i) > 0;
     if (on == (kd_(i) > 0)) continue;
     const double kd_new = on ? M.k_contact(i) : 0.0;
     if (ne_ > 0) {
       const int k = i - u0_;
-      const double c = M.c_kv(i);
-      const double w_old = kd_(i) * (1.0 - gamma * (kd_(i) / c / ee_d_(k)));
-      ee_d_(k) = 1.0 - gamma * (kUpwind[0] * adv - (kd_new + M.k_kv(i)) / c);
+      const double w_old = rest_weight(i, kd_(i), ee_d_(k));
+      ee_d_(k) = ee_diagonal(i, kd_new);
       ee_d_inv_(k) = 1.0 / ee_d_(k);
-      dw_.emplace_back(i, kd_new * (1.0 - gamma * (kd_new / c / ee_d_(k))) - w_old);
+      dw_.emplace_back(i, rest_weight(i, kd_new, ee_d_(k)) - w_old);
     } else {
       dw_.emplace_back(i, kd_new - kd_(i));
     }
@@ -230,20 +237,11 @@ void ContactNewton::update_active_set() {
   }
   if (dw_.empty()) return;
   // The active span (solve() reads kd, gamma kd / c' and T~ over it) grows to the new units.
-  const double hub = sys_.plan().hub_free() ? 1.0 : 0.0;
   int first = active_.empty() ? M.m : active_.front(), last = active_.empty() ? -1 : active_.back();
   for (const auto& [i, dw] : dw_)
     if (kd_(i) > 0) first = std::min(first, i), last = std::max(last, i);
-  if (last >= first && (active_.empty() || first != active_.front() || last != active_.back())) {
-    active_.clear();
-    for (int i = first; i <= last; ++i) active_.push_back(i);
-    const int na = last - first + 1;
-    Tt_active_.resize(na, np_);
-    for (int a = 0; a < na; ++a) {
-      Tt_active_.row(a).head(M.rank) = -M.T.row(first + a);
-      Tt_active_(a, M.rank) = hub;
-    }
-  }
+  if (last >= first && (active_.empty() || first != active_.front() || last != active_.back()))
+    set_active_span(first, last);
   const int na = static_cast<int>(active_.size());
   if (na > 0) {
     kd_active_ = kd_.segment(active_.front(), na);
@@ -252,6 +250,7 @@ void ContactNewton::update_active_set() {
       gamma_kd_c_(a) = gamma * kd_(active_[a]) / M.c_kv(active_[a]);
   }
   t_col_.resize(np_);
+  const double hub = sys_.plan().hub_free() ? 1.0 : 0.0;
   for (const auto& [i, dw] : dw_) {
     if (dw == 0) continue;
     t_col_.head(M.rank) = -M.T.row(i).transpose();

@@ -35,6 +35,9 @@ class CellNewton {
   /// k_g max(0, g) differs at the current iterate (the last rhs()) from the matrix's, updated
   /// before the solve (at rest by rank-one changes of K per section, rolling by a new factor()).
   void update_active_set();
+  /// Whether solve() runs update_active_set() at the current factorisation (and factor_dq()
+  /// keeps HT_ for it).
+  bool updates_active_set() const;
   /// solve()'s per-slot factors mu_c kd and gamma kd / c' (0 where kd = 0), all or slot k.
   void slot_coefficients();
   void slot_coefficient(int k);
@@ -75,7 +78,7 @@ class CellNewton {
   /// update_active_set(): T~ rows of the changed sections as columns (Tc_) and scaled by their
   /// change of weight (W_ = diag(dw) Tc_^T).
   Eigen::MatrixXd Tc_, W_, HTc_;
-  /// T~ of the span's sections as columns, and H times it (factor_dq(); more than one class).
+  /// T~ of the span's sections as columns, and H times it (factor_dq(), when updates_active_set()).
   Eigen::MatrixXd TspanT_, HT_;
   Eigen::VectorXd trow_, zero_row_, mukd_, gkc_;
   std::vector<int> changed_, rowperm_, kf_, kl_;

@@ -43,6 +43,13 @@ class ContactNewton {
 
  private:
   void factor(double gamma);
+  /// active_ = [first, last] (empty for first < 0) and their rows T~ in Tt_active_.
+  void set_active_span(int first, int last);
+  /// M_EE's diagonal of unit i with contact stiffness kd at gamma_ and the spin Omega_.
+  double ee_diagonal(int i, double kd) const;
+  /// Unit i's weight in K at rest, kd (1 - gamma kd / c' / d) with d = ee_diagonal(i, kd): the
+  /// contact spring in series with the tread's Kelvin-Voigt element (factor()).
+  double rest_weight(int i, double kd, double d) const;
   void update_active_set();
   /// The capacitance's LU from cap_mat_ into cap_lu_ / cap_perm_ (false at a zero pivot).
   bool lu_cap();
