@@ -348,6 +348,19 @@ InitResult init_tyre(const InitInputs& in) {
     y << "  crown:\n    shape: flat\n";
     decide("footprint_3d.crown.shape", "flat", "no section drawing (stated)");
   }
+  // The time-domain scenarios at FNOMIN (modaltyre transient, docs/transient.md), with the
+  // bundled configs' conditions; the output grid chosen per scenario (transient/output_grid.h).
+  const std::string F = num(fnomin), F125 = num(std::round(1.25 * fnomin));
+  y << "transient:\n"
+    << "  # Stated: the hub carries tyre + rim + fixture, 20 kg (the bundled configs' value); the\n"
+    << "  # scenarios at FNOMIN; the output grid resolves the hub bounce and a cleat (auto).\n"
+    << "  hub_mass_kg: 20\n  output_step_ms: auto\n"
+    << "  load_hold: {load_N: " << F << ", ramp_rate_N_s: " << F << ", hold_s: 120}\n"
+    << "  free_vibration: {load_N: " << F << ", initial_load_N: " << F125 << ", duration_s: 1.0}\n"
+    << "  rolling: {load_N: " << F << ", speed_km_h: 60, ramp_s: 1.0, duration_s: 3.0}\n"
+    << "  cleat: {load_N: " << F
+    << ", speed_km_h: 30, height_mm: 10, length_mm: 20, ramp_s: 0.5}\n";
+  decide("transient.hub_mass_kg", "20", "tyre + rim + fixture (stated, the bundled configs')");
   r.yaml = y.str();
 
   // ---- build once: what is written runs ----------------------------------------------------

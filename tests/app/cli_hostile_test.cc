@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -183,9 +184,18 @@ TEST_F(CliHostile, TransientOutputStepAndSampleCountAreBounded) {
       run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
                    "transient.output_step_ms=0.001"}),
       {"transient.output_step_ms: ", "1.21e+08 samples; at most 1e+06", "at least 0.121 ms"});
-  expect_input_error(run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
-                                  "transient.load_hold.hold_s=1e6"}),
-                     {"transient.output_step_ms: ", "5e+08 samples; at most 1e+06"});
+  expect_input_error(
+      run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+                   "transient.load_hold.hold_s=1e6", "--set", "transient.output_step_ms=2"}),
+      {"transient.output_step_ms: ", "5e+08 samples; at most 1e+06"});
+  // The chosen grid (output_step_ms: auto) coarsens to at most 1e6 samples and says so.
+  const auto r = run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+                              "transient.load_hold.hold_s=1e6", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_LE(j["samples"].get<double>(), 1e6 + 2);
+  EXPECT_NE(j["output_grid"].get<std::string>().find("at most 1e+06 samples"), std::string::npos)
+      << j["output_grid"];
 }
 
 TEST_F(CliHostile, BFactorSamplesAreBounded) {

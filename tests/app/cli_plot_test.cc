@@ -76,20 +76,38 @@ class PlotCli : public modaltyre_test::CliFixture {
   }
 };
 
-// While the load is held the longitudinal force is 0 up to solver noise (~1e-11 N): its panel
-// spans at least 1 % of the load instead of auto-scaling the noise to the panel's height.
-TEST_F(PlotCli, TransientNoiseIsDrawnFlatNotAutoScaled) {
+// While the load is held the longitudinal force is 0 up to solver noise (~1e-11 N): not a
+// panel of its own (issue 44: a dead panel whose axis zoomed the noise into a signal) but named
+// with its value in the first title, which names the tyre and the scenario's load.
+TEST_F(PlotCli, TransientConstantsAreNamedNotDrawn) {
   const auto panels = plot({"transient", kConfig, "--scenario", "load-hold", "--set",
                             "transient.load_hold.hold_s=1", "--plot", (dir_ / "t.svg").string()});
-  ASSERT_EQ(panels.size(), 4u);
-  const Panel& fx = panels[3];
-  EXPECT_NE(fx.title.find("longitudinal force"), std::string::npos) << fx.title;
-  ASSERT_TRUE(fx.fixed_y);
-  EXPECT_GE(fx.ymax - fx.ymin, 10.0);  // 1 % of a load of some kN
-  EXPECT_LE(fx.ymin, 0.0);
-  EXPECT_GE(fx.ymax, 0.0);
-  // The load itself varies (ramp, hold): auto-scaled.
+  ASSERT_EQ(panels.size(), 3u);  // load, sinking, contact length
+  for (const Panel& p : panels)
+    EXPECT_EQ(p.title.find("longitudinal force:"), std::string::npos) << p.title;
+  EXPECT_NE(panels[0].title.find("constant: longitudinal force 0 N"), std::string::npos)
+      << panels[0].title;
+  EXPECT_NE(panels[0].title.find("load-hold 4000 N"), std::string::npos) << panels[0].title;
+  // The load varies (ramp, hold): auto-scaled; a varying panel spans at least 1 % of its scale.
   EXPECT_FALSE(panels[0].fixed_y);
+}
+
+// Rolling on the 3D patch at a held load: the load stays constant (named, not drawn), the
+// longitudinal force and the contact width vary as the speed ramps up (drawn).
+TEST_F(PlotCli, TransientRollingDrawsForceNamesConstantLoad) {
+  const auto panels = plot({"transient", kSrc + "/configs/sf350.yaml", "--scenario", "rolling",
+                            "--set", "transient.rolling.duration_s=0.6", "--set",
+                            "transient.rolling.ramp_s=0.3", "--plot", (dir_ / "r.svg").string()});
+  bool fx = false, width = false;
+  for (const Panel& p : panels) {
+    fx = fx || p.title.ends_with("longitudinal force");
+    width = width || p.title.ends_with("contact width");
+    EXPECT_FALSE(p.title.ends_with("vertical load")) << p.title;
+  }
+  EXPECT_TRUE(fx);
+  EXPECT_TRUE(width);
+  EXPECT_NE(panels[0].title.find("(constant: vertical load 3999 N"), std::string::npos)
+      << panels[0].title;
 }
 
 TEST_F(PlotCli, FitModesPanelsAreSymmetricAboutZero) {

@@ -304,7 +304,8 @@ TransientResult run_prescribed(const TransientModel& M,
   if (!(duration_s > 0) || !std::isfinite(duration_s))
     throw InputError(InputLocation{"run_prescribed", 0, "duration_s"},
                      "the duration must be finite and positive");
-  const double dt = M.settings.output_step_s;
+  // The config's output step, or the automatic grid's largest (output_grid.h).
+  const double dt = M.settings.output_step_s > 0 ? M.settings.output_step_s : kAutoOutputStepCap_s;
   if (duration_s / dt > 1e6)
     throw InputError(InputLocation{M.tyre.config.source, 0, "transient.output_step_ms"},
                      "more than 1e6 output samples over the prescribed motion");

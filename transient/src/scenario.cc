@@ -154,17 +154,19 @@ ScenarioPlan plan_scenario(const TransientModel& model, Scenario s) {
     throw InputError(InputLocation{src, 0, "transient"},
                      std::string("scenario ") + to_string(s) + " has zero duration");
   }
-  if (model.settings.output_step_s > p.duration_s) {
+  // A stated output step (0: chosen per run, output_grid.h): every output step is a sample held
+  // in memory and a CSV row, bounded, so that a tiny step or a long run is refused at once
+  // instead of filling the memory.
+  const double dt = model.settings.output_step_s;
+  if (dt > 0 && dt > p.duration_s) {
     throw InputError(InputLocation{src, 0, "transient.output_step_ms"},
                      "output step longer than the scenario");
   }
-  // Every output step is a sample held in memory and a CSV row: bounded, so that a tiny step
-  // or a long run is refused at once instead of filling the memory.
-  const double samples = p.duration_s / model.settings.output_step_s;
+  const double samples = dt > 0 ? p.duration_s / dt : 0.0;
   if (!(samples <= kMaxTransientSamples)) {
     std::ostringstream msg;
-    msg << "output step " << model.settings.output_step_s * 1e3 << " ms over the scenario's "
-        << p.duration_s << " s gives " << samples << " samples; at most " << kMaxTransientSamples
+    msg << "output step " << dt * 1e3 << " ms over the scenario's " << p.duration_s << " s gives "
+        << samples << " samples; at most " << kMaxTransientSamples
         << " are written: use an output step of at least "
         << p.duration_s / kMaxTransientSamples * 1e3 << " ms or a shorter scenario";
     throw InputError(InputLocation{src, 0, "transient.output_step_ms"}, msg.str());
