@@ -184,9 +184,20 @@ void transient_plot(const transient::TransientResult& r, const std::string& titl
 
 // What the scenario was and what it measured: speed and cleat, the free vibration's period and
 // damping, the force extremes over the integrator's steps, and the output grid.
-void print_scenario_summary(const contact::TransientSettings& T, transient::Scenario scenario,
+void print_scenario_summary(const transient::TransientModel& model, transient::Scenario scenario,
                             const transient::TransientResult& r) {
   using transient::Scenario;
+  const contact::TransientSettings& T = model.settings;
+  if (scenario == Scenario::rolling || scenario == Scenario::cleat) {
+    const modal::CriticalSpeed c = transient::critical_speed_of(model);
+    const double v = scenario == Scenario::rolling ? T.rolling.speed_m_s : T.cleat.speed_m_s;
+    if (v >= transient::kNearCriticalShare * c.speed_m_s)
+      std::cout << "near the carcass's critical speed: " << fixed(v * 3.6, 1) << " km/h is "
+                << fixed(100 * v / c.speed_m_s, 0) << " % of " << fixed(c.speed_km_h(), 1)
+                << " km/h (order " << c.order
+                << "): a standing wave grows behind the contact, lengthening it and raising the "
+                   "rolling resistance steeply (docs/transient.md section 3a)\n";
+  }
   if (scenario == Scenario::rolling)
     std::cout << "rolling at " << fixed(T.rolling.speed_m_s * 3.6, 1) << " km/h (ramp "
               << fixed(T.rolling.ramp_s, 2) << " s)\n";
@@ -345,7 +356,7 @@ void register_transient(CLI::App& app) {
                 << fixed(fin.sinking_m * 1e3, 3) << " mm, contact length "
                 << fixed(fin.contact_length_m * 1e3, 2) << " mm, rolling resistance "
                 << fixed(r.rolling_resistance_N, 2) << " N\n";
-      print_scenario_summary(config.transient, scenario, r);
+      print_scenario_summary(model, scenario, r);
       if (config.ground.soil())
         std::cout << "on the soil "
                   << (config.ground.name.empty() ? ground::to_string(config.ground.model)

@@ -47,6 +47,18 @@ nlohmann::json transient_json(const transient::TransientModel& model,
                      {"taken_over", "integrator steps"},
                      {"steps_searched", r.extremes.searches}};
   }
+  if (r.scenario == transient::Scenario::rolling || r.scenario == transient::Scenario::cleat) {
+    // The carcass's critical speed (modal/critical_speed.h): speeds at or beyond it are
+    // refused; from kNearCriticalShare of it the standing wave grows.
+    const modal::CriticalSpeed c = transient::critical_speed_of(model);
+    const auto& T = model.settings;
+    const double v =
+        r.scenario == transient::Scenario::rolling ? T.rolling.speed_m_s : T.cleat.speed_m_s;
+    j["critical_speed"] = {{"speed_km_h", round_sig(c.speed_km_h())},
+                           {"order", c.order},
+                           {"share", round_sig(v / c.speed_m_s, 4)},
+                           {"near", v >= transient::kNearCriticalShare * c.speed_m_s}};
+  }
   j["output_step_ms"] = round_sig(r.output_grid.step_s * 1e3);
   j["output_grid"] = r.output_grid.describe();
   if (r.scenario == transient::Scenario::free_vibration) {
