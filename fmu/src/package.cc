@@ -14,6 +14,7 @@
 #include "modaltyre/core/config_edit.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/input_file.h"
+#include "modaltyre/fmu/elf_needs.h"
 #include "modaltyre/fmu/resources.h"
 #include "modaltyre/fmu/tyre_variables.h"
 #include "modaltyre/transient/model.h"
@@ -151,7 +152,11 @@ PackageResult write_fmu(const PackageOptions& o) {
   result.model_description = to_xml(tyre_model_description(info));
   std::vector<Entry> entries;
   entries.push_back({"modelDescription.xml", result.model_description});
-  entries.push_back({"binaries/linux64/" + std::string(kModelIdentifier) + ".so", binary, true});
+  const std::string binary_entry = "binaries/linux64/" + std::string(kModelIdentifier) + ".so";
+  entries.push_back({binary_entry, binary, true});
+  entries.push_back(
+      {"documentation/externalDependencies.txt",
+       external_dependencies_text(read_elf_needs(binary, o.binary_path), binary_entry)});
   entries.push_back({"resources/tyre.yaml", *packed});
   for (Entry& e : data) entries.push_back(std::move(e));
   entries.push_back(

@@ -6,6 +6,8 @@
 //   modelDescription.xml                 the description (model_description.h, tyre_variables.h)
 //   binaries/linux64/ModalTyre.so        the FMI functions with the project's libraries linked
 //                                        in statically (fmu/CMakeLists.txt)
+//   documentation/externalDependencies.txt  what the library needs outside the FMU (glibc and
+//                                        its version), read from its ELF file (elf_needs.h)
 //   resources/tyre.yaml                  the config, --set overrides applied, comments kept, its
 //                                        data paths rewritten to the copies beside it
 //   resources/data/<hammer CSV>          the hammer data the config names (modal.hammer_csv)
