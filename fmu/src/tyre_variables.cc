@@ -3,6 +3,17 @@
 namespace modaltyre::fmu {
 namespace {
 
+/// The inputs the tyre at rest depends on (initialization mode: the outputs of the standing tyre
+/// at the wheel state set, fmi2GetReal in Instance::get_real): the hub's position and
+/// orientation and the road height. The slip ratio reads the velocities instead.
+const std::vector<std::string> kStandingTyreKnowns = {
+    "wheel_state.pos.x",  "wheel_state.pos.y",  "wheel_state.pos.z",  "wheel_state.rot.e0",
+    "wheel_state.rot.e1", "wheel_state.rot.e2", "wheel_state.rot.e3", "terrain_height"};
+const std::vector<std::string> kSlipKnowns = {
+    "wheel_state.rot.e0",    "wheel_state.rot.e1",    "wheel_state.rot.e2",
+    "wheel_state.rot.e3",    "wheel_state.lin_vel.x", "wheel_state.lin_vel.y",
+    "wheel_state.ang_vel.x", "wheel_state.ang_vel.y", "wheel_state.ang_vel.z"};
+
 ScalarVariable real(const std::string& name, unsigned ref, Causality c, const std::string& unit,
                     const std::string& description, std::optional<double> start = {}) {
   ScalarVariable v;
@@ -18,6 +29,10 @@ ScalarVariable real(const std::string& name, unsigned ref, Causality c, const st
   } else if (c == Causality::output) {
     v.variability = Variability::continuous;
     v.initial = Initial::calculated;
+    // At a communication point the outputs are those of the step that ended there: setting the
+    // inputs there does not change them (no direct feedthrough, section 2.2.8).
+    v.dependencies = std::vector<std::string>{};
+    v.initial_dependencies = kStandingTyreKnowns;
   } else if (c == Causality::parameter) {
     v.variability = Variability::fixed;
     v.initial = Initial::exact;
@@ -42,9 +57,9 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
       "(wheel_load.force.y, moment.x, moment.z along the wheel frame). Load point: the wheel "
       "centre.";
   d.default_step_s = info.step_size_s;
-  d.log_categories = {"logStatusError", "logStatusWarning", "logEvents"};
+  d.log_categories = {"logStatusError", "logStatusDiscard", "logStatusWarning", "logEvents"};
   for (const char* u : {"1", "m", "s", "m/s", "rad/s", "N", "N.m"})
-    d.units.push_back({u, *unit_exponents(u)});
+    d.units.push_back(*known_unit(u));
 
   using C = Causality;
   auto& v = d.variables;
@@ -53,10 +68,14 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
     v.push_back(real(std::string("wheel_state.pos.") + xyz[k], vr::pos_x + k, C::input, "m",
                      "wheel centre position (world frame)", k == 2 ? info.outer_radius_m : 0.0));
   const char* e[] = {"e0", "e1", "e2", "e3"};
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < 4; ++k) {
     v.push_back(real(std::string("wheel_state.rot.") + e[k], vr::rot_e0 + k, C::input, "1",
-                     "wheel orientation quaternion (e0 scalar; wheel frame to world)",
+                     "wheel orientation quaternion (e0 scalar; wheel frame to world); a unit "
+                     "quaternion: a host's drift up to |q|^2 = 1 +- 1e-3 is normalised",
                      k == 0 ? 1.0 : 0.0));
+    v.back().min = -1.0;
+    v.back().max = 1.0;
+  }
   for (int k = 0; k < 3; ++k)
     v.push_back(real(std::string("wheel_state.lin_vel.") + xyz[k], vr::lin_vel_x + k, C::input,
                      "m/s", "wheel centre velocity (world frame)", 0.0));
@@ -66,13 +85,18 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
                      0.0));
   v.push_back(real("terrain_height", vr::terrain_height, C::input, "m",
                    "terrain height at query_point (unused when road_profile is set)", 0.0));
-  for (int k = 0; k < 3; ++k)
+  for (int k = 0; k < 3; ++k) {
     v.push_back(real(std::string("terrain_normal.") + xyz[k], vr::terrain_normal_x + k, C::input,
                      "1", "terrain normal at query_point (the in-plane model takes z up)",
                      k == 2 ? 1.0 : 0.0));
+    v.back().min = -1.0;
+    v.back().max = 1.0;
+  }
   v.push_back(real("terrain_mu", vr::terrain_mu, C::input, "1",
                    "friction coefficient of the road (Coulomb mu of the tread)",
                    info.friction_coefficient));
+  v.back().min = 0.0;
+  v.back().max = kMaxFriction;
   for (int k = 0; k < 3; ++k)
     v.push_back(real(std::string("wheel_load.point.") + xyz[k], vr::load_point_x + k, C::output,
                      "m", "application point of wheel_load (the wheel centre)"));
@@ -91,10 +115,13 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
                    "length of the contact patch: the extent of its loaded units along x"));
   v.push_back(real("tyre.slip_ratio", vr::slip_ratio, C::output, "1",
                    "longitudinal slip (spin x rolling radius - speed) / speed, 0 below 0.1 m/s"));
+  v.back().initial_dependencies = kSlipKnowns;
   v.push_back(real("step_size", vr::step_size, C::parameter, "s",
                    "largest internal step between two hub states (the integrator takes its "
                    "own steps inside)",
                    info.step_size_s));
+  v.back().min = kMinStepSize_s;
+  v.back().max = kMaxStepSize_s;
   ScalarVariable road;
   road.name = "road_profile";
   road.value_reference = vr::road_profile;

@@ -125,6 +125,28 @@ TyreWheel::TyreWheel(std::shared_ptr<const transient::TransientModel> model,
 
 TyreWheel::~TyreWheel() = default;
 
+std::string TyreWheel::refusal(const WheelInput& in, double h) const {
+  const Impl& I = *impl_;
+  const double R0 = I.model->tyre.config.outer_radius_m;
+  for (double s : {0.0, h}) {
+    transient::HubState hub = I.hub_of(in);
+    hub.deflection_m -= in.plane.vertical_m_s * s;
+    // On a profile the road under the centre is the profile's height there.
+    const double road = I.settings.profile
+                            ? I.settings.profile->height_at(in.plane.x_m + in.plane.speed_m_s * s)
+                            : 0.0;
+    if (!(hub.deflection_m - road < R0)) {
+      std::ostringstream msg;
+      msg << "the wheel centre lies " << (hub.deflection_m - road - R0) * 1e3
+          << " mm below the road at " << (s == 0 ? "the step's start" : "the step's end")
+          << " (wheel_state.pos.z, terrain_height): no tyre is left between the rim and the "
+             "road";
+      return msg.str();
+    }
+  }
+  return "";
+}
+
 void TyreWheel::start(double t, const WheelInput& in) {
   Impl& I = *impl_;
   const transient::HubState hub = I.hub_of(in);

@@ -146,6 +146,14 @@ FmuFolder::FmuFolder(const std::string& folder) : folder_(folder) {
   sym(api_.reset, "fmi2Reset");
   sym(api_.get_version, "fmi2GetVersion");
   sym(api_.get_types_platform, "fmi2GetTypesPlatform");
+  sym(api_.get_string, "fmi2GetString");
+  sym(api_.get_boolean, "fmi2GetBoolean");
+  sym(api_.set_debug_logging, "fmi2SetDebugLogging");
+  sym(api_.get_status, "fmi2GetStatus");
+  sym(api_.get_real_status, "fmi2GetRealStatus");
+  sym(api_.get_integer_status, "fmi2GetIntegerStatus");
+  sym(api_.get_boolean_status, "fmi2GetBooleanStatus");
+  sym(api_.get_string_status, "fmi2GetStringStatus");
 }
 
 FmuFolder::~FmuFolder() {

@@ -31,6 +31,14 @@ struct Fmi2Api {
   decltype(&fmi2Reset) reset = nullptr;
   decltype(&fmi2GetVersion) get_version = nullptr;
   decltype(&fmi2GetTypesPlatform) get_types_platform = nullptr;
+  decltype(&fmi2GetString) get_string = nullptr;
+  decltype(&fmi2GetBoolean) get_boolean = nullptr;
+  decltype(&fmi2SetDebugLogging) set_debug_logging = nullptr;
+  decltype(&fmi2GetStatus) get_status = nullptr;
+  decltype(&fmi2GetRealStatus) get_real_status = nullptr;
+  decltype(&fmi2GetIntegerStatus) get_integer_status = nullptr;
+  decltype(&fmi2GetBooleanStatus) get_boolean_status = nullptr;
+  decltype(&fmi2GetStringStatus) get_string_status = nullptr;
 };
 
 /// The standard's co-simulation function names (all must be exported).

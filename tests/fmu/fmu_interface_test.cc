@@ -60,17 +60,20 @@ TEST(FmuInterface, RefusesAnotherGuidOrModelExchangeWithTheReasonLogged) {
   EXPECT_TRUE(me.logged("co-simulation FMU only"));
 }
 
-TEST(FmuInterface, BadParametersAreErrorsWithTheirReasonLogged) {
+TEST(FmuInterface, ValuesOutsideTheirRangeAreDiscardedWithTheirReasonLogged) {
+  // FMI 2.0 section 2.2.7: a parameter outside its declared [min, max] is fmi2Discard; so is an
+  // input here. The value is not taken and the instance goes on.
   FmuInstance inst(packed());
   ASSERT_TRUE(inst.ok());
-  EXPECT_EQ(inst.set("step_size", -1e-3), fmi2Error);
+  EXPECT_EQ(inst.set("step_size", -1e-3), fmi2Discard);
   EXPECT_TRUE(inst.logged("step_size")) << (inst.messages().empty() ? "" : inst.messages().back());
   FmuInstance mu(packed());
-  EXPECT_EQ(mu.set("terrain_mu", -0.5), fmi2Error);
+  EXPECT_EQ(mu.set("terrain_mu", -0.5), fmi2Discard);
   EXPECT_TRUE(mu.logged("terrain_mu"));
   FmuInstance nan(packed());
-  EXPECT_EQ(nan.set("wheel_state.pos.z", std::nan("")), fmi2Error);
+  EXPECT_EQ(nan.set("wheel_state.pos.z", std::nan("")), fmi2Discard);
   EXPECT_TRUE(nan.logged("not finite"));
+  EXPECT_EQ(nan.initialize(), fmi2OK);  // a discarded value leaves the instance usable
   FmuInstance road(packed());
   const fmi2ValueReference r = packed().vr("road_profile");
   const fmi2String missing = "no_such_profile.csv";

@@ -32,6 +32,13 @@ inline constexpr unsigned kRealCount = 41;
 inline constexpr unsigned road_profile = 0;
 }  // namespace vr
 
+/// The range of step_size [s]: the transient resolves the carcass modes (100-300 Hz) with its
+/// own steps, so step_size bounds only the hub's carried motion; below 10 us a millisecond would
+/// take a hundred sub-steps for nothing, above a second the hub's motion is no longer resolved.
+inline constexpr double kMinStepSize_s = 1e-5, kMaxStepSize_s = 1.0;
+/// Friction coefficients accepted (ground::CoulombFriction's range).
+inline constexpr double kMaxFriction = 10;
+
 /// What a packaged FMU's description is built from.
 struct TyreDescriptionInfo {
   std::string tyre_name;              ///< the config's tyre.name

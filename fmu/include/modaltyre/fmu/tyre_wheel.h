@@ -6,6 +6,7 @@
 // (x + V s, z + w s, spin constant); the transient integrates with its own steps inside, at
 // most step_size apart.
 #include <memory>
+#include <string>
 
 #include "modaltyre/fmu/wheel.h"
 #include "modaltyre/ground/road_profile.h"
@@ -35,6 +36,11 @@ class TyreWheel {
   ~TyreWheel();
   TyreWheel(const TyreWheel&) = delete;
   TyreWheel& operator=(const TyreWheel&) = delete;
+  /// Why the hub state of `in`, carried over a step of h seconds, cannot be computed (empty: it
+  /// can): the wheel's centre at or below the road under it at the step's start or end (a
+  /// deflection of the whole outer radius; the rim reaches the road long before, raising
+  /// rim_contact).
+  std::string refusal(const WheelInput& in, double h) const;
   /// The tyre at rest on the road at time t under the hub state of `in` (static equilibrium at
   /// its deflection, tread unsheared). ComputationError if no equilibrium is found.
   void start(double t, const WheelInput& in);
