@@ -112,9 +112,10 @@ fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference[], size_t nv
   return inst->no_variables("fmi2GetInteger", nvr);
 }
 
-fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference[], size_t nvr, fmi2Boolean[]) {
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          fmi2Boolean value[]) {
   MODALTYRE_INSTANCE_OR_ERROR(c);
-  return inst->no_variables("fmi2GetBoolean", nvr);
+  return inst->get_boolean(vr, nvr, value);
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,

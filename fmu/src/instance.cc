@@ -4,6 +4,7 @@
 #include <cmath>
 #include <exception>
 #include <filesystem>
+#include <sstream>
 
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/contact/tyre_model.h"
@@ -79,6 +80,7 @@ Instance* Instance::create(fmi2String instance_name, fmi2Type type, fmi2String g
   }
   TyreDescriptionInfo info;
   info.outer_radius_m = inst->model_->tyre.config.outer_radius_m;
+  info.section_height_m = section_height_m(inst->model_->tyre.config);
   inst->description_ = tyre_model_description(info);
   inst->real_vars_.assign(vr::kRealCount, nullptr);
   for (const ScalarVariable& v : inst->description_.variables)
@@ -199,6 +201,7 @@ WheelInput Instance::wheel_input(bool* ok) {
 WheelSettings Instance::wheel_settings(std::string* problem) const {
   WheelSettings settings;
   settings.step_size_s = real_[vr::step_size];
+  settings.section_height_m = section_height_m(model_->tyre.config);
   if (!road_profile_.empty()) {
     std::filesystem::path p(road_profile_);
     if (p.is_relative()) p = std::filesystem::path(resource_folder_) / p;
@@ -229,6 +232,19 @@ void Instance::refresh_outputs(const WheelInput& in) {
   real_[vr::deflection] = o.deflection_m;
   real_[vr::contact_length] = o.contact_length_m;
   real_[vr::slip_ratio] = o.slip_ratio;
+  rim_contact_ = o.rim_contact;
+}
+
+fmi2Status Instance::rim_warning(fmi2Status status) {
+  const WheelOutput& o = wheel_->output();
+  if (!o.rim_contact_started) return status;
+  std::ostringstream msg;
+  msg << "the rim reaches the road at t = " << o.rim_started_at_s << " s: the tyre's deflection "
+      << real_[vr::deflection] * 1e3 << " mm at the step's end, its section height "
+      << section_height_m(model_->tyre.config) * 1e3
+      << " mm (tyre.rim_contact raised; the load is the tyre's alone, no rim contact force)";
+  log(fmi2Warning, msg.str());
+  return status == fmi2OK ? fmi2Warning : status;
 }
 
 fmi2Status Instance::standing_outputs(const char* function) {
@@ -257,7 +273,7 @@ fmi2Status Instance::exit_initialization() {
   const fmi2Status s = standing_outputs("fmi2ExitInitializationMode");
   if (s != fmi2OK) return s;
   state_ = State::step_complete;
-  return fmi2OK;
+  return rim_warning(fmi2OK);
 }
 
 fmi2Status Instance::do_step(double t, double h, bool) {
@@ -294,7 +310,7 @@ fmi2Status Instance::do_step(double t, double h, bool) {
     const double at_end = real_[vr::pos_x + k] + real_[vr::lin_vel_x + k] * h;
     real_[vr::load_point_x + k] = real_[vr::query_x + k] = at_end;
   }
-  return fmi2OK;
+  return rim_warning(fmi2OK);
 }
 
 fmi2Status Instance::terminate() {

@@ -87,6 +87,24 @@ fmi2Status Instance::set_real(const fmi2ValueReference vr[], size_t n, const fmi
   return fmi2OK;
 }
 
+fmi2Status Instance::get_boolean(const fmi2ValueReference vr[], size_t n, fmi2Boolean value[]) {
+  if (!allowed({State::initialization, State::step_complete, State::step_failed, State::terminated,
+                State::error},
+               "fmi2GetBoolean"))
+    return fmi2Error;
+  if (n > 0 && (!vr || !value)) return fail("fmi2GetBoolean: NULL array");
+  for (size_t k = 0; k < n; ++k)
+    if (vr[k] != vr::rim_contact)
+      return fail("fmi2GetBoolean: no Boolean variable has value reference " +
+                  std::to_string(vr[k]));
+  if (state_ == State::initialization) {
+    const fmi2Status s = standing_outputs("fmi2GetBoolean in initialization mode");
+    if (s != fmi2OK) return s;
+  }
+  for (size_t k = 0; k < n; ++k) value[k] = rim_contact_ ? fmi2True : fmi2False;
+  return fmi2OK;
+}
+
 fmi2Status Instance::get_string(const fmi2ValueReference vr[], size_t n, fmi2String value[]) {
   if (!allowed({State::initialization, State::step_complete, State::step_failed, State::terminated,
                 State::error},

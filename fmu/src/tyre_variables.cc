@@ -122,6 +122,22 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
                    info.step_size_s));
   v.back().min = kMinStepSize_s;
   v.back().max = kMaxStepSize_s;
+  ScalarVariable rim;
+  rim.name = "tyre.rim_contact";
+  rim.value_reference = vr::rim_contact;
+  rim.type = BaseType::boolean;
+  rim.causality = C::output;
+  rim.variability = Variability::discrete;
+  rim.initial = Initial::calculated;
+  rim.dependencies = std::vector<std::string>{};
+  rim.initial_dependencies = kStandingTyreKnowns;
+  rim.description =
+      info.section_height_m > 0
+          ? "true while the rim is on the road: the tyre deflected by its section height (" +
+                std::to_string(info.section_height_m * 1e3).substr(0, 5) +
+                " mm) or more at a sub-step of the last step (a warning is logged when it starts)"
+          : "never raised: the config states no rim radius nor section width and aspect ratio";
+  v.push_back(rim);
   ScalarVariable road;
   road.name = "road_profile";
   road.value_reference = vr::road_profile;

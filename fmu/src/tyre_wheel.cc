@@ -70,10 +70,29 @@ struct TyreWheel::Impl {
   /// interpolated on the deformed belt, but its pass over the belt's shape was a third of a 3D
   /// step (sin/cos per unit); the length here is the loaded units' extent (one unit's
   /// resolution).
+  /// The tyre's deflection at the road under the hub at time() with the unit forces `forces`:
+  /// the hub's on a flat road, the deepest loaded unit's on a profile (its sinking into the
+  /// profile's height there, less the unit's sag).
+  double road_deflection(const transient::HubState& hub) const {
+    double sinking = hub.deflection_m;
+    if (!settings.profile) return sinking;
+    const double t = tyre->time();
+    for (int i = 0; i < model->m; ++i)
+      if (forces(i) > 0)
+        sinking = std::max(
+            sinking, hub.deflection_m + road(t, model->x_road(i), nullptr) - model->tyre.sag(i));
+    return sinking;
+  }
+
+  /// Whether the rim reaches the road: the tyre deflected by its section height or more.
+  bool rim_on_road(const transient::HubState& hub) const {
+    return settings.section_height_m > 0 && road_deflection(hub) >= settings.section_height_m;
+  }
+
   void refresh(const WheelInput& in, const transient::HubState& hub) {
     const double r_loaded = model->tyre.config.outer_radius_m - hub.deflection_m;
     const double t = tyre->time();
-    double fz = 0, moment = 0, slope_force = 0, sinking = hub.deflection_m;
+    double fz = 0, moment = 0, slope_force = 0;
     int first = -1, last = -1;
     for (int i = 0; i < model->m; ++i) {
       const double f = forces(i);
@@ -86,9 +105,8 @@ struct TyreWheel::Impl {
       if (settings.profile) {
         // On a profile the normal forces on its slopes push back: -sum f h'(x) (as the cleat's).
         double slope = 0;
-        const double h = road(t, x, &slope);
+        road(t, x, &slope);
         slope_force -= f * slope;
-        sinking = std::max(sinking, hub.deflection_m + h - model->tyre.sag(i));
       }
     }
     const double shear = contact->force_N() + slope_force;
@@ -99,7 +117,7 @@ struct TyreWheel::Impl {
     // Moment about the wheel axis: the vertical forces' (-M) and the shear's at the road,
     // r_loaded below the centre: (r x F)_y = r_z F_x = -r_loaded F_x.
     out.load.my_Nm = -moment - r_loaded * shear;
-    out.deflection_m = first < 0 ? std::max(0.0, hub.deflection_m) : sinking;
+    out.deflection_m = first < 0 ? std::max(0.0, hub.deflection_m) : road_deflection(hub);
     out.contact_length_m =
         first < 0 ? 0.0 : model->x_road(last) - model->x_road(first) + model->tyre.unit_length_m;
     const double v = in.plane.speed_m_s;
@@ -117,7 +135,14 @@ struct TyreWheel::Impl {
   WheelOutput out;
   double x0 = 0, t0 = 0, v = 0;  ///< the hub along the road over the current step
   double level_below_m = 0, level_above_m = 0;
+  bool rim_last = false;  ///< the rim on the road at the last sub-step's end
 };
+
+double section_height_m(const contact::TyreConfig& c) {
+  if (c.rim_radius_m > 0) return c.outer_radius_m - c.rim_radius_m;
+  if (c.section_width_m > 0 && c.aspect_ratio > 0) return c.section_width_m * c.aspect_ratio;
+  return 0;
+}
 
 TyreWheel::TyreWheel(std::shared_ptr<const transient::TransientModel> model,
                      const WheelSettings& settings)
@@ -179,6 +204,9 @@ void TyreWheel::start(double t, const WheelInput& in) {
   I.contact = std::make_unique<LongitudinalContact>(longitudinal_properties(I.model->tyre, patch),
                                                     0, I.model->m - 1);
   I.refresh(in, hub);
+  I.rim_last = I.out.rim_contact = I.rim_on_road(hub);
+  I.out.rim_contact_started = I.out.rim_contact;
+  I.out.rim_started_at_s = t;
 }
 
 void TyreWheel::step(double t, double h, const WheelInput& in) {
@@ -194,6 +222,9 @@ void TyreWheel::step(double t, double h, const WheelInput& in) {
   const int n = std::max(1, static_cast<int>(std::ceil(h / I.settings.step_size_s - 1e-9)));
   const double dt = h / n;
   transient::HubState hub = h0;
+  const bool rim_before = I.out.rim_contact;
+  I.out.rim_contact = false;
+  I.out.rim_contact_started = false;
   for (int k = 1; k <= n; ++k) {
     const double s = k * dt;
     hub.deflection_m = h0.deflection_m - in.plane.vertical_m_s * s;
@@ -202,6 +233,15 @@ void TyreWheel::step(double t, double h, const WheelInput& in) {
     I.forces.setZero();
     I.tyre->vertical_forces(I.forces);
     I.contact->advance(dt, I.forces.data(), in.plane.spin_rad_s, in.plane.speed_m_s, in.mu);
+    // The rim on the road at a sub-step's end: raised for the whole communication step, and
+    // "started" when it was not on the road at the sub-step before.
+    const bool rim = I.rim_on_road(hub);
+    if (rim && !(k == 1 ? rim_before : I.rim_last)) {
+      if (!I.out.rim_contact_started) I.out.rim_started_at_s = t + s;
+      I.out.rim_contact_started = true;
+    }
+    I.rim_last = rim;
+    I.out.rim_contact = I.out.rim_contact || rim;
   }
   I.refresh(in, hub);
 }

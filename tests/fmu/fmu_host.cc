@@ -203,7 +203,7 @@ fmi2Status FmuInstance::initialize() {
 
 fmi2Status FmuInstance::step(double h) {
   const fmi2Status s = fmu_.api().do_step(c_, t_, h, fmi2True);
-  if (s == fmi2OK) t_ += h;
+  if (s == fmi2OK || s == fmi2Warning) t_ += h;
   return s;
 }
 

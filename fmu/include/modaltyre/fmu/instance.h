@@ -15,7 +15,8 @@
 //    that is not a variable of the call's type and causality, a failed computation; the
 //    instance then refuses every call but fmi2GetXXX (for debugging), fmi2Reset and
 //    fmi2FreeInstance (section 2.1.3).
-// Every fmi2Discard and fmi2Error comes with its reason through the logger.
+//  - fmi2Warning: a step (or the start) in which the rim reached the road (tyre.rim_contact).
+// Every fmi2Discard, fmi2Warning and fmi2Error comes with its reason through the logger.
 #include <memory>
 #include <set>
 #include <string>
@@ -59,6 +60,7 @@ class Instance {
   fmi2Status reset();
   fmi2Status get_real(const fmi2ValueReference vr[], size_t n, fmi2Real value[]);
   fmi2Status set_real(const fmi2ValueReference vr[], size_t n, const fmi2Real value[]);
+  fmi2Status get_boolean(const fmi2ValueReference vr[], size_t n, fmi2Boolean value[]);
   fmi2Status get_string(const fmi2ValueReference vr[], size_t n, fmi2String value[]);
   fmi2Status set_string(const fmi2ValueReference vr[], size_t n, const fmi2String value[]);
   /// A call with a value reference of a type this FMU has no variable of: fmi2OK for nvr = 0,
@@ -92,6 +94,8 @@ class Instance {
   WheelInput wheel_input(bool* ok);
   WheelSettings wheel_settings(std::string* problem) const;
   void refresh_outputs(const WheelInput& in);
+  /// A warning when the rim reached the road in the last step (fmi2Warning in place of OK).
+  fmi2Status rim_warning(fmi2Status status);
   /// The tyre at rest under the current inputs (initialization mode's outputs).
   fmi2Status standing_outputs(const char* function);
   /// The Real variable of a value reference (nullptr if none).
@@ -113,6 +117,7 @@ class Instance {
   std::unique_ptr<TyreWheel> wheel_;
   std::vector<double> real_;  ///< every Real by value reference
   std::string road_profile_;
+  bool rim_contact_ = false;  ///< Boolean tyre.rim_contact
   double time_ = 0, start_time_ = 0;
   bool stop_defined_ = false;
   double stop_time_ = 0;

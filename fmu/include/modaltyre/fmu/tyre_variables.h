@@ -30,6 +30,8 @@ inline constexpr unsigned step_size = 40;
 inline constexpr unsigned kRealCount = 41;
 /// String value references.
 inline constexpr unsigned road_profile = 0;
+/// Boolean value references.
+inline constexpr unsigned rim_contact = 0;
 }  // namespace vr
 
 /// The range of step_size [s]: the transient resolves the carcass modes (100-300 Hz) with its
@@ -46,6 +48,7 @@ struct TyreDescriptionInfo {
   double outer_radius_m = 0.3;        ///< start of wheel_state.pos.z: touching a road at z = 0
   double friction_coefficient = 0.8;  ///< start of terrain_mu
   double step_size_s = 1e-3;          ///< start of step_size and the default experiment's step
+  double section_height_m = 0;        ///< the rim's check (tyre_wheel.h); 0: not known
 };
 
 /// The model identifier: the name of the shared library under binaries/linux64/.

@@ -17,7 +17,14 @@ namespace modaltyre::fmu {
 struct WheelSettings {
   double step_size_s = 1e-3;
   std::shared_ptr<const ground::RoadProfile> profile;  ///< null: flat at terrain_height
+  /// The tyre's section height [m] (section_height_m()): the rim is on the road when the tyre's
+  /// deflection at the road reaches it. 0: not known, never raised.
+  double section_height_m = 0;
 };
+
+/// The section height of a config's tyre: outer radius less rim radius (tyre.rim_radius_mm),
+/// else section width x aspect ratio; 0 when the config states neither.
+double section_height_m(const contact::TyreConfig& config);
 
 struct WheelInput {
   PlaneState plane;
@@ -28,6 +35,11 @@ struct WheelInput {
 struct WheelOutput {
   PlaneLoad load;
   double deflection_m = 0, contact_length_m = 0, slip_ratio = 0;
+  /// The rim on the road (the deflection at the road at least the section height) at a
+  /// sub-step's end of the last step, and whether it got there in it (from off the road), first
+  /// at rim_started_at_s.
+  bool rim_contact = false, rim_contact_started = false;
+  double rim_started_at_s = 0;
 };
 
 class TyreWheel {
