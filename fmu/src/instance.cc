@@ -11,6 +11,7 @@
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/input_file.h"
 #include "modaltyre/fmu/resources.h"
+#include "modaltyre/fmu/soil_parameters.h"
 #include "modaltyre/fmu/tyre_variables.h"
 #include "modaltyre/fmu/tyre_wheel.h"
 
@@ -67,7 +68,8 @@ Instance* Instance::create(fmi2String instance_name, fmi2Type type, fmi2String g
                                "): the modelDescription.xml and the resources differ");
       return nullptr;
     }
-    const contact::TyreConfig config = contact::load_tyre_config(record.config_path);
+    contact::TyreConfig config = contact::load_tyre_config(record.config_path);
+    if (!record.ground_path.empty()) config.ground = ground::load_ground_file(record.ground_path);
     inst->model_ = std::make_shared<const transient::TransientModel>(
         transient::build_transient_model(contact::build_tyre_model(config)));
   } catch (const InputError& e) {
@@ -78,21 +80,28 @@ Instance* Instance::create(fmi2String instance_name, fmi2Type type, fmi2String g
               std::string("fmi2Instantiate: the tyre model could not be built: ") + e.what());
     return nullptr;
   }
+  const contact::TyreConfig& config = inst->model_->tyre.config;
   TyreDescriptionInfo info;
-  info.outer_radius_m = inst->model_->tyre.config.outer_radius_m;
-  info.section_height_m = section_height_m(inst->model_->tyre.config);
+  info.outer_radius_m = config.outer_radius_m;
+  info.friction_coefficient = config.ground.friction_coefficient;
+  info.section_height_m = section_height_m(config);
+  info.soil = config.ground.soil() ? &config.ground : nullptr;
+  info.patch_3d = config.footprint_3d.has_value();
   inst->description_ = tyre_model_description(info);
-  inst->real_vars_.assign(vr::kRealCount, nullptr);
+  inst->run_model_ = inst->model_;
   for (const ScalarVariable& v : inst->description_.variables)
-    if (v.type == BaseType::real && v.value_reference < vr::kRealCount)
+    if (v.type == BaseType::real) {
+      if (v.value_reference >= inst->real_vars_.size())
+        inst->real_vars_.resize(v.value_reference + 1, nullptr);
       inst->real_vars_[v.value_reference] = &v;
+    }
   inst->set_start_values();
   inst->log(fmi2OK, "instantiated from " + inst->resource_folder_);
   return inst.release();
 }
 
 void Instance::set_start_values() {
-  real_.assign(vr::kRealCount, 0.0);
+  real_.assign(real_vars_.size(), 0.0);
   for (const ScalarVariable& v : description_.variables) {
     if (v.type == BaseType::real && v.start) real_[v.value_reference] = *v.start;
     if (v.type == BaseType::string && v.start_string) road_profile_ = *v.start_string;
@@ -232,6 +241,10 @@ void Instance::refresh_outputs(const WheelInput& in) {
   real_[vr::deflection] = o.deflection_m;
   real_[vr::contact_length] = o.contact_length_m;
   real_[vr::slip_ratio] = o.slip_ratio;
+  if (real_variable(vr::soil_sinkage)) {
+    real_[vr::soil_sinkage] = o.soil_sinkage_m;
+    real_[vr::compaction_resistance] = o.compaction_resistance_N;
+  }
   rim_contact_ = o.rim_contact;
 }
 
@@ -247,6 +260,31 @@ fmi2Status Instance::rim_warning(fmi2Status status) {
   return status == fmi2OK ? fmi2Warning : status;
 }
 
+std::shared_ptr<const transient::TransientModel> Instance::soil_model(std::string* problem) {
+  const ground::GroundSettings& packed = model_->tyre.config.ground;
+  if (!packed.soil()) return model_;
+  // The soil's keys as set (parameters from first_soil_parameter on, soil_parameters' order).
+  ground::GroundSettings g = packed;
+  const std::vector<SoilParameter> keys =
+      soil_parameters(packed, model_->tyre.config.footprint_3d.has_value());
+  for (std::size_t k = 0; k < keys.size(); ++k) keys[k].set(g, real_[vr::first_soil_parameter + k]);
+  const std::string why = soil_combination_problem(g);
+  if (!why.empty()) {
+    *problem = "soil parameters: " + why;
+    return nullptr;
+  }
+  bool same_as_run = true;
+  for (const SoilParameter& p : keys)
+    same_as_run = same_as_run && p.get(g) == p.get(run_model_->tyre.config.ground);
+  if (!same_as_run) {
+    // The model with the soil as set (the soil enters the driven tyre through its config).
+    auto m = std::make_shared<transient::TransientModel>(*model_);
+    m->tyre.config.ground = g;
+    run_model_ = m;
+  }
+  return run_model_;
+}
+
 fmi2Status Instance::standing_outputs(const char* function) {
   bool ok = false;
   const WheelInput in = wheel_input(&ok);
@@ -254,8 +292,14 @@ fmi2Status Instance::standing_outputs(const char* function) {
   std::string problem;
   const WheelSettings settings = wheel_settings(&problem);
   if (!problem.empty()) return fail(problem);
+  const auto model = soil_model(&problem);
+  if (!model) return fail(std::string(function) + ": " + problem);
+  if (settings.profile && model->tyre.config.ground.soil())
+    return fail(std::string(function) +
+                ": parameter road_profile: a road profile under a tyre on a soil is not "
+                "modelled (the soil's undisturbed surface is at terrain_height)");
   try {
-    wheel_ = std::make_unique<TyreWheel>(model_, settings);
+    wheel_ = std::make_unique<TyreWheel>(model, settings);
     const std::string refused = wheel_->refusal(in, 0.0);
     if (!refused.empty()) return fail(std::string(function) + ": " + refused);
     wheel_->start(time_, in);

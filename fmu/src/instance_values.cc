@@ -33,9 +33,10 @@ std::string Instance::refusal(const ScalarVariable& v, double value) const {
   const bool unit_vector =
       v.name.rfind("wheel_state.rot.", 0) == 0 || v.name.rfind("terrain_normal.", 0) == 0;
   const double slack = unit_vector ? kUnitComponentSlack : 0.0;
-  if ((v.min && value < *v.min - slack) || (v.max && value > *v.max + slack))
-    return "is outside the variable's range [" + (v.min ? text(*v.min) : "-inf") + ", " +
-           (v.max ? text(*v.max) : "inf") + "] " + v.unit;
+  const bool below = v.min && (v.min_exclusive ? !(value > *v.min) : value < *v.min - slack);
+  if (below || (v.max && value > *v.max + slack))
+    return "is outside the variable's range " + std::string(v.min_exclusive ? "(" : "[") +
+           (v.min ? text(*v.min) : "-inf") + ", " + (v.max ? text(*v.max) : "inf") + "] " + v.unit;
   return "";
 }
 

@@ -1,5 +1,7 @@
 #include "modaltyre/fmu/tyre_variables.h"
 
+#include "modaltyre/fmu/soil_parameters.h"
+
 namespace modaltyre::fmu {
 namespace {
 
@@ -58,8 +60,6 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
       "centre.";
   d.default_step_s = info.step_size_s;
   d.log_categories = {"logStatusError", "logStatusDiscard", "logStatusWarning", "logEvents"};
-  for (const char* u : {"1", "m", "s", "m/s", "rad/s", "N", "N.m"})
-    d.units.push_back(*known_unit(u));
 
   using C = Causality;
   auto& v = d.variables;
@@ -116,12 +116,33 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
   v.push_back(real("tyre.slip_ratio", vr::slip_ratio, C::output, "1",
                    "longitudinal slip (spin x rolling radius - speed) / speed, 0 below 0.1 m/s"));
   v.back().initial_dependencies = kSlipKnowns;
+  if (info.soil) {
+    v.push_back(real("soil.sinkage", vr::soil_sinkage, C::output, "m",
+                     "the soil's deepest loaded point below its undisturbed surface "
+                     "(terrain_height); the tyre's own deflection is tyre.deflection"));
+    v.push_back(real("soil.compaction_resistance", vr::compaction_resistance, C::output, "N",
+                     "the normal forces' backward share on the soil's sloped surface, sum f "
+                     "tan(alpha) (in wheel_load.force along the heading, as a drag)"));
+  }
   v.push_back(real("step_size", vr::step_size, C::parameter, "s",
                    "largest internal step between two hub states (the integrator takes its "
                    "own steps inside)",
                    info.step_size_s));
   v.back().min = kMinStepSize_s;
   v.back().max = kMaxStepSize_s;
+  if (info.soil) {
+    const std::vector<SoilParameter> soil = soil_parameters(*info.soil, info.patch_3d);
+    for (std::size_t k = 0; k < soil.size(); ++k) {
+      const SoilParameter& p = soil[k];
+      v.push_back(real(p.name, vr::first_soil_parameter + unsigned(k), C::parameter, p.unit,
+                       p.description + " (the packed soil's " +
+                           (info.soil->name.empty() ? std::string("value") : info.soil->name) + ")",
+                       p.get(*info.soil)));
+      v.back().min = p.min;
+      v.back().max = p.max;
+      v.back().min_exclusive = p.positive;
+    }
+  }
   ScalarVariable rim;
   rim.name = "tyre.rim_contact";
   rim.value_reference = vr::rim_contact;
@@ -150,6 +171,13 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
       "optional CSV x_m,height_m: the road under the whole tyre in world x (a cleat, a profile); "
       "absolute or relative to the FMU's resources folder; empty: flat at terrain_height";
   v.push_back(road);
+  // The units the variables name, each defined once.
+  for (const ScalarVariable& x : d.variables) {
+    if (x.unit.empty()) continue;
+    bool defined = false;
+    for (const UnitDefinition& u : d.units) defined = defined || u.name == x.unit;
+    if (!defined) d.units.push_back(*known_unit(x.unit));
+  }
   return d;
 }
 

@@ -25,7 +25,7 @@ constexpr double kMinDeflectionBound_m = 0.03;
 
 struct TyreWheel::Impl {
   Impl(std::shared_ptr<const transient::TransientModel> m, const WheelSettings& s)
-      : model(std::move(m)), settings(s) {}
+      : model(std::move(m)), settings(s), on_soil(model->tyre.config.ground.soil()) {}
 
   /// The hub as the transient sees it at the start of a step.
   transient::HubState hub_of(const WheelInput& in) const {
@@ -86,11 +86,25 @@ struct TyreWheel::Impl {
 
   /// Whether the rim reaches the road: the tyre deflected by its section height or more.
   bool rim_on_road(const transient::HubState& hub) const {
-    return settings.section_height_m > 0 && road_deflection(hub) >= settings.section_height_m;
+    if (!(settings.section_height_m > 0)) return false;
+    const double d = road_deflection(hub);
+    if (d < settings.section_height_m) return false;
+    // On a soil the tyre deflects by the hub's approach less the soil's sinkage (read only when
+    // the approach alone reaches the section height: the wheel load's pass is a 3D step's third).
+    return !on_soil || d - tyre->load().soil_sinkage_m >= settings.section_height_m;
   }
 
   void refresh(const WheelInput& in, const transient::HubState& hub) {
-    const double r_loaded = model->tyre.config.outer_radius_m - hub.deflection_m;
+    // On a soil: its sinkage and the normal forces' backward share on its sloped surface (the
+    // compaction resistance R_c = sum f tan alpha, docs/soil.md section 8), from the wheel load.
+    double soil_sinkage = 0, compaction = 0;
+    if (on_soil) {
+      const transient::WheelLoad w = tyre->load();
+      soil_sinkage = w.soil_sinkage_m;
+      compaction = w.compaction_resistance_N;
+    }
+    // The lever of the forces at the ground: the loaded radius down to the deepest contact.
+    const double r_loaded = model->tyre.config.outer_radius_m - (hub.deflection_m - soil_sinkage);
     const double t = tyre->time();
     double fz = 0, moment = 0, slope_force = 0;
     int first = -1, last = -1;
@@ -109,7 +123,9 @@ struct TyreWheel::Impl {
         slope_force -= f * slope;
       }
     }
-    const double shear = contact->force_N() + slope_force;
+    // The ground's longitudinal force: the tread's (the soil's) shear, the profile's slopes
+    // pushing back, a soil's compaction resistance.
+    const double shear = contact->force_N() + slope_force - compaction;
     out.load.fz_N = fz;
     // The road's longitudinal force is the tread's shear (a free-rolling wheel's drag -M / r
     // comes out of it when the spin is free: M_y = 0).
@@ -117,7 +133,10 @@ struct TyreWheel::Impl {
     // Moment about the wheel axis: the vertical forces' (-M) and the shear's at the road,
     // r_loaded below the centre: (r x F)_y = r_z F_x = -r_loaded F_x.
     out.load.my_Nm = -moment - r_loaded * shear;
-    out.deflection_m = first < 0 ? std::max(0.0, hub.deflection_m) : road_deflection(hub);
+    out.deflection_m =
+        first < 0 ? std::max(0.0, hub.deflection_m) : road_deflection(hub) - soil_sinkage;
+    out.soil_sinkage_m = first < 0 ? 0.0 : soil_sinkage;
+    out.compaction_resistance_N = compaction;
     out.contact_length_m =
         first < 0 ? 0.0 : model->x_road(last) - model->x_road(first) + model->tyre.unit_length_m;
     const double v = in.plane.speed_m_s;
@@ -131,6 +150,8 @@ struct TyreWheel::Impl {
   WheelSettings settings;
   std::unique_ptr<transient::DrivenTyre> tyre;
   std::unique_ptr<LongitudinalContact> contact;
+  bool on_soil = false;                          ///< the config's ground is a soil
+  std::unique_ptr<ground::ShearLaw> soil_shear;  ///< its Janosi-Hanamoto law
   Eigen::VectorXd forces;
   WheelOutput out;
   double x0 = 0, t0 = 0, v = 0;  ///< the hub along the road over the current step
@@ -182,8 +203,13 @@ void TyreWheel::start(double t, const WheelInput& in) {
   I.x0 = in.plane.x_m;
   I.t0 = t;
   I.v = in.plane.speed_m_s;
+  Impl* self = &I;
+  if (I.on_soil) {
+    // The soil's memory moves with the hub's travel along its heading.
+    opt.distance_m = [self](double tt) { return self->x0 + self->v * (tt - self->t0); };
+    I.soil_shear = I.model->tyre.config.ground.shear_law(0.0);
+  }
   if (I.settings.profile) {
-    Impl* self = &I;
     opt.road_profile = [self](double tt, double x, double* slope) {
       return self->road(tt, x, slope);
     };
@@ -232,7 +258,11 @@ void TyreWheel::step(double t, double h, const WheelInput& in) {
     if (!st.ok) throw ComputationError(st.message);
     I.forces.setZero();
     I.tyre->vertical_forces(I.forces);
-    I.contact->advance(dt, I.forces.data(), in.plane.spin_rad_s, in.plane.speed_m_s, in.mu);
+    if (I.soil_shear)
+      I.contact->advance(dt, I.forces.data(), in.plane.spin_rad_s, in.plane.speed_m_s,
+                         *I.soil_shear);
+    else
+      I.contact->advance(dt, I.forces.data(), in.plane.spin_rad_s, in.plane.speed_m_s, in.mu);
     // The rim on the road at a sub-step's end: raised for the whole communication step, and
     // "started" when it was not on the road at the sub-step before.
     const bool rim = I.rim_on_road(hub);

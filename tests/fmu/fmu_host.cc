@@ -89,7 +89,8 @@ void logger(fmi2ComponentEnvironment env, fmi2String, fmi2Status status, fmi2Str
 
 }  // namespace
 
-std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets) {
+std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets,
+                           const std::string& ground) {
   static std::atomic<int> counter{0};
   const fs::path dir =
       fs::temp_directory_path() /
@@ -99,6 +100,7 @@ std::string pack_and_unzip(const std::string& config, const std::vector<std::str
   const std::string fmu = (dir / "tyre.fmu").string();
   std::string cmd = std::string(MODALTYRE_CLI) + " fmu " + config + " --output " + fmu;
   for (const std::string& s : sets) cmd += " --set " + s;
+  if (!ground.empty()) cmd += " --ground " + ground;
   cmd += " > " + (dir / "pack.log").string() + " 2>&1";
   const int rc = std::system(cmd.c_str());
   if (rc != 0) {

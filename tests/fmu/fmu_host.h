@@ -11,9 +11,10 @@
 
 namespace modaltyre::fmu::test {
 
-/// Packs `config` (with --set overrides) into a unique folder under the temp dir, unzips it and
-/// returns that folder ("" after a gtest failure).
-std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets = {});
+/// Packs `config` (with --set overrides, on the soil file `ground` when given) into a unique
+/// folder under the temp dir, unzips it and returns that folder ("" after a gtest failure).
+std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets = {},
+                           const std::string& ground = "");
 
 /// The fmi2 functions of a loaded shared library.
 struct Fmi2Api {

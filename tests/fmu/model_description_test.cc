@@ -136,7 +136,8 @@ TEST(FmuModelDescription, RefusesUndefinedAndMisdefinedUnits) {
   named(d, "wheel_load.force.x").unit = "kN";
   EXPECT_TRUE(mentions(validate(d), "not in UnitDefinitions"));
   ModelDescription e = tyre();
-  (*e.units[0].exponents)[1] = 1;  // "1" with a metre in it
+  for (UnitDefinition& u : e.units)
+    if (u.name == "1") (*u.exponents)[1] = 1;  // "1" with a metre in it
   EXPECT_TRUE(mentions(validate(e), "do not match its name"));
   ModelDescription f = tyre();
   named(f, "terrain_height").unit.clear();
@@ -185,6 +186,21 @@ TEST(FmuModelDescription, ValidatesAgainstTheFmi2Schema) {
   const auto [rc, out] = schema_check(to_xml(tyre()), "ok");
   EXPECT_EQ(rc, 0) << out;
   EXPECT_NE(out.find("validates"), std::string::npos) << out;
+  // A soil FMU's: the soil's keys as parameters, their units (one without SI exponents).
+  ground::GroundSettings sand;
+  sand.model = ground::GroundModel::bekker;
+  sand.bekker = {0.79, 102, 5301, ground::WongUnloading{0, 5e5}};
+  TyreDescriptionInfo info;
+  info.tyre_name = "on sand";
+  info.guid = "{00000000-0000-0000-0000-000000000001}";
+  info.soil = &sand;
+  const ModelDescription soil = tyre_model_description(info);
+  EXPECT_TRUE(validate(soil).empty());
+  const std::string xml = to_xml(soil);
+  EXPECT_NE(xml.find("<Unit name=\"kN/m^(n+1)\"/>"), std::string::npos);
+  EXPECT_NE(xml.find("name=\"ground.bekker.unloading.Au\""), std::string::npos);
+  const auto [rc3, out3] = schema_check(xml, "soil");
+  EXPECT_EQ(rc3, 0) << out3;
   // The check sees a breach: a causality the schema does not know.
   std::string broken = to_xml(tyre());
   broken.replace(broken.find("causality=\"input\""), 17, "causality=\"inlet\"");

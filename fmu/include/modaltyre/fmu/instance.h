@@ -96,6 +96,9 @@ class Instance {
   void refresh_outputs(const WheelInput& in);
   /// A warning when the rim reached the road in the last step (fmi2Warning in place of OK).
   fmi2Status rim_warning(fmi2Status status);
+  /// The model to run: the packed one, or on a soil a copy with the soil's keys as the
+  /// parameters set (kept while they stay); nullptr with the reason when they cannot be run.
+  std::shared_ptr<const transient::TransientModel> soil_model(std::string* problem);
   /// The tyre at rest under the current inputs (initialization mode's outputs).
   fmi2Status standing_outputs(const char* function);
   /// The Real variable of a value reference (nullptr if none).
@@ -111,7 +114,8 @@ class Instance {
   State state_ = State::instantiated;
   bool terminated_ = false;  ///< fmi2Terminated: the slave cannot go on (after a discarded step)
   std::string resource_folder_;
-  std::shared_ptr<const transient::TransientModel> model_;
+  std::shared_ptr<const transient::TransientModel> model_;      ///< as packed
+  std::shared_ptr<const transient::TransientModel> run_model_;  ///< with the soil as set
   ModelDescription description_;
   std::vector<const ScalarVariable*> real_vars_;  ///< by value reference
   std::unique_ptr<TyreWheel> wheel_;

@@ -50,6 +50,7 @@ struct ScalarVariable {
   std::optional<double> start;      ///< Real, Integer, Boolean start
   std::optional<std::string> start_string;
   std::optional<double> min, max;  ///< Real: the range the FMU is designed for
+  bool min_exclusive = false;      ///< not written (FMI has no open bound): the FMU refuses min
   std::string description;
   /// Outputs: the knowns they depend on at a communication point (empty: none, no direct
   /// feedthrough; absent: every known). By name, written as indices.

@@ -1,10 +1,11 @@
 #pragma once
 // The tyre on a wheel whose motion the host prescribes (co-simulation): the transient model
 // (transient/) driven by the hub's height, forward speed and spin over each communication step,
-// with the road under it (flat at terrain_height, or a profile), returning the in-plane wheel
-// load. The hub state given at the start of a step is carried over the step at its velocity
-// (x + V s, z + w s, spin constant); the transient integrates with its own steps inside, at
-// most step_size apart.
+// with the ground under it (a road flat at terrain_height, or a profile; or the config's soil,
+// its undisturbed surface at terrain_height, its memory moving with the hub's travel and its
+// Janosi-Hanamoto shear in place of the tread's friction), returning the in-plane wheel load. The
+// hub state given at the start of a step is carried over the step at its velocity (x + V s, z + w
+// s, spin constant); the transient integrates with its own steps inside, at most step_size apart.
 #include <memory>
 #include <string>
 
@@ -40,6 +41,9 @@ struct WheelOutput {
   /// at rim_started_at_s.
   bool rim_contact = false, rim_contact_started = false;
   double rim_started_at_s = 0;
+  /// On a soil: the deepest loaded point of its surface below the undisturbed one, and the
+  /// compaction resistance sum f tan alpha (included in load.fx_N); 0 on a road.
+  double soil_sinkage_m = 0, compaction_resistance_N = 0;
 };
 
 class TyreWheel {
