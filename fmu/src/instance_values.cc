@@ -41,11 +41,7 @@ std::string Instance::refusal(const ScalarVariable& v, double value) const {
 }
 
 fmi2Status Instance::get_real(const fmi2ValueReference vr[], size_t n, fmi2Real value[]) {
-  if (!allowed({State::initialization, State::step_complete, State::step_failed, State::terminated,
-                State::error},
-               "fmi2GetReal"))
-    return fmi2Error;
-  if (n > 0 && (!vr || !value)) return fail("fmi2GetReal: NULL array");
+  if (!readable("fmi2GetReal", n, vr, value)) return fmi2Error;
   for (size_t k = 0; k < n; ++k)
     if (!real_variable(vr[k]))
       return fail("fmi2GetReal: no Real variable has value reference " + std::to_string(vr[k]));
@@ -88,12 +84,20 @@ fmi2Status Instance::set_real(const fmi2ValueReference vr[], size_t n, const fmi
   return fmi2OK;
 }
 
-fmi2Status Instance::get_boolean(const fmi2ValueReference vr[], size_t n, fmi2Boolean value[]) {
+bool Instance::readable(const char* function, size_t n, const void* vr, const void* value) {
   if (!allowed({State::initialization, State::step_complete, State::step_failed, State::terminated,
                 State::error},
-               "fmi2GetBoolean"))
-    return fmi2Error;
-  if (n > 0 && (!vr || !value)) return fail("fmi2GetBoolean: NULL array");
+               function))
+    return false;
+  if (n > 0 && (!vr || !value)) {
+    fail(std::string(function) + ": NULL array");
+    return false;
+  }
+  return true;
+}
+
+fmi2Status Instance::get_boolean(const fmi2ValueReference vr[], size_t n, fmi2Boolean value[]) {
+  if (!readable("fmi2GetBoolean", n, vr, value)) return fmi2Error;
   for (size_t k = 0; k < n; ++k)
     if (vr[k] != vr::rim_contact)
       return fail("fmi2GetBoolean: no Boolean variable has value reference " +
@@ -107,11 +111,7 @@ fmi2Status Instance::get_boolean(const fmi2ValueReference vr[], size_t n, fmi2Bo
 }
 
 fmi2Status Instance::get_string(const fmi2ValueReference vr[], size_t n, fmi2String value[]) {
-  if (!allowed({State::initialization, State::step_complete, State::step_failed, State::terminated,
-                State::error},
-               "fmi2GetString"))
-    return fmi2Error;
-  if (n > 0 && (!vr || !value)) return fail("fmi2GetString: NULL array");
+  if (!readable("fmi2GetString", n, vr, value)) return fmi2Error;
   for (size_t k = 0; k < n; ++k) {
     if (vr[k] != vr::road_profile)
       return fail("fmi2GetString: no String variable has value reference " + std::to_string(vr[k]));

@@ -16,6 +16,19 @@ const std::vector<std::string> kSlipKnowns = {
     "wheel_state.rot.e3",    "wheel_state.lin_vel.x", "wheel_state.lin_vel.y",
     "wheel_state.ang_vel.x", "wheel_state.ang_vel.y", "wheel_state.ang_vel.z"};
 
+/// A variable of another type than Real (no unit).
+ScalarVariable other(const std::string& name, unsigned ref, BaseType type, Causality c,
+                     Variability variability, Initial initial) {
+  ScalarVariable v;
+  v.name = name;
+  v.value_reference = ref;
+  v.type = type;
+  v.causality = c;
+  v.variability = variability;
+  v.initial = initial;
+  return v;
+}
+
 ScalarVariable real(const std::string& name, unsigned ref, Causality c, const std::string& unit,
                     const std::string& description, std::optional<double> start = {}) {
   ScalarVariable v;
@@ -143,13 +156,8 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
       v.back().min_exclusive = p.positive;
     }
   }
-  ScalarVariable rim;
-  rim.name = "tyre.rim_contact";
-  rim.value_reference = vr::rim_contact;
-  rim.type = BaseType::boolean;
-  rim.causality = C::output;
-  rim.variability = Variability::discrete;
-  rim.initial = Initial::calculated;
+  ScalarVariable rim = other("tyre.rim_contact", vr::rim_contact, BaseType::boolean, C::output,
+                             Variability::discrete, Initial::calculated);
   rim.dependencies = std::vector<std::string>{};
   rim.initial_dependencies = kStandingTyreKnowns;
   rim.description =
@@ -159,13 +167,8 @@ ModelDescription tyre_model_description(const TyreDescriptionInfo& info) {
                 " mm) or more at a sub-step of the last step (a warning is logged when it starts)"
           : "never raised: the config states no rim radius nor section width and aspect ratio";
   v.push_back(rim);
-  ScalarVariable road;
-  road.name = "road_profile";
-  road.value_reference = vr::road_profile;
-  road.type = BaseType::string;
-  road.causality = C::parameter;
-  road.variability = Variability::fixed;
-  road.initial = Initial::exact;
+  ScalarVariable road = other("road_profile", vr::road_profile, BaseType::string, C::parameter,
+                              Variability::fixed, Initial::exact);
   road.start_string = "";
   road.description =
       "optional CSV x_m,height_m: the road under the whole tyre in world x (a cleat, a profile); "

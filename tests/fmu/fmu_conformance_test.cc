@@ -15,17 +15,9 @@
 namespace modaltyre::fmu::test {
 namespace {
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-
-const FmuFolder& packed() {
-  static const std::string folder = pack_and_unzip(kConfig);
-  static const FmuFolder fmu(folder);
-  return fmu;
-}
-
 /// The declared attribute of a variable in the packed description ("" if absent).
 std::string declared(const std::string& name, const std::string& attribute) {
-  const std::string& xml = packed().description();
+  const std::string& xml = road_2d_fmu().description();
   const auto at = xml.find("name=\"" + name + "\"");
   if (at == std::string::npos) return "";
   const auto end = xml.find("</ScalarVariable>", at);
@@ -36,10 +28,10 @@ std::string declared(const std::string& name, const std::string& attribute) {
 }
 
 TEST(FmuConformance, StatusesNotProvidedAreDiscardWithoutAWarning) {
-  FmuInstance f(packed());
+  FmuInstance f(road_2d_fmu());
   ASSERT_EQ(f.initialize(), fmi2OK);
   ASSERT_EQ(f.step(1e-3), fmi2OK);
-  const Fmi2Api& api = packed().api();
+  const Fmi2Api& api = road_2d_fmu().api();
   fmi2Status st = fmi2OK;
   fmi2Real real = -1;
   fmi2Integer integer = -1;
@@ -63,24 +55,24 @@ TEST(FmuConformance, StatusesNotProvidedAreDiscardWithoutAWarning) {
 }
 
 TEST(FmuConformance, AfterAnErrorTheInstanceRefusesAllButGetResetAndFree) {
-  FmuInstance f(packed());
+  FmuInstance f(road_2d_fmu());
   ASSERT_EQ(f.initialize(), fmi2OK);
   // An unknown log category is an error (as the Reference FMUs answer it).
   const fmi2String bad[] = {"logNoSuchCategory"};
-  EXPECT_EQ(packed().api().set_debug_logging(f.component(), fmi2True, 1, bad), fmi2Error);
+  EXPECT_EQ(road_2d_fmu().api().set_debug_logging(f.component(), fmi2True, 1, bad), fmi2Error);
   EXPECT_TRUE(f.logged("logNoSuchCategory"));
   // Section 2.1.3: the simulation cannot be continued with this instance.
   EXPECT_EQ(f.step(1e-3), fmi2Error);
   EXPECT_TRUE(f.logged("earlier call returned fmi2Error"));
   EXPECT_EQ(f.set("wheel_state.pos.z", 0.28), fmi2Error);
   EXPECT_TRUE(std::isfinite(f.get("wheel_load.force.z")));  // values for debugging
-  EXPECT_EQ(packed().api().terminate(f.component()), fmi2Error);
+  EXPECT_EQ(road_2d_fmu().api().terminate(f.component()), fmi2Error);
   // fmi2Reset makes it usable again.
   ASSERT_EQ(f.reset(), fmi2OK);
   ASSERT_EQ(f.initialize(), fmi2OK);
   EXPECT_EQ(f.step(1e-3), fmi2OK);
   const fmi2String known[] = {"logStatusError", "logEvents"};
-  EXPECT_EQ(packed().api().set_debug_logging(f.component(), fmi2True, 2, known), fmi2OK);
+  EXPECT_EQ(road_2d_fmu().api().set_debug_logging(f.component(), fmi2True, 2, known), fmi2OK);
 }
 
 TEST(FmuConformance, EveryParameterAndBoundedInputDeclaresItsRangeAndAValueAboveIsDiscarded) {
@@ -90,7 +82,7 @@ TEST(FmuConformance, EveryParameterAndBoundedInputDeclaresItsRangeAndAValueAbove
   EXPECT_EQ(declared("terrain_mu", "max"), "10");
   EXPECT_EQ(declared("wheel_state.rot.e1", "max"), "1");
   EXPECT_EQ(declared("terrain_normal.z", "min"), "-1");
-  FmuInstance f(packed());
+  FmuInstance f(road_2d_fmu());
   ASSERT_TRUE(f.ok());
   // Above max: fmi2Discard, logged, not taken (fmi2GetReal still reads the start value).
   EXPECT_EQ(f.set("terrain_mu", 10.5), fmi2Discard);
@@ -107,7 +99,7 @@ TEST(FmuConformance, EveryParameterAndBoundedInputDeclaresItsRangeAndAValueAbove
 }
 
 TEST(FmuConformance, ModelStructureDeclaresTheOutputsDependencies) {
-  const std::string& xml = packed().description();
+  const std::string& xml = road_2d_fmu().description();
   const std::string outputs =
       xml.substr(xml.find("<Outputs>"), xml.find("</Outputs>") - xml.find("<Outputs>"));
   const std::string initial =
@@ -127,7 +119,7 @@ TEST(FmuConformance, ModelStructureDeclaresTheOutputsDependencies) {
 
 TEST(FmuConformance, StepSizeBelowItsMinimumIsRefusedNamingTheKey) {
   // Issue 44: step_size = 1e-12 made 1e9 sub-steps per millisecond.
-  FmuInstance f(packed());
+  FmuInstance f(road_2d_fmu());
   EXPECT_EQ(f.set("step_size", 1e-12), fmi2Discard);
   EXPECT_TRUE(f.logged("step_size = 1e-12 is outside the variable's range [1e-05, 1] s"))
       << f.messages().back();
@@ -135,31 +127,33 @@ TEST(FmuConformance, StepSizeBelowItsMinimumIsRefusedNamingTheKey) {
 
 TEST(FmuConformance, OneCallsWorkIsBoundedAndALongStepIsDiscardedAtOnce) {
   // Issue 44: fmi2DoStep(0, 1e6) did not return.
-  FmuInstance f(packed());
+  FmuInstance f(road_2d_fmu());
   ASSERT_EQ(f.initialize(), fmi2OK);
   const auto t0 = std::chrono::steady_clock::now();
-  EXPECT_EQ(packed().api().do_step(f.component(), 0.0, 1e6, fmi2True), fmi2Discard);
+  EXPECT_EQ(road_2d_fmu().api().do_step(f.component(), 0.0, 1e6, fmi2True), fmi2Discard);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
   EXPECT_TRUE(f.logged("use shorter communication steps")) << f.messages().back();
   EXPECT_TRUE(f.logged("step_size"));
   fmi2Boolean terminated = fmi2False;
   fmi2Real last = -1;
-  EXPECT_EQ(packed().api().get_boolean_status(f.component(), fmi2Terminated, &terminated), fmi2OK);
+  EXPECT_EQ(road_2d_fmu().api().get_boolean_status(f.component(), fmi2Terminated, &terminated),
+            fmi2OK);
   EXPECT_EQ(terminated, fmi2True);
-  EXPECT_EQ(packed().api().get_real_status(f.component(), fmi2LastSuccessfulTime, &last), fmi2OK);
+  EXPECT_EQ(road_2d_fmu().api().get_real_status(f.component(), fmi2LastSuccessfulTime, &last),
+            fmi2OK);
   EXPECT_EQ(last, 0.0);
-  EXPECT_EQ(packed().api().terminate(f.component()), fmi2OK);
+  EXPECT_EQ(road_2d_fmu().api().terminate(f.component()), fmi2OK);
 }
 
 TEST(FmuConformance, AHubBelowTheRoadIsRefused) {
   // Issue 44: a hub 10 m below the road gave F_z 3.0 MN and fmi2OK.
-  FmuInstance f(packed());
+  FmuInstance f(road_2d_fmu());
   ASSERT_EQ(f.initialize(), fmi2OK);
   EXPECT_EQ(f.set("wheel_state.pos.z", -10.0), fmi2OK);
   EXPECT_EQ(f.step(1e-3), fmi2Discard);
   EXPECT_TRUE(f.logged("below the road")) << f.messages().back();
   // Carried below it within the step by its vertical speed: refused as well.
-  FmuInstance g(packed());
+  FmuInstance g(road_2d_fmu());
   ASSERT_EQ(g.initialize(), fmi2OK);
   g.set("wheel_state.lin_vel.z", -400.0);
   EXPECT_EQ(g.step(1e-3), fmi2Discard);
@@ -168,29 +162,29 @@ TEST(FmuConformance, AHubBelowTheRoadIsRefused) {
 
 TEST(FmuConformance, ARoadProfilePathThatIsNotUtf8IsRefused) {
   // Issue 44: a road profile with a Latin-1 byte was accepted.
-  FmuInstance f(packed());
-  const fmi2ValueReference r = packed().vr("road_profile");
+  FmuInstance f(road_2d_fmu());
+  const fmi2ValueReference r = road_2d_fmu().vr("road_profile");
   const fmi2String latin1 =
       "stra\xdf"
       "e.csv";
-  EXPECT_EQ(packed().api().set_string(f.component(), &r, 1, &latin1), fmi2Discard);
+  EXPECT_EQ(road_2d_fmu().api().set_string(f.component(), &r, 1, &latin1), fmi2Discard);
   EXPECT_TRUE(f.logged("not UTF-8"));
   // A profile file with a Latin-1 byte in it is refused when read, naming road_profile.
-  const std::string path = packed().folder() + "/latin1_profile.csv";
+  const std::string path = road_2d_fmu().folder() + "/latin1_profile.csv";
   std::ofstream(path) << "# Stra\xdf"
                          "e\nx_m,height_m\n-10,0\n10,0\n";
   const fmi2String p = path.c_str();
-  EXPECT_EQ(packed().api().set_string(f.component(), &r, 1, &p), fmi2OK);
+  EXPECT_EQ(road_2d_fmu().api().set_string(f.component(), &r, 1, &p), fmi2OK);
   EXPECT_EQ(f.initialize(), fmi2Error);
   EXPECT_TRUE(f.logged("road_profile")) << (f.messages().empty() ? "" : f.messages().back());
 }
 
 TEST(FmuConformance, FreeingAnInstanceTwiceIsHarmless) {
-  const Fmi2Api& api = packed().api();
+  const Fmi2Api& api = road_2d_fmu().api();
   fmi2CallbackFunctions callbacks{nullptr, nullptr, nullptr, nullptr, nullptr};
   fmi2Component c =
-      api.instantiate("twice", fmi2CoSimulation, packed().guid().c_str(),
-                      packed().resource_uri().c_str(), &callbacks, fmi2False, fmi2False);
+      api.instantiate("twice", fmi2CoSimulation, road_2d_fmu().guid().c_str(),
+                      road_2d_fmu().resource_uri().c_str(), &callbacks, fmi2False, fmi2False);
   ASSERT_NE(c, nullptr);
   api.free_instance(c);
   api.free_instance(c);  // aborted in free() before

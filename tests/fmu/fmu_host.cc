@@ -114,6 +114,13 @@ std::string pack_and_unzip(const std::string& config, const std::vector<std::str
   return (dir / "unzipped").string();
 }
 
+const FmuFolder& road_2d_fmu() {
+  static const std::string folder =
+      pack_and_unzip(std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml");
+  static const FmuFolder fmu(folder);
+  return fmu;
+}
+
 FmuFolder::FmuFolder(const std::string& folder) : folder_(folder) {
   std::ifstream in(fs::path(folder) / "modelDescription.xml");
   std::stringstream ss;
@@ -193,6 +200,16 @@ double FmuInstance::get(const std::string& name) {
   double v = std::nan("");
   EXPECT_EQ(fmu_.api().get_real(c_, &r, 1, &v), fmi2OK) << name;
   return v;
+}
+
+void FmuInstance::set_wheel(double x, double z, double vx, double vz, double angle, double spin) {
+  set("wheel_state.pos.x", x);
+  set("wheel_state.pos.z", z);
+  set("wheel_state.lin_vel.x", vx);
+  set("wheel_state.lin_vel.z", vz);
+  set("wheel_state.rot.e0", std::cos(angle / 2));
+  set("wheel_state.rot.e2", std::sin(angle / 2));
+  set("wheel_state.ang_vel.y", spin);
 }
 
 fmi2Status FmuInstance::initialize() {

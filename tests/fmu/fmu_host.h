@@ -16,6 +16,10 @@ namespace modaltyre::fmu::test {
 std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets = {},
                            const std::string& ground = "");
 
+/// The FMU of configs/sf350_2d_table3.yaml (the 2D variant: fast), packed once per process.
+class FmuFolder;
+const FmuFolder& road_2d_fmu();
+
 /// The fmi2 functions of a loaded shared library.
 struct Fmi2Api {
   void* handle = nullptr;
@@ -77,6 +81,9 @@ class FmuInstance {
   /// Sets a Real by name; returns the status.
   fmi2Status set(const std::string& name, double value);
   double get(const std::string& name);
+  /// The wheel upright, heading +x, at (x, z) moving at (vx, vz), spun by `angle` about its
+  /// axis at `spin` [rad/s].
+  void set_wheel(double x, double z, double vx, double vz, double angle, double spin);
   /// Setup (start 0, no stop), enter and exit initialization.
   fmi2Status initialize();
   fmi2Status step(double h);

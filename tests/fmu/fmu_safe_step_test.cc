@@ -15,16 +15,10 @@ namespace {
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 constexpr double kR0 = 0.2948, kSectionHeight = 0.117;
 
-const FmuFolder& packed() {
-  static const std::string folder = pack_and_unzip(kConfig);
-  static const FmuFolder fmu(folder);
-  return fmu;
-}
-
 bool rim(FmuInstance& f) {
-  const fmi2ValueReference r = packed().vr("tyre.rim_contact");
+  const fmi2ValueReference r = road_2d_fmu().vr("tyre.rim_contact");
   fmi2Boolean b = -1;
-  EXPECT_EQ(packed().api().get_boolean(f.component(), &r, 1, &b), fmi2OK);
+  EXPECT_EQ(road_2d_fmu().api().get_boolean(f.component(), &r, 1, &b), fmi2OK);
   return b == fmi2True;
 }
 
@@ -38,7 +32,7 @@ int warnings(const FmuInstance& f) {
 TEST(FmuSafeStep, ALongStepGivesWhatAsManyStepsOfStepSizeGive) {
   // The hub pressed 20 mm in one 0.2 s communication step, and in 200 steps of 1 ms.
   const double depth = 0.020, duration = 0.2, w = -depth / duration;
-  FmuInstance one(packed()), many(packed());
+  FmuInstance one(road_2d_fmu()), many(road_2d_fmu());
   ASSERT_EQ(one.initialize(), fmi2OK);
   ASSERT_EQ(many.initialize(), fmi2OK);
   one.set("wheel_state.lin_vel.z", w);
@@ -57,7 +51,7 @@ TEST(FmuSafeStep, ALongStepGivesWhatAsManyStepsOfStepSizeGive) {
 TEST(FmuSafeStep, TheRimOnTheRoadRaisesAFlagAndAWarningEachTimeItStarts) {
   // Issue 46: a 0.5 s communication step that carries the hub 145 mm down returned OK with
   // F_z 64 kN and no word.
-  FmuInstance f(packed());
+  FmuInstance f(road_2d_fmu());
   ASSERT_EQ(f.initialize(), fmi2OK);
   EXPECT_FALSE(rim(f));
   f.set("wheel_state.lin_vel.z", -0.145 / 0.5);

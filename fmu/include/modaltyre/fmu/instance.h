@@ -101,6 +101,8 @@ class Instance {
   std::shared_ptr<const transient::TransientModel> soil_model(std::string* problem);
   /// The tyre at rest under the current inputs (initialization mode's outputs).
   fmi2Status standing_outputs(const char* function);
+  /// Whether an fmi2GetXXX call may read (its state, its arrays); false after failing it.
+  bool readable(const char* function, size_t n, const void* vr, const void* value);
   /// The Real variable of a value reference (nullptr if none).
   const ScalarVariable* real_variable(unsigned vr) const;
   /// Why `value` cannot be set on `v` (empty: it can).
