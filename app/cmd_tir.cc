@@ -1,5 +1,7 @@
 // modaltyre tir export CONFIG --output FILE.tir [--loads N...] [--fnomin N] [--set k=v]...
-//                      [--uncertainty [--uncertainty-method M] [--samples K]]
+//                      [--no-slip | --slip-loads N... --speed-kmh V --mu MU --slips K...
+//                       --rr-speeds-kmh V...] [--uncertainty [--uncertainty-method M] [--samples
+//                       K]]
 // modaltyre tir compare CONFIG FILE.tir [--json] [--plot FILE] [--fnomin N] [--points K]
 // The MF-Tyre/MF-Swift .tir bridge (tir/, docs/tir.md).
 #include <iostream>
@@ -11,6 +13,7 @@
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/gnuplot.h"
+#include "modaltyre/core/progress.h"
 #include "modaltyre/tir/tir_compare.h"
 #include "modaltyre/tir/tir_export.h"
 #include "tir_bands.h"
@@ -27,7 +30,50 @@ struct TirArgs {
   bool json = false;
   bool uncertainty = false;
   UncertaintyMethodArgs method;
+  // The longitudinal laws (export) and their comparison (compare --slip).
+  bool no_slip = false, slip = false;
+  std::vector<double> slip_loads, slips, rr_speeds_kmh;
+  double speed_kmh = 60, mu = 0.8;
 };
+
+/// The slip runs' options from the arguments, with a progress bar on a terminal.
+tir::SlipExportOptions slip_options(const TirArgs& a, std::shared_ptr<ProgressBar>& bar) {
+  tir::SlipExportOptions o;
+  o.enabled = true;
+  o.loads_N = a.slip_loads;
+  o.run.speed_m_s = a.speed_kmh / 3.6;
+  o.run.mu = a.mu;
+  o.run.slips = a.slips;
+  for (double v : a.rr_speeds_kmh) o.speeds_m_s.push_back(v / 3.6);
+  o.progress = [&bar, last = 0](int done, int total) mutable {
+    if (!bar) bar = std::make_shared<ProgressBar>(static_cast<std::size_t>(total), "slip runs");
+    bar->tick(static_cast<std::size_t>(done - last));
+    last = done;
+  };
+  return o;
+}
+
+void print_slip_fit(const tir::TirSlipFit& s) {
+  const tir::MfLongitudinal& c = s.longitudinal;
+  std::cout << "  longitudinal (pure slip), " << s.curves.size() << " loads, F_z "
+            << fixed(s.fz_min_N, 0) << "-" << fixed(s.fz_max_N, 0) << " N, "
+            << fixed(s.basis.longvl_m_s * 3.6, 1) << " km/h, kappa " << s.kappa_min << " to "
+            << s.kappa_max << ", mu " << s.mu << ":\n"
+            << "    PCX1 " << c.pcx1 << ", PDX1 " << c.pdx1 << ", PDX2 " << c.pdx2 << ", PEX1 "
+            << c.pex1 << ", PEX2 " << c.pex2 << ", PEX3 " << c.pex3 << ", PEX4 " << c.pex4
+            << "\n    PKX1 " << c.pkx1 << ", PKX2 " << c.pkx2 << ", PKX3 " << c.pkx3 << ", PHX1 "
+            << c.phx1 << ", PHX2 " << c.phx2 << ", PVX1 " << c.pvx1 << ", PVX2 " << c.pvx2
+            << "\n  rolling resistance: QSY1 " << s.rolling.qsy1 << ", QSY2 " << s.rolling.qsy2
+            << ", QSY3 " << s.rolling.qsy3 << ", QSY4 " << s.rolling.qsy4 << ", QSY7 "
+            << s.rolling.qsy7 << "\n  effective rolling radius: Q_RE0 " << s.radius.q_re0
+            << ", BREFF " << s.radius.breff << ", DREFF " << s.radius.dreff << ", FREFF "
+            << s.radius.freff << "\n  fit residuals: F_x RMS " << pct(s.fx_over_fz.rms)
+            << " of F_z (max " << pct(s.fx_over_fz.max) << "), M_y RMS " << pct(s.rolling_rel.rms)
+            << " (max " << pct(s.rolling_rel.max) << ") at free rolling, RMS "
+            << pct(s.rolling_slip_rel.rms) << " (max " << pct(s.rolling_slip_rel.max)
+            << ") at slip, R_e max " << fixed(s.radius_m.max * 1e3, 4) << " mm; E_x at most "
+            << fixed(s.max_curvature, 3) << "\n";
+}
 
 nlohmann::json opt(const std::optional<double>& v, double scale = 1) {
   return v ? nlohmann::json(round_sig(*v * scale, 6)) : nlohmann::json(nullptr);
@@ -47,13 +93,18 @@ void run_export(const TirArgs& a, CLI::App* cmd) {
   if (cmd->count("--fnomin")) o.fnomin_N = a.fnomin;
   o.loads_N = a.loads;
   o.config_label = a.config;
+  std::shared_ptr<ProgressBar> slip_bar;
+  if (!a.no_slip) o.slip = slip_options(a, slip_bar);
   const tir::TirFit f = tir::fit_tir(model, o);
+  if (slip_bar) slip_bar->finish();
   std::optional<TirBands> bands;
   if (a.uncertainty) {
     uncertainty::PropagationOptions uo = a.method.options();
     UncertaintyProgress bar;
     uo.progress = bar.callback();
-    bands = tir_bands(config, o, f, uo);
+    tir::TirExportOptions vertical = o;  // the bands are the vertical coefficients'
+    vertical.slip.enabled = false;
+    bands = tir_bands(config, vertical, f, uo);
     bar.finish();
     o.comments = tir_band_comments(*bands);
   }
@@ -74,6 +125,7 @@ void run_export(const TirArgs& a, CLI::App* cmd) {
             << (f.width ? "RMS " + pct(f.width->rms_rel) : "not fitted: " + f.curve.width_reason)
             << "\n";
   if (!f.pfz1) std::cout << "  " << f.pfz1_reason << "\n";
+  if (f.slip) print_slip_fit(*f.slip);
   if (bands) print_tir_bands(*bands);
 }
 
@@ -201,6 +253,19 @@ void run_compare(const TirArgs& a, CLI::App* cmd) {
   }
 }
 
+/// The slip runs' options, shared by export and compare --slip.
+void add_slip_options(CLI::App* cmd, TirArgs& a) {
+  cmd->add_option("--slip-loads", a.slip_loads,
+                  "loads of the slip curves [N] (default 0.5, 0.75, 1, 1.25, 1.5 x FNOMIN; at "
+                  "least 3)");
+  cmd->add_option("--speed-kmh", a.speed_kmh, "speed of the slip curves, LONGVL [km/h] (60)");
+  cmd->add_option("--mu", a.mu, "road friction coefficient of the runs (0.8, the FMU's default)");
+  cmd->add_option("--slips", a.slips,
+                  "slips of the curves (default +-0.0025 ... +-0.3, 24 values)");
+  cmd->add_option("--rr-speeds-kmh", a.rr_speeds_kmh,
+                  "further free-rolling speeds for the rolling resistance [km/h] (40 80 100 120)");
+}
+
 }  // namespace
 
 void register_tir(CLI::App& app) {
@@ -224,6 +289,10 @@ void register_tir(CLI::App& app) {
                "propagate the inputs' uncertainty (the hammer shapes' noise, stated std) to the "
                "fitted coefficients: printed and in the header's comments (docs/uncertainty.md)");
   add_uncertainty_method_options(ex, e->method);
+  add_slip_options(ex, *e);
+  ex->add_flag("--no-slip", e->no_slip,
+               "leave out the longitudinal, rolling-resistance and effective-radius laws (no "
+               "transient runs): the vertical and contact-patch file alone");
   ex->callback([e, ex] { run_export(*e, ex); });
 
   auto c = std::make_shared<TirArgs>();

@@ -214,4 +214,74 @@ TEST_F(TirCli, BadExportArgumentsWriteNothing) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// The longitudinal laws (issue 46 item 5): written with the scaling section MF tools expect,
+// the residuals printed, what is left out said in the header.
+TEST_F(TirCli, ExportWritesTheLongitudinalAndRollingLaws) {
+  const std::string out = (dir_ / "slip.tir").string();
+  const CliRun e = run({"tir", "export", kConfig, "--output", out});
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  EXPECT_NE(e.out.find("fit residuals: F_x RMS"), std::string::npos) << e.out;
+  const std::string text = modaltyre_test::slurp(out);
+  for (const char* s :
+       {"[LONGITUDINAL_COEFFICIENTS]", "[ROLLING_COEFFICIENTS]", "[SCALING_COEFFICIENTS]",
+        "[LONG_SLIP_RANGE]", "[VERTICAL_FORCE_RANGE]", "\nPKX1 ", "\nQSY7 ", "\nLONGVL ",
+        "\nQ_RE0                    = 1 ", "\nLMUX                     = 1 ",
+        "left out, the model being in-plane", "docs/tir.md"}) {
+    EXPECT_NE(text.find(s), std::string::npos) << s;
+  }
+  for (const char* s : {"[LATERAL_COEFFICIENTS]", "[ALIGNING_COEFFICIENTS]", "\nRBX1", "\nPCY1",
+                        "no force and moment (slip) coefficients"}) {
+    EXPECT_EQ(text.find(s), std::string::npos) << s;
+  }
+}
+
+// --no-slip: the vertical and contact-patch file of before; the longitudinal export only adds
+// to it (every line of the one is in the other, in order, but the two it rewords).
+TEST_F(TirCli, NoSlipIsTheVerticalFileTheSlipExportExtends) {
+  const std::string plain = (dir_ / "plain.tir").string(), slip = (dir_ / "slip.tir").string();
+  ASSERT_EQ(run({"tir", "export", kConfig, "--output", plain, "--no-slip"}).exit_code, 0);
+  ASSERT_EQ(run({"tir", "export", kConfig, "--output", slip}).exit_code, 0);
+  const std::string a = modaltyre_test::slurp(plain), b = modaltyre_test::slurp(slip);
+  EXPECT_EQ(a.find("[LONGITUDINAL_COEFFICIENTS]"), std::string::npos);
+  EXPECT_NE(a.find("no force and moment (slip) coefficients: the model predicts none"),
+            std::string::npos);
+  std::istringstream in(a);
+  std::string line;
+  std::size_t at = 0;
+  int reworded = 0;
+  while (std::getline(in, line)) {
+    const std::size_t found = b.find(line + "\n", at);
+    if (found == std::string::npos) {
+      ++reworded;
+      continue;
+    }
+    at = found + line.size();
+  }
+  EXPECT_EQ(reworded, 2);  // TIRE_VERSION and the "no slip coefficients" comment
+}
+
+TEST_F(TirCli, BadSlipArgumentsAreRefusedBeforeAnyRun) {
+  const std::string out = (dir_ / "x.tir").string();
+  struct Case {
+    std::vector<std::string> args;
+    const char* says;
+  };
+  const Case cases[] = {
+      {{"--slip-loads", "3000", "3000", "5000"}, "--slip-loads: give at least 3 different"},
+      {{"--slip-loads", "-1", "3000", "5000"}, "--slip-loads: every load"},
+      {{"--mu", "0"}, "--mu"},
+      {{"--speed-kmh", "1"}, "--speed-kmh"},
+      {{"--slips", "-0.95"}, "--slips"},
+      {{"--rr-speeds-kmh", "1000"}, "--rr-speeds-kmh"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args = {"tir", "export", kConfig, "--output", out};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const CliRun r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << c.says << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
