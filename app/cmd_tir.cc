@@ -4,6 +4,7 @@
 //                       K]]
 // modaltyre tir compare CONFIG FILE.tir [--json] [--plot FILE] [--fnomin N] [--points K]
 // The MF-Tyre/MF-Swift .tir bridge (tir/, docs/tir.md).
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -190,6 +191,93 @@ void print_comparison(const tir::TirComparison& c) {
   line("width   ", c.rms_width, c.width_reason);
 }
 
+nlohmann::json slip_comparison_json(const tir::SlipComparison& s) {
+  nlohmann::json force = nlohmann::json::array(), rolling = nlohmann::json::array(),
+                 radius = nlohmann::json::array();
+  for (const auto& r : s.force) {
+    force.push_back({{"load_N", round_sig(r.target_load_N, 6)},
+                     {"fz_N", round_sig(r.fz_N, 6)},
+                     {"kappa", round_sig(r.kappa, 6)},
+                     {"model_fx_N", round_sig(r.model_fx_N, 6)},
+                     {"tir_fx_N", opt(r.tir_fx_N)}});
+  }
+  for (const auto& r : s.rolling) {
+    rolling.push_back({{"speed_kmh", round_sig(r.speed_m_s * 3.6, 6)},
+                       {"fz_N", round_sig(r.fz_N, 6)},
+                       {"model_my_Nm", round_sig(r.model_moment_Nm, 6)},
+                       {"tir_my_Nm", opt(r.tir_moment_Nm)}});
+  }
+  for (const auto& r : s.radius) {
+    radius.push_back({{"fz_N", round_sig(r.fz_N, 6)},
+                      {"model_re_mm", round_sig(r.model_radius_m * 1e3, 7)},
+                      {"tir_re_mm", opt(r.tir_radius_m, 1e3)}});
+  }
+  return {
+      {"speed_kmh", round_sig(s.speed_m_s * 3.6, 6)},
+      {"mu", s.mu},
+      {"force_rows", force},
+      {"rolling_rows", rolling},
+      {"radius_rows", radius},
+      {"rms",
+       {{"fx_over_fz", opt(s.rms_fx_over_fz)},
+        {"rolling_rel", opt(s.rms_rolling)},
+        {"radius_over_r0", opt(s.rms_radius_over_r0)}}},
+      {"max", {{"fx_over_fz", opt(s.max_fx_over_fz)}, {"rolling_rel", opt(s.max_rolling)}}},
+      {"reasons",
+       {{"force", s.force_reason}, {"rolling", s.rolling_reason}, {"radius", s.radius_reason}}}};
+}
+
+void print_slip_comparison(const tir::SlipComparison& s, bool dimensionless) {
+  std::cout << "\nLongitudinal laws at " << fixed(s.speed_m_s * 3.6, 1) << " km/h, road mu " << s.mu
+            << ", against the model's steady runs on a prescribed wheel (each law at its own "
+               "slip"
+            << (dimensionless
+                    ? "; the file's laws at the same F_z/FNOMIN, scaled to the model's size"
+                    : "")
+            << "):\n";
+  if (!s.rms_fx_over_fz) {
+    std::cout << "  F_x (pure slip)  null: " << s.force_reason << "\n";
+  } else {
+    std::cout << "  F_x (pure slip): RMS (.tir - model) / F_z " << pct(s.rms_fx_over_fz) << " (max "
+              << pct(s.max_fx_over_fz) << ")\n    load_N   kappa  model_fx_N  tir_fx_N\n";
+    // The table shows kappa 0, +-0.02, +-0.1, +-0.3 of the default grid; --json has every row.
+    const auto shown = [](double k) {
+      for (double m : {0.0, 0.02, 0.1, 0.3})
+        if (std::abs(std::abs(k) - m) < 1e-9) return true;
+      return false;
+    };
+    for (const auto& r : s.force) {
+      if (!shown(r.kappa)) continue;
+      std::cout << "  " << std::setw(8) << fixed(r.target_load_N, 0) << std::setw(8)
+                << fixed(r.kappa, 3) << std::setw(12) << fixed(r.model_fx_N, 1) << std::setw(10)
+                << (r.tir_fx_N ? fixed(*r.tir_fx_N, 1) : "-") << "\n";
+    }
+  }
+  if (!s.rms_rolling) {
+    std::cout << "  M_y (rolling resistance)  null: " << s.rolling_reason << "\n";
+  } else {
+    std::cout << "  M_y (rolling resistance, free rolling): RMS (.tir - model) / model "
+              << pct(s.rms_rolling) << " (max " << pct(s.max_rolling)
+              << ")\n    speed_kmh    fz_N  model_my_Nm  tir_my_Nm\n";
+    for (const auto& r : s.rolling) {
+      std::cout << "  " << std::setw(11) << fixed(r.speed_m_s * 3.6, 1) << std::setw(8)
+                << fixed(r.fz_N, 0) << std::setw(13) << fixed(r.model_moment_Nm, 3) << std::setw(11)
+                << (r.tir_moment_Nm ? fixed(*r.tir_moment_Nm, 3) : "-") << "\n";
+    }
+  }
+  if (!s.rms_radius_over_r0) {
+    std::cout << "  R_e  null: " << s.radius_reason << "\n";
+  } else {
+    std::cout << "  R_e (free rolling): RMS (.tir - model) / R0 " << pct(s.rms_radius_over_r0)
+              << "\n      fz_N  model_re_mm  tir_re_mm\n";
+    for (const auto& r : s.radius) {
+      std::cout << "  " << std::setw(8) << fixed(r.fz_N, 0) << std::setw(13)
+                << fixed(r.model_radius_m * 1e3, 3) << std::setw(11)
+                << (r.tir_radius_m ? fixed(*r.tir_radius_m * 1e3, 3) : "-") << "\n";
+    }
+  }
+}
+
 void plot_comparison(const tir::TirComparison& c, const std::string& path) {
   PlotFigure fig;
   fig.width_px = 1350;
@@ -244,12 +332,18 @@ void run_compare(const TirArgs& a, CLI::App* cmd) {
   tir::CompareOptions o;
   if (cmd->count("--fnomin")) o.fnomin_N = a.fnomin;
   o.points = a.points;
+  std::shared_ptr<ProgressBar> slip_bar;
+  if (a.slip) o.slip = slip_options(a, slip_bar);
   const auto c = tir::compare_tir(model, t, o);
+  if (slip_bar) slip_bar->finish();
   if (!a.plot.empty()) plot_comparison(c, a.plot);
   if (a.json) {
-    print_json(comparison_json(c));
+    nlohmann::json j = comparison_json(c);
+    if (c.slip) j["slip"] = slip_comparison_json(*c.slip);
+    print_json(j);
   } else {
     print_comparison(c);
+    if (c.slip) print_slip_comparison(*c.slip, c.dimensionless);
   }
 }
 
@@ -307,6 +401,11 @@ void register_tir(CLI::App& app) {
   cmp->add_option("--set", c->overrides, "override a config key");
   cmp->add_flag("--json", c->json, "print JSON");
   cmp->add_option("--plot", c->plot, "draw load, length and width against deflection (.svg/.png)");
+  cmp->add_flag("--slip", c->slip,
+                "also compare the file's longitudinal force, rolling resistance and effective "
+                "radius with the model's steady runs on a prescribed wheel (runs the transient: "
+                "seconds to a minute)");
+  add_slip_options(cmp, *c);
   cmp->callback([c, cmp] { run_compare(*c, cmp); });
 }
 

@@ -260,6 +260,67 @@ TEST_F(TirCli, NoSlipIsTheVerticalFileTheSlipExportExtends) {
   EXPECT_EQ(reworded, 2);  // TIRE_VERSION and the "no slip coefficients" comment
 }
 
+// compare --slip on the file export wrote from the same runs: the comparison is the fit's
+// residual; without --slip the JSON is today's (no "slip" key).
+TEST_F(TirCli, CompareSlipOfTheExportedFileIsTheFitResidual) {
+  const std::string out = (dir_ / "slip.tir").string();
+  const std::vector<std::string> runs = {"--slip-loads", "3000",  "4000", "5000", "--slips",
+                                         "-0.2",         "-0.02", "0.02", "0.2"};
+  std::vector<std::string> ex = {"tir", "export", kConfig, "--output", out};
+  ex.insert(ex.end(), runs.begin(), runs.end());
+  const CliRun e = run(ex);
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  std::vector<std::string> cmp = {"tir",    "compare",  kConfig, out,
+                                  "--json", "--points", "4",     "--slip"};
+  cmp.insert(cmp.end(), runs.begin(), runs.end());
+  const CliRun c = run(cmp);
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  const auto j = nlohmann::json::parse(c.out)["slip"];
+  EXPECT_EQ(j["force_rows"].size(), 3u * 5u);
+  EXPECT_EQ(j["rolling_rows"].size(), 3u + 4u);  // 3 loads at LONGVL, 4 further speeds
+  EXPECT_EQ(j["radius_rows"].size(), 3u);
+  // The 2D fit's F_x residual is 0.35 % of F_z on the default grid; here on 4 slips.
+  EXPECT_LT(j["rms"]["fx_over_fz"].get<double>(), 0.01);
+  EXPECT_LT(j["rms"]["rolling_rel"].get<double>(), 0.1);
+  EXPECT_LT(j["rms"]["radius_over_r0"].get<double>(), 1e-3);
+  const std::string fx_line = "F_x RMS ";
+  const auto at = e.out.find(fx_line);
+  ASSERT_NE(at, std::string::npos) << e.out;
+  EXPECT_NEAR(std::stod(e.out.substr(at + fx_line.size())),
+              100 * j["rms"]["fx_over_fz"].get<double>(), 0.006);
+  const CliRun plain = run({"tir", "compare", kConfig, out, "--json", "--points", "4"});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_FALSE(nlohmann::json::parse(plain.out).contains("slip"));
+}
+
+// Public files: a full MF 6.2 file compares every law, an MF 5.2 file without Q_RE0 says so.
+TEST_F(TirCli, PublicFilesCompareTheirLongitudinalLaws) {
+  const std::vector<std::string> runs = {
+      "--slip", "--slip-loads",    "3000", "4000", "5000", "--slips", "-0.1",
+      "0.1",    "--rr-speeds-kmh", "30"};
+  std::vector<std::string> args = {
+      "tir",    "compare",  kConfig, kData + "tyredyn_car205_60R19_mf62.tir",
+      "--json", "--points", "4"};
+  args.insert(args.end(), runs.begin(), runs.end());
+  CliRun c = run(args);
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  auto j = nlohmann::json::parse(c.out)["slip"];
+  for (const char* k : {"fx_over_fz", "rolling_rel", "radius_over_r0"})
+    EXPECT_TRUE(j["rms"][k].is_number()) << k;
+  args[3] = kData + "chrono_generic_mf52.tir";
+  c = run(args);
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  j = nlohmann::json::parse(c.out)["slip"];
+  EXPECT_TRUE(j["rms"]["fx_over_fz"].is_number());
+  EXPECT_TRUE(j["rms"]["radius_over_r0"].is_null());
+  EXPECT_NE(j["reasons"]["radius"].get<std::string>().find("Q_RE0"), std::string::npos);
+  // The text says the same.
+  args.erase(args.begin() + 4);  // --json
+  c = run(args);
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_NE(c.out.find("R_e  null: the file has no [VERTICAL] Q_RE0"), std::string::npos) << c.out;
+}
+
 TEST_F(TirCli, BadSlipArgumentsAreRefusedBeforeAnyRun) {
   const std::string out = (dir_ / "x.tir").string();
   struct Case {

@@ -331,15 +331,17 @@ void check_slip_options(const SlipExportOptions& options) {
   }
 }
 
-TirSlipFit fit_slip(const contact::TyreModel& model, MfBasis basis,
-                    const SlipExportOptions& options) {
+SlipRuns run_slip(const contact::TyreModel& model, double fnomin_N,
+                  const SlipExportOptions& options) {
   check_slip_options(options);
+  SlipRuns out;
   SlipSettings run = options.run;
   if (run.slips.empty()) run.slips = default_slips();
-  basis.longvl_m_s = run.speed_m_s;
+  out.mu = run.mu;
+  out.speed_m_s = run.speed_m_s;
   std::vector<double> loads = options.loads_N;
   if (loads.empty())
-    for (double s : kDefaultLoadShares) loads.push_back(s * basis.fnomin_N);
+    for (double s : kDefaultLoadShares) loads.push_back(s * fnomin_N);
   const std::vector<double> speeds =
       options.speeds_m_s.empty() ? default_rolling_speeds_m_s() : options.speeds_m_s;
   SlipSettings free = run;
@@ -358,7 +360,7 @@ TirSlipFit fit_slip(const contact::TyreModel& model, MfBasis basis,
   // Every load's hub height: the static footprint's sinking (the FMU's press check: F_z within
   // 0.0003 % of the load there, docs/fmu.md section 6).
   std::vector<double> sorted = loads;
-  sorted.push_back(basis.fnomin_N);
+  sorted.push_back(fnomin_N);
   const ModelCurve statics = sample_model(model, sorted);
   const auto sinking = [&](double load) {
     for (const auto& p : statics.points)
@@ -367,16 +369,21 @@ TirSlipFit fit_slip(const contact::TyreModel& model, MfBasis basis,
   };
   const auto transient =
       std::make_shared<const transient::TransientModel>(transient::build_transient_model(model));
-  std::vector<SlipCurve> curves, free_runs;
   for (double load : loads)
-    curves.push_back(model_slip_curve(transient, sinking(load), load, run, tick));
+    out.curves.push_back(model_slip_curve(transient, sinking(load), load, run, tick));
   for (double v : speeds) {
     free.speed_m_s = v;
-    free_runs.push_back(
-        model_slip_curve(transient, sinking(basis.fnomin_N), basis.fnomin_N, free, tick));
+    out.free_runs.push_back(model_slip_curve(transient, sinking(fnomin_N), fnomin_N, free, tick));
   }
   if (options.progress) options.progress(total, total);
-  return fit_slip_laws(basis, run.mu, std::move(curves), std::move(free_runs));
+  return out;
+}
+
+TirSlipFit fit_slip(const contact::TyreModel& model, MfBasis basis,
+                    const SlipExportOptions& options) {
+  SlipRuns runs = run_slip(model, basis.fnomin_N, options);
+  basis.longvl_m_s = runs.speed_m_s;
+  return fit_slip_laws(basis, runs.mu, std::move(runs.curves), std::move(runs.free_runs));
 }
 
 }  // namespace modaltyre::tir

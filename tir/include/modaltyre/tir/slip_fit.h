@@ -71,9 +71,20 @@ struct TirSlipFit {
 /// InputError naming the option for loads, speeds, slips or settings out of range.
 void check_slip_options(const SlipExportOptions& options);
 
-/// Runs the model (a transient model of `model` is built here) and fits the laws. `basis`
-/// carries R0, FNOMIN, the pressure and C_z of the vertical fit; its LONGVL is set from the
-/// options. InputError for options out of range; ComputationError when a run or a fit fails.
+/// The model's runs of the options: slip curves at LONGVL, free rolling at the other speeds.
+struct SlipRuns {
+  double speed_m_s = 0, mu = 0;
+  std::vector<SlipCurve> curves;     ///< one per slip load
+  std::vector<SlipCurve> free_runs;  ///< at FNOMIN's sinking, one per further speed
+};
+/// Builds a transient model of `model` and runs it (model_slip.h); ComputationError when a run
+/// fails.
+SlipRuns run_slip(const contact::TyreModel& model, double fnomin_N,
+                  const SlipExportOptions& options);
+
+/// run_slip, then the fits. `basis` carries R0, FNOMIN, the pressure and C_z of the vertical
+/// fit; its LONGVL is set from the options. InputError for options out of range;
+/// ComputationError when a run or a fit fails.
 TirSlipFit fit_slip(const contact::TyreModel& model, MfBasis basis,
                     const SlipExportOptions& options);
 
