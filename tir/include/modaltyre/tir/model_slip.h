@@ -8,11 +8,10 @@
 // The run at one load: from rest, the speed ramps to V (smoothstep) with the spin at V / R_b
 // (R_b the tread base radius), then rolls; the free-rolling spin Omega_free, where the wheel's
 // moment about its axis M_y vanishes (no drive or brake torque), is found by the secant on M_y
-// over held spins (each held for a travel of hold_m). The effective rolling radius is R_e = V /
+// over held spins (each held until steady, below). The effective rolling radius is R_e = V /
 // Omega_free, and the slip of every later hold is MF's longitudinal slip kappa = -(V - Omega R_e) /
 // V with R_e that of free rolling (Pacejka 2012, Tire and Vehicle Dynamics, 3rd ed., ch. 1 and
-// sec. 4.3.2): Omega = Omega_free (1 + kappa), each held for hold_m and its forces averaged over
-// the hold's last average_m.
+// sec. 4.3.2): Omega = Omega_free (1 + kappa), each held until steady.
 //
 // What each point carries: F_x, the road's longitudinal force on the tyre (ISO x), F_z, and the
 // rolling-resistance moment of the pressure distribution M_r = -sum f_i x_i about the contact
@@ -31,12 +30,14 @@ struct SlipSettings {
   double step_s = 1e-3;         ///< the FMU's step_size (its default)
   double ramp_s = 0.3;          ///< speed ramp from rest
   double settle_s = 0.4;        ///< rolling at V / R_b after the ramp
-  /// Each held spin lasts this travel (about ten contact lengths: the tread's shear and the
-  /// carcass's longitudinal compliance relax over a length, not a time) ...
+  /// Each held spin lasts at least this travel (about ten contact lengths: the tread's shear
+  /// and the carcass's longitudinal compliance relax over a length, not a time) and until two
+  /// successive windows of average_m give the same mean F_x to 0.1 % of F_z, at most max_hold_m;
+  /// its forces are the last window's means (whole units of travel rattle F_x by about 0.2 % of
+  /// F_z at slip).
   double hold_m = 1.5;
-  /// ... and its forces are averaged over this last part of it (whole units of travel
-  /// rattle F_x by about 0.2 % of F_z at slip).
   double average_m = 0.6;
+  double max_hold_m = 30;
   std::vector<double> slips;  ///< MF kappa of the holds after free rolling is found
 };
 
