@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "modaltyre/core/command_files.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre {
@@ -68,12 +69,10 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     write_in_place(path, content);
     return;
   }
-  // A symbolic link stays a link: the file it points to is replaced.
+  // A symbolic link stays a link: the file it points to is replaced (or created, when the link
+  // dangles), the one CommandFiles compared with the command's other files.
   fs::path target(path);
-  if (fs::is_symlink(target, ec)) {
-    const fs::path resolved = fs::weakly_canonical(target, ec);
-    if (!ec) target = resolved;
-  }
+  if (fs::is_symlink(fs::symlink_status(target, ec))) target = final_target(path);
   static std::atomic<unsigned> counter{0};
   std::string tmp_name = ".";
   tmp_name.append(target.filename().string())

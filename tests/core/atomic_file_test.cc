@@ -87,6 +87,17 @@ TEST_F(AtomicFile, SymlinkIsFollowedNotReplaced) {
   EXPECT_EQ(entries(), 2u);
 }
 
+// A dangling link stays a link too: the file it names is created (the file CommandFiles compared
+// with the command's other files, command_files.h final_target), relative to the link's folder.
+TEST_F(AtomicFile, DanglingSymlinkCreatesItsTarget) {
+  const fs::path link = dir_ / "link.svg";
+  fs::create_symlink("made.csv", link);
+  write_file_atomically(link.string(), "new");
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(slurp(dir_ / "made.csv"), "new");
+  EXPECT_EQ(entries(), 2u);
+}
+
 // An overwrite keeps the file's permissions.
 TEST_F(AtomicFile, OverwriteKeepsPermissions) {
   const fs::path p = dir_ / "out.csv";
