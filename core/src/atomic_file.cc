@@ -41,8 +41,7 @@ int write_all(int fd, const std::string& content) {
 bool is_stream_target(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) return false;
-  return S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode) ||
-         S_ISBLK(st.st_mode);
+  return S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode) || S_ISBLK(st.st_mode);
 }
 
 // /dev/stdout, /dev/fd/N and /proc/self/fd/N name a descriptor of this process; when it is

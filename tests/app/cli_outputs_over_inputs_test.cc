@@ -185,8 +185,8 @@ TEST_F(CliOutputsOverInputs, EveryCommandSeesThroughLinksToInputsAndOtherOutputs
                  measured(), {"--plot", "MEASURED"});
   expect_refused({"fit-modes", hammer(), "--plot", link("f.svg", hammer())}, hammer(),
                  {"--plot", "HAMMER"});
-  expect_refused({"init", "--size", "195/60R14", "--test-pressure-kPa", "230", "--hammer",
-                  hammer(), "--output", link("i.yaml", hammer())},
+  expect_refused({"init", "--size", "195/60R14", "--test-pressure-kPa", "230", "--hammer", hammer(),
+                  "--output", link("i.yaml", hammer())},
                  hammer(), {"--output", "--hammer"});
   expect_refused({"fmu", config2d(), "--output", link("t.fmu", config2d())}, config2d(),
                  {"--output", "CONFIG"});
@@ -211,9 +211,9 @@ TEST_F(CliOutputsOverInputs, EveryCommandSeesThroughLinksToInputsAndOtherOutputs
   expect_pair_refused({"discover", config2d(), measured(), "--out-config",
                        (dir_ / "o.yaml").string(), "--plot", link("d.svg", "o.yaml")},
                       "--out-config", "--plot", "o.yaml");
-  expect_pair_refused({"ema", frf, "--output", (dir_ / "e.csv").string(), "--plot",
-                       link("e.svg", "e.csv")},
-                      "--output", "--plot", "e.csv");
+  expect_pair_refused(
+      {"ema", frf, "--output", (dir_ / "e.csv").string(), "--plot", link("e.svg", "e.csv")},
+      "--output", "--plot", "e.csv");
   expect_pair_refused({"identify", "load-deflection", ld, "--write-config",
                        (dir_ / "w.yaml").string(), "--plot", link("w.svg", "w.yaml")},
                       "--write-config", "--plot", "w.yaml");

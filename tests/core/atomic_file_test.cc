@@ -75,7 +75,6 @@ TEST_F(AtomicFile, DirectoryTarget) {
   EXPECT_EQ(entries(), 1u);
 }
 
-
 // A symbolic link stays a link; the file it points to gets the content.
 TEST_F(AtomicFile, SymlinkIsFollowedNotReplaced) {
   const fs::path real = dir_ / "real.csv", link = dir_ / "link.csv";
