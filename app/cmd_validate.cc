@@ -292,12 +292,16 @@ void register_validate(CLI::App& app) {
     if (a->uncertainty) {
       bands = validation_bands(rep, a->method.options());
     }
-    if (!a->plot.empty()) plot_validation(rep, a->plot, settings, bands ? &*bands : nullptr);
+    std::optional<nlohmann::json> j;
     if (a->json) {
-      auto j = report::validation_json(rep);
-      j["conditions"] = settings_json(settings);
-      if (bands) add_validation_bands_json(j, *bands);
-      print_json(j);
+      j = report::validation_json(rep);
+      (*j)["conditions"] = settings_json(settings);
+      if (bands) add_validation_bands_json(*j, *bands);
+      check_finite(*j);  // before the plot: a failed run leaves no file
+    }
+    if (!a->plot.empty()) plot_validation(rep, a->plot, settings, bands ? &*bands : nullptr);
+    if (j) {
+      print_json(*j);
     } else {
       print_table(rep, a->measured, settings);
       if (bands) print_band_table(rep, *bands);

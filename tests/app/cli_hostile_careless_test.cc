@@ -62,4 +62,33 @@ TEST_F(CliCareless, NonUtf8CommentsInTheCsvFilesAreRefusedAtTheirLine) {
                      {road + ":3: comment:", "\\xE0 is not UTF-8"});
 }
 
+// A run that fails leaves none of its outputs: the band of a 50 % belt width fails at a sample
+// (exit 1, the computation's error), and neither the plot nor the map is written.
+TEST_F(CliCareless, AFailedBandLeavesNoOutput) {
+  const std::string plot = (dir_ / "p.svg").string(), map = (dir_ / "m.csv").string();
+  const CliRun r =
+      run_limited({"footprint", kSrc + "/configs/sf350_init.yaml", "--load", "4000",
+                   "--uncertainty", "--uncertainty-method", "sampled", "--set",
+                   "modal.belt_width_std_percent=50", "--map-csv", map, "--plot", plot});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("sample"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(plot));
+  EXPECT_FALSE(fs::exists(map));
+}
+
+// The Monte Carlo sample count is bounded, the option named (100 000 samples: about 1 h on the
+// default footprint); the bound itself is accepted.
+TEST_F(CliCareless, UncertaintySamplesAreBounded) {
+  for (const char* cmd : {"footprint", "validate"}) {
+    std::vector<std::string> args = {cmd, kSrc + "/configs/sf350_2d_table3.yaml"};
+    if (std::string(cmd) == "validate")
+      args.push_back(kSrc + "/configs/data/sf350_footprint_table3.csv");
+    for (const char* w : {"--uncertainty", "--samples", "100000"}) args.push_back(w);
+    expect_input_error(run_limited(args), {"--samples: ", "100000 is outside [20, 2000] samples"});
+  }
+  const CliRun ok = run_limited({"footprint", kSrc + "/configs/sf350_2d_table3.yaml", "--load",
+                                 "3000", "--uncertainty", "--samples", "2000", "--json"});
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+}
+
 }  // namespace

@@ -60,8 +60,9 @@ double percentile(std::vector<double> v, double q) {
 }  // namespace
 
 void PropagationOptions::validate() const {
-  if (samples < 20 || samples > 100000) {
-    throw std::invalid_argument("samples must be in 20..100000, got " + std::to_string(samples));
+  if (samples < kMinSamples || samples > kMaxSamples) {
+    throw std::invalid_argument("samples must be in " + std::to_string(kMinSamples) + ".." +
+                                std::to_string(kMaxSamples) + ", got " + std::to_string(samples));
   }
   if (!(max_nonlinearity > 0) || !std::isfinite(max_nonlinearity)) {
     throw std::invalid_argument("max_nonlinearity must be > 0");
