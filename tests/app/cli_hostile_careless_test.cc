@@ -91,4 +91,50 @@ TEST_F(CliCareless, UncertaintySamplesAreBounded) {
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
 }
 
+// init: a given number <= 0 is refused at its option, never read as "not given"; an empty list
+// item, --orders with --hammer, frequencies that make a ring of tonnes per metre, a name that
+// would break out of the header comment and a range the config reader refuses are named by the
+// option. Nothing is written.
+TEST_F(CliCareless, InitRefusesCarelessOptionsByName) {
+  const std::string out = (dir_ / "out.yaml").string();
+  const std::vector<std::string> base = {"init", "--size",   "205/55R16", "--test-pressure-kPa",
+                                         "200",  "--output", out};
+  const std::string freqs = "90,105,124,146,170,195";
+  auto init = [&](std::vector<std::string> extra, bool with_list = true) {
+    std::vector<std::string> args = base;
+    if (with_list) args.insert(args.end(), {"--frequencies", freqs});
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_limited(args);
+  };
+  const std::vector<std::pair<std::string, std::string>> not_positive = {
+      {"--pressure-kPa", "0"},   {"--pressure-kPa", "-1"}, {"--belt-mass-kg", "0"},
+      {"--wheel-mass-kg", "-7"}, {"--belt-width-mm", "0"}, {"--tread-depth-mm", "-8"},
+      {"--tread-width-mm", "0"}, {"--fnomin", "0"},        {"--fnomin", "-4000"}};
+  for (const auto& [option, value] : not_positive) {
+    expect_input_error(init({option, value}), {option + ": ", "> 0, got " + value});
+  }
+  expect_input_error(init({"--belt-width-mm", "300"}), {"--belt-width-mm: ", "section width 205"});
+  expect_input_error(init({"--tread-depth-mm", "0.05"}),
+                     {"--tread-depth-mm: ", "[0.1, 200]", "tread.thickness_mm"});
+  expect_input_error(run_limited({"init", "--size", "205/55R16", "--test-pressure-kPa", "200",
+                                  "--frequencies", "90,,124,146,170,195", "--output", out}),
+                     {"--frequencies: ", "item 2 of 6 is empty"});
+  expect_input_error(init({"--damping", "0.03,0.04,", "--orders", "1,2,3,4,5,6"}),
+                     {"--damping: ", "item 3 of 3 is empty"});
+  expect_input_error(
+      init({"--hammer", kSrc + "/configs/data/sf350_hammer_12pt.csv", "--orders", "1,2,3"}, false),
+      {"--orders: ", "belongs to --frequencies"});
+  expect_input_error(
+      run_limited({"init", "--size", "205/55R16", "--test-pressure-kPa", "200", "--frequencies",
+                   "1,1.1,1.2,1.3,1.4,1.5", "--orders", "1,2,3,4,5,6", "--output", out}),
+      {"--frequencies: ", "kg/m", "in Hz?"});
+  expect_input_error(init({"--name", "x\nground:\n  model: bekker\n#"}),
+                     {"--name: ", "control character \\x0A"});
+  EXPECT_FALSE(fs::exists(out)) << "a refused init wrote its config";
+  // Left out, the same options take their stated defaults.
+  const CliRun ok = init({});
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(fs::exists(out));
+}
+
 }  // namespace
