@@ -38,13 +38,15 @@ struct ValidateArgs {
 
 using report::row_validity;
 
-// The rows with the model's band: measured (+- 2 sigma where stated) against predicted
-// +- 2 sigma, and whether the measurement lies outside the band (its noise added).
+// The rows with the model's band: measured (+- 2 sigma where stated) against the predicted
+// value and its 2.5-97.5 % band, and whether the measurement lies outside the band (its noise
+// added).
 void print_band_table(const studies::ValidationReport& rep, const ValidationBands& b) {
   const auto& r = b.result;
-  std::cout << "\nuncertainty (" << r.method << ": " << r.check << "), value +- 2 sigma; "
-            << "'outside': the measured value lies outside the model's 95 % band widened by "
-               "its own stated noise\n";
+  std::cout << "\nuncertainty (" << r.method << ": " << r.check << "); measured +- 2 sigma "
+            << "(its stated noise), predicted " << report::kBandHeading
+            << "; 'outside': the measured value lies outside the model's band widened by its "
+               "own stated noise\n";
   std::cout << " row  load_N  observable   measured             predicted\n";
   for (std::size_t i = 0; i < b.rows; ++i) {
     const auto& row = rep.rows[i].measured;
@@ -55,11 +57,11 @@ void print_band_table(const studies::ValidationReport& rep, const ValidationBand
       const auto& band = r.cases[i].bands[o.output];
       const std::string meas =
           report::plus_minus(*v, s == row.observed_std.end() ? 0.0 : 2 * s->second, 2);
-      const std::string pred = report::plus_minus(band.value, 2 * band.std, 2);
+      const std::string pred = report::band_text(band, 2);
       const auto& off = b.outside[i];
       const bool out = std::find(off.begin(), off.end(), o.observable) != off.end();
-      char line[200];
-      std::snprintf(line, sizeof line, " %3d  %6.0f  %-11s  %-19s  %-19s%s\n", row.row,
+      char line[256];
+      std::snprintf(line, sizeof line, " %3d  %6.0f  %-11s  %-19s  %-24s%s\n", row.row,
                     row.conditions.load_N, o.observable, meas.c_str(), pred.c_str(),
                     out ? "  outside" : "");
       std::cout << line;
