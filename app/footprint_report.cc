@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <iterator>
 #include <string>
@@ -137,10 +138,32 @@ void print_named_bands(const std::vector<std::string>& names,
   print_uncertainty_inputs(r);
 }
 
+std::string footprint_plot_subject(const contact::TyreConfig& config,
+                                   const std::vector<contact::Prediction>& cases) {
+  const ground::GroundSettings& g = config.ground;
+  const std::string model = ground::to_string(g.model);
+  std::string on;
+  if (g.soil()) {
+    on = g.name.empty() ? "a " + model + " soil" : g.name + " (" + model + ")";
+  } else if (g.model == ground::GroundModel::profile) {
+    on = "the road profile " + std::filesystem::path(g.profile_csv).filename().string();
+  } else {
+    on = "the rigid road";
+  }
+  double lo = 0, hi = 0;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const double F = cases[k].footprint.load.load_N / 1000;
+    lo = k ? std::min(lo, F) : F, hi = k ? std::max(hi, F) : F;
+  }
+  const std::string loads =
+      cases.empty() ? "" : ", " + fixed(lo, 2) + (hi > lo ? "-" + fixed(hi, 2) : "") + " kN";
+  return config.name + " on " + on + loads;
+}
+
 void plot_pressures(const std::vector<contact::Prediction>& predictions,
                     const contact::TyreConfig& config, const std::string& path) {
   PlotPanel p;
-  p.title = config.name + ": contact pressure along the patch";
+  p.title = footprint_plot_subject(config, predictions) + ": contact pressure along the patch";
   p.xlabel = "x along the road from the contact centre [mm]";
   p.ylabel = "contact pressure [kPa]";
   for (const auto& prediction : predictions) {

@@ -26,6 +26,11 @@ void print_uncertainty_table(const uncertainty::PropagationResult& r);
 /// method and its check, then the inputs: tir export's and transient's --uncertainty.
 void print_named_bands(const std::vector<std::string>& names,
                        const uncertainty::PropagationResult& r);
+/// What a footprint plot shows, for its title: the tyre, the ground it stands on and the loads,
+/// e.g. "SF-350 195/60R14 on LETE sand (bekker), 2.13-8.32 kN" (issue 44 item 4).
+std::string footprint_plot_subject(const contact::TyreConfig& config,
+                                   const std::vector<contact::Prediction>& cases);
+
 void plot_pressures(const std::vector<contact::Prediction>& cases,
                     const contact::TyreConfig& config, const std::string& path);
 
