@@ -14,6 +14,7 @@
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
 #include "modaltyre/modal/ring_model.h"
+#include "order_alternatives.h"
 
 namespace modaltyre::init {
 namespace {
@@ -121,6 +122,7 @@ InitResult init_tyre(const InitInputs& in) {
       // A free test's order 1 is scored at the held wheel; a rim-fixed one as it is.
       o.order1_in_fit = in.boundary == "rim-fixed";
       if (in.boundary == "free") o.wheel_mass_kg = wheel;
+      o.max_alternatives = kProposalsAsked;
       r.alternatives = modal::propose_orders(freqs, o);
       if (r.alternatives.empty())
         throw InputError({"--frequencies", 0, ""},
@@ -193,37 +195,41 @@ InitResult init_tyre(const InitInputs& in) {
         << "\n";
     decide("modal.orders", list(o_list),
            r.orders_proposed ? "proposed (ring dispersion)" : "input");
-    // The near-ties the frequencies cannot decide: written with their Akaike weights
-    // exp(-(score - best) / 2) over the best and the near-ties, so that --uncertainty mixes them
-    // into its bands (issue 35; docs/uncertainty.md section 2).
+    // The readings the frequencies leave plausible (order_alternatives.h): written with their
+    // Akaike weights exp(-(score - best) / 2) over the set, so that --uncertainty mixes them
+    // into its bands (issues 35, 44; docs/uncertainty.md section 2).
     if (r.orders_proposed) {
-      const double best = r.alternatives.front().score;
-      std::vector<const modal::OrderProposal*> ties;
-      double total = 1;  // the best's weight
-      for (std::size_t k = 1; k < r.alternatives.size(); ++k) {
-        if (r.alternatives[k].score < best + kNearTie) {
-          ties.push_back(&r.alternatives[k]);
-          total += std::exp(-(r.alternatives[k].score - best) / 2);
-        }
-      }
-      if (!ties.empty()) {
+      const CarriedOrders carried = carried_orders(r.alternatives, freqs);
+      if (carried.index.size() > 1) {
         std::string lists = "[", probs = "[";
-        for (std::size_t k = 0; k < ties.size(); ++k) {
-          lists += (k ? ", " : "") + list(ties[k]->orders);
-          const double p = std::exp(-(ties[k]->score - best) / 2) / total;
-          probs += (k ? ", " : "") + num(std::round(p * 1e4) / 1e4);
+        for (std::size_t k = 1; k < carried.index.size(); ++k) {
+          lists += (k > 1 ? ", " : "") + list(r.alternatives[carried.index[k]].orders);
+          // 4 decimals, never 0 (the reader wants every probability > 0).
+          const double p = std::max(std::round(carried.probability[k] * 1e4) / 1e4, 1e-4);
+          probs += (k > 1 ? ", " : "") + num(p);
         }
-        y << "  # Assignments that fit nearly as well (scores within " << num(kNearTie)
-          << " of the best), with their Akaike\n"
-          << "  # weights exp(-(score - best)/2); the prediction uses `orders` (probability "
-          << num(std::round(1e4 / total) / 1e4) << "),\n"
-          << "  # --uncertainty mixes these into its bands. State --orders if the shapes "
-             "decide.\n";
+        y << "  # Other readings of the list, weighed by the evidence: their Akaike weights\n"
+          << "  # exp(-(score - best)/2) over every reading within 6 of the best score and the\n"
+          << "  # consecutive readings (orders 1.. and 2..) within 13.8; the prediction uses\n"
+          << "  # `orders` (probability " << num(std::round(carried.probability[0] * 1e4) / 1e4)
+          << "), --uncertainty mixes these into its bands.\n"
+          << "  # State --orders if the test's shapes decide.\n";
         y << "  order_alternatives: " << lists << "]\n";
         y << "  order_alternative_probabilities: " << probs << "]\n";
         decide("modal.order_alternatives", lists + "]",
-               "near-ties of the proposal (Akaike weights)");
+               "readings within 6 of the best score, consecutive ones within 13.8 (Akaike "
+               "weights)");
       }
+      // The JSON lists the carried readings, then the next best up to five.
+      std::vector<modal::OrderProposal> shown;
+      for (std::size_t k : carried.index) shown.push_back(r.alternatives[k]);
+      for (std::size_t k = 0; k < r.alternatives.size() && shown.size() < 5; ++k) {
+        if (std::find(carried.index.begin(), carried.index.end(), k) == carried.index.end())
+          shown.push_back(r.alternatives[k]);
+      }
+      std::stable_sort(shown.begin(), shown.end(),
+                       [](const auto& a, const auto& b) { return a.score < b.score; });
+      r.alternatives = std::move(shown);
     }
   } else {
     std::string path = in.hammer_csv;
