@@ -30,6 +30,16 @@ constexpr double kTreadDepth_mm = 8.0;
 /// Tread compound static modulus [MPa]: the low end of 3-8 MPa (Shore A 60-70 by Gent's
 /// relation: 3.7-5.6 MPa), as the SF-350 default.
 constexpr double kTreadModulus_MPa = 3.0;
+/// The assumptions' spreads, carried into --uncertainty's bands (issue 44 item 2), each a
+/// uniform range written as (b - a) / sqrt(12) of the nominal: the tread-width share's
+/// 0.70-0.85 (above, when the width is not given); the compound's Shore A 60-70 by Gent's
+/// relation, 3.7-5.6 MPa.
+constexpr double kTreadWidthShareLo = 0.70, kTreadWidthShareHi = 0.85;
+constexpr double kModulusLo_MPa = 3.7, kModulusHi_MPa = 5.6;
+/// The roundest crown the flat assumption's band spans (footprint_3d.crown.round_limit_radius_mm):
+/// the SF-350's crown radius calibrated on Table 3's measured widths on this structure (laterally
+/// rigid belt), 1058 mm on its 150 mm tread (docs/validation.md), scaled with the tread width.
+constexpr double kRoundCrown_mm = 1058, kRoundCrownTread_mm = 150;
 /// Tread loss factor: a passenger compound's 0.1-0.2 at 10-100 Hz.
 constexpr double kTreadTanDelta = 0.15;
 /// Modal damping ratio when none is given: the median of seed 001 Table 2's radial modes
@@ -310,6 +320,14 @@ InitResult init_tyre(const InitInputs& in) {
        "(stated).\n";
   y << "  modulus_MPa: " << num(kTreadModulus_MPa) << "\n  tan_delta: " << num(kTreadTanDelta)
     << "\n";
+  {
+    const double pct =
+        std::round(1000 * (kModulusHi_MPa - kModulusLo_MPa) / std::sqrt(12.0) / kTreadModulus_MPa) /
+        10;
+    y << "  # Its spread: Shore A 60-70 by Gent's relation, 3.7-5.6 MPa, as a uniform range.\n"
+      << "  modulus_std_percent: " << num(pct) << "\n";
+    decide("tread.modulus_std_percent", num(pct), "Shore A 60-70 (Gent) as a uniform range");
+  }
   y << "  # "
     << (in.tread_depth_mm > 0 ? "Input" : "A new passenger tread's depth, 7.1-10.3 mm (NRC 2006)")
     << ".\n";
@@ -319,6 +337,15 @@ InitResult init_tyre(const InitInputs& in) {
                               : "77 % of the section width (usual passenger proportion, assumed)")
     << ".\n";
   y << "  contact_width_mm: " << num(tread_w) << "\n";
+  if (!in.tread_width_mm) {
+    const double pct = std::round(1000 * (kTreadWidthShareHi - kTreadWidthShareLo) *
+                                  size.section_width_mm / std::sqrt(12.0) / tread_w) /
+                       10;
+    y << "  # Its spread: the share's 0.70-0.85 across passenger sizes, as a uniform range.\n"
+      << "  contact_width_std_percent: " << num(pct) << "\n";
+    decide("tread.contact_width_std_percent", num(pct),
+           "tread-width share 0.70-0.85 as a uniform range");
+  }
   decide("tread.thickness_mm", num(depth),
          in.tread_depth_mm > 0 ? "input" : "new passenger tread (NRC 2006)");
   decide("tread.contact_width_mm", num(tread_w),
@@ -342,8 +369,14 @@ InitResult init_tyre(const InitInputs& in) {
     y << "  # No section drawing: the tread face is taken flat across the tread width (multi-arc\n"
       << "  # passenger profiles are 'very flat' near the centre); state the measured contour\n"
       << "  # (crown: shape: contour) or radius when you have it.\n";
-    y << "  crown:\n    shape: flat\n";
+    const double round_mm = std::round(kRoundCrown_mm * tread_w / kRoundCrownTread_mm);
+    y << "  # The flat face is an assumption: the bands span crowns from flat to a circle of\n"
+      << "  # this radius (the SF-350's, calibrated on its measured widths: 1058 mm on a 150 mm\n"
+      << "  # tread, scaled with the tread width; docs/uncertainty.md section 2).\n";
+    y << "  crown:\n    shape: flat\n    round_limit_radius_mm: " << num(round_mm) << "\n";
     decide("footprint_3d.crown.shape", "flat", "no section drawing (stated)");
+    decide("footprint_3d.crown.round_limit_radius_mm", num(round_mm),
+           "the SF-350's calibrated crown (1058 mm on 150 mm) scaled with the tread width");
   }
   r.yaml = y.str();
 

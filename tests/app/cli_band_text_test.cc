@@ -72,4 +72,36 @@ TEST_F(BandText, FootprintPrintsThePercentileBandOfItsJson) {
   }
 }
 
+// No output of a config init wrote has a band of zero width: the tread width, the compound's
+// modulus and the flat crown are assumptions, and init states their spreads (3D and 2D).
+TEST_F(BandText, NoOutputOfAnInitConfigHasAZeroBand) {
+  for (const bool two_d : {false, true}) {
+    const std::string out = (dir_ / (two_d ? "t2d.yaml" : "t3d.yaml")).string();
+    std::vector<std::string> init = {"init",
+                                     "--size",
+                                     "205/55R16",
+                                     "--test-pressure-kPa",
+                                     "200",
+                                     "--frequencies",
+                                     "114,137,165,196,228,260",
+                                     "--output",
+                                     out};
+    if (two_d) init.push_back("--2d");
+    const CliRun wrote = run(init);
+    ASSERT_EQ(wrote.exit_code, 0) << wrote.err;
+    const std::string yaml = modaltyre_test::slurp(out);
+    for (const char* key : {"modulus_std_percent", "contact_width_std_percent"})
+      EXPECT_NE(yaml.find(key), std::string::npos) << key;
+    EXPECT_EQ(yaml.find("round_limit_radius_mm") != std::string::npos, !two_d);
+    const CliRun f = run({"footprint", out, "--load", "4000", "--uncertainty", "--json"});
+    ASSERT_EQ(f.exit_code, 0) << f.err;
+    const auto j = nlohmann::json::parse(f.out);
+    for (const auto& [name, b] : j["cases"][0]["uncertainty"].items()) {
+      EXPECT_GT(b["p975"].get<double>(), b["p025"].get<double>()) << name << (two_d ? " 2D" : "");
+      EXPECT_LE(b["p025"].get<double>(), b["value"].get<double>()) << name;
+      EXPECT_GE(b["p975"].get<double>(), b["value"].get<double>()) << name;
+    }
+  }
+}
+
 }  // namespace

@@ -57,6 +57,15 @@ std::vector<UncertainInput> collect_inputs(const contact::TyreConfig& config,
                    {},
                    {}});
   }
+  if (u.tread_width_rel_std > 0) {
+    out.push_back({InputKind::tread_width,
+                   -1,
+                   "tread width",
+                   u.tread_width_rel_std,
+                   "tread.contact_width_std_percent",
+                   {},
+                   {}});
+  }
   if (u.belt_width_rel_std > 0 && !shapes_scale) {
     out.push_back({InputKind::belt_width,
                    -1,
@@ -129,6 +138,10 @@ void apply(const UncertainInput& input, double x, contact::TyreConfig& config,
       break;
     case InputKind::belt_width:
       config.carcass.belt_width_m *= 1 + x;
+      break;
+    case InputKind::tread_width:
+      config.tread.width_m *= 1 + x;
+      if (config.footprint_3d) config.footprint_3d->tread_width_m *= 1 + x;
       break;
     case InputKind::calibration:
       for (std::size_t k = 0; k < input.keys.size(); ++k) {
