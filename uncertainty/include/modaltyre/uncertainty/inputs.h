@@ -2,8 +2,9 @@
 // The uncertain inputs of a tyre model (issue 35, docs/uncertainty.md): what the data say of
 // their own precision (the hammer shapes' residual noise per mode) and what a config states
 // where no data give it (modal.frequency_std_percent, tread.modulus_std_percent,
-// modal.belt_width_std_percent, tread.contact_width_std_percent). Each input is a relative perturbation x of one quantity with a
-// standard deviation; apply() sets it on a copy of the config and of the identified modes.
+// modal.belt_width_std_percent, tread.contact_width_std_percent). Each input is a relative
+// perturbation x of one quantity with a standard deviation; apply() sets it on a copy of the config
+// and of the identified modes.
 #include <string>
 #include <vector>
 
