@@ -369,7 +369,9 @@ TEST_F(HonestPlots, ValidateDrawsTheJsonsBandAsTwoLines) {
     const auto& b = j["rows"][i]["uncertainty"]["sinking_mm"];  // Table 3's rows rise in load
     EXPECT_NEAR(lo[i].second, b["p025"].get<double>(), 1e-5 * b["p025"].get<double>());
     EXPECT_NEAR(hi[i].second, b["p975"].get<double>(), 1e-5 * b["p975"].get<double>());
-    if (i) EXPECT_GT(lo[i].first, lo[i - 1].first) << "in load order";
+    if (i) {
+      EXPECT_GT(lo[i].first, lo[i - 1].first) << "in load order";
+    }
   }
 }
 

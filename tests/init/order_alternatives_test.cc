@@ -46,7 +46,9 @@ TEST(OrderAlternatives, TheUsualReadingsStayInACrowdedSetWithTheirWeights) {
   for (std::size_t i = 0; i < c.index.size(); ++i) {
     EXPECT_NEAR(c.probability[i], std::exp(-(p[c.index[i]].score - 1.0) / 2) / total, 1e-15);
     sum += c.probability[i];
-    if (i > 1) EXPECT_LT(c.index[i - 1], c.index[i]) << "score order";
+    if (i > 1) {
+      EXPECT_LT(c.index[i - 1], c.index[i]) << "score order";
+    }
   }
   EXPECT_NEAR(sum, 1.0, 1e-15);
   // Alone, the best carries everything.
