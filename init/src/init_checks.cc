@@ -23,7 +23,8 @@ constexpr std::size_t kMaxNameBytes = 200;
 /// weigh 400 kg/m whole.
 constexpr double kMinRingMass_kg_m = 0.02, kMaxRingMass_kg_m = 500;
 
-std::string num(double v) {
+// (Not num(): init_tyre.cc's, with ten digits, shares a unity translation unit with this file.)
+std::string num6(double v) {
   char b[64];
   std::snprintf(b, sizeof b, "%.6g", v);
   return b;
@@ -34,18 +35,18 @@ void check_given(const std::optional<double>& v, const std::string& option, cons
                  double hi, const std::string& why_hi) {
   if (!v) return;
   if (!std::isfinite(*v) || !(*v > 0)) {
-    throw InputError({option, 0, ""}, what + " must be a number > 0, got " + num(*v) +
+    throw InputError({option, 0, ""}, what + " must be a number > 0, got " + num6(*v) +
                                           " (leave the option out for the stated default)");
   }
-  if (*v > hi) throw InputError({option, 0, ""}, what + " " + num(*v) + " exceeds " + why_hi);
+  if (*v > hi) throw InputError({option, 0, ""}, what + " " + num6(*v) + " exceeds " + why_hi);
 }
 
 void check_pressure(double kPa, const std::string& option, const std::string& what) {
   if (!std::isfinite(kPa) || !(kPa > 0)) {
-    throw InputError({option, 0, ""}, what + " must be > 0, got " + num(kPa));
+    throw InputError({option, 0, ""}, what + " must be > 0, got " + num6(kPa));
   }
   if (kPa < kMinPressure_kPa || kPa > kMaxPressure_kPa) {
-    throw InputError({option, 0, ""}, what + " " + num(kPa) +
+    throw InputError({option, 0, ""}, what + " " + num6(kPa) +
                                           " kPa is outside 10-2000 kPa (below 10 kPa a tyre is "
                                           "not a modal carcass; 2000 kPa exceeds any tyre)");
   }
@@ -93,7 +94,7 @@ void check_init_inputs(const InitInputs& in, const TyreSize& size) {
   }
   if (in.boundary != "free" && in.boundary != "rim-fixed")
     throw InputError({"--boundary", 0, ""}, "'" + in.boundary + "' is not free or rim-fixed");
-  const std::string section = "the section width " + num(size.section_width_mm) + " mm of " +
+  const std::string section = "the section width " + num6(size.section_width_mm) + " mm of " +
                               size.text + " (the belt and tread lie within the section)";
   check_given(in.belt_width_mm, "--belt-width-mm", "the belt width", size.section_width_mm,
               section);
@@ -101,7 +102,7 @@ void check_init_inputs(const InitInputs& in, const TyreSize& size) {
               section);
   check_given(in.tread_depth_mm, "--tread-depth-mm", "the tread depth",
               0.5 * size.section_height_mm(),
-              "half the section height " + num(size.section_height_mm()) + " mm of " + size.text);
+              "half the section height " + num6(size.section_height_mm()) + " mm of " + size.text);
   // The config reader's bounds (contact/carcass_source.cc), named here at the option.
   check_given(in.wheel_mass_kg, "--wheel-mass-kg", "the wheel's mass", 1e4,
               "10 t, more than any wheel");
@@ -157,8 +158,9 @@ void check_ring_mass(double mu, double outer_radius_m, bool from_list) {
   const double belt_kg = 2 * M_PI * outer_radius_m * mu;
   throw InputError(
       {from_list ? "--frequencies" : "--hammer", 0, ""},
-      "the modes make the ring's mass per length " + num(mu) + " kg/m (a belt of " + num(belt_kg) +
-          " kg), outside the " + num(kMinRingMass_kg_m) + "-" + num(kMaxRingMass_kg_m) +
+      "the modes make the ring's mass per length " + num6(mu) + " kg/m (a belt of " +
+          num6(belt_kg) + " kg), outside the " + num6(kMinRingMass_kg_m) + "-" +
+          num6(kMaxRingMass_kg_m) +
           " kg/m of any tyre from a bicycle's to an earthmover's: are they this tyre's natural "
           "frequencies in Hz? (a passenger tyre's lie at about 80-300 Hz)");
 }
