@@ -84,6 +84,14 @@ GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tr
       u.fail("Au", "k0 and Au cannot both be 0 (leave out unloading: for a rigid-plastic soil)");
     g.bekker.unloading = w;
   }
+  if (b.has("wong_reece")) {
+    const ConfigSection w = b.section("wong_reece");
+    WongReeceStress& wr = g.wong_reece;
+    wr.enabled = w.boolean("enabled", wr.enabled);
+    wr.c1 = w.number("c1", wr.c1, 0, 1);
+    wr.c2 = w.number("c2", wr.c2, 0, 1);
+    wr.c3 = w.number("c3", wr.c3, 0, 0.99);
+  }
 
   const ConfigSection kv = s.section("kelvin_voigt");
   g.kelvin_voigt.E2_MPa = kv.positive("E2_MPa", g.kelvin_voigt.E2_MPa, 1e6);

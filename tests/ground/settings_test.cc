@@ -71,6 +71,27 @@ TEST(GroundSettings, EveryKeyCanBeSetFromTheCommandLine) {
   EXPECT_EQ(kv.kelvin_voigt.E2_MPa, 3);
 }
 
+TEST(GroundSettings, WongReecesStressIsAStatedOptionOffByDefault) {
+  const GroundSettings off = load_ground_file(kSoils + "lete_sand.yaml");
+  EXPECT_FALSE(off.wong_reece.enabled);
+  const GroundSettings on =
+      load_ground_file(kSoils + "lete_sand.yaml",
+                       {"ground.bekker.wong_reece.enabled=true", "ground.bekker.wong_reece.c1=0.18",
+                        "ground.bekker.wong_reece.c2=0.3", "ground.bekker.wong_reece.c3=0.1"});
+  EXPECT_TRUE(on.wong_reece.enabled);
+  EXPECT_EQ(on.wong_reece.c1, 0.18);
+  EXPECT_EQ(on.wong_reece.c2, 0.3);
+  EXPECT_EQ(on.wong_reece.c3, 0.1);
+  EXPECT_NEAR(on.wong_reece.peak_ratio(0.5), 0.33, 1e-15);
+  EXPECT_EQ(on.wong_reece.peak_ratio(5), 1.0);  // clamped: the peak never leaves the contact
+  const std::string m = message_of(
+      [&] { load_ground_file(kSoils + "lete_sand.yaml", {"ground.bekker.wong_reece.c1=1.5"}); });
+  EXPECT_NE(m.find("ground.bekker.wong_reece.c1"), std::string::npos) << m;
+  const std::string bad = temp_file(
+      "wr.yaml", "ground:\n  model: bekker\n  bekker:\n    wong_reece: {enabled: true, c4: 1}\n");
+  EXPECT_NE(message_of([&] { load_ground_file(bad); }).find("wong_reece.c4"), std::string::npos);
+}
+
 TEST(GroundSettings, HostileSoilFilesNameFileLineAndKey) {
   const std::string bad_key =
       temp_file("bad_key.yaml", "ground:\n  model: bekker\n  bekker:\n    nn: 1\n");

@@ -18,6 +18,7 @@
 //       shear_modulus_K_mm: 12
 //       unloading: {k0: 0, Au: 5e5} # Wong's k_u = k0 [kN/m^3] + Au [kN/m^4] z_max; absent:
 //                                   # rigid-plastic (no rebound)
+//       wong_reece: {enabled: false, c1: 0.43, c2: 0.32, c3: 0}   # soil_options.h
 //     kelvin_voigt:                 # seed 000 eq. 23-28 (kelvin_voigt_soil.h)
 //       E2_MPa: 2
 //       eta2_kPa_s: 0
@@ -35,6 +36,7 @@
 #include "modaltyre/ground/kelvin_voigt_soil.h"
 #include "modaltyre/ground/road_profile.h"
 #include "modaltyre/ground/shear.h"
+#include "modaltyre/ground/soil_options.h"
 
 namespace modaltyre::ground {
 
@@ -50,6 +52,7 @@ struct GroundSettings {
   std::shared_ptr<const RoadProfile> profile;  ///< read from profile_csv by the reader
   BekkerParams bekker;
   JanosiParams bekker_shear{0, 30, 25};
+  WongReeceStress wong_reece;  ///< the rigid wheel's stress distribution (soil_options.h)
   KelvinVoigtParams kelvin_voigt;
   JanosiParams kelvin_voigt_shear{0, 30, 25};
 

@@ -1,0 +1,27 @@
+#pragma once
+// Switchable laws of a Bekker soil beyond its pressure-sinkage and shear laws (docs/soil.md
+// sections 3.1, 5.2 and 5.3), each off by default (off reproduces the laws without them exactly).
+// Keys under `ground.bekker.` (ground_settings.h):
+//
+//   wong_reece: {enabled: false, c1: 0.43, c2: 0.32, c3: 0}
+//     The rigid wheel's normal stress with its peak moved back with slip (Wong & Reece 1967,
+//     Part I; Wong, Theory of Ground Vehicles, 4th ed., 2008, section 2.7): the front region
+//     theta_m <= theta <= theta1 carries the soil's loading law at the wheel's depth, the rear
+//     region theta2 <= theta <= theta_m the front's stress mapped onto it,
+//       sigma(theta) = sigma_front(theta1 - (theta - theta2)(theta1 - theta_m)/(theta_m - theta2)),
+//     with theta_m = (c1 + c2 s) theta1 (clamped to [0, theta1]) and the rear angle
+//     theta2 = -c3 theta1 behind the vertical. c1 0.43, c2 0.32: Wong and Reece's compact sand
+//     (loose sand c1 0.18); c3 0: no rebound (the rigid-plastic soil's theta2 = 0).
+namespace modaltyre::ground {
+
+struct WongReeceStress {
+  bool enabled = false;
+  double c1 = 0.43;       ///< theta_m / theta1 at zero slip, [0, 1]
+  double c2 = 0.32;       ///< its growth with slip, [0, 1]
+  double c3 = 0;          ///< rear angle over entry angle, [0, 0.99]
+  void validate() const;  ///< std::invalid_argument naming the key
+  /// theta_m / theta1 at slip s, clamped to [0, 1].
+  double peak_ratio(double slip) const;
+};
+
+}  // namespace modaltyre::ground
