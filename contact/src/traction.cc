@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "modaltyre/contact/ground_patch.h"
+#include "modaltyre/contact/rolling_radius.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/ground/rigid_wheel.h"
 #include "traction3d.h"
 #include "traction_anderson.h"
+#include "traction_kinematics.h"
 
 namespace modaltyre::contact {
 namespace {
@@ -36,7 +39,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   // The tread's stick stiffness per unit area on a rigid road: G / h (seed 001 eq. 6-9).
   const TreadSprings unit = tread_springs(model.config.tread, 1.0, 1.0);
   const std::unique_ptr<ground::ShearLaw> shear = g.shear_law(unit.tangential_N_m);
-  const double rho = ground::speed_ratio(c.slip);
+  const double rho = speed_ratio_over_R0(c, R0);
   if (st.depth_m.size() != std::size_t(m)) st.depth_m.assign(m, 0.0);
   if (st.fx_N.size() != std::size_t(m)) st.fx_N.assign(m, 0.0);
   std::vector<double> z_max(m), offset(m), slope(m);
@@ -86,9 +89,11 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
         if (first < 0) first = i;
         last = i;
       }
+    // The shear along the deformed contour from the front edge (traction_kinematics.h).
     const double t = (f.front_edge_x_m - x[last]) / (x[last + 1] - x[last]);
-    const double s_front =
-        R0 * (model.theta[last] + t * (model.theta[last + 1] - model.theta[last]));
+    const double theta_front = model.theta[last] + t * (model.theta[last + 1] - model.theta[last]);
+    detail::ContourSlip path(R0, rho, f.front_edge_x_m,
+                             surface[last] + t * (surface[last + 1] - surface[last]), theta_front);
     ground::ShearPoint point;
     double j_prev = 0, H = 0, Rc = 0, shear_v = 0, T = 0;
     const double axle_height = R0 - f.sinking_m;
@@ -97,12 +102,12 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       if (f.active[i]) fz_unit[i] = f.units[k++].fz_N;  // units: the active ones, in order
     st.force_N = fz_unit;
     for (int i = last; i >= first; --i) {
+      const double j = path.advance(x[i], surface[i], model.theta[i]);
       if (!f.active[i]) continue;
       const double dx = ds * std::cos(model.theta[i]);
       const double area = width * dx;
       const double fz = fz_unit[i];
       const double sigma = fz / area;  // the normal stress (vertical force over road area)
-      const double j = (s_front - R0 * model.theta[i]) - rho * (f.front_edge_x_m - x[i]);
       const double tau = shear->advance(point, sigma, j - j_prev);
       j_prev = j;
       const double fs = tau * area;
@@ -192,18 +197,39 @@ TractionResult rigid_pass(const TyreModel& model, const ground::GroundSettings& 
   return r;
 }
 
+// The slip's reference and the tractive efficiency DP V / (T omega), V / omega = rho R0.
+void finish_case(TractionResult& r, const TractionCase& c, double R0, const RollingRadius& re) {
+  r.rolling_radius_m = re.radius_m;
+  r.loaded_radius_m = re.loaded_radius_m;
+  r.slip_radius_m = c.slip_radius_m > 0 ? c.slip_radius_m : R0;
+  if (r.ok() && r.torque_Nm > 0 && r.drawbar_pull_N > 0)
+    r.tractive_efficiency = r.drawbar_pull_N * speed_ratio_over_R0(c, R0) * R0 / r.torque_Nm;
+}
+
 }  // namespace
+
+double speed_ratio_over_R0(const TractionCase& c, double R0_m) {
+  return ground::speed_ratio(c.slip) * (c.slip_radius_m > 0 ? c.slip_radius_m / R0_m : 1.0);
+}
 
 TractionResult traction_pass(const TyreModel& model, const ground::GroundSettings& g,
                              const TractionCase& c, double prior, const TractionOptions& o) {
-  if (o.rigid) return rigid_pass(model, g, c, 1, prior);
-  if (model.config.footprint_3d) {
+  const double R0 = model.config.outer_radius_m;
+  TractionResult r;
+  if (o.rigid) {
+    r = rigid_pass(model, g, c, 1, prior);
+  } else if (model.config.footprint_3d) {
     const detail::Rolling3d rolling(model, g);
     detail::Rolling3dState st;
-    return rolling.pass(c, 1, std::vector<double>(rolling.columns(), prior), o, st);
+    r = rolling.pass(c, 1, std::vector<double>(rolling.columns(), prior), o, st);
+  } else {
+    RollingState st;
+    r = rolling_pass(model, vertical_from_horizontal(model), g, c, 1, prior, o, st);
   }
-  RollingState st;
-  return rolling_pass(model, vertical_from_horizontal(model), g, c, 1, prior, o, st);
+  RollingRadius rigid;  // the rigid cylinder rolls on the road at its radius
+  if (o.rigid) rigid.radius_m = rigid.loaded_radius_m = R0;
+  finish_case(r, c, R0, rigid);
+  return r;
 }
 
 std::vector<TractionResult> steady_traction(const TyreModel& model, const ground::GroundSettings& g,
@@ -222,7 +248,29 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
   const std::size_t P = std::max(1, o.passes);
   std::vector<RollingState> states(P);
   std::vector<detail::Rolling3dState> states3d(P);
-  for (const auto& c : cases) {
+  // The rolling radius per load (the rigid cylinder's is its radius).
+  const double R0 = model.config.outer_radius_m;
+  std::map<double, RollingRadius> radii;
+  for (const auto& given : cases) {
+    TractionCase c = given;
+    auto it = radii.find(c.load_N);
+    if (it == radii.end()) {
+      RollingRadius rr;
+      if (o.rigid) {
+        rr.status = SolveStatus::converged, rr.radius_m = R0, rr.loaded_radius_m = R0;
+      } else {
+        rr = rolling_radius(model, c.load_N);
+      }
+      it = radii.emplace(c.load_N, rr).first;
+    }
+    const RollingRadius& re = it->second;
+    if (o.slip_reference == SlipReference::rolling) {
+      if (!re.ok()) {
+        for (int p = 1; p <= o.passes; ++p) out.push_back(detail::case_result(c, p, re.message));
+        continue;
+      }
+      c.slip_radius_m = re.radius_m;
+    }
     double prior = 0;
     std::vector<double> prior_columns;  // 3D: the track's memory per column
     for (int p = 1; p <= o.passes; ++p) {
@@ -239,6 +287,7 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
       if (!r.ok() && warm) r = run();
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
+      finish_case(r, c, R0, re);
       prior = r.z_max_m;
       prior_columns = r.column_z_max_m;
       out.push_back(std::move(r));

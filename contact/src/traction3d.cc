@@ -12,6 +12,7 @@
 #include "patch3d_operators.h"
 #include "patch3d_soil.h"
 #include "traction_anderson.h"
+#include "traction_kinematics.h"
 
 namespace modaltyre::contact::detail {
 namespace {
@@ -190,7 +191,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   const double width = patch_.settings().tread_width_m, dy = width / ny;
   const TreadSprings unit = tread_springs(m.config.tread, 1.0, 1.0);
   const std::unique_ptr<ground::ShearLaw> shear = ground_.shear_law(unit.tangential_N_m);
-  const double rho = ground::speed_ratio(c.slip);
+  const double rho = speed_ratio_over_R0(c, R0);
   std::vector<double> prior(K, 0.0);
   if (!prior_m.empty())
     for (int j = 0; j < ny; ++j)
@@ -295,21 +296,26 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       const double tf = edge_fraction(last, last + 1), tr = edge_fraction(first, first - 1);
       const double x_front = x[at(last)] + tf * (x[at(last + 1)] - x[at(last)]);
       const double x_rear = x[at(first)] + tr * (x[at(first - 1)] - x[at(first)]);
-      const double s_front = R0 * (m.theta[last] + tf * (m.theta[last + 1] - m.theta[last]));
+      const double theta_front = m.theta[last] + tf * (m.theta[last + 1] - m.theta[last]);
       length = std::max(length, x_front - x_rear);
       front_max = std::max(front_max, x_front);
       if (x_rear < rear_min) rear_min = x_rear, rear_depth = depth[at(first)];
       ground::ShearPoint point;
       double j_prev = 0;
       const double w = class_weight_[k];
+      // The shear along the column's deformed contour from its front edge
+      // (traction_kinematics.h).
+      ContourSlip path(R0, rho, x_front,
+                       surface[at(last)] + tf * (surface[at(last + 1)] - surface[at(last)]),
+                       theta_front);
       for (int i = last; i >= first; --i) {
         const std::size_t a = at(i);
+        const double j = path.advance(x[a], surface[a], m.theta[i]);
         if (!(f[a] > 0)) continue;
         const double slope =
             (surface[at(i - 1)] - surface[at(i + 1)]) / (x[at(i + 1)] - x[at(i - 1)]);
         const double area = area_m2_[i];
         const double sigma = f[a] / area;
-        const double j = (s_front - R0 * m.theta[i]) - rho * (x_front - x[a]);
         const double tau = shear->advance(point, sigma, j - j_prev);
         j_prev = j;
         const double fs = tau * area;

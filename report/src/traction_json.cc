@@ -4,6 +4,7 @@
 #include <optional>
 #include <sstream>
 
+#include "modaltyre/contact/traction_curve.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
@@ -27,15 +28,37 @@ nlohmann::json traction_case_json(const contact::TractionResult& r, bool with_pa
                       {"exit_angle_deg", round_sig(r.exit_angle_rad * deg)},
                       {"contact_length_mm", round_sig(r.contact_length_m * 1e3)},
                       {"bekker_width_mm", round_sig(r.bekker_width_m * 1e3)},
+                      {"rolling_radius_mm", round_sig(r.rolling_radius_m * 1e3)},
+                      {"loaded_radius_mm", round_sig(r.loaded_radius_m * 1e3)},
+                      {"tractive_efficiency", round_sig(r.tractive_efficiency)},
                       {"converged", r.ok()},
                       {"iterations", r.iterations}};
   if (with_pass) j["pass"] = r.pass;
   return j;
 }
 
+namespace {
+
+nlohmann::json point_json(const std::optional<contact::CurvePoint>& p, const char* value_key) {
+  if (!p) return nullptr;
+  return {{"slip", round_sig(p->slip)}, {value_key, round_sig(p->value)}};
+}
+
+}  // namespace
+
+nlohmann::json traction_curves_json(const std::vector<contact::TractionResult>& results) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const contact::TractionCurve& c : contact::traction_curves(results))
+    out.push_back({{"load_N", c.load_N},
+                   {"pass", c.pass},
+                   {"towed_point", point_json(c.towed, "drawbar_pull_N")},
+                   {"self_propelled_point", point_json(c.self_propelled, "torque_Nm")}});
+  return out;
+}
+
 nlohmann::json traction_json(const contact::TyreConfig& config, const ground::GroundSettings& g,
                              const std::vector<contact::TractionResult>& results, bool rigid,
-                             int passes) {
+                             int passes, contact::SlipReference reference) {
   nlohmann::json cases = nlohmann::json::array();
   bool patch_3d = false;  // the 3D patch's results carry the track per column
   for (const auto& r : results) {
@@ -53,7 +76,9 @@ nlohmann::json traction_json(const contact::TyreConfig& config, const ground::Gr
                         {"shear_modulus_K_mm", g.bekker_shear.shear_modulus_K_mm},
                         {"rigid_plastic", !g.bekker.unloading.has_value()}};
   }
-  return {
+  const bool rolling = reference == contact::SlipReference::rolling;
+  const nlohmann::json curves = traction_curves_json(results);
+  nlohmann::json doc = {
       {"tyre", config.name},
       {"config", config.source},
       {"model", rigid      ? "rigid cylinder (tyre.rigid)"
@@ -62,10 +87,22 @@ nlohmann::json traction_json(const contact::TyreConfig& config, const ground::Gr
       {"outer_radius_mm", config.outer_radius_m * 1e3},
       {"width_mm",
        (config.footprint_3d ? config.footprint_3d->tread_width_m : config.tread.width_m) * 1e3},
-      {"slip_definition", "Wong: driven s = 1 - V/(omega R0) > 0, braked s = omega R0/V - 1 < 0"},
+      {"slip_reference", rolling ? "rolling" : "unloaded"},
+      {"slip_definition",
+       rolling ? "ISTVS: driven s = 1 - V/(omega r_e) > 0, braked s = omega r_e/V - 1 < 0, r_e the "
+                 "rolling radius of the same tyre at the same load free-rolling on the rigid "
+                 "road (rolling_radius_mm)"
+               : "driven s = 1 - V/(omega R0) > 0, braked s = omega R0/V - 1 < 0, R0 the outer "
+                 "radius"},
       {"ground", ground},
       {"passes", passes},
-      {"cases", cases}};
+      {"cases", cases},
+      {"curves", curves}};
+  if (curves.size() == 1) {
+    doc["towed_point"] = curves[0]["towed_point"];
+    doc["self_propelled_point"] = curves[0]["self_propelled_point"];
+  }
+  return doc;
 }
 
 void require_traction_converged(const std::vector<contact::TractionResult>& results) {
@@ -117,6 +154,7 @@ std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
   contact::TractionOptions opt;
   opt.rigid = setup.rigid;
   opt.passes = passes;
+  opt.slip_reference = setup.slip_reference;
   std::vector<contact::TractionCase> cases;
   for (double load : loads_N)
     for (double s : slips) cases.push_back({load, s});

@@ -4,17 +4,20 @@
 // patch, contact/src/traction3d.h: the same fixed point per column) or of the rigid cylinder of
 // its outer radius (tyre.rigid: ground/rigid_wheel.h).
 //
-// Slip: Wong's definitions, driven s = 1 - V / (omega R) > 0, braked s = omega R / V - 1 < 0,
-// R = the outer radius R0 (the tread's circumferential speed omega R0).
+// Slip: driven s = 1 - V / (omega r) > 0, braked s = omega r / V - 1 < 0 (Wong's forms), r the
+// slip's reference radius: the rolling radius r_e of the same tyre at the same load free-rolling
+// on the rigid road (rolling_radius.h; ISTVS, the default), or the outer radius R0
+// (SlipReference::unloaded). The rigid cylinder's r_e is its radius R0.
 //
 // The flexible tyre (2D patch, ground_patch.h) in steady rolling, as a fixed point:
 //  1. Normal contact: the static problem on the soil, each unit's ground with the memory of the
 //     ground ahead of it: a ground point under unit i has passed under every unit in front, so
 //     its z_max is max(prior, max_{j ahead of i} z_j). Loading where the unit is the deepest so
 //     far, the unloading branch behind (and the rut's reloading branch on a later pass).
-//  2. Shear: j_i = (s_f - s_i) - (V / omega R0)(x_f - x_i), s the units' arc coordinate R0 theta,
-//     x their deformed position, f the front edge (the rigid wheel's j(theta) when the contour is
-//     the circle); tau_i from the ground's shear law (shear.h) marched from the front;
+//  2. Shear: j = sum (dl - (V / omega) cos(alpha) dtheta) along the units' deformed contour from
+//     its front edge (dl its length, alpha its slope; contact/src/traction_kinematics.h: the
+//     rigid wheel's j(theta) when the contour is the circle); tau_i from the ground's shear law
+//     (shear.h) marched from the front;
 //     horizontal force on unit i: tau_i b dx_i minus the normal force's horizontal component
 //     f_i tan alpha_i (alpha_i the soil surface's slope under the unit); the shear's vertical
 //     component tau_i b dx_i tan alpha_i shares the load.
@@ -23,7 +26,8 @@
 // Repeated until the sinkage profile, the drawbar pull and the load share settle.
 // Resultants: thrust H = sum tau b dx, motion resistance R_c = sum f tan alpha, drawbar pull
 // DP = H - R_c, torque T = sum (f_x h + f_z x) about the axle (h the axle's height above the
-// point, x its position ahead of the axle).
+// point, x its position ahead of the axle); tractive efficiency DP V / (T omega) where the wheel
+// is driven (T > 0) and pulls (DP > 0), else 0.
 #include <string>
 #include <vector>
 
@@ -33,10 +37,19 @@
 
 namespace modaltyre::contact {
 
+enum class SlipReference {
+  rolling,   ///< r_e: the rolling radius on the rigid road at the same load (ISTVS)
+  unloaded,  ///< R0: the outer radius
+};
+
 struct TractionCase {
   double load_N = 0;
-  double slip = 0;  ///< in (-1, 1]
+  double slip = 0;           ///< in (-1, 1]
+  double slip_radius_m = 0;  ///< the radius the slip is taken against (0: R0)
 };
+
+/// V / (omega R0) at the case's slip and reference radius (R0 the outer radius).
+double speed_ratio_over_R0(const TractionCase& c, double R0_m);
 
 struct TractionResult {
   SolveStatus status = SolveStatus::failed;
@@ -53,6 +66,10 @@ struct TractionResult {
   double drawbar_pull_N = 0, thrust_N = 0, motion_resistance_N = 0, torque_Nm = 0;
   double entry_angle_rad = 0, exit_angle_rad = 0;  ///< contact edges seen from the axle
   double contact_length_m = 0, bekker_width_m = 0;
+  double rolling_radius_m = 0;     ///< r_e at this load (rolling_radius.h; R0 for the rigid wheel)
+  double loaded_radius_m = 0;      ///< R0 - the deflection on the rigid road at this load
+  double slip_radius_m = 0;        ///< the radius the slip is taken against (r_e or R0)
+  double tractive_efficiency = 0;  ///< DP V / (T omega) when T > 0 and DP > 0, else 0
   int iterations = 0;
   bool ok() const { return modaltyre::ok(status); }
 };
@@ -60,6 +77,7 @@ struct TractionResult {
 struct TractionOptions {
   bool rigid = false;  ///< the rigid cylinder of the outer radius (ground/rigid_wheel.h)
   int passes = 1;      ///< 1..20: each pass meets the previous pass's rut
+  SlipReference slip_reference = SlipReference::rolling;
   int max_iterations = 200;
   /// Settled when a step changes the drawbar pull, the shear's load share and every unit's
   /// horizontal force by at most tolerance x load, Bekker's b by tolerance x width, and the
@@ -77,7 +95,8 @@ std::vector<TractionResult> steady_traction(const TyreModel& model,
                                             const std::vector<TractionCase>& cases,
                                             const TractionOptions& options = {});
 
-/// One pass of the flexible tyre on a track of memory prior_z_max_m (2D or 3D patch).
+/// One pass of the flexible tyre on a track of memory prior_z_max_m (2D or 3D patch), its slip
+/// against c.slip_radius_m (0: R0).
 TractionResult traction_pass(const TyreModel& model, const ground::GroundSettings& ground,
                              const TractionCase& c, double prior_z_max_m,
                              const TractionOptions& options = {});

@@ -14,12 +14,18 @@ namespace modaltyre::report {
 /// `pass` when passes > 1.
 nlohmann::json traction_case_json(const contact::TractionResult& r, bool with_pass);
 
+/// Per curve (load and pass): load_N, pass, towed_point {slip, drawbar_pull_N} and
+/// self_propelled_point {slip, torque_Nm} (null where the curve does not cross zero).
+nlohmann::json traction_curves_json(const std::vector<contact::TractionResult>& results);
+
 /// The document: tyre, ground, model (flexible tyre on the 2D or the 3D patch, as the results
-/// were computed, or the rigid cylinder), cases.
+/// were computed, or the rigid cylinder), the slip's definition, cases, and per curve (load and
+/// pass) its towed and self-propelled points (`curves`; with one curve also at the top level).
 nlohmann::json traction_json(const contact::TyreConfig& config,
                              const ground::GroundSettings& ground,
                              const std::vector<contact::TractionResult>& results, bool rigid,
-                             int passes);
+                             int passes,
+                             contact::SlipReference reference = contact::SlipReference::rolling);
 
 /// ComputationError naming the first failed case with its reason.
 void require_traction_converged(const std::vector<contact::TractionResult>& results);
@@ -32,6 +38,9 @@ struct TractionSetup {
   /// A 3D config's 2D patch at its 3D tread width (`traction --patch 2d`, the fast variant;
   /// docs/soil.md section 9); the rigid cylinder takes the tread width either way.
   bool patch_2d = false;
+  /// The slip's reference radius (`traction --slip-reference`): the rolling radius r_e on the
+  /// rigid road at the same load (ISTVS, the default) or the outer radius R0.
+  contact::SlipReference slip_reference = contact::SlipReference::rolling;
   std::string ground_source;  ///< the file that gave the ground (for its messages)
 };
 

@@ -1,0 +1,93 @@
+#include "traction_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+#include "cli_support.h"
+#include "modaltyre/contact/traction_curve.h"
+#include "modaltyre/core/gnuplot.h"
+
+namespace modaltyre::app {
+namespace {
+
+std::string soil_name(const ground::GroundSettings& g) {
+  return g.name.empty() ? ground::to_string(g.model) : g.name;
+}
+
+double contact_width_m(const TractionRun& run) {
+  const contact::TyreConfig& c = *run.config;
+  const bool patch_3d = !run.rigid && c.footprint_3d.has_value();
+  return patch_3d ? c.footprint_3d->tread_width_m : c.tread.width_m;
+}
+
+}  // namespace
+
+void print_traction_table(const TractionRun& run,
+                          const std::vector<contact::TractionResult>& results) {
+  const contact::TyreConfig& config = *run.config;
+  const bool patch_3d = !run.rigid && config.footprint_3d.has_value();
+  const bool rolling = run.reference == contact::SlipReference::rolling;
+  std::cout << (run.rigid  ? "rigid cylinder"
+                : patch_3d ? "flexible tyre (3D patch)"
+                           : "flexible tyre (2D patch)")
+            << " R0 " << fixed(config.outer_radius_m * 1e3, 1) << " mm, width "
+            << fixed(contact_width_m(run) * 1e3, 1) << " mm on " << soil_name(*run.ground)
+            << "; slip against " << (rolling ? "the rolling radius r_e (ISTVS)" : "R0") << "\n";
+  std::cout << "  load_N    slip" << (run.passes > 1 ? "  pass" : "")
+            << "  sinkage_mm  rut_mm  drawbar_N  thrust_N  resist_N  torque_Nm  entry_deg  "
+               "exit_deg  b_mm   eta\n";
+  for (const auto& r : results) {
+    char line[256];
+    std::snprintf(line, sizeof line, "%8.0f  %6.3f", r.load_N, r.slip);
+    std::cout << line;
+    if (run.passes > 1)
+      std::cout << "  " << std::string(4 - std::to_string(r.pass).size(), ' ') << r.pass;
+    std::snprintf(line, sizeof line,
+                  "  %10.2f  %6.2f  %9.1f  %8.1f  %8.1f  %9.1f  %9.2f  %8.2f  %5.1f  %4.2f\n",
+                  r.soil_sinkage_m * 1e3, r.rut_depth_m * 1e3, r.drawbar_pull_N, r.thrust_N,
+                  r.motion_resistance_N, r.torque_Nm, r.entry_angle_rad * 180 / M_PI,
+                  r.exit_angle_rad * 180 / M_PI, r.bekker_width_m * 1e3, r.tractive_efficiency);
+    std::cout << line;
+  }
+  for (const contact::TractionCurve& c : contact::traction_curves(results)) {
+    const contact::TractionResult& first = *c.rows.front();
+    std::cout << "  " << fixed(c.load_N, 0) << " N" << (run.passes > 1 ? ", pass " : "")
+              << (run.passes > 1 ? std::to_string(c.pass) : "") << ": r_e "
+              << fixed(first.rolling_radius_m * 1e3, 2) << " mm (loaded radius "
+              << fixed(first.loaded_radius_m * 1e3, 2) << " mm on the road); towed point ";
+    if (c.towed)
+      std::cout << "s " << fixed(c.towed->slip, 4) << ", drawbar pull " << fixed(c.towed->value, 1)
+                << " N";
+    else
+      std::cout << "outside the slips given";
+    std::cout << "; self-propelled point ";
+    if (c.self_propelled)
+      std::cout << "s " << fixed(c.self_propelled->slip, 4) << ", torque "
+                << fixed(c.self_propelled->value, 1) << " N m\n";
+    else
+      std::cout << "outside the slips given\n";
+  }
+}
+
+void plot_traction(const TractionRun& run, const std::vector<contact::TractionResult>& results,
+                   const std::string& path) {
+  std::map<std::pair<double, int>, PlotSeries> curves;
+  for (const auto& r : results) {
+    auto& s = curves[{r.load_N, r.pass}];
+    s.title = fixed(r.load_N, 0) + " N" + (r.pass > 1 ? ", pass " + std::to_string(r.pass) : "");
+    s.style = "linespoints";
+    s.x.push_back(r.slip);
+    s.y.push_back(r.drawbar_pull_N / r.load_N);
+  }
+  const bool rolling = run.reference == contact::SlipReference::rolling;
+  PlotPanel panel{"drawbar pull against slip",
+                  rolling ? "slip s (against r_e) [-]" : "slip s (against R0) [-]",
+                  "drawbar pull / load [-]",
+                  {}};
+  for (auto& [key, s] : curves) panel.series.push_back(std::move(s));
+  render_plot(PlotFigure{{panel}}, path);
+}
+
+}  // namespace modaltyre::app
