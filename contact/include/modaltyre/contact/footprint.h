@@ -23,13 +23,12 @@ struct LoadCase {
 };
 
 struct PatchUnit {
-  double x_m = 0;          ///< deformed position along the road from the contact centre
-  double dx_m = 0;         ///< road length the unit covers
-  double fz_N = 0;         ///< vertical force on the unit
-  double fx_N = 0;         ///< horizontal force on the unit
-  double pressure_Pa = 0;  ///< fz / (dx * contact width)
-  double soil_depth_m =
-      0;  ///< on a soil: the ground's surface under the unit below the undisturbed surface
+  double x_m = 0;         ///< deformed position along the road from the contact centre
+  double dx_m = 0;        ///< road length the unit covers
+  double fz_N = 0;        ///< vertical force on the unit
+  double fx_N = 0;        ///< horizontal force on the unit
+  double pressure_Pa = 0; ///< fz / (dx * contact width)
+  double soil_depth_m = 0; ///< on a soil: the ground's surface under the unit below the undisturbed surface
 };
 
 struct FootprintResult {
@@ -38,16 +37,16 @@ struct FootprintResult {
   SolveStatus status = SolveStatus::failed;
   std::string message;
   int iterations = 0;
-  double sinking_m = 0;         ///< approach of axle and road
-  double contact_length_m = 0;  ///< front_edge_x_m - rear_edge_x_m
-  double rear_edge_x_m = 0;     ///< patch edges, interpolated between units
+  double sinking_m = 0;           ///< approach of axle and road
+  double contact_length_m = 0;     ///< front_edge_x_m - rear_edge_x_m
+  double rear_edge_x_m = 0;        ///< patch edges, interpolated between units
   double front_edge_x_m = 0;
-  double equilibrium_residual = 0;       ///< |sum fz - F_z| / F_z
-  double complementarity_residual = 0;   ///< max |f g| / (F_z sinking)
-  std::vector<PatchUnit> units;          ///< units in contact, front to back ordered by x
-  std::vector<double> contour_x_m;       ///< deformed tread surface of all candidate units
-  std::vector<double> contour_height_m;  ///< height above the road (0 in contact)
-  std::vector<char> active;              ///< contact flags of the candidate units (warm start)
+  double equilibrium_residual = 0;      ///< |sum fz - F_z| / F_z
+  double complementarity_residual = 0;  ///< max |f g| / (F_z sinking)
+  std::vector<PatchUnit> units;         ///< units in contact, front to back ordered by x
+  std::vector<double> contour_x_m;      ///< deformed tread surface of all candidate units
+  std::vector<double> contour_height_m; ///< height above the road (0 in contact)
+  std::vector<char> active;             ///< contact flags of the candidate units (warm start)
   /// On a soil (ground_patch.h): the deepest point of the ground below its undisturbed surface,
   /// the tyre's own deflection (sinking_m - soil_sinkage_m), Bekker's b used, and the ground's
   /// surface depth under every candidate unit (the rut where the unit is free). Zero / empty on
@@ -66,7 +65,7 @@ struct FootprintResult {
 /// predictor.h assemble others.
 struct PatchOperator {
   const modal::LagKernels* kernels = nullptr;  ///< carcass transfer functions per lag
-  double carcass_scale = 1;                    ///< multiplies every carcass kernel
+  double carcass_scale = 1;                     ///< multiplies every carcass kernel
   /// Tread radial compliance between units l apart, l = 0, 1, ... (one entry: independent
   /// springs, seed 001 eq. 6) [m/N].
   std::vector<double> tread_radial_lag;

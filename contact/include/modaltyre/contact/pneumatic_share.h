@@ -12,8 +12,8 @@
 #include <functional>
 
 #include "modaltyre/contact/footprint.h"
-#include "modaltyre/contact/patch3d.h"
 #include "modaltyre/core/solve_status.h"
+#include "modaltyre/contact/patch3d.h"
 
 namespace modaltyre::contact {
 
@@ -35,9 +35,9 @@ void add_pneumatic_pressure(FootprintResult& r, double pressure_Pa, double width
 
 struct LoadSplit {
   SolveStatus status = SolveStatus::failed;  ///< converged, or why not (a failed solve: failed)
-  double structural_load_N = 0;              ///< F_s (on failure: the last F_s solved)
-  double area_m2 = 0;                        ///< A(F_s)
-  double residual_N = 0;  ///< F_s + p_pn A - F_z (on failure: at the last F_s solved)
+  double structural_load_N = 0;  ///< F_s (on failure: the last F_s solved)
+  double area_m2 = 0;            ///< A(F_s)
+  double residual_N = 0;         ///< F_s + p_pn A - F_z (on failure: at the last F_s solved)
   int solves = 0;
   bool ok() const { return modaltyre::ok(status); }
 };
