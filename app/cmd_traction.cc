@@ -100,6 +100,14 @@ void register_traction(CLI::App& app) {
                    "transient models it (docs/soil.md 8.4)\n";
     }
     const auto results = report::run_traction(setup, a->loads, a->slips, a->passes);
+    for (const auto& r : results) {
+      if (r.window_m > setup.config.mesh.window_m) {
+        std::cerr << "note: contact.window_mm grew from " << setup.config.mesh.window_m * 1e3
+                  << " to " << r.window_m * 1e3
+                  << " mm where the contact reached its edge (cases with window_mm in --json)\n";
+        break;
+      }
+    }
     contact::TyreConfig config = setup.config;  // as run
     if (setup.patch_2d || setup.rigid) report::use_2d_patch_of_3d(config);
     const ground::GroundSettings& g = setup.ground;

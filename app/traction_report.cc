@@ -38,21 +38,35 @@ void print_traction_table(const TractionRun& run,
   std::cout << "  load_N    slip" << (run.passes > 1 ? "  pass" : "")
             << "  sinkage_mm  rut_mm  drawbar_N  thrust_N  resist_N  torque_Nm  entry_deg  "
                "exit_deg  b_mm   eta\n";
+  std::vector<std::string> notes;  // why rows are marked
   for (const auto& r : results) {
     char line[256];
     std::snprintf(line, sizeof line, "%8.0f  %6.3f", r.load_N, r.slip);
     std::cout << line;
     if (run.passes > 1)
       std::cout << "  " << std::string(4 - std::to_string(r.pass).size(), ' ') << r.pass;
+    if (!r.ok()) {
+      std::cout << "  failed: " << r.message << "\n";
+      continue;
+    }
     std::snprintf(line, sizeof line,
-                  "  %10.2f  %6.2f  %9.1f  %8.1f  %8.1f  %9.1f  %9.2f  %8.2f  %5.1f  %4.2f\n",
+                  "  %10.2f  %6.2f  %9.1f  %8.1f  %8.1f  %9.1f  %9.2f  %8.2f  %5.1f  %4.2f",
                   r.soil_sinkage_m * 1e3, r.rut_depth_m * 1e3, r.drawbar_pull_N, r.thrust_N,
                   r.motion_resistance_N, r.torque_Nm, r.entry_angle_rad * 180 / M_PI,
                   r.exit_angle_rad * 180 / M_PI, r.bekker_width_m * 1e3, r.tractive_efficiency);
     std::cout << line;
+    if (!r.valid) {
+      notes.push_back(r.validity);
+      std::cout << "  *" << notes.size();
+    }
+    std::cout << "\n";
   }
+  for (std::size_t k = 0; k < notes.size(); ++k)
+    std::cout << "  *" << k + 1 << " outside the validity range, not a prediction: " << notes[k]
+              << "\n";
   for (const contact::TractionCurve& c : contact::traction_curves(results)) {
     const contact::TractionResult& first = *c.rows.front();
+    if (!(first.rolling_radius_m > 0)) continue;
     std::cout << "  " << fixed(c.load_N, 0) << " N" << (run.passes > 1 ? ", pass " : "")
               << (run.passes > 1 ? std::to_string(c.pass) : "") << ": r_e "
               << fixed(first.rolling_radius_m * 1e3, 2) << " mm (loaded radius "
@@ -74,12 +88,15 @@ void print_traction_table(const TractionRun& run,
 void plot_traction(const TractionRun& run, const std::vector<contact::TractionResult>& results,
                    const std::string& path) {
   std::map<std::pair<double, int>, PlotSeries> curves;
+  PlotSeries invalid{"outside the validity range", {}, {}, "points"};
   for (const auto& r : results) {
+    if (!r.ok()) continue;
     auto& s = curves[{r.load_N, r.pass}];
     s.title = fixed(r.load_N, 0) + " N" + (r.pass > 1 ? ", pass " + std::to_string(r.pass) : "");
     s.style = "linespoints";
     s.x.push_back(r.slip);
     s.y.push_back(r.drawbar_pull_N / r.load_N);
+    if (!r.valid) invalid.x.push_back(r.slip), invalid.y.push_back(r.drawbar_pull_N / r.load_N);
   }
   const bool rolling = run.reference == contact::SlipReference::rolling;
   PlotPanel panel{"drawbar pull against slip",
@@ -87,6 +104,7 @@ void plot_traction(const TractionRun& run, const std::vector<contact::TractionRe
                   "drawbar pull / load [-]",
                   {}};
   for (auto& [key, s] : curves) panel.series.push_back(std::move(s));
+  if (!invalid.x.empty()) panel.series.push_back(std::move(invalid));
   render_plot(PlotFigure{{panel}}, path);
 }
 

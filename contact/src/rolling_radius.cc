@@ -46,9 +46,10 @@ RollingRadius finish(const TyreModel& model, double sinking_m, const StickSums& 
   return r;
 }
 
-RollingRadius failed(const std::string& why) {
+RollingRadius failed(const std::string& why, bool window = false) {
   RollingRadius r;
   r.message = "rolling radius: the footprint on the rigid road failed: " + why;
+  r.window_exceeded = window;
   return r;
 }
 
@@ -59,7 +60,7 @@ RollingRadius rolling_radius(const TyreModel& model, double load_N) {
   StickSums sums;
   if (!model.config.footprint_3d) {
     const FootprintResult f = solve_patch(model, static_matrix_free_operator(model), {load_N, 0.0});
-    if (!f.ok()) return failed(f.message);
+    if (!f.ok()) return failed(f.message, f.window_exceeded);
     const int m = model.candidates();
     std::vector<double> area(m);
     for (int i = 0; i < m; ++i) area[i] = model.unit_length_m * std::cos(model.theta[i]);
@@ -77,7 +78,7 @@ RollingRadius rolling_radius(const TyreModel& model, double load_N) {
   }
   const Patch3d patch(model, *model.config.footprint_3d);
   const Patch3dResult p = patch.solve(load_N);
-  if (!p.ok()) return failed(p.message);
+  if (!p.ok()) return failed(p.message, p.message.find("candidate window") != std::string::npos);
   const int S = p.sections, ny = p.columns;
   const TreadSprings k = tread_springs(model.config.tread, p.dy_m, model.unit_length_m);
   std::vector<double> x(S), area(S);
@@ -96,7 +97,8 @@ RollingRadius rolling_radius(const TyreModel& model, double load_N) {
         last = i;
       }
     }
-    if (first <= 0 || last + 1 >= S) return failed("a column's contact reaches the window");
+    if (first <= 0 || last + 1 >= S)
+      return failed("a column's contact reached the candidate window's edge", true);
     sums.add_row(R0, model.theta, x, area, first, last, e.front_x_m);
   }
   return finish(model, p.sinking_m, sums);

@@ -7,6 +7,7 @@
 
 #include "modaltyre/contact/ground_patch.h"
 #include "modaltyre/contact/rolling_radius.h"
+#include "modaltyre/contact/validity.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/ground/rigid_wheel.h"
 #include "traction3d.h"
@@ -68,7 +69,11 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     in.warm_active = st.active;
     in.initial_force_N = st.force_N;
     const FootprintResult f = solve_ground_patch(model, op, {normal_load, 0}, g, in);
-    if (!f.ok()) return case_result(c, pass, f.message, f.status);
+    if (!f.ok()) {
+      TractionResult r = case_result(c, pass, f.message, f.status);
+      r.window_exceeded = f.window_exceeded;
+      return r;
+    }
     st.active = f.active;
     st.bekker_width_m = std::min(width, f.contact_length_m);
     const double b_change = std::abs(st.bekker_width_m - b_used);
@@ -198,10 +203,22 @@ TractionResult rigid_pass(const TyreModel& model, const ground::GroundSettings& 
 }
 
 // The slip's reference and the tractive efficiency DP V / (T omega), V / omega = rho R0.
-void finish_case(TractionResult& r, const TractionCase& c, double R0, const RollingRadius& re) {
+void finish_case(TractionResult& r, const TractionCase& c, const TyreConfig& config, bool rigid,
+                 const RollingRadius& re) {
+  const double R0 = config.outer_radius_m;
   r.rolling_radius_m = re.radius_m;
   r.loaded_radius_m = re.loaded_radius_m;
   r.slip_radius_m = c.slip_radius_m > 0 ? c.slip_radius_m : R0;
+  r.window_m = config.mesh.window_m;
+  if (!r.ok()) {
+    r.valid = false;
+    r.validity = "not computed: " + r.message;
+    return;
+  }
+  const Validity v = validity_on_soil(config, r.tyre_deflection_m, r.soil_sinkage_m,
+                                      r.entry_angle_rad, r.exit_angle_rad, rigid);
+  r.valid = v.valid;
+  r.validity = v.reason;
   if (r.ok() && r.torque_Nm > 0 && r.drawbar_pull_N > 0)
     r.tractive_efficiency = r.drawbar_pull_N * speed_ratio_over_R0(c, R0) * R0 / r.torque_Nm;
 }
@@ -228,7 +245,7 @@ TractionResult traction_pass(const TyreModel& model, const ground::GroundSetting
   }
   RollingRadius rigid;  // the rigid cylinder rolls on the road at its radius
   if (o.rigid) rigid.radius_m = rigid.loaded_radius_m = R0;
-  finish_case(r, c, R0, rigid);
+  finish_case(r, c, model.config, o.rigid, rigid);
   return r;
 }
 
@@ -266,7 +283,12 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
     const RollingRadius& re = it->second;
     if (o.slip_reference == SlipReference::rolling) {
       if (!re.ok()) {
-        for (int p = 1; p <= o.passes; ++p) out.push_back(detail::case_result(c, p, re.message));
+        for (int p = 1; p <= o.passes; ++p) {
+          TractionResult r = detail::case_result(c, p, re.message);
+          r.window_exceeded = re.window_exceeded;
+          finish_case(r, c, model.config, o.rigid, re);
+          out.push_back(std::move(r));
+        }
         continue;
       }
       c.slip_radius_m = re.radius_m;
@@ -287,7 +309,7 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
       if (!r.ok() && warm) r = run();
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
-      finish_case(r, c, R0, re);
+      finish_case(r, c, model.config, o.rigid, re);
       prior = r.z_max_m;
       prior_columns = r.column_z_max_m;
       out.push_back(std::move(r));

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "modaltyre/contact/footprint.h"
 #include "modaltyre/ground/rigid_wheel.h"
 #include "modaltyre/solvers/toeplitz_compliance.h"
 #include "modaltyre/solvers/unilateral_contact.h"
@@ -279,10 +280,16 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
           last = i;
         }
       if (first < 0) continue;
-      if (first == 0 || last == S - 1)
-        return case_result(c, pass,
-                           "contact reached the edge of the candidate window: increase "
-                           "contact.window_mm");
+      if (first == 0 || last == S - 1) {
+        TractionResult r =
+            case_result(c, pass,
+                        "contact reached the edge of the candidate window (+-" +
+                            std::to_string(int(0.5e3 * m.config.mesh.window_m)) +
+                            " mm): increase contact.window_mm (e.g. to " +
+                            std::to_string(int(suggested_window_mm(m.config))) + ")");
+        r.window_exceeded = true;
+        return r;
+      }
       columns_in_contact += class_weight_[k];
       // The level e - rut (the compression beyond the surface inside, minus the gap outside),
       // linear to its zero between the last cell in contact and the next.

@@ -86,7 +86,7 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
       if (r.on_soil) units.back()["soil_depth_mm"] = round_sig(u.soil_depth_m * 1e3);
     }
     const double peak = peak_pressure_Pa(p);
-    const contact::Validity v = contact::validity(model.config, r.sinking_m, r.contact_length_m);
+    const contact::Validity v = contact::validity(model.config, r);
     cases.push_back({{"load_N", r.load.load_N},
                      {"valid", v.valid},
                      {"validity", v.valid ? nlohmann::json(nullptr) : nlohmann::json(v.reason)},

@@ -14,6 +14,12 @@ namespace modaltyre::report {
 
 nlohmann::json traction_case_json(const contact::TractionResult& r, bool with_pass) {
   const double deg = 180 / M_PI;
+  if (!r.ok()) {  // a failed slip: its reason, no numbers
+    nlohmann::json j = {{"slip", r.slip}, {"load_N", r.load_N},     {"converged", false},
+                        {"valid", false}, {"validity", r.validity}, {"error", r.message}};
+    if (with_pass) j["pass"] = r.pass;
+    return j;
+  }
   nlohmann::json j = {{"slip", r.slip},
                       {"load_N", r.load_N},
                       {"soil_sinkage_mm", round_sig(r.soil_sinkage_m * 1e3)},
@@ -30,8 +36,11 @@ nlohmann::json traction_case_json(const contact::TractionResult& r, bool with_pa
                       {"bekker_width_mm", round_sig(r.bekker_width_m * 1e3)},
                       {"rolling_radius_mm", round_sig(r.rolling_radius_m * 1e3)},
                       {"loaded_radius_mm", round_sig(r.loaded_radius_m * 1e3)},
+                      {"window_mm", round_sig(r.window_m * 1e3)},
                       {"tractive_efficiency", round_sig(r.tractive_efficiency)},
                       {"converged", r.ok()},
+                      {"valid", r.valid},
+                      {"validity", r.valid ? nlohmann::json(nullptr) : nlohmann::json(r.validity)},
                       {"iterations", r.iterations}};
   if (with_pass) j["pass"] = r.pass;
   return j;
@@ -103,65 +112,6 @@ nlohmann::json traction_json(const contact::TyreConfig& config, const ground::Gr
     doc["self_propelled_point"] = curves[0]["self_propelled_point"];
   }
   return doc;
-}
-
-void require_traction_converged(const std::vector<contact::TractionResult>& results) {
-  for (const auto& r : results) {
-    if (r.ok()) continue;
-    std::ostringstream msg;
-    msg << "traction at load " << r.load_N << " N, slip " << r.slip << ", pass " << r.pass << ": "
-        << r.message;
-    throw ComputationError(msg.str());
-  }
-}
-
-TractionSetup traction_setup(const std::string& config_path, const std::string& ground_path,
-                             const std::vector<std::string>& overrides) {
-  TractionSetup s;
-  s.config = config_on_ground(config_path, ground_path, overrides);
-  s.rigid = s.config.rigid;
-  s.ground = s.config.ground;
-  s.ground_source = ground_path.empty() ? config_path : ground_path;
-  if (!s.ground.soil())
-    throw InputError({s.ground_source, 0, "ground.model"},
-                     "traction needs a soil: model bekker or kelvin_voigt");
-  return s;
-}
-
-void use_2d_patch_of_3d(contact::TyreConfig& config) {
-  if (!config.footprint_3d) return;
-  config.tread.width_m = config.footprint_3d->tread_width_m;
-  config.footprint_3d.reset();
-}
-
-std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
-                                                  const std::vector<double>& loads_N,
-                                                  const std::vector<double>& slips, int passes) {
-  if (loads_N.empty()) throw InputError({"loads_N", 0, ""}, "give at least one load [N]");
-  if (slips.empty()) throw InputError({"slips", 0, ""}, "give at least one slip");
-  // The command's ranges (app/cmd_traction.cc): a braked wheel locks at s = -1, a driven one
-  // spins in place at s = 1; 1e7 N exceeds any tyre; passes 1-20.
-  for (double s : slips)
-    if (!(s >= -0.99 && s <= 1))
-      throw InputError({"slips", 0, ""}, "slip " + std::to_string(s) + " outside [-0.99, 1]");
-  for (double F : loads_N)
-    if (!(F >= contact::kMinLoad_N && F <= contact::kMaxLoad_N))
-      throw InputError({"loads_N", 0, ""}, "load " + std::to_string(F) + " N outside [1e-6, 1e7]");
-  if (passes < 1 || passes > 20) throw InputError({"passes", 0, ""}, "passes must be 1-20");
-  contact::TyreConfig config = setup.config;
-  if (setup.patch_2d || setup.rigid) use_2d_patch_of_3d(config);
-  config.ground = setup.ground;
-  contact::TractionOptions opt;
-  opt.rigid = setup.rigid;
-  opt.passes = passes;
-  opt.slip_reference = setup.slip_reference;
-  std::vector<contact::TractionCase> cases;
-  for (double load : loads_N)
-    for (double s : slips) cases.push_back({load, s});
-  const contact::TyreModel model = contact::build_tyre_model(config);
-  auto results = contact::steady_traction(model, setup.ground, cases, opt);
-  require_traction_converged(results);
-  return results;
 }
 
 }  // namespace modaltyre::report

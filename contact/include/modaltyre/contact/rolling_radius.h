@@ -23,9 +23,10 @@ namespace modaltyre::contact {
 struct RollingRadius {
   SolveStatus status = SolveStatus::failed;
   std::string message;
-  double radius_m = 0;         ///< r_e
-  double loaded_radius_m = 0;  ///< the axle's height above the road, R0 - deflection
-  double deflection_m = 0;     ///< the tyre's deflection on the road at this load
+  double radius_m = 0;           ///< r_e
+  double loaded_radius_m = 0;    ///< the axle's height above the road, R0 - deflection
+  double deflection_m = 0;       ///< the tyre's deflection on the road at this load
+  bool window_exceeded = false;  ///< failed: the contact reached the candidate window's edge
   bool ok() const { return modaltyre::ok(status); }
 };
 

@@ -70,6 +70,12 @@ struct TractionResult {
   double loaded_radius_m = 0;      ///< R0 - the deflection on the rigid road at this load
   double slip_radius_m = 0;        ///< the radius the slip is taken against (r_e or R0)
   double tractive_efficiency = 0;  ///< DP V / (T omega) when T > 0 and DP > 0, else 0
+  /// In the model's validity range on a soil (validity.h: the tyre's deflection, the contact's
+  /// extent and the soil's sinkage each against its own range); the reason when not.
+  bool valid = false;
+  std::string validity;
+  bool window_exceeded = false;  ///< failed: the contact reached the candidate window's edge
+  double window_m = 0;           ///< the candidate window it ran on (contact.window_mm)
   int iterations = 0;
   bool ok() const { return modaltyre::ok(status); }
 };
