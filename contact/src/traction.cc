@@ -64,6 +64,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     in.gap_offset_m = offset;
     // Bekker's b = min(width, contact length) iterates with the rolling state (fixed per step).
     in.bekker_width_m = st.bekker_width_m > 0 ? st.bekker_width_m : width;
+    in.slip = rolling_radius_slip(c, R0);
     in.fixed_bekker_width = true;
     const double b_used = in.bekker_width_m;
     in.warm_active = st.active;
@@ -160,8 +161,9 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       r.tyre_deflection_m = f.sinking_m - f.soil_sinkage_m;
       r.z_max_m = std::max(prior, *std::max_element(depth.begin(), depth.end()));
       r.rut_depth_m =
-          g.soil() ? g.normal_law(std::max(f.bekker_width_m, 1e-6))->rebound_depth_m(r.z_max_m)
-                   : 0.0;
+          g.soil()
+              ? g.normal_law(std::max(f.bekker_width_m, 1e-6), in.slip)->rebound_depth_m(r.z_max_m)
+              : 0.0;
       r.thrust_N = H;
       r.motion_resistance_N = Rc;
       r.drawbar_pull_N = dp;
@@ -224,6 +226,12 @@ void finish_case(TractionResult& r, const TractionCase& c, const TyreConfig& con
 }
 
 }  // namespace
+
+double rolling_radius_slip(const TractionCase& c, double R0_m) {
+  if (!(c.rolling_radius_m > 0)) return c.slip;
+  const double v_over_omega_re = speed_ratio_over_R0(c, R0_m) * R0_m / c.rolling_radius_m;
+  return v_over_omega_re <= 1 ? 1 - v_over_omega_re : 1 / v_over_omega_re - 1;
+}
 
 double speed_ratio_over_R0(const TractionCase& c, double R0_m) {
   return ground::speed_ratio(c.slip) * (c.slip_radius_m > 0 ? c.slip_radius_m / R0_m : 1.0);
@@ -293,6 +301,7 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
       }
       c.slip_radius_m = re.radius_m;
     }
+    if (re.ok()) c.rolling_radius_m = re.radius_m;
     double prior = 0;
     std::vector<double> prior_columns;  // 3D: the track's memory per column
     for (int p = 1; p <= o.passes; ++p) {

@@ -231,7 +231,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     if (!(normal_load > 0))
       return case_result(c, pass, "the shear's vertical component exceeds the load");
     const double b_used = st.bekker_width_m > 0 ? st.bekker_width_m : width;
-    const std::unique_ptr<ground::PressureSinkage> law = ground_.normal_law(b_used);
+    const std::unique_ptr<ground::PressureSinkage> law =
+        ground_.normal_law(b_used, rolling_radius_slip(c, R0));
     SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_, zmax);
     if (st.approach_m.size() == std::size_t(S))
       for (int i = 0; i < S; ++i) laws.set_approach(i, std::max(st.approach_m[i], laws.floor(i)));

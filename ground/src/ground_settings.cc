@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/ground/slip_sinkage.h"
 
 namespace modaltyre::ground {
 
@@ -20,8 +21,14 @@ const char* to_string(GroundModel model) {
   return "?";
 }
 
-std::unique_ptr<PressureSinkage> GroundSettings::normal_law(double b_m) const {
-  if (model == GroundModel::bekker) return std::make_unique<BekkerWong>(bekker, b_m);
+std::unique_ptr<PressureSinkage> GroundSettings::normal_law(double b_m, double slip) const {
+  if (model == GroundModel::bekker) {
+    auto law = std::make_unique<BekkerWong>(bekker, b_m);
+    const double f = slip_sinkage.factor(slip);
+    if (f == 1.0) return law;
+    slip_sinkage.validate();
+    return std::make_unique<SlipSinkageLaw>(std::move(law), f);
+  }
   if (model == GroundModel::kelvin_voigt) return std::make_unique<KelvinVoigtSoil>(kelvin_voigt);
   throw std::invalid_argument(std::string("ground model '") + to_string(model) +
                               "' is a rigid road, not a soil");
@@ -83,6 +90,13 @@ GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tr
     if (!(w.k0_kN_m3 + w.Au_kN_m4 > 0))
       u.fail("Au", "k0 and Au cannot both be 0 (leave out unloading: for a rigid-plastic soil)");
     g.bekker.unloading = w;
+  }
+  if (b.has("slip_sinkage")) {
+    const ConfigSection w = b.section("slip_sinkage");
+    SlipSinkage& ss = g.slip_sinkage;
+    ss.enabled = w.boolean("enabled", ss.enabled);
+    ss.k1 = w.number("k1", ss.k1, 0, 10);
+    ss.k2 = w.number("k2", ss.k2, 0, 0.99);
   }
   if (b.has("wong_reece")) {
     const ConfigSection w = b.section("wong_reece");

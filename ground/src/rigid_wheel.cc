@@ -234,7 +234,7 @@ RigidWheelResult solve_wheel(const GroundSettings& ground, const RigidWheel& whe
   }
   const JanosiHanamoto shear(ground.soil_shear());
   auto at_width = [&](double b) {
-    const auto law = ground.normal_law(b);
+    const auto law = ground.normal_law(b, rolling ? slip : 0.0);
     RigidWheelResult r =
         solve_sinkage(*law, shear, wheel, load_N, slip, prior, rolling, ground.wong_reece);
     r.bekker_width_m = b;

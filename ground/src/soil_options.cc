@@ -18,4 +18,16 @@ double WongReeceStress::peak_ratio(double slip) const {
   return std::clamp(c1 + c2 * slip, 0.0, 1.0);
 }
 
+void SlipSinkage::validate() const {
+  auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
+  if (!(k1 >= 0 && k1 <= 10)) bad("bekker.slip_sinkage.k1 must be in [0, 10]");
+  if (!(k2 >= 0 && k2 <= 0.99)) bad("bekker.slip_sinkage.k2 must be in [0, 0.99]");
+}
+
+double SlipSinkage::factor(double slip) const {
+  if (!enabled) return 1.0;
+  const double s = std::min(std::abs(slip), 1.0);
+  return (1 + k1 * s) / (1 - k2 * s);
+}
+
 }  // namespace modaltyre::ground

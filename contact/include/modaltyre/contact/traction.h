@@ -46,10 +46,16 @@ struct TractionCase {
   double load_N = 0;
   double slip = 0;           ///< in (-1, 1]
   double slip_radius_m = 0;  ///< the radius the slip is taken against (0: R0)
+  /// The rolling radius r_e (rolling_radius.h; 0: unknown), which the slip sinkage's slip is
+  /// taken against (ground/soil_options.h).
+  double rolling_radius_m = 0;
 };
 
 /// V / (omega R0) at the case's slip and reference radius (R0 the outer radius).
 double speed_ratio_over_R0(const TractionCase& c, double R0_m);
+
+/// The case's slip against its rolling radius (ISTVS), the slip as given when r_e is unknown.
+double rolling_radius_slip(const TractionCase& c, double R0_m);
 
 struct TractionResult {
   SolveStatus status = SolveStatus::failed;

@@ -12,6 +12,16 @@
 //     with theta_m = (c1 + c2 s) theta1 (clamped to [0, theta1]) and the rear angle
 //     theta2 = -c3 theta1 behind the vertical. c1 0.43, c2 0.32: Wong and Reece's compact sand
 //     (loose sand c1 0.18); c3 0: no rebound (the rigid-plastic soil's theta2 = 0).
+//
+//   slip_sinkage: {enabled: false, k1: 1, k2: 0.5}
+//     Sinkage that grows with slip as the shear excavates the soil under the contact (M. Lyasko,
+//     "Slip sinkage effect in soil-vehicle mechanics", J. Terramechanics 47 (2010) 21-31): the
+//     sinkage at slip s is the free-rolling one times
+//       f(s) = (1 + k1 |s|) / (1 - k2 |s|),     Lyasko's k1 = 1, k2 = 0.5 (soil-independent),
+//     f(0.5) = 2. Applied to the soil's pressure-sinkage law at the slip rolled (ISTVS slip,
+//     against the rolling radius): at a pressure p the soil sinks f times its law's sinkage
+//     (slip_sinkage.h), under the rigid wheel and the flexible tyre alike; |s| because a braked
+//     wheel excavates too.
 namespace modaltyre::ground {
 
 struct WongReeceStress {
@@ -22,6 +32,15 @@ struct WongReeceStress {
   void validate() const;  ///< std::invalid_argument naming the key
   /// theta_m / theta1 at slip s, clamped to [0, 1].
   double peak_ratio(double slip) const;
+};
+
+struct SlipSinkage {
+  bool enabled = false;
+  double k1 = 1.0;        ///< Lyasko's numerator coefficient, [0, 10]
+  double k2 = 0.5;        ///< Lyasko's denominator coefficient, [0, 0.99]
+  void validate() const;  ///< std::invalid_argument naming the key
+  /// f(s) = (1 + k1 |s|) / (1 - k2 |s|), 1 when off.
+  double factor(double slip) const;
 };
 
 }  // namespace modaltyre::ground
