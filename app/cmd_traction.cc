@@ -30,6 +30,7 @@ struct TractionArgs {
   int passes = 1;
   std::string patch;  ///< "3d" (a 3D config's default), "2d"; empty: the config's own
   std::string slip_reference = "rolling";  ///< rolling (r_e, ISTVS) | unloaded (R0)
+  double speed_km_h = -1;                  ///< the flexing loss's speed (-1: the config's)
   std::vector<std::string> overrides;
   bool json = false;
   std::string plot;
@@ -72,6 +73,13 @@ void register_traction(CLI::App& app) {
                   "the radius slip is taken against: rolling (default; r_e of the same tyre at "
                   "the same load free-rolling on the rigid road, ISTVS) or unloaded (R0)")
       ->check(CLI::IsMember({"rolling", "unloaded"}));
+  cmd->add_option("--speed-km-h", a->speed_km_h,
+                  "rolling speed of the tyre's flexing (hysteresis) loss on the road, 0-100 km/h "
+                  "(0: none; default: the config's transient.rolling.speed_km_h)")
+      ->check(physical_range(0, 100, "km/h",
+                             "steady traction on soil is a slow process (soil bins run at "
+                             "0.1-3 m/s)",
+                             true));
   cmd->add_option("--set", a->overrides,
                   "override a config key (tyre.rigid=true), or a soil key when --ground is "
                   "given (ground.bekker.n=0.8)");
@@ -86,6 +94,8 @@ void register_traction(CLI::App& app) {
     setup.patch_2d = a->patch == "2d";
     setup.slip_reference = a->slip_reference == "unloaded" ? contact::SlipReference::unloaded
                                                            : contact::SlipReference::rolling;
+    setup.speed_km_h = a->speed_km_h;
+    const double speed_km_h = report::traction_speed_km_h(setup);
     CommandFiles files;  // before anything is computed: no output over an input
     report::add_config_inputs(files, setup.config);
     files.input(a->ground, "--ground");
@@ -114,8 +124,8 @@ void register_traction(CLI::App& app) {
     const TractionRun run{&config, &g, setup.rigid, a->passes, setup.slip_reference};
     if (!a->plot.empty()) plot_traction(run, results, a->plot);
     if (a->json) {
-      print_json(
-          report::traction_json(config, g, results, setup.rigid, a->passes, setup.slip_reference));
+      print_json(report::traction_json(config, g, results, setup.rigid, a->passes,
+                                       setup.slip_reference, setup.rigid ? 0.0 : speed_km_h));
       return;
     }
     print_traction_table(run, results);

@@ -36,8 +36,8 @@ void print_traction_table(const TractionRun& run,
             << fixed(contact_width_m(run) * 1e3, 1) << " mm on " << soil_name(*run.ground)
             << "; slip against " << (rolling ? "the rolling radius r_e (ISTVS)" : "R0") << "\n";
   std::cout << "  load_N    slip" << (run.passes > 1 ? "  pass" : "")
-            << "  sinkage_mm  rut_mm  drawbar_N  thrust_N  resist_N  torque_Nm  entry_deg  "
-               "exit_deg  b_mm   eta\n";
+            << "  sinkage_mm  rut_mm  drawbar_N  thrust_N  resist_N  (compact   flex  "
+               "bulldoze)  torque_Nm  entry_deg  exit_deg  b_mm   eta\n";
   std::vector<std::string> notes;  // why rows are marked
   for (const auto& r : results) {
     char line[256];
@@ -50,9 +50,11 @@ void print_traction_table(const TractionRun& run,
       continue;
     }
     std::snprintf(line, sizeof line,
-                  "  %10.2f  %6.2f  %9.1f  %8.1f  %8.1f  %9.1f  %9.2f  %8.2f  %5.1f  %4.2f",
+                  "  %10.2f  %6.2f  %9.1f  %8.1f  %8.1f  (%7.1f %6.1f  %8.1f)  %9.1f  %9.2f  %8.2f"
+                  "  %5.1f  %4.2f",
                   r.soil_sinkage_m * 1e3, r.rut_depth_m * 1e3, r.drawbar_pull_N, r.thrust_N,
-                  r.motion_resistance_N, r.torque_Nm, r.entry_angle_rad * 180 / M_PI,
+                  r.motion_resistance_N, r.compaction_resistance_N, r.flexing_resistance_N,
+                  r.bulldozing_resistance_N, r.torque_Nm, r.entry_angle_rad * 180 / M_PI,
                   r.exit_angle_rad * 180 / M_PI, r.bekker_width_m * 1e3, r.tractive_efficiency);
     std::cout << line;
     if (!r.valid) {

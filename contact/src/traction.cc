@@ -204,9 +204,15 @@ TractionResult rigid_pass(const TyreModel& model, const ground::GroundSettings& 
   return r;
 }
 
-// The slip's reference and the tractive efficiency DP V / (T omega), V / omega = rho R0.
-void finish_case(TractionResult& r, const TractionCase& c, const TyreConfig& config, bool rigid,
-                 const RollingRadius& re) {
+// What a case's row adds to its pass (docs/soil.md sections 5.1-5.4): the slip's reference, the
+// validity, the motion resistance by its parts (compaction from the pass, the tyre's flexing
+// loss on the road, the soil's bulldozing ahead of the contact beyond the incoming surface), the
+// drawbar pull DP = H - their sum, and the tractive efficiency DP V / (T omega), V / omega = rho
+// R0.
+void finish_case(TractionResult& r, const TractionCase& c, const TyreModel& model,
+                 const ground::GroundSettings& g, const TractionOptions& o, const RollingRadius& re,
+                 double incoming_rut_m) {
+  const TyreConfig& config = model.config;
   const double R0 = config.outer_radius_m;
   r.rolling_radius_m = re.radius_m;
   r.loaded_radius_m = re.loaded_radius_m;
@@ -218,10 +224,24 @@ void finish_case(TractionResult& r, const TractionCase& c, const TyreConfig& con
     return;
   }
   const Validity v = validity_on_soil(config, r.tyre_deflection_m, r.soil_sinkage_m,
-                                      r.entry_angle_rad, r.exit_angle_rad, rigid);
+                                      r.entry_angle_rad, r.exit_angle_rad, o.rigid);
   r.valid = v.valid;
   r.validity = v.reason;
-  if (r.ok() && r.torque_Nm > 0 && r.drawbar_pull_N > 0)
+  r.compaction_resistance_N = r.motion_resistance_N;
+  const auto flex = o.flexing_resistance_N.find(c.load_N);
+  r.flexing_resistance_N = o.rigid || flex == o.flexing_resistance_N.end() ? 0.0 : flex->second;
+  if (g.model == ground::GroundModel::bekker) {
+    const double width =
+        !o.rigid && config.footprint_3d ? config.footprint_3d->tread_width_m : config.tread.width_m;
+    const ground::JanosiParams& shear = g.soil_shear();
+    r.bulldozing_resistance_N =
+        ground::bulldozing_resistance_N(g.bulldozing, shear.cohesion_kPa, shear.friction_angle_deg,
+                                        width, r.soil_sinkage_m - incoming_rut_m);
+  }
+  r.motion_resistance_N =
+      r.compaction_resistance_N + r.flexing_resistance_N + r.bulldozing_resistance_N;
+  r.drawbar_pull_N = r.thrust_N - r.motion_resistance_N;
+  if (r.torque_Nm > 0 && r.drawbar_pull_N > 0)
     r.tractive_efficiency = r.drawbar_pull_N * speed_ratio_over_R0(c, R0) * R0 / r.torque_Nm;
 }
 
@@ -253,7 +273,7 @@ TractionResult traction_pass(const TyreModel& model, const ground::GroundSetting
   }
   RollingRadius rigid;  // the rigid cylinder rolls on the road at its radius
   if (o.rigid) rigid.radius_m = rigid.loaded_radius_m = R0;
-  finish_case(r, c, model.config, o.rigid, rigid);
+  finish_case(r, c, model, g, o, rigid, 0.0);
   return r;
 }
 
@@ -294,7 +314,7 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
         for (int p = 1; p <= o.passes; ++p) {
           TractionResult r = detail::case_result(c, p, re.message);
           r.window_exceeded = re.window_exceeded;
-          finish_case(r, c, model.config, o.rigid, re);
+          finish_case(r, c, model, g, o, re, 0.0);
           out.push_back(std::move(r));
         }
         continue;
@@ -302,7 +322,7 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
       c.slip_radius_m = re.radius_m;
     }
     if (re.ok()) c.rolling_radius_m = re.radius_m;
-    double prior = 0;
+    double prior = 0, prior_rut = 0;
     std::vector<double> prior_columns;  // 3D: the track's memory per column
     for (int p = 1; p <= o.passes; ++p) {
       auto run = [&] {
@@ -318,8 +338,9 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
       if (!r.ok() && warm) r = run();
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
-      finish_case(r, c, model.config, o.rigid, re);
+      finish_case(r, c, model, g, o, re, prior_rut);
       prior = r.z_max_m;
+      prior_rut = r.rut_depth_m;
       prior_columns = r.column_z_max_m;
       out.push_back(std::move(r));
       if (!out.back().ok()) break;

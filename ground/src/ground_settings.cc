@@ -98,6 +98,12 @@ GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tr
     ss.k1 = w.number("k1", ss.k1, 0, 10);
     ss.k2 = w.number("k2", ss.k2, 0, 0.99);
   }
+  if (b.has("bulldozing")) {
+    const ConfigSection w = b.section("bulldozing");
+    g.bulldozing.enabled = w.boolean("enabled", g.bulldozing.enabled);
+    g.bulldozing.unit_weight_kN_m3 =
+        w.positive("unit_weight_kN_m3", g.bulldozing.unit_weight_kN_m3, 30);
+  }
   if (b.has("wong_reece")) {
     const ConfigSection w = b.section("wong_reece");
     WongReeceStress& wr = g.wong_reece;

@@ -29,6 +29,9 @@ nlohmann::json traction_case_json(const contact::TractionResult& r, bool with_pa
                       {"drawbar_pull_N", round_sig(r.drawbar_pull_N)},
                       {"thrust_N", round_sig(r.thrust_N)},
                       {"motion_resistance_N", round_sig(r.motion_resistance_N)},
+                      {"compaction_resistance_N", round_sig(r.compaction_resistance_N)},
+                      {"flexing_resistance_N", round_sig(r.flexing_resistance_N)},
+                      {"bulldozing_resistance_N", round_sig(r.bulldozing_resistance_N)},
                       {"torque_Nm", round_sig(r.torque_Nm)},
                       {"entry_angle_deg", round_sig(r.entry_angle_rad * deg)},
                       {"exit_angle_deg", round_sig(r.exit_angle_rad * deg)},
@@ -67,7 +70,7 @@ nlohmann::json traction_curves_json(const std::vector<contact::TractionResult>& 
 
 nlohmann::json traction_json(const contact::TyreConfig& config, const ground::GroundSettings& g,
                              const std::vector<contact::TractionResult>& results, bool rigid,
-                             int passes, contact::SlipReference reference) {
+                             int passes, contact::SlipReference reference, double speed_km_h) {
   nlohmann::json cases = nlohmann::json::array();
   bool patch_3d = false;  // the 3D patch's results carry the track per column
   for (const auto& r : results) {
@@ -83,7 +86,10 @@ nlohmann::json traction_json(const contact::TyreConfig& config, const ground::Gr
                         {"cohesion_kPa", g.bekker_shear.cohesion_kPa},
                         {"friction_angle_deg", g.bekker_shear.friction_angle_deg},
                         {"shear_modulus_K_mm", g.bekker_shear.shear_modulus_K_mm},
-                        {"rigid_plastic", !g.bekker.unloading.has_value()}};
+                        {"rigid_plastic", !g.bekker.unloading.has_value()},
+                        {"wong_reece", g.wong_reece.enabled},
+                        {"slip_sinkage", g.slip_sinkage.enabled},
+                        {"bulldozing", g.bulldozing.enabled}};
   }
   const bool rolling = reference == contact::SlipReference::rolling;
   const nlohmann::json curves = traction_curves_json(results);
@@ -104,6 +110,7 @@ nlohmann::json traction_json(const contact::TyreConfig& config, const ground::Gr
                : "driven s = 1 - V/(omega R0) > 0, braked s = omega R0/V - 1 < 0, R0 the outer "
                  "radius"},
       {"ground", ground},
+      {"speed_km_h", speed_km_h},
       {"passes", passes},
       {"cases", cases},
       {"curves", curves}};

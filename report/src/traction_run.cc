@@ -7,6 +7,7 @@
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
 #include "modaltyre/report/ground_input.h"
+#include "modaltyre/report/traction_flexing.h"
 #include "modaltyre/report/traction_json.h"
 
 namespace modaltyre::report {
@@ -64,6 +65,17 @@ void use_2d_patch_of_3d(contact::TyreConfig& config) {
   config.footprint_3d.reset();
 }
 
+double traction_speed_km_h(const TractionSetup& setup) {
+  const double v =
+      setup.speed_km_h >= 0 ? setup.speed_km_h : setup.config.transient.rolling.speed_m_s * 3.6;
+  if (!(v >= 0 && v <= 100))
+    throw InputError({"--speed-km-h", 0, ""},
+                     "the flexing loss's speed " + number_text(v) +
+                         " km/h is outside [0, 100] (steady traction on soil is a slow "
+                         "process; transient.rolling.speed_km_h gives the default)");
+  return v;
+}
+
 std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
                                                   const std::vector<double>& loads_N,
                                                   const std::vector<double>& slips, int passes) {
@@ -89,6 +101,10 @@ std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
   for (double load : loads_N)
     for (double s : slips) cases.push_back({load, s});
   contact::TyreModel model = contact::build_tyre_model(config);
+  // The tyre's flexing loss on the rigid road at each load (report/traction_flexing.h).
+  if (!setup.rigid)
+    opt.flexing_resistance_N =
+        flexing_resistance_N(model, loads_N, traction_speed_km_h(setup) / 3.6);
   std::vector<std::vector<contact::TractionResult>> per_case =
       by_case(contact::steady_traction(model, setup.ground, cases, opt));
   // The candidate window grows where the sinkage needs it: the cases whose contact reached its

@@ -96,4 +96,44 @@ TEST_F(TractionCurvesCli, RowsCarryTheirValidityAndTheCurvesTheirPoints) {
   EXPECT_NE(text.out.find("outside the validity range"), std::string::npos) << text.out;
 }
 
+// Done-when: motion resistance = the sum of its reported parts; the flexing part is the tyre's
+// own rolling resistance on the road at the same load and speed, as `transient --scenario
+// rolling` measures it.
+TEST_F(TractionCurvesCli, MotionResistanceIsTheSumOfItsReportedParts) {
+  const auto r = traction("lete_sand", "3000", {"0", "0.2"},
+                          {"--set", "ground.bekker.bulldozing.enabled=true", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const double speed = j["speed_km_h"];
+  EXPECT_GT(speed, 0.0);
+  for (const auto& c : j["cases"]) {
+    const double parts = c["compaction_resistance_N"].get<double>() +
+                         c["flexing_resistance_N"].get<double>() +
+                         c["bulldozing_resistance_N"].get<double>();
+    EXPECT_NEAR(c["motion_resistance_N"].get<double>(), parts, 1e-6 * parts);
+    EXPECT_NEAR(c["drawbar_pull_N"].get<double>(),
+                c["thrust_N"].get<double>() - c["motion_resistance_N"].get<double>(), 1e-6 * parts);
+    EXPECT_GT(c["flexing_resistance_N"].get<double>(), 0.0);
+    EXPECT_GT(c["bulldozing_resistance_N"].get<double>(), 0.0);
+  }
+  const auto t = run({"transient", kConfig2d, "--scenario", "rolling", "--set",
+                      "contact.unit_length_mm=2", "--set", "transient.rolling.load_N=3000", "--set",
+                      "transient.rolling.speed_km_h=" + std::to_string(speed), "--json"});
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  const double road = nlohmann::json::parse(t.out)["final"]["rolling_resistance_N"];
+  EXPECT_NEAR(j["cases"][0]["flexing_resistance_N"].get<double>(), road, 1e-6 * road);
+  // At zero speed the tyre has no hysteresis loss and bulldozing is off by default: the motion
+  // resistance is the compaction alone, as before these parts.
+  const auto still = traction("lete_sand", "3000", {"0.2"}, {"--speed-km-h", "0", "--json"});
+  ASSERT_EQ(still.exit_code, 0) << still.err;
+  const nlohmann::json still_json = nlohmann::json::parse(still.out);
+  const auto& c = still_json["cases"][0];
+  EXPECT_EQ(c["flexing_resistance_N"].get<double>(), 0.0);
+  EXPECT_EQ(c["bulldozing_resistance_N"].get<double>(), 0.0);
+  EXPECT_EQ(c["motion_resistance_N"], c["compaction_resistance_N"]);
+  const auto fast = traction("lete_sand", "3000", {"0.2"}, {"--speed-km-h", "120"});
+  EXPECT_EQ(fast.exit_code, 2);
+  EXPECT_NE(fast.err.find("--speed-km-h"), std::string::npos) << fast.err;
+}
+
 }  // namespace

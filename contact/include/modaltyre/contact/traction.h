@@ -24,10 +24,12 @@
 //  3. The horizontal forces act on the carcass (seed 001's f_xi through H_tr, H_tt: the vertical
 //     displacement they cause enters the gap, vertical_from_horizontal) and on the tread.
 // Repeated until the sinkage profile, the drawbar pull and the load share settle.
-// Resultants: thrust H = sum tau b dx, motion resistance R_c = sum f tan alpha, drawbar pull
-// DP = H - R_c, torque T = sum (f_x h + f_z x) about the axle (h the axle's height above the
+// Resultants: thrust H = sum tau b dx, compaction resistance R_c = sum f tan alpha, the motion
+// resistance R = R_c + the tyre's flexing loss + the soil's bulldozing, drawbar pull DP = H - R,
+// torque T = sum (f_x h + f_z x) about the axle (h the axle's height above the
 // point, x its position ahead of the axle); tractive efficiency DP V / (T omega) where the wheel
 // is driven (T > 0) and pulls (DP > 0), else 0.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -69,7 +71,12 @@ struct TractionResult {
   std::vector<double> column_z_max_m;
   double sinking_m = 0;  ///< axle approach to the undisturbed surface
   double tyre_deflection_m = 0;
+  /// Drawbar pull DP = H - motion resistance, motion resistance = compaction + flexing +
+  /// bulldozing (docs/soil.md section 5.4).
   double drawbar_pull_N = 0, thrust_N = 0, motion_resistance_N = 0, torque_Nm = 0;
+  double compaction_resistance_N = 0;  ///< the soil's: sum f tan(alpha) (the rigid wheel's R_c)
+  double flexing_resistance_N = 0;     ///< the tyre's hysteresis on the rigid road (0: rigid)
+  double bulldozing_resistance_N = 0;  ///< the soil pushed ahead (ground.bekker.bulldozing)
   double entry_angle_rad = 0, exit_angle_rad = 0;  ///< contact edges seen from the axle
   double contact_length_m = 0, bekker_width_m = 0;
   double rolling_radius_m = 0;     ///< r_e at this load (rolling_radius.h; R0 for the rigid wheel)
@@ -90,6 +97,10 @@ struct TractionOptions {
   bool rigid = false;  ///< the rigid cylinder of the outer radius (ground/rigid_wheel.h)
   int passes = 1;      ///< 1..20: each pass meets the previous pass's rut
   SlipReference slip_reference = SlipReference::rolling;
+  /// Per load [N]: the tyre's own rolling resistance on the rigid road at the same load and
+  /// speed, its flexing (hysteresis) loss (report/traction_flexing.h measures it with the
+  /// transient's rolling scenario); a load not in the map: 0.
+  std::map<double, double> flexing_resistance_N;
   int max_iterations = 200;
   /// Settled when a step changes the drawbar pull, the shear's load share and every unit's
   /// horizontal force by at most tolerance x load, Bekker's b by tolerance x width, and the

@@ -20,6 +20,7 @@
 //                                   # rigid-plastic (no rebound)
 //       wong_reece: {enabled: false, c1: 0.43, c2: 0.32, c3: 0}   # soil_options.h
 //       slip_sinkage: {enabled: false, k1: 1, k2: 0.5}            # soil_options.h
+//       bulldozing: {enabled: false, unit_weight_kN_m3: 15.7}     # soil_options.h
 //     kelvin_voigt:                 # seed 000 eq. 23-28 (kelvin_voigt_soil.h)
 //       E2_MPa: 2
 //       eta2_kPa_s: 0
@@ -55,6 +56,7 @@ struct GroundSettings {
   JanosiParams bekker_shear{0, 30, 25};
   WongReeceStress wong_reece;  ///< the rigid wheel's stress distribution (soil_options.h)
   SlipSinkage slip_sinkage;    ///< sinkage growing with slip (soil_options.h)
+  Bulldozing bulldozing;       ///< the soil pushed ahead of the tyre (soil_options.h)
   KelvinVoigtParams kelvin_voigt;
   JanosiParams kelvin_voigt_shear{0, 30, 25};
 

@@ -22,6 +22,21 @@
 //     against the rolling radius): at a pressure p the soil sinks f times its law's sinkage
 //     (slip_sinkage.h), under the rigid wheel and the flexible tyre alike; |s| because a braked
 //     wheel excavates too.
+//
+//   bulldozing: {enabled: false, unit_weight_kN_m3: 15.7}
+//     The resistance of the soil pushed ahead of a sinking wheel, Bekker's simplified form (M. G.
+//     Bekker, Introduction to Terrain-Vehicle Systems, 1969; Wong, Theory of Ground Vehicles, 4th
+//     ed., section 2.7):
+//       R_b = b (0.67 c z K_pc + 0.5 gamma z^2 K_pg),
+//       K_pc = (N_c - tan phi) cos^2 phi,   K_pg = (2 N_g / tan phi + 1) cos^2 phi,
+//     b the contact's width, z the soil sinkage, c, phi the soil's cohesion and friction angle
+//     (its Janosi-Hanamoto keys), N_c, N_g the bearing capacity factors of a general shear
+//     failure, Vesic's set (A. S. Vesic, "Analysis of ultimate loads of shallow foundations",
+//     J. Soil Mech. Found. Div. ASCE 99, 1973; Wong quotes Terzaghi's, within 10-25 %):
+//     N_q = exp(pi tan phi) tan^2(pi/4 + phi/2), N_c = (N_q - 1) / tan phi (pi + 2 at phi = 0),
+//     N_g = 2 (N_q + 1) tan phi, so 2 N_g / tan phi = 4 (N_q + 1).
+//     gamma the soil's unit weight: 15.7 kN/m^3, a dry sand's 1.6 t/m^3 (Wong's Table 2.3 gives
+//     none; an assumption to state or measure).
 namespace modaltyre::ground {
 
 struct WongReeceStress {
@@ -42,5 +57,22 @@ struct SlipSinkage {
   /// f(s) = (1 + k1 |s|) / (1 - k2 |s|), 1 when off.
   double factor(double slip) const;
 };
+
+struct Bulldozing {
+  bool enabled = false;
+  double unit_weight_kN_m3 = 15.7;  ///< gamma, (0, 30]
+  void validate() const;            ///< std::invalid_argument naming the key
+};
+
+/// Vesic's N_c, N_q and N_g at the friction angle phi [deg] (see above).
+struct BearingFactors {
+  double N_c = 0, N_q = 0, N_g = 0;
+};
+BearingFactors bearing_factors(double friction_angle_deg);
+
+/// Bekker's bulldozing resistance [N] of a contact `width_m` wide sunk `sinkage_m` into a soil
+/// of cohesion c and friction angle phi (0 when off or not sunk).
+double bulldozing_resistance_N(const Bulldozing& b, double cohesion_kPa, double friction_angle_deg,
+                               double width_m, double sinkage_m);
 
 }  // namespace modaltyre::ground

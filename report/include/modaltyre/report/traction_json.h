@@ -25,7 +25,8 @@ nlohmann::json traction_json(const contact::TyreConfig& config,
                              const ground::GroundSettings& ground,
                              const std::vector<contact::TractionResult>& results, bool rigid,
                              int passes,
-                             contact::SlipReference reference = contact::SlipReference::rolling);
+                             contact::SlipReference reference = contact::SlipReference::rolling,
+                             double speed_km_h = 0);
 
 /// ComputationError naming the first failed case with its reason.
 void require_traction_converged(const std::vector<contact::TractionResult>& results);
@@ -41,6 +42,9 @@ struct TractionSetup {
   /// The slip's reference radius (`traction --slip-reference`): the rolling radius r_e on the
   /// rigid road at the same load (ISTVS, the default) or the outer radius R0.
   contact::SlipReference slip_reference = contact::SlipReference::rolling;
+  /// The rolling speed of the tyre's flexing loss [km/h] (`traction --speed-km-h`, [0, 100];
+  /// 0: none); negative: the config's transient.rolling.speed_km_h.
+  double speed_km_h = -1;
   std::string ground_source;  ///< the file that gave the ground (for its messages)
 };
 
@@ -54,7 +58,11 @@ TractionSetup traction_setup(const std::string& config_path, const std::string& 
 /// The 3D config's 2D patch (docs/soil.md sections 5, 9): the 3D tread width as contact width.
 void use_2d_patch_of_3d(contact::TyreConfig& config);
 
-/// Steady rolling for every load and slip (case by case, pass by pass), checked converged.
+/// The speed of the flexing loss [km/h]: setup.speed_km_h, or the config's rolling scenario's.
+double traction_speed_km_h(const TractionSetup& setup);
+
+/// Steady rolling for every load and slip (case by case, pass by pass): failed slips are rows
+/// with their reason (ComputationError only when every case failed).
 std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
                                                   const std::vector<double>& loads_N,
                                                   const std::vector<double>& slips, int passes);
