@@ -14,8 +14,8 @@ void plot_bevameter(const rheology::PlateData& data, const rheology::BevameterRe
   std::map<double, PlotSeries> measured;
   double zmax = 0;
   for (const auto& r : data.rows) {
-    PlotSeries& s = measured[r.plate_width_m];
-    s.title = "b = " + fixed(r.plate_width_m * 1e3, 0) + " mm";
+    PlotSeries& s = measured[r.bekker_b_m];
+    s.title = "b = " + fixed(r.bekker_b_m * 1e3, 0) + " mm";
     s.style = "points";
     s.x.push_back(r.sinkage_m * 1e3);
     s.y.push_back(r.pressure_Pa * 1e-3);
