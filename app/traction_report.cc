@@ -1,5 +1,6 @@
 #include "traction_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -87,27 +88,74 @@ void print_traction_table(const TractionRun& run,
   }
 }
 
+// Three panels against slip (braked to driven, through zero, the zero lines drawn): drawbar pull
+// over load with the towed and self-propelled points, soil sinkage, tractive efficiency. One
+// colour per curve (load and pass) for its line, its points and its marks; invalid rows again as
+// open circles in that colour.
 void plot_traction(const TractionRun& run, const std::vector<contact::TractionResult>& results,
                    const std::string& path) {
-  std::map<std::pair<double, int>, PlotSeries> curves;
-  PlotSeries invalid{"outside the validity range", {}, {}, "points"};
-  for (const auto& r : results) {
-    if (!r.ok()) continue;
-    auto& s = curves[{r.load_N, r.pass}];
-    s.title = fixed(r.load_N, 0) + " N" + (r.pass > 1 ? ", pass " + std::to_string(r.pass) : "");
-    s.style = "linespoints";
-    s.x.push_back(r.slip);
-    s.y.push_back(r.drawbar_pull_N / r.load_N);
-    if (!r.valid) invalid.x.push_back(r.slip), invalid.y.push_back(r.drawbar_pull_N / r.load_N);
-  }
   const bool rolling = run.reference == contact::SlipReference::rolling;
-  PlotPanel panel{"drawbar pull against slip",
-                  rolling ? "slip s (against r_e) [-]" : "slip s (against R0) [-]",
-                  "drawbar pull / load [-]",
-                  {}};
-  for (auto& [key, s] : curves) panel.series.push_back(std::move(s));
-  if (!invalid.x.empty()) panel.series.push_back(std::move(invalid));
-  render_plot(PlotFigure{{panel}}, path);
+  const std::string xlabel =
+      rolling ? "slip s against the rolling radius r_e [-]" : "slip s against R0 [-]";
+  std::string loads;
+  for (const contact::TractionCurve& c : contact::traction_curves(results))
+    if (loads.find(fixed(c.load_N, 0) + " N") == std::string::npos)
+      loads += (loads.empty() ? "" : ", ") + fixed(c.load_N, 0) + " N";
+  // The titles together name the tyre, the soil and the loads.
+  PlotPanel dp{
+      (run.rigid ? "rigid cylinder of " : "") + run.config->name + " on " + soil_name(*run.ground),
+      xlabel,
+      "drawbar pull / load [-]",
+      {}};
+  PlotPanel sink{"soil sinkage at " + loads, xlabel, "soil sinkage [mm]", {}};
+  PlotPanel eta{"tractive efficiency DP V / (T omega)", xlabel, "tractive efficiency [-]", {}};
+  double lo = 0, hi = 0;
+  int colour = 0;
+  for (const contact::TractionCurve& c : contact::traction_curves(results)) {
+    const std::string lc = plot_colour(colour++);
+    const std::string name =
+        fixed(c.load_N, 0) + " N" + (c.pass > 1 ? ", pass " + std::to_string(c.pass) : "");
+    PlotSeries d{name, {}, {}, "linespoints pt 7" + lc}, z{name, {}, {}, "linespoints pt 7" + lc},
+        e{name, {}, {}, "linespoints pt 7" + lc};
+    PlotSeries bad{name + ": outside the validity range", {}, {}, "points pt 6 ps 2" + lc};
+    std::vector<const contact::TractionResult*> rows = c.rows;
+    std::sort(rows.begin(), rows.end(),
+              [](const auto* a, const auto* b) { return a->slip < b->slip; });
+    for (const auto* r : rows) {
+      if (!r->ok()) continue;
+      lo = std::min(lo, r->slip), hi = std::max(hi, r->slip);
+      d.x.push_back(r->slip), d.y.push_back(r->drawbar_pull_N / r->load_N);
+      z.x.push_back(r->slip), z.y.push_back(r->soil_sinkage_m * 1e3);
+      e.x.push_back(r->slip), e.y.push_back(r->tractive_efficiency);
+      if (!r->valid) bad.x.push_back(r->slip), bad.y.push_back(r->drawbar_pull_N / r->load_N);
+    }
+    dp.series.push_back(std::move(d));
+    if (!bad.x.empty()) dp.series.push_back(std::move(bad));
+    if (c.towed)
+      dp.series.push_back({name + ": towed (T = 0)",
+                           {c.towed->slip},
+                           {c.towed->value / c.load_N},
+                           "points pt 9 ps 2" + lc});
+    if (c.self_propelled)
+      dp.series.push_back({name + ": self-propelled (DP = 0)",
+                           {c.self_propelled->slip},
+                           {0.0},
+                           "points pt 5 ps 2" + lc});
+    sink.series.push_back(std::move(z));
+    eta.series.push_back(std::move(e));
+  }
+  // The zero lines: the braked side, free rolling and the driven side at a glance.
+  const double span = std::max(hi - lo, 0.1);
+  dp.xmin = sink.xmin = eta.xmin = std::min(lo, 0.0) - 0.05 * span;
+  dp.xmax = sink.xmax = eta.xmax = std::max(hi, 0.0) + 0.05 * span;
+  double ylo = 0, yhi = 0;
+  for (const auto& s : dp.series)
+    for (double y : s.y) ylo = std::min(ylo, y), yhi = std::max(yhi, y);
+  dp.series.push_back({"", {dp.xmin, dp.xmax}, {0.0, 0.0}, "lines lc 8"});
+  dp.series.push_back({"", {0.0, 0.0}, {ylo, yhi}, "lines lc 8"});
+  PlotFigure figure{{dp, sink, eta}};
+  figure.width_px = 1600;
+  render_plot(figure, path);
 }
 
 }  // namespace modaltyre::app
