@@ -1,6 +1,7 @@
 #include "modaltyre/ground/ground_settings.h"
 
 #include <stdexcept>
+#include <vector>
 
 #include "modaltyre/core/errors.h"
 #include "modaltyre/ground/slip_sinkage.h"
@@ -56,12 +57,52 @@ JanosiParams read_shear(const ConfigSection& s, const JanosiParams& fallback) {
   return p;
 }
 
+// A soil's keys must not be dropped in silence (issue 44): a block of another model than the one
+// stated, or soil keys without a model (which would leave the rigid road), are refused; a soil
+// model needs its normal law's keys stated (no default stands in for a soil).
+void check_blocks(const ConfigSection& s, const std::string& model) {
+  const bool stated = s.has("model");
+  for (const char* block : {"bekker", "kelvin_voigt"}) {
+    if (!s.has(block)) continue;
+    // Named at the block's first key present (its --set when it came from the command line).
+    const ConfigSection keys = s.section(block);
+    std::string at;
+    for (const char* k : {"n", "k_c", "k_phi", "E2_MPa", "eta2_kPa_s", "layer_mm", "elastic_share",
+                          "cohesion_kPa", "friction_angle_deg", "shear_modulus_K_mm", "unloading",
+                          "wong_reece", "slip_sinkage", "bulldozing"})
+      if (at.empty() && keys.has(k)) at = k;
+    auto fail = [&](const std::string& why) {
+      if (at.empty()) s.fail(block, why);
+      keys.fail(at, why);
+    };
+    if (!stated)
+      fail(std::string("a soil's keys (ground.") + block +
+           ") without ground.model: state `model: " + block +
+           "` (without it the ground is the rigid road and these keys would be dropped)");
+    if (model != block)
+      fail(std::string("ground.") + block + " is given but ground.model is " + model +
+           ": its keys would be dropped (remove the block, or set model: " + block + ")");
+  }
+}
+
+void require(const ConfigSection& section, const std::vector<const char*>& keys,
+             const std::string& model) {
+  for (const char* k : keys)
+    if (!section.has(k))
+      section.fail(k, "required with model: " + model +
+                          " (no default stands in for a soil's law; configs/soils/ gives "
+                          "published values)");
+}
+
 }  // namespace
 
 GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tree) {
   GroundSettings g;
   const std::string model =
       s.choice("model", "rigid", {"rigid", "profile", "kelvin_voigt", "bekker"});
+  check_blocks(s, model);
+  if (model == "bekker") require(s.section("bekker"), {"n", "k_c", "k_phi"}, model);
+  if (model == "kelvin_voigt") require(s.section("kelvin_voigt"), {"E2_MPa", "layer_mm"}, model);
   g.model = model == "profile"        ? GroundModel::profile
             : model == "kelvin_voigt" ? GroundModel::kelvin_voigt
             : model == "bekker"       ? GroundModel::bekker
@@ -119,6 +160,9 @@ GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tr
   g.kelvin_voigt.layer_mm = kv.positive("layer_mm", g.kelvin_voigt.layer_mm, 1e5);
   g.kelvin_voigt.elastic_share = kv.positive("elastic_share", g.kelvin_voigt.elastic_share, 1);
   g.kelvin_voigt_shear = read_shear(kv, g.kelvin_voigt_shear);
+  const ConfigSection& own = g.model == GroundModel::kelvin_voigt ? kv : b;
+  g.shear_stated =
+      own.has("cohesion_kPa") && own.has("friction_angle_deg") && own.has("shear_modulus_K_mm");
   return g;
 }
 

@@ -56,6 +56,16 @@ TractionSetup traction_setup(const std::string& config_path, const std::string& 
   if (!s.ground.soil())
     throw InputError({s.ground_source, 0, "ground.model"},
                      "traction needs a soil: model bekker or kelvin_voigt");
+  // The drawbar pull is the soil's shear: no default stands in for it (issue 44).
+  if (!s.ground.shear_stated) {
+    const std::string block =
+        s.ground.model == ground::GroundModel::bekker ? "ground.bekker." : "ground.kelvin_voigt.";
+    throw InputError({s.ground_source, 0, block + "cohesion_kPa"},
+                     "traction needs the soil's shear keys stated: " + block +
+                         "{cohesion_kPa, friction_angle_deg, shear_modulus_K_mm} (identify "
+                         "shear SHEAR.csv --into-ground SOIL.yaml --write-ground OUT.yaml, or "
+                         "configs/soils/ for published values)");
+  }
   return s;
 }
 

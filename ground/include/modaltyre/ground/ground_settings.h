@@ -59,6 +59,8 @@ struct GroundSettings {
   Bulldozing bulldozing;       ///< the soil pushed ahead of the tyre (soil_options.h)
   KelvinVoigtParams kelvin_voigt;
   JanosiParams kelvin_voigt_shear{0, 30, 25};
+  /// The soil's three shear keys were stated (read_ground_settings); traction needs them.
+  bool shear_stated = false;
 
   /// A deformable soil (bekker, kelvin_voigt), as opposed to a rigid road.
   bool soil() const { return model == GroundModel::bekker || model == GroundModel::kelvin_voigt; }
