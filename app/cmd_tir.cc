@@ -1,7 +1,10 @@
 // modaltyre tir export CONFIG --output FILE.tir [--loads N...] [--fnomin N] [--set k=v]...
-//                      [--uncertainty [--uncertainty-method M] [--samples K]]
+//                      [--no-slip | --slip-loads N... --speed-kmh V --mu MU --slips K...
+//                       --rr-speeds-kmh V...] [--uncertainty [--uncertainty-method M] [--samples
+//                       K]]
 // modaltyre tir compare CONFIG FILE.tir [--json] [--plot FILE] [--fnomin N] [--points K]
 // The MF-Tyre/MF-Swift .tir bridge (tir/, docs/tir.md).
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -11,6 +14,7 @@
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/gnuplot.h"
+#include "modaltyre/core/progress.h"
 #include "modaltyre/tir/tir_compare.h"
 #include "modaltyre/tir/tir_export.h"
 #include "tir_bands.h"
@@ -27,7 +31,50 @@ struct TirArgs {
   bool json = false;
   bool uncertainty = false;
   UncertaintyMethodArgs method;
+  // The longitudinal laws (export) and their comparison (compare --slip).
+  bool no_slip = false, slip = false;
+  std::vector<double> slip_loads, slips, rr_speeds_kmh;
+  double speed_kmh = 60, mu = 0.8;
 };
+
+/// The slip runs' options from the arguments, with a progress bar on a terminal.
+tir::SlipExportOptions slip_options(const TirArgs& a, std::shared_ptr<ProgressBar>& bar) {
+  tir::SlipExportOptions o;
+  o.enabled = true;
+  o.loads_N = a.slip_loads;
+  o.run.speed_m_s = a.speed_kmh / 3.6;
+  o.run.mu = a.mu;
+  o.run.slips = a.slips;
+  for (double v : a.rr_speeds_kmh) o.speeds_m_s.push_back(v / 3.6);
+  o.progress = [&bar, last = 0](int done, int total) mutable {
+    if (!bar) bar = std::make_shared<ProgressBar>(static_cast<std::size_t>(total), "slip runs");
+    bar->tick(static_cast<std::size_t>(done - last));
+    last = done;
+  };
+  return o;
+}
+
+void print_slip_fit(const tir::TirSlipFit& s) {
+  const tir::MfLongitudinal& c = s.longitudinal;
+  std::cout << "  longitudinal (pure slip), " << s.curves.size() << " loads, F_z "
+            << fixed(s.fz_min_N, 0) << "-" << fixed(s.fz_max_N, 0) << " N, "
+            << fixed(s.basis.longvl_m_s * 3.6, 1) << " km/h, kappa " << s.kappa_min << " to "
+            << s.kappa_max << ", mu " << s.mu << ":\n"
+            << "    PCX1 " << c.pcx1 << ", PDX1 " << c.pdx1 << ", PDX2 " << c.pdx2 << ", PEX1 "
+            << c.pex1 << ", PEX2 " << c.pex2 << ", PEX3 " << c.pex3 << ", PEX4 " << c.pex4
+            << "\n    PKX1 " << c.pkx1 << ", PKX2 " << c.pkx2 << ", PKX3 " << c.pkx3 << ", PHX1 "
+            << c.phx1 << ", PHX2 " << c.phx2 << ", PVX1 " << c.pvx1 << ", PVX2 " << c.pvx2
+            << "\n  rolling resistance: QSY1 " << s.rolling.qsy1 << ", QSY2 " << s.rolling.qsy2
+            << ", QSY3 " << s.rolling.qsy3 << ", QSY4 " << s.rolling.qsy4 << ", QSY7 "
+            << s.rolling.qsy7 << "\n  effective rolling radius: Q_RE0 " << s.radius.q_re0
+            << ", BREFF " << s.radius.breff << ", DREFF " << s.radius.dreff << ", FREFF "
+            << s.radius.freff << "\n  fit residuals: F_x RMS " << pct(s.fx_over_fz.rms)
+            << " of F_z (max " << pct(s.fx_over_fz.max) << "), M_y RMS " << pct(s.rolling_rel.rms)
+            << " (max " << pct(s.rolling_rel.max) << ") at free rolling, RMS "
+            << pct(s.rolling_slip_rel.rms) << " (max " << pct(s.rolling_slip_rel.max)
+            << ") at slip, R_e max " << fixed(s.radius_m.max * 1e3, 4) << " mm; E_x at most "
+            << fixed(s.max_curvature, 3) << "\n";
+}
 
 nlohmann::json opt(const std::optional<double>& v, double scale = 1) {
   return v ? nlohmann::json(round_sig(*v * scale, 6)) : nlohmann::json(nullptr);
@@ -47,13 +94,18 @@ void run_export(const TirArgs& a, CLI::App* cmd) {
   if (cmd->count("--fnomin")) o.fnomin_N = a.fnomin;
   o.loads_N = a.loads;
   o.config_label = a.config;
+  std::shared_ptr<ProgressBar> slip_bar;
+  if (!a.no_slip) o.slip = slip_options(a, slip_bar);
   const tir::TirFit f = tir::fit_tir(model, o);
+  if (slip_bar) slip_bar->finish();
   std::optional<TirBands> bands;
   if (a.uncertainty) {
     uncertainty::PropagationOptions uo = a.method.options();
     UncertaintyProgress bar;
     uo.progress = bar.callback();
-    bands = tir_bands(config, o, f, uo);
+    tir::TirExportOptions vertical = o;  // the bands are the vertical coefficients'
+    vertical.slip.enabled = false;
+    bands = tir_bands(config, vertical, f, uo);
     bar.finish();
     o.comments = tir_band_comments(*bands);
   }
@@ -74,6 +126,7 @@ void run_export(const TirArgs& a, CLI::App* cmd) {
             << (f.width ? "RMS " + pct(f.width->rms_rel) : "not fitted: " + f.curve.width_reason)
             << "\n";
   if (!f.pfz1) std::cout << "  " << f.pfz1_reason << "\n";
+  if (f.slip) print_slip_fit(*f.slip);
   if (bands) print_tir_bands(*bands);
 }
 
@@ -138,6 +191,93 @@ void print_comparison(const tir::TirComparison& c) {
   line("width   ", c.rms_width, c.width_reason);
 }
 
+nlohmann::json slip_comparison_json(const tir::SlipComparison& s) {
+  nlohmann::json force = nlohmann::json::array(), rolling = nlohmann::json::array(),
+                 radius = nlohmann::json::array();
+  for (const auto& r : s.force) {
+    force.push_back({{"load_N", round_sig(r.target_load_N, 6)},
+                     {"fz_N", round_sig(r.fz_N, 6)},
+                     {"kappa", round_sig(r.kappa, 6)},
+                     {"model_fx_N", round_sig(r.model_fx_N, 6)},
+                     {"tir_fx_N", opt(r.tir_fx_N)}});
+  }
+  for (const auto& r : s.rolling) {
+    rolling.push_back({{"speed_kmh", round_sig(r.speed_m_s * 3.6, 6)},
+                       {"fz_N", round_sig(r.fz_N, 6)},
+                       {"model_my_Nm", round_sig(r.model_moment_Nm, 6)},
+                       {"tir_my_Nm", opt(r.tir_moment_Nm)}});
+  }
+  for (const auto& r : s.radius) {
+    radius.push_back({{"fz_N", round_sig(r.fz_N, 6)},
+                      {"model_re_mm", round_sig(r.model_radius_m * 1e3, 7)},
+                      {"tir_re_mm", opt(r.tir_radius_m, 1e3)}});
+  }
+  return {
+      {"speed_kmh", round_sig(s.speed_m_s * 3.6, 6)},
+      {"mu", s.mu},
+      {"force_rows", force},
+      {"rolling_rows", rolling},
+      {"radius_rows", radius},
+      {"rms",
+       {{"fx_over_fz", opt(s.rms_fx_over_fz)},
+        {"rolling_rel", opt(s.rms_rolling)},
+        {"radius_over_r0", opt(s.rms_radius_over_r0)}}},
+      {"max", {{"fx_over_fz", opt(s.max_fx_over_fz)}, {"rolling_rel", opt(s.max_rolling)}}},
+      {"reasons",
+       {{"force", s.force_reason}, {"rolling", s.rolling_reason}, {"radius", s.radius_reason}}}};
+}
+
+void print_slip_comparison(const tir::SlipComparison& s, bool dimensionless) {
+  std::cout << "\nLongitudinal laws at " << fixed(s.speed_m_s * 3.6, 1) << " km/h, road mu " << s.mu
+            << ", against the model's steady runs on a prescribed wheel (each law at its own "
+               "slip"
+            << (dimensionless
+                    ? "; the file's laws at the same F_z/FNOMIN, scaled to the model's size"
+                    : "")
+            << "):\n";
+  if (!s.rms_fx_over_fz) {
+    std::cout << "  F_x (pure slip)  null: " << s.force_reason << "\n";
+  } else {
+    std::cout << "  F_x (pure slip): RMS (.tir - model) / F_z " << pct(s.rms_fx_over_fz) << " (max "
+              << pct(s.max_fx_over_fz) << ")\n    load_N   kappa  model_fx_N  tir_fx_N\n";
+    // The table shows kappa 0, +-0.02, +-0.1, +-0.3 of the default grid; --json has every row.
+    const auto shown = [](double k) {
+      for (double m : {0.0, 0.02, 0.1, 0.3})
+        if (std::abs(std::abs(k) - m) < 1e-9) return true;
+      return false;
+    };
+    for (const auto& r : s.force) {
+      if (!shown(r.kappa)) continue;
+      std::cout << "  " << std::setw(8) << fixed(r.target_load_N, 0) << std::setw(8)
+                << fixed(r.kappa, 3) << std::setw(12) << fixed(r.model_fx_N, 1) << std::setw(10)
+                << (r.tir_fx_N ? fixed(*r.tir_fx_N, 1) : "-") << "\n";
+    }
+  }
+  if (!s.rms_rolling) {
+    std::cout << "  M_y (rolling resistance)  null: " << s.rolling_reason << "\n";
+  } else {
+    std::cout << "  M_y (rolling resistance, free rolling): RMS (.tir - model) / model "
+              << pct(s.rms_rolling) << " (max " << pct(s.max_rolling)
+              << ")\n    speed_kmh    fz_N  model_my_Nm  tir_my_Nm\n";
+    for (const auto& r : s.rolling) {
+      std::cout << "  " << std::setw(11) << fixed(r.speed_m_s * 3.6, 1) << std::setw(8)
+                << fixed(r.fz_N, 0) << std::setw(13) << fixed(r.model_moment_Nm, 3) << std::setw(11)
+                << (r.tir_moment_Nm ? fixed(*r.tir_moment_Nm, 3) : "-") << "\n";
+    }
+  }
+  if (!s.rms_radius_over_r0) {
+    std::cout << "  R_e  null: " << s.radius_reason << "\n";
+  } else {
+    std::cout << "  R_e (free rolling): RMS (.tir - model) / R0 " << pct(s.rms_radius_over_r0)
+              << "\n      fz_N  model_re_mm  tir_re_mm\n";
+    for (const auto& r : s.radius) {
+      std::cout << "  " << std::setw(8) << fixed(r.fz_N, 0) << std::setw(13)
+                << fixed(r.model_radius_m * 1e3, 3) << std::setw(11)
+                << (r.tir_radius_m ? fixed(*r.tir_radius_m * 1e3, 3) : "-") << "\n";
+    }
+  }
+}
+
 void plot_comparison(const tir::TirComparison& c, const std::string& path) {
   PlotFigure fig;
   fig.width_px = 1350;
@@ -192,13 +332,32 @@ void run_compare(const TirArgs& a, CLI::App* cmd) {
   tir::CompareOptions o;
   if (cmd->count("--fnomin")) o.fnomin_N = a.fnomin;
   o.points = a.points;
+  std::shared_ptr<ProgressBar> slip_bar;
+  if (a.slip) o.slip = slip_options(a, slip_bar);
   const auto c = tir::compare_tir(model, t, o);
+  if (slip_bar) slip_bar->finish();
   if (!a.plot.empty()) plot_comparison(c, a.plot);
   if (a.json) {
-    print_json(comparison_json(c));
+    nlohmann::json j = comparison_json(c);
+    if (c.slip) j["slip"] = slip_comparison_json(*c.slip);
+    print_json(j);
   } else {
     print_comparison(c);
+    if (c.slip) print_slip_comparison(*c.slip, c.dimensionless);
   }
+}
+
+/// The slip runs' options, shared by export and compare --slip.
+void add_slip_options(CLI::App* cmd, TirArgs& a) {
+  cmd->add_option("--slip-loads", a.slip_loads,
+                  "loads of the slip curves [N] (default 0.5, 0.75, 1, 1.25, 1.5 x FNOMIN; at "
+                  "least 3)");
+  cmd->add_option("--speed-kmh", a.speed_kmh, "speed of the slip curves, LONGVL [km/h] (60)");
+  cmd->add_option("--mu", a.mu, "road friction coefficient of the runs (0.8, the FMU's default)");
+  cmd->add_option("--slips", a.slips,
+                  "slips of the curves (default +-0.0025 ... +-0.3, 24 values)");
+  cmd->add_option("--rr-speeds-kmh", a.rr_speeds_kmh,
+                  "further free-rolling speeds for the rolling resistance [km/h] (40 80 100 120)");
 }
 
 }  // namespace
@@ -224,6 +383,10 @@ void register_tir(CLI::App& app) {
                "propagate the inputs' uncertainty (the hammer shapes' noise, stated std) to the "
                "fitted coefficients: printed and in the header's comments (docs/uncertainty.md)");
   add_uncertainty_method_options(ex, e->method);
+  add_slip_options(ex, *e);
+  ex->add_flag("--no-slip", e->no_slip,
+               "leave out the longitudinal, rolling-resistance and effective-radius laws (no "
+               "transient runs): the vertical and contact-patch file alone");
   ex->callback([e, ex] { run_export(*e, ex); });
 
   auto c = std::make_shared<TirArgs>();
@@ -238,6 +401,11 @@ void register_tir(CLI::App& app) {
   cmp->add_option("--set", c->overrides, "override a config key");
   cmp->add_flag("--json", c->json, "print JSON");
   cmp->add_option("--plot", c->plot, "draw load, length and width against deflection (.svg/.png)");
+  cmp->add_flag("--slip", c->slip,
+                "also compare the file's longitudinal force, rolling resistance and effective "
+                "radius with the model's steady runs on a prescribed wheel (runs the transient: "
+                "seconds to a minute)");
+  add_slip_options(cmp, *c);
   cmp->callback([c, cmp] { run_compare(*c, cmp); });
 }
 

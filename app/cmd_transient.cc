@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -19,6 +20,7 @@
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/report/condition_settings.h"
 #include "modaltyre/report/transient_json.h"
+#include "modaltyre/transient/decay.h"
 #include "modaltyre/transient/transient.h"
 #include "transient_bands.h"
 
@@ -69,44 +71,166 @@ std::string transient_csv(const transient::TransientResult& r) {
   return o.str();
 }
 
-void transient_plot(const transient::TransientResult& r, const std::string& path) {
-  PlotSeries load{"contact load", {}, {}}, sink{"sinking", {}, {}}, len{"contact length", {}, {}},
-      fx{"longitudinal force", {}, {}};
-  for (const auto& s : r.samples) {
-    load.x.push_back(s.t_s), load.y.push_back(s.load_N);
-    sink.x.push_back(s.t_s), sink.y.push_back(s.sinking_m * 1e3);
-    len.x.push_back(s.t_s), len.y.push_back(s.contact_length_m * 1e3);
-    fx.x.push_back(s.t_s), fx.y.push_back(s.longitudinal_force_N);
+// The scenario's conditions for the plot's title, e.g. "SF-350, cleat 10 x 20 mm at 30 km/h,
+// 4000 N".
+std::string scenario_title(const contact::TyreConfig& config, transient::Scenario scenario) {
+  using transient::Scenario;
+  const contact::TransientSettings& T = config.transient;
+  std::ostringstream o;
+  o << (config.name.empty() ? std::string("tyre") : config.name) << ", "
+    << transient::to_string(scenario);
+  switch (scenario) {
+    case Scenario::load_hold:
+      o << " " << fixed(T.load_hold.load_N, 0) << " N for " << fixed(T.load_hold.hold_s, 1) << " s";
+      break;
+    case Scenario::free_vibration:
+      o << " " << fixed(T.free_vibration.initial_load_N, 0) << " -> "
+        << fixed(T.free_vibration.load_N, 0) << " N";
+      break;
+    case Scenario::rolling:
+      o << " " << fixed(T.rolling.load_N, 0) << " N at " << fixed(T.rolling.speed_m_s * 3.6, 1)
+        << " km/h";
+      break;
+    case Scenario::cleat:
+      o << " " << fixed(T.cleat.height_m * 1e3, 1) << " x " << fixed(T.cleat.length_m * 1e3, 1)
+        << " mm, " << fixed(T.cleat.load_N, 0) << " N at " << fixed(T.cleat.speed_m_s * 3.6, 1)
+        << " km/h";
+      break;
   }
+  if (config.ground.soil())
+    o << ", on "
+      << (config.ground.name.empty() ? ground::to_string(config.ground.model) : config.ground.name);
+  return o.str();
+}
+
+// The time series, one panel per signal that varies; a signal that stays within 0.5 % of its
+// scale over the run (a constant width while rolling, F_x = 0 while the load is held) is named
+// with its value in the first panel's title instead of drawn as a panel of its own (issue 44:
+// dead panels, and axes zoomed until a constant looked like a signal). The load and F_x panels
+// mark the extremes over the integrator's steps (the grid may pass between them).
+void transient_plot(const transient::TransientResult& r, const std::string& title,
+                    const std::string& path) {
+  struct Signal {
+    std::string name, unit, label;
+    double scale_factor;
+    std::function<double(const transient::TransientSample&)> get;
+  };
+  std::vector<Signal> signals = {
+      {"vertical load", "N", "load [N]", 1, [](const auto& s) { return s.load_N; }},
+      {"sinking", "mm", "sinking [mm]", 1, [](const auto& s) { return s.sinking_m * 1e3; }},
+      {"contact length", "mm", "length [mm]", 1,
+       [](const auto& s) { return s.contact_length_m * 1e3; }},
+      {"longitudinal force", "N", "F_x [N]", 0,
+       [](const auto& s) { return s.longitudinal_force_N; }}};
+  if (r.patch_3d)
+    signals.push_back(
+        {"contact width", "mm", "width [mm]", 1, [](const auto& s) { return s.width_m * 1e3; }});
+  if (r.on_soil)
+    signals.push_back({"soil sinkage", "mm", "soil sinkage [mm]", 1,
+                       [](const auto& s) { return s.soil_sinkage_m * 1e3; }});
+  double largest_load = 0;
+  for (const auto& s : r.samples) largest_load = std::max(largest_load, std::abs(s.load_N));
   PlotFigure fig;
   fig.width_px = 1200;
-  fig.height_px = 800;
-  const std::string sc = transient::to_string(r.scenario);
-  fig.panels.push_back({sc + ": vertical load", "t [s]", "load [N]", {load}});
-  fig.panels.push_back({sc + ": sinking", "t [s]", "sinking [mm]", {sink}});
-  fig.panels.push_back({sc + ": contact length", "t [s]", "length [mm]", {len}});
-  fig.panels.push_back({sc + ": longitudinal force", "t [s]", "F_x [N]", {fx}});
-  // Each panel spans at least 1 % of its signal's scale (forces: the largest vertical load):
-  // a constant with solver noise, such as F_x = +-1e-11 N while the load is held, is drawn
-  // flat instead of being auto-scaled into a signal.
-  auto largest = [](const PlotSeries& s) {
-    double m = 0;
-    for (double y : s.y) m = std::max(m, std::abs(y));
-    return m;
-  };
-  const double force_scale = largest(load);
-  std::vector<double> scales = {force_scale, largest(sink), largest(len), force_scale};
-  if (r.patch_3d) {  // the 3D patch: the contact width too
-    PlotSeries wid{"contact width", {}, {}};
-    for (const auto& s : r.samples) wid.x.push_back(s.t_s), wid.y.push_back(s.width_m * 1e3);
-    scales.push_back(largest(wid));
-    fig.panels.push_back({sc + ": contact width", "t [s]", "width [mm]", {wid}});
-    fig.height_px = 1000;
+  std::vector<std::string> constants;
+  std::vector<double> spans;
+  for (const Signal& sig : signals) {
+    PlotSeries series{sig.name, {}, {}};
+    double lo = INFINITY, hi = -INFINITY, big = 0;
+    for (const auto& s : r.samples) {
+      const double v = sig.get(s);
+      series.x.push_back(s.t_s), series.y.push_back(v);
+      lo = std::min(lo, v), hi = std::max(hi, v), big = std::max(big, std::abs(v));
+    }
+    // Forces are scaled by the largest vertical load, lengths by their own size.
+    const double scale = sig.scale_factor > 0 ? big : largest_load;
+    bool extreme = false;
+    const auto* x = sig.name == "vertical load"        ? &r.extremes.load_N
+                    : sig.name == "longitudinal force" ? &r.extremes.longitudinal_force_N
+                                                       : nullptr;
+    if (x && r.extremes.valid) {
+      lo = std::min(lo, x->min), hi = std::max(hi, x->max);
+      extreme = true;
+    }
+    if (!(hi - lo > 0.005 * scale)) {
+      const int decimals = sig.unit == "N" ? 0 : 1;
+      double level = 0.5 * (lo + hi);
+      if (std::abs(level) < 0.5 * std::pow(10.0, -decimals)) level = 0;  // not "-0"
+      constants.push_back(sig.name + " " + fixed(level, decimals) + " " + sig.unit);
+      continue;
+    }
+    PlotPanel panel{sig.name, "t [s]", sig.label, {series}};
+    if (extreme) {
+      PlotSeries marks{
+          "extremes over the integrator's steps", {x->t_min_s, x->t_max_s}, {x->min, x->max}};
+      marks.style = "points";
+      panel.series.push_back(marks);
+    }
+    fig.panels.push_back(panel);
+    spans.push_back(0.01 * scale);
   }
-  for (std::size_t i = 0; i < fig.panels.size(); ++i) {
-    ensure_min_y_span(fig.panels[i], 0.01 * scales[i]);
+  if (fig.panels.empty()) fig.panels.push_back({"", "t [s]", "", {}});
+  std::string head = title;
+  if (!constants.empty()) {
+    head += " (constant: ";
+    for (std::size_t i = 0; i < constants.size(); ++i) head += (i ? ", " : "") + constants[i];
+    head += ")";
   }
+  fig.panels.front().title = head + ": " + fig.panels.front().title;
+  for (std::size_t i = 0; i < spans.size(); ++i) ensure_min_y_span(fig.panels[i], spans[i]);
+  fig.height_px = 360;  // per row of panels (core/gnuplot.h)
   render_plot(fig, path);
+}
+
+// What the scenario was and what it measured: speed and cleat, the free vibration's period and
+// damping, the force extremes over the integrator's steps, and the output grid.
+void print_scenario_summary(const transient::TransientModel& model, transient::Scenario scenario,
+                            const transient::TransientResult& r) {
+  using transient::Scenario;
+  const contact::TransientSettings& T = model.settings;
+  if (scenario == Scenario::rolling || scenario == Scenario::cleat) {
+    const modal::CriticalSpeed c = transient::critical_speed_of(model);
+    const double v = scenario == Scenario::rolling ? T.rolling.speed_m_s : T.cleat.speed_m_s;
+    if (v >= transient::kNearCriticalShare * c.speed_m_s)
+      std::cout << "near the carcass's critical speed: " << fixed(v * 3.6, 1) << " km/h is "
+                << fixed(100 * v / c.speed_m_s, 0) << " % of " << fixed(c.speed_km_h(), 1)
+                << " km/h (order " << c.order
+                << "): a standing wave grows behind the contact, lengthening it and raising the "
+                   "rolling resistance steeply (docs/transient.md section 3a)\n";
+  }
+  if (scenario == Scenario::rolling)
+    std::cout << "rolling at " << fixed(T.rolling.speed_m_s * 3.6, 1) << " km/h (ramp "
+              << fixed(T.rolling.ramp_s, 2) << " s)\n";
+  if (scenario == Scenario::cleat) {
+    std::cout << "cleat " << fixed(T.cleat.height_m * 1e3, 1) << " mm high, "
+              << fixed(T.cleat.length_m * 1e3, 1) << " mm long, ";
+    if (T.cleat.width_m > 0)
+      std::cout << fixed(T.cleat.width_m * 1e3, 1) << " mm wide";
+    else
+      std::cout << "across the tread";
+    std::cout << ", at " << fixed(T.cleat.speed_m_s * 3.6, 1) << " km/h\n";
+  }
+  if (scenario == Scenario::free_vibration) {
+    const transient::BounceDecay d = transient::bounce_decay(r);
+    if (d.peaks >= 2)
+      std::cout << "free vibration: period " << fixed(d.period_s * 1e3, 3) << " ms ("
+                << fixed(1 / d.period_s, 2) << " Hz), log decrement " << fixed(d.log_decrement, 4)
+                << " (damping ratio " << fixed(100 * d.damping_ratio(), 2) << " %), " << d.peaks
+                << " peaks over the " << (d.from_steps ? "integrator's steps" : "output samples")
+                << "\n";
+    else
+      std::cout << "free vibration: fewer than two peaks above the final mean (no period)\n";
+  }
+  if (r.extremes.valid) {
+    const auto& L = r.extremes.load_N;
+    const auto& X = r.extremes.longitudinal_force_N;
+    std::cout << "extremes over the integrator's steps: load " << fixed(L.min, 1) << " N (t "
+              << fixed(L.t_min_s, 4) << " s) to " << fixed(L.max, 1) << " N (t "
+              << fixed(L.t_max_s, 4) << " s); F_x " << fixed(X.min, 1) << " N (t "
+              << fixed(X.t_min_s, 4) << " s) to " << fixed(X.max, 1) << " N (t "
+              << fixed(X.t_max_s, 4) << " s)\n";
+  }
+  std::cout << r.output_grid.describe() << "\n";
 }
 
 }  // namespace
@@ -215,7 +339,7 @@ void register_transient(CLI::App& app) {
     }
 
     if (!a->csv.empty()) write_file_atomically(a->csv, transient_csv(r));
-    if (!a->plot.empty()) transient_plot(r, a->plot);
+    if (!a->plot.empty()) transient_plot(r, scenario_title(config, scenario), a->plot);
     if (!a->map_csv.empty()) write_file_atomically(a->map_csv, map_csv(r));
     const auto& fin = r.samples.back();
     if (a->json) {
@@ -232,6 +356,7 @@ void register_transient(CLI::App& app) {
                 << fixed(fin.sinking_m * 1e3, 3) << " mm, contact length "
                 << fixed(fin.contact_length_m * 1e3, 2) << " mm, rolling resistance "
                 << fixed(r.rolling_resistance_N, 2) << " N\n";
+      print_scenario_summary(model, scenario, r);
       if (config.ground.soil())
         std::cout << "on the soil "
                   << (config.ground.name.empty() ? ground::to_string(config.ground.model)

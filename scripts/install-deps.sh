@@ -7,6 +7,7 @@ packages=(build-essential cmake ninja-build pkg-config
   libyaml-cpp-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev libzip-dev
   gnuplot-nox python3-numpy python3-scipy libopenmpi-dev openmpi-bin
   pybind11-dev python3-dev python3-pytest
+  libxml2-utils
   clang-14 libclang-rt-14-dev libomp-14-dev llvm-14)
 missing=()
 for p in "${packages[@]}"; do

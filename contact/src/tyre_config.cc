@@ -51,7 +51,12 @@ TransientSettings read_transient_settings(const ConfigSection& tr, double unit_l
   T.instantaneous_stiffness_ratio =
       tr.number("instantaneous_stiffness_ratio", T.instantaneous_stiffness_ratio, 1.01, 1e6);
   T.modal_damping_scale = tr.number("modal_damping_scale", T.modal_damping_scale, 0, 100);
-  T.output_step_s = tr.number("output_step_ms", T.output_step_s * 1e3, 1e-3, 1e6) * 1e-3;
+  // `auto` (or absent): the run chooses the grid (transient/output_grid.h).
+  if (tr.has("output_step_ms") && tr.text("output_step_ms", "") == "auto") {
+    T.output_step_s = 0;
+  } else {
+    T.output_step_s = tr.number("output_step_ms", T.output_step_s * 1e3, 1e-3, 1e6) * 1e-3;
+  }
   T.relative_tolerance = tr.number("relative_tolerance", T.relative_tolerance, 1e-12, 1e-2);
   T.tread_tolerance_m =
       tr.number("tread_tolerance_um", T.tread_tolerance_m * 1e6, 1e-6, 100) * 1e-6;
@@ -61,9 +66,11 @@ TransientSettings read_transient_settings(const ConfigSection& tr, double unit_l
   };
   // A speed ramp is 0 (a step from rest) or at least one output step: a shorter one is not
   // seen in the output and its acceleration 1.5 V / ramp_s is unbounded (1e-308 s: exit 1).
-  const auto ramp = [&T](const ConfigSection& s, double fallback) {
+  const double ramp_min_s =
+      T.output_step_s > 0 ? T.output_step_s : TransientSettings::kAutoOutputStepCap_s;
+  const auto ramp = [ramp_min_s](const ConfigSection& s, double fallback) {
     return zero_or_number(
-        s, "ramp_s", fallback, T.output_step_s, 1e6,
+        s, "ramp_s", fallback, ramp_min_s, 1e6,
         "0 (a speed step) or at least one output step (transient.output_step_ms)");
   };
   const ConfigSection lh = tr.section("load_hold");
@@ -146,6 +153,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   c.tread.width_m = scalar(tread, "tread", "contact_width_mm", 140) * 1e-3;
   c.tread.poisson = tread.number("poisson_ratio", c.tread.poisson, 0.0, 0.5);
   c.uncertainty.tread_modulus_rel_std = tread.number("modulus_std_percent", 0, 0, 50) / 100;
+  c.uncertainty.tread_width_rel_std = tread.number("contact_width_std_percent", 0, 0, 50) / 100;
 
   const ConfigSection mesh = root.section("contact");
   c.mesh.unit_length_m = mesh.number("unit_length_mm", 0.5, 0.01, 50) * 1e-3;

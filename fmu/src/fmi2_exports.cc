@@ -1,7 +1,15 @@
 // The exported FMI 2.0 co-simulation functions (fmi2.h): each checks its component pointer and
 // hands the call to the Instance (instance.h), which never throws. Compiled into the FMU's
 // shared library only (fmu/CMakeLists.txt).
+//
+// The component pointers handed out are kept in a registry: a call with a pointer that is not a
+// live instance (freed already, never created) returns fmi2Error, and a second fmi2FreeInstance
+// of the same pointer does nothing (it aborted in free() before). A pointer freed and then
+// handed out again by a later fmi2Instantiate is that new instance: the registry cannot tell a
+// stale copy of it.
+#include <mutex>
 #include <new>
+#include <set>
 
 #include "modaltyre/fmu/fmi2.h"
 #include "modaltyre/fmu/instance.h"
@@ -10,7 +18,19 @@ using modaltyre::fmu::Instance;
 
 namespace {
 
-Instance* as_instance(fmi2Component c) { return static_cast<Instance*>(c); }
+std::mutex& registry_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::set<const void*>& registry() {
+  static std::set<const void*> live;
+  return live;
+}
+
+Instance* as_instance(fmi2Component c) {
+  std::lock_guard<std::mutex> lock(registry_mutex());
+  return registry().count(c) ? static_cast<Instance*>(c) : nullptr;
+}
 
 }  // namespace
 
@@ -23,9 +43,10 @@ extern "C" {
 const char* fmi2GetTypesPlatform(void) { return "default"; }
 const char* fmi2GetVersion(void) { return "2.0"; }
 
-fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t, const fmi2String[]) {
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
+                               const fmi2String categories[]) {
   MODALTYRE_INSTANCE_OR_ERROR(c);
-  return inst->set_debug_logging(loggingOn == fmi2True);
+  return inst->set_debug_logging(loggingOn == fmi2True, nCategories, categories);
 }
 
 fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2String fmuGUID,
@@ -33,14 +54,25 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
                               const fmi2CallbackFunctions* functions, fmi2Boolean,
                               fmi2Boolean loggingOn) {
   try {
-    return Instance::create(instanceName, fmuType, fmuGUID, fmuResourceLocation, functions,
-                            loggingOn);
+    Instance* inst =
+        Instance::create(instanceName, fmuType, fmuGUID, fmuResourceLocation, functions, loggingOn);
+    if (inst) {
+      std::lock_guard<std::mutex> lock(registry_mutex());
+      registry().insert(inst);
+    }
+    return inst;
   } catch (const std::bad_alloc&) {
     return nullptr;
   }
 }
 
-void fmi2FreeInstance(fmi2Component c) { delete as_instance(c); }
+void fmi2FreeInstance(fmi2Component c) {
+  {
+    std::lock_guard<std::mutex> lock(registry_mutex());
+    if (registry().erase(c) == 0) return;  // not a live instance: freed already, or never one
+  }
+  delete static_cast<Instance*>(c);
+}
 
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
                                fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
@@ -77,12 +109,13 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference[], size_t nvr, fmi2Integer[]) {
   MODALTYRE_INSTANCE_OR_ERROR(c);
-  return nvr == 0 ? fmi2OK : inst->unsupported("fmi2GetInteger (no Integer variables)");
+  return inst->no_variables("fmi2GetInteger", nvr);
 }
 
-fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference[], size_t nvr, fmi2Boolean[]) {
+fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
+                          fmi2Boolean value[]) {
   MODALTYRE_INSTANCE_OR_ERROR(c);
-  return nvr == 0 ? fmi2OK : inst->unsupported("fmi2GetBoolean (no Boolean variables)");
+  return inst->get_boolean(vr, nvr, value);
 }
 
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -100,13 +133,13 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference[], size_t nvr,
                           const fmi2Integer[]) {
   MODALTYRE_INSTANCE_OR_ERROR(c);
-  return nvr == 0 ? fmi2OK : inst->unsupported("fmi2SetInteger (no Integer variables)");
+  return inst->no_variables("fmi2SetInteger", nvr);
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference[], size_t nvr,
                           const fmi2Boolean[]) {
   MODALTYRE_INSTANCE_OR_ERROR(c);
-  return nvr == 0 ? fmi2OK : inst->unsupported("fmi2SetBoolean (no Boolean variables)");
+  return inst->no_variables("fmi2SetBoolean", nvr);
 }
 
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -177,9 +210,9 @@ fmi2Status fmi2CancelStep(fmi2Component c) {
   return inst->unsupported("fmi2CancelStep (fmi2DoStep never returns fmi2Pending)");
 }
 
-fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status* value) {
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind, fmi2Status* value) {
   MODALTYRE_INSTANCE_OR_ERROR(c);
-  return inst->status(s, value);
+  return inst->status_not_provided("fmi2GetStatus", value);
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* value) {
@@ -187,9 +220,9 @@ fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real* 
   return inst->status_real(s, value);
 }
 
-fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind, fmi2Integer*) {
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind, fmi2Integer* value) {
   MODALTYRE_INSTANCE_OR_ERROR(c);
-  return inst->unsupported("fmi2GetIntegerStatus");
+  return inst->status_not_provided("fmi2GetIntegerStatus", value);
 }
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean* value) {
@@ -197,9 +230,9 @@ fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boo
   return inst->status_boolean(s, value);
 }
 
-fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind, fmi2String*) {
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind, fmi2String* value) {
   MODALTYRE_INSTANCE_OR_ERROR(c);
-  return inst->unsupported("fmi2GetStringStatus");
+  return inst->status_not_provided("fmi2GetStringStatus", value);
 }
 
 }  // extern "C"

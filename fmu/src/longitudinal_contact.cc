@@ -58,27 +58,43 @@ void LongitudinalContact::shift(int units) {
   sheared_hi_ = std::min(sheared_hi_, hi_);
 }
 
-void LongitudinalContact::substep(double dj0, const double* f, const ground::CoulombFriction& law,
-                                  int a, int b) {
+void LongitudinalContact::substep(double dj0, const double* f, const ground::ShearLaw& law,
+                                  const ground::CoulombFriction* coulomb, int a, int b) {
   const double A = p_.unit_area_m2, kA = p_.stick_stiffness_Pa_m * A, C = p_.carcass_compliance_m_N;
-  // Trial at the last force (du = 0): the sticking elements' stiffness.
+  // Trial at the last force (du = 0) and the elements' stiffness dF/dj there: on the road the
+  // sticking elements' k_t A (exact while no element switches within the sub-step); on a soil
+  // (Janosi-Hanamoto, a function of the total j) the slope of the law over a tenth of a
+  // micrometre (one Newton step of the carcass coupling: the sub-step moves j by a unit's
+  // length at most, against the soil's K of millimetres).
+  constexpr double kSlopeStep_m = 1e-7;
   double trial = 0, stick = 0;
   for (int i = a; i <= b; ++i) {
+    // A soil's law has a strength c at zero normal stress: only the loaded elements shear it.
+    if (!coulomb && !(f[i] > 0)) continue;
     ground::ShearPoint pt = point(i);
-    const double fi = f[i] > 0 ? f[i] : 0.0;
-    trial += law.advance(pt, fi / A, dj0) * A;
-    if (!pt.sliding) stick += kA;
+    const double sigma = f[i] > 0 ? f[i] / A : 0.0;
+    const double tau = law.advance(pt, sigma, dj0);
+    trial += tau * A;
+    if (coulomb) {
+      if (!pt.sliding) stick += kA;
+    } else {
+      ground::ShearPoint q = point(i);
+      stick += (law.advance(q, sigma, dj0 + kSlopeStep_m) - tau) * A / kSlopeStep_m;
+    }
   }
-  // F = F_trial - C K (F - F_old): exact while no element switches within the sub-step.
+  // F = F_trial - C K (F - F_old).
   const double F = (trial + C * stick * force_N_) / (1 + C * stick);
   const double dj = dj0 - C * (F - force_N_);
   double sum = 0;
   int loaded = 0, sliding = 0, first = -1, last = -1;
   for (int i = a; i <= b; ++i) {
+    if (!coulomb && !(f[i] > 0)) continue;
     ground::ShearPoint& pt = point(i);
     const double fi = f[i] > 0 ? f[i] : 0.0;
     sum += law.advance(pt, fi / A, dj) * A;
-    if (pt.elastic_m != 0) {
+    // On the road an element out of contact keeps its spring's shear until it slides back;
+    // on a soil the loaded range is the sheared one.
+    if (coulomb && pt.elastic_m != 0) {
       first = first < 0 ? i : first;
       last = i;
     }
@@ -96,8 +112,14 @@ void LongitudinalContact::substep(double dj0, const double* f, const ground::Cou
 
 void LongitudinalContact::advance(double dt, const double* f, double spin, double speed,
                                   double mu) {
-  if (n_ == 0 || !(dt > 0)) return;
   const ground::CoulombFriction law(mu, p_.stick_stiffness_Pa_m);
+  advance(dt, f, spin, speed, law);
+}
+
+void LongitudinalContact::advance(double dt, const double* f, double spin, double speed,
+                                  const ground::ShearLaw& law) {
+  if (n_ == 0 || !(dt > 0)) return;
+  const auto* coulomb = dynamic_cast<const ground::CoulombFriction*>(&law);
   // The loaded units (the forces hold over the whole advance).
   int a = -1, b = -2;
   for (int i = lo_; i <= hi_; ++i)
@@ -127,7 +149,7 @@ void LongitudinalContact::advance(double dt, const double* f, double spin, doubl
       force_N_ = ux_m_ = sliding_share_ = 0;
       continue;
     }
-    substep((material - speed) * h, f, law, from, to);
+    substep((material - speed) * h, f, law, coulomb, from, to);
   }
 }
 

@@ -1,11 +1,9 @@
 #include "modaltyre/fmu/model_description.h"
 
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "modaltyre/core/errors.h"
 
@@ -73,13 +71,27 @@ const char* to_string(BaseType t) {
   return "?";
 }
 
-std::optional<UnitExponents> unit_exponents(const std::string& name) {
-  //                                  kg m  s  A  K mol cd rad
-  static const std::map<std::string, UnitExponents> known = {
-      {"1", {0, 0, 0, 0, 0, 0, 0, 0}},      {"m", {0, 1, 0, 0, 0, 0, 0, 0}},
-      {"s", {0, 0, 1, 0, 0, 0, 0, 0}},      {"m/s", {0, 1, -1, 0, 0, 0, 0, 0}},
-      {"rad/s", {0, 0, -1, 0, 0, 0, 0, 1}}, {"N", {1, 1, -2, 0, 0, 0, 0, 0}},
-      {"N.m", {1, 2, -2, 0, 0, 0, 0, 0}}};
+std::optional<UnitDefinition> known_unit(const std::string& name) {
+  // SI base exponents kg, m, s, A, K, mol, cd, rad and the factor to SI.
+  constexpr double kDeg = 3.14159265358979323846 / 180;
+  static const std::map<std::string, UnitDefinition> known = {
+      {"1", {"1", UnitExponents{0, 0, 0, 0, 0, 0, 0, 0}, 1}},
+      {"m", {"m", UnitExponents{0, 1, 0, 0, 0, 0, 0, 0}, 1}},
+      {"s", {"s", UnitExponents{0, 0, 1, 0, 0, 0, 0, 0}, 1}},
+      {"m/s", {"m/s", UnitExponents{0, 1, -1, 0, 0, 0, 0, 0}, 1}},
+      {"rad/s", {"rad/s", UnitExponents{0, 0, -1, 0, 0, 0, 0, 1}, 1}},
+      {"N", {"N", UnitExponents{1, 1, -2, 0, 0, 0, 0, 0}, 1}},
+      {"N.m", {"N.m", UnitExponents{1, 2, -2, 0, 0, 0, 0, 0}, 1}},
+      {"mm", {"mm", UnitExponents{0, 1, 0, 0, 0, 0, 0, 0}, 1e-3}},
+      {"kPa", {"kPa", UnitExponents{1, -1, -2, 0, 0, 0, 0, 0}, 1e3}},
+      {"MPa", {"MPa", UnitExponents{1, -1, -2, 0, 0, 0, 0, 0}, 1e6}},
+      {"kPa.s", {"kPa.s", UnitExponents{1, -1, -1, 0, 0, 0, 0, 0}, 1e3}},
+      {"kN/m3", {"kN/m3", UnitExponents{1, -2, -2, 0, 0, 0, 0, 0}, 1e3}},
+      {"kN/m4", {"kN/m4", UnitExponents{1, -3, -2, 0, 0, 0, 0, 0}, 1e3}},
+      {"deg", {"deg", UnitExponents{0, 0, 0, 0, 0, 0, 0, 1}, kDeg}},
+      // Bekker's moduli (Wong, Table 2.3): the exponent n + 1, n + 2 is a soil parameter.
+      {"kN/m^(n+1)", {"kN/m^(n+1)", std::nullopt, 1}},
+      {"kN/m^(n+2)", {"kN/m^(n+2)", std::nullopt, 1}}};
   auto it = known.find(name);
   if (it == known.end()) return std::nullopt;
   return it->second;
@@ -136,6 +148,41 @@ std::vector<Initial> allowed_initial(Causality c, Variability v) {
 
 }  // namespace
 
+namespace {
+
+/// The dependencies' rules (section 2.2.8): outputs at a communication point depend on inputs;
+/// the initial unknowns on inputs and initial="exact" variables; no name twice.
+template <class Bad>
+void check_dependencies(const ModelDescription& d, Bad bad) {
+  std::map<std::string, const ScalarVariable*> by_name;
+  for (const ScalarVariable& v : d.variables) by_name[v.name] = &v;
+  auto check = [&](const ScalarVariable& v, const std::vector<std::string>& names, bool initial) {
+    std::set<std::string> seen;
+    for (const std::string& n : names) {
+      const std::string who = "variable '" + v.name + "': dependency '" + n + "'";
+      auto it = by_name.find(n);
+      if (it == by_name.end()) {
+        bad(who + " is not a variable");
+        continue;
+      }
+      if (!seen.insert(n).second) bad(who + " is listed twice");
+      const ScalarVariable& k = *it->second;
+      const bool known =
+          k.causality == Causality::input || (initial && effective_initial(k) == Initial::exact);
+      if (!known) bad(who + " is not a known " + (initial ? "in initialization mode" : "input"));
+    }
+  };
+  for (const ScalarVariable& v : d.variables) {
+    if (v.dependencies) {
+      if (v.causality != Causality::output) bad("variable '" + v.name + "': not an output");
+      check(v, *v.dependencies, false);
+    }
+    if (v.initial_dependencies) check(v, *v.initial_dependencies, true);
+  }
+}
+
+}  // namespace
+
 Initial effective_initial(const ScalarVariable& v) {
   if (v.initial != Initial::none) return v.initial;
   const std::vector<Initial> allowed = allowed_initial(v.causality, v.variability);
@@ -155,10 +202,10 @@ std::vector<std::string> validate(const ModelDescription& d) {
   std::set<std::string> unit_names;
   for (const UnitDefinition& u : d.units) {
     if (!unit_names.insert(u.name).second) bad("unit '" + u.name + "' is defined twice");
-    const auto expected = unit_exponents(u.name);
+    const auto expected = known_unit(u.name);
     if (!expected)
       bad("unit '" + u.name + "' is not a unit this writer knows the SI exponents of");
-    else if (*expected != u.exponents)
+    else if (expected->exponents != u.exponents || expected->factor != u.factor)
       bad("unit '" + u.name + "' has base-unit exponents that do not match its name");
   }
 
@@ -196,6 +243,10 @@ std::vector<std::string> validate(const ModelDescription& d) {
     if (needs_start && !has_start) bad(who + ": a start value is required");
     if (forbids_start && has_start) bad(who + ": a start value is not allowed");
     if (v.start && !std::isfinite(*v.start)) bad(who + ": start value is not finite");
+    if ((v.min || v.max) && v.type != BaseType::real) bad(who + ": only a Real has a range here");
+    if (v.min && v.max && !(*v.min < *v.max)) bad(who + ": min is not below max");
+    if (v.start && ((v.min && *v.start < *v.min) || (v.max && *v.start > *v.max)))
+      bad(who + ": start value outside [min, max]");
     if (v.type == BaseType::real) {
       if (v.unit.empty())
         bad(who + ": a Real without a unit");
@@ -205,118 +256,8 @@ std::vector<std::string> validate(const ModelDescription& d) {
       bad(who + ": only a Real has a unit");
     }
   }
+  check_dependencies(d, bad);
   return problems;
-}
-
-namespace {
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char ch : s) {
-    switch (ch) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += ch;
-    }
-  }
-  return out;
-}
-
-/// The shortest text that reads back as x.
-std::string number(double x) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
-
-const char* bool_attr(bool b) { return b ? "true" : "false"; }
-
-}  // namespace
-
-std::string to_xml(const ModelDescription& d) {
-  const std::vector<std::string> problems = validate(d);
-  if (!problems.empty()) {
-    std::string msg = "the FMU's model description breaks FMI 2.0's rules:";
-    for (const std::string& p : problems) msg += "\n  " + p;
-    throw ComputationError(msg);
-  }
-  static const char* base_units[] = {"kg", "m", "s", "A", "K", "mol", "cd", "rad"};
-  std::ostringstream x;
-  x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x << "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"" << escape(d.model_name)
-    << "\" guid=\"" << escape(d.guid) << "\" description=\"" << escape(d.description)
-    << "\" generationTool=\"" << escape(d.generation_tool)
-    << "\" variableNamingConvention=\"structured\">\n";
-  x << "  <CoSimulation modelIdentifier=\"" << escape(d.model_identifier)
-    << "\" needsExecutionTool=\"false\" canHandleVariableCommunicationStepSize=\"true\""
-       " canInterpolateInputs=\"false\" maxOutputDerivativeOrder=\"0\""
-       " canRunAsynchronuously=\"false\" canBeInstantiatedOnlyOncePerProcess=\"false\""
-       " canNotUseMemoryManagementFunctions=\"true\" canGetAndSetFMUstate=\"false\""
-       " canSerializeFMUstate=\"false\" providesDirectionalDerivative=\"false\"/>\n";
-  x << "  <UnitDefinitions>\n";
-  for (const UnitDefinition& u : d.units) {
-    x << "    <Unit name=\"" << escape(u.name) << "\">";
-    std::string attrs;
-    for (int k = 0; k < 8; ++k)
-      if (u.exponents[k] != 0)
-        attrs += std::string(" ") + base_units[k] + "=\"" + std::to_string(u.exponents[k]) + "\"";
-    x << "<BaseUnit" << attrs << "/></Unit>\n";
-  }
-  x << "  </UnitDefinitions>\n";
-  x << "  <LogCategories>\n";
-  for (const std::string& c : d.log_categories)
-    x << "    <Category name=\"" << escape(c) << "\"/>\n";
-  x << "  </LogCategories>\n";
-  x << "  <DefaultExperiment startTime=\"" << number(d.default_start_s) << "\" stepSize=\""
-    << number(d.default_step_s) << "\"/>\n";
-  x << "  <ModelVariables>\n";
-  for (std::size_t k = 0; k < d.variables.size(); ++k) {
-    const ScalarVariable& v = d.variables[k];
-    x << "    <!-- index " << k + 1 << " -->\n";
-    x << "    <ScalarVariable name=\"" << escape(v.name) << "\" valueReference=\""
-      << v.value_reference << "\" description=\"" << escape(v.description) << "\" causality=\""
-      << to_string(v.causality) << "\" variability=\"" << to_string(v.variability) << "\"";
-    if (v.initial != Initial::none) x << " initial=\"" << to_string(v.initial) << "\"";
-    x << ">\n      <" << to_string(v.type);
-    if (v.type == BaseType::real) x << " unit=\"" << escape(v.unit) << "\"";
-    if (v.type == BaseType::string && v.start_string)
-      x << " start=\"" << escape(*v.start_string) << "\"";
-    if (v.type == BaseType::boolean && v.start)
-      x << " start=\"" << bool_attr(*v.start != 0) << "\"";
-    if ((v.type == BaseType::real || v.type == BaseType::integer) && v.start)
-      x << " start=\"" << number(*v.start) << "\"";
-    x << "/>\n    </ScalarVariable>\n";
-  }
-  x << "  </ModelVariables>\n";
-  x << "  <ModelStructure>\n    <Outputs>\n";
-  for (std::size_t k = 0; k < d.variables.size(); ++k)
-    if (d.variables[k].causality == Causality::output)
-      x << "      <Unknown index=\"" << k + 1 << "\"/>\n";
-  x << "    </Outputs>\n    <InitialUnknowns>\n";
-  for (std::size_t k = 0; k < d.variables.size(); ++k) {
-    const ScalarVariable& v = d.variables[k];
-    const Initial initial = effective_initial(v);
-    const bool calc = initial == Initial::calculated || initial == Initial::approx;
-    if ((v.causality == Causality::output && calc) ||
-        v.causality == Causality::calculated_parameter)
-      x << "      <Unknown index=\"" << k + 1 << "\"/>\n";
-  }
-  x << "    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n";
-  return x.str();
 }
 
 }  // namespace modaltyre::fmu

@@ -14,8 +14,12 @@
 #include "modaltyre/core/config_edit.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/input_file.h"
+#include "modaltyre/fmu/elf_needs.h"
 #include "modaltyre/fmu/resources.h"
 #include "modaltyre/fmu/tyre_variables.h"
+#include "modaltyre/fmu/tyre_wheel.h"
+#include "modaltyre/ground/ground_settings.h"
+#include "modaltyre/transient/driven_tyre.h"
 #include "modaltyre/transient/model.h"
 
 #ifndef MODALTYRE_FMU_INSTALL_RELPATH
@@ -105,9 +109,45 @@ std::string find_fmu_binary() {
   return "";
 }
 
+namespace {
+
+/// The ground the FMU will run, refused here when it cannot (issue 46 item 3), naming the key:
+/// a rigid profile (the FMU's road is its road_profile parameter and terrain_height input), and
+/// on a soil what the soil transient refuses (tyre.rigid; the Kelvin-Voigt rate term on the 3D
+/// patch) or cannot start (its Bekker width's footprint: contact.window_mm, ...).
+void check_ground(const transient::TransientModel& model, const std::string& ground_source) {
+  const contact::TyreConfig& config = model.tyre.config;
+  if (config.ground.model == ground::GroundModel::profile)
+    throw InputError(InputLocation{ground_source, 0, "ground.model"},
+                     "a profile ground is not packed into the FMU: its road is the "
+                     "road_profile parameter (or terrain_height); leave ground: out");
+  if (!config.ground.soil()) return;
+  if (config.rigid)
+    throw InputError(InputLocation{config.source, 0, "tyre.rigid"},
+                     "the FMU on a soil runs the flexible tyre (the rigid wheel is traction's)");
+  if (config.footprint_3d && config.ground.model == ground::GroundModel::kelvin_voigt &&
+      config.ground.kelvin_voigt.eta2_kPa_s > 0)
+    throw InputError(InputLocation{ground_source, 0, "ground.kelvin_voigt.eta2_kPa_s"},
+                     "the 3D patch models the Kelvin-Voigt soil's elastic law only (docs/soil.md "
+                     "section 8.3): set it to 0, or pack a 2D config");
+  try {
+    const transient::DrivenTyre probe(model);  // Bekker's b on the soil (driven_tyre.h)
+  } catch (const ComputationError& e) {
+    throw InputError(InputLocation{ground_source, 0, "ground.model"},
+                     std::string("the FMU cannot start on this soil: ") + e.what());
+  }
+}
+
+}  // namespace
+
 PackageResult write_fmu(const PackageOptions& o) {
+  // With a soil file the ground.KEY overrides are its own, the rest the config's (as traction).
+  std::vector<std::string> tyre_sets, ground_sets;
+  for (const std::string& s : o.overrides)
+    (!o.ground_path.empty() && s.rfind("ground.", 0) == 0 ? ground_sets : tyre_sets).push_back(s);
   // The config as every command reads it: InputErrors name file, line and key.
-  const contact::TyreConfig config = contact::load_tyre_config(o.config_path, o.overrides);
+  contact::TyreConfig config = contact::load_tyre_config(o.config_path, tyre_sets);
+  if (!o.ground_path.empty()) config.ground = ground::load_ground_file(o.ground_path, ground_sets);
   if (o.binary_path.empty())
     throw InputError("the FMU's shared library " + std::string(kModelIdentifier) +
                      ".so was not found beside modaltyre nor in its install folder (build the "
@@ -117,11 +157,11 @@ PackageResult write_fmu(const PackageOptions& o) {
   // The model the FMU will build, built once here: a config the transient refuses fails now.
   const transient::TransientModel model =
       transient::build_transient_model(contact::build_tyre_model(config));
-  (void)model;
+  check_ground(model, o.ground_path.empty() ? o.config_path : o.ground_path);
 
   // The data path is rewritten to the copy in the archive (a --set of it chose the file).
   std::vector<std::string> overrides;
-  for (const std::string& s : o.overrides)
+  for (const std::string& s : tyre_sets)
     if (s.rfind("modal.hammer_csv=", 0) != 0) overrides.push_back(s);
   std::vector<Entry> data;
   if (!config.hammer_csv.empty()) {
@@ -139,23 +179,45 @@ PackageResult write_fmu(const PackageOptions& o) {
                      "cannot rewrite the config's keys in place for the FMU (a value spanning "
                      "lines or a flow mapping?)");
 
+  // A soil file goes beside the config with its overrides applied.
+  std::optional<std::string> soil;
+  if (!o.ground_path.empty()) {
+    const std::string soil_text =
+        read_input_file(o.ground_path, "a YAML file", "YAML files", kMaxConfigBytes);
+    soil = set_keys_in_text(soil_text, o.ground_path, ground_sets, "set by modaltyre fmu");
+    if (!soil)
+      throw InputError(InputLocation{o.ground_path, 0, "ground"},
+                       "cannot rewrite the soil file's keys in place for the FMU (a value "
+                       "spanning lines or a flow mapping?)");
+  }
+
   std::string digest_input = *packed;
   for (const Entry& e : data) digest_input += e.name + '\n' + e.bytes;
+  if (soil) digest_input += "\nsoil.yaml\n" + *soil;
   TyreDescriptionInfo info;
   info.tyre_name = config.name;
   info.guid = digest_guid(digest_input);
   info.outer_radius_m = config.outer_radius_m;
+  info.friction_coefficient = config.ground.friction_coefficient;
+  info.section_height_m = section_height_m(config);
+  info.soil = config.ground.soil() ? &config.ground : nullptr;
+  info.patch_3d = config.footprint_3d.has_value();
 
   PackageResult result;
   result.guid = info.guid;
   result.model_description = to_xml(tyre_model_description(info));
   std::vector<Entry> entries;
   entries.push_back({"modelDescription.xml", result.model_description});
-  entries.push_back({"binaries/linux64/" + std::string(kModelIdentifier) + ".so", binary, true});
-  entries.push_back({"resources/tyre.yaml", *packed});
-  for (Entry& e : data) entries.push_back(std::move(e));
+  const std::string binary_entry = "binaries/linux64/" + std::string(kModelIdentifier) + ".so";
+  entries.push_back({binary_entry, binary, true});
   entries.push_back(
-      {std::string("resources/") + kResourceRecord, resource_record_text(info.guid, "tyre.yaml")});
+      {"documentation/externalDependencies.txt",
+       external_dependencies_text(read_elf_needs(binary, o.binary_path), binary_entry)});
+  entries.push_back({"resources/tyre.yaml", *packed});
+  if (soil) entries.push_back({"resources/soil.yaml", *soil});
+  for (Entry& e : data) entries.push_back(std::move(e));
+  entries.push_back({std::string("resources/") + kResourceRecord,
+                     resource_record_text(info.guid, "tyre.yaml", soil ? "soil.yaml" : "")});
   write_zip(o.output_path, entries);
   for (const Entry& e : entries) result.entries.push_back(e.name);
   return result;

@@ -54,15 +54,21 @@ ResourceRecord read_resource_record(const std::string& folder) {
   if (r.guid.empty()) root.fail("guid", "the FMU's GUID is missing");
   const std::string config = root.text("config", "");
   if (config.empty()) root.fail("config", "the config's file name is missing");
+  const std::string ground = root.text("ground", "");
   tree.reject_unknown_keys();
   r.config_path = (std::filesystem::path(folder) / config).string();
+  if (!ground.empty()) r.ground_path = (std::filesystem::path(folder) / ground).string();
   return r;
 }
 
-std::string resource_record_text(const std::string& guid, const std::string& config_name) {
-  return "# Written by modaltyre fmu: the FMU's GUID (checked by fmi2Instantiate) and its tyre "
-         "config.\nguid: \"" +
-         guid + "\"\nconfig: \"" + config_name + "\"\n";
+std::string resource_record_text(const std::string& guid, const std::string& config_name,
+                                 const std::string& ground_name) {
+  std::string text =
+      "# Written by modaltyre fmu: the FMU's GUID (checked by fmi2Instantiate), its tyre config "
+      "and its soil file (modaltyre fmu --ground).\nguid: \"" +
+      guid + "\"\nconfig: \"" + config_name + "\"\n";
+  if (!ground_name.empty()) text += "ground: \"" + ground_name + "\"\n";
+  return text;
 }
 
 }  // namespace modaltyre::fmu

@@ -124,13 +124,18 @@ GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tr
   if (!(g.bekker.k_c + g.bekker.k_phi > 0)) b.fail("k_phi", "k_c and k_phi cannot both be 0");
   g.bekker_shear = read_shear(b, g.bekker_shear);
   if (b.has("unloading")) {
+    // Wong's elastic unloading, on when its block is given (enabled: false keeps the block's
+    // values and the rigid-plastic soil: the switch of the discovery's soil_unloading).
     const ConfigSection u = b.section("unloading");
+    const bool on = u.boolean("enabled", true);
+    if (on && !u.has("k0") && !u.has("Au"))
+      u.fail("Au", "Wong's unloading needs k0 and Au stated (identify bevameter's cycles)");
     WongUnloading w;
     w.k0_kN_m3 = u.number("k0", 0, 0, 1e12);
     w.Au_kN_m4 = u.number("Au", 0, 0, 1e15);
     if (!(w.k0_kN_m3 + w.Au_kN_m4 > 0))
       u.fail("Au", "k0 and Au cannot both be 0 (leave out unloading: for a rigid-plastic soil)");
-    g.bekker.unloading = w;
+    if (on) g.bekker.unloading = w;
   }
   if (b.has("slip_sinkage")) {
     const ConfigSection w = b.section("slip_sinkage");

@@ -1,5 +1,7 @@
 // modaltyre.traction: steady rolling at slip on a soil (report/traction_json.h, the library call
 // of `modaltyre traction`), the command's JSON document with its columns as NumPy arrays.
+#include <limits>
+
 #include "bindings.h"
 #include "modaltyre/report/traction_json.h"
 #include "to_python.h"
@@ -8,10 +10,14 @@ namespace modaltyre::python {
 namespace {
 
 py::object traction(const py::object& config_arg, const py::object& loads, const py::object& slips,
-                    const py::object& ground_arg, const py::dict& overrides, int passes,
-                    const std::string& slip_reference, const py::object& speed_arg) {
+                    const py::object& ground_arg, const py::dict& overrides,
+                    const py::object& passes_arg, const std::string& slip_reference,
+                    const py::object& speed_arg) {
   const std::string config_path = path_arg(config_arg, "config_path");
   const std::string ground_path = optional_path_arg(ground_arg, "ground");
+  // passes=True is no count (bool is an int in Python); run_traction checks the range.
+  const int passes = static_cast<int>(int_arg(passes_arg, "passes", std::numeric_limits<int>::min(),
+                                              std::numeric_limits<int>::max()));
   const std::vector<double> load_N = numbers_arg(loads, "loads_N");
   const std::vector<double> slip = numbers_arg(slips, "slips");
   const auto sets = overrides_of(overrides);

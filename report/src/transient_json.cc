@@ -34,12 +34,42 @@ nlohmann::json transient_json(const transient::TransientModel& model,
     // The 3D run keeps the soil's memory per cell: the deepest rut at the run's end.
     if (r.patch_3d) j["final"]["rut_depth_mm"] = round_sig(r.rut_depth_m * 1e3);
   }
+  if (r.extremes.valid) {
+    // Over the integrator's steps and inside them (dense output), not over the output grid.
+    auto range = [](const transient::SignalRange& x) {
+      return nlohmann::json{{"min", round_sig(x.min)},
+                            {"max", round_sig(x.max)},
+                            {"t_min_s", round_sig(x.t_min_s)},
+                            {"t_max_s", round_sig(x.t_max_s)}};
+    };
+    j["extremes"] = {{"load_N", range(r.extremes.load_N)},
+                     {"longitudinal_force_N", range(r.extremes.longitudinal_force_N)},
+                     {"taken_over", "integrator steps"},
+                     {"steps_searched", r.extremes.searches}};
+  }
+  if (r.scenario == transient::Scenario::rolling || r.scenario == transient::Scenario::cleat) {
+    // The carcass's critical speed (modal/critical_speed.h): speeds at or beyond it are
+    // refused; from kNearCriticalShare of it the standing wave grows.
+    const modal::CriticalSpeed c = transient::critical_speed_of(model);
+    const auto& T = model.settings;
+    const double v =
+        r.scenario == transient::Scenario::rolling ? T.rolling.speed_m_s : T.cleat.speed_m_s;
+    j["critical_speed"] = {{"speed_km_h", round_sig(c.speed_km_h())},
+                           {"order", c.order},
+                           {"share", round_sig(v / c.speed_m_s, 4)},
+                           {"near", v >= transient::kNearCriticalShare * c.speed_m_s}};
+  }
+  j["output_step_ms"] = round_sig(r.output_grid.step_s * 1e3);
+  j["output_grid"] = r.output_grid.describe();
   if (r.scenario == transient::Scenario::free_vibration) {
     const transient::BounceDecay d = transient::bounce_decay(r);
     if (d.peaks >= 2) {
       j["free_vibration"] = {{"period_s", round_sig(d.period_s)},
+                             {"frequency_hz", round_sig(1 / d.period_s)},
                              {"log_decrement", round_sig(d.log_decrement)},
-                             {"peaks", d.peaks}};
+                             {"damping_ratio", round_sig(d.damping_ratio())},
+                             {"peaks", d.peaks},
+                             {"taken_over", d.from_steps ? "integrator steps" : "output samples"}};
     }
   }
   j["contact_switches"] = r.contact_events;

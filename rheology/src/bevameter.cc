@@ -49,6 +49,19 @@ double grid_then_golden(const std::function<double(double)>& f, double lo, doubl
   return golden_minimum(f, at(std::max(0, best - 1)), at(std::min(grid, best + 1)));
 }
 
+// Data that cannot separate the parameters (a singular Jacobian J of the residuals in them) give
+// no estimate at all, not a precise one (issue 44: "false precision").
+void require_determined(const Eigen::MatrixXd& J, const std::string& path, const std::string& rows,
+                        const std::string& parameters, const std::string& remedy) {
+  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(J).singularValues();
+  const double smallest = sv(sv.size() - 1);
+  if (!(smallest > 1e-9 * sv(0)))
+    throw InputError({path, 0, ""}, rows + " cannot determine " + parameters +
+                                        " together (their Jacobian is singular: condition " +
+                                        number_text(sv(0) / std::max(smallest, 1e-300)) + "); " +
+                                        remedy);
+}
+
 // Standard errors sqrt(diag(s^2 (J^T J)^-1)) with s^2 = RSS / (rows - parameters).
 Eigen::VectorXd standard_errors(const Eigen::MatrixXd& J, double rss) {
   const double dof = std::max<double>(1, J.rows() - J.cols());
@@ -239,16 +252,8 @@ BevameterResult identify_bevameter(const PlateData& d) {
     rss += std::pow(model_Pa / p - 1, 2);
     rss_abs += std::pow(model_Pa - p, 2);
   }
-  // Data that cannot separate the three parameters (a singular Jacobian) give no estimate at
-  // all, not a precise one.
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J);
-  const Eigen::VectorXd sv = svd.singularValues();
-  if (!(sv(2) > 1e-9 * sv(0)))
-    throw InputError({d.path, 0, ""},
-                     "the loading rows cannot determine n, k_c and k_phi together (their "
-                     "Jacobian is singular: condition " +
-                         number_text(sv(0) / std::max(sv(2), 1e-300)) +
-                         "); measure more sinkages and plate sizes");
+  require_determined(J, d.path, "the loading rows", "n, k_c and k_phi",
+                     "measure more sinkages and plate sizes");
   const Eigen::VectorXd se = standard_errors(J, rss);
   res.n_se = se(0), res.k_c_se = se(1), res.k_phi_se = se(2);
   auto& rep = res.report;
@@ -396,14 +401,8 @@ ShearResult identify_shear(const ShearData& d) {
     const double r = strength * g - rows[i].shear_stress_Pa;
     rss += std::pow(w * r, 2), rss_abs += r * r;
   }
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J);
-  const Eigen::VectorXd sv = svd.singularValues();
-  if (!(sv(2) > 1e-9 * sv(0)))
-    throw InputError({d.path, 0, ""},
-                     "the rows cannot determine c, phi and K together (their Jacobian is "
-                     "singular: condition " +
-                         number_text(sv(0) / std::max(sv(2), 1e-300)) +
-                         "); measure each normal stress at several displacements");
+  require_determined(J, d.path, "the rows", "c, phi and K",
+                     "measure each normal stress at several displacements");
   const Eigen::VectorXd se = standard_errors(J, rss);
   ShearResult res;
   res.cohesion_kPa = c * 1e-3, res.cohesion_se = se(0) * 1e-3;

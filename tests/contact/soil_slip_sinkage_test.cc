@@ -13,19 +13,14 @@ using namespace modaltyre::contact;
 
 const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 
-std::vector<TractionResult> lete_curve(std::vector<std::string> extra) {
-  std::vector<std::string> sets = {"contact.unit_length_mm=2",
-                                   "ground.model=bekker",
-                                   "ground.bekker.n=0.79",
-                                   "ground.bekker.k_c=102",
-                                   "ground.bekker.k_phi=5301",
-                                   "ground.bekker.cohesion_kPa=1.3",
-                                   "ground.bekker.friction_angle_deg=31.1",
-                                   "ground.bekker.shear_modulus_K_mm=12"};
-  sets.insert(sets.end(), extra.begin(), extra.end());
-  const TyreModel m = build_tyre_model(load_tyre_config(kConfig, sets));
+// LETE sand from its soil file with the slip sinkage's keys set as `--set` would.
+std::vector<TractionResult> lete_curve(const std::vector<std::string>& soil_sets) {
+  TyreConfig c = load_tyre_config(kConfig, {"contact.unit_length_mm=2"});
+  c.ground = modaltyre::ground::load_ground_file(
+      std::string(MODALTYRE_SOURCE_DIR) + "/configs/soils/lete_sand.yaml", soil_sets);
+  const TyreModel m = build_tyre_model(c);
   std::vector<TractionResult> rs =
-      steady_traction(m, m.config.ground, {{3000, 0.0}, {3000, 0.25}, {3000, 0.5}});
+      steady_traction(m, c.ground, {{3000, 0.0}, {3000, 0.25}, {3000, 0.5}});
   for (const auto& r : rs) EXPECT_TRUE(r.ok()) << r.message;
   return rs;
 }

@@ -89,7 +89,8 @@ void logger(fmi2ComponentEnvironment env, fmi2String, fmi2Status status, fmi2Str
 
 }  // namespace
 
-std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets) {
+std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets,
+                           const std::string& ground) {
   static std::atomic<int> counter{0};
   const fs::path dir =
       fs::temp_directory_path() /
@@ -99,6 +100,7 @@ std::string pack_and_unzip(const std::string& config, const std::vector<std::str
   const std::string fmu = (dir / "tyre.fmu").string();
   std::string cmd = std::string(MODALTYRE_CLI) + " fmu " + config + " --output " + fmu;
   for (const std::string& s : sets) cmd += " --set " + s;
+  if (!ground.empty()) cmd += " --ground " + ground;
   cmd += " > " + (dir / "pack.log").string() + " 2>&1";
   const int rc = std::system(cmd.c_str());
   if (rc != 0) {
@@ -110,6 +112,13 @@ std::string pack_and_unzip(const std::string& config, const std::vector<std::str
   }
   unzip(fmu, dir / "unzipped");
   return (dir / "unzipped").string();
+}
+
+const FmuFolder& road_2d_fmu() {
+  static const std::string folder =
+      pack_and_unzip(std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml");
+  static const FmuFolder fmu(folder);
+  return fmu;
 }
 
 FmuFolder::FmuFolder(const std::string& folder) : folder_(folder) {
@@ -146,6 +155,14 @@ FmuFolder::FmuFolder(const std::string& folder) : folder_(folder) {
   sym(api_.reset, "fmi2Reset");
   sym(api_.get_version, "fmi2GetVersion");
   sym(api_.get_types_platform, "fmi2GetTypesPlatform");
+  sym(api_.get_string, "fmi2GetString");
+  sym(api_.get_boolean, "fmi2GetBoolean");
+  sym(api_.set_debug_logging, "fmi2SetDebugLogging");
+  sym(api_.get_status, "fmi2GetStatus");
+  sym(api_.get_real_status, "fmi2GetRealStatus");
+  sym(api_.get_integer_status, "fmi2GetIntegerStatus");
+  sym(api_.get_boolean_status, "fmi2GetBooleanStatus");
+  sym(api_.get_string_status, "fmi2GetStringStatus");
 }
 
 FmuFolder::~FmuFolder() {
@@ -185,6 +202,16 @@ double FmuInstance::get(const std::string& name) {
   return v;
 }
 
+void FmuInstance::set_wheel(double x, double z, double vx, double vz, double angle, double spin) {
+  set("wheel_state.pos.x", x);
+  set("wheel_state.pos.z", z);
+  set("wheel_state.lin_vel.x", vx);
+  set("wheel_state.lin_vel.z", vz);
+  set("wheel_state.rot.e0", std::cos(angle / 2));
+  set("wheel_state.rot.e2", std::sin(angle / 2));
+  set("wheel_state.ang_vel.y", spin);
+}
+
 fmi2Status FmuInstance::initialize() {
   fmi2Status s = fmu_.api().setup_experiment(c_, fmi2False, 0, 0, fmi2False, 0);
   if (s != fmi2OK) return s;
@@ -195,7 +222,7 @@ fmi2Status FmuInstance::initialize() {
 
 fmi2Status FmuInstance::step(double h) {
   const fmi2Status s = fmu_.api().do_step(c_, t_, h, fmi2True);
-  if (s == fmi2OK) t_ += h;
+  if (s == fmi2OK || s == fmi2Warning) t_ += h;
   return s;
 }
 

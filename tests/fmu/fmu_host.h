@@ -11,9 +11,14 @@
 
 namespace modaltyre::fmu::test {
 
-/// Packs `config` (with --set overrides) into a unique folder under the temp dir, unzips it and
-/// returns that folder ("" after a gtest failure).
-std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets = {});
+/// Packs `config` (with --set overrides, on the soil file `ground` when given) into a unique
+/// folder under the temp dir, unzips it and returns that folder ("" after a gtest failure).
+std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets = {},
+                           const std::string& ground = "");
+
+/// The FMU of configs/sf350_2d_table3.yaml (the 2D variant: fast), packed once per process.
+class FmuFolder;
+const FmuFolder& road_2d_fmu();
 
 /// The fmi2 functions of a loaded shared library.
 struct Fmi2Api {
@@ -31,6 +36,14 @@ struct Fmi2Api {
   decltype(&fmi2Reset) reset = nullptr;
   decltype(&fmi2GetVersion) get_version = nullptr;
   decltype(&fmi2GetTypesPlatform) get_types_platform = nullptr;
+  decltype(&fmi2GetString) get_string = nullptr;
+  decltype(&fmi2GetBoolean) get_boolean = nullptr;
+  decltype(&fmi2SetDebugLogging) set_debug_logging = nullptr;
+  decltype(&fmi2GetStatus) get_status = nullptr;
+  decltype(&fmi2GetRealStatus) get_real_status = nullptr;
+  decltype(&fmi2GetIntegerStatus) get_integer_status = nullptr;
+  decltype(&fmi2GetBooleanStatus) get_boolean_status = nullptr;
+  decltype(&fmi2GetStringStatus) get_string_status = nullptr;
 };
 
 /// The standard's co-simulation function names (all must be exported).
@@ -68,6 +81,9 @@ class FmuInstance {
   /// Sets a Real by name; returns the status.
   fmi2Status set(const std::string& name, double value);
   double get(const std::string& name);
+  /// The wheel upright, heading +x, at (x, z) moving at (vx, vz), spun by `angle` about its
+  /// axis at `spin` [rad/s].
+  void set_wheel(double x, double z, double vx, double vz, double angle, double spin);
   /// Setup (start 0, no stop), enter and exit initialization.
   fmi2Status initialize();
   fmi2Status step(double h);

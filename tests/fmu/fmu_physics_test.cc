@@ -25,12 +25,6 @@ const std::string kPhysicsConfig =
 constexpr double kStep_s = 1e-3;
 constexpr double kLoad_N = 4000;
 
-const FmuFolder& packed_physics() {
-  static const std::string folder = pack_and_unzip(kPhysicsConfig);
-  static const FmuFolder fmu(folder);
-  return fmu;
-}
-
 const transient::TransientModel& model() {
   static const transient::TransientModel m = transient::build_transient_model(
       contact::build_tyre_model(contact::load_tyre_config(kPhysicsConfig)));
@@ -38,18 +32,6 @@ const transient::TransientModel& model() {
 }
 
 double R0() { return model().tyre.config.outer_radius_m; }
-
-/// The wheel upright, heading +x, spun by `angle` about its axis.
-void set_wheel(FmuInstance& f, double x, double z, double vx, double vz, double angle,
-               double spin) {
-  f.set("wheel_state.pos.x", x);
-  f.set("wheel_state.pos.z", z);
-  f.set("wheel_state.lin_vel.x", vx);
-  f.set("wheel_state.lin_vel.z", vz);
-  f.set("wheel_state.rot.e0", std::cos(angle / 2));
-  f.set("wheel_state.rot.e2", std::sin(angle / 2));
-  f.set("wheel_state.ang_vel.y", spin);
-}
 
 // The press (issue 34: within 1 % of footprint's load at the sinking). The hub is lowered
 // from touching to R0 - delta in 50 ms, then held 0.45 s.
@@ -60,16 +42,16 @@ TEST(FmuPhysics, PressSettlesToTheFootprintsLoadAtTheSinking) {
       contact::predict(model().tyre, model().tyre.config.default_conditions(kLoad_N));
   ASSERT_TRUE(p.ok());
   const double delta = p.sinking_mm * 1e-3;
-  FmuInstance f(packed_physics());
+  FmuInstance f(road_2d_fmu());
   ASSERT_TRUE(f.ok());
-  set_wheel(f, 0, R0(), 0, 0, 0, 0);
+  f.set_wheel(0, R0(), 0, 0, 0, 0);
   ASSERT_EQ(f.initialize(), fmi2OK);
   EXPECT_NEAR(f.get("wheel_load.force.z"), 0, 1e-6);
   const double ramp = 0.05, v = -delta / ramp;
   for (int k = 0; k < 500; ++k) {
     const double t = k * kStep_s;
     const bool moving = t < ramp - 1e-12;
-    set_wheel(f, 0, R0() + (moving ? v * t : -delta), 0, moving ? v : 0, 0, 0);
+    f.set_wheel(0, R0() + (moving ? v * t : -delta), 0, moving ? v : 0, 0, 0);
     ASSERT_EQ(f.step(kStep_s), fmi2OK) << (f.messages().empty() ? "" : f.messages().back());
   }
   EXPECT_NEAR(f.get("wheel_load.force.z"), kLoad_N, kPressTolerance * kLoad_N);
@@ -97,7 +79,7 @@ void roll(FmuInstance& f, Rolling& r, double until_s,
     const double s = std::min(t / r.ramp_s, 1.0);
     const double v = r.speed * s * s * (3 - 2 * s);
     if (spin_of) r.spin = spin_of(v);
-    set_wheel(f, r.x, r.z, v, r.w, r.angle, r.spin);
+    f.set_wheel(r.x, r.z, v, r.w, r.angle, r.spin);
     ASSERT_EQ(f.step(kStep_s), fmi2OK) << (f.messages().empty() ? "" : f.messages().back());
     const double Fz = f.get("wheel_load.force.z"), Fx = f.get("wheel_load.force.x");
     const double My = f.get("wheel_load.moment.y");
@@ -126,10 +108,10 @@ TEST(FmuPhysics, FreeRollingGivesTheRollingScenariosResistance) {
   const double rr_over_load = ref.rolling_resistance_N / model().settings.rolling.load_N;
   const contact::Prediction p =
       contact::predict(model().tyre, model().tyre.config.default_conditions(kLoad_N));
-  FmuInstance f(packed_physics());
+  FmuInstance f(road_2d_fmu());
   Rolling r;
   r.z = R0() - p.sinking_mm * 1e-3;
-  set_wheel(f, 0, r.z, 0, 0, 0, 0);
+  f.set_wheel(0, r.z, 0, 0, 0, 0);
   ASSERT_EQ(f.initialize(), fmi2OK);
   roll(f, r, 3.0);
   const std::size_t tail = 300;  // the last 10 %, as the scenario's rolling resistance
@@ -156,12 +138,12 @@ constexpr double kSlipStiffnessTolerance = 0.10;
 TEST(FmuPhysics, BrakingForceRisesWithSlipAndSaturatesAtMuFz) {
   const contact::Prediction p =
       contact::predict(model().tyre, model().tyre.config.default_conditions(kLoad_N));
-  FmuInstance f(packed_physics());
+  FmuInstance f(road_2d_fmu());
   Rolling r;
   r.speed = 30 / 3.6;
   r.ramp_s = 0.5;
   r.z = R0() - p.sinking_mm * 1e-3;
-  set_wheel(f, 0, r.z, 0, 0, 0, 0);
+  f.set_wheel(0, r.z, 0, 0, 0, 0);
   ASSERT_EQ(f.initialize(), fmi2OK);
   roll(f, r, 1.5);
   const std::size_t tail = 200;
@@ -208,9 +190,9 @@ QuarterCar quarter_car(FmuInstance& f, const std::string& profile, double durati
   const double h = kStep_s, g = 9.81, ms = 300, mu = 35, ks = 25e3, cs = 2e3, Iw = 0.9;
   const double speed = 30 / 3.6;
   f.set("step_size", h);
-  const fmi2ValueReference r = packed_physics().vr("road_profile");
+  const fmi2ValueReference r = road_2d_fmu().vr("road_profile");
   const fmi2String p = profile.c_str();
-  EXPECT_EQ(packed_physics().api().set_string(f.component(), &r, 1, &p), fmi2OK);
+  EXPECT_EQ(road_2d_fmu().api().set_string(f.component(), &r, 1, &p), fmi2OK);
   // Start at the static equilibrium: the tyre at its footprint's sinking under the car's
   // weight, the suspension compressed by the body's.
   const contact::Prediction p0 =
@@ -218,11 +200,11 @@ QuarterCar quarter_car(FmuInstance& f, const std::string& profile, double durati
   double zu = R0() - p0.sinking_mm * 1e-3, wu = 0, zs = zu + 0.35 - ms * g / ks, ws = 0;
   double x = 0, angle = 0;
   double spin = speed / R0();
-  set_wheel(f, x, zu, speed, wu, angle, spin);
+  f.set_wheel(x, zu, speed, wu, angle, spin);
   QuarterCar q;
   EXPECT_EQ(f.initialize(), fmi2OK) << (f.messages().empty() ? "" : f.messages().back());
   while (f.time() < duration - 1e-9) {
-    set_wheel(f, x, zu, speed, wu, angle, spin);
+    f.set_wheel(x, zu, speed, wu, angle, spin);
     if (f.step(h) != fmi2OK) {
       ADD_FAILURE() << (f.messages().empty() ? "" : f.messages().back());
       return q;
@@ -244,7 +226,7 @@ QuarterCar quarter_car(FmuInstance& f, const std::string& profile, double durati
 }
 
 std::string cleat_profile(double x_centre) {
-  const std::string path = packed_physics().folder() + "/cleat_test.csv";
+  const std::string path = road_2d_fmu().folder() + "/cleat_test.csv";
   std::ofstream out(path);
   out << "x_m,height_m\n-1000,0\n";
   const double H = 0.01, L = 0.02, edge = L / 4;
@@ -265,7 +247,7 @@ constexpr double kSettledLoadTolerance = 0.01;
 TEST(FmuPhysics, QuarterCarOverACleatSettlesBackToStaticEquilibrium) {
   const double speed = 30 / 3.6, t_cleat = 0.6;
   const std::string profile = cleat_profile(speed * t_cleat);
-  FmuInstance a(packed_physics(), "car a"), b(packed_physics(), "car b");
+  FmuInstance a(road_2d_fmu(), "car a"), b(road_2d_fmu(), "car b");
   const QuarterCar qa = quarter_car(a, profile, 3.0);
   ASSERT_EQ(qa.t.size(), 3000u);
   const double weight = (300 + 35) * 9.81;

@@ -4,8 +4,12 @@
 #include "modaltyre/fmu/model_description.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "modaltyre/core/errors.h"
@@ -132,7 +136,8 @@ TEST(FmuModelDescription, RefusesUndefinedAndMisdefinedUnits) {
   named(d, "wheel_load.force.x").unit = "kN";
   EXPECT_TRUE(mentions(validate(d), "not in UnitDefinitions"));
   ModelDescription e = tyre();
-  e.units[0].exponents[1] = 1;  // "1" with a metre in it
+  for (UnitDefinition& u : e.units)
+    if (u.name == "1") (*u.exponents)[1] = 1;  // "1" with a metre in it
   EXPECT_TRUE(mentions(validate(e), "do not match its name"));
   ModelDescription f = tyre();
   named(f, "terrain_height").unit.clear();
@@ -156,6 +161,72 @@ TEST(FmuModelDescription, EscapesTextInAttributes) {
   d.model_name = "a \"quoted\" <tyre> & more";
   const std::string xml = to_xml(d);
   EXPECT_NE(xml.find("a &quot;quoted&quot; &lt;tyre&gt; &amp; more"), std::string::npos);
+}
+
+/// xmllint's verdict on `xml` against the FMI 2.0 schema (tests/data/fmi2_schema: the
+/// standard's own XSD files): its exit status and output.
+std::pair<int, std::string> schema_check(const std::string& xml, const std::string& tag) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                     ("modaltyre_md_" + std::to_string(::getpid()) + tag + ".xml");
+  std::ofstream(file) << xml;
+  const std::string cmd = "xmllint --noout --schema '" + std::string(MODALTYRE_SOURCE_DIR) +
+                          "/tests/data/fmi2_schema/fmi2ModelDescription.xsd' '" + file.string() +
+                          "' 2>&1";
+  std::string out;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return {-1, "popen failed"};
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+  const int rc = pclose(p);
+  std::filesystem::remove(file);
+  return {rc, out};
+}
+
+TEST(FmuModelDescription, ValidatesAgainstTheFmi2Schema) {
+  const auto [rc, out] = schema_check(to_xml(tyre()), "ok");
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("validates"), std::string::npos) << out;
+  // A soil FMU's: the soil's keys as parameters, their units (one without SI exponents).
+  ground::GroundSettings sand;
+  sand.model = ground::GroundModel::bekker;
+  sand.bekker = {0.79, 102, 5301, ground::WongUnloading{0, 5e5}};
+  TyreDescriptionInfo info;
+  info.tyre_name = "on sand";
+  info.guid = "{00000000-0000-0000-0000-000000000001}";
+  info.soil = &sand;
+  const ModelDescription soil = tyre_model_description(info);
+  EXPECT_TRUE(validate(soil).empty());
+  const std::string xml = to_xml(soil);
+  EXPECT_NE(xml.find("<Unit name=\"kN/m^(n+1)\"/>"), std::string::npos);
+  EXPECT_NE(xml.find("name=\"ground.bekker.unloading.Au\""), std::string::npos);
+  const auto [rc3, out3] = schema_check(xml, "soil");
+  EXPECT_EQ(rc3, 0) << out3;
+  // The check sees a breach: a causality the schema does not know.
+  std::string broken = to_xml(tyre());
+  broken.replace(broken.find("causality=\"input\""), 17, "causality=\"inlet\"");
+  const auto [rc2, out2] = schema_check(broken, "broken");
+  EXPECT_NE(rc2, 0) << out2;
+}
+
+TEST(FmuModelDescription, RefusesARangeThatExcludesItsStartAndDependenciesOnUnknowns) {
+  ModelDescription d = tyre();
+  named(d, "terrain_mu").max = 0.5;  // start 0.8
+  EXPECT_TRUE(mentions(validate(d), "start value outside [min, max]"));
+  ModelDescription e = tyre();
+  named(e, "step_size").min = 2.0;  // min above max
+  EXPECT_TRUE(mentions(validate(e), "min is not below max"));
+  ModelDescription f = tyre();
+  named(f, "wheel_load.force.z").dependencies = std::vector<std::string>{"wheel_load.force.x"};
+  EXPECT_TRUE(mentions(validate(f), "is not a known input"));
+  ModelDescription g = tyre();
+  named(g, "wheel_load.force.z").initial_dependencies = std::vector<std::string>{"no.such"};
+  EXPECT_TRUE(mentions(validate(g), "is not a variable"));
+  // A parameter (initial exact) is a known in initialization mode, not at a step.
+  ModelDescription h = tyre();
+  named(h, "wheel_load.force.z").initial_dependencies = std::vector<std::string>{"step_size"};
+  EXPECT_TRUE(validate(h).empty());
+  named(h, "wheel_load.force.z").dependencies = std::vector<std::string>{"step_size"};
+  EXPECT_TRUE(mentions(validate(h), "is not a known input"));
 }
 
 }  // namespace

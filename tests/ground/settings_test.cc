@@ -72,6 +72,28 @@ TEST(GroundSettings, EveryKeyCanBeSetFromTheCommandLine) {
   EXPECT_EQ(kv.kelvin_voigt.E2_MPa, 3);
 }
 
+// The discovery's soil_unloading switch: Wong's unloading on while its block is given, off with
+// enabled: false (the rigid-plastic soil, as without the block).
+TEST(GroundSettings, WongsUnloadingIsSwitchable) {
+  const std::string f =
+      temp_file("unl_on.yaml",
+                "ground:\n  model: bekker\n  bekker:\n    n: 0.79\n    k_c: 102\n    "
+                "k_phi: 5301\n    unloading: {k0: 0, Au: 5e5}\n");
+  EXPECT_TRUE(load_ground_file(f).bekker.unloading.has_value());
+  const GroundSettings off = load_ground_file(f, {"ground.bekker.unloading.enabled=false"});
+  EXPECT_FALSE(off.bekker.unloading.has_value());
+  const GroundSettings none = load_ground_file(kSoils + "lete_sand.yaml");
+  const RigidWheel wheel{0.2948, 0.14};
+  GroundSettings a = off, b = none;
+  a.bekker_shear = b.bekker_shear;
+  EXPECT_EQ(rigid_wheel_rolling(a, wheel, 3000, 0.2).sinkage_m,
+            rigid_wheel_rolling(b, wheel, 3000, 0.2).sinkage_m);
+  const std::string m = message_of([&] {
+    load_ground_file(kSoils + "lete_sand.yaml", {"ground.bekker.unloading.enabled=true"});
+  });
+  EXPECT_NE(m.find("ground.bekker.unloading.Au"), std::string::npos) << m;
+}
+
 // Issue 44, "soil settings dropped silently": each case exit 2 naming file, line and key.
 TEST(GroundSettings, SoilKeysAreNeverDroppedInSilence) {
   // A soil file without model: (the rigid road) and model: rigid with a bekker block.

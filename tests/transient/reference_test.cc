@@ -108,8 +108,10 @@ TEST(TransientReference, LoadHoldCreepFollowsTheReferenceAndEndsAtTheStaticFootp
   const FootprintResult st = solve_footprint(M.tyre, LoadCase{M.settings.load_hold.load_N, 0});
   ASSERT_TRUE(st.ok());
   EXPECT_NEAR(r.samples.back().sinking_m / st.sinking_m, 1.0, kRestTol);
-  // The outputs share the reference's 2 ms grid: compare at its stored times.
-  const double dt = M.settings.output_step_s;
+  // The outputs share the reference's 2 ms grid (the load-hold's chosen grid: it starts
+  // unloaded, output_grid.h): compare at its stored times.
+  const double dt = r.output_grid.step_s;
+  ASSERT_DOUBLE_EQ(dt, 0.002);
   const auto& t = ref["t_s"];
   const auto& sink = ref["sinking_mm"];
   double worst = 0;

@@ -257,7 +257,69 @@ void read_patch(const Reader& r, MfTyre& t) {
   }
 }
 
+// [LONGITUDINAL_COEFFICIENTS], [ROLLING_COEFFICIENTS], the effective radius' keys of
+// [VERTICAL], [SCALING_COEFFICIENTS] and LONGVL. Coefficients are dimensionless numbers; the
+// bounds only refuse what no tyre states (a typing error, a value in the wrong unit).
+void read_rolling_wheel(const TirFile& f, const Reader& r, MfTyre& t) {
+  constexpr double kBig = 1e6;
+  const auto coef = [&](const char* section, const char* key, double fallback) {
+    return r.number(section, key, Dimension::none, -kBig, kBig, "").value_or(fallback);
+  };
+  t.longvl_m_s = r.number("MODEL", "LONGVL", Dimension::speed, 0, 1e3, "m/s").value_or(0);
+  const char* sc = "SCALING_COEFFICIENTS";
+  t.scaling = MfScaling{coef(sc, "LFZO", 1), coef(sc, "LCX", 1),  coef(sc, "LMUX", 1),
+                        coef(sc, "LEX", 1),  coef(sc, "LKX", 1),  coef(sc, "LHX", 1),
+                        coef(sc, "LVX", 1),  coef(sc, "LMUV", 0), coef(sc, "LMY", 1)};
+  const char* lo = "LONGITUDINAL_COEFFICIENTS";
+  if (f.value(lo, "PCX1") && f.value(lo, "PDX1") && f.value(lo, "PKX1")) {
+    MfLongitudinal c;
+    double* slots[] = {&c.pcx1, &c.pdx1, &c.pdx2, &c.pdx3, &c.pex1, &c.pex2, &c.pex3,
+                       &c.pex4, &c.pkx1, &c.pkx2, &c.pkx3, &c.phx1, &c.phx2, &c.pvx1,
+                       &c.pvx2, &c.ppx1, &c.ppx2, &c.ppx3, &c.ppx4};
+    const char* keys[] = {"PCX1", "PDX1", "PDX2", "PDX3", "PEX1", "PEX2", "PEX3",
+                          "PEX4", "PKX1", "PKX2", "PKX3", "PHX1", "PHX2", "PVX1",
+                          "PVX2", "PPX1", "PPX2", "PPX3", "PPX4"};
+    for (std::size_t i = 0; i < std::size(keys); ++i) *slots[i] = coef(lo, keys[i], 0);
+    t.longitudinal = c;
+  } else {
+    t.longitudinal_reason =
+        "the file has no [LONGITUDINAL_COEFFICIENTS] PCX1, PDX1 and PKX1 (the pure-slip force)";
+  }
+  const char* ro = "ROLLING_COEFFICIENTS";
+  if (f.value(ro, "QSY1")) {
+    MfRolling q;
+    q.qsy1 = coef(ro, "QSY1", 0), q.qsy2 = coef(ro, "QSY2", 0), q.qsy3 = coef(ro, "QSY3", 0);
+    q.qsy4 = coef(ro, "QSY4", 0), q.qsy5 = coef(ro, "QSY5", 0), q.qsy6 = coef(ro, "QSY6", 0);
+    // Before MF 6.1 the law is -R0 F_z (...) (Pacejka 2012 4.E70 with no load exponent).
+    const bool mf6 = t.fittyp >= 61;
+    q.qsy7 = mf6 ? coef(ro, "QSY7", 0) : 1;
+    q.qsy8 = mf6 ? coef(ro, "QSY8", 0) : 0;
+    t.rolling = q;
+  } else {
+    t.rolling_reason = "the file has no [ROLLING_COEFFICIENTS] QSY1 (the rolling resistance)";
+  }
+  if (f.value("VERTICAL", "Q_RE0")) {
+    const char* ve = "VERTICAL";
+    t.effective_radius =
+        MfEffectiveRadius{coef(ve, "Q_RE0", 1), coef(ve, "Q_V1", 0), coef(ve, "BREFF", 0),
+                          coef(ve, "DREFF", 0), coef(ve, "FREFF", 0)};
+  } else {
+    t.radius_reason = "the file has no [VERTICAL] Q_RE0 (the effective rolling radius, A3.6)";
+  }
+}
+
 }  // namespace
+
+MfBasis MfTyre::mf_basis() const {
+  MfBasis b;
+  b.unloaded_radius_m = unloaded_radius_m;
+  b.fnomin_N = vertical.fnomin_N;
+  b.longvl_m_s = longvl_m_s;
+  b.nominal_pressure_Pa = vertical.nominal_pressure_Pa;
+  b.pressure_Pa = inflation_pressure_Pa;
+  b.vertical_stiffness_N_m = vertical_stiffness_N_m();
+  return b;
+}
 
 std::optional<double> MfTyre::load_N(double deflection_m) const {
   if (deflection_m < 0) return std::nullopt;
@@ -331,6 +393,7 @@ MfTyre interpret_tir(const TirFile& file) {
                      "negative?)");
   }
   read_patch(r, t);
+  read_rolling_wheel(file, r, t);
   return t;
 }
 

@@ -56,6 +56,7 @@ TirComparison compare_tir(const contact::TyreModel& model, const MfTyre& tir,
     throw InputError({"--points", 0, ""},
                      "give 3 to " + std::to_string(kMaxModelLoads) + " points");
   }
+  if (options.slip.enabled) check_slip_options(options.slip);  // before the footprints
   const contact::TyreConfig& c = model.config;
   TirComparison out;
   out.tir = tir;
@@ -106,6 +107,11 @@ TirComparison compare_tir(const contact::TyreModel& model, const MfTyre& tir,
                        : !width_scalable ? "the config states no tyre.section_width_mm to scale "
                                            "2b/W to"
                                          : outside;
+  }
+  if (options.slip.enabled) {
+    const SlipRuns runs = run_slip(model, out.model_fnomin_N, options.slip);
+    out.slip =
+        compare_slip_runs(tir, runs, out.dimensionless, out.model_fnomin_N, c.outer_radius_m);
   }
   return out;
 }

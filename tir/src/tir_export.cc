@@ -10,6 +10,8 @@
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/tir/mf_formulas.h"
+#include "modaltyre/tir/slip_text.h"
+#include "tir_text.h"
 
 #ifndef MODALTYRE_VERSION
 #define MODALTYRE_VERSION "unknown"
@@ -50,11 +52,7 @@ FitQuality quality(const std::vector<double>& model, const std::vector<double>& 
   return q;
 }
 
-std::string g(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
+std::string g(double v) { return detail::number_text(v); }
 
 std::string pct(const FitQuality& q) {
   char buf[64];
@@ -143,6 +141,7 @@ void fit_pressure(const contact::TyreModel& model, TirFit& f) {
 
 TirFit fit_tir(const contact::TyreModel& model, const TirExportOptions& options) {
   const contact::TyreConfig& c = model.config;
+  if (options.slip.enabled) check_slip_options(options.slip);  // before the footprints
   TirFit f;
   f.fnomin_N = model_fnomin_N(c, options.fnomin_N);
   f.unloaded_radius_m = c.outer_radius_m;
@@ -174,6 +173,14 @@ TirFit fit_tir(const contact::TyreModel& model, const TirExportOptions& options)
   fit_patch(f);
   f.model_tangent_stiffness_N_m = model_tangent_stiffness_N_m(model, f.fnomin_N);
   fit_pressure(model, f);
+  if (options.slip.enabled) {
+    MfBasis basis;
+    basis.unloaded_radius_m = f.unloaded_radius_m;
+    basis.fnomin_N = f.fnomin_N;
+    basis.nominal_pressure_Pa = basis.pressure_Pa = f.pressure_Pa;
+    basis.vertical_stiffness_N_m = f.vertical_stiffness_N_m;
+    f.slip = fit_slip(model, basis, options.slip);
+  }
   return f;
 }
 
@@ -181,16 +188,17 @@ std::string tir_text(const TirFit& f, const contact::TyreConfig& config,
                      const TirExportOptions& options) {
   std::ostringstream s;
   const auto key = [&s](const std::string& k, const std::string& v, const std::string& note) {
-    s << k << std::string(k.size() < 25 ? 25 - k.size() : 1, ' ') << "= " << v;
-    if (!note.empty()) s << std::string(v.size() < 20 ? 20 - v.size() : 1, ' ') << " $" << note;
-    s << "\n";
+    detail::key_line(s, k, v, note);
   };
   const auto lo = f.curve.points.front().load_N, hi = f.curve.points.back().load_N;
   s << "[MDI_HEADER]\n";
   key("FILE_TYPE", "'tir'", "");
   key("FILE_VERSION", "3.0", "");
   key("FILE_FORMAT", "'ASCII'", "");
-  s << "! : TIRE_VERSION :      MF-Tyre 6.2 (vertical and contact-patch sections only)\n"
+  s << "! : TIRE_VERSION :      MF-Tyre 6.2 ("
+    << (f.slip ? "vertical, contact-patch, longitudinal and rolling-resistance sections only"
+               : "vertical and contact-patch sections only")
+    << ")\n"
     << "! : COMMENT :           written by modaltyre " << MODALTYRE_VERSION << " from "
     << printable(options.config_label, 200) << "\n"
     << "! : COMMENT :           tyre: " << printable(config.name, 120) << "\n"
@@ -208,9 +216,13 @@ std::string tir_text(const TirFit& f, const contact::TyreConfig& config,
   for (const auto& c : options.comments)
     s << "! : COMMENT :           " << printable(c, 400) << "\n";
   s << "! : COMMENT :           [STRUCTURAL] and [INERTIA] left out: the hammer test's modes are "
-       "those of its own boundary condition, not MF-Swift's rigid ring on a fixed rim\n"
-    << "! : COMMENT :           no force and moment (slip) coefficients: the model predicts "
-       "none\n";
+       "those of its own boundary condition, not MF-Swift's rigid ring on a fixed rim\n";
+  if (f.slip) {
+    write_slip_comments(s, *f.slip);
+  } else {
+    s << "! : COMMENT :           no force and moment (slip) coefficients: the model predicts "
+         "none\n";
+  }
   s << "$----------------------------------------------------------------units\n[UNITS]\n";
   key("LENGTH", "'meter'", "");
   key("FORCE", "'newton'", "");
@@ -220,6 +232,7 @@ std::string tir_text(const TirFit& f, const contact::TyreConfig& config,
   key("PRESSURE", "'pascal'", "");
   s << "$----------------------------------------------------------------model\n[MODEL]\n";
   key("FITTYP", "62", "Magic Formula version number");
+  if (f.slip) write_slip_model_keys(s, *f.slip);
   s << "$-----------------------------------------------------------dimensions\n[DIMENSION]\n";
   key("UNLOADED_RADIUS", g(f.unloaded_radius_m), "Free tyre radius (tyre.outer_radius_mm)");
   key("WIDTH", g(f.width_m), "Nominal section width of the tyre");
@@ -234,6 +247,7 @@ std::string tir_text(const TirFit& f, const contact::TyreConfig& config,
   key("VERTICAL_STIFFNESS", g(f.vertical_stiffness_N_m), "Tyre vertical stiffness at FNOMIN");
   key("Q_FZ2", g(f.q_fz2), "Quadratic term in load vs. deflection");
   if (f.pfz1) key("PFZ1", g(*f.pfz1), "Pressure effect on vertical stiffness");
+  if (f.slip) write_slip_vertical_keys(s, *f.slip);
   s << "$---------------------------------------------------deflection load\n"
        "[DEFLECTION_LOAD_CURVE]\n{pen fz}\n0 0\n";
   for (const auto& p : f.curve.points) s << g(p.sinking_m) << " " << g(p.load_N) << "\n";
@@ -245,6 +259,7 @@ std::string tir_text(const TirFit& f, const contact::TyreConfig& config,
     key("Q_RB1", g(*f.q_rb1), "Root term in contact width equation");
     key("Q_RB2", g(*f.q_rb2), "Linear term in contact width equation");
   }
+  if (f.slip) write_slip_sections(s, *f.slip);
   return s.str();
 }
 

@@ -90,6 +90,8 @@ double TirUnits::to_si(Dimension d) const {
       return pressure_Pa;
     case Dimension::damping:
       return force_N * time_s / length_m;
+    case Dimension::speed:
+      return length_m / time_s;
     case Dimension::mass:
       return mass_kg;
     case Dimension::time:

@@ -221,6 +221,13 @@ void CellSystem::forces(double t, const double* y, Eigen::VectorXd& f, Eigen::Ve
   }
 }
 
+bool CellSystem::accepted_forces(double t, const Eigen::VectorXd*& f,
+                                 const Eigen::VectorXd*& F) const {
+  if (t != t_step_) return false;
+  f = &f_step_, F = &F_step_;
+  return true;
+}
+
 void CellSystem::rhs(double t, const double* y, double* ydot) const {
   const TransientModel& M = cm_.M();
   const int nq = M.nq, nr = M.nr;
@@ -311,9 +318,15 @@ int CellSystem::update_contact_set(double t, const double* y) const {
     forces(t, y, f_acc_, F_, &g_, &P_);
     soil_->accept(t, ranges_);
     g_ = f_acc_;
+    f_step_ = f_acc_;
+    F_step_ = F_;
   } else {
-    penetration(t, y, g_, P_);
+    // The penetration, and in the same pass the forces at this state (accepted_forces()).
+    F_step_.setZero(M.m);
+    f_step_.resize(ncells_);
+    slots(t, y, g_, P_, &f_step_, &F_step_);
   }
+  t_step_ = t;
   long changed = 0;
   const int nc = cm_.classes.size();
   const double z = hub_z(t, y);

@@ -9,7 +9,9 @@
 
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/bracketed_root.h"
+#include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/cell_system.h"
+#include "modaltyre/transient/soil_contact.h"
 #include "patch_ode.h"
 
 namespace modaltyre::transient {
@@ -107,6 +109,8 @@ WheelLoad wheel_load(const TransientSample& s) {
   w.width_m = s.width_m;
   w.contact_area_m2 = s.contact_area_m2;
   w.pressure_centre_m = s.pressure_centre_m;
+  w.soil_sinkage_m = s.soil_sinkage_m;
+  w.compaction_resistance_N = s.soil_resistance_N;
   return w;
 }
 
@@ -125,6 +129,20 @@ struct DrivenTyre::Impl {
                        "the largest deflection must be finite and >= 0");
     three_d = model.tyre.config.footprint_3d.has_value() && !opt.force_2d;
     if (three_d) cm.emplace(build_cell_model(model));
+    on_soil = model.tyre.config.ground.soil();
+    if (on_soil) {
+      refuse_on_soil(model, Scenario::load_hold, three_d);
+      if (opt.road_profile)
+        throw InputError(InputLocation{model.tyre.config.source, 0, "ground.model"},
+                         "a road profile under a tyre on a soil is not modelled");
+      // Bekker's b at the config's rolling load (soil_for_plan's rule for a scenario's load).
+      const double load = model.settings.rolling.load_N;
+      if (three_d)
+        static_soil_cells(*cm, load, 0.0, &bekker_width_m);
+      else
+        static_soil_contact(model, load, 0.0, &bekker_width_m);
+      if (!(bekker_width_m > 0)) bekker_width_m = model.tyre.config.tread.width_m;
+    }
     plan.scenario = Scenario::load_hold;
     plan.duration_s = std::numeric_limits<double>::infinity();
     plan.load = [](double) { return 0.0; };
@@ -134,9 +152,49 @@ struct DrivenTyre::Impl {
     plan.road_max_height_m = opt.road_max_height_m;
   }
 
-  /// A static state at a deflection, of the patch in use.
-  StaticContact units_at(double d) const { return units_at_deflection(M, d); }
-  StaticCells cells_at(double d) const { return cells_at_deflection(*cm, d); }
+  /// A static state at a deflection, of the patch in use (on the soil at Bekker's b).
+  StaticContact units_at(double d) const {
+    if (!on_soil) return units_at_deflection(M, d);
+    return static_at_deflection<StaticContact>(d, [&](double load) {
+      StaticContact c = static_soil_contact(M, load, bekker_width_m);
+      const double s = c.sinking_m;
+      return std::make_pair(std::move(c), s);
+    });
+  }
+  StaticCells cells_at(double d) const {
+    if (!on_soil) return cells_at_deflection(*cm, d);
+    return static_at_deflection<StaticCells>(d, [&](double load) {
+      StaticCells c = static_soil_cells(*cm, load, bekker_width_m);
+      const double s = c.sinking_m;
+      return std::make_pair(std::move(c), s);
+    });
+  }
+
+  /// A virgin soil whose memory is the initial state's depths at t0.
+  void new_soil(double t0) {
+    if (!on_soil) return;
+    const ground::GroundSettings& ground = M.tyre.config.ground;
+    if (three_d) {
+      soil3d = std::make_unique<CellSoil>(*cm, ground, bekker_width_m, opt.distance_m);
+      soil3d->set_memory(initial_cells.soil_depth_m, t0);
+    } else {
+      soil2d = std::make_unique<SoilContact>(M, ground, M.tyre.config.tread.width_m, bekker_width_m,
+                                             opt.distance_m);
+      soil2d->set_memory(initial_units.soil_depth_m, t0);
+    }
+  }
+  /// The soil's memory kept at the start of an advance, put back when it is redone.
+  void save_soil() {
+    saved_soil.clear();
+    if (soil2d) saved_soil.push_back(*soil2d);
+    if (soil3d)
+      for (int c = 0; c < soil3d->classes(); ++c) saved_soil.push_back(soil3d->row(c));
+  }
+  void restore_soil() {
+    if (soil2d) *soil2d = saved_soil.at(0);
+    if (soil3d)
+      for (int c = 0; c < soil3d->classes(); ++c) soil3d->row(c) = saved_soil.at(c);
+  }
 
   /// A new ODE (tread states on the touchable range, or everywhere when `all`) and its
   /// integrator at (t, y); y empty: the ODE's own initial (static) state.
@@ -144,11 +202,11 @@ struct DrivenTyre::Impl {
     if (three_d) {
       std::vector<UnitRange> ranges;
       if (!all && bound_cells) ranges = touchable_sections(*cm, plan, *bound_cells);
-      ode = detail::make_cells_ode(*cm, plan, initial_cells, ranges);
+      ode = detail::make_cells_ode(*cm, plan, initial_cells, ranges, soil3d.get());
     } else {
       UnitRange units{0, M.m - 1};
       if (!all && bound_units) units = touchable_units(M, plan, *bound_units);
-      ode = detail::make_units_ode(M, plan, initial_units, units);
+      ode = detail::make_units_ode(M, plan, initial_units, units, soil2d.get());
     }
     if (y.empty()) {
       y = ode->initial_state();
@@ -166,6 +224,7 @@ struct DrivenTyre::Impl {
     DriveStatus st;
     const double t0 = cvode->time();
     const std::vector<double> y0 = ode->full_state(cvode->state());
+    if (on_soil && !all_units) save_soil();
     for (long k = 0; cvode->time() < t_next; ++k) {
       if (k >= kMaxStepsPerAdvance) {
         st.ok = false;
@@ -185,6 +244,7 @@ struct DrivenTyre::Impl {
         // A unit beyond the touchable range reached the road: the step again with every unit,
         // from its start (the tread states of the others are zero: never touched).
         widened_ = true;
+        if (on_soil) restore_soil();
         start(t0, y0, true);
         return integrate(t_next);
       }
@@ -208,6 +268,12 @@ struct DrivenTyre::Impl {
   std::unique_ptr<solvers::CvodeKlu> cvode;
   HubState hub_now;
   bool all_units = false, widened_ = false;
+  bool on_soil = false;
+  double bekker_width_m = 0;
+  double bound_deflection_m = -1;  ///< d_max of the bound kept (-1: none)
+  std::unique_ptr<SoilContact> soil2d;
+  std::unique_ptr<CellSoil> soil3d;
+  std::vector<SoilContact> saved_soil;
 };
 
 DrivenTyre::DrivenTyre(const TransientModel& model, const DrivenTyreOptions& options)
@@ -228,15 +294,32 @@ void DrivenTyre::reset(const HubState& initial, double t0) {
   I.track->set_step(t0, initial, t0, initial, HubInterpolation::hold);
   I.widened_ = false;
   const double d = initial.deflection_m, d_max = std::max(I.opt.max_deflection_m, d);
-  I.bound_units.reset();
-  I.bound_cells.reset();
-  if (I.three_d) {
-    I.initial_cells = I.cells_at(d);
-    if (I.opt.max_deflection_m > 0) I.bound_cells = I.cells_at(d_max);
-  } else {
-    I.initial_units = I.units_at(d);
-    if (I.opt.max_deflection_m > 0) I.bound_units = I.units_at(d_max);
+  // The bound depends on d_max only: kept from the last reset at the same d_max (a static
+  // footprint search each; on a 3D soil seconds).
+  const bool keep_bound = I.opt.max_deflection_m > 0 && d_max == I.bound_deflection_m;
+  if (!keep_bound) {
+    I.bound_units.reset();
+    I.bound_cells.reset();
+    I.bound_deflection_m = -1;
   }
+  if (I.three_d)
+    I.initial_cells = I.cells_at(d);
+  else
+    I.initial_units = I.units_at(d);
+  if (I.opt.max_deflection_m > 0 && !keep_bound) {
+    try {
+      if (I.three_d)
+        I.bound_cells = I.cells_at(d_max);
+      else
+        I.bound_units = I.units_at(d_max);
+    } catch (const ComputationError&) {
+      // On a soil the bounding footprint may leave the candidate window (a soft soil wraps a
+      // long contact): every unit then, as the soil runs do (bounding_soil_contact).
+      if (!I.on_soil) throw;
+    }
+  }
+  if (I.opt.max_deflection_m > 0) I.bound_deflection_m = d_max;
+  I.new_soil(t0);
   I.start(t0, {}, false);
 }
 
@@ -304,7 +387,8 @@ TransientResult run_prescribed(const TransientModel& M,
   if (!(duration_s > 0) || !std::isfinite(duration_s))
     throw InputError(InputLocation{"run_prescribed", 0, "duration_s"},
                      "the duration must be finite and positive");
-  const double dt = M.settings.output_step_s;
+  // The config's output step, or the automatic grid's largest (output_grid.h).
+  const double dt = M.settings.output_step_s > 0 ? M.settings.output_step_s : kAutoOutputStepCap_s;
   if (duration_s / dt > 1e6)
     throw InputError(InputLocation{M.tyre.config.source, 0, "transient.output_step_ms"},
                      "more than 1e6 output samples over the prescribed motion");

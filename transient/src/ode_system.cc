@@ -261,6 +261,24 @@ void TransientSystem::forces_band(double t, const double* y, Eigen::VectorXd& f,
   penetration_band(t, y, f, lo, hi, /*xi_ready=*/false, /*forces=*/true);
 }
 
+bool TransientSystem::accepted_forces(double t, Eigen::VectorXd& f) const {
+  if (t != accepted_t_) return false;
+  const auto& M = model_;
+  if (f.size() != M.m)
+    f.setZero(M.m);
+  else
+    f.segment(units_.lo, units_.size()).setZero();
+  const int lo = accepted_lo_, n = accepted_hi_ - accepted_lo_ + 1;
+  if (n <= 0) return true;
+  if (soil_) {
+    f.segment(lo, n) = scratch_f_.segment(lo, n);
+  } else {  // k max(0, g), as penetration_band() with forces
+    const auto g = scratch_g_.segment(lo, n).array();
+    f.segment(lo, n) = (g > 0).select(M.k_contact.segment(lo, n).array() * g, 0.0);
+  }
+  return true;
+}
+
 Eigen::VectorXd TransientSystem::forces(double t, const double* y) const {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model_.m);
   forces_into(t, y, f);
@@ -290,6 +308,7 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
     int a = 0, b = -1;
     forces_band(t, y, scratch_f_, a, b);
     soil_->accept(t, a, b);
+    accepted_lo_ = a, accepted_hi_ = b;
   }
   contact_coordinates(y);
   const bool refresh =
@@ -320,6 +339,8 @@ int TransientSystem::update_contact_set(double t, const double* y) const {
   } else {
     penetration_band(t, y, scratch_g_, lo, hi, /*xi_ready=*/true);  // xi of y from above
   }
+  if (!soil_) accepted_lo_ = lo, accepted_hi_ = hi;
+  accepted_t_ = t;
   const bool first = in_contact_.size() == 0;
   if (first) in_contact_.setZero(M.m);
   // Units that can have changed: the reach now and the contact set before.

@@ -49,6 +49,12 @@ class PatchOde {
   virtual bool escaped() const = 0;
   /// One output sample (and the pressure map on the 3D patch when `map` is given).
   virtual TransientSample observe(double t, const double* y, CellMap* map = nullptr) = 0;
+  /// The sample's load_N, longitudinal_force_N, pressure_centre_m and hub_displacement_m only
+  /// (the rest not computed): a pass over the forces, without the edges, width and soil.
+  virtual TransientSample observe_forces(double t, const double* y) = 0;
+  /// observe_forces() at the state update_contact_set() just accepted at t, from the forces it
+  /// computed there (no second pass over the contact; a pass when it accepted no state at t).
+  virtual TransientSample step_forces(double t, const double* y) = 0;
   /// The vertical contact force of every unit (2D) or section (3D: summed over its cells) at
   /// (t, y) into F (m entries; 0 where nothing touches) [N].
   virtual void vertical_forces(double t, const double* y, Eigen::VectorXd& F) = 0;

@@ -16,13 +16,14 @@ namespace {
 /// samples: no allocation and no clearing of all m units per sample); sag_min: min_i s_i.
 TransientSample observe_units(const TransientModel& M, const TransientSystem& sys,
                               const ScenarioPlan& plan, double t, const double* y,
-                              Eigen::VectorXd& f, double sag_min) {
+                              Eigen::VectorXd& f, double sag_min, bool forces_only = false,
+                              bool accepted = false) {
   TransientSample s;
   s.t_s = t;
   // The forces k max(0, g) where units can touch (on the system's units only: tread_window.h);
   // the edge interpolation below needs g also at the first unit outside each end, computed there
   // from the contact coordinates of y that forces_into() left.
-  sys.forces_into(t, y, f);
+  if (!(forces_only && accepted && sys.accepted_forces(t, f))) sys.forces_into(t, y, f);
   const int u0 = sys.units().lo, u1 = sys.units().hi;
   const double z = sys.hub_z(t, y);
   const double R0 = M.tyre.config.outer_radius_m;
@@ -32,7 +33,7 @@ TransientSample observe_units(const TransientModel& M, const TransientSystem& sy
   s.load_N = f.segment(u0, u1 - u0 + 1).sum();
   // Sinking max_i (z + h_i - s_i): the least sag on a flat road, over the cleat's units too.
   double sink = z - sag_min, moment = 0, slope_force = 0;
-  if (plan.has_road()) {
+  if (plan.has_road() && !forces_only) {
     Eigen::VectorXd h = Eigen::VectorXd::Zero(M.m);
     sys.add_road(t, 0, M.m - 1, h);
     sink = std::max(sink, (z + h.array() - M.tyre.sag.array()).maxCoeff());
@@ -55,13 +56,14 @@ TransientSample observe_units(const TransientModel& M, const TransientSystem& sy
   }
   s.contact_units = units;
   s.sinking_m = sink;
+  s.pressure_centre_m = s.load_N > 0 ? moment / s.load_N : 0;
+  s.longitudinal_force_N = -moment / (R0 - z) - slope_force;
+  if (forces_only) return s;
   const SoilContact* soil = sys.soil();
   if (soil) {
     s.soil_sinkage_m = soil->deepest_loaded_m(u0, u1, f);
     s.soil_resistance_N = soil->compaction_resistance_N(u0, u1, f);
   }
-  s.pressure_centre_m = s.load_N > 0 ? moment / s.load_N : 0;
-  s.longitudinal_force_N = -moment / (R0 - z) - slope_force;
   if (first >= 0) {
     // Deformed positions of the end units (as footprint.cc): dynamic modes from the state,
     // residual orders and tread quasi-statically from the current forces.
@@ -125,6 +127,13 @@ class UnitsOde final : public PatchOde {
   bool escaped() const override { return sys_.escaped(); }
   TransientSample observe(double t, const double* y, CellMap*) override {
     return observe_units(M_, sys_, plan_, t, y, f_sample_, sag_min_);
+  }
+  TransientSample observe_forces(double t, const double* y) override {
+    return observe_units(M_, sys_, plan_, t, y, f_sample_, sag_min_, /*forces_only=*/true);
+  }
+  TransientSample step_forces(double t, const double* y) override {
+    return observe_units(M_, sys_, plan_, t, y, f_sample_, sag_min_, /*forces_only=*/true,
+                         /*accepted=*/true);
   }
   void vertical_forces(double t, const double* y, Eigen::VectorXd& F) override {
     sys_.forces_into(t, y, F);

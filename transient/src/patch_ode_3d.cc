@@ -43,26 +43,38 @@ class CellObserver {
     }
   }
 
-  TransientSample observe(double t, const double* y, CellMap* map = nullptr) {
+  /// forces_only: the load, the longitudinal force and the hub (the step extremes,
+  /// step_extremes.h), without the soil's, the edges' and the width's passes; `accepted`: from
+  /// the forces update_contact_set() computed at this (accepted) state when it did.
+  TransientSample observe(double t, const double* y, CellMap* map = nullptr,
+                          bool forces_only = false, bool accepted = false) {
     const ScenarioPlan& plan = sys_.plan();
     const CellClasses& C = cm_.classes;
     TransientSample s;
     s.t_s = t;
     // f, F and (one pass) the tip penetration g and the undeformed tread's penetration at the
     // crown line P.
-    sys_.forces(t, y, f_, F_, &g_, &P_);
+    const Eigen::VectorXd *fp = &f_, *Fp = &F_;
+    if (forces_only && accepted && sys_.accepted_forces(t, fp, Fp)) {
+      // (the forces the contact-set update computed at this state: no second pass)
+    } else if (forces_only) {
+      sys_.forces(t, y, f_, F_);
+    } else {
+      sys_.forces(t, y, f_, F_, &g_, &P_);
+    }
     const double z = sys_.hub_z(t, y);
     const double R0 = M_.tyre.config.outer_radius_m;
     s.applied_load_N = plan.load(t);
     s.hub_displacement_m = z;
     s.speed_m_s = plan.speed(t);
+    const Eigen::VectorXd &fv = *fp, &Fv = *Fp;
     const UnitRange span = sys_.sections();
     double load = 0, moment = 0, slope_force = 0, sink = z - sag_min_;
     int sections = 0, first = -1, last = -1;
     for (int i = span.lo; i <= span.hi; ++i) {
-      if (!(F_(i) > 0)) continue;
-      load += F_(i);
-      moment += F_(i) * M_.x_road(i);
+      if (!(Fv(i) > 0)) continue;
+      load += Fv(i);
+      moment += Fv(i) * M_.x_road(i);
       ++sections;
       first = first < 0 ? i : first;
       last = i;
@@ -77,8 +89,11 @@ class CellObserver {
       road_s_.resize(span.size());
       // The sections where the road is raised or sloped ([lo, hi]; elsewhere h = 0 and a zero
       // slope adds nothing).
+      // Forces only: the slope force needs the sections in contact only.
       int lo = span.hi + 1, hi = span.lo - 1;
-      for (int k = 0; road_class >= 0 && k < span.size(); ++k) {
+      const int k0 = forces_only ? std::max(first - span.lo, 0) : 0;
+      const int k1 = forces_only ? last - span.lo : span.size() - 1;
+      for (int k = k0; road_class >= 0 && k <= k1; ++k) {
         road_h_[k] = sys_.road(t, span.lo + k, road_class, &road_s_[k]);
         if (road_h_[k] > 0 || road_s_[k] != 0)
           lo = std::min(lo, span.lo + k), hi = std::max(hi, span.lo + k);
@@ -89,12 +104,16 @@ class CellObserver {
         for (int k = std::max(0, lo - r.lo); k <= std::min(r.size() - 1, hi - r.lo); ++k) {
           const double h = road_h_[r.lo + k - span.lo], slope = road_s_[r.lo + k - span.lo];
           if (h > 0) sink = std::max(sink, z + h - M_.tyre.sag(r.lo + k) - C.drop_m[c]);
-          slope_force += C.multiplicity[c] * f_(sys_.offset(c) + k) * slope;
+          slope_force += C.multiplicity[c] * fv(sys_.offset(c) + k) * slope;
         }
       }
     }
     s.load_N = load;
     s.contact_units = sections;
+    s.pressure_centre_m = load > 0 ? moment / load : 0;
+    s.longitudinal_force_N = -moment / (R0 - z) - slope_force;
+    if (forces_only) return s;
+    s.sinking_m = sink;
     const CellSoil* soil = sys_.soil();
     if (soil) {  // docs/soil.md section 8.3
       std::vector<int> offsets(C.size());
@@ -102,9 +121,6 @@ class CellObserver {
       s.soil_sinkage_m = soil->deepest_loaded_m(sys_.ranges(), offsets, f_);
       s.soil_resistance_N = soil->compaction_resistance_N(sys_.ranges(), offsets, f_);
     }
-    s.sinking_m = sink;
-    s.pressure_centre_m = load > 0 ? moment / load : 0;
-    s.longitudinal_force_N = -moment / (R0 - z) - slope_force;
     if (first < 0) return s;
     // Deformed belt positions of the sections in and around the patch (as the 2D driver: the
     // dynamic modes from the state, the residual orders quasi-statically from the forces),
@@ -328,6 +344,12 @@ class CellsOde final : public PatchOde {
   bool escaped() const override { return sys_.escaped(); }
   TransientSample observe(double t, const double* y, CellMap* map) override {
     return obs_.observe(t, y, map);
+  }
+  TransientSample observe_forces(double t, const double* y) override {
+    return obs_.observe(t, y, nullptr, /*forces_only=*/true);
+  }
+  TransientSample step_forces(double t, const double* y) override {
+    return obs_.observe(t, y, nullptr, /*forces_only=*/true, /*accepted=*/true);
   }
   void vertical_forces(double t, const double* y, Eigen::VectorXd& F) override {
     sys_.forces(t, y, f_forces_, F);

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "modaltyre/transient/output_grid.h"
 #include "patch_ode.h"
 #include "sample_reuse.h"
+#include "step_extremes.h"
 
 namespace modaltyre::transient::detail {
 namespace {
@@ -71,7 +73,7 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
   solvers::CvodeKlu ode(prob, opt, 0.0, y, sys.nnz_hint());
   ode.set_max_step(plan.step_limit(0.0));
 
-  const double T = plan.duration_s, dt = M.settings.output_step_s;
+  const double T = plan.duration_s;
   std::vector<double> map_times = options.map_times_s;
   std::sort(map_times.begin(), map_times.end());
   std::size_t next_map = 0;
@@ -93,14 +95,22 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
   };
   take_maps(0.0, 0.0, &y);
   res.samples.push_back(sys.observe(0.0, y.data()));
+  const OutputGrid grid =
+      output_grid(M, plan, res.samples.front().load_N, res.samples.front().sinking_m);
+  res.output_grid = grid;
+  // The extremes over the integrator's steps, and the free vibration's hub trace (dense output).
+  const bool bounce = plan.scenario == Scenario::free_vibration && plan.hub_free();
+  StepExtremes extremes([&sys](double t, const double* ys) { return sys.step_forces(t, ys); },
+                        [&sys](double t, const double* ys) { return sys.observe_forces(t, ys); },
+                        bounce ? M.z_index() : -1);
+  extremes.start(0.0, y);
   const std::vector<double> atol = sys.absolute_tolerances();
   SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.has_road());
   reuse.remember(y);
   std::vector<double> breaks = plan.breakpoints;
   std::sort(breaks.begin(), breaks.end());
   std::size_t next_break = 0;
-  long out_index = 1;
-  double t_out = std::min(dt, T), t_prev = 0;
+  double t_out = grid.next_after(0.0), t_prev = 0;
   bool failed = false, all_out = false;
   int roots_in_place = 0;
   double last_root_t = -1;
@@ -127,8 +137,9 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
     y_step_start = ode.state();
     const double h = t_reached - t_start;
     // (Not with root functions: a return at a located switch ends inside an internal step.)
-    const bool bounded = !step_settled && !locate_switches && reuse.allowed() && h > 0 &&
-                         t_out + kBoundedStepSamples * dt <= t_reached * (1 + 1e-14);
+    const bool bounded =
+        !step_settled && !locate_switches && reuse.allowed() && h > 0 &&
+        t_out + kBoundedStepSamples * grid.step_at(t_out) <= t_reached * (1 + 1e-14);
     double reuse_until = -1;  // samples up to this time repeat the last computed one
     if (bounded) {
       ode.interpolate(t_start, y_a);
@@ -170,9 +181,7 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
         all_out = true;
         break;
       }
-      ++out_index;
-      t_out = std::min(out_index * dt, T);
-      if (T - t_out < 1e-9 * T) t_out = T;
+      t_out = grid.next_after(t_out);
     }
     return true;
   };
@@ -202,6 +211,7 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
       }
     }
     take_maps(t_prev, st.t, nullptr);
+    extremes.step(st.t, ode.state());
     const double t_step_start = t_prev;
     t_prev = st.t;
     if (!emit_until(t_step_start, st.t)) {
@@ -237,6 +247,7 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
   }
   res.simulated_s = ode.time();
   res.stats = ode.stats();
+  extremes.finish(res);
   if (options.keep_final_state) res.final_state = sys.full_state(ode.state());
   res.status = failed ? TransientStatus::failed : TransientStatus::completed;
   if (!failed) {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/modal/critical_speed.h"
 
 namespace modaltyre::transient {
 namespace {
@@ -12,7 +13,31 @@ namespace {
 /// Output samples of one run (memory and CSV rows): 1e6 is 2000 s at the default 2 ms.
 constexpr double kMaxTransientSamples = 1e6;
 
+/// Refuses a rolling speed at or beyond the carcass's critical speed (modal/critical_speed.h):
+/// there the run has no steady state (issue 44: at 350 km/h the hub left the road, at 500 and
+/// 1000 km/h it ended 13 m and 605 m above it).
+void refuse_beyond_critical(const TransientModel& model, double speed_m_s, const char* key) {
+  const modal::CriticalSpeed c = critical_speed_of(model);
+  if (speed_m_s < c.speed_m_s) return;
+  std::ostringstream msg;
+  msg.precision(4);
+  msg << speed_m_s * 3.6 << " km/h is at or beyond the carcass's critical speed " << c.speed_km_h()
+      << " km/h (order " << c.order << ": omega_" << c.order << " R0 / " << c.order
+      << ", where its backward wave stands still on the road). Beyond it the contact feeds "
+         "energy into that wave and the modal carcass (measured at rest, without the belt's "
+         "centrifugal stiffening) has no steady rolling state: a run there is a blow-up, not a "
+         "tyre. Below it the standing wave grows as the speed approaches (docs/transient.md "
+         "section 3a)";
+  throw InputError(InputLocation{model.tyre.config.source, 0, key}, msg.str());
+}
+
 }  // namespace
+
+modal::CriticalSpeed critical_speed_of(const TransientModel& model) {
+  // The dynamic orders only: the residual ones respond without inertia (model.h).
+  return modal::critical_speed(model.tyre.basis, model.tyre.config.outer_radius_m,
+                               std::max(model.settings.dynamic_max_order, 1));
+}
 
 Scenario parse_scenario(const std::string& name) {
   if (name == "load-hold") return Scenario::load_hold;
@@ -105,6 +130,7 @@ ScenarioPlan plan_scenario(const TransientModel& model, Scenario s) {
     }
     case Scenario::rolling: {
       const auto& R = T.rolling;
+      refuse_beyond_critical(model, R.speed_m_s, "transient.rolling.speed_km_h");
       p.duration_s = R.duration_s;
       p.initial_load_N = R.load_N;
       p.speed_m_s = R.speed_m_s;
@@ -116,6 +142,7 @@ ScenarioPlan plan_scenario(const TransientModel& model, Scenario s) {
     }
     case Scenario::cleat: {
       const auto& C = T.cleat;
+      refuse_beyond_critical(model, C.speed_m_s, "transient.cleat.speed_km_h");
       p.initial_load_N = C.load_N;
       p.speed_m_s = C.speed_m_s;
       p.ramp_s = C.ramp_s;
@@ -154,17 +181,19 @@ ScenarioPlan plan_scenario(const TransientModel& model, Scenario s) {
     throw InputError(InputLocation{src, 0, "transient"},
                      std::string("scenario ") + to_string(s) + " has zero duration");
   }
-  if (model.settings.output_step_s > p.duration_s) {
+  // A stated output step (0: chosen per run, output_grid.h): every output step is a sample held
+  // in memory and a CSV row, bounded, so that a tiny step or a long run is refused at once
+  // instead of filling the memory.
+  const double dt = model.settings.output_step_s;
+  if (dt > 0 && dt > p.duration_s) {
     throw InputError(InputLocation{src, 0, "transient.output_step_ms"},
                      "output step longer than the scenario");
   }
-  // Every output step is a sample held in memory and a CSV row: bounded, so that a tiny step
-  // or a long run is refused at once instead of filling the memory.
-  const double samples = p.duration_s / model.settings.output_step_s;
+  const double samples = dt > 0 ? p.duration_s / dt : 0.0;
   if (!(samples <= kMaxTransientSamples)) {
     std::ostringstream msg;
-    msg << "output step " << model.settings.output_step_s * 1e3 << " ms over the scenario's "
-        << p.duration_s << " s gives " << samples << " samples; at most " << kMaxTransientSamples
+    msg << "output step " << dt * 1e3 << " ms over the scenario's " << p.duration_s << " s gives "
+        << samples << " samples; at most " << kMaxTransientSamples
         << " are written: use an output step of at least "
         << p.duration_s / kMaxTransientSamples * 1e3 << " ms or a shorter scenario";
     throw InputError(InputLocation{src, 0, "transient.output_step_ms"}, msg.str());

@@ -49,7 +49,11 @@ struct TransientSettings {
   double tread_reference_frequency_hz = 10;   ///< Omega of c = K tan(delta) / Omega (eq. 9)
   double instantaneous_stiffness_ratio = 20;  ///< glassy / relaxed tread stiffness, > 1
   double modal_damping_scale = 1;  ///< multiplies every modal damping ratio (0 = undamped)
-  double output_step_s = 0.01;
+  /// The output grid's step; 0 (the key absent or `auto`): chosen per scenario to resolve the
+  /// hub bounce and a cleat (transient/output_grid.h).
+  double output_step_s = 0;
+  /// The smallest ramp with an automatic output step (its grid's largest step, 2 ms).
+  static constexpr double kAutoOutputStepCap_s = 0.002;
   double relative_tolerance = 1e-5;
   /// Absolute error tolerance of the tread's Kelvin-Voigt states [m] (the carcass and hub
   /// displacements have 0.1 um). One unit's state moves one unit's force (k_g de), where the
@@ -91,6 +95,9 @@ struct StatedUncertainty {
   double frequency_rel_std = 0;      ///< modal.frequency_std_percent / 100, every mode
   double tread_modulus_rel_std = 0;  ///< tread.modulus_std_percent / 100
   double belt_width_rel_std = 0;     ///< modal.belt_width_std_percent / 100 (ring mass)
+  /// tread.contact_width_std_percent / 100: the tread width (2D contact width and the 3D patch's
+  /// tread width together)
+  double tread_width_rel_std = 0;
 };
 
 struct TyreConfig {

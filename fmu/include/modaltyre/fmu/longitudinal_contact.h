@@ -53,8 +53,13 @@ class LongitudinalContact {
   /// Units [lo, hi] of the model's candidates carry tread elements (the units that can touch).
   LongitudinalContact(const LongitudinalProperties& p, int lo, int hi);
   /// Advances over dt at spin Omega [rad/s] and forward speed V [m/s] with the vertical unit
-  /// forces f (indexed by unit, entries lo..hi read) and friction coefficient mu.
+  /// forces f (indexed by unit, entries lo..hi read) and friction coefficient mu (the road's
+  /// ground::CoulombFriction with the tread's stick stiffness).
   void advance(double dt, const double* f, double spin_rad_s, double speed_m_s, double mu);
+  /// The same with any tangential law: a soil's ground::JanosiHanamoto, whose stress is a
+  /// function of the element's total shear displacement j.
+  void advance(double dt, const double* f, double spin_rad_s, double speed_m_s,
+               const ground::ShearLaw& law);
   /// Tangential force of the road on the tyre, forward + [N].
   double force_N() const { return force_N_; }
   /// Share of the loaded elements that slid in the last sub-step.
@@ -72,7 +77,8 @@ class LongitudinalContact {
   /// Material moves `units` units backward (forward rolling: > 0); fresh elements enter.
   void shift(int units);
   /// The sub-step's trial (stiffness of the sticking elements) and commit passes over [a, b].
-  void substep(double dj0, const double* f, const ground::CoulombFriction& law, int a, int b);
+  void substep(double dj0, const double* f, const ground::ShearLaw& law,
+               const ground::CoulombFriction* coulomb, int a, int b);
 
   LongitudinalProperties p_;
   int lo_ = 0, hi_ = -1, n_ = 0, head_ = 0;

@@ -15,9 +15,13 @@
 //  - start: required with initial exact or approx and for inputs, forbidden with calculated and
 //    for the independent variable;
 //  - units: every Real has a unit, every unit it names is defined once in UnitDefinitions, and a
-//    defined unit's SI base exponents are those of its name (unit_exponents());
+//    defined unit's SI base exponents and factor are those of its name (known_unit(); a unit
+//    whose exponents are not integers, Bekker's k_c in kN/m^(n+1), is defined without them);
+//  - min <= start <= max where given (Real only here), min < max;
 //  - ModelStructure: the outputs in order, and every output with initial calculated or approx
-//    and every calculatedParameter among the initial unknowns (derived here, so always so).
+//    and every calculatedParameter among the initial unknowns (derived here, so always so);
+//    their `dependencies` (section 2.2.8) name only knowns: inputs for the outputs at a
+//    communication point, inputs and initial="exact" variables for the initial unknowns.
 #include <array>
 #include <optional>
 #include <string>
@@ -45,19 +49,31 @@ struct ScalarVariable {
   std::string unit;                 ///< Real only
   std::optional<double> start;      ///< Real, Integer, Boolean start
   std::optional<std::string> start_string;
+  std::optional<double> min, max;  ///< Real: the range the FMU is designed for
+  bool min_exclusive = false;      ///< not written (FMI has no open bound): the FMU refuses min
   std::string description;
+  /// Outputs: the knowns they depend on at a communication point (empty: none, no direct
+  /// feedthrough; absent: every known). By name, written as indices.
+  std::optional<std::vector<std::string>> dependencies;
+  /// Initial unknowns: the knowns they depend on in initialization mode (absent: every known).
+  std::optional<std::vector<std::string>> initial_dependencies;
 };
 
 /// SI base-unit exponents in the order kg, m, s, A, K, mol, cd, rad.
 using UnitExponents = std::array<int, 8>;
-/// The exponents of the unit names this project writes ("1", "m", "s", "m/s", "rad/s", "N",
-/// "N.m"); nullopt for another name.
-std::optional<UnitExponents> unit_exponents(const std::string& name);
 
+/// A unit: value in SI = factor x value in the unit (FMI 2.0 section 2.2.2's BaseUnit). Without
+/// exponents the unit has no SI form with integer exponents (written without a BaseUnit).
 struct UnitDefinition {
   std::string name;
-  UnitExponents exponents{};
+  std::optional<UnitExponents> exponents = UnitExponents{};
+  double factor = 1;
 };
+
+/// The units this project writes ("1", "m", "s", "m/s", "rad/s", "N", "N.m", and the soil
+/// keys' "mm", "kPa", "MPa", "deg", "kPa.s", "kN/m3", "kN/m4", "kN/m^(n+1)", "kN/m^(n+2)");
+/// nullopt for another name.
+std::optional<UnitDefinition> known_unit(const std::string& name);
 
 struct ModelDescription {
   std::string model_name;

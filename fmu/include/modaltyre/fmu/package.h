@@ -6,11 +6,14 @@
 //   modelDescription.xml                 the description (model_description.h, tyre_variables.h)
 //   binaries/linux64/ModalTyre.so        the FMI functions with the project's libraries linked
 //                                        in statically (fmu/CMakeLists.txt)
+//   documentation/externalDependencies.txt  what the library needs outside the FMU (glibc and
+//                                        its version), read from its ELF file (elf_needs.h)
 //   resources/tyre.yaml                  the config, --set overrides applied, comments kept, its
 //                                        data paths rewritten to the copies beside it
 //   resources/data/<hammer CSV>          the hammer data the config names (modal.hammer_csv)
-//   resources/fmu.yaml                   the GUID and the config's file name, read by
-//                                        fmi2Instantiate (resources.h)
+//   resources/soil.yaml                  with --ground: the soil file, its overrides applied
+//   resources/fmu.yaml                   the GUID, the config's and the soil file's names,
+//                                        read by fmi2Instantiate (resources.h)
 #include <string>
 #include <vector>
 
@@ -18,9 +21,12 @@ namespace modaltyre::fmu {
 
 struct PackageOptions {
   std::string config_path;
-  std::vector<std::string> overrides;  ///< --set key=value, applied to the packaged config
-  std::string output_path;             ///< the .fmu to write (whole or not at all)
-  std::string binary_path;             ///< the built ModalTyre.so
+  /// --set key=value, applied to the packaged config (with a ground_path: ground.KEY to the
+  /// soil file, as `traction --ground` takes them)
+  std::vector<std::string> overrides;
+  std::string ground_path;  ///< --ground SOIL.yaml: the soil the tyre runs on ("" : the config's)
+  std::string output_path;  ///< the .fmu to write (whole or not at all)
+  std::string binary_path;  ///< the built ModalTyre.so
 };
 
 struct PackageResult {

@@ -16,12 +16,14 @@ std::string resource_folder_from_uri(const std::string& uri);
 struct ResourceRecord {
   std::string guid;
   std::string config_path;  ///< absolute: the folder + the config's name
+  std::string ground_path;  ///< a soil file packed with --ground (folder + name), else ""
 };
 
 /// Reads <folder>/fmu.yaml; InputError (file, line, key) if it is missing or malformed.
 ResourceRecord read_resource_record(const std::string& folder);
 
-/// The record's text (YAML) for a GUID and a config file name.
-std::string resource_record_text(const std::string& guid, const std::string& config_name);
+/// The record's text (YAML) for a GUID, a config file name and a soil file name ("": none).
+std::string resource_record_text(const std::string& guid, const std::string& config_name,
+                                 const std::string& ground_name = "");
 
 }  // namespace modaltyre::fmu

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "modaltyre/fmu/model_description.h"
+#include "modaltyre/ground/ground_settings.h"
 
 namespace modaltyre::fmu {
 
@@ -25,12 +26,23 @@ inline constexpr unsigned moment_x = 26, moment_y = 27, moment_z = 28;
 inline constexpr unsigned query_x = 29, query_y = 30, query_z = 31;
 /// Diagnostics of the in-plane model (outputs beyond Chrono's set).
 inline constexpr unsigned deflection = 32, contact_length = 33, slip_ratio = 34;
+/// A soil FMU's outputs (soil_parameters.h).
+inline constexpr unsigned soil_sinkage = 35, compaction_resistance = 36;
 inline constexpr unsigned step_size = 40;
-/// Real value references run 0 .. kRealCount - 1 (unused ones are refused).
-inline constexpr unsigned kRealCount = 41;
+/// A soil FMU's parameters, in soil_parameters()'s order from here.
+inline constexpr unsigned first_soil_parameter = 50;
 /// String value references.
 inline constexpr unsigned road_profile = 0;
+/// Boolean value references.
+inline constexpr unsigned rim_contact = 0;
 }  // namespace vr
+
+/// The range of step_size [s]: the transient resolves the carcass modes (100-300 Hz) with its
+/// own steps, so step_size bounds only the hub's carried motion; below 10 us a millisecond would
+/// take a hundred sub-steps for nothing, above a second the hub's motion is no longer resolved.
+inline constexpr double kMinStepSize_s = 1e-5, kMaxStepSize_s = 1.0;
+/// Friction coefficients accepted (ground::CoulombFriction's range).
+inline constexpr double kMaxFriction = 10;
 
 /// What a packaged FMU's description is built from.
 struct TyreDescriptionInfo {
@@ -39,6 +51,11 @@ struct TyreDescriptionInfo {
   double outer_radius_m = 0.3;        ///< start of wheel_state.pos.z: touching a road at z = 0
   double friction_coefficient = 0.8;  ///< start of terrain_mu
   double step_size_s = 1e-3;          ///< start of step_size and the default experiment's step
+  double section_height_m = 0;        ///< the rim's check (tyre_wheel.h); 0: not known
+  /// A soil FMU: the packed soil (its keys become parameters) and whether the tyre runs its 3D
+  /// patch (which models the Kelvin-Voigt soil's elastic law only). Null: a road FMU.
+  const ground::GroundSettings* soil = nullptr;
+  bool patch_3d = false;
 };
 
 /// The model identifier: the name of the shared library under binaries/linux64/.

@@ -16,8 +16,8 @@
 //       cohesion_kPa: 1.3           # Janosi-Hanamoto shear (shear.h)
 //       friction_angle_deg: 31.1
 //       shear_modulus_K_mm: 12
-//       unloading: {k0: 0, Au: 5e5} # Wong's k_u = k0 [kN/m^3] + Au [kN/m^4] z_max; absent:
-//                                   # rigid-plastic (no rebound)
+//       unloading: {k0: 0, Au: 5e5} # Wong's k_u = k0 [kN/m^3] + Au [kN/m^4] z_max; absent
+//                                   # or enabled: false: rigid-plastic (no rebound)
 //       wong_reece: {enabled: false, c1: 0.43, c2: 0.32, c3: 0}   # soil_options.h
 //       slip_sinkage: {enabled: false, k1: 1, k2: 0.5}            # soil_options.h
 //       bulldozing: {enabled: false, unit_weight_kN_m3: 15.7}     # soil_options.h

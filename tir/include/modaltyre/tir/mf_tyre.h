@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "modaltyre/tir/mf_formulas.h"
+#include "modaltyre/tir/mf_longitudinal.h"
 #include "modaltyre/tir/tir_file.h"
 #include "modaltyre/tir/tir_units.h"
 
@@ -38,6 +39,20 @@ struct MfTyre {
   std::optional<double> q_ra1, q_ra2, q_rb1, q_rb2;
   std::string length_reason;  ///< why the file gives no length law (empty when it does)
   std::string width_reason;
+
+  // The rolling wheel's laws (mf_longitudinal.h), each absent with its reason when the file
+  // lacks it: the longitudinal force needs PCX1, PDX1 and PKX1, the rolling moment QSY1, the
+  // effective radius Q_RE0 (other coefficients are 0 when not stated, as MF evaluators take
+  // them). Files before MF 6.1 (FITTYP < 61) state M_y = -R0 F_z (...) without QSY7/QSY8: read
+  // as QSY7 = 1, QSY8 = 0, the same law.
+  double longvl_m_s = 0;  ///< [MODEL] LONGVL (0: not given; the speed terms of M_y then vanish)
+  MfScaling scaling;      ///< [SCALING_COEFFICIENTS] (1 when not stated; LMUV 0)
+  std::optional<MfLongitudinal> longitudinal;
+  std::optional<MfRolling> rolling;
+  std::optional<MfEffectiveRadius> effective_radius;
+  std::string longitudinal_reason, rolling_reason, radius_reason;
+  /// R0, FNOMIN, LONGVL, NOMPRES, INFLPRES and C_z at INFLPRES, for those laws.
+  MfBasis mf_basis() const;
 
   /// Vertical load at a deflection, at the file's INFLPRES; nullopt outside the law (beyond a
   /// table's last point or a falling (A3.3)).

@@ -8,18 +8,23 @@
 // load/FNOMIN, 2a/R0 and 2b/W against the model's (the model's FNOMIN: --fnomin or the middle of
 // its loads); the rows' absolute columns then carry the .tir's law scaled to the model's size
 // (load ratio x the model's FNOMIN, 2a/R0 x the model's R0, 2b/W x its section width).
+// With CompareOptions::slip, the longitudinal force, rolling resistance and effective radius too
+// (slip_compare.h), on the same basis.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "modaltyre/tir/mf_tyre.h"
 #include "modaltyre/tir/model_curve.h"
+#include "modaltyre/tir/slip_compare.h"
 
 namespace modaltyre::tir {
 
 struct CompareOptions {
   std::optional<double> fnomin_N;  ///< the model's nominal load
   int points = 12;                 ///< model footprints over 0.25-2 x FNOMIN (3..200)
+  /// The longitudinal laws too (slip_compare.h): off by default (it runs the transient).
+  SlipExportOptions slip;
 };
 
 struct CompareRow {
@@ -40,6 +45,7 @@ struct TirComparison {
   /// RMS of (tir - model) / model over the rows where both exist; absent with a reason.
   std::optional<double> rms_load, rms_length, rms_width;
   std::string load_reason, length_reason, width_reason;
+  std::optional<SlipComparison> slip;  ///< when CompareOptions::slip is enabled
 };
 
 TirComparison compare_tir(const contact::TyreModel& model, const MfTyre& tir,

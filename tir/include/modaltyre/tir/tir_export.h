@@ -14,11 +14,16 @@
 //           effect); else PFZ1 is left out (0 in any MF evaluator) and the header says why
 // [STRUCTURAL] and [INERTIA] are left out, and the header says why: the hammer test's modes are
 // those of the tested tyre's boundary condition, not MF-Swift's rigid ring on a fixed rim.
+// With TirExportOptions::slip enabled the file also holds the longitudinal pure-slip force, the
+// rolling resistance and the effective rolling radius fitted to the model's own steady runs on
+// a prescribed wheel (slip_fit.h, slip_text.h); lateral, aligning, overturning, combined and
+// turn-slip sections stay out (the model is in-plane), and the header says so.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "modaltyre/tir/model_curve.h"
+#include "modaltyre/tir/slip_fit.h"
 
 namespace modaltyre::tir {
 
@@ -28,6 +33,9 @@ struct TirExportOptions {
   std::string config_label;        ///< the config path as the user gave it (for the header)
   /// Lines added to the header's comments (e.g. the coefficients' uncertainty); printable text.
   std::vector<std::string> comments;
+  /// The longitudinal, rolling-resistance and effective-radius laws (slip_fit.h); off by
+  /// default here (the command turns it on): the file is then the vertical one of before.
+  SlipExportOptions slip;
 };
 
 /// One fitted law and how well it follows the model (relative residuals).
@@ -52,7 +60,8 @@ struct TirFit {
   std::optional<double> q_rb1, q_rb2;
   FitQuality load, sinking, length;
   std::optional<FitQuality> width;
-  ModelCurve curve;  ///< the footprints fitted
+  ModelCurve curve;                ///< the footprints fitted
+  std::optional<TirSlipFit> slip;  ///< when TirExportOptions::slip is enabled
 };
 
 /// Samples the model and fits the laws; ComputationError when a fit is degenerate.

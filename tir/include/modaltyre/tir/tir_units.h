@@ -10,7 +10,18 @@
 namespace modaltyre::tir {
 
 /// Physical dimension of a .tir quantity.
-enum class Dimension { none, length, force, stiffness, pressure, damping, mass, time, angle };
+enum class Dimension {
+  none,
+  length,
+  force,
+  stiffness,
+  pressure,
+  damping,
+  mass,
+  time,
+  angle,
+  speed
+};
 
 struct TirUnits {
   double length_m = 1;  ///< one file length unit in metres

@@ -76,6 +76,9 @@ class CellSystem {
   bool escaped() const { return escaped_; }
   /// The cell forces of the last rhs() (the Newton iterate CVODE evaluated last).
   const Eigen::VectorXd& last_forces() const { return f_; }
+  /// The cell and section forces at the state update_contact_set() accepted at t, from the
+  /// penetration it computed there (no second pass); false when it accepted no state at t.
+  bool accepted_forces(double t, const Eigen::VectorXd*& f, const Eigen::VectorXd*& F) const;
   double spin(double t) const;
   double spin_rate(double t) const;
   /// The hub's displacement z at (t, y): the state's, or the prescribed hub's (scenario.h).
@@ -106,6 +109,9 @@ class CellSystem {
   mutable std::vector<char> in_contact_;
   CellSoil* soil_ = nullptr;
   mutable Eigen::VectorXd kd_soil_, f_acc_;  ///< on a soil: d f / d g per slot of the last forces()
+  /// The forces at the last accepted state (update_contact_set(), accepted_forces()).
+  mutable Eigen::VectorXd f_step_, F_step_;
+  mutable double t_step_ = -1;
   mutable long switches_since_jacobian_ = 0;
   mutable bool escaped_ = false;
 };

@@ -14,6 +14,13 @@
 // vertical contact forces about the wheel axis through the hub. The hub's own mass takes no part
 // (the host carries the wheel), nor does the carcass's base excitation (model.h).
 //
+// On a soil (the model's config has a Bekker-Wong or Kelvin-Voigt ground: docs/soil.md section
+// 8) the units (2D) or cells (3D) carry their contact springs in series with the soil and its
+// memory, as the transient's soil runs do (soil_contact.h, cell_soil.h); deflection_m is then the
+// hub's approach to the undisturbed surface. Bekker's b is the static footprint's on the soil at
+// the config's transient.rolling.load_N (iterated with its contact length, as `footprint` does),
+// fixed for the tyre's life; the memory moves with DrivenTyreOptions::distance_m.
+//
 // Instances are independent (each owns its integrator and work vectors; the TransientModel is
 // shared read-only and must outlive them); reset() starts over.
 #include <functional>
@@ -33,12 +40,14 @@ struct WheelLoad {
   double fz_N = 0;   ///< vertical force of the road on the tyre (upward)
   double fx_N = 0;   ///< longitudinal force at the road (ISO x; free-rolling drag, see above)
   double my_Nm = 0;  ///< moment of the vertical contact forces about the wheel axis (ISO y)
-  double deflection_m = 0;       ///< the hub's (HubState::deflection_m)
-  double sinking_m = 0;          ///< deflection of the tyre at the road
-  double contact_length_m = 0;   ///< longest column's (2D: the patch's) extent along x
-  double width_m = 0;            ///< 3D patch only (0 on the 2D patch)
-  double contact_area_m2 = 0;    ///< 3D patch only
-  double pressure_centre_m = 0;  ///< sum f x / sum f (+ forward)
+  double deflection_m = 0;             ///< the hub's (HubState::deflection_m)
+  double sinking_m = 0;                ///< deflection of the tyre at the road
+  double contact_length_m = 0;         ///< longest column's (2D: the patch's) extent along x
+  double width_m = 0;                  ///< 3D patch only (0 on the 2D patch)
+  double contact_area_m2 = 0;          ///< 3D patch only
+  double pressure_centre_m = 0;        ///< sum f x / sum f (+ forward)
+  double soil_sinkage_m = 0;           ///< on a soil: the deepest loaded point of its surface
+  double compaction_resistance_N = 0;  ///< on a soil: sum f tan(alpha) (TransientSample)
 };
 
 /// A wheel load from an output sample of the transient (driver.h).
@@ -61,6 +70,9 @@ struct DrivenTyreOptions {
   /// is on the flat road: start where the profile is flat under the patch.
   std::function<double(double t, double x_m, double* slope)> road_profile;
   double road_max_height_m = 0;
+  /// On a soil: the distance the hub has rolled along the ground at t [m] (the soil's memory
+  /// moves backward under the tyre with it; soil_contact.h); empty: the ground at rest.
+  std::function<double(double t)> distance_m;
 };
 
 /// How one advance() ended.

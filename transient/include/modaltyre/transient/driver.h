@@ -7,6 +7,7 @@
 
 #include "modaltyre/solvers/cvode_klu.h"
 #include "modaltyre/transient/model.h"
+#include "modaltyre/transient/output_grid.h"
 #include "modaltyre/transient/scenario.h"
 
 namespace modaltyre::transient {
@@ -41,6 +42,25 @@ struct CellMap {
   std::vector<double> x_mm, y_mm, pressure_kPa;  ///< one entry per cell
 };
 
+/// A signal's smallest and largest value over a run and when they occurred.
+struct SignalRange {
+  double min = 0, max = 0, t_min_s = 0, t_max_s = 0;
+};
+
+/// The extremes of the forces over the integrator's own steps and inside them (dense output,
+/// step_extremes.h), not over the output grid.
+struct StepRanges {
+  bool valid = false;
+  SignalRange load_N;                ///< the contact load (road reaction)
+  SignalRange longitudinal_force_N;  ///< F_x
+  long searches = 0;                 ///< steps searched around a running extreme
+};
+
+/// The hub's displacement at the end of one integrator step.
+struct HubStep {
+  double t_s = 0, z_m = 0;
+};
+
 enum class TransientStatus { completed, failed };
 
 struct TransientResult {
@@ -54,6 +74,14 @@ struct TransientResult {
   /// returns).
   int contact_events = 0;
   std::vector<TransientSample> samples;
+  /// The output samples' times: the config's transient.output_step_ms, or chosen for the
+  /// scenario (output_grid.h); finer while a cleat crosses the window.
+  OutputGrid output_grid;
+  /// The extremes of load and F_x over the integrator's steps (not the output grid).
+  StepRanges extremes;
+  /// Free vibration: the hub's displacement at t = 0 and every step's end (the bounce's peaks,
+  /// decay.h).
+  std::vector<HubStep> hub_steps;
   /// Mean of -longitudinal force over the last 10 % of the run (rolling resistance) [N].
   double rolling_resistance_N = 0;
   /// The state at simulated_s in the layout of all units (TransientSystem(model, plan); e = 0

@@ -67,6 +67,10 @@ class TransientSystem {
   /// The contact forces of the last rhs() (the Newton iterate CVODE evaluated last) over units()
   /// (m entries; zero outside the reach; on a soil update_contact_set() also writes them).
   const Eigen::VectorXd& last_forces() const { return scratch_f_; }
+  /// The contact forces at the state update_contact_set() accepted at t, from the penetration
+  /// (on a soil the forces) it computed there, into f (m entries, as forces_into()); false when
+  /// it accepted no state at t.
+  bool accepted_forces(double t, Eigen::VectorXd& f) const;
   /// Contact forces f_i at (t, y).
   Eigen::VectorXd forces(double t, const double* y) const;
   /// forces() into `f` (m entries; only units() is written, so a reused `f` costs no
@@ -144,6 +148,10 @@ class TransientSystem {
   mutable Eigen::ArrayXd in_contact_;  ///< 1 in contact, 0 not (empty before the first call)
   /// First and last unit of in_contact_ (empty: first > last).
   mutable int contact_first_ = 0, contact_last_ = -1;
+  /// The last accepted state's time and the range of its penetration (or, on a soil, forces)
+  /// in scratch_g_ (scratch_f_): accepted_forces().
+  mutable double accepted_t_ = -1;
+  mutable int accepted_lo_ = 0, accepted_hi_ = -1;
   mutable long switches_since_jacobian_ = 0;
   /// Reach reference (update_contact_set()): p_ref = z - s - T xi over the window at an accepted
   /// state (refreshed when the state has moved by kReachRefresh_m), and its xi and z (empty

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/modal/critical_speed.h"
 #include "modaltyre/transient/hub_motion.h"
 #include "modaltyre/transient/model.h"
 
@@ -63,7 +64,17 @@ struct ScenarioPlan {
   }
 };
 
-/// The plan of a scenario from the settings; InputError for an ill-posed one.
+/// The plan of a scenario from the settings; InputError for an ill-posed one (a rolling or
+/// cleat speed at or beyond critical_speed_of() among them).
 ScenarioPlan plan_scenario(const TransientModel& model, Scenario s);
+
+/// The critical speed of the model's dynamic orders (modal/critical_speed.h): the rolling and
+/// cleat scenarios refuse speeds at or beyond it.
+modal::CriticalSpeed critical_speed_of(const TransientModel& model);
+
+/// From this share of the critical speed the standing wave visibly grows (the default tyre's
+/// rolling resistance at 240 km/h is 1.8 times that at 200 km/h, at 255 km/h 3 times): the
+/// outputs say so.
+constexpr double kNearCriticalShare = 0.85;
 
 }  // namespace modaltyre::transient

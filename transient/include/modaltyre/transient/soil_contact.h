@@ -130,7 +130,7 @@ class SoilContact {
   /// Unit i's force at penetration g with memory z_max on the elastic law, tread spring k.
   double elastic_force(int i, double g, double z_max, double k, double* dfdg, double* depth) const;
 
-  std::unique_ptr<ground::PressureSinkage> law_;
+  std::shared_ptr<const ground::PressureSinkage> law_;  ///< shared: a copy keeps the memory
   Eigen::VectorXd area_, k_, x_;
   Eigen::VectorXd z_max_;           ///< memory per unit at the last accepted step
   Eigen::VectorXd z_max_prev_;      ///< the one before it (evaluations inside the last step)
