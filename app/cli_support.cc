@@ -148,4 +148,9 @@ void UncertaintyProgress::finish() {
   if (bar_) bar_->finish();
 }
 
+std::string plot_colour(int k) {
+  static const int kLinetypes[] = {1, 2, 3, 4, 6, 7, 8};
+  return " lc " + std::to_string(kLinetypes[((k % 7) + 7) % 7]);
+}
+
 }  // namespace modaltyre::app

@@ -28,7 +28,7 @@ void warn_outside_validity(const contact::TyreConfig& config,
                            const std::vector<contact::Prediction>& predictions) {
   for (const auto& p : predictions) {
     const auto& r = p.footprint;
-    const contact::Validity v = contact::validity(config, r.sinking_m, r.contact_length_m);
+    const contact::Validity v = contact::validity(config, r);
     if (v.valid) continue;
     std::cerr << "warning: load " << r.load.load_N
               << " N is outside the model's validity range: " << v.reason

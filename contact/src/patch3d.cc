@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "modaltyre/contact/footprint.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/unilateral_contact.h"
 #include "patch3d_operators.h"
@@ -339,7 +340,7 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
   if (F(0) > 0 || F(S - 1) > 0) {
     std::ostringstream msg;
     msg << "contact reached the edge of the candidate window (+-" << 0.5e3 * m.config.mesh.window_m
-        << " mm): increase contact.window_mm";
+        << " mm): increase contact.window_mm (e.g. to " << suggested_window_mm(m.config) << ")";
     r.message = msg.str();
     r.status = SolveStatus::failed;
     return r;

@@ -376,3 +376,68 @@ TEST_F(HonestPlots, ValidateDrawsTheJsonsBandAsTwoLines) {
 }
 
 }  // namespace
+
+// Issue 48 item 7 and issue 44 item 4: the soil plots a soil-bin engineer reads.
+class SoilPlots : public HonestPlots {
+ protected:
+  /// The script's plot line for the panel whose title holds `title`.
+  std::string plot_line_after(const std::string& title) const {
+    const std::string s = script();
+    const auto t = s.find(title);
+    if (t == std::string::npos) return "";
+    const auto p = s.find("\nplot ", t);
+    return p == std::string::npos ? "" : s.substr(p + 1, s.find('\n', p + 1) - p - 1);
+  }
+};
+
+TEST_F(SoilPlots, TractionNamesTyreSoilAndLoadAndMarksTheTowedAndSelfPropelledPoints) {
+  const auto panels = plot({"traction", kConfig, "--ground", kSrc + "/configs/soils/lete_sand.yaml",
+                            "--load", "3000", "--slip", "-0.1", "0", "0.1", "0.3", "--set",
+                            "contact.unit_length_mm=2", "--plot", (dir_ / "dp.svg").string()});
+  ASSERT_EQ(panels.size(), 3u);
+  EXPECT_NE(panels[0].title.find("SF-350"), std::string::npos) << panels[0].title;
+  EXPECT_NE(panels[0].title.find("LETE sand"), std::string::npos) << panels[0].title;
+  EXPECT_NE(panels[1].title.find("3000 N"), std::string::npos) << panels[1].title;
+  EXPECT_NE(panels[1].ylabel.find("sinkage"), std::string::npos);
+  EXPECT_NE(panels[2].ylabel.find("efficiency"), std::string::npos);
+  const std::string dp = plot_line_after(panels[0].title);
+  EXPECT_NE(dp.find("towed (T = 0)"), std::string::npos) << dp;
+  EXPECT_NE(dp.find("self-propelled (DP = 0)"), std::string::npos) << dp;
+  // The curve and its marks share one colour; the braked side and zero are on the axis.
+  EXPECT_NE(dp.find("linespoints pt 7 lc 1"), std::string::npos) << dp;
+  EXPECT_NE(dp.find("points pt 9 ps 2 lc 1"), std::string::npos) << dp;
+  const std::string s = script();
+  const auto xr = s.find("set xrange [");
+  ASSERT_NE(xr, std::string::npos);
+  EXPECT_LT(std::stod(s.substr(xr + 12)), -0.1);
+}
+
+TEST_F(SoilPlots, TheBevameterTitleWritesKPhiAndTheCyclesGetTheirLines) {
+  const auto panels = plot({"identify", "bevameter", kSrc + "/tests/data/soil/plate_sinkage.csv",
+                            "--plot", (dir_ / "b.svg").string()});
+  ASSERT_EQ(panels.size(), 1u);
+  // Enhanced text: "k_phi" rendered as k subscript p followed by "hi"; "k_{phi}" is k_phi.
+  EXPECT_NE(panels[0].title.find("k_{phi}"), std::string::npos) << panels[0].title;
+  EXPECT_EQ(panels[0].title.find("k_phi"), std::string::npos) << panels[0].title;
+  const std::string line = plot_line_after(panels[0].title);
+  for (const char* cycle : {"Wong''s unloading, cycle 1", "Wong''s unloading, cycle 3"})
+    EXPECT_NE(line.find(cycle), std::string::npos) << line;
+}
+
+TEST_F(SoilPlots, EachShearDataSetSharesItsColourWithItsOwnFit) {
+  const auto panels = plot({"identify", "shear", kSrc + "/tests/data/soil/shear.csv", "--plot",
+                            (dir_ / "s.svg").string()});
+  ASSERT_EQ(panels.size(), 1u);
+  const std::string line = plot_line_after(panels[0].title);
+  auto colour_of = [&](const std::string& title) {
+    const auto t = line.find("title '" + title + "'");
+    if (t == std::string::npos) return std::string("?");
+    const auto lc = line.rfind(" lc ", t);
+    return line.substr(lc, line.find(' ', lc + 4) - lc);
+  };
+  for (const char* s : {"2.5", "20.0", "40.0"})
+    EXPECT_EQ(colour_of(std::string("sigma = ") + s + " kPa"),
+              colour_of(std::string("fit, ") + s + " kPa"))
+        << s;
+  EXPECT_NE(colour_of("sigma = 20.0 kPa"), colour_of("fit, 40.0 kPa"));
+}
