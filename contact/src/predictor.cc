@@ -418,7 +418,7 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
   const EffectsConfig& E = P.effects;
   if (!(c.load_N > 0)) return failed("load must be greater than 0 N");
   for (const auto& e : effect_catalogue()) {
-    if (E.enabled(e.id) && !e.refused_with_3d.empty()) {
+    if (!e.is_option() && E.enabled(e.id) && !e.refused_with_3d.empty()) {
       return failed(e.name + " cannot be combined with footprint_3d: " + e.refused_with_3d);
     }
   }
