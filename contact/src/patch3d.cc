@@ -114,9 +114,12 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(S), g(S);
   std::vector<Eigen::VectorXd> xs, gs;  // recent iterates and their images, oldest first
   std::vector<char> active(warm.begin(), warm.end());
+  // One set of section laws for every step: each starts from the lateral patterns the last one
+  // ended with (the steps' solutions differ little), not from every cell.
+  const std::unique_ptr<detail::SectionLaws> laws = section_laws();
   bool mixed = false;  // x came from Anderson mixing, not from a plain step
   for (int it = 1; it <= settings_.max_sidewall_iterations; ++it) {
-    Patch3dResult r = solve_loaded(load_N, active, x);
+    Patch3dResult r = solve_loaded(load_N, active, x, laws.get());
     r.sidewall_iterations = it;
     if (!r.ok()) return r;
     active = r.section_active;
@@ -170,16 +173,23 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
   return r;
 }
 
+std::unique_ptr<detail::SectionLaws> Patch3d::section_laws() const {
+  return soil_ ? detail::soil_sections(t_, z_m_, *soil_, cell_area_m2_)
+         : G_.size()
+             ? detail::flexible_sections(t_, z_m_, G_, contact_options(model_).max_iterations)
+             : detail::rigid_sections(t_, z_m_);
+}
+
 Patch3dResult Patch3d::solve_loaded(double load_N, std::span<const char> warm,
-                                    const Eigen::VectorXd& extra) const {
+                                    const Eigen::VectorXd& extra,
+                                    detail::SectionLaws* given_laws) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
   const auto opt = contact_options(model_);
-  const std::unique_ptr<detail::SectionLaws> laws =
-      soil_       ? detail::soil_sections(t_, z_m_, *soil_, cell_area_m2_)
-      : G_.size() ? detail::flexible_sections(t_, z_m_, G_, opt.max_iterations)
-                  : detail::rigid_sections(t_, z_m_);
+  std::unique_ptr<detail::SectionLaws> own_laws;
+  if (!given_laws) own_laws = section_laws();
+  detail::SectionLaws* const laws = given_laws ? given_laws : own_laws.get();
   Patch3dResult r;
   r.load_N = load_N;
   // The extra carcass loads' gap offset C extra (sidewall softening; empty: none).

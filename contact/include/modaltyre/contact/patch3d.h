@@ -54,6 +54,10 @@
 
 namespace modaltyre::contact {
 
+namespace detail {
+class SectionLaws;  // patch3d_sections.h
+}
+
 /// The lateral compliance of one section's belt strip [m/N]: G(k, j) is the mean deflection of
 /// column k under a unit force spread over column j, for columns of equal width across the
 /// tread and a section of arc length ds. Symmetric positive semi-definite; columns x columns.
@@ -166,9 +170,13 @@ class Patch3d {
 
  private:
   double lateral_half_width(const Patch3dResult& r, int i) const;
-  /// The contact solve with the sections' extra carcass loads `extra` (empty: none).
+  /// The sections' lateral laws (patch3d_sections.h) of this patch.
+  std::unique_ptr<detail::SectionLaws> section_laws() const;
+  /// The contact solve with the sections' extra carcass loads `extra` (empty: none), on the
+  /// given laws (their lateral patterns carried from a previous solve) or fresh ones (null).
   Patch3dResult solve_loaded(double load_N, std::span<const char> warm,
-                             const Eigen::VectorXd& extra) const;
+                             const Eigen::VectorXd& extra,
+                             detail::SectionLaws* laws = nullptr) const;
   Patch3dResult finish(double load_N, const std::vector<double>& cell_force, double delta,
                        const Eigen::VectorXd& extra, Patch3dResult r) const;
 
