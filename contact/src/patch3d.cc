@@ -97,9 +97,14 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
   }
 }
 
-Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
+Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm,
+                             std::span<const double> warm_cells) const {
   const SidewallMembrane& wall = settings_.sidewall;
-  if (!wall.enabled || pressure_Pa_ == 0) return solve_loaded(load_N, warm, {});
+  if (!wall.enabled || pressure_Pa_ == 0) {
+    if (warm_cells.empty()) return solve_loaded(load_N, warm, {});
+    const std::unique_ptr<detail::SectionLaws> laws = section_laws(warm_cells);
+    return solve_loaded(load_N, warm, {}, laws.get());
+  }
   // Fixed point x = G(x) on the sections' lost sidewall loads x = e ds (sidewall_membrane.h):
   // G solves the contact with x fixed and returns e(u) ds from the sections' carcass
   // displacement u_i = delta - sag_i - d_i = (C (F + x))_i. Converged when the gap offset moves
@@ -116,10 +121,10 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
   std::vector<char> active(warm.begin(), warm.end());
   // One set of section laws for every step: each starts from the lateral patterns the last one
   // ended with (the steps' solutions differ little), not from every cell.
-  const std::unique_ptr<detail::SectionLaws> laws = section_laws();
+  const std::unique_ptr<detail::SectionLaws> laws = section_laws(warm_cells);
   bool mixed = false;  // x came from Anderson mixing, not from a plain step
   for (int it = 1; it <= settings_.max_sidewall_iterations; ++it) {
-    Patch3dResult r = solve_loaded(load_N, active, x, laws.get());
+    Patch3dResult r = solve_loaded(load_N, active, x, laws.get(), true);
     r.sidewall_iterations = it;
     if (!r.ok()) return r;
     active = r.section_active;
@@ -142,7 +147,9 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
     const double change = carcass_product(carcass, g - x).cwiseAbs().maxCoeff();
     if (change <= settings_.sidewall_tolerance * std::abs(r.sinking_m)) {
       r.message += "; sidewall softening converged in " + std::to_string(it) + " steps";
-      return r;
+      const std::vector<double> f = r.cell_force_N;
+      const double delta = r.sinking_m;
+      return finish(load_N, f, delta, x, std::move(r));  // the whole result of this step
     }
     xs.push_back(x);
     gs.push_back(g);
@@ -173,16 +180,25 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
   return r;
 }
 
-std::unique_ptr<detail::SectionLaws> Patch3d::section_laws() const {
-  return soil_ ? detail::soil_sections(t_, z_m_, *soil_, cell_area_m2_)
-         : G_.size()
-             ? detail::flexible_sections(t_, z_m_, G_, contact_options(model_).max_iterations)
-             : detail::rigid_sections(t_, z_m_);
+std::unique_ptr<detail::SectionLaws> Patch3d::section_laws(
+    std::span<const double> warm_cells) const {
+  auto laws = soil_ ? detail::soil_sections(t_, z_m_, *soil_, cell_area_m2_)
+              : G_.size()
+                  ? detail::flexible_sections(t_, z_m_, G_, contact_options(model_).max_iterations)
+                  : detail::rigid_sections(t_, z_m_);
+  const int S = sections(), ny = columns();
+  if (static_cast<int>(warm_cells.size()) == S * ny) {
+    for (int i = 0; i < S; ++i) {
+      const double* f = warm_cells.data() + std::size_t(i) * ny;
+      if (std::any_of(f, f + ny, [](double v) { return v > 0; })) laws->start_from(i, f);
+    }
+  }
+  return laws;
 }
 
 Patch3dResult Patch3d::solve_loaded(double load_N, std::span<const char> warm,
-                                    const Eigen::VectorXd& extra,
-                                    detail::SectionLaws* given_laws) const {
+                                    const Eigen::VectorXd& extra, detail::SectionLaws* given_laws,
+                                    bool sections_only) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
@@ -251,7 +267,7 @@ Patch3dResult Patch3d::solve_loaded(double load_N, std::span<const char> warm,
       msg << "converged in " << it << " lateral-pattern steps (" << r.contact_iterations
           << " active-set iterations)";
       r.message = msg.str();
-      return finish(load_N, f, s.approach_m, extra, std::move(r));
+      return finish(load_N, f, s.approach_m, extra, std::move(r), sections_only);
     }
     // Newton step on J towards the step's forces, backtracked while J does not decrease.
     if (F.size() == 0) {
@@ -333,7 +349,8 @@ double Patch3d::lateral_half_width(const Patch3dResult& r, int i) const {
 }
 
 Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, double delta,
-                              const Eigen::VectorXd& extra, Patch3dResult r) const {
+                              const Eigen::VectorXd& extra, Patch3dResult r,
+                              bool sections_only) const {
   const int S = sections(), ny = columns();
   const TyreModel& m = model_;
   r.sections = S;
@@ -362,6 +379,14 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
   if (loaded) r.sidewall_force_N.assign(extra.data(), extra.data() + S);
   r.section_approach_m.resize(S);
   r.section_active.resize(S);
+  if (sections_only) {  // a fixed-point step: the sections' approaches are all it reads
+    for (int i = 0; i < S; ++i) {
+      r.section_approach_m[i] = delta - m.sag(i) - CF(i);
+      r.section_active[i] = F(i) > 0;
+    }
+    r.status = std::isfinite(r.sinking_m) ? SolveStatus::converged : SolveStatus::failed;
+    return r;
+  }
   // The belt's lateral deflection of each cell, G f_i (zero for the laterally rigid belt).
   r.belt_deflection_m.assign(std::size_t(S) * ny, 0.0);
   if (G_.size()) {

@@ -180,6 +180,12 @@ class Rigid final : public SectionLaws {
   void cell_forces(int i, double d, double* f) const override {
     for (std::size_t j = 0; j < z_.size(); ++j) f[j] = std::max(d - z_[j], 0.0) / t_[i];
   }
+  void start_from(int i, const double* f) override {
+    // The loaded cells are the n lowest drops (the sorted-drop law).
+    const int loaded =
+        static_cast<int>(std::count_if(f, f + zs_.size(), [](double v) { return v > 0; }));
+    n_[i] = std::max(min_cells_, loaded);
+  }
   double energy(int i, double F, bool update) override {
     // psi(F): the fewest cells n whose approach d = (F t + sum of their drops) / n does not
     // reach the next drop.
@@ -220,6 +226,11 @@ class Flexible final : public SectionLaws {
   void reduced(int i, double& c, double& o) const override {
     c = sec_[i].c;
     o = sec_[i].o;
+  }
+  void start_from(int i, const double* f) override {
+    std::vector<char> loaded(z_.size());
+    for (std::size_t j = 0; j < loaded.size(); ++j) loaded[j] = f[j] > 0;
+    set_pattern(i, loaded);
   }
   bool consistent(int i, double F, double d, double tol) const override {
     if (!(F > 0)) return d <= zmin_ + tol;

@@ -30,6 +30,9 @@ class SectionLaws {
   /// Psi_i(F), the section's least energy at force F [J]; `update` also moves section i's
   /// pattern to the one at F.
   virtual double energy(int i, double F, bool update) = 0;
+  /// Starts section i's pattern from the cells a previous solution loads (f: columns entries,
+  /// some > 0), a warm start; the default keeps the law's own first pattern.
+  virtual void start_from(int /*i*/, const double* /*f*/) {}
 };
 
 std::unique_ptr<SectionLaws> rigid_sections(const std::vector<double>& t,

@@ -458,7 +458,8 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
       }
       const Patch3d patch(m, *P.footprint_3d, physics);
       const bool warm_fits = static_cast<int>(warm.size()) == patch.sections();
-      Patch3dResult r = patch.solve(elastic, warm_fits ? warm : std::vector<char>());
+      Patch3dResult r =
+          patch.solve(elastic, warm_fits ? warm : std::vector<char>(), options.warm_cells);
       if (!r.ok()) return failed(r.status, r.message);
       const double next = std::min(r.width_m, r.length_m);
       if (soil && b_acts && std::abs(next - b) > 1e-7 * b) {
@@ -549,6 +550,7 @@ Prediction pneumatic_split(const TyreModel& model, const TyreParameters& paramet
                            const OperatingConditions& c, const PredictOptions& options,
                            double pressure_Pa) {
   std::vector<char> warm(options.warm_active.begin(), options.warm_active.end());
+  std::vector<double> warm_cells;  // the 3D patch's lateral patterns of the last solve
   std::vector<std::pair<double, Prediction>> solved;
   Prediction failure;
   auto area_at = [&](double F, double& area) {
@@ -556,12 +558,14 @@ Prediction pneumatic_split(const TyreModel& model, const TyreParameters& paramet
     cs.load_N = F;
     PredictOptions o;
     o.warm_active = warm;
+    o.warm_cells = warm_cells;
     Prediction p = structural(model, parameters, cs, o);
     if (!p.ok()) {
       failure = std::move(p);
       return false;
     }
     warm = p.footprint.active;
+    if (p.patch3d) warm_cells = p.patch3d->cell_force_N;
     area =
         p.patch3d ? contact_area_m2(*p.patch3d) : contact_area_m2(p.footprint, p.width_mm * 1e-3);
     solved.emplace_back(F, std::move(p));

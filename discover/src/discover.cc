@@ -420,8 +420,10 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     ne.name = contact::effect_info(ids[best]).name;
     const Stage& chosen = stages[best];
     const auto se = named_values(chosen.variant, chosen.fit.standard_errors, true);
+    const contact::EffectInfo& named_info = contact::effect_info(ids[best]);
     for (const auto& kv : named_values(chosen.variant, chosen.fit.values, true)) {
-      if (kv.first.rfind("effects." + ne.name + ".", 0) == 0) {
+      for (const auto& p : named_info.parameters) {  // this effect's keys (effects.*, options)
+        if (named_info.key(p) != kv.first) continue;
         ne.parameters[kv.first] = kv.second;
         ne.standard_errors[kv.first] = se.at(kv.first);
       }

@@ -207,3 +207,37 @@ TEST(OptionEffects, TheSidewallsLengthCanBeGivenAsTheChordRatioOnce) {
 
 }  // namespace
 }  // namespace modaltyre::contact::testing
+
+namespace modaltyre::contact::testing {
+namespace {
+
+// Patch3d::solve's warm lateral patterns (the pneumatic share's load split solves the same patch
+// 5-6 times): the same solution as a cold start, on the rigid and the flexible belt.
+TEST(OptionEffects, WarmLateralPatternsChangeTheStepsNotTheSolution) {
+  for (const auto& belt : std::vector<std::vector<std::string>>{
+           {},
+           {"footprint_3d.lateral_belt.supports=free",
+            "footprint_3d.lateral_belt.bending_stiffness_Nm=0.27",
+            "footprint_3d.lateral_belt.foundation_MPa_per_m=300"}}) {
+    const Tyre3d s(with(kCoarse, belt));
+    const Patch3d patch(s.model, s.patch);
+    const Patch3dResult from = patch.solve(6000);
+    ASSERT_TRUE(from.ok()) << from.message;
+    const Patch3dResult cold = patch.solve(5000);
+    const Patch3dResult warm = patch.solve(5000, from.section_active, from.cell_force_N);
+    ASSERT_TRUE(warm.ok()) << warm.message;
+    EXPECT_LE(warm.pattern_iterations, cold.pattern_iterations);
+    EXPECT_NEAR(warm.sinking_m, cold.sinking_m, kExact * cold.sinking_m);
+    EXPECT_NEAR(warm.width_m, cold.width_m, kExact * cold.width_m);
+    EXPECT_LT(max_abs([&] {
+                std::vector<double> d(cold.cell_force_N.size());
+                for (std::size_t k = 0; k < d.size(); ++k)
+                  d[k] = warm.cell_force_N[k] - cold.cell_force_N[k];
+                return d;
+              }()),
+              kExact * 5000);
+  }
+}
+
+}  // namespace
+}  // namespace modaltyre::contact::testing

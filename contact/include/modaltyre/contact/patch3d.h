@@ -161,8 +161,11 @@ class Patch3d {
   double cell_tread_compliance(int i) const { return t_[i]; }
 
   /// The laterally rigid reduction (see the top of this file); `warm` is a previous result's
-  /// section_active.
-  Patch3dResult solve(double load_N, std::span<const char> warm = {}) const;
+  /// section_active, `warm_cells` its cell_force_N (the sections' lateral patterns start from
+  /// the cells it loads; empty or of another size: from every cell). The solution does not
+  /// depend on either (to rounding), only the steps to it.
+  Patch3dResult solve(double load_N, std::span<const char> warm = {},
+                      std::span<const double> warm_cells = {}) const;
   /// The same problem with every cell an unknown (reference for the reduction; slower).
   Patch3dResult solve_cells(double load_N) const;
   /// Loads in order, each warm-started from the previous result.
@@ -170,15 +173,19 @@ class Patch3d {
 
  private:
   double lateral_half_width(const Patch3dResult& r, int i) const;
-  /// The sections' lateral laws (patch3d_sections.h) of this patch.
-  std::unique_ptr<detail::SectionLaws> section_laws() const;
+  /// The sections' lateral laws (patch3d_sections.h) of this patch, their patterns started
+  /// from `warm_cells` (Patch3d::solve).
+  std::unique_ptr<detail::SectionLaws> section_laws(std::span<const double> warm_cells = {}) const;
   /// The contact solve with the sections' extra carcass loads `extra` (empty: none), on the
   /// given laws (their lateral patterns carried from a previous solve) or fresh ones (null).
+  /// `sections_only`: the result's sections (forces, approaches, contact flags) and cell forces
+  /// only, for a fixed-point step (finish() completes the last one).
   Patch3dResult solve_loaded(double load_N, std::span<const char> warm,
-                             const Eigen::VectorXd& extra,
-                             detail::SectionLaws* laws = nullptr) const;
+                             const Eigen::VectorXd& extra, detail::SectionLaws* laws = nullptr,
+                             bool sections_only = false) const;
   Patch3dResult finish(double load_N, const std::vector<double>& cell_force, double delta,
-                       const Eigen::VectorXd& extra, Patch3dResult r) const;
+                       const Eigen::VectorXd& extra, Patch3dResult r,
+                       bool sections_only = false) const;
 
   const TyreModel& model_;
   Patch3dSettings settings_;
