@@ -32,22 +32,20 @@ void with_3d_patch(EffectInfo& e) {
       e.strength = EffectStrength::inverse;  // vanishes as the soil's modulus grows
       return;
     case EffectId::tread_coupling:
-      e.acts_on = "tread (couples units along the road)";
-      e.refused_with_3d =
-          "the 3D patch's cells are independent springs (its exact reduction to one unknown per "
-          "section needs them); tread_coupling is a 2D-patch effect";
+      // On the 3D patch the layer couples the cells along and across the road: every cell an
+      // unknown (patch3d_coupled.cc) instead of the section reduction.
+      e.acts_on = "tread (couples units along the road; 3D cells along and across it)";
       return;
     case EffectId::rolling_speed:
+      // On the 3D patch a non-symmetric section problem (Josephy-Newton steps, patch3d.h).
       e.acts_on = "carcass (steady-rolling kernels)";
-      e.refused_with_3d =
-          "the steady-rolling carcass is not symmetric, and the 3D patch's lateral-pattern steps "
-          "minimise an energy that needs a symmetric one; rolling_speed is a 2D-patch effect";
       return;
     case EffectId::contact_width:
       e.acts_on = "patch width (2D approximation)";
       e.refused_with_3d =
           "superseded: the 3D patch computes the width from the crown profile "
-          "(footprint_3d.crown); contact_width is the 2D patch's approximation of it";
+          "(footprint_3d.crown, its radius a baseline scalar); contact_width is the 2D patch's "
+          "approximation of it, crown_shape its 3D counterpart";
       e.strength = EffectStrength::none;
       e.no_strength = "its width replaces the config's";
       return;

@@ -432,10 +432,13 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
   physics.carcass_scale = carcass_scale(m, P, c, elastic);
   modal::LagKernels flattened;
   const bool flattening = E.belt_flattening.enabled && E.belt_flattening.stiffness_MPa > 0;
-  if (flattening || pressure_acts(m, c)) {
-    flattened = rebuilt_kernels(m, E, physics.carcass_scale, false, flattening, 0, c.pressure_Pa());
+  physics.rolling = E.rolling_speed.enabled && c.speed_kmh > 0;  // seed 001 eq. 2-5
+  if (flattening || physics.rolling || pressure_acts(m, c)) {
+    flattened = rebuilt_kernels(m, E, physics.carcass_scale, physics.rolling, flattening,
+                                c.speed_m_per_s(), c.pressure_Pa());
     physics.kernels = &flattened;
   }
+  if (E.tread_coupling.enabled) physics.tread_coupling_m = E.tread_coupling.coupling_length_m();
   physics.tread = &P.tread;
   physics.tread_creep = tread_creep(E, c);
   physics.inflation_pressure_Pa = c.pressure_Pa();  // the sidewalls' softening (row's pressure)
@@ -469,6 +472,9 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
         continue;
       }
       Prediction p = from_patch3d(patch, std::move(r), elastic);
+      if (physics.rolling)  // the cells' moment about the axle over the loaded radius
+        p.rolling_resistance_N =
+            p.patch3d->force_moment_Nm / (m.config.outer_radius_m - p.patch3d->sinking_m);
       if (soil) {
         p.on_soil = p.footprint.on_soil = true;
         p.footprint.soil_sinkage_m = p.patch3d->soil_sinkage_m;
