@@ -160,6 +160,7 @@ Prediction pneumatic_split(const TyreModel& model, const TyreParameters& paramet
                            const OperatingConditions& c, const PredictOptions& options,
                            double pressure_Pa) {
   std::vector<char> warm(options.warm_active.begin(), options.warm_active.end());
+  std::vector<double> warm_cells;  // the 3D patch's lateral patterns of the last solve
   std::vector<std::pair<double, Prediction>> solved;
   Prediction failure;
   auto area_at = [&](double F, double& area) {
@@ -167,12 +168,14 @@ Prediction pneumatic_split(const TyreModel& model, const TyreParameters& paramet
     cs.load_N = F;
     PredictOptions o;
     o.warm_active = warm;
+    o.warm_cells = warm_cells;
     Prediction p = structural(model, parameters, cs, o);
     if (!p.ok()) {
       failure = std::move(p);
       return false;
     }
     warm = p.footprint.active;
+    if (p.patch3d) warm_cells = p.patch3d->cell_force_N;
     area =
         p.patch3d ? contact_area_m2(*p.patch3d) : contact_area_m2(p.footprint, p.width_mm * 1e-3);
     solved.emplace_back(F, std::move(p));

@@ -69,7 +69,7 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
   const EffectsConfig& E = P.effects;
   if (!(c.load_N > 0)) return failed("load must be greater than 0 N");
   for (const auto& e : effect_catalogue()) {
-    if (E.enabled(e.id) && !e.refused_with_3d.empty()) {
+    if (!e.is_option() && E.enabled(e.id) && !e.refused_with_3d.empty()) {
       return failed(e.name + " cannot be combined with footprint_3d: " + e.refused_with_3d);
     }
   }
@@ -83,10 +83,13 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
   physics.carcass_scale = carcass_scale(m, P, c, elastic);
   modal::LagKernels flattened;
   const bool flattening = E.belt_flattening.enabled && E.belt_flattening.stiffness_MPa > 0;
-  if (flattening || pressure_acts(m, c)) {
-    flattened = rebuilt_kernels(m, E, physics.carcass_scale, false, flattening, 0, c.pressure_Pa());
+  physics.rolling = E.rolling_speed.enabled && c.speed_kmh > 0;  // seed 001 eq. 2-5
+  if (flattening || physics.rolling || pressure_acts(m, c)) {
+    flattened = rebuilt_kernels(m, E, physics.carcass_scale, physics.rolling, flattening,
+                                c.speed_m_per_s(), c.pressure_Pa());
     physics.kernels = &flattened;
   }
+  if (E.tread_coupling.enabled) physics.tread_coupling_m = E.tread_coupling.coupling_length_m();
   physics.tread = &P.tread;
   physics.tread_creep = tread_creep(E, c);
   physics.inflation_pressure_Pa = c.pressure_Pa();  // the sidewalls' softening (row's pressure)
@@ -109,7 +112,8 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
       }
       const Patch3d patch(m, *P.footprint_3d, physics);
       const bool warm_fits = static_cast<int>(warm.size()) == patch.sections();
-      Patch3dResult r = patch.solve(elastic, warm_fits ? warm : std::vector<char>());
+      Patch3dResult r =
+          patch.solve(elastic, warm_fits ? warm : std::vector<char>(), options.warm_cells);
       if (!r.ok()) return failed(r.status, r.message);
       const double next = std::min(r.width_m, r.length_m);
       if (soil && b_acts && std::abs(next - b) > 1e-7 * b) {
@@ -119,6 +123,9 @@ Prediction patch3d_path(const TyreModel& m, const TyreParameters& P, const Opera
         continue;
       }
       Prediction p = from_patch3d(patch, std::move(r), elastic);
+      if (physics.rolling)  // the cells' moment about the axle over the loaded radius
+        p.rolling_resistance_N =
+            p.patch3d->force_moment_Nm / (m.config.outer_radius_m - p.patch3d->sinking_m);
       if (soil) {
         p.on_soil = p.footprint.on_soil = true;
         p.footprint.soil_sinkage_m = p.patch3d->soil_sinkage_m;

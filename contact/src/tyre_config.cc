@@ -206,7 +206,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
     c.footprint_3d = read_patch3d_settings(root.section("footprint_3d"));
     // What the 3D patch does not model is refused, not ignored.
     for (const auto& e : effect_catalogue()) {
-      if (c.effects.enabled(e.id) && !e.refused_with_3d.empty()) {
+      if (!e.is_option() && c.effects.enabled(e.id) && !e.refused_with_3d.empty()) {
         root.section("effects").section(e.name).fail(
             "enabled", "cannot be combined with footprint_3d: " + e.refused_with_3d);
       }

@@ -49,7 +49,7 @@ std::vector<contact::OperatingConditions> footprint_cases(
 std::vector<std::string> enabled_effects(const contact::EffectsConfig& effects) {
   std::vector<std::string> names;
   for (const auto& e : contact::effect_catalogue()) {
-    if (effects.enabled(e.id)) names.push_back(e.name);
+    if (!e.is_option() && effects.enabled(e.id)) names.push_back(e.name);
   }
   return names;
 }
