@@ -40,12 +40,14 @@ TEST(MfLongitudinal, SlopeAtZeroShiftedSlipIsTheSlipStiffness) {
     const double d = dfz(fz);
     const double shx = c.phx1 + c.phx2 * d;
     const double h = 1e-7;
-    const double slope =
-        (mf_fx0_N(c, {}, reference_basis(), -shx + h, fz) - mf_fx0_N(c, {}, reference_basis(), -shx - h, fz)) / (2 * h);
+    const double slope = (mf_fx0_N(c, {}, reference_basis(), -shx + h, fz) -
+                          mf_fx0_N(c, {}, reference_basis(), -shx - h, fz)) /
+                         (2 * h);
     const double kxk = fz * (c.pkx1 + c.pkx2 * d) * std::exp(c.pkx3 * d);  // 4.E15
     EXPECT_NEAR(slope, kxk, 1e-5 * kxk) << fz;
     // At kappa = -S_Hx the force is the vertical shift alone (4.E18).
-    EXPECT_NEAR(mf_fx0_N(c, {}, reference_basis(), -shx, fz), fz * (c.pvx1 + c.pvx2 * d), 1e-9 * fz);
+    EXPECT_NEAR(mf_fx0_N(c, {}, reference_basis(), -shx, fz), fz * (c.pvx1 + c.pvx2 * d),
+                1e-9 * fz);
   }
 }
 
@@ -54,7 +56,8 @@ TEST(MfLongitudinal, PeakIsDPlusTheVerticalShift) {
   const double fz = 5000, d = dfz(fz);
   const double D = (c.pdx1 + c.pdx2 * d) * fz;  // 4.E12-4.E13
   double peak = -1e9;
-  for (double k = 0; k < 1; k += 1e-4) peak = std::max(peak, mf_fx0_N(c, {}, reference_basis(), k, fz));
+  for (double k = 0; k < 1; k += 1e-4)
+    peak = std::max(peak, mf_fx0_N(c, {}, reference_basis(), k, fz));
   EXPECT_NEAR(peak, D + fz * (c.pvx1 + c.pvx2 * d), 1e-4 * D);
 }
 
@@ -80,7 +83,8 @@ TEST(MfLongitudinal, CurvatureIsLimitedToOneAndSignedByTheSlip) {
   MfLongitudinal one = c;
   one.pex1 = 1 / 1.3;
   EXPECT_NEAR(mf_curvature_x(one, {}, reference_basis(), -0.2, 4000), 1.0, 1e-12);
-  EXPECT_DOUBLE_EQ(mf_fx0_N(c, {}, reference_basis(), -0.2, 4000), mf_fx0_N(one, {}, reference_basis(), -0.2, 4000));
+  EXPECT_DOUBLE_EQ(mf_fx0_N(c, {}, reference_basis(), -0.2, 4000),
+                   mf_fx0_N(one, {}, reference_basis(), -0.2, 4000));
 }
 
 TEST(MfLongitudinal, ScalingFactorsScaleTheirTerms) {
