@@ -85,8 +85,9 @@ TEST_F(TractionCurvesCli, RowsCarryTheirValidityAndTheCurvesTheirPoints) {
     const double re = c["rolling_radius_mm"], loaded = c["loaded_radius_mm"];
     EXPECT_GT(re, loaded);
     EXPECT_LT(re, j["outer_radius_mm"].get<double>());
-    if (!c["valid"].get<bool>())
+    if (!c["valid"].get<bool>()) {
       EXPECT_NE(c["validity"].get<std::string>().find("deg from the bottom"), std::string::npos);
+    }
   }
   ASSERT_EQ(j["curves"].size(), 1u);
   EXPECT_TRUE(j.contains("towed_point"));
