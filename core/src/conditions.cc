@@ -76,6 +76,12 @@ std::string ConditionInfo::refusal(const std::string& given) const {
          (also.empty() ? "" : " (or " + also + ")");
 }
 
+std::string footprint_refusal(ConditionId id) {
+  if (id != ConditionId::slip) return "";
+  return "slip is a condition of traction rows (`traction --slip`), not of a footprint: a "
+         "footprint is standing or free-rolling";
+}
+
 const std::vector<ConditionInfo>& condition_catalogue() {
   static const std::vector<ConditionInfo> c = make_catalogue();
   return c;

@@ -33,11 +33,13 @@ struct SoilFxCurve {
   std::vector<double> soil_sinkage_mm, drawbar_pull_N, torque_Nm;
 };
 
-// Free rolling and 30 % slip at 3 kN (the rigid wheel of the tyre's radius with `rigid`).
-SoilFxCurve soilfx_traction(const TyreConfig& c, bool rigid = false) {
+// Free rolling and 30 % slip at 3 kN (the rigid wheel of the tyre's radius with `rigid`), at the
+// travel speed V.
+SoilFxCurve soilfx_traction(const TyreConfig& c, bool rigid = false, double V_m_s = 0) {
   const TyreModel m = build_tyre_model(c);
   TractionOptions o;
   o.rigid = rigid;
+  o.speed_m_per_s = V_m_s;
   SoilFxCurve out;
   for (const TractionResult& r : steady_traction(m, c.ground, {{3000, 0.0}, {3000, 0.3}}, o)) {
     EXPECT_TRUE(r.ok()) << r.message;
@@ -183,6 +185,45 @@ TEST(SoilEffects, EachMovesTheTractionOutputsItListsAndNoOther) {
             base.drawbar_pull_N[1]);
   EXPECT_GT(soilfx_traction(soilfx_switched(sand, EffectId::soil_unloading)).drawbar_pull_N[0],
             base.drawbar_pull_N[0]);
+}
+
+// soil_viscosity: the Kelvin-Voigt soil's rate term under the rolling rigid wheel (docs/soil.md
+// 3.2). Off (eta2 = 0) and standing (V = 0) are the elastic law bit for bit; on at 5 km/h it
+// moves every output it lists; refused on a Bekker soil and on the flexible tyre.
+TEST(SoilEffects, SoilViscosityActsThroughTheSpeedOnTheRigidWheel) {
+  TyreConfig kv = load_tyre_config(
+      kSoilFxConfig,
+      {"contact.unit_length_mm=2", "ground.model=kelvin_voigt", "ground.kelvin_voigt.E2_MPa=2",
+       "ground.kelvin_voigt.layer_mm=200", "ground.kelvin_voigt.elastic_share=0.7",
+       "ground.kelvin_voigt.cohesion_kPa=1", "ground.kelvin_voigt.friction_angle_deg=30",
+       "ground.kelvin_voigt.shear_modulus_K_mm=25"});
+  const EffectInfo& e = effect_info(EffectId::soil_viscosity);
+  EXPECT_EQ(e.regime, ConditionId::speed_kmh);
+  EXPECT_FALSE(effect_enabled(kv, EffectId::soil_viscosity));
+  EXPECT_NE(effect_refusal(kv, EffectId::soil_viscosity).find("tyre.rigid"), std::string::npos);
+  EXPECT_NE(
+      effect_refusal(soilfx_config("lete_sand.yaml"), EffectId::soil_viscosity).find("bekker soil"),
+      std::string::npos);
+  kv.rigid = true;
+  EXPECT_EQ(effect_refusal(kv, EffectId::soil_viscosity), "");
+  const TyreConfig on = soilfx_switched(kv, EffectId::soil_viscosity);
+  ASSERT_TRUE(effect_enabled(on, EffectId::soil_viscosity));
+  EXPECT_EQ(on.ground.kelvin_voigt.eta2_kPa_s, e.parameters.front().default_value);
+  const double V = 5 / 3.6;
+  const SoilFxCurve elastic = soilfx_traction(kv, true, V);
+  const SoilFxCurve standing = soilfx_traction(on, true, 0);
+  const SoilFxCurve rolling = soilfx_traction(on, true, V);
+  for (const char* name : {"soil_sinkage_mm", "drawbar_pull_N", "torque_Nm"}) {
+    ASSERT_NE(std::find(e.observables.begin(), e.observables.end(), name), e.observables.end());
+    EXPECT_EQ(soilfx_output(standing, name), soilfx_output(elastic, name)) << name;
+    for (std::size_t k = 0; k < 2; ++k) {
+      const double b = soilfx_output(elastic, name)[k], a = soilfx_output(rolling, name)[k];
+      EXPECT_GT(std::abs(a - b), 2e-3 * std::max(std::abs(b), 1.0)) << name << " " << k;
+    }
+  }
+  // The soil stiffens with speed and resists more.
+  EXPECT_LT(rolling.soil_sinkage_mm[1], elastic.soil_sinkage_mm[1]);
+  EXPECT_LT(rolling.drawbar_pull_N[1], elastic.drawbar_pull_N[1]);
 }
 
 }  // namespace

@@ -59,6 +59,10 @@ struct ConditionInfo {
   std::string refusal(const std::string& given) const;
 };
 
+/// Why a footprint row (measurement CSV, sweep, `--set`) cannot state the condition, "" when it
+/// can: slip is a traction row's (a footprint is standing or free-rolling).
+std::string footprint_refusal(ConditionId id);
+
 /// Every condition, in ConditionId order.
 const std::vector<ConditionInfo>& condition_catalogue();
 const ConditionInfo& condition_info(ConditionId id);
