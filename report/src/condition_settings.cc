@@ -23,6 +23,8 @@ std::vector<ConditionSetting> take_condition_settings(std::vector<std::string>& 
       continue;
     }
     const InputLocation at{origin, 0, info->name};
+    if (const std::string why = footprint_refusal(info->id); !why.empty())
+      throw InputError(at, why);
     const YAML::Node n = parse_set_value(o.substr(eq + 1), info->name);
     if (!n || !n.IsScalar()) {
       throw InputError(at, "expected one value, e.g. " + info->name + "=" +

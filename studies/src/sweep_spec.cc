@@ -106,6 +106,7 @@ void flatten_grid(const YAML::Node& node, const std::string& prefix, const std::
 // that a sweep never writes a file that cannot be read back as measured data).
 void check_condition(const ConditionInfo& info, const SweepValue& v, const InputLocation& where) {
   const InputLocation at{where.file, v.line > 0 ? v.line : where.line, where.key};
+  if (const std::string why = footprint_refusal(info.id); !why.empty()) throw InputError(at, why);
   if (info.is_text()) {
     if (!info.value_of(v.text)) throw InputError(at, info.refusal(v.text));
     return;

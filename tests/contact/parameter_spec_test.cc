@@ -40,6 +40,13 @@ std::vector<std::string> needed_by(const std::string& key) {
     for (const auto& p : e.parameters) {
       if (e.key(p) != key) continue;
       std::vector<std::string> out;
+      // A soil effect's keys need a soil of their model (LETE sand's law; a layer of 2 MPa).
+      if (key.rfind("ground.bekker.", 0) == 0)
+        out = {"ground.model=bekker", "ground.bekker.n=0.79", "ground.bekker.k_c=102",
+               "ground.bekker.k_phi=5301"};
+      if (key.rfind("ground.kelvin_voigt.", 0) == 0)
+        out = {"ground.model=kelvin_voigt", "ground.kelvin_voigt.E2_MPa=2",
+               "ground.kelvin_voigt.layer_mm=200"};
       for (auto& s : effect_catalogue_switch(e.id))
         if (s.rfind(key + "=", 0) != 0) out.push_back(s);
       return out;

@@ -87,9 +87,20 @@ TEST(ConditionCatalogue, NamesAreUniqueInIdOrderAndAreTheMeasurementColumns) {
   EXPECT_EQ(condition_info(ConditionId::load_N).range_text(), "[1e-6, 1e7] N");
 }
 
+// A traction row's slip: no footprint row states it (a footprint is standing or free-rolling).
+TEST(ConditionCatalogue, SlipIsRefusedByFootprintMeasurementsAndSweeps) {
+  const ConditionInfo& slip = condition_info(ConditionId::slip);
+  EXPECT_EQ(slip.range_text(), "[-1, 1]");
+  EXPECT_NE(measured(slip, "0.2").find("slip"), std::string::npos) << measured(slip, "0.2");
+  EXPECT_NE(swept(slip, "0.2").find(footprint_refusal(ConditionId::slip)), std::string::npos)
+      << swept(slip, "0.2");
+  for (const ConditionInfo& c : condition_catalogue())
+    EXPECT_EQ(footprint_refusal(c.id).empty(), c.id != ConditionId::slip) << c.name;
+}
+
 TEST(ConditionCatalogue, MeasurementsAndSweepsAcceptTheRangeAndRefuseBeyondWithOneMessage) {
   for (const ConditionInfo& c : condition_catalogue()) {
-    if (c.is_text()) continue;
+    if (c.is_text() || !footprint_refusal(c.id).empty()) continue;
     SCOPED_TRACE(c.name);
     const std::string max = number_text(c.max);
     double read = 0;
