@@ -147,6 +147,7 @@ nlohmann::json discover_json(const discover::DiscoverReport& r, const std::strin
       {"fits", r.fits},
       {"evaluations", r.evaluations},
       {"footprints", r.footprints},
+      {"traction_cases", r.traction_cases},
       {"method", r.method},
       {"uncertainty_inputs", r.uncertainty_inputs},
       {"conclusion", r.conclusion}};
