@@ -55,7 +55,7 @@ PlotPanel panel(const discover::DiscoverReport& r, const studies::MeasurementSet
     }
     p.series.push_back(std::move(m));
     p.series.push_back(std::move(b));
-    p.series.push_back(std::move(a));
+    if (!r.effects.empty()) p.series.push_back(std::move(a));  // else the baseline's again
   }
   return p;
 }
