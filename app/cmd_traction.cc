@@ -101,13 +101,15 @@ void register_traction(CLI::App& app) {
     files.input(a->ground, "--ground");
     if (!a->plot.empty()) files.output(a->plot, "--plot");
     files.check();
-    // Steady rolling takes the Kelvin-Voigt soil's elastic law only (docs/soil.md section 7):
-    // its rate term eta2 acts in the transient (section 8.4), not here; said, not dropped quietly.
-    if (setup.ground.model == ground::GroundModel::kelvin_voigt &&
-        setup.ground.kelvin_voigt.eta2_kPa_s > 0) {
-      std::cerr << "warning: traction leaves out the soil's viscous term "
+    // The Kelvin-Voigt soil's rate term eta2 acts under the rigid wheel at the speed (docs/soil.md
+    // section 3.2) and in the transient (section 8.4); the flexible tyre's steady rolling takes
+    // the elastic law: said, not dropped quietly.
+    const bool viscous = setup.ground.model == ground::GroundModel::kelvin_voigt &&
+                         setup.ground.kelvin_voigt.eta2_kPa_s > 0;
+    if (viscous && !setup.rigid) {
+      std::cerr << "warning: the flexible tyre's traction leaves out the soil's viscous term "
                    "(ground.kelvin_voigt.eta2_kPa_s): steady rolling on its elastic law; the "
-                   "transient models it (docs/soil.md 8.4)\n";
+                   "rigid wheel (tyre.rigid) and the transient model it (docs/soil.md 3.2, 8.4)\n";
     }
     const auto results = report::run_traction(setup, a->loads, a->slips, a->passes);
     for (const auto& r : results) {
@@ -125,7 +127,8 @@ void register_traction(CLI::App& app) {
     if (!a->plot.empty()) plot_traction(run, results, a->plot);
     if (a->json) {
       print_json(report::traction_json(config, g, results, setup.rigid, a->passes,
-                                       setup.slip_reference, setup.rigid ? 0.0 : speed_km_h));
+                                       setup.slip_reference,
+                                       setup.rigid && !viscous ? 0.0 : speed_km_h));
       return;
     }
     print_traction_table(run, results);

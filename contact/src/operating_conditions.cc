@@ -20,6 +20,8 @@ double condition_value(const OperatingConditions& c, ConditionId id) {
       return c.surface == Surface::soil ? 1.0 : 0.0;
     case ConditionId::horizontal_force_N:
       return c.horizontal_force_N;
+    case ConditionId::slip:
+      return c.slip;
   }
   throw std::logic_error("unknown condition id");
 }
@@ -46,6 +48,9 @@ void set_condition(OperatingConditions& c, ConditionId id, double value) {
       return;
     case ConditionId::horizontal_force_N:
       c.horizontal_force_N = value;
+      return;
+    case ConditionId::slip:
+      c.slip = value;
       return;
   }
   throw std::logic_error("unknown condition id");

@@ -301,7 +301,10 @@ EffectInfo sidewall_softening() {
 }  // namespace
 
 std::vector<EffectInfo> option_effect_catalogue() {
-  return {lateral_belt(), pneumatic_share(), crown_shape(), sidewall_softening()};
+  std::vector<EffectInfo> out = {lateral_belt(), pneumatic_share(), crown_shape(),
+                                 sidewall_softening()};
+  for (auto& e : soil_effect_catalogue()) out.push_back(std::move(e));
+  return out;
 }
 
 }  // namespace modaltyre::contact

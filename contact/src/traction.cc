@@ -184,8 +184,9 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
 }
 
 TractionResult rigid_pass(const TyreModel& model, const ground::GroundSettings& g,
-                          const TractionCase& c, int pass, double prior) {
-  const ground::RigidWheel wheel{model.config.outer_radius_m, model.config.tread.width_m};
+                          const TractionCase& c, int pass, double prior, const TractionOptions& o) {
+  const ground::RigidWheel wheel{model.config.outer_radius_m, model.config.tread.width_m,
+                                 o.speed_m_per_s};
   const ground::RigidWheelResult w = ground::rigid_wheel_rolling(g, wheel, c.load_N, c.slip, prior);
   if (!w.ok()) return case_result(c, pass, w.message, w.status);
   TractionResult r = case_result(c, pass, w.message, w.status);
@@ -262,7 +263,7 @@ TractionResult traction_pass(const TyreModel& model, const ground::GroundSetting
   const double R0 = model.config.outer_radius_m;
   TractionResult r;
   if (o.rigid) {
-    r = rigid_pass(model, g, c, 1, prior);
+    r = rigid_pass(model, g, c, 1, prior, o);
   } else if (model.config.footprint_3d) {
     const detail::Rolling3d rolling(model, g);
     detail::Rolling3dState st;
@@ -326,7 +327,7 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
     std::vector<double> prior_columns;  // 3D: the track's memory per column
     for (int p = 1; p <= o.passes; ++p) {
       auto run = [&] {
-        return o.rigid   ? rigid_pass(model, g, c, p, prior)
+        return o.rigid   ? rigid_pass(model, g, c, p, prior, o)
                : three_d ? rolling3d->pass(c, p, prior_columns, o, states3d[p - 1])
                          : rolling_pass(model, V, g, c, p, prior, o, states[p - 1]);
       };

@@ -26,6 +26,7 @@ std::vector<ConditionInfo> make_catalogue() {
        {{"load", "loading"}, {"unload", "unloading"}}},
       {Id::surface, "surface", "", "surface", 0, 0, false, {{"rigid"}, {"soil"}}},
       {Id::horizontal_force_N, "horizontal_force_N", "N", "horizontal force", -1e7, 1e7},
+      {Id::slip, "slip", "", "slip", -1, 1},
   };
 }
 
@@ -52,7 +53,8 @@ std::string ConditionInfo::range_text() const {
     for (const auto& w : words) s += (s.empty() ? "" : ", ") + w.front();
     return s;
   }
-  return (min_open ? "(" : "[") + limit_text(min) + ", " + limit_text(max) + "] " + unit;
+  return (min_open ? "(" : "[") + limit_text(min) + ", " + limit_text(max) + "]" +
+         (unit.empty() ? "" : " " + unit);
 }
 
 std::optional<int> ConditionInfo::value_of(const std::string& word) const {

@@ -135,6 +135,7 @@ GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tr
     w.Au_kN_m4 = u.number("Au", 0, 0, 1e15);
     if (!(w.k0_kN_m3 + w.Au_kN_m4 > 0))
       u.fail("Au", "k0 and Au cannot both be 0 (leave out unloading: for a rigid-plastic soil)");
+    g.stated_unloading = w;
     if (on) g.bekker.unloading = w;
   }
   if (b.has("slip_sinkage")) {

@@ -48,6 +48,12 @@ double KelvinVoigtSoil::work_J_m2(double p_Pa, double z_max_m) const {
   return work;
 }
 
+// Seed 000 eq. (23) with the reduced parameters k_E eta2 on loading (docs/soil.md section 1.2).
+double KelvinVoigtSoil::viscous_Pa(double dz_dt_m_s, bool virgin) const {
+  const double eta2_Pa_s = params_.eta2_kPa_s * 1e3;
+  return (virgin ? params_.elastic_share : 1.0) * eta2_Pa_s * dz_dt_m_s / (params_.layer_mm * 1e-3);
+}
+
 double KelvinVoigtSoil::unloading_sinkage_m(double p_Pa, double z_max_m) const {
   return std::min(z_max_m, rebound_depth_m(z_max_m) + std::max(p_Pa, 0.0) / k_);
 }

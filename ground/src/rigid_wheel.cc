@@ -64,6 +64,24 @@ double angle_at_depth(double R, double depth_below_lowest) {
   return std::acos(std::clamp(1 - depth_below_lowest / R, -1.0, 1.0));
 }
 
+// The viscous soil's exit angle in (theta2_elastic, 0]: where the branch's pressure plus the rate
+// term V tan(theta) (negative behind the lowest point) falls to 0. Bisection: the sum rises from
+// the rate term alone at theta2_elastic (< 0) to the branch's pressure at 0 (>= 0).
+double viscous_exit(const PressureSinkage& law, double R, double z0, double z_max, double V,
+                    double theta2_elastic) {
+  auto sigma = [&](double th) {
+    return law.pressure_Pa(z0 - R * (1 - std::cos(th)), z_max) +
+           law.viscous_Pa(V * std::tan(th), false);
+  };
+  double lo = theta2_elastic, hi = 0;
+  if (!(sigma(hi) > 0)) return 0.0;
+  for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (sigma(mid) > 0 ? hi : lo) = mid;
+  }
+  return hi;
+}
+
 }  // namespace
 
 double speed_ratio(double slip) { return slip >= 0 ? 1 - slip : 1 / (1 + slip); }
@@ -88,6 +106,8 @@ RigidWheelResult rigid_wheel_at_sinkage(const PressureSinkage& law, const ShearL
   // to theta_m, its mirror image on [theta2, theta_m]; otherwise the front down to the lowest
   // point and the memory's unloading branch behind it.
   const bool wong_reece = rolling && wr.enabled;
+  const double V = wheel.speed_m_per_s;
+  const bool viscous = rolling && V > 0 && law.viscous_Pa(V, false) > 0;
   const double theta_m = wong_reece ? wr.peak_ratio(slip) * theta1 : 0.0;
   // Front: a kink (elastic reload) or a jump (rigid-plastic) where z passes the prior z_max.
   const double tp = prior > surface && prior < z0 ? angle_at_depth(R, z0 - prior) : -1.0;
@@ -114,6 +134,7 @@ RigidWheelResult rigid_wheel_at_sinkage(const PressureSinkage& law, const ShearL
     }
   } else if (rolling) {
     theta2 = z0 > r.rut_depth_m ? -angle_at_depth(R, z0 - r.rut_depth_m) : 0.0;
+    if (viscous) theta2 = viscous_exit(law, R, z0, r.z_max_m, V, theta2);
     add_segment(nodes, theta2, 0, panels);
   }
   r.exit_angle_rad = theta2;
@@ -138,6 +159,10 @@ RigidWheelResult rigid_wheel_at_sinkage(const PressureSinkage& law, const ShearL
     } else {
       const double z = z0 - R * (1 - std::cos(n.theta));
       sigma = n.theta >= 0 ? front_stress(n.theta) : law.pressure_Pa(z, r.z_max_m);
+      // The rate term at dz/dt = V tan(theta): virgin where the point is deeper than it has been.
+      if (viscous)
+        sigma = std::max(0.0,
+                         sigma + law.viscous_Pa(V * std::tan(n.theta), n.theta >= 0 && z >= prior));
     }
     double tau = 0;
     if (rolling) {

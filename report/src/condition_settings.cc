@@ -23,6 +23,8 @@ std::vector<ConditionSetting> take_condition_settings(std::vector<std::string>& 
       continue;
     }
     const InputLocation at{origin, 0, info->name};
+    if (info->id == ConditionId::slip)
+      throw InputError(at, "a traction row's condition: `traction --slip` takes the slips");
     const YAML::Node n = parse_set_value(o.substr(eq + 1), info->name);
     if (!n || !n.IsScalar()) {
       throw InputError(at, "expected one value, e.g. " + info->name + "=" +

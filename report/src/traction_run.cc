@@ -107,6 +107,7 @@ std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
   opt.rigid = setup.rigid;
   opt.passes = passes;
   opt.slip_reference = setup.slip_reference;
+  opt.speed_m_per_s = traction_speed_km_h(setup) / 3.6;  // a viscous soil's rate term
   std::vector<contact::TractionCase> cases;
   for (double load : loads_N)
     for (double s : slips) cases.push_back({load, s});

@@ -53,7 +53,8 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   // Numbers first, then words: the order the "expected:" list of an unknown column shows.
   for (const bool text : {false, true}) {
     for (const auto& c : condition_catalogue()) {
-      if (c.id == ConditionId::load_N || c.is_text() != text) continue;
+      // A footprint row states no slip: traction rows (their own reader) carry it.
+      if (c.id == ConditionId::load_N || c.id == ConditionId::slip || c.is_text() != text) continue;
       schema.optional.push_back(c.name);
       if (text) schema.text.push_back(c.name);
     }

@@ -32,10 +32,10 @@ class EffectsCli : public modaltyre_test::CliFixture {
   }
 };
 
-TEST_F(EffectsCli, JsonListsThirteenEffectsWithTheDocumentedShape) {
+TEST_F(EffectsCli, JsonListsEighteenEffectsWithTheDocumentedShape) {
   const auto j = catalogue();
   ASSERT_TRUE(j.contains("effects"));
-  ASSERT_EQ(j["effects"].size(), 13u);
+  ASSERT_EQ(j["effects"].size(), 18u);
   std::set<std::string> names;
   int options = 0;
   for (const auto& e : j["effects"]) {
@@ -50,7 +50,9 @@ TEST_F(EffectsCli, JsonListsThirteenEffectsWithTheDocumentedShape) {
       ++options;
       for (const auto& p : e["parameters"]) {
         const auto key = p["key"].get<std::string>();
-        EXPECT_TRUE(key.rfind("footprint_3d.", 0) == 0 || key.rfind("modal.", 0) == 0) << key;
+        EXPECT_TRUE(key.rfind("footprint_3d.", 0) == 0 || key.rfind("modal.", 0) == 0 ||
+                    key.rfind("ground.", 0) == 0)
+            << key;
       }
       continue;
     }
@@ -70,8 +72,8 @@ TEST_F(EffectsCli, JsonListsThirteenEffectsWithTheDocumentedShape) {
       EXPECT_LE(def, hi) << p["key"];
     }
   }
-  EXPECT_EQ(names.size(), 13u) << "effect names must be unique";
-  EXPECT_EQ(options, 4);
+  EXPECT_EQ(names.size(), 18u) << "effect names must be unique";
+  EXPECT_EQ(options, 9);
 }
 
 TEST_F(EffectsCli, TextTableNamesEveryKeyAndWhetherItIsFitted) {
@@ -110,7 +112,61 @@ TEST_F(EffectsCli, EveryListedKeyIsAcceptedAtItsDefault) {
   EXPECT_NE(bad.err.find("friction_force"), std::string::npos) << bad.err;
 }
 
-// The options' switches and keys at their defaults, all four at once on the 3D default.
+// An option's switch and its parameters at their defaults, as `--set` arguments.
+std::vector<std::string> option_sets(const nlohmann::json& e) {
+  std::vector<std::string> sets = e["switch"].get<std::vector<std::string>>();
+  for (const auto& p : e["parameters"]) {
+    const std::string key = p["key"].get<std::string>();
+    bool in_switch = false;  // a stated value the switch already sets
+    for (const auto& s : sets) in_switch = in_switch || s.rfind(key + "=", 0) == 0;
+    if (!in_switch) sets.push_back(key + "=" + p["default"].dump());
+  }
+  return sets;
+}
+
+bool soil_option(const nlohmann::json& e) {
+  return e["parameters"][0]["key"].get<std::string>().rfind("ground.", 0) == 0;
+}
+
+// The soil effects' switches and keys at their defaults, on a soil file under the rigid wheel
+// (which takes all five): the Bekker ones at once on LETE sand, the viscosity on a Kelvin-Voigt
+// soil.
+TEST_F(EffectsCli, EverySoilSwitchIsAcceptedByTractionOnItsSoilAtItsDefaults) {
+  const nlohmann::json all = catalogue();
+  const std::string soils = std::string(MODALTYRE_SOURCE_DIR) + "/configs/soils/";
+  std::vector<std::string> bekker{"traction", kConfig, "--ground",       soils + "lete_sand.yaml",
+                                  "--load",   "3000",  "--slip",         "0.2",
+                                  "--json",   "--set", "tyre.rigid=true"};
+  // Without --ground the `ground.*` sets go to the tyre config: a Kelvin-Voigt soil there.
+  std::vector<std::string> kv{"traction", kConfig,  "--load",       "3000", "--slip",
+                              "0.2",      "--json", "--speed-km-h", "5"};
+  for (const char* k :
+       {"tyre.rigid=true", "ground.model=kelvin_voigt", "ground.kelvin_voigt.E2_MPa=2",
+        "ground.kelvin_voigt.layer_mm=200", "ground.kelvin_voigt.cohesion_kPa=1",
+        "ground.kelvin_voigt.friction_angle_deg=30", "ground.kelvin_voigt.shear_modulus_K_mm=25"}) {
+    kv.push_back("--set");
+    kv.push_back(k);
+  }
+  int soil = 0;
+  for (const auto& e : all["effects"]) {
+    if (!e["option"].get<bool>() || !soil_option(e)) continue;
+    ++soil;
+    const bool viscous = e["name"] == "soil_viscosity";
+    for (const auto& s : option_sets(e)) {
+      (viscous ? kv : bekker).push_back("--set");
+      (viscous ? kv : bekker).push_back(s);
+    }
+  }
+  EXPECT_EQ(soil, 5);
+  for (const auto& args : {bekker, kv}) {
+    const auto r = run(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(nlohmann::json::parse(r.out)["cases"][0]["converged"].get<bool>()) << r.out;
+  }
+}
+
+// The options' switches and keys at their defaults, all of the tyre's at once on the 3D default
+// (the soil effects' keys need a soil: above).
 TEST_F(EffectsCli, EveryOptionSwitchIsAcceptedByTheThreeDConfigAtItsDefaults) {
   std::vector<std::string> args{"footprint",
                                 std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml",
@@ -121,15 +177,8 @@ TEST_F(EffectsCli, EveryOptionSwitchIsAcceptedByTheThreeDConfigAtItsDefaults) {
                                 "contact.unit_length_mm=2"};
   const nlohmann::json all = catalogue();
   for (const auto& e : all["effects"]) {
-    if (!e["option"].get<bool>()) continue;
-    std::vector<std::string> sets = e["switch"].get<std::vector<std::string>>();
-    for (const auto& p : e["parameters"]) {
-      const std::string key = p["key"].get<std::string>();
-      bool in_switch = false;  // a stated value the switch already sets
-      for (const auto& s : sets) in_switch = in_switch || s.rfind(key + "=", 0) == 0;
-      if (!in_switch) sets.push_back(key + "=" + p["default"].dump());
-    }
-    for (const auto& s : sets) {
+    if (!e["option"].get<bool>() || soil_option(e)) continue;
+    for (const auto& s : option_sets(e)) {
       args.push_back("--set");
       args.push_back(s);
     }

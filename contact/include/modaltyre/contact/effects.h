@@ -39,7 +39,16 @@
 //                       the circular crown (crown_profile.h)
 //   sidewall_softening  footprint_3d.sidewall: the inflated sidewalls' nonlinear loss of radial
 //                       stiffness (sidewall_membrane.h, docs/footprint.md section 9)
-// A soil law of ground: is registered the same way (its keys ground.*, regime surface or slip).
+// Soil effects: laws of a soil in ground: (ground/soil_options.h), registered the same way
+// (soil_effects.cc); they act on steady rolling (traction) and are refused without a soil of
+// their model:
+//   slip_sinkage        ground.bekker.slip_sinkage: sinkage x (1 + k1|s|)/(1 - k2|s|) (Lyasko)
+//   wong_reece_stress   ground.bekker.wong_reece: the rigid wheel's stress peak moving back with
+//                       slip (Wong & Reece 1967); tyre.rigid only
+//   bulldozing          ground.bekker.bulldozing: the soil pushed ahead (Bekker 1969)
+//   soil_unloading      ground.bekker.unloading: Wong's elastic unloading and reloading
+//   soil_viscosity      ground.kelvin_voigt.eta2_kPa_s: the Kelvin-Voigt soil's rate term
+//                       (seed 000 eq. 23) at the rolling speed; tyre.rigid only
 #include <array>
 #include <functional>
 #include <optional>
@@ -69,8 +78,14 @@ enum class EffectId {
   pneumatic_share,
   crown_shape,
   sidewall_softening,
+  // soil effects (options of ground:, soil_effects.cc)
+  slip_sinkage,
+  wong_reece_stress,
+  bulldozing,
+  soil_unloading,
+  soil_viscosity,
 };
-inline constexpr int kEffectCount = 13;
+inline constexpr int kEffectCount = 18;
 
 /// The effects' parameters as the config states them (the unit is in each name): the catalogue
 /// (effects.cc) declares every key with its unit and range, calibrations and discover search
@@ -229,8 +244,11 @@ const EffectInfo* find_effect(const std::string& name);
 /// [min, max] -> InputError naming file, line and key).
 EffectsConfig read_effects(const ConfigSection& effects);
 
-/// The option effects' catalogue entries (option_effects.cc), in EffectId order.
+/// The option effects' catalogue entries (option_effects.cc, then the soil effects'), in
+/// EffectId order.
 std::vector<EffectInfo> option_effect_catalogue();
+/// The soil effects' entries (soil_effects.cc), in EffectId order.
+std::vector<EffectInfo> soil_effect_catalogue();
 
 /// Whether an effect is on in a config (its effects.NAME flag or its option).
 bool effect_enabled(const TyreConfig& config, EffectId id);

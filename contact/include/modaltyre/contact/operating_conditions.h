@@ -28,6 +28,7 @@ struct OperatingConditions {
   double speed_kmh = 0;  ///< rolling speed (0: standing)
   Branch branch = Branch::loading;
   Surface surface = Surface::rigid;
+  double slip = 0;  ///< a traction row's slip (ISTVS, as `traction --slip`); 0: not slipping
 
   double pressure_Pa() const { return pressure_kPa * 1e3; }
   /// Seed 000 eq. (3) states its pressure law in bar.

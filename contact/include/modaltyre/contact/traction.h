@@ -101,6 +101,9 @@ struct TractionOptions {
   /// speed, its flexing (hysteresis) loss (report/traction_flexing.h measures it with the
   /// transient's rolling scenario); a load not in the map: 0.
   std::map<double, double> flexing_resistance_N;
+  /// Travel speed V [m/s]: the Kelvin-Voigt soil's rate term eta2 acts at dz/dt = V tan(theta)
+  /// under the rigid wheel (ground/rigid_wheel.h, docs/soil.md section 3.2); 0: the elastic law.
+  double speed_m_per_s = 0;
   int max_iterations = 200;
   /// Settled when a step changes the drawbar pull, the shear's load share and every unit's
   /// horizontal force by at most tolerance x load, Bekker's b by tolerance x width, and the

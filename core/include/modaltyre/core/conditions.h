@@ -14,6 +14,8 @@
 //   branch              load | unload (also: loading | unloading)
 //   surface             rigid | soil
 //   horizontal_force_N  horizontal force at the axle [N], in [-1e7, 1e7]
+//   slip                slip of a traction row (as `traction --slip` takes it), in [-1, 1]; a
+//                       footprint row is standing or free-rolling and states none
 // The upper limits are those of the tyre config's own keys: beyond them a unit error, which a
 // solver would fail on instead of the reader saying so.
 #include <optional>
@@ -30,7 +32,8 @@ enum class ConditionId {
   speed_kmh,
   branch,
   surface,
-  horizontal_force_N
+  horizontal_force_N,
+  slip
 };
 
 struct ConditionInfo {

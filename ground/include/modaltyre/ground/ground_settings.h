@@ -30,6 +30,7 @@
 //       friction_angle_deg: 30
 //       shear_modulus_K_mm: 25
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,9 @@ struct GroundSettings {
   std::string profile_csv;                     ///< resolved path (profile)
   std::shared_ptr<const RoadProfile> profile;  ///< read from profile_csv by the reader
   BekkerParams bekker;
+  /// The unloading: block's values whether enabled or not (the soil_unloading effect switches
+  /// them on; bekker.unloading holds them only when on).
+  std::optional<WongUnloading> stated_unloading;
   JanosiParams bekker_shear{0, 30, 25};
   WongReeceStress wong_reece;  ///< the rigid wheel's stress distribution (soil_options.h)
   SlipSinkage slip_sinkage;    ///< sinkage growing with slip (soil_options.h)

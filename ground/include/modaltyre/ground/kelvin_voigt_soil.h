@@ -12,8 +12,10 @@
 // rut depth over the layer depth (< 1 % for sinkages below H/100) and would make the reloading
 // branch overshoot the virgin one; H is used on both branches here (docs/soil.md section 1.3).
 // k_E = 1 is the elastic Winkler soil of the soil_compliance effect: z = p H / E2.
-// The static laws below leave out the rate term (dz/dt = 0); the 2D transient adds it
-// (transient/soil_contact.h, docs/soil.md sections 1.2 and 8.4).
+// The static laws below leave out the rate term (dz/dt = 0); viscous_Pa gives it at a rate,
+//   loading  k_E eta2 dz/dt / H,   below z_max  eta2 dz/dt / H,
+// which the rigid wheel's steady rolling adds at dz/dt = V tan(theta) (rigid_wheel.h, docs/soil.md
+// section 3.2); the 2D transient integrates it in time (transient/soil_contact.h, section 8.4).
 #include "modaltyre/ground/pressure_sinkage.h"
 
 namespace modaltyre::ground {
@@ -37,6 +39,7 @@ class KelvinVoigtSoil final : public PressureSinkage {
   double rebound_depth_m(double z_max_m) const override;
   bool rigid_plastic() const override { return false; }
   double work_J_m2(double p_Pa, double z_max_m) const override;
+  double viscous_Pa(double dz_dt_m_s, bool virgin) const override;
 
  private:
   KelvinVoigtParams params_;

@@ -47,6 +47,13 @@ class PressureSinkage {
   /// complementary energy, convex in p. This default integrates numerically (Gauss-Legendre,
   /// relative error below 1e-9); the laws below override it with their closed forms.
   virtual double work_J_m2(double p_Pa, double z_max_m) const;
+  /// The pressure of the law's rate term at the sinkage rate dz/dt [m/s], on the virgin curve
+  /// (`virgin`) or a branch below z_max: 0 for a rate-independent law (the Kelvin-Voigt soil's
+  /// eta2 term, kelvin_voigt_soil.h). Negative while the surface rises.
+  virtual double viscous_Pa(double dz_dt_m_s, bool virgin) const {
+    (void)dz_dt_m_s, (void)virgin;
+    return 0.0;
+  }
 };
 
 }  // namespace modaltyre::ground

@@ -22,6 +22,10 @@
 //   DP = H - Rc,   T = b_w R^2 int tau dtheta          (drawbar pull, driving torque)
 // Static (pressed, not rolling): the symmetric contact W = 2 b_w R int_0^theta1 sigma cos.
 // Bekker's b = min(b_w, contact length): solved as a fixed point with the sinkage.
+// A rate-dependent soil (PressureSinkage::viscous_Pa) rolled at V > 0: a ground point under
+// theta sinks at dz/dt = V tan(theta) (seed 000's rigid wheel, rheology/soil.h), so sigma gains
+// viscous_Pa(V tan theta): positive ahead of the lowest point, negative behind it, where the
+// contact ends at the exit angle where sigma falls to 0 (the surface rises slower than the rim).
 // With ground.bekker.wong_reece enabled the rolling wheel's normal stress is Wong and Reece's
 // (soil_options.h): its peak at theta_m = (c1 + c2 s) theta1, the rear region the front's mirror,
 // the rear angle theta2 = -c3 theta1.
@@ -35,6 +39,9 @@ namespace modaltyre::ground {
 struct RigidWheel {
   double radius_m = 0.3;
   double width_m = 0.15;
+  /// Travel speed V [m/s] of the rolling wheel: a rate-dependent soil (the Kelvin-Voigt soil's
+  /// eta2) adds its rate term at dz/dt = V tan(theta) (docs/soil.md section 3.2); 0: none.
+  double speed_m_per_s = 0;
 };
 
 struct RigidWheelResult {

@@ -1,0 +1,189 @@
+// The soil effects of the catalogue (effects.h, soil_effects.cc): the ground keys of the
+// terramechanics work as switchable effects. Off in every bundled soil and bit for bit today's
+// traction when off (also where a soil file states their values with enabled: false); switched
+// on, each moves the traction outputs it lists and no other; refused where the config's ground
+// has no soil of the right model.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "modaltyre/contact/traction.h"
+#include "modaltyre/core/errors.h"
+
+namespace modaltyre::contact {
+namespace {
+
+const std::string kSoilFxSrc = MODALTYRE_SOURCE_DIR;
+const std::string kSoilFxConfig = kSoilFxSrc + "/configs/sf350_2d_table3.yaml";
+const std::vector<EffectId> kSoilFx = {EffectId::slip_sinkage, EffectId::wong_reece_stress,
+                                       EffectId::bulldozing, EffectId::soil_unloading};
+
+// The 2D SF-350 at 2 mm units on a soil file with `--set ground...` overrides.
+TyreConfig soilfx_config(const std::string& soil, const std::vector<std::string>& sets = {}) {
+  TyreConfig c = load_tyre_config(kSoilFxConfig, {"contact.unit_length_mm=2"});
+  c.ground = ground::load_ground_file(kSoilFxSrc + "/configs/soils/" + soil, sets);
+  return c;
+}
+
+struct SoilFxCurve {
+  std::vector<double> soil_sinkage_mm, drawbar_pull_N, torque_Nm;
+};
+
+// Free rolling and 30 % slip at 3 kN (the rigid wheel of the tyre's radius with `rigid`).
+SoilFxCurve soilfx_traction(const TyreConfig& c, bool rigid = false) {
+  const TyreModel m = build_tyre_model(c);
+  TractionOptions o;
+  o.rigid = rigid;
+  SoilFxCurve out;
+  for (const TractionResult& r : steady_traction(m, c.ground, {{3000, 0.0}, {3000, 0.3}}, o)) {
+    EXPECT_TRUE(r.ok()) << r.message;
+    out.soil_sinkage_mm.push_back(r.soil_sinkage_m * 1e3);
+    out.drawbar_pull_N.push_back(r.drawbar_pull_N);
+    out.torque_Nm.push_back(r.torque_Nm);
+  }
+  return out;
+}
+
+const std::vector<double>& soilfx_output(const SoilFxCurve& c, const std::string& name) {
+  if (name == "soil_sinkage_mm") return c.soil_sinkage_mm;
+  if (name == "drawbar_pull_N") return c.drawbar_pull_N;
+  if (name == "torque_Nm") return c.torque_Nm;
+  throw std::invalid_argument("not a traction output: " + name);
+}
+
+TyreConfig soilfx_switched(TyreConfig c, EffectId id) {
+  enable_effect(c, id);
+  return c;
+}
+
+TEST(SoilEffects, AreOptionsOfGroundOffInEveryBundledSoilAndRefusedOnARoad) {
+  for (EffectId id : kSoilFx) {
+    const EffectInfo& e = effect_info(id);
+    EXPECT_TRUE(e.is_option()) << e.name;
+    EXPECT_FALSE(e.option->needs_3d) << e.name;
+    for (const auto& p : e.parameters) EXPECT_EQ(p.option.key.rfind("ground.bekker.", 0), 0u);
+  }
+  EXPECT_EQ(effect_info(EffectId::slip_sinkage).regime, ConditionId::slip);
+  EXPECT_EQ(effect_info(EffectId::wong_reece_stress).regime, ConditionId::slip);
+  EXPECT_EQ(effect_info(EffectId::bulldozing).regime, ConditionId::load_N);
+  EXPECT_EQ(effect_info(EffectId::soil_unloading).regime, ConditionId::load_N);
+  for (const auto& f : std::filesystem::directory_iterator(kSoilFxSrc + "/configs/soils")) {
+    TyreConfig c = load_tyre_config(kSoilFxConfig);
+    c.ground = ground::load_ground_file(f.path().string());
+    for (EffectId id : kSoilFx)
+      EXPECT_FALSE(effect_enabled(c, id)) << f.path() << " " << effect_info(id).name;
+  }
+  // The default tyre on its rigid road: every soil effect refused, naming the road.
+  const TyreConfig road = load_tyre_config(kSoilFxSrc + "/configs/sf350.yaml");
+  for (EffectId id : kSoilFx) {
+    EXPECT_NE(effect_refusal(road, id).find("rigid road"), std::string::npos)
+        << effect_refusal(road, id);
+    EXPECT_FALSE(effect_enabled(soilfx_switched(road, id), id)) << effect_info(id).name;
+  }
+  // A Kelvin-Voigt soil is not a Bekker soil.
+  TyreConfig kv =
+      load_tyre_config(kSoilFxConfig, {"ground.model=kelvin_voigt", "ground.kelvin_voigt.E2_MPa=2",
+                                       "ground.kelvin_voigt.layer_mm=200"});
+  EXPECT_NE(effect_refusal(kv, EffectId::slip_sinkage).find("kelvin_voigt soil"),
+            std::string::npos);
+  // Wong and Reece's distribution is the rigid wheel's: refused on the flexible tyre.
+  TyreConfig sand = soilfx_config("lete_sand.yaml");
+  EXPECT_EQ(effect_refusal(sand, EffectId::slip_sinkage), "");
+  EXPECT_NE(effect_refusal(sand, EffectId::wong_reece_stress).find("tyre.rigid"),
+            std::string::npos);
+  sand.rigid = true;
+  EXPECT_EQ(effect_refusal(sand, EffectId::wong_reece_stress), "");
+}
+
+// Off: the soil's law as before. A file stating the effects' values with enabled: false runs
+// bit for bit as the file without them, and switching on takes the stated values.
+TEST(SoilEffects, StatedButDisabledKeysAreTodaysTractionBitForBit) {
+  const TyreConfig plain = soilfx_config("lete_sand.yaml", {});
+  const std::vector<std::string> stated = {"ground.bekker.slip_sinkage.k1=2",
+                                           "ground.bekker.bulldozing.enabled=false",
+                                           "ground.bekker.bulldozing.unit_weight_kN_m3=18",
+                                           "ground.bekker.unloading.enabled=false",
+                                           "ground.bekker.unloading.k0=1000",
+                                           "ground.bekker.unloading.Au=4e5",
+                                           "ground.bekker.wong_reece.enabled=false",
+                                           "ground.bekker.wong_reece.c1=0.18"};
+  const TyreConfig off = soilfx_config("lete_sand.yaml", stated);
+  for (EffectId id : kSoilFx) EXPECT_FALSE(effect_enabled(off, id)) << effect_info(id).name;
+  const SoilFxCurve a = soilfx_traction(plain), b = soilfx_traction(off);
+  EXPECT_EQ(a.soil_sinkage_mm, b.soil_sinkage_mm);
+  EXPECT_EQ(a.drawbar_pull_N, b.drawbar_pull_N);
+  EXPECT_EQ(a.torque_Nm, b.torque_Nm);
+  EXPECT_EQ(soilfx_switched(off, EffectId::slip_sinkage).ground.slip_sinkage.k1, 2);
+  EXPECT_EQ(soilfx_switched(off, EffectId::bulldozing).ground.bulldozing.unit_weight_kN_m3, 18);
+  EXPECT_EQ(soilfx_switched(off, EffectId::wong_reece_stress).ground.wong_reece.c1, 0.18);
+  const TyreConfig unloading = soilfx_switched(off, EffectId::soil_unloading);
+  ASSERT_TRUE(unloading.ground.bekker.unloading.has_value());
+  EXPECT_EQ(unloading.ground.bekker.unloading->k0_kN_m3, 1000);
+  EXPECT_EQ(unloading.ground.bekker.unloading->Au_kN_m4, 4e5);
+  // Without a stated block: the catalogue's values (k0 = 0, Au its default).
+  const TyreConfig fresh = soilfx_switched(plain, EffectId::soil_unloading);
+  EXPECT_EQ(fresh.ground.bekker.unloading->k0_kN_m3, 0);
+  EXPECT_EQ(fresh.ground.bekker.unloading->Au_kN_m4,
+            effect_info(EffectId::soil_unloading).parameters.front().default_value);
+  // The overrides write the switched soil as --set would: the same config again.
+  for (EffectId id : kSoilFx) {
+    TyreConfig on = soilfx_switched(off, id);
+    const TyreConfig again = soilfx_config("lete_sand.yaml", [&] {
+      std::vector<std::string> s = stated;
+      for (const auto& o : effect_switch_overrides(on, id)) s.push_back(o);
+      return s;
+    }());
+    EXPECT_TRUE(effect_enabled(again, id)) << effect_info(id).name;
+    for (const auto& p : effect_info(id).parameters)
+      EXPECT_EQ(p.option.get(again), p.option.get(on)) << p.option.key;
+  }
+}
+
+// The check: each on with the catalogue's parameters moves the outputs it lists, and only
+// those. The slip effects leave free rolling exactly as it was and move the 30 % slip case.
+TEST(SoilEffects, EachMovesTheTractionOutputsItListsAndNoOther) {
+  for (EffectId id : kSoilFx) {
+    const EffectInfo& e = effect_info(id);
+    SCOPED_TRACE(e.name);
+    TyreConfig base = soilfx_config("lete_sand.yaml");
+    const bool rigid = id == EffectId::wong_reece_stress;
+    base.rigid = rigid;
+    const TyreConfig on = soilfx_switched(base, id);
+    ASSERT_TRUE(effect_enabled(on, id));
+    const SoilFxCurve before = soilfx_traction(base, rigid), after = soilfx_traction(on, rigid);
+    for (const char* name : {"soil_sinkage_mm", "drawbar_pull_N", "torque_Nm"}) {
+      const bool listed =
+          std::find(e.observables.begin(), e.observables.end(), name) != e.observables.end();
+      const auto& b = soilfx_output(before, name);
+      const auto& a = soilfx_output(after, name);
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        const double change = std::abs(a[k] - b[k]) / std::max(std::abs(b[k]), 1.0);
+        const bool at_free_rolling = k == 0;
+        if (e.regime == ConditionId::slip && at_free_rolling && id == EffectId::slip_sinkage) {
+          EXPECT_EQ(a[k], b[k]) << name << ": f(0) = 1";
+        } else if (listed && !at_free_rolling) {
+          EXPECT_GT(change, 2e-3) << name << " at slip 0.3";
+        } else if (!listed) {
+          EXPECT_EQ(a[k], b[k]) << name;
+        }
+      }
+    }
+  }
+  // The directions the laws say: slip sinkage deepens the 30 % slip case, bulldozing lowers the
+  // pull, the rebounding soil carries the rear and resists less.
+  const TyreConfig sand = soilfx_config("lete_sand.yaml");
+  const SoilFxCurve base = soilfx_traction(sand);
+  EXPECT_GT(soilfx_traction(soilfx_switched(sand, EffectId::slip_sinkage)).soil_sinkage_mm[1],
+            1.1 * base.soil_sinkage_mm[1]);
+  EXPECT_LT(soilfx_traction(soilfx_switched(sand, EffectId::bulldozing)).drawbar_pull_N[1],
+            base.drawbar_pull_N[1]);
+  EXPECT_GT(soilfx_traction(soilfx_switched(sand, EffectId::soil_unloading)).drawbar_pull_N[0],
+            base.drawbar_pull_N[0]);
+}
+
+}  // namespace
+}  // namespace modaltyre::contact
