@@ -111,6 +111,7 @@ void read_traction_row(const CsvTable& t, std::size_t i,
     p.pass = static_cast<int>(pass);
   }
   r.traction = p;
+  r.conditions.slip = p.slip;  // the condition the soil effects' regime is (core/conditions.h)
   if (!t.has("speed_kmh")) r.conditions.speed_kmh = rolling_speed_kmh;
   if (!(r.conditions.speed_kmh <= kMaxTractionSpeed_kmh))
     throw InputError(at("speed_kmh"),
