@@ -1,4 +1,5 @@
-// modaltyre discover CONFIG MEASURED.csv [--set key=value]... [--json] [--plot FILE]
+// modaltyre discover CONFIG MEASURED.csv [--ground SOIL.yaml] [--set key=value]... [--json]
+//                   [--plot FILE]
 //                   [--out-config FILE] [--threads N] [--unit-length-mm L] [--max-effects N]
 //                   [--exact-rows N]
 //
@@ -17,6 +18,7 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "discover_limits.h"
+#include "discover_traction_plot.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
@@ -24,7 +26,10 @@
 #include "modaltyre/core/progress.h"
 #include "modaltyre/discover/discover.h"
 #include "modaltyre/report/discover_json.h"
+#include "modaltyre/report/ground_input.h"
+#include "modaltyre/report/traction_flexing.h"
 #include "modaltyre/studies/measurements.h"
+#include "modaltyre/studies/traction_rows.h"
 
 namespace modaltyre::app {
 namespace {
@@ -34,6 +39,7 @@ namespace fs = std::filesystem;
 struct DiscoverArgs {
   std::string config;
   std::string measured;
+  std::string ground;
   std::vector<std::string> overrides;
   bool json = false;
   std::string plot;
@@ -61,7 +67,11 @@ void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet
   std::cout << "discover: " << data.path << ", " << data.rows.size() << " rows; evaluated on "
             << r.evaluation_mesh << "\n";
   if (r.method != "exact") std::cout << "method: " << r.method << "\n";
-  std::cout << "\nGap (RMS of (predicted - measured) / measured):\n";
+  std::cout << "\nGap (RMS of (predicted - measured) / measured"
+            << (data.traction_rows() > 0
+                    ? "; drawbar pull and torque against at least 0.1 load and 0.1 load x R0"
+                    : "")
+            << "):\n";
   std::cout << "  observable              config   baseline  baseline(CV)    after  after(CV)\n";
   for (const auto& kv : r.gap_before) {
     const auto& o = kv.first;
@@ -155,10 +165,11 @@ std::string observable_word(const std::string& name) {
 }
 
 void plot(const std::string& path, const discover::DiscoverReport& r,
-          const studies::MeasurementSet& data) {
+          const studies::MeasurementSet& data, double outer_radius_m) {
   const std::string var = r.regimes.empty() ? "" : r.regimes.front().variable;
   PlotFigure fig;
   for (const auto& obs : data.observables) {
+    if (studies::is_traction_observable(obs)) continue;   // drawn as curves against slip below
     std::vector<std::tuple<double, double, double>> pts;  // x, before, after (percent)
     for (std::size_t i = 0; i < data.rows.size(); ++i) {
       const auto& row = r.rows[i];
@@ -194,6 +205,7 @@ void plot(const std::string& path, const discover::DiscoverReport& r,
     p.key = "below";
     fig.panels.push_back(p);
   }
+  add_traction_panels(fig, r, data, outer_radius_m);
   if (fig.panels.empty()) {
     throw InputError({data.path, 0, ""},
                      "nothing to plot: no observable has a non-zero measurement or a residual");
@@ -215,8 +227,13 @@ void register_discover(CLI::App& app) {
   cmd->add_option("CONFIG", a->config, "tyre config (YAML), e.g. configs/sf350.yaml")->required();
   cmd->add_option("MEASURED", a->measured,
                   "measured CSV: load_N, optional pressure_kPa, hold_s, speed_kmh, branch, "
-                  "surface; any of sinking_mm, length_mm, width_mm, rolling_resistance_N")
+                  "surface; any of sinking_mm, length_mm, width_mm, rolling_resistance_N; rows "
+                  "of a traction test: slip, optional pass, any of drawbar_pull_N, "
+                  "soil_sinkage_mm, torque_Nm (docs/discover.md)")
       ->required();
+  cmd->add_option("--ground", a->ground,
+                  "soil file (YAML with a ground: section, e.g. configs/soils/lete_sand.yaml) the "
+                  "rows ran on, as `traction --ground`; default: the config's ground: section");
   cmd->add_option("--set", a->overrides, "override a config key, e.g. --set tread.tan_delta=0.2");
   cmd->add_flag("--json", a->json, "print the report as JSON on stdout");
   cmd->add_option("--plot", a->plot,
@@ -246,11 +263,12 @@ void register_discover(CLI::App& app) {
     opt.model_uncertainty = a->uncertainty;
     opt.validate();  // CLI::Range lets NaN through (every comparison with it is false)
     refuse_repeated_overrides(a->overrides);
-    const contact::TyreConfig cfg = contact::load_tyre_config(a->config, a->overrides);
+    const contact::TyreConfig cfg = report::config_on_ground(a->config, a->ground, a->overrides);
     const studies::MeasurementSet data = studies::read_measurements(a->measured, cfg);
     CommandFiles files;  // no output over an input or another output
     report::add_config_inputs(files, cfg);
     files.input(a->measured, "MEASURED");
+    files.input(a->ground, "--ground");
     if (cmd->count("--plot")) files.output(a->plot, "--plot");
     if (cmd->count("--out-config")) files.output(a->out_config, "--out-config");
     files.check();
@@ -276,12 +294,14 @@ void register_discover(CLI::App& app) {
       }
       if (done > 0) bar->tick();
     };
+    // Traction rows: the tyre's flexing loss on the rigid road, as `traction` takes it.
+    opt.traction_flexing = report::flexing_resistance_N;
     const discover::DiscoverReport r = discover::discover(cfg, data, opt);
     if (bar) bar->finish();
     // Output files only once the report is known to be printable (the JSON finite), the plot
     // (which can still refuse) before the config, so that a failure leaves neither behind.
     auto write_outputs = [&] {
-      if (!a->plot.empty()) plot(a->plot, r, data);
+      if (!a->plot.empty()) plot(a->plot, r, data, cfg.outer_radius_m);
       if (!a->out_config.empty()) write_out_config(*a, cfg, r);
     };
     if (!a->json) {

@@ -13,6 +13,7 @@
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/thread_env.h"
 #include "modaltyre/solvers/correlation.h"
+#include "modaltyre/studies/traction_rows.h"
 #include "modaltyre/studies/validation.h"
 
 namespace modaltyre::discover {
@@ -37,22 +38,38 @@ std::size_t distinct(const MeasurementSet& d, const std::string& condition) {
 
 // Whether the data can reveal an effect: its regime variable must vary (an effect acting as a
 // constant factor is confounded with the re-fitted baseline scalars).
+// Traction rows are evidence for the effects that act on soil runs (traction_evidence.h), each
+// through the slip: testable when the slip varies among them. Footprint rows are evidence for
+// the others (and for a soil effect through its regime variable, as before).
 std::string untestable_reason(EffectId id, const MeasurementSet& d, const TyreConfig& config) {
   const auto& info = contact::effect_info(id);
   const std::string refusal = contact::effect_refusal(config, id);
   if (!refusal.empty()) return refusal;
+  const bool soil = acts_on_soil_runs(info);
+  std::string traction_reason;
+  if (d.traction_rows() > 0) {
+    std::set<double> slips;
+    for (const auto& r : d.rows)
+      if (r.traction) slips.insert(r.traction->slip);
+    if (soil && slips.size() >= 2) return "";
+    traction_reason = soil ? "the slip does not vary in the traction rows"
+                           : "acts on footprints only, not on traction runs";
+    if (d.footprint_rows() == 0) return traction_reason;
+  }
   const std::string& regime = condition_info(info.regime).name;
   const std::size_t n = distinct(d, regime);
+  std::string reason;
   if (info.regime == ConditionId::load_N) {
     // A load law needs a trend, not only a level the re-fitted scalars absorb.
-    return n >= 3 ? "" : "needs at least 3 distinct loads";
-  }
-  if (id == EffectId::rolling_speed) {
+    reason = n >= 3 ? "" : "needs at least 3 distinct loads";
+  } else if (id == EffectId::rolling_speed) {
     bool rolling = false;
-    for (const auto& r : d.rows) rolling = rolling || r.conditions.speed_kmh > 0;
-    return rolling ? "" : "no row is rolling (speed_kmh > 0)";
+    for (const auto& r : d.rows) rolling = rolling || (!r.traction && r.conditions.speed_kmh > 0);
+    reason = rolling ? "" : "no row is rolling (speed_kmh > 0)";
+  } else {
+    reason = n >= 2 ? "" : regime + " does not vary in the data";
   }
-  return n >= 2 ? "" : regime + " does not vary in the data";
+  return reason.empty() || traction_reason.empty() ? reason : reason + "; " + traction_reason;
 }
 
 struct Stage {
@@ -69,6 +86,11 @@ std::map<std::string, double> named_values(const Variant& v, const std::vector<d
     out[v.parameters[i].key] = values[i];
   }
   return out;
+}
+
+double row_variable(const studies::MeasuredRow& row, const std::string& var) {
+  return var == "slip" && row.traction ? row.traction->slip
+                                       : studies::condition_value(row.conditions, var);
 }
 
 std::vector<RegimeFinding> locate(const MeasurementSet& d, const FitResult& base) {
@@ -90,9 +112,14 @@ std::vector<RegimeFinding> locate(const MeasurementSet& d, const FitResult& base
     RegimeFinding f;
     f.observable = d.observables[o];
     f.mean_residual = std::accumulate(res.begin(), res.end(), 0.0) / res.size();
-    for (const auto& var : vars) {
+    // A traction observable's rows are traction rows: their slip is a variable too.
+    std::vector<std::string> its_vars = vars;
+    if (studies::is_traction_observable(f.observable) &&
+        std::find(vars.begin(), vars.end(), "slip") == vars.end())
+      its_vars.push_back("slip");
+    for (const auto& var : its_vars) {
       std::vector<double> x;
-      for (int r : rows) x.push_back(studies::condition_value(d.rows[r].conditions, var));
+      for (int r : rows) x.push_back(row_variable(d.rows[r], var));
       const double r = solvers::pearson_correlation(x, res);
       if (std::abs(r) > std::abs(f.correlation)) f.correlation = r, f.variable = var;
     }
@@ -271,7 +298,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   const contact::TyreModel model = contact::build_tyre_model(eval);
   check_omp_num_threads();  // the default below reads it (a Python caller has no main())
   const int threads = opt.threads > 0 ? opt.threads : omp_get_max_threads();
-  Evaluator ev(model, data);
+  Evaluator ev(model, data, opt.traction_flexing);
   ev.set_threads(threads);
   std::vector<int> all(data.rows.size());
   std::iota(all.begin(), all.end(), 0);
@@ -451,6 +478,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
         [&](int total) { return ticker("detection limits", total); }, rep);
   }
   rep.footprints = ev.predictions();
+  rep.traction_cases = ev.traction_cases();
   rep.gap_after = current.fit.rms;
   rep.cv_gap_after = current.cv.rms;
   rep.final_parameters = named_values(current.variant, current.fit.values, false);

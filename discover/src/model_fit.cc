@@ -11,6 +11,7 @@
 #include "modaltyre/contact/parameter_spec.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/levenberg_marquardt.h"
+#include "modaltyre/studies/traction_rows.h"
 
 namespace modaltyre::discover {
 namespace {
@@ -116,15 +117,28 @@ TyreConfig apply(const TyreConfig& base, const Variant& v, const std::vector<dou
   return c;
 }
 
-Evaluator::Evaluator(const contact::TyreModel& model, const studies::MeasurementSet& data)
-    : model_(model), data_(data) {}
+Evaluator::Evaluator(const contact::TyreModel& model, const studies::MeasurementSet& data,
+                     const FlexingLoss& flexing)
+    : model_(model), data_(data) {
+  if (data.traction_rows() > 0)
+    traction_ = std::make_shared<const TractionRows>(model.config, data, flexing);
+}
+
+std::map<int, contact::TractionResult> Evaluator::traction(const TyreConfig& config,
+                                                           const std::vector<int>& rows) const {
+  if (!traction_) return {};
+  return traction_->predict(config, rows, threads_ > 0 ? threads_ : omp_get_max_threads());
+}
 
 std::vector<Evaluator::Entry> Evaluator::entries(const std::vector<int>& rows) const {
   std::vector<Entry> out;
   for (int r : rows) {
     for (std::size_t o = 0; o < data_.observables.size(); ++o) {
       const auto it = data_.rows[r].observed.find(data_.observables[o]);
-      if (it != data_.rows[r].observed.end() && it->second != 0) {
+      // A zero carries no relative information; a traction row's pull and torque are taken
+      // against a floor (traction_evidence.h) and keep it.
+      if (it != data_.rows[r].observed.end() &&
+          (it->second != 0 || studies::is_traction_observable(it->first))) {
         out.push_back({r, static_cast<int>(o)});
       }
     }
@@ -141,25 +155,33 @@ std::vector<double> Evaluator::residuals(const TyreConfig& config, const std::ve
   starts.push_back(e.size());
   const int groups = static_cast<int>(starts.size()) - 1;
   const contact::TyreParameters parameters = contact::parameters_of(config);
+  std::vector<int> rows;
+  for (int g = 0; g < groups; ++g) rows.push_back(e[starts[g]].row);
+  const std::map<int, contact::TractionResult> tr = traction(config, rows);
+  const double R0 = config.outer_radius_m;
   std::vector<double> out(e.size());
-  int failed = 0;
+  int failed = 0, footprints = 0;
   const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
   // Rows in parallel only at the top level (a candidate's fit inside discover's parallel loop
   // runs its rows in order) and when there are enough of them to pay for the threads.
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 4) reduction(+ : failed) \
-    if (groups >= 16 && !omp_in_parallel())
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 4) \
+    reduction(+ : failed, footprints) if (groups >= 16 && !omp_in_parallel())
   for (int g = 0; g < groups; ++g) {
     const int row = e[starts[g]].row;
     const auto& mr = data_.rows[row];
-    const contact::Prediction p = contact::predict(model_, parameters, mr.conditions);
-    if (!p.ok()) ++failed;
+    contact::Prediction p;
+    const contact::TractionResult* t = mr.traction ? &tr.at(row) : nullptr;
+    if (!t) p = contact::predict(model_, parameters, mr.conditions), ++footprints;
+    const bool ok = t ? t->ok() : p.ok();
+    if (!ok) ++failed;
     for (std::size_t i = starts[g]; i < starts[g + 1]; ++i) {
       const std::string& obs = data_.observables[e[i].observable];
       const double meas = mr.observed.at(obs);
-      out[i] = p.ok() ? (p.observable(obs) - meas) / std::abs(meas) : kFailureResidual;
+      const double model = !ok ? 0 : t ? traction_observable(*t, obs) : p.observable(obs);
+      out[i] = ok ? (model - meas) / residual_scale(mr, obs, meas, R0) : kFailureResidual;
     }
   }
-  predictions_.fetch_add(groups, std::memory_order_relaxed);
+  predictions_.fetch_add(footprints, std::memory_order_relaxed);
   failures = failed;
   return out;
 }

@@ -10,6 +10,7 @@
 #include "modaltyre/report/discover_json.h"
 #include "modaltyre/report/effects_json.h"
 #include "modaltyre/report/sweep_columns.h"
+#include "modaltyre/report/traction_flexing.h"
 #include "modaltyre/report/transient_json.h"
 #include "modaltyre/report/validation_json.h"
 #include "modaltyre/studies/measurements.h"
@@ -103,6 +104,7 @@ py::object run_discover(const py::object& config_arg, const py::object& measured
     const auto data = studies::read_measurements(measured, config);
     discover::DiscoverOptions opt;  // the CLI's defaults
     opt.threads = threads.value_or(0);
+    opt.traction_flexing = report::flexing_resistance_N;  // traction rows, as the CLI
     j = report::discover_json(discover::discover(config, data, opt), measured, data.rows.size());
   }
   return checked(j);

@@ -124,7 +124,9 @@ nlohmann::json discover_json(const discover::DiscoverReport& r, const std::strin
       {"measured", measured_path},
       {"rows", rows},
       {"evaluation_mesh", r.evaluation_mesh},
-      {"gap_unit", "relative RMS of (predicted - measured) / measured"},
+      {"gap_unit",
+       "relative RMS of (predicted - measured) / measured (a traction row's drawbar_pull_N and "
+       "torque_Nm: / max(|measured|, 0.1 load_N) and max(|measured|, 0.1 load_N R0))"},
       {"gap_config", gaps(r.gap_config)},
       {"gap_before", gaps(r.gap_before)},
       {"gap_after", gaps(r.gap_after)},
@@ -147,6 +149,7 @@ nlohmann::json discover_json(const discover::DiscoverReport& r, const std::strin
       {"fits", r.fits},
       {"evaluations", r.evaluations},
       {"footprints", r.footprints},
+      {"traction_cases", r.traction_cases},
       {"method", r.method},
       {"uncertainty_inputs", r.uncertainty_inputs},
       {"conclusion", r.conclusion}};

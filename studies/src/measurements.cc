@@ -8,6 +8,7 @@
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
+#include "modaltyre/studies/traction_rows.h"
 
 namespace modaltyre::studies {
 
@@ -33,6 +34,12 @@ double condition_value(const OperatingConditions& c, const std::string& name) {
   const ConditionInfo* info = find_condition(name);
   if (info == nullptr) throw std::invalid_argument("unknown condition " + name);
   return contact::condition_value(c, info->id);
+}
+
+int MeasurementSet::traction_rows() const {
+  int n = 0;
+  for (const auto& r : rows) n += r.traction.has_value();
+  return n;
 }
 
 std::string std_column(const std::string& observable) {
@@ -68,6 +75,7 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   // then compares the observables it has (issue 38).
   for (const auto& o : observable_names()) schema.may_be_empty.push_back(o);
   for (const auto& o : observable_names()) schema.may_be_empty.push_back(std_column(o));
+  add_traction_columns(schema);
   schema.missing_words = {"NA", "N/A"};  // R, spreadsheets; "nan" stays refused as a number
   // A sweep's parameter columns are dotted config keys, ignored here.
   schema.accept_text_column = [](const std::string& c) { return c.find('.') != std::string::npos; };
@@ -77,6 +85,10 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   for (const auto& o : observable_names()) {
     if (t.has(o)) set.observables.push_back(o);
   }
+  for (const auto& o : traction_observable_names()) {
+    if (t.has(o)) set.observables.push_back(o);
+  }
+  check_traction_columns(t);
   for (const auto& c : condition_names()) {
     if (t.has(c)) set.conditions.push_back(c);
   }
@@ -96,7 +108,8 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
   if (set.observables.empty()) {
     throw InputError({path, 1, "sinking_mm"},
                      "no observable column: give any of sinking_mm, length_mm, width_mm, "
-                     "rolling_resistance_N");
+                     "rolling_resistance_N, or a traction test's slip with any of "
+                     "drawbar_pull_N, soil_sinkage_mm, torque_Nm");
   }
   for (std::size_t i = 0; i < t.rows(); ++i) {
     MeasuredRow r;
@@ -110,7 +123,7 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
     r.conditions = defaults.default_conditions(t.number(i, "load_N"));
     OperatingConditions& c = r.conditions;
     for (const auto& info : condition_catalogue()) {
-      if (!t.has(info.name)) continue;
+      if (!t.has(info.name) || is_traction_column(info.name)) continue;
       double v = 0;
       if (info.is_text()) {
         const std::string& word = t.text(i, info.name);
@@ -127,8 +140,15 @@ MeasurementSet read_measurements(const std::string& path, const TyreConfig& defa
       throw InputError(at("horizontal_force_N"),
                        "the config's 3D patch (footprint_3d) takes no horizontal force");
     }
+    const bool traction = is_traction_row(t, i);
+    refuse_mixed_row(t, i, traction);
+    if (traction) {
+      read_traction_row(t, i, set.observables, defaults.transient.rolling.speed_m_s * 3.6, r);
+      set.rows.push_back(std::move(r));
+      continue;
+    }
     for (const auto& o : set.observables) {
-      if (t.missing(i, o)) continue;  // not measured in this row
+      if (is_traction_observable(o) || t.missing(i, o)) continue;  // not measured in this row
       const double v = t.number(i, o);
       if (o != "rolling_resistance_N" && !(v > 0)) throw InputError(at(o), "must be > 0 mm");
       // A footprint of tens of metres is a unit error (and a calibration target no model meets).

@@ -145,6 +145,11 @@ bool rows_at_own_conditions(const MeasurementSet& set, const TyreConfig& config)
 
 MeasurementSet read_validation_measurements(const std::string& path, const TyreConfig& config) {
   MeasurementSet set = read_measurements(path, config);
+  for (const auto& r : set.rows)
+    if (r.traction)
+      throw InputError({path, r.line, "slip"},
+                       "a traction row: validate compares footprints; traction tests go to "
+                       "`discover` (docs/discover.md, \"Traction rows\")");
   bool compared = false;
   for (const auto& o : set.observables) {
     for (const auto& v : validation_observables()) compared = compared || o == v;

@@ -232,4 +232,43 @@ TEST_F(DiscoverCli, JsonOnASmallDataSetAndTheAugmentedConfigRuns) {
   EXPECT_TRUE(fj["cases"][0]["converged"].get<bool>());
 }
 
+// ---- traction rows (docs/discover.md, "Traction rows") --------------------------------------
+
+const std::string kLete = std::string(MODALTYRE_SOURCE_DIR) + "/configs/soils/lete_sand.yaml";
+// One load's curve on LETE sand as `traction` gives it on the 2D variant (no flexing loss).
+const std::string kCurve =
+    "load_N,slip,drawbar_pull_N,soil_sinkage_mm,torque_Nm,speed_kmh\n"
+    "3000,0.05,341,16.5,178,0\n3000,0.1,647,17.3,269,0\n3000,0.2,998,19.0,376,0\n"
+    "3000,0.3,1161,20.8,429,0\n3000,0.5,1264,24.9,471,0\n";
+
+TEST_F(DiscoverCli, HostileTractionRowsExit2NamingFileLineAndColumn) {
+  const std::string ground = "--ground";
+  // Traction columns mixed wrongly: a footprint observable in a row with a slip.
+  std::string p = write("load_N,sinking_mm,slip,drawbar_pull_N\n3000,,0.1,600\n3000,15,0.2,900\n");
+  expect_input_error(discover(p, {ground, kLete}), {p + ":3: sinking_mm: ", "traction row"});
+  // Slip in per cent, NaN in a pull.
+  p = write("load_N,slip,drawbar_pull_N\n3000,0.1,600\n3000,20,900\n");
+  expect_input_error(discover(p, {ground, kLete}), {p + ":3: slip: ", "[-1, 1]"});
+  p = write("load_N,slip,drawbar_pull_N\n3000,0.1,600\n3000,0.2,nan\n");
+  expect_input_error(discover(p, {ground, kLete}),
+                     {p + ":3: drawbar_pull_N: ", "not a finite number"});
+  // Traction rows with no soil to roll on (the 2D config has none) name the key.
+  p = write(kCurve);
+  expect_input_error(discover(p), {"ground.model", "need a soil"});
+  expect_nothing_written();
+}
+
+TEST_F(DiscoverCli, TractionCurvePlotsPullAndSinkageAgainstSlip) {
+  const std::string p = write(kCurve);
+  const std::string png = (dir_ / "curve.png").string();
+  const CliRun r = discover(p, {"--ground", kLete, "--plot", png, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["traction_cases"].get<long>(), 0);
+  EXPECT_TRUE(j["gap_before"].contains("drawbar_pull_N"));
+  EXPECT_TRUE(j["gap_before"].contains("soil_sinkage_mm"));
+  ASSERT_TRUE(fs::is_regular_file(png));
+  EXPECT_GT(fs::file_size(png), 1000u);
+}
+
 }  // namespace

@@ -43,7 +43,8 @@ fs::path scratch(const std::string& name) {
 // the condition it read.
 std::string measured(const ConditionInfo& c, const std::string& cell, double* value = nullptr) {
   const fs::path p = scratch(c.name + ".csv");
-  std::string header = "sinking_mm", row = "15";
+  // A slip makes a traction row (studies/traction_rows.h), with a traction observable.
+  std::string header = c.name == "slip" ? "drawbar_pull_N" : "sinking_mm", row = "15";
   if (c.id != ConditionId::load_N) header += ",load_N", row += ",4000";
   std::ofstream(p) << header << "," << c.name << "\n" << row << "," << cell << "\n";
   try {

@@ -349,4 +349,67 @@ TEST_F(Measurements, DuplicatedRowsAreKept) {
   }
 }
 
+// ---- traction rows (studies/traction_rows.h) ----------------------------------------------
+
+const std::string kTraction = "load_N,slip,drawbar_pull_N,soil_sinkage_mm,torque_Nm\n";
+const std::string kTractionRow = "3000,0.2,830,15.7,362\n";
+
+TEST_F(Measurements, TractionRowsAreReadBesideFootprintRows) {
+  const auto s = read(
+      "load_N,sinking_mm,slip,pass,drawbar_pull_N,soil_sinkage_mm,torque_Nm\n"
+      "4000,15,,,,,\n"
+      "3000,,0.2,,830,15.7,362\n"
+      "3000,,-0.1,2,NA,16.1,\n");
+  ASSERT_EQ(s.rows.size(), 3u);
+  EXPECT_EQ(s.observables, (std::vector<std::string>{"sinking_mm", "drawbar_pull_N",
+                                                     "soil_sinkage_mm", "torque_Nm"}));
+  EXPECT_FALSE(s.rows[0].traction);
+  ASSERT_TRUE(s.rows[1].traction);
+  EXPECT_EQ(s.rows[1].traction->slip, 0.2);
+  EXPECT_EQ(s.rows[1].traction->pass, 1);
+  EXPECT_EQ(s.rows[1].observed.at("torque_Nm"), 362);
+  EXPECT_EQ(s.rows[2].traction->pass, 2);
+  EXPECT_EQ(s.rows[2].observed.size(), 1u);  // the empty pull and torque are not measured
+  EXPECT_EQ(s.traction_rows(), 2);
+  EXPECT_EQ(s.footprint_rows(), 1);
+  // No speed_kmh column: the flexing loss's speed is the config's rolling speed, as `traction`.
+  EXPECT_DOUBLE_EQ(s.rows[1].conditions.speed_kmh, defaults().transient.rolling.speed_m_s * 3.6);
+}
+
+TEST_F(Measurements, TractionColumnsMixedWronglyAreRefusedAtLineAndColumn) {
+  // A footprint observable in a traction row, a traction observable in a footprint row.
+  expect_refused("load_N,sinking_mm,slip,drawbar_pull_N\n4000,15,,\n3000,15,0.2,830\n", 3,
+                 "sinking_mm", "a footprint observable in a traction row");
+  expect_refused("load_N,sinking_mm,slip,drawbar_pull_N\n3000,,0.2,830\n4000,15,,830\n", 3,
+                 "drawbar_pull_N", "a traction observable in a row without a slip");
+  expect_refused("load_N,sinking_mm,slip,pass,drawbar_pull_N\n4000,15,,2,\n", 2, "pass",
+                 "a pass without a slip");
+  // Traction observables without a slip column; a slip without a traction observable.
+  expect_refused("load_N,drawbar_pull_N\n3000,830\n", 1, "drawbar_pull_N", "needs a slip column");
+  expect_refused("load_N,sinking_mm,slip\n3000,15,0.2\n", 1, "slip",
+                 "without a traction observable");
+  // A traction row with nothing measured.
+  expect_refused(kTraction + kTractionRow + "3000,0.3,,NA,\n", 3, "slip", "no measured value");
+}
+
+TEST_F(Measurements, TractionValuesOutOfRangeOrNotNumbersAreRefused) {
+  expect_refused(with_cell(kTraction, kTractionRow, "3000,20,830,15.7,362\n"), 3, "slip",
+                 "[-1, 1]");
+  expect_refused(with_cell(kTraction, kTractionRow, "3000,-1,830,15.7,362\n"), 3, "slip",
+                 "outside [-0.99, 1]");
+  expect_refused(with_cell(kTraction, kTractionRow, "3000,nan,830,15.7,362\n"), 3, "slip",
+                 "not a finite number");
+  expect_refused(with_cell(kTraction, kTractionRow, "3000,0.2,NaN,15.7,362\n"), 3, "drawbar_pull_N",
+                 "not a finite number");
+  expect_refused(with_cell(kTraction, kTractionRow, "3000,0.2,830,-2,362\n"), 3, "soil_sinkage_mm",
+                 "(0, 1e4]");
+  expect_refused(with_cell(kTraction, kTractionRow, "3000,0.2,830,15.7,1e9\n"), 3, "torque_Nm",
+                 "[-1e7, 1e7]");
+  const std::string with_pass = "load_N,slip,pass,drawbar_pull_N\n3000,0.2,1,830\n";
+  expect_refused(with_pass + "3000,0.2,1.5,830\n", 3, "pass", "whole number 1-20");
+  expect_refused(with_pass + "3000,0.2,21,830\n", 3, "pass", "whole number 1-20");
+  expect_refused("load_N,speed_kmh,slip,drawbar_pull_N\n3000,150,0.2,830\n", 2, "speed_kmh",
+                 "at most 100 km/h");
+}
+
 }  // namespace

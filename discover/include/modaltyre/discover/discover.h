@@ -6,10 +6,11 @@
 //     tread.modulus_MPa, or footprint_3d.crown.radius_mm on the 3D patch, re-fitted on all rows)
 //     and correlate the relative residual of every observable with every condition variable that
 //     varies in the data (branch and surface as 0/1); report the strongest and the rows worst off.
-//  2. Name: for every candidate effect the data can reveal (its regime variable varies; on the
-//     3D patch not the effects it refuses, contact_width among them: its width is the model's), fit
-//     its parameters together with the baseline scalars, score it by Delta BIC against the current
-//     model and by the cross-validated RMS (leave-one-out up to 8 rows, else 6-fold). It is
+//  2. Name: for every candidate effect the data can reveal (its regime variable varies; for
+//     traction rows, traction_evidence.h, the effects acting on soil runs, when the slip varies; on
+//     the 3D patch not the effects it refuses, contact_width among them: its width is the model's),
+//     fit its parameters together with the baseline scalars, score it by Delta BIC against the
+//     current model and by the cross-validated RMS (leave-one-out up to 8 rows, else 6-fold). It is
 //     named only if Delta BIC > min_delta_bic AND the cross-validated RMS falls by at least
 //     min_cv_gain (relative) on at least one observable while it grows by no more than
 //     max_cv_loss on any and not at all pooled over all; else nothing is named. (Per observable
@@ -32,6 +33,7 @@
 #include "modaltyre/discover/large_fit.h"
 #include "modaltyre/discover/model_fit.h"
 #include "modaltyre/discover/model_uncertainty.h"
+#include "modaltyre/discover/traction_evidence.h"
 #include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::discover {
@@ -61,6 +63,9 @@ struct DiscoverOptions {
   /// Exact fitting and cross-validation up to fit.exact_rows rows, approximations above
   /// (large_fit.h).
   FitOptions fit;
+  /// Traction rows: the tyre's flexing loss on the rigid road (traction_evidence.h; the
+  /// command hands report::flexing_resistance_N; null: none, as `traction --speed-km-h 0`).
+  FlexingLoss traction_flexing;
   /// Called with (phase, done, total) after each fit and each cross-validation: phase
   /// "baseline" (total 2), then "round 1", "round 2", ... (total 2 per testable candidate),
   /// then "detection limits" (one per candidate left unnamed).
@@ -146,8 +151,9 @@ struct DiscoverReport {
   std::vector<std::string> out_overrides;  ///< "key=value" that turn the config into the final one
   std::string conclusion;                  ///< one paragraph in words
   int fits = 0;
-  long evaluations = 0;  ///< parameter sets evaluated (each on all rows of its fit)
-  long footprints = 0;   ///< footprints predicted (one per row and evaluation)
+  long evaluations = 0;     ///< parameter sets evaluated (each on all rows of its fit)
+  long footprints = 0;      ///< footprints predicted (one per row and evaluation)
+  long traction_cases = 0;  ///< traction slip cases run (one per slip, pass and evaluation)
   /// "exact" or the approximations used on many rows (large_fit.h), in words.
   std::string method;
   /// With DiscoverOptions::model_uncertainty: the model's uncertain inputs of the last round

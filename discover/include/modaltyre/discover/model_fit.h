@@ -3,7 +3,9 @@
 // effects) to measured footprints, its information criterion and its cross-validated error.
 //
 // Residuals are relative, r = (predicted - measured) / |measured|, one per row and observed
-// observable (a zero measurement carries no relative information and is skipped). Noise is
+// observable (a zero measurement carries no relative information and is skipped); a traction
+// row's drawbar pull and torque are taken against a floor of the load where they cross zero
+// (traction_evidence.h), and their zeros are kept. Noise is
 // taken as Gaussian with one variance per observable (sinking, length, width and rolling
 // resistance are measured with different instruments), profiled out of the likelihood:
 //   BIC = sum_o n_o ln(max(RSS_o / n_o, floor^2)) + k ln(N),   N = sum_o n_o,
@@ -15,6 +17,7 @@
 #include <atomic>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -22,6 +25,7 @@
 
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/solve_status.h"
+#include "modaltyre/discover/traction_evidence.h"
 #include "modaltyre/studies/measurements.h"
 
 namespace modaltyre::discover {
@@ -59,8 +63,11 @@ Variant make_variant(const contact::TyreConfig& config,
 /// Evaluates relative residuals of a config on rows of a measurement set.
 class Evaluator {
  public:
-  /// Predictions on `model` (its mesh and modal basis) with each config's parameters.
-  Evaluator(const contact::TyreModel& model, const studies::MeasurementSet& data);
+  /// Predictions on `model` (its mesh and modal basis) with each config's parameters; the
+  /// traction rows (if any) by the model's traction on each config's soil (traction_evidence.h,
+  /// `flexing` the tyre's flexing loss; null: none).
+  Evaluator(const contact::TyreModel& model, const studies::MeasurementSet& data,
+            const FlexingLoss& flexing = {});
 
   struct Entry {
     int row = 0;         ///< index into data.rows
@@ -85,10 +92,16 @@ class Evaluator {
   void set_threads(int threads) { threads_ = threads; }
   /// Footprints predicted so far (one per row and residuals() call), over all threads.
   long predictions() const { return predictions_.load(std::memory_order_relaxed); }
+  /// Traction slip cases run so far (one per traction row's slip and pass and call).
+  long traction_cases() const { return traction_ ? traction_->cases() : 0; }
+  /// The model's traction for the traction rows among `rows` (traction_evidence.h).
+  std::map<int, contact::TractionResult> traction(const contact::TyreConfig& config,
+                                                  const std::vector<int>& rows) const;
 
  private:
   const contact::TyreModel& model_;
   const studies::MeasurementSet& data_;
+  std::shared_ptr<const TractionRows> traction_;  ///< null without traction rows
   int threads_ = 0;
   mutable std::atomic<long> predictions_{0};
 };

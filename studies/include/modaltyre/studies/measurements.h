@@ -9,6 +9,11 @@
 //   their noise  optional standard deviations named with _std before the unit (sinking_std_mm,
 //                length_std_mm, width_std_mm, rolling_resistance_std_N; >= 0, empty or NA
 //                where not known), beside the observable's column (docs/uncertainty.md section 7)
+//   traction     rows of a traction test (steady rolling at slip on the soil, `modaltyre
+//                traction`): slip (ISTVS, against the rolling radius: contact/traction.h), optional
+//                pass (1-20), and any of drawbar_pull_N, soil_sinkage_mm, torque_Nm
+//                (studies/traction_rows.h). A row with a slip is a traction row, one without a
+//                footprint row; each takes only its own observables.
 // Missing optional condition columns take the config's values (TyreConfig::default_conditions).
 // Columns `modaltyre sweep` writes beside them (vertical_stiffness_N_mm, peak_pressure_kPa,
 // iterations, status, message and dotted config keys such as tread.modulus_MPa) are accepted
@@ -23,10 +28,17 @@
 
 namespace modaltyre::studies {
 
+/// What a traction row states besides its load and speed (studies/traction_rows.h).
+struct TractionPoint {
+  double slip = 0;  ///< ISTVS slip against the rolling radius, [-0.99, 1]
+  int pass = 1;     ///< the pass over the same track, 1-20
+};
+
 struct MeasuredRow {
   int row = 0;                                 ///< 1-based data row
   int line = 0;                                ///< line in the file
   contact::OperatingConditions conditions;     ///< the file's, the config's where it has none
+  std::optional<TractionPoint> traction;       ///< a traction row (else a footprint row)
   std::map<std::string, double> observed;      ///< observable name -> measured value
   std::map<std::string, double> observed_std;  ///< observable name -> its stated std, where given
 
@@ -37,12 +49,16 @@ struct MeasuredRow {
 struct MeasurementSet {
   std::string path;
   std::vector<MeasuredRow> rows;
-  std::vector<std::string>
-      observables;                      ///< observable columns present, in observable_names() order
+  /// Observable columns present: the footprint's in observable_names() order, then the
+  /// traction's in traction_observable_names() order.
+  std::vector<std::string> observables;
   std::vector<std::string> conditions;  ///< condition columns present in the file
   /// The file has no column but load_N and sinking_mm, length_mm, width_mm (the shape of seed
   /// 001 Table 3): its rows state no condition besides the load.
   bool loads_only = false;
+  /// Rows of each kind.
+  int traction_rows() const;
+  int footprint_rows() const { return static_cast<int>(rows.size()) - traction_rows(); }
 };
 
 /// The column of an observable's standard deviation: "sinking_mm" -> "sinking_std_mm".

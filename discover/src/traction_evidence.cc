@@ -1,0 +1,129 @@
+#include "modaltyre/discover/traction_evidence.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "modaltyre/contact/carcass_source.h"
+#include "modaltyre/contact/tyre_model.h"
+#include "modaltyre/core/errors.h"
+#include "modaltyre/studies/traction_rows.h"
+
+namespace modaltyre::discover {
+
+double residual_scale(const studies::MeasuredRow& row, const std::string& observable,
+                      double measured, double outer_radius_m) {
+  const double load = row.conditions.load_N;
+  if (observable == "drawbar_pull_N") return std::max(std::abs(measured), kTractionFloor * load);
+  if (observable == "torque_Nm")
+    return std::max(std::abs(measured), kTractionFloor * load * outer_radius_m);
+  return std::abs(measured);
+}
+
+bool acts_on_soil_runs(const contact::EffectInfo& info) {
+  auto soil_key = [](const std::string& k) { return k.rfind("ground.", 0) == 0; };
+  if (soil_key(info.switch_keys())) return true;
+  for (const auto& p : info.parameters)
+    if (soil_key(info.key(p))) return true;
+  return false;
+}
+
+double traction_observable(const contact::TractionResult& r, const std::string& name) {
+  if (name == "drawbar_pull_N") return r.drawbar_pull_N;
+  if (name == "soil_sinkage_mm") return r.soil_sinkage_m * 1e3;
+  if (name == "torque_Nm") return r.torque_Nm;
+  throw std::invalid_argument("unknown traction observable " + name);
+}
+
+TractionRows::TractionRows(const contact::TyreConfig& config, const studies::MeasurementSet& data,
+                           const FlexingLoss& flexing)
+    : data_(data), group_of_(data.rows.size(), -1) {
+  for (std::size_t r = 0; r < data.rows.size(); ++r) {
+    const auto& row = data.rows[r];
+    if (!row.traction) continue;
+    const double load = row.conditions.load_N, speed = row.conditions.speed_kmh;
+    auto it = std::find_if(groups_.begin(), groups_.end(), [&](const Group& g) {
+      return g.load_N == load && g.speed_kmh == speed;
+    });
+    if (it == groups_.end()) it = groups_.insert(groups_.end(), Group{load, speed, {}});
+    it->rows.push_back(static_cast<int>(r));
+    group_of_[r] = static_cast<int>(it - groups_.begin());
+  }
+  if (groups_.empty()) return;
+  if (!config.ground.soil())
+    throw InputError({config.source, 0, "ground.model"},
+                     "the traction rows of " + data.path +
+                         " need a soil to roll on: give --ground SOIL.yaml or a config with a "
+                         "ground: section of model bekker or kelvin_voigt");
+  modes_ = contact::config_modes(config);
+  if (!flexing) return;
+  // The flexing loss per speed over that speed's loads, once, at the config as given.
+  const contact::TyreModel model = contact::build_tyre_model(config, modes_);
+  std::map<double, std::set<double>> loads;
+  for (const auto& g : groups_) loads[g.speed_kmh].insert(g.load_N);
+  for (const auto& [speed, set] : loads) {
+    if (!(speed > 0)) continue;
+    const auto f = flexing(model, {set.begin(), set.end()}, speed / 3.6);
+    for (const auto& [load, value] : f) flex_[{speed, load}] = value;
+  }
+}
+
+std::map<int, contact::TractionResult> TractionRows::predict(const contact::TyreConfig& config,
+                                                             const std::vector<int>& rows,
+                                                             int threads) const {
+  std::vector<std::vector<int>> wanted(groups_.size());
+  for (int r : rows)
+    if (group_of_[r] >= 0) wanted[group_of_[r]].push_back(r);
+  std::vector<int> run;
+  for (std::size_t g = 0; g < groups_.size(); ++g)
+    if (!wanted[g].empty()) run.push_back(static_cast<int>(g));
+  std::map<int, contact::TractionResult> out;
+  if (run.empty()) return out;
+  const contact::TyreModel model = contact::build_tyre_model(config, modes_);
+  std::vector<std::vector<contact::TractionResult>> results(run.size());
+  std::vector<std::vector<double>> slips(run.size());
+  const int n = static_cast<int>(run.size());
+#pragma omp parallel for num_threads(std::max(threads, 1)) \
+    schedule(dynamic, 1) if (n >= 2 && !omp_in_parallel())
+  for (int k = 0; k < n; ++k) {
+    const Group& g = groups_[run[k]];
+    contact::TractionOptions opt;  // ISTVS slip against the rolling radius, as `traction`
+    std::set<double> s;
+    for (int r : wanted[run[k]]) {
+      s.insert(data_.rows[r].traction->slip);
+      opt.passes = std::max(opt.passes, data_.rows[r].traction->pass);
+    }
+    slips[k].assign(s.begin(), s.end());  // increasing: each slip warm-starts the next
+    const auto f = flex_.find({g.speed_kmh, g.load_N});
+    if (f != flex_.end()) opt.flexing_resistance_N[g.load_N] = f->second;
+    std::vector<contact::TractionCase> cases;
+    for (double slip : slips[k]) cases.push_back({g.load_N, slip});
+    results[k] = contact::steady_traction(model, config.ground, cases, opt);
+    cases_.fetch_add(static_cast<long>(results[k].size()), std::memory_order_relaxed);
+  }
+  for (int k = 0; k < n; ++k) {
+    // steady_traction's rows: case by case, pass by pass from 1 (a failed pass ends its case).
+    std::map<std::pair<double, int>, const contact::TractionResult*> by_case;
+    int c = -1;
+    for (const auto& r : results[k]) {
+      if (r.pass == 1) ++c;
+      if (c >= 0 && c < static_cast<int>(slips[k].size())) by_case[{slips[k][c], r.pass}] = &r;
+    }
+    for (int r : wanted[run[k]]) {
+      const auto& t = *data_.rows[r].traction;
+      const auto it = by_case.find({t.slip, t.pass});
+      if (it != by_case.end()) {
+        out[r] = *it->second;
+      } else {
+        contact::TractionResult failed;
+        failed.message = "an earlier pass of this slip failed";
+        out[r] = failed;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace modaltyre::discover
