@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
+#include "modaltyre/contact/parameter_spec.h"
 #include "modaltyre/discover/discover.h"
 #include "planted_data.h"
 
@@ -53,25 +55,28 @@ void expect_named_first(const Planted& p, const DiscoverReport& r) {
   EXPECT_GE(tested, 7) << "every load-regime candidate of the 3D patch is scored";
 }
 
-TEST(DiscoverDefaultTyre, LoadStiffeningHiddenAloneIsNamed) {
-  Planted p = on_default_tyre(11);
-  p.effect = "load_stiffening";
-  p.truth = [](auto& e) {
-    e.load_stiffening.enabled = true;
-    e.load_stiffening.exponent = 0.2;
+// One effect hidden alone, switched on and its parameter `key` set as the config reader sets
+// them (the effect and parameter catalogues).
+Planted hidden_alone(unsigned seed, const std::string& effect, const std::string& key,
+                     double value) {
+  Planted p = on_default_tyre(seed);
+  p.effect = effect;
+  p.option_truth = [effect, key, value](TyreConfig& c) {
+    contact::enable_effect(c, contact::find_effect(effect)->id);
+    contact::find_parameter(key)->set(c, value);
   };
-  p.hidden = {{"effects.load_stiffening.exponent", 0.2}};
+  p.hidden = {{key, value}};
+  return p;
+}
+
+TEST(DiscoverDefaultTyre, LoadStiffeningHiddenAloneIsNamed) {
+  const Planted p = hidden_alone(11, "load_stiffening", "effects.load_stiffening.exponent", 0.2);
   expect_named_first(p, discover_default(p, "default_stiffening"));
 }
 
 TEST(DiscoverDefaultTyre, BeltFlatteningHiddenAloneIsNamed) {
-  Planted p = on_default_tyre(12);
-  p.effect = "belt_flattening";
-  p.truth = [](auto& e) {
-    e.belt_flattening.enabled = true;
-    e.belt_flattening.stiffness_MPa = 20;
-  };
-  p.hidden = {{"effects.belt_flattening.stiffness_MPa", 20}};
+  const Planted p =
+      hidden_alone(12, "belt_flattening", "effects.belt_flattening.stiffness_MPa", 20);
   expect_named_first(p, discover_default(p, "default_flattening"));
 }
 
