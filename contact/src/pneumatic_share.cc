@@ -125,7 +125,7 @@ LoadSplit split_pneumatic_load(double load_N, double pressure_Pa,
   auto h = [&](double F) -> std::optional<double> {
     ++s.solves;
     double area = 0;
-    if (!area_at(F, area)) return std::nullopt;
+    if (!area_at(F, area) || !std::isfinite(area)) return std::nullopt;
     areas.emplace_back(F, area);
     return F + pressure_Pa * area - load_N;
   };
@@ -156,7 +156,8 @@ LoadSplit split_pneumatic_load(double load_N, double pressure_Pa,
   if (!h_lo) return s;
   s.structural_load_N = F_lo, s.residual_N = *h_lo;
   if (std::abs(*h_lo) <= tolerance_N) return done(F_lo, *h_lo);
-  if (*h_lo > 0) return s;  // no bracket within the solves allowed: failed, F_s and h said
+  // No bracket within the solves allowed (or an h that is not a number): failed, F_s and h said.
+  if (!(*h_lo < 0) || !(*h_hi > 0)) return s;
   const solvers::RootResult r = solvers::illinois_root(
       h, F_lo, *h_lo, load_N, *h_hi, {tolerance_N, std::max(1, max_solves - s.solves)});
   if (r.iterations > 0) s.structural_load_N = r.x, s.residual_N = r.fx;
