@@ -42,9 +42,9 @@ class CoupledTread {
  private:
   int columns_;
   std::vector<double> cos_;
-  Eigen::MatrixXd modes_;                        ///< phi_m(j) at (j, m), orthonormal
-  std::vector<std::vector<double>> lags_;        ///< g_m at lags 0, 1, ...
-  std::vector<std::vector<double>> both_sides_;  ///< g_m at lags -(L-1) .. L-1
+  Eigen::MatrixXd modes_;                  ///< phi_m(j) at (j, m), orthonormal
+  std::vector<std::vector<double>> lags_;  ///< g_m at lags 0, 1, ...
+  std::vector<double> ratio_;              ///< rho_m = g_m(1) / g_m(0)
   std::vector<double> own_;
 };
 

@@ -125,7 +125,7 @@ LoadSplit split_pneumatic_load(double load_N, double pressure_Pa,
   auto h = [&](double F) -> std::optional<double> {
     ++s.solves;
     double area = 0;
-    if (!area_at(F, area)) return std::nullopt;
+    if (!area_at(F, area) || !std::isfinite(area)) return std::nullopt;
     areas.emplace_back(F, area);
     return F + pressure_Pa * area - load_N;
   };
@@ -142,12 +142,22 @@ LoadSplit split_pneumatic_load(double load_N, double pressure_Pa,
   if (!h_hi) return s;
   s.structural_load_N = load_N, s.residual_N = *h_hi;
   if (*h_hi <= tolerance_N) return done(load_N, *h_hi);
-  // A(F_s) <= A(F_z) below F_z, so h(F_z - p A(F_z)) <= 0.
-  const double F_lo = std::max(load_N - *h_hi, 1e-9 * load_N);
-  const std::optional<double> h_lo = h(F_lo);
+  // A(F_s) <= A(F_z) below F_z, so h(F_z - p A(F_z)) <= 0 - for the continuous patch. The
+  // discrete one's area is not strictly monotone (cells enter in steps, a warm-started lateral
+  // pattern settles within its tolerance), so h there may still be > 0: step down by it,
+  // F <- F_z - p A(F), until the bracket closes (issue 45: a discover fit threw from here).
+  const double floor_N = 1e-9 * load_N;
+  double F_lo = std::max(load_N - *h_hi, floor_N);
+  std::optional<double> h_lo = h(F_lo);
+  while (h_lo && *h_lo > tolerance_N && F_lo > floor_N && s.solves < max_solves) {
+    F_lo = std::max(F_lo - *h_lo, floor_N);
+    h_lo = h(F_lo);
+  }
   if (!h_lo) return s;
   s.structural_load_N = F_lo, s.residual_N = *h_lo;
   if (std::abs(*h_lo) <= tolerance_N) return done(F_lo, *h_lo);
+  // No bracket within the solves allowed (or an h that is not a number): failed, F_s and h said.
+  if (!(*h_lo < 0) || !(*h_hi > 0)) return s;
   const solvers::RootResult r = solvers::illinois_root(
       h, F_lo, *h_lo, load_N, *h_hi, {tolerance_N, std::max(1, max_solves - s.solves)});
   if (r.iterations > 0) s.structural_load_N = r.x, s.residual_N = r.fx;

@@ -202,5 +202,32 @@ TEST(PneumaticShare, SplitFindsTheRootOfAContinuousIncreasingArea) {
   EXPECT_LT(s.solves, 20);
 }
 
+// A discrete patch's area is not strictly monotone in the load (cells enter in steps, a warm
+// lateral pattern settles within its tolerance): where A(F_z - p A(F_z)) > A(F_z) the lower
+// end is no bracket. The split steps down to one instead of handing the root finder ends of
+// one sign (it threw, and a discover run on pneumatic_share data aborted: issue 45).
+TEST(PneumaticShare, SplitBracketsTheRootWhereTheAreaIsNotMonotone) {
+  const double c = 2e-4, p = 2e5, F = 6000;
+  const double first_lo = F - p * c * std::sqrt(F);  // the bracket's lower end tried first
+  auto area_with_a_step = [&](double Fs, double& area) {
+    area = c * std::sqrt(Fs);
+    if (std::abs(Fs - first_lo) < 1) area = 1.2 * c * std::sqrt(F);  // larger than A(F_z)
+    return true;
+  };
+  double h_first = 0;
+  area_with_a_step(first_lo, h_first);
+  ASSERT_GT(first_lo + p * h_first - F, 0) << "the first lower end must not bracket";
+  const LoadSplit s = split_pneumatic_load(F, p, area_with_a_step);
+  ASSERT_TRUE(s.ok()) << to_string(s.status);
+  const double root = std::pow((-p * c + std::sqrt(p * p * c * c + 4 * F)) / 2, 2);
+  EXPECT_NEAR(s.structural_load_N, root, 1e-9 * F);
+  // An area that never lets the lower end close the bracket: a failed split, not a throw.
+  const LoadSplit none = split_pneumatic_load(F, p, [&](double, double& area) {
+    area = 2 * F / p;
+    return true;
+  });
+  EXPECT_FALSE(none.ok());
+}
+
 }  // namespace
 }  // namespace modaltyre::contact::testing
