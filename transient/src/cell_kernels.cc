@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "modaltyre/solvers/instruction_set.h"
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define MODALTYRE_CELL_KERNELS_AVX2 1
@@ -26,15 +28,13 @@ inline bool lu_pivot(int n, double* a, int* rows, int k) {
 }
 
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-/// Whether this CPU runs the AVX2 (and FMA) paths (checked once).
-bool avx2() {
-  static const bool yes = __builtin_cpu_supports("avx2");
-  return yes;
-}
+/// Whether the AVX2 (and FMA) paths run: the CPU has them and MODALTYRE_ISA allows them
+/// (solvers/instruction_set.h; decided once).
 bool avx2_fma() {
-  static const bool yes = avx2() && __builtin_cpu_supports("fma");
+  static const bool yes = solvers::instruction_set() == solvers::InstructionSet::avx2_fma;
   return yes;
 }
+bool avx2() { return avx2_fma(); }
 #endif
 
 /// Rows [k, n) of one output in order onto its combined partial sums s.

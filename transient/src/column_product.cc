@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "modaltyre/solvers/instruction_set.h"
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define MODALTYRE_COLUMN_PRODUCT_AVX2 1
@@ -133,7 +135,7 @@ void column_dots(Index rows, Index cols, const double* A, Index lda, const doubl
                  double alpha, bool accumulate) {
   Index done = 0;
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  static const bool avx2 = solvers::instruction_set() == solvers::InstructionSet::avx2_fma;
   if (avx2) done = dots_avx2(rows, cols, A, lda, v, out, alpha, accumulate);
 #endif
   dots_scalar(done, cols, rows, A, lda, v, out, alpha, accumulate);
@@ -143,7 +145,7 @@ void column_product(Index rows, Index cols, const double* A, Index lda, const do
                     double* out, bool accumulate) {
   Index done = 0;
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  static const bool avx2 = solvers::instruction_set() == solvers::InstructionSet::avx2_fma;
   if (avx2) done = rows_avx2(rows, cols, A, lda, x, out, accumulate);
 #endif
   rows_scalar(done, rows, cols, A, lda, x, out, accumulate);
