@@ -9,6 +9,7 @@
 
 #include <string>
 
+#include "instruction_set_context.h"
 #include "modaltyre/discover/discover.h"
 #include "test_matrix.h"
 
