@@ -123,8 +123,13 @@ void add_uncertainty_method_options(CLI::App* cmd, UncertaintyMethodArgs& a) {
   cmd->add_option("--uncertainty-method", a.method,
                   "linear, sampled or auto (default: linear unless its curvature check fails)")
       ->check(CLI::IsMember({"linear", "sampled", "auto"}));
-  cmd->add_option("--samples", a.samples, "Monte Carlo samples of the sampled method (20-100000)")
-      ->check(CLI::Range(20, 100000));
+  cmd->add_option("--samples", a.samples,
+                  "Monte Carlo samples of the sampled method (default 200, at most 2000)")
+      ->check(physical_range(uncertainty::kMinSamples, uncertainty::kMaxSamples, "samples",
+                             "below 20 no 2.5 % point exists; above 2000 the band's ends "
+                             "move by less than their sampling scatter for hours of work "
+                             "(docs/uncertainty.md)",
+                             true));
 }
 
 std::function<void(int, int)> UncertaintyProgress::callback() {
@@ -141,6 +146,11 @@ std::function<void(int, int)> UncertaintyProgress::callback() {
 
 void UncertaintyProgress::finish() {
   if (bar_) bar_->finish();
+}
+
+std::string plot_colour(int k) {
+  static const int kLinetypes[] = {1, 2, 3, 4, 6, 7, 8};
+  return " lc " + std::to_string(kLinetypes[((k % 7) + 7) % 7]);
 }
 
 }  // namespace modaltyre::app

@@ -50,6 +50,10 @@ void check_output_paths(CLI::App& app);
 /// Fixed-point formatting for tables ("0.0", never "-0.0").
 std::string fixed(double v, int decimals);
 
+/// A gnuplot colour for the k-th data set of a figure (" lc N", 0-based k; the default linetypes
+/// without the pale yellow), so that a data set and its fit can share one.
+std::string plot_colour(int k);
+
 /// A relative value as a percentage with two decimals: 0.0123 -> "1.23 %".
 std::string pct(double rel);
 

@@ -49,9 +49,11 @@ void print_effect(const EffectInfo& e, int width) {
             << "  " << e.description << "\n"
             << "  regime variable: " << condition_info(e.regime).name
             << "   changes: " << joined(e.observables) << "\n"
-            << "  switch on: " << enabled_key(e) << "=true\n"
+            << "  switch on: " << e.switch_keys() << "\n"
             << "  acts on: " << e.acts_on << "   with the 3D patch (footprint_3d): "
-            << (e.refused_with_3d.empty() ? "composes" : "refused, " + e.refused_with_3d) << "\n";
+            << (e.refused_with_3d.empty() ? "composes" : "refused, " + e.refused_with_3d)
+            << (e.is_option() && e.option->needs_3d ? "; needs it (an option of footprint_3d)" : "")
+            << "\n";
   char line[512];
   std::snprintf(line, sizeof line, "  %-*s  %-5s %9s %9s %9s  %-7s %s\n", width, "key", "unit",
                 "default", "min", "max", "status", "meaning");
@@ -68,8 +70,9 @@ void print_table() {
   const auto& catalogue = contact::effect_catalogue();
   const int width = key_width();
   std::cout << catalogue.size()
-            << " switchable effects, all off by default (docs/effects.md). \"stated\" parameters "
-               "are reference values that discover does not fit.\n";
+            << " switchable effects, all off by default (docs/effects.md): those of section "
+               "effects: and options of the config (switched by their own keys). \"stated\" "
+               "parameters are reference values that discover does not fit.\n";
   for (const auto& e : catalogue) {
     std::cout << "\n";
     print_effect(e, width);

@@ -218,9 +218,9 @@ void register_ema(CLI::App& app) {
     files.check();
     const ema::FrfSet set = read_frfs(*a);
     const ema::EmaResult r = ema::run_ema(set, o);
-    if (!a->plot.empty()) plot_diagram(r, a->plot);
     const nlohmann::json j = to_json(r);
-    check_finite(j);
+    check_finite(j);  // before any file: a failed run leaves none
+    if (!a->plot.empty()) plot_diagram(r, a->plot);
     if (!a->output.empty()) write_file_atomically(a->output, ema::hammer_csv(r));
     for (const auto& w : r.warnings) std::cerr << "warning: " << w << "\n";
     if (a->json) {

@@ -101,13 +101,6 @@ void register_footprint(CLI::App& app) {
     const auto results = contact::predict_all(model, cases);
     report::require_converged(results);
     warn_outside_validity(config, results);
-    if (!a->plot.empty()) {
-      if (config.footprint_3d) {
-        plot_footprint_maps(results, config, a->plot);
-      } else {
-        plot_pressures(results, config, a->plot);
-      }
-    }
     std::optional<uncertainty::PropagationResult> bands;
     std::optional<MapBands> map_bands;
     if (a->uncertainty) {
@@ -121,12 +114,25 @@ void register_footprint(CLI::App& app) {
       bar.finish();
       if (extra.count > 0) map_bands = take_map_bands(*bands);
     }
-    if (!a->map_csv.empty()) write_map_csv(results, a->map_csv, map_bands ? &*map_bands : nullptr);
+    std::optional<nlohmann::json> j;
     if (a->json) {
-      auto j = report::footprint_json(model, results);
-      j["conditions"] = report::footprint_conditions_json(shown);
-      if (bands) report::add_uncertainty_json(j, *bands);
-      print_json(j);
+      j = report::footprint_json(model, results);
+      (*j)["conditions"] = report::footprint_conditions_json(shown);
+      if (bands) report::add_uncertainty_json(*j, *bands);
+      check_finite(*j);
+    }
+    // The files only once everything is computed (a failed band leaves none), the plot (which
+    // can still fail in gnuplot) first.
+    if (!a->plot.empty()) {
+      if (config.footprint_3d) {
+        plot_footprint_maps(results, config, a->plot);
+      } else {
+        plot_pressures(results, config, a->plot);
+      }
+    }
+    if (!a->map_csv.empty()) write_map_csv(results, a->map_csv, map_bands ? &*map_bands : nullptr);
+    if (j) {
+      print_json(*j);
     } else {
       print_footprint_table(model, results, shown);
       if (bands) print_uncertainty_table(*bands);

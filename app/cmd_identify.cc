@@ -16,6 +16,7 @@
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/report/identified_ground.h"
 #include "modaltyre/report/identify_run.h"
 #include "modaltyre/studies/identified_config.h"
 
@@ -32,7 +33,8 @@ struct IdentifyArgs {
   bool json = false;
   std::string plot;
   std::string write_config;
-  std::string into_config, out_config;  ///< --into-config TYRE.yaml --out-config OUT.yaml
+  std::string into_config, out_config;    ///< --into-config TYRE.yaml --out-config OUT.yaml
+  std::string write_ground, into_ground;  ///< --write-ground OUT.yaml [--into-ground BASE.yaml]
   int samples = 6;
   std::string sampling = "deflection";
   bool intercept = false;
@@ -100,6 +102,24 @@ void check_into_config_use(const IdentifyArgs& a) {
                      "--out-config needs --into-config TYRE.yaml, the tyre config to start from");
   if (const std::string why = unmapped_reason(a); !why.empty())
     throw InputError("identify " + a.method + " --into-config: " + why);
+}
+
+// --write-ground / --into-ground take the soil tests only, and --into-ground names the file the
+// identified keys go into, written to --write-ground (never over it).
+void check_ground_file_use(const IdentifyArgs& a) {
+  if (a.write_ground.empty() && a.into_ground.empty()) return;
+  if (a.method != "bevameter" && a.method != "shear")
+    throw InputError(
+        {a.write_ground.empty() ? "--into-ground" : "--write-ground", 0, ""},
+        "a soil file takes the soil tests: identify bevameter or shear (not " + a.method + ")");
+  if (a.write_ground.empty())
+    throw InputError({"--into-ground", 0, ""},
+                     "--into-ground " + a.into_ground +
+                         " needs --write-ground OUT.yaml, the soil file to write");
+  if (!a.into_config.empty() || !a.write_config.empty())
+    throw InputError({"--write-ground", 0, ""},
+                     "write the soil into a soil file (--write-ground) or into a tyre config "
+                     "(--into-config / --write-config), not both at once");
 }
 
 nlohmann::json mapping_json(const IdentifyArgs& a, const studies::ConfigMapping& m,
@@ -208,6 +228,12 @@ void register_identify(CLI::App& app) {
   cmd->add_option("--out-config", args->out_config,
                   "write the tyre config of --into-config with the identified effects switched "
                   "on and set here (YAML)");
+  cmd->add_option("--write-ground", args->write_ground,
+                  "bevameter | shear: write a soil file (YAML, ground: section) that --ground "
+                  "reads (a shear test needs --into-ground: it has no pressure-sinkage law)");
+  cmd->add_option("--into-ground", args->into_ground,
+                  "a soil file to set the identified keys into (its comments kept), written to "
+                  "--write-ground: both soil tests in one file");
   cmd->callback([args, cmd] {
     IdentifyArgs a = *args;
     const bool plot_given = cmd->count("--plot") > 0;
@@ -226,6 +252,7 @@ void register_identify(CLI::App& app) {
     const report::IdentifyInputs inputs = inputs_of(a);
     report::check_identify_inputs(inputs);
     check_into_config_use(a);
+    check_ground_file_use(a);
     Target into;  // read before any fitting: a bad tyre config fails fast
     if (!a.into_config.empty())
       into = studies::ConfigTarget{
@@ -239,6 +266,8 @@ void register_identify(CLI::App& app) {
     if (write_config_given && !tyre_config_out) files.output(a.write_config, "--write-config");
     if (!a.out_config.empty())
       files.output(a.out_config, tyre_config_out ? "--write-config" : "--out-config");
+    files.input(a.into_ground, "--into-ground");
+    if (!a.write_ground.empty()) files.output(a.write_ground, "--write-ground");
     files.check();
     const report::IdentifyRun run = report::run_identify(inputs);
     map_and_draw(a, run, into);
@@ -246,6 +275,15 @@ void register_identify(CLI::App& app) {
     check_finite(out);
     if (!a.write_config.empty())
       write_rheology_record(a.write_config, {a.method, a.file, a.config}, out);
+    std::optional<report::IdentifiedGround> soil_file;
+    if (!a.write_ground.empty()) {
+      soil_file = report::identified_ground_file(run, a.file, a.into_ground, a.write_ground);
+      write_file_atomically(a.write_ground, soil_file->text);
+      out["ground_file"] = {
+          {"path", a.write_ground},
+          {"into", a.into_ground.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.into_ground)},
+          {"notes", soil_file->notes}};
+    }
     std::optional<studies::IdentifiedConfig> written;
     if (into) {
       written = studies::compose_identified_config(source_of(a), *into);
@@ -257,6 +295,11 @@ void register_identify(CLI::App& app) {
       return;
     }
     print_report(out, a.file);
+    if (soil_file) {
+      std::cout << "\nsoil file: " << a.write_ground
+                << (a.into_ground.empty() ? "" : " (from " + a.into_ground + ")") << "\n";
+      for (const auto& n : soil_file->notes) std::cout << "  " << n << "\n";
+    }
     if (into) {
       std::cout << "\naugmented tyre config: " << a.out_config << " (from " << a.into_config
                 << ")\n";

@@ -8,6 +8,7 @@
 #include "cli_support.h"
 #include "commands.h"
 #include "modaltyre/core/atomic_file.h"
+#include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/init/init_tyre.h"
 #include "modaltyre/report/init_json.h"
@@ -17,15 +18,49 @@ namespace {
 
 struct InitArgs {
   init::InitInputs in;
-  std::vector<std::string> orders;
+  std::vector<std::string> frequencies, damping, orders;  // split here: an empty item is named
   std::string output;
   bool json = false;
 };
 
+// "96,112,,135" as its items, empty ones kept (CLI11's own splitting drops them, and a dropped
+// frequency moves every later one to the wrong order).
+std::vector<std::string> items_of(const std::vector<std::string>& words) {
+  std::vector<std::string> out;
+  for (const auto& w : words) {
+    std::size_t at = 0;
+    while (true) {
+      const std::size_t comma = w.find(',', at);
+      out.push_back(w.substr(at, comma == std::string::npos ? std::string::npos : comma - at));
+      if (comma == std::string::npos) break;
+      at = comma + 1;
+    }
+  }
+  return out;
+}
+
+// Every item a finite decimal number, else an InputError naming the option and the item.
+std::vector<double> numbers_of(const std::vector<std::string>& words, const std::string& option) {
+  std::vector<double> out;
+  const auto items = items_of(words);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const auto v = parse_finite_double(items[i]);
+    if (!v) {
+      throw InputError({option, 0, ""},
+                       "item " + std::to_string(i + 1) + " of " + std::to_string(items.size()) +
+                           (items[i].empty() ? " is empty (two commas in a row?)"
+                                             : ": '" + printable(items[i]) +
+                                                   "' is not a finite decimal number"));
+    }
+    out.push_back(*v);
+  }
+  return out;
+}
+
 // "2,3,r,4": orders >= 0, "r" for the rigid rotation mode (-1).
 std::vector<int> parse_orders(const std::vector<std::string>& words) {
   std::vector<int> out;
-  for (const auto& w : words) {
+  for (const auto& w : items_of(words)) {
     if (w == "r" || w == "R") {
       out.push_back(-1);
       continue;
@@ -57,13 +92,10 @@ void register_init(CLI::App& app) {
       ->required();
   cmd->add_option("--pressure-kPa", in.pressure_kPa,
                   "operating pressure [kPa] (default: the test's)");
-  cmd->add_option("--frequencies", in.frequencies_hz, "natural frequencies [Hz], e.g. 96,112,135")
-      ->delimiter(',');
-  cmd->add_option("--damping", in.damping_ratios, "damping ratios, one per frequency")
-      ->delimiter(',');
+  cmd->add_option("--frequencies", a->frequencies, "natural frequencies [Hz], e.g. 96,112,135");
+  cmd->add_option("--damping", a->damping, "damping ratios, one per frequency");
   cmd->add_option("--orders", a->orders,
-                  "harmonic orders, one per frequency (r: the rotation mode); default: proposed")
-      ->delimiter(',');
+                  "harmonic orders, one per frequency (r: the rotation mode); default: proposed");
   cmd->add_option("--hammer", in.hammer_csv, "a hammer CSV (fit-modes format, e.g. ema --output)");
   cmd->add_option("--belt-mass-kg", in.belt_mass_kg, "the belt's mass as its maker states it [kg]");
   cmd->add_option("--boundary", in.boundary, "the modal test's wheel: free (default) or rim-fixed")
@@ -80,6 +112,9 @@ void register_init(CLI::App& app) {
   cmd->add_flag("--json", a->json, "print what init decided as JSON");
   cmd->callback([a, cmd] {
     if (cmd->count("--orders")) a->in.orders = parse_orders(a->orders);
+    if (cmd->count("--frequencies"))
+      a->in.frequencies_hz = numbers_of(a->frequencies, "--frequencies");
+    if (cmd->count("--damping")) a->in.damping_ratios = numbers_of(a->damping, "--damping");
     CommandFiles files;  // the config must not replace the hammer data it names
     files.input(a->in.hammer_csv, "--hammer");
     if (cmd->count("--output")) files.output(a->output, "--output");

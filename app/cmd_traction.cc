@@ -19,6 +19,7 @@
 #include "modaltyre/core/gnuplot.h"
 #include "modaltyre/report/command_inputs.h"
 #include "modaltyre/report/traction_json.h"
+#include "traction_report.h"
 
 namespace modaltyre::app {
 namespace {
@@ -28,26 +29,12 @@ struct TractionArgs {
   std::vector<double> loads, slips;
   int passes = 1;
   std::string patch;  ///< "3d" (a 3D config's default), "2d"; empty: the config's own
+  std::string slip_reference = "rolling";  ///< rolling (r_e, ISTVS) | unloaded (R0)
+  double speed_km_h = -1;                  ///< the flexing loss's speed (-1: the config's)
   std::vector<std::string> overrides;
   bool json = false;
   std::string plot;
 };
-
-void plot_drawbar_pull(const std::vector<contact::TractionResult>& results,
-                       const std::string& path) {
-  std::map<std::pair<double, int>, PlotSeries> curves;
-  for (const auto& r : results) {
-    auto& s = curves[{r.load_N, r.pass}];
-    s.title = fixed(r.load_N, 0) + " N" + (r.pass > 1 ? ", pass " + std::to_string(r.pass) : "");
-    s.style = "linespoints";
-    s.x.push_back(r.slip);
-    s.y.push_back(r.drawbar_pull_N / r.load_N);
-  }
-  PlotPanel panel{
-      "drawbar pull against slip (Wong's slip)", "slip s [-]", "drawbar pull / load [-]", {}};
-  for (auto& [key, s] : curves) panel.series.push_back(std::move(s));
-  render_plot(PlotFigure{{panel}}, path);
-}
 
 }  // namespace
 
@@ -82,6 +69,17 @@ void register_traction(CLI::App& app) {
                   "3d: the 3D patch (a 3D config's default); 2d: a 3D config's 2D patch at its "
                   "tread width (the fast variant, docs/soil.md section 9)")
       ->check(CLI::IsMember({"3d", "2d"}));
+  cmd->add_option("--slip-reference", a->slip_reference,
+                  "the radius slip is taken against: rolling (default; r_e of the same tyre at "
+                  "the same load free-rolling on the rigid road, ISTVS) or unloaded (R0)")
+      ->check(CLI::IsMember({"rolling", "unloaded"}));
+  cmd->add_option("--speed-km-h", a->speed_km_h,
+                  "rolling speed of the tyre's flexing (hysteresis) loss on the road, 0-100 km/h "
+                  "(0: none; default: the config's transient.rolling.speed_km_h)")
+      ->check(physical_range(0, 100, "km/h",
+                             "steady traction on soil is a slow process (soil bins run at "
+                             "0.1-3 m/s)",
+                             true));
   cmd->add_option("--set", a->overrides,
                   "override a config key (tyre.rigid=true), or a soil key when --ground is "
                   "given (ground.bekker.n=0.8)");
@@ -94,6 +92,10 @@ void register_traction(CLI::App& app) {
       throw InputError({a->config, 0, "footprint_3d"},
                        "--patch 3d needs a 3D config (a footprint_3d: section)");
     setup.patch_2d = a->patch == "2d";
+    setup.slip_reference = a->slip_reference == "unloaded" ? contact::SlipReference::unloaded
+                                                           : contact::SlipReference::rolling;
+    setup.speed_km_h = a->speed_km_h;
+    const double speed_km_h = report::traction_speed_km_h(setup);
     CommandFiles files;  // before anything is computed: no output over an input
     report::add_config_inputs(files, setup.config);
     files.input(a->ground, "--ground");
@@ -108,38 +110,25 @@ void register_traction(CLI::App& app) {
                    "transient models it (docs/soil.md 8.4)\n";
     }
     const auto results = report::run_traction(setup, a->loads, a->slips, a->passes);
+    for (const auto& r : results) {
+      if (r.window_m > setup.config.mesh.window_m) {
+        std::cerr << "note: contact.window_mm grew from " << setup.config.mesh.window_m * 1e3
+                  << " to " << r.window_m * 1e3
+                  << " mm where the contact reached its edge (cases with window_mm in --json)\n";
+        break;
+      }
+    }
     contact::TyreConfig config = setup.config;  // as run
     if (setup.patch_2d || setup.rigid) report::use_2d_patch_of_3d(config);
     const ground::GroundSettings& g = setup.ground;
-    if (!a->plot.empty()) plot_drawbar_pull(results, a->plot);
+    const TractionRun run{&config, &g, setup.rigid, a->passes, setup.slip_reference};
+    if (!a->plot.empty()) plot_traction(run, results, a->plot);
     if (a->json) {
-      print_json(report::traction_json(config, g, results, setup.rigid, a->passes));
+      print_json(report::traction_json(config, g, results, setup.rigid, a->passes,
+                                       setup.slip_reference, setup.rigid ? 0.0 : speed_km_h));
       return;
     }
-    const bool patch_3d = !setup.rigid && config.footprint_3d.has_value();
-    std::cout << (setup.rigid ? "rigid cylinder"
-                  : patch_3d  ? "flexible tyre (3D patch)"
-                              : "flexible tyre (2D patch)")
-              << " R0 " << fixed(config.outer_radius_m * 1e3, 1) << " mm, width "
-              << fixed((patch_3d ? config.footprint_3d->tread_width_m : config.tread.width_m) * 1e3,
-                       1)
-              << " mm on " << (g.name.empty() ? ground::to_string(g.model) : g.name) << "\n";
-    std::cout << "  load_N    slip" << (a->passes > 1 ? "  pass" : "")
-              << "  sinkage_mm  rut_mm  drawbar_N  thrust_N  resist_N  torque_Nm  entry_deg  "
-                 "exit_deg  b_mm\n";
-    for (const auto& r : results) {
-      char line[256];
-      std::snprintf(line, sizeof line, "%8.0f  %6.3f", r.load_N, r.slip);
-      std::cout << line;
-      if (a->passes > 1)
-        std::cout << "  " << std::string(4 - std::to_string(r.pass).size(), ' ') << r.pass;
-      std::snprintf(line, sizeof line,
-                    "  %10.2f  %6.2f  %9.1f  %8.1f  %8.1f  %9.1f  %9.2f  %8.2f  %5.1f\n",
-                    r.soil_sinkage_m * 1e3, r.rut_depth_m * 1e3, r.drawbar_pull_N, r.thrust_N,
-                    r.motion_resistance_N, r.torque_Nm, r.entry_angle_rad * 180 / M_PI,
-                    r.exit_angle_rad * 180 / M_PI, r.bekker_width_m * 1e3);
-      std::cout << line;
-    }
+    print_traction_table(run, results);
   });
 }
 

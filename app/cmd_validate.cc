@@ -1,6 +1,7 @@
 // modaltyre validate CONFIG MEASURED.csv [--set key=value]... [--json] [--plot FILE]
 //                    [--uncertainty [--uncertainty-method M] [--samples N]]
 #include <algorithm>
+#include <array>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -38,13 +39,15 @@ struct ValidateArgs {
 
 using report::row_validity;
 
-// The rows with the model's band: measured (+- 2 sigma where stated) against predicted
-// +- 2 sigma, and whether the measurement lies outside the band (its noise added).
+// The rows with the model's band: measured (+- 2 sigma where stated) against the predicted
+// value and its 2.5-97.5 % band, and whether the measurement lies outside the band (its noise
+// added).
 void print_band_table(const studies::ValidationReport& rep, const ValidationBands& b) {
   const auto& r = b.result;
-  std::cout << "\nuncertainty (" << r.method << ": " << r.check << "), value +- 2 sigma; "
-            << "'outside': the measured value lies outside the model's 95 % band widened by "
-               "its own stated noise\n";
+  std::cout << "\nuncertainty (" << r.method << ": " << r.check << "); measured +- 2 sigma "
+            << "(its stated noise), predicted " << report::kBandHeading
+            << "; 'outside': the measured value lies outside the model's band widened by its "
+               "own stated noise\n";
   std::cout << " row  load_N  observable   measured             predicted\n";
   for (std::size_t i = 0; i < b.rows; ++i) {
     const auto& row = rep.rows[i].measured;
@@ -55,11 +58,11 @@ void print_band_table(const studies::ValidationReport& rep, const ValidationBand
       const auto& band = r.cases[i].bands[o.output];
       const std::string meas =
           report::plus_minus(*v, s == row.observed_std.end() ? 0.0 : 2 * s->second, 2);
-      const std::string pred = report::plus_minus(band.value, 2 * band.std, 2);
+      const std::string pred = report::band_text(band, 2);
       const auto& off = b.outside[i];
       const bool out = std::find(off.begin(), off.end(), o.observable) != off.end();
-      char line[200];
-      std::snprintf(line, sizeof line, " %3d  %6.0f  %-11s  %-19s  %-19s%s\n", row.row,
+      char line[256];
+      std::snprintf(line, sizeof line, " %3d  %6.0f  %-11s  %-19s  %-24s%s\n", row.row,
                     row.conditions.load_N, o.observable, meas.c_str(), pred.c_str(),
                     out ? "  outside" : "");
       std::cout << line;
@@ -189,9 +192,9 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
     const char* ylabel;
   };
   const Observable observables[] = {
-      {"sinking_mm", "Sinking versus load", "sinking [mm]"},
-      {"length_mm", "Contact length versus load", "contact length [mm]"},
-      {"width_mm", "Contact width versus load", "contact width [mm]"}};
+      {"sinking_mm", "sinking versus load", "sinking [mm]"},
+      {"length_mm", "contact length versus load", "contact length [mm]"},
+      {"width_mm", "contact width versus load", "contact width [mm]"}};
   PlotFigure fig;
   for (const auto& o : observables) {
     PlotSeries model{"model", {}, {}, "lines"};
@@ -203,9 +206,9 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
     PlotSeries measured{"measured (prediction rows)", {}, {}, "points"};
     PlotSeries calibration{"measured (calibration rows)", {}, {}, "points"};
     PlotSeries outside{"measured, outside the band", {}, {}, "points"};
-    // The band at the rows (its ends as points: between rows it was not computed, and the rows
-    // may stand at other conditions than the curve's).
-    PlotSeries band{"model 95 % band at the rows (ends)", {}, {}, "points"};
+    // The band at the rows, its 2.5 and 97.5 % points (the JSON's p025, p975) joined in load
+    // order: computed at the rows only (the rows may stand at other conditions than the curve).
+    std::vector<std::array<double, 3>> band_at;  // load kN, p025, p975
     std::size_t q = 0;
     for (const auto& b : band_observables()) {
       if (o.name == std::string(b.observable)) q = b.output;
@@ -218,9 +221,7 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
         s.y.push_back(*v);
         if (bands) {
           const auto& b = bands->result.cases[i].bands[q];
-          band.x.insert(band.x.end(), 2, s.x.back());
-          band.y.push_back(b.p025);
-          band.y.push_back(b.p975);
+          band_at.push_back({s.x.back(), b.p025, b.p975});
         }
         if (bands && std::find(bands->outside[i].begin(), bands->outside[i].end(), o.name) !=
                          bands->outside[i].end()) {
@@ -231,13 +232,21 @@ void plot_validation(const studies::ValidationReport& rep, const std::string& pa
     }
     if (measured.x.empty() && calibration.x.empty()) continue;  // not measured: not compared
     PlotPanel panel;
-    panel.title = o.title + stated;
+    panel.title = rep.model.config.name + ": " + o.title + stated;
     panel.xlabel = "vertical load [kN]";
     panel.ylabel = o.ylabel;
     panel.series = {model, measured};
     if (!calibration.x.empty()) panel.series.push_back(calibration);
     if (bands) {
-      panel.series.push_back(band);
+      std::sort(band_at.begin(), band_at.end());
+      PlotSeries lo{"model band, 2.5 % (at the rows)", {}, {}, "linespoints dashtype 2 pt 1 lc 4"};
+      PlotSeries hi{"model band, 97.5 % (at the rows)", {}, {}, "linespoints dashtype 2 pt 1 lc 4"};
+      for (const auto& [x, p025, p975] : band_at) {
+        lo.x.push_back(x), lo.y.push_back(p025);
+        hi.x.push_back(x), hi.y.push_back(p975);
+      }
+      panel.series.push_back(lo);
+      panel.series.push_back(hi);
       if (!outside.x.empty()) panel.series.push_back(outside);
     }
     fig.panels.push_back(std::move(panel));
@@ -292,12 +301,16 @@ void register_validate(CLI::App& app) {
     if (a->uncertainty) {
       bands = validation_bands(rep, a->method.options());
     }
-    if (!a->plot.empty()) plot_validation(rep, a->plot, settings, bands ? &*bands : nullptr);
+    std::optional<nlohmann::json> j;
     if (a->json) {
-      auto j = report::validation_json(rep);
-      j["conditions"] = settings_json(settings);
-      if (bands) add_validation_bands_json(j, *bands);
-      print_json(j);
+      j = report::validation_json(rep);
+      (*j)["conditions"] = settings_json(settings);
+      if (bands) add_validation_bands_json(*j, *bands);
+      check_finite(*j);  // before the plot: a failed run leaves no file
+    }
+    if (!a->plot.empty()) plot_validation(rep, a->plot, settings, bands ? &*bands : nullptr);
+    if (j) {
+      print_json(*j);
     } else {
       print_table(rep, a->measured, settings);
       if (bands) print_band_table(rep, *bands);

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "cli_support.h"
+#include "footprint_report.h"
 #include "modaltyre/core/atomic_file.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/gnuplot.h"
@@ -134,7 +135,7 @@ void write_map_csv(const std::vector<contact::Prediction>& cases, const std::str
 void plot_footprint_maps(const std::vector<contact::Prediction>& cases,
                          const contact::TyreConfig& config, const std::string& path) {
   PlotFigure fig;
-  PlotPanel centre{config.name + ": centre-line contact pressure",
+  PlotPanel centre{footprint_plot_subject(config, cases) + ": centre-line contact pressure",
                    "x along the road from the contact centre [mm]",
                    "pressure on the centre line [kPa]",
                    {}};

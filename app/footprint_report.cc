@@ -1,7 +1,12 @@
 #include "footprint_report.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <iterator>
+#include <string>
+#include <vector>
 
 #include "cli_support.h"
 #include "modaltyre/contact/validity.h"
@@ -23,7 +28,7 @@ void warn_outside_validity(const contact::TyreConfig& config,
                            const std::vector<contact::Prediction>& predictions) {
   for (const auto& p : predictions) {
     const auto& r = p.footprint;
-    const contact::Validity v = contact::validity(config, r.sinking_m, r.contact_length_m);
+    const contact::Validity v = contact::validity(config, r);
     if (v.valid) continue;
     std::cerr << "warning: load " << r.load.load_N
               << " N is outside the model's validity range: " << v.reason
@@ -96,16 +101,27 @@ void print_uncertainty_inputs(const uncertainty::PropagationResult& r) {
 }  // namespace
 
 void print_uncertainty_table(const uncertainty::PropagationResult& r) {
-  std::cout << "\nuncertainty (" << r.method << ": " << r.check << "), value +- 2 sigma:\n";
-  std::cout << "  load_N  sinking_mm        length_mm        width_mm         peak_kPa     "
-               "    mean_kPa\n";
+  std::cout << "\nuncertainty (" << r.method << ": " << r.check << "), " << report::kBandHeading
+            << ":\n";
   const int plain[] = {2, 1, 1, 0, 0};
+  const char* names[] = {"sinking_mm", "length_mm", "width_mm", "peak_kPa", "mean_kPa"};
+  std::vector<std::vector<std::string>> cells;
+  std::vector<std::size_t> width(std::size(names), 0);
+  for (std::size_t q = 0; q < width.size(); ++q) width[q] = std::string(names[q]).size();
   for (const auto& c : r.cases) {
-    std::printf("%8.0f", c.load_N);
-    for (std::size_t q = 0; q < c.bands.size(); ++q) {
-      std::printf("  %-15s",
-                  report::plus_minus(c.bands[q].value, 2 * c.bands[q].std, plain[q]).c_str());
+    cells.emplace_back();
+    for (std::size_t q = 0; q < c.bands.size() && q < width.size(); ++q) {
+      cells.back().push_back(report::band_text(c.bands[q], plain[q]));
+      width[q] = std::max(width[q], cells.back().back().size());
     }
+  }
+  std::printf("  load_N");
+  for (std::size_t q = 0; q < width.size(); ++q) std::printf("  %-*s", int(width[q]), names[q]);
+  std::printf("\n");
+  for (std::size_t k = 0; k < r.cases.size(); ++k) {
+    std::printf("%8.0f", r.cases[k].load_N);
+    for (std::size_t q = 0; q < cells[k].size(); ++q)
+      std::printf("  %-*s", int(width[q]), cells[k][q].c_str());
     std::printf("\n");
   }
   print_uncertainty_inputs(r);
@@ -113,19 +129,41 @@ void print_uncertainty_table(const uncertainty::PropagationResult& r) {
 
 void print_named_bands(const std::vector<std::string>& names,
                        const uncertainty::PropagationResult& r) {
-  std::cout << "uncertainty (" << r.method << ": " << r.check << "), value +- 2 sigma:\n";
+  std::cout << "uncertainty (" << r.method << ": " << r.check << "), " << report::kBandHeading
+            << ":\n";
   const auto& row = r.cases.front().bands;
   for (std::size_t q = 0; q < names.size() && q < row.size(); ++q) {
-    std::printf("  %-26s %s\n", names[q].c_str(),
-                report::plus_minus(row[q].value, 2 * row[q].std, 4).c_str());
+    std::printf("  %-26s %s\n", names[q].c_str(), report::band_text(row[q], 4).c_str());
   }
   print_uncertainty_inputs(r);
+}
+
+std::string footprint_plot_subject(const contact::TyreConfig& config,
+                                   const std::vector<contact::Prediction>& cases) {
+  const ground::GroundSettings& g = config.ground;
+  const std::string model = ground::to_string(g.model);
+  std::string on;
+  if (g.soil()) {
+    on = g.name.empty() ? "a " + model + " soil" : g.name + " (" + model + ")";
+  } else if (g.model == ground::GroundModel::profile) {
+    on = "the road profile " + std::filesystem::path(g.profile_csv).filename().string();
+  } else {
+    on = "the rigid road";
+  }
+  double lo = 0, hi = 0;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const double F = cases[k].footprint.load.load_N / 1000;
+    lo = k ? std::min(lo, F) : F, hi = k ? std::max(hi, F) : F;
+  }
+  const std::string loads =
+      cases.empty() ? "" : ", " + fixed(lo, 2) + (hi > lo ? "-" + fixed(hi, 2) : "") + " kN";
+  return config.name + " on " + on + loads;
 }
 
 void plot_pressures(const std::vector<contact::Prediction>& predictions,
                     const contact::TyreConfig& config, const std::string& path) {
   PlotPanel p;
-  p.title = config.name + ": contact pressure along the patch";
+  p.title = footprint_plot_subject(config, predictions) + ": contact pressure along the patch";
   p.xlabel = "x along the road from the contact centre [mm]";
   p.ylabel = "contact pressure [kPa]";
   for (const auto& prediction : predictions) {

@@ -139,6 +139,9 @@ CrownProfile read_crown_profile(const ConfigSection& s) {
   c.radius_m = s.positive("radius_mm", c.radius_m * 1e3, 1e6) * 1e-3;
   c.shoulder_radius_m = s.number("shoulder_radius_mm", 0, 0, 1e6) * 1e-3;
   c.shoulder_start_m = s.number("shoulder_start_mm", 0, 0, 1e6) * 1e-3;
+  if (c.shape == CrownShape::flat) {  // elsewhere an unknown key
+    c.round_limit_radius_m = s.number("round_limit_radius_mm", 0, 0, 1e6) * 1e-3;
+  }
   if (c.shape == CrownShape::power) {  // elsewhere the two keys are unknown keys
     c.exponent = s.number("exponent", c.exponent, 1, 20);
     c.reference_half_width_m = s.number("reference_half_width_mm", 0, 0, 1e4) * 1e-3;

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "modaltyre/contact/tyre_config.h"
+
 namespace modaltyre::contact {
 namespace {
 
@@ -27,24 +29,27 @@ void with_3d_patch(EffectInfo& e) {
       return;
     case EffectId::soil_compliance:
       e.acts_on = "road (a Winkler layer under each cell)";
+      e.strength = EffectStrength::inverse;  // vanishes as the soil's modulus grows
       return;
     case EffectId::tread_coupling:
-      e.acts_on = "tread (couples units along the road)";
-      e.refused_with_3d =
-          "the 3D patch's cells are independent springs (its exact reduction to one unknown per "
-          "section needs them); tread_coupling is a 2D-patch effect";
+      // On the 3D patch the layer couples the cells along and across the road: every cell an
+      // unknown (patch3d_coupled.cc) instead of the section reduction.
+      e.acts_on = "tread (couples units along the road; 3D cells along and across it)";
       return;
     case EffectId::rolling_speed:
+      // On the 3D patch a non-symmetric section problem (Josephy-Newton steps, patch3d.h).
       e.acts_on = "carcass (steady-rolling kernels)";
-      e.refused_with_3d =
-          "the steady-rolling carcass is not symmetric, and the 3D patch's lateral-pattern steps "
-          "minimise an energy that needs a symmetric one; rolling_speed is a 2D-patch effect";
       return;
     case EffectId::contact_width:
       e.acts_on = "patch width (2D approximation)";
       e.refused_with_3d =
           "superseded: the 3D patch computes the width from the crown profile "
-          "(footprint_3d.crown); contact_width is the 2D patch's approximation of it";
+          "(footprint_3d.crown, its radius a baseline scalar); contact_width is the 2D patch's "
+          "approximation of it, crown_shape its 3D counterpart";
+      e.strength = EffectStrength::none;
+      e.no_strength = "its width replaces the config's";
+      return;
+    default:  // option effects: their entries say it (option_effects.cc)
       return;
   }
 }
@@ -140,6 +145,7 @@ std::vector<EffectInfo> make_effect_catalogue() {
        {{"stiffness_MPa", "MPa", 1, 0.0, 1000, true, "kappa in N/mm per mm of circumference",
          parameter_ref<&E::belt_flattening, &E::BeltFlattening::stiffness_MPa>()}}});
   for (auto& e : c) with_3d_patch(e);
+  for (auto& e : option_effect_catalogue()) c.push_back(std::move(e));
   return c;
 }
 
@@ -169,13 +175,16 @@ bool& EffectsConfig::enabled(EffectId id) {
       return contact_width.enabled;
     case EffectId::belt_flattening:
       return belt_flattening.enabled;
+    default:
+      break;
   }
-  throw std::logic_error("unknown effect id");
+  throw std::logic_error("effect " + effect_info(id).name +
+                         " is an option of the config, not a flag of section effects:");
 }
 
 bool EffectsConfig::any() const {
   for (const auto& e : effect_catalogue()) {
-    if (enabled(e.id)) return true;
+    if (!e.is_option() && enabled(e.id)) return true;
   }
   return false;
 }
@@ -197,6 +206,7 @@ const EffectInfo* find_effect(const std::string& name) {
 EffectsConfig read_effects(const ConfigSection& section) {
   EffectsConfig out;
   for (const auto& info : effect_catalogue()) {
+    if (info.is_option()) continue;  // read where its option lives
     const ConfigSection s = section.section(info.name);
     out.enabled(info.id) = s.boolean("enabled", false);
     for (const auto& p : info.parameters) {
@@ -205,6 +215,41 @@ EffectsConfig read_effects(const ConfigSection& section) {
     }
   }
   return out;
+}
+
+bool effect_enabled(const TyreConfig& config, EffectId id) {
+  const EffectInfo& e = effect_info(id);
+  return e.is_option() ? e.option->is_on(config) : config.effects.enabled(id);
+}
+
+void enable_effect(TyreConfig& config, EffectId id) {
+  const EffectInfo& e = effect_info(id);
+  if (e.is_option()) {
+    e.option->switch_on(config);
+  } else {
+    config.effects.enabled(id) = true;
+  }
+}
+
+std::string effect_refusal(const TyreConfig& config, EffectId id) {
+  const EffectInfo& e = effect_info(id);
+  if (config.footprint_3d && !e.refused_with_3d.empty()) {
+    return "not on the 3D patch: " + e.refused_with_3d;
+  }
+  return e.is_option() ? e.option->refusal(config) : "";
+}
+
+std::vector<std::string> effect_switch_overrides(const TyreConfig& config, EffectId id) {
+  const EffectInfo& e = effect_info(id);
+  if (e.is_option()) return e.option->overrides(config);
+  return {e.switch_keys()};
+}
+
+std::vector<std::string> effect_catalogue_switch(EffectId id) {
+  TyreConfig c;
+  c.footprint_3d.emplace();  // the options of the 3D patch have their settings there
+  enable_effect(c, id);
+  return effect_switch_overrides(c, id);
 }
 
 }  // namespace modaltyre::contact

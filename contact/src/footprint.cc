@@ -108,6 +108,15 @@ FootprintResult solve_patch(const TyreModel& model, PatchOperator op, const Load
   return detail::patch_result(model, op, load, s, {});
 }
 
+double max_window_m(const TyreConfig& c) {
+  return std::min(M_PI * c.outer_radius_m, 20000 * c.mesh.unit_length_m);
+}
+
+double suggested_window_mm(const TyreConfig& c) {
+  const double next_mm = std::ceil(1.5 * c.mesh.window_m * 1e2) * 10;
+  return std::min(next_mm, std::floor(max_window_m(c) * 1e3));
+}
+
 namespace detail {
 
 FootprintResult patch_result(const TyreModel& model, const PatchOperator& op, const LoadCase& load,
@@ -126,9 +135,11 @@ FootprintResult patch_result(const TyreModel& model, const PatchOperator& op, co
   if (s.active.front() || s.active.back()) {
     std::ostringstream msg;
     msg << "contact reached the edge of the candidate window (+-"
-        << 0.5e3 * model.config.mesh.window_m << " mm): increase contact.window_mm";
+        << 0.5e3 * model.config.mesh.window_m << " mm): increase contact.window_mm (e.g. to "
+        << suggested_window_mm(model.config) << ")";
     r.message = msg.str();
     r.status = SolveStatus::failed;
+    r.window_exceeded = true;
     return r;
   }
   r.status = SolveStatus::converged;

@@ -34,7 +34,7 @@ FootprintResult solve_at_width(const TyreModel& model, const PatchOperator& op,
   }
   std::unique_ptr<ground::PressureSinkage> law;
   if (g.soil()) {
-    law = g.normal_law(b);
+    law = g.normal_law(b, in.slip);
     P.law = law.get();
     P.area_m2.resize(m);
     for (int i = 0; i < m; ++i)

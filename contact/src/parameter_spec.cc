@@ -1,5 +1,6 @@
 #include "modaltyre/contact/parameter_spec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -106,6 +107,22 @@ std::vector<ParameterSpec> make_parameter_catalogue() {
   std::vector<ParameterSpec> out = tyre_scalars();
   for (const auto& e : effect_catalogue()) {
     for (const auto& p : e.parameters) {
+      if (e.is_option()) {
+        // An option's key: its reader checks what a config states; discover searches the
+        // effect's range. A tyre scalar validate calibrates (modal.pneumatic_share,
+        // footprint_3d.crown.exponent) keeps its entry and gains the fit range.
+        const std::optional<SearchRange> fit =
+            p.fitted ? std::optional<SearchRange>(logistic_search(p.min, p.max)) : std::nullopt;
+        auto it = std::find_if(out.begin(), out.end(),
+                               [&](const ParameterSpec& q) { return q.key == p.option.key; });
+        if (it != out.end()) {
+          it->fit = fit;
+        } else {
+          out.push_back(
+              {p.option.key, p.unit, std::nullopt, std::nullopt, fit, p.option.get, p.option.set});
+        }
+        continue;
+      }
       const EffectParameterRef ref = p.ref;
       out.push_back(
           {e.key(p), p.unit, ValueRange{p.min, p.max}, std::nullopt,

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "modaltyre/contact/footprint.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/unilateral_contact.h"
 #include "patch3d_operators.h"
@@ -45,7 +46,7 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
   // rigid); on the model's own kernels the model's operator, whose spectra every load shares.
   const bool own = physics.kernels == nullptr && physics.carcass_scale == 1.0;
   carcass_ = std::make_shared<const solvers::WeightedToeplitzCompliance>(
-      carcass_compliance_operator(model_, own ? nullptr : &kernels_));
+      carcass_compliance_operator(model_, own ? nullptr : &kernels_, physics.rolling));
   const auto& s = settings_;
   if (!(s.tread_width_m > 0) || !(s.lateral_cell_m > 0)) {
     throw std::invalid_argument("3D patch: tread width and lateral cell must be > 0");
@@ -88,6 +89,24 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
     soil_ = physics.soil;
     for (double th : model_.theta) cell_area_m2_.push_back(dy * ds * std::cos(th));
   }
+  symmetric_ = !physics.rolling;
+  if (physics.tread_coupling_m > 0) {
+    if (physics.soil)
+      throw std::invalid_argument("3D patch: a soil under a coupled tread is not built");
+    if (physics.rolling) {
+      // The non-symmetric cell problem would need a dense LU of every cell in contact.
+      throw std::invalid_argument(
+          "3D patch: a coupled tread on a rolling carcass is not built (every cell in contact "
+          "would be one non-symmetric dense system)");
+    }
+    std::vector<double> cos_theta;
+    for (double th : model_.theta) {
+      cos_theta.push_back(std::cos(th));
+      t_tangential_.push_back(std::sin(th) * std::sin(th) / k_tangential_cell_);
+    }
+    tread_ = std::make_shared<const detail::CoupledTread>(k_radial_cell_, physics.tread_coupling_m,
+                                                          ds, dy, sections(), n, cos_theta);
+  }
   if (s.lateral_belt.enabled) {
     if (n > kMaxLateralBeltColumns) {
       throw std::invalid_argument("3D patch: a lateral belt supports at most " +
@@ -97,9 +116,14 @@ Patch3d::Patch3d(const TyreModel& model, Patch3dSettings settings, const Patch3d
   }
 }
 
-Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
+Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm,
+                             std::span<const double> warm_cells) const {
   const SidewallMembrane& wall = settings_.sidewall;
-  if (!wall.enabled || pressure_Pa_ == 0) return solve_loaded(load_N, warm, {});
+  if (!wall.enabled || pressure_Pa_ == 0) {
+    if (warm_cells.empty()) return solve_loaded(load_N, warm, {});
+    const std::unique_ptr<detail::SectionLaws> laws = section_laws(warm_cells);
+    return solve_loaded(load_N, warm, {}, laws.get());
+  }
   // Fixed point x = G(x) on the sections' lost sidewall loads x = e ds (sidewall_membrane.h):
   // G solves the contact with x fixed and returns e(u) ds from the sections' carcass
   // displacement u_i = delta - sag_i - d_i = (C (F + x))_i. Converged when the gap offset moves
@@ -114,9 +138,12 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(S), g(S);
   std::vector<Eigen::VectorXd> xs, gs;  // recent iterates and their images, oldest first
   std::vector<char> active(warm.begin(), warm.end());
+  // One set of section laws for every step: each starts from the lateral patterns the last one
+  // ended with (the steps' solutions differ little), not from every cell.
+  const std::unique_ptr<detail::SectionLaws> laws = section_laws(warm_cells);
   bool mixed = false;  // x came from Anderson mixing, not from a plain step
   for (int it = 1; it <= settings_.max_sidewall_iterations; ++it) {
-    Patch3dResult r = solve_loaded(load_N, active, x);
+    Patch3dResult r = solve_loaded(load_N, active, x, laws.get(), true);
     r.sidewall_iterations = it;
     if (!r.ok()) return r;
     active = r.section_active;
@@ -139,7 +166,9 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
     const double change = carcass_product(carcass, g - x).cwiseAbs().maxCoeff();
     if (change <= settings_.sidewall_tolerance * std::abs(r.sinking_m)) {
       r.message += "; sidewall softening converged in " + std::to_string(it) + " steps";
-      return r;
+      const std::vector<double> f = r.cell_force_N;
+      const double delta = r.sinking_m;
+      return finish(load_N, f, delta, x, std::move(r));  // the whole result of this step
     }
     xs.push_back(x);
     gs.push_back(g);
@@ -170,16 +199,39 @@ Patch3dResult Patch3d::solve(double load_N, std::span<const char> warm) const {
   return r;
 }
 
+std::unique_ptr<detail::SectionLaws> Patch3d::section_laws(
+    std::span<const double> warm_cells) const {
+  auto laws = soil_ ? detail::soil_sections(t_, z_m_, *soil_, cell_area_m2_)
+              : G_.size()
+                  ? detail::flexible_sections(t_, z_m_, G_, contact_options(model_).max_iterations)
+                  : detail::rigid_sections(t_, z_m_);
+  const int S = sections(), ny = columns();
+  if (static_cast<int>(warm_cells.size()) == S * ny) {
+    for (int i = 0; i < S; ++i) {
+      const double* f = warm_cells.data() + std::size_t(i) * ny;
+      if (std::any_of(f, f + ny, [](double v) { return v > 0; })) laws->start_from(i, f);
+    }
+  }
+  return laws;
+}
+
 Patch3dResult Patch3d::solve_loaded(double load_N, std::span<const char> warm,
-                                    const Eigen::VectorXd& extra) const {
+                                    const Eigen::VectorXd& extra, detail::SectionLaws* laws,
+                                    bool sections_only) const {
+  return tread_ ? solve_coupled(load_N, warm, extra, laws, sections_only)
+                : solve_reduced(load_N, warm, extra, laws, sections_only);
+}
+
+Patch3dResult Patch3d::solve_reduced(double load_N, std::span<const char> warm,
+                                     const Eigen::VectorXd& extra, detail::SectionLaws* given_laws,
+                                     bool sections_only) const {
   MODALTYRE_CHECK(load_N > 0, "load must be positive");
   const int S = sections(), ny = columns();
   const solvers::WeightedToeplitzCompliance carcass = *carcass_;
   const auto opt = contact_options(model_);
-  const std::unique_ptr<detail::SectionLaws> laws =
-      soil_       ? detail::soil_sections(t_, z_m_, *soil_, cell_area_m2_)
-      : G_.size() ? detail::flexible_sections(t_, z_m_, G_, opt.max_iterations)
-                  : detail::rigid_sections(t_, z_m_);
+  std::unique_ptr<detail::SectionLaws> own_laws;
+  if (!given_laws) own_laws = section_laws();
+  detail::SectionLaws* const laws = given_laws ? given_laws : own_laws.get();
   Patch3dResult r;
   r.load_N = load_N;
   // The extra carcass loads' gap offset C extra (sidewall softening; empty: none).
@@ -197,7 +249,23 @@ Patch3dResult Patch3d::solve_loaded(double load_N, std::span<const char> warm,
     return 0.5 * F.dot(carcass_product(carcass, F)) + linear + energies(F, false);
   };
 
+  // The rolling carcass's merit: sum_i min(c_i F_i, w_i)^2, w_i the section's gap at F and the
+  // approach delta (the load equation holds along every step).
+  auto natural_residual = [&](const Eigen::VectorXd& F, double delta) {
+    const Eigen::VectorXd CF = carcass_product(carcass, F);
+    double sum = 0;
+    for (int i = 0; i < S; ++i) {
+      const double Fi = std::max(F(i), 0.0);
+      double w = model_.sag(i) + CF(i) + laws->approach(i, Fi) - delta;
+      if (loaded) w += offset(i);
+      const double r = std::min(t_[i] / ny * Fi, w);
+      sum += r * r;
+    }
+    return sum;
+  };
+
   Eigen::VectorXd F;  // current iterate (empty before the first step)
+  double delta = 0;   // its approach (the rolling carcass's iteration)
   std::vector<char> active(warm.begin(), warm.end());
   const double gtol_rel = model_.config.solver.gap_tolerance;
   for (int it = 1; it <= settings_.max_pattern_iterations; ++it) {
@@ -215,6 +283,7 @@ Patch3dResult Patch3d::solve_loaded(double load_N, std::span<const char> warm,
     p.compliance_operator = &op;
     p.initial_gap = gap0;
     p.load_N = load_N;
+    p.symmetric = symmetric_;
     const solvers::ContactSolution s = solvers::solve_unilateral_contact(p, opt, active);
     r.contact_iterations += s.iterations;
     if (!s.ok()) {
@@ -241,17 +310,29 @@ Patch3dResult Patch3d::solve_loaded(double load_N, std::span<const char> warm,
       msg << "converged in " << it << " lateral-pattern steps (" << r.contact_iterations
           << " active-set iterations)";
       r.message = msg.str();
-      return finish(load_N, f, s.approach_m, extra, std::move(r));
+      return finish(load_N, f, s.approach_m, extra, std::move(r), sections_only);
     }
-    // Newton step on J towards the step's forces, backtracked while J does not decrease.
+    // Newton step on J towards the step's forces, backtracked while J does not decrease (the
+    // rolling carcass: while the natural residual does not).
     if (F.size() == 0) {
       F = Fh;
-    } else {
+      delta = s.approach_m;
+    } else if (symmetric_) {
       const Eigen::VectorXd dF = Fh - F;
       const double j0 = objective(F);
       double alpha = 1;
       for (int k = 0; k < 40 && objective(F + alpha * dF) > j0; ++k) alpha *= 0.5;
       F += alpha * dF;
+    } else {
+      const Eigen::VectorXd dF = Fh - F;
+      const double dd = s.approach_m - delta, m0 = natural_residual(F, delta);
+      double alpha = 1;
+      for (int k = 0;
+           k < 40 && natural_residual(F + alpha * dF, delta + alpha * dd) > (1 - 1e-4 * alpha) * m0;
+           ++k)
+        alpha *= 0.5;
+      F += alpha * dF;
+      delta += alpha * dd;
     }
     energies(F, true);
   }
@@ -301,13 +382,16 @@ std::vector<Patch3dResult> Patch3d::solve_all(const std::vector<double>& loads_N
   return out;
 }
 
-double Patch3d::lateral_half_width(const Patch3dResult& r, int i) const {
+double Patch3d::lateral_half_width(const Patch3dResult& r, int i,
+                                   const std::vector<double>& shift) const {
   // The level function e_j = d_i - z_j - v_ij across the section (tread compression inside,
-  // minus the gap outside), linear between the column centres: its outermost zero on each
-  // side; the tread edge if the outermost column is in contact.
+  // minus the gap outside; v the shift), linear between the column centres: its outermost zero
+  // on each side; the tread edge if the outermost column is in contact.
   const int ny = columns();
   const double half = 0.5 * settings_.tread_width_m;
-  auto level = [&](int j) { return r.section_approach_m[i] - z_m_[j] - r.belt_deflection(i, j); };
+  auto level = [&](int j) {
+    return r.section_approach_m[i] - z_m_[j] - shift[std::size_t(i) * ny + j];
+  };
   auto in_contact = [&](int j) { return r.cell_force(i, j) > 0; };
   int lo = 0, hi = ny - 1;
   while (lo < ny && !in_contact(lo)) ++lo;
@@ -317,13 +401,37 @@ double Patch3d::lateral_half_width(const Patch3dResult& r, int i) const {
     const double ein = level(in), eout = level(out);
     return y_m_[in] + ein / (ein - eout) * (y_m_[out] - y_m_[in]);
   };
+  if (!G_.size()) {
+    // A laterally rigid belt (the coupled tread): the crown itself between the column centres,
+    // the shift linear, so that without a shift the edge is the reduction's crown inverse.
+    const double d = r.section_approach_m[i];
+    auto shift_at = [&](int j) { return shift[std::size_t(i) * ny + j]; };
+    auto crown_edge = [&](int in, int out) {
+      const double y0 = std::abs(y_m_[in]), y1 = std::abs(y_m_[out]);
+      auto phi = [&](double y) {
+        const double s = shift_at(in) + (y - y0) / (y1 - y0) * (shift_at(out) - shift_at(in));
+        return d - settings_.crown.drop_m(y) - s;
+      };
+      double a = y0, b = y1;
+      for (int k = 0; k < 100 && b - a > 1e-15; ++k)
+        (phi(0.5 * (a + b)) > 0 ? a : b) = 0.5 * (a + b);
+      return 0.5 * (a + b);
+    };
+    auto outer = [&](int j) {  // the outermost column in contact: up to the tread edge
+      return std::min(settings_.crown.half_width_m(d - shift_at(j)), half);
+    };
+    const double right = hi == ny - 1 ? outer(hi) : crown_edge(hi, hi + 1);
+    const double left = lo == 0 ? outer(lo) : crown_edge(lo, lo - 1);
+    return 0.5 * (right + left);
+  }
   const double right = hi == ny - 1 ? half : edge(hi, hi + 1);
   const double left = lo == 0 ? -half : edge(lo, lo - 1);
   return 0.5 * (right - left);
 }
 
 Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, double delta,
-                              const Eigen::VectorXd& extra, Patch3dResult r) const {
+                              const Eigen::VectorXd& extra, Patch3dResult r,
+                              bool sections_only) const {
   const int S = sections(), ny = columns();
   const TyreModel& m = model_;
   r.sections = S;
@@ -339,7 +447,7 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
   if (F(0) > 0 || F(S - 1) > 0) {
     std::ostringstream msg;
     msg << "contact reached the edge of the candidate window (+-" << 0.5e3 * m.config.mesh.window_m
-        << " mm): increase contact.window_mm";
+        << " mm): increase contact.window_mm (e.g. to " << suggested_window_mm(m.config) << ")";
     r.message = msg.str();
     r.status = SolveStatus::failed;
     return r;
@@ -352,6 +460,14 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
   if (loaded) r.sidewall_force_N.assign(extra.data(), extra.data() + S);
   r.section_approach_m.resize(S);
   r.section_active.resize(S);
+  if (sections_only) {  // a fixed-point step: the sections' approaches are all it reads
+    for (int i = 0; i < S; ++i) {
+      r.section_approach_m[i] = delta - m.sag(i) - CF(i);
+      r.section_active[i] = F(i) > 0;
+    }
+    r.status = std::isfinite(r.sinking_m) ? SolveStatus::converged : SolveStatus::failed;
+    return r;
+  }
   // The belt's lateral deflection of each cell, G f_i (zero for the laterally rigid belt).
   r.belt_deflection_m.assign(std::size_t(S) * ny, 0.0);
   if (G_.size()) {
@@ -360,6 +476,13 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
       const Eigen::Map<const Eigen::VectorXd> fi(&f[std::size_t(i) * ny], ny);
       Eigen::Map<Eigen::VectorXd>(&r.belt_deflection_m[std::size_t(i) * ny], ny) = G_ * fi;
     }
+  }
+  // What else separates a cell from the road at its section's approach: the belt's deflection
+  // and, for the coupled tread, the compression its neighbours' forces cause (u - own f).
+  std::vector<double> shift = r.belt_deflection_m, u, own, radial;
+  if (tread_) {
+    coupled_compression(f, u, own, radial);
+    for (std::size_t k = 0; k < shift.size(); ++k) shift[k] += u[k] - own[k] * f[k];
   }
   double total = 0, comp = 0, pen = 0;
   if (soil_) r.soil_depth_m.assign(std::size_t(S) * ny, 0.0);
@@ -374,8 +497,9 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
         r.soil_depth_m[std::size_t(i) * ny + j] = soil;
         if (fij > 0) r.soil_sinkage_m = std::max(r.soil_sinkage_m, soil);
       }
+      const double tread = tread_ ? u[std::size_t(i) * ny + j] : t_[i] * fij;
       const double g = m.sag(i) + z_m_[j] + CF(i) + r.belt_deflection_m[std::size_t(i) * ny + j] +
-                       t_[i] * fij + soil - delta;
+                       tread + soil - delta;
       total += fij;
       comp = std::max(comp, std::abs(fij * g));
       pen = std::max(pen, -g);
@@ -396,21 +520,30 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
   }
   H.apply(0, S, 0, S, fr.data(), ft.data(), ur.data(), ut.data());
   const double R0 = m.config.outer_radius_m;
-  auto cell_x = [&](int i, double fij) {
+  // A cell's surface: its radial tread compression (the coupled tread's, with the neighbours'
+  // share, or its own spring's) and its tangential shear.
+  auto cell_x = [&](int i, double fij, std::size_t cell) {
     const double c = std::cos(m.theta[i]), sn = std::sin(m.theta[i]);
-    return (R0 - ur[i] - fij * c / k_radial_cell_) * sn +
-           (ut[i] + fij * sn / k_tangential_cell_) * c;
+    const double radial_compression = tread_ ? radial[cell] : fij * c / k_radial_cell_;
+    return (R0 - ur[i] - radial_compression) * sn + (ut[i] + fij * sn / k_tangential_cell_) * c;
   };
   r.x_m.resize(S);
   r.dx_m.resize(S);
   r.half_width_m.assign(S, 0.0);
+  for (int i = 0; i < S; ++i) {
+    for (int j = 0; j < ny && F(i) > 0; ++j) {
+      const std::size_t a = std::size_t(i) * ny + j;
+      if (f[a] > 0) r.force_moment_Nm += f[a] * cell_x(i, f[a], a);
+    }
+  }
   const double half = 0.5 * settings_.tread_width_m;
   for (int i = 0; i < S; ++i) {
-    r.x_m[i] = cell_x(i, 0.0);
+    // The belt's position (the cell's without its tread).
+    r.x_m[i] = (R0 - ur[i]) * std::sin(m.theta[i]) + ut[i] * std::cos(m.theta[i]);
     r.dx_m[i] = m.unit_length_m * std::cos(m.theta[i]);
     if (!(F(i) > 0)) continue;
-    if (G_.size()) {
-      r.half_width_m[i] = lateral_half_width(r, i);
+    if (G_.size() || tread_) {
+      r.half_width_m[i] = lateral_half_width(r, i, shift);
     } else {
       r.half_width_m[i] = std::min(settings_.crown.half_width_m(r.section_approach_m[i]), half);
     }
@@ -430,9 +563,10 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
     }
     if (first < 0) continue;
     auto edge = [&](int in, int out) {
-      const double pin = r.section_approach_m[in] - z_m_[j] - r.belt_deflection(in, j);
-      const double pout = r.section_approach_m[out] - z_m_[j] - r.belt_deflection(out, j);
-      const double xin = cell_x(in, f[std::size_t(in) * ny + j]), xout = cell_x(out, 0.0);
+      const std::size_t a = std::size_t(in) * ny + j, b = std::size_t(out) * ny + j;
+      const double pin = r.section_approach_m[in] - z_m_[j] - shift[a];
+      const double pout = r.section_approach_m[out] - z_m_[j] - shift[b];
+      const double xin = cell_x(in, f[a], a), xout = cell_x(out, 0.0, b);
       return xin + pin / (pin - pout) * (xout - xin);
     };
     ColumnEdges& e = r.column_edges[j];
@@ -445,29 +579,6 @@ Patch3dResult Patch3d::finish(double load_N, const std::vector<double>& f, doubl
                                                                      : SolveStatus::failed;
   if (!r.ok()) r.message = "3D patch result is not finite";
   return r;
-}
-
-PressureMap pressure_map(const Patch3dResult& r, int margin) {
-  PressureMap map;
-  int first = -1, last = -1;
-  for (int i = 0; i < r.sections; ++i) {
-    if (r.section_force_N[i] > 0) {
-      if (first < 0) first = i;
-      last = i;
-    }
-  }
-  if (first < 0) return map;
-  first = std::max(0, first - margin);
-  last = std::min(r.sections - 1, last + margin);
-  map.first_section = first;
-  for (int i = first; i <= last; ++i) map.x_mm.push_back(r.x_m[i] * 1e3);
-  for (int j = 0; j < r.columns; ++j) {
-    map.y_mm.push_back(r.y_m[j] * 1e3);
-    std::vector<double> row;
-    for (int i = first; i <= last; ++i) row.push_back(r.pressure_Pa(i, j) * 1e-3);
-    map.pressure_kPa.push_back(std::move(row));
-  }
-  return map;
 }
 
 }  // namespace modaltyre::contact

@@ -8,10 +8,12 @@ namespace modaltyre::contact {
 
 namespace {
 
-/// The `lateral_belt:` section (its presence enables the lateral belt).
+/// The `lateral_belt:` section (its presence enables the lateral belt unless enabled: false,
+/// which states its values for the lateral_belt effect, effects.h).
 LateralBelt read_lateral_belt(const ConfigSection& s, const Patch3dSettings& p) {
   LateralBelt b;
-  b.enabled = true;
+  b.enabled = s.boolean("enabled", true);
+  b.given = true;
   // The cord laminate's lateral D_y = D_x tan^4(theta) >= 10 N m x 0.018 for belt angles >= 20
   // degrees (docs/validation.md, "Lateral belt bending"); softer, the belt is a membrane that
   // lets the patch run out of the candidate window (0.1 N m: exit 1).
@@ -40,16 +42,27 @@ LateralBelt read_lateral_belt(const ConfigSection& s, const Patch3dSettings& p) 
 }
 
 /// The `sidewall:` section (its presence enables the sidewalls' pneumatic softening,
-/// sidewall_membrane.h).
+/// sidewall_membrane.h, unless enabled: false, which states the chord for the
+/// sidewall_softening effect, effects.h). The meridian's length is given as
+/// meridian_length_mm or as chord_over_length (c0 / L, what the effect fits).
 SidewallMembrane read_sidewall(const ConfigSection& s) {
   SidewallMembrane m;
-  m.enabled = true;
-  for (const char* key : {"meridian_chord_mm", "meridian_length_mm"}) {
-    if (!s.has(key)) s.fail(key, "required in footprint_3d.sidewall");
+  m.enabled = s.boolean("enabled", true);
+  m.given = true;
+  if (!s.has("meridian_chord_mm")) s.fail("meridian_chord_mm", "required in footprint_3d.sidewall");
+  const bool length = s.has("meridian_length_mm"), ratio = s.has("chord_over_length");
+  if (length && ratio) {
+    s.fail("chord_over_length",
+           "give the meridian's length once: meridian_length_mm or "
+           "chord_over_length");
+  }
+  if (m.enabled && !length && !ratio) {
+    s.fail("meridian_length_mm", "required in footprint_3d.sidewall (or chord_over_length)");
   }
   m.chord_m = s.positive("meridian_chord_mm", 0, 1e4) * 1e-3;
-  m.length_m = s.positive("meridian_length_mm", 0, 1e4) * 1e-3;
-  if (!(m.length_m > m.chord_m)) {
+  if (ratio) m.length_m = m.chord_m / s.positive("chord_over_length", 0.8, 0.999);
+  if (length) m.length_m = s.positive("meridian_length_mm", 0, 1e4) * 1e-3;
+  if ((length || ratio) && !(m.length_m > m.chord_m)) {
     s.fail("meridian_length_mm", "the meridian must be longer than its chord (meridian_chord_mm)");
   }
   return m;

@@ -44,6 +44,7 @@ void CellCompliance::apply(int r0, int nr, int c0, int nc,
   for (int a = std::max(r0, c0); a < std::min(r0 + nr, c0 + nc); ++a) {
     Y.row(a - r0) += t_[a / n] * X.row(a - c0);
   }
+  if (tread_) tread_->add_product(r0, nr, c0, nc, X, Y);
   if (!G_) return;
   // Each section's lateral belt, on the sections the row and column blocks share.
   for (int q = std::max(q0, s0); q <= std::min(q1, s1); ++q) {
@@ -180,18 +181,21 @@ class Rigid final : public SectionLaws {
   void cell_forces(int i, double d, double* f) const override {
     for (std::size_t j = 0; j < z_.size(); ++j) f[j] = std::max(d - z_[j], 0.0) / t_[i];
   }
+  void start_from(int i, const double* f) override {
+    // The loaded cells are the n lowest drops (the sorted-drop law).
+    const int loaded =
+        static_cast<int>(std::count_if(f, f + zs_.size(), [](double v) { return v > 0; }));
+    n_[i] = std::max(min_cells_, loaded);
+  }
+  double approach(int i, double F) override {
+    int n = 0;
+    return pattern_at(i, F, n);
+  }
   double energy(int i, double F, bool update) override {
-    // psi(F): the fewest cells n whose approach d = (F t + sum of their drops) / n does not
-    // reach the next drop.
-    const int ny = static_cast<int>(zs_.size());
     const double t = t_[i];
     F = std::max(F, 0.0);
-    int n = min_cells_;
-    double d = (F * t + prefix_[n]) / n;
-    while (n < ny && d > zs_[n]) {
-      ++n;
-      d = (F * t + prefix_[n]) / n;
-    }
+    int n = 0;
+    const double d = pattern_at(i, F, n);
     if (update) n_[i] = n;
     // Psi(F) = d F - sum_j (d - z_j)_+^2 / (2 t)  (integration by parts of psi dF).
     double sq = 0;
@@ -200,6 +204,21 @@ class Rigid final : public SectionLaws {
   }
 
  private:
+  // psi(F): the fewest cells n whose approach d = (F t + sum of their drops) / n does not reach
+  // the next drop; returns d.
+  double pattern_at(int i, double F, int& n) const {
+    const int ny = static_cast<int>(zs_.size());
+    const double t = t_[i];
+    F = std::max(F, 0.0);
+    n = min_cells_;
+    double d = (F * t + prefix_[n]) / n;
+    while (n < ny && d > zs_[n]) {
+      ++n;
+      d = (F * t + prefix_[n]) / n;
+    }
+    return d;
+  }
+
   std::vector<double> t_, zs_, z_, prefix_;
   int min_cells_ = 1;
   std::vector<int> n_;
@@ -220,6 +239,18 @@ class Flexible final : public SectionLaws {
   void reduced(int i, double& c, double& o) const override {
     c = sec_[i].c;
     o = sec_[i].o;
+  }
+  double approach(int i, double F) override {
+    if (!(F > 0)) return zmin_;
+    const Section& s = sec_[i];
+    const double d = s.c * F + s.o;
+    if (consistent(i, F, d, 0.0)) return d;
+    return solve_section(i, F).approach_m;
+  }
+  void start_from(int i, const double* f) override {
+    std::vector<char> loaded(z_.size());
+    for (std::size_t j = 0; j < loaded.size(); ++j) loaded[j] = f[j] > 0;
+    set_pattern(i, loaded);
   }
   bool consistent(int i, double F, double d, double tol) const override {
     if (!(F > 0)) return d <= zmin_ + tol;
@@ -252,20 +283,37 @@ class Flexible final : public SectionLaws {
       }
       return 0;
     }
+    // On the current pattern, when it holds at F: the section's affine law, f_A = d a - b at
+    // d = c F + o, and M_AA f_A = d 1 - z_A, so 1/2 f^T M f + z^T f = (d F + z_A^T f_A) / 2
+    // without a contact solve (the same KKT point the solve would find).
+    const Section& s = sec_[i];
+    const double d = s.c * F + s.o;
+    if (consistent(i, F, d, 0.0)) {
+      double zf = 0;
+      for (std::size_t q = 0; q < s.cells.size(); ++q) zf += z_(s.cells[q]) * (d * s.a(q) - s.b(q));
+      return 0.5 * (d * F + zf);
+    }
+    const solvers::ContactSolution sol = solve_section(i, F);
+    if (update) set_pattern(i, sol.active);
+    const Eigen::VectorXd Mf = G_ * sol.force + t_[i] * sol.force;
+    return 0.5 * sol.force.dot(Mf) + z_.dot(sol.force);
+  }
+
+ private:
+  // The section's small contact problem (min 1/2 f^T M f + z^T f, f >= 0, sum f = F).
+  solvers::ContactSolution solve_section(int i, double F) const {
     solvers::ContactProblem p;
     p.compliance = G_;
     p.compliance.diagonal().array() += t_[i];
     p.initial_gap = z_;
     p.load_N = F;
-    const auto sol = solvers::solve_unilateral_contact(p, opt_, sec_[i].active);
+    auto sol = solvers::solve_unilateral_contact(p, opt_, sec_[i].active);
     if (!sol.ok()) {
       throw std::runtime_error("3D patch: a section's lateral contact failed: " + sol.message);
     }
-    if (update) set_pattern(i, sol.active);
-    return 0.5 * sol.force.dot(p.compliance * sol.force) + z_.dot(sol.force);
+    return sol;
   }
 
- private:
   struct Section {
     std::vector<char> active;
     std::vector<int> cells;

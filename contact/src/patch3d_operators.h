@@ -1,5 +1,6 @@
 #pragma once
 // Compliance operators of the 3D patch (patch3d.h), internal to the contact library.
+#include <Eigen/Dense>
 #include <vector>
 
 #include "modaltyre/solvers/compliance_operator.h"
@@ -23,19 +24,45 @@ class DiagonalShifted final : public solvers::ComplianceOperator {
   std::vector<double> d_;
 };
 
+/// The radial compliance of the shear-coupled tread between cells (patch3d_tread.cc):
+/// cos theta_i cos theta_k T((i, j), (k, l)), T the Pasternak layer's Green's function on the
+/// cell grid (unbounded along the road, free edges across it).
+class CoupledTread {
+ public:
+  CoupledTread(double k_cell_N_m, double coupling_m, double ds_m, double dy_m, int sections,
+               int columns, std::vector<double> cos_theta);
+  double entry(int a, int b) const;
+  /// T's lag-0 entry of column j (without the cos^2 theta weight): a cell's compliance to its
+  /// own force.
+  double own(int j) const { return own_[j]; }
+  /// Y += (this operator)(r0 .. r0+nr-1, c0 .. c0+nc-1) X.
+  void add_product(int r0, int nr, int c0, int nc, const Eigen::Ref<const Eigen::MatrixXd>& X,
+                   Eigen::Ref<Eigen::MatrixXd> Y) const;
+
+ private:
+  int columns_;
+  std::vector<double> cos_;
+  Eigen::MatrixXd modes_;                        ///< phi_m(j) at (j, m), orthonormal
+  std::vector<std::vector<double>> lags_;        ///< g_m at lags 0, 1, ...
+  std::vector<std::vector<double>> both_sides_;  ///< g_m at lags -(L-1) .. L-1
+  std::vector<double> own_;
+};
+
 /// The cell compliance: cells indexed i * columns + j, the carcass between the sections'
-/// resultants, each cell's own tread t_i and, if given, the section's lateral belt compliance G,
-///   C_(ij)(kl) = C_carcass(i, k) + [i = k] (t_i [j = l] + G(j, l)).
+/// resultants, each cell's own tread t_i and, if given, the section's lateral belt compliance G
+/// and the shear-coupled tread (then t_i is the tread's tangential part alone),
+///   C_(ij)(kl) = C_carcass(i, k) + [i = k] (t_i [j = l] + G(j, l)) + T_coupled((ij), (kl)).
 class CellCompliance final : public solvers::ComplianceOperator {
  public:
   CellCompliance(const solvers::ComplianceOperator& carcass, int columns, std::vector<double> t,
-                 const Eigen::MatrixXd* lateral = nullptr)
-      : carcass_(carcass), columns_(columns), t_(std::move(t)), G_(lateral) {}
+                 const Eigen::MatrixXd* lateral = nullptr, const CoupledTread* tread = nullptr)
+      : carcass_(carcass), columns_(columns), t_(std::move(t)), G_(lateral), tread_(tread) {}
   int size() const override { return carcass_.size() * columns_; }
   double entry(int a, int b) const override {
     const int i = a / columns_, k = b / columns_;
     double c = carcass_.entry(i, k) + (a == b ? t_[i] : 0.0);
     if (G_ && i == k) c += (*G_)(a % columns_, b % columns_);
+    if (tread_) c += tread_->entry(a, b);
     return c;
   }
   void apply(int r0, int nr, int c0, int nc, const Eigen::Ref<const Eigen::MatrixXd>& X,
@@ -45,7 +72,8 @@ class CellCompliance final : public solvers::ComplianceOperator {
   const solvers::ComplianceOperator& carcass_;
   int columns_;
   std::vector<double> t_;
-  const Eigen::MatrixXd* G_;  ///< not owned; null for the laterally rigid belt
+  const Eigen::MatrixXd* G_;   ///< not owned; null for the laterally rigid belt
+  const CoupledTread* tread_;  ///< not owned; null for independent tread springs
 };
 
 }  // namespace modaltyre::contact::detail

@@ -11,6 +11,7 @@
 //                     section (min 1/2 f^T M f + z^T f, f >= 0, 1^T f = F).
 #include <Eigen/Dense>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "modaltyre/ground/pressure_sinkage.h"
@@ -30,6 +31,14 @@ class SectionLaws {
   /// Psi_i(F), the section's least energy at force F [J]; `update` also moves section i's
   /// pattern to the one at F.
   virtual double energy(int i, double F, bool update) = 0;
+  /// Starts section i's pattern from the cells a previous solution loads (f: columns entries,
+  /// some > 0), a warm start; the default keeps the law's own first pattern.
+  virtual void start_from(int /*i*/, const double* /*f*/) {}
+  /// psi_i(F), the section's approach at force F (its pattern unchanged): the merit of the
+  /// non-symmetric (rolling) iteration. Not for a soil (rolling on a soil is refused).
+  virtual double approach(int /*i*/, double /*F*/) {
+    throw std::logic_error("3D patch: this section law has no approach for a rolling carcass");
+  }
 };
 
 std::unique_ptr<SectionLaws> rigid_sections(const std::vector<double>& t,

@@ -1,5 +1,6 @@
 #include "modaltyre/contact/sidewall_membrane.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -14,14 +15,25 @@ void SidewallMembrane::validate() const {
 
 double meridian_half_angle(double ratio) {
   if (!(ratio > 0 && ratio < 1)) return std::numeric_limits<double>::quiet_NaN();
-  // sin(a) / a falls from 1 to 0 on (0, pi).
+  // h(a) = sin(a) - ratio a: positive below the root, negative above it on (0, pi) (sin(a) / a
+  // falls from 1 to 0). Newton steps from the small-angle root sqrt(6 (1 - ratio)), kept inside
+  // the bracket by bisection: 4-6 steps where plain bisection takes about 55 (the 3D patch's
+  // fixed point evaluates this for every section at every step).
   double lo = 0, hi = M_PI;
+  double a = std::min(std::sqrt(6 * (1 - ratio)), 0.5 * M_PI);
   for (int k = 0; k < 200; ++k) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid <= lo || mid >= hi) break;
-    (std::sin(mid) / mid > ratio ? lo : hi) = mid;
+    const double h = std::sin(a) - ratio * a;
+    (h > 0 ? lo : hi) = a;
+    if (h == 0) return a;
+    double next = a - h / (std::cos(a) - ratio);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - a) <= 4 * std::numeric_limits<double>::epsilon() * a || next <= lo ||
+        next >= hi) {
+      return next;
+    }
+    a = next;
   }
-  return 0.5 * (lo + hi);
+  return a;
 }
 
 double sidewall_pull_N_per_m(double pressure_Pa, double length_m, double chord_m) {

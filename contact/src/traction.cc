@@ -2,13 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "modaltyre/contact/ground_patch.h"
+#include "modaltyre/contact/rolling_radius.h"
+#include "modaltyre/contact/validity.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/ground/rigid_wheel.h"
 #include "traction3d.h"
 #include "traction_anderson.h"
+#include "traction_kinematics.h"
 
 namespace modaltyre::contact {
 namespace {
@@ -36,7 +40,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   // The tread's stick stiffness per unit area on a rigid road: G / h (seed 001 eq. 6-9).
   const TreadSprings unit = tread_springs(model.config.tread, 1.0, 1.0);
   const std::unique_ptr<ground::ShearLaw> shear = g.shear_law(unit.tangential_N_m);
-  const double rho = ground::speed_ratio(c.slip);
+  const double rho = speed_ratio_over_R0(c, R0);
   if (st.depth_m.size() != std::size_t(m)) st.depth_m.assign(m, 0.0);
   if (st.fx_N.size() != std::size_t(m)) st.fx_N.assign(m, 0.0);
   std::vector<double> z_max(m), offset(m), slope(m);
@@ -60,12 +64,17 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     in.gap_offset_m = offset;
     // Bekker's b = min(width, contact length) iterates with the rolling state (fixed per step).
     in.bekker_width_m = st.bekker_width_m > 0 ? st.bekker_width_m : width;
+    in.slip = rolling_radius_slip(c, R0);
     in.fixed_bekker_width = true;
     const double b_used = in.bekker_width_m;
     in.warm_active = st.active;
     in.initial_force_N = st.force_N;
     const FootprintResult f = solve_ground_patch(model, op, {normal_load, 0}, g, in);
-    if (!f.ok()) return case_result(c, pass, f.message, f.status);
+    if (!f.ok()) {
+      TractionResult r = case_result(c, pass, f.message, f.status);
+      r.window_exceeded = f.window_exceeded;
+      return r;
+    }
     st.active = f.active;
     st.bekker_width_m = std::min(width, f.contact_length_m);
     const double b_change = std::abs(st.bekker_width_m - b_used);
@@ -86,9 +95,11 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
         if (first < 0) first = i;
         last = i;
       }
+    // The shear along the deformed contour from the front edge (traction_kinematics.h).
     const double t = (f.front_edge_x_m - x[last]) / (x[last + 1] - x[last]);
-    const double s_front =
-        R0 * (model.theta[last] + t * (model.theta[last + 1] - model.theta[last]));
+    const double theta_front = model.theta[last] + t * (model.theta[last + 1] - model.theta[last]);
+    detail::ContourSlip path(R0, rho, f.front_edge_x_m,
+                             surface[last] + t * (surface[last + 1] - surface[last]), theta_front);
     ground::ShearPoint point;
     double j_prev = 0, H = 0, Rc = 0, shear_v = 0, T = 0;
     const double axle_height = R0 - f.sinking_m;
@@ -97,12 +108,12 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       if (f.active[i]) fz_unit[i] = f.units[k++].fz_N;  // units: the active ones, in order
     st.force_N = fz_unit;
     for (int i = last; i >= first; --i) {
+      const double j = path.advance(x[i], surface[i], model.theta[i]);
       if (!f.active[i]) continue;
       const double dx = ds * std::cos(model.theta[i]);
       const double area = width * dx;
       const double fz = fz_unit[i];
       const double sigma = fz / area;  // the normal stress (vertical force over road area)
-      const double j = (s_front - R0 * model.theta[i]) - rho * (f.front_edge_x_m - x[i]);
       const double tau = shear->advance(point, sigma, j - j_prev);
       j_prev = j;
       const double fs = tau * area;
@@ -150,8 +161,9 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       r.tyre_deflection_m = f.sinking_m - f.soil_sinkage_m;
       r.z_max_m = std::max(prior, *std::max_element(depth.begin(), depth.end()));
       r.rut_depth_m =
-          g.soil() ? g.normal_law(std::max(f.bekker_width_m, 1e-6))->rebound_depth_m(r.z_max_m)
-                   : 0.0;
+          g.soil()
+              ? g.normal_law(std::max(f.bekker_width_m, 1e-6), in.slip)->rebound_depth_m(r.z_max_m)
+              : 0.0;
       r.thrust_N = H;
       r.motion_resistance_N = Rc;
       r.drawbar_pull_N = dp;
@@ -192,18 +204,77 @@ TractionResult rigid_pass(const TyreModel& model, const ground::GroundSettings& 
   return r;
 }
 
+// What a case's row adds to its pass (docs/soil.md sections 5.1-5.4): the slip's reference, the
+// validity, the motion resistance by its parts (compaction from the pass, the tyre's flexing
+// loss on the road, the soil's bulldozing ahead of the contact beyond the incoming surface), the
+// drawbar pull DP = H - their sum, and the tractive efficiency DP V / (T omega), V / omega = rho
+// R0.
+void finish_case(TractionResult& r, const TractionCase& c, const TyreModel& model,
+                 const ground::GroundSettings& g, const TractionOptions& o, const RollingRadius& re,
+                 double incoming_rut_m) {
+  const TyreConfig& config = model.config;
+  const double R0 = config.outer_radius_m;
+  r.rolling_radius_m = re.radius_m;
+  r.loaded_radius_m = re.loaded_radius_m;
+  r.slip_radius_m = c.slip_radius_m > 0 ? c.slip_radius_m : R0;
+  r.window_m = config.mesh.window_m;
+  if (!r.ok()) {
+    r.valid = false;
+    r.validity = "not computed: " + r.message;
+    return;
+  }
+  const Validity v = validity_on_soil(config, r.tyre_deflection_m, r.soil_sinkage_m,
+                                      r.entry_angle_rad, r.exit_angle_rad, o.rigid);
+  r.valid = v.valid;
+  r.validity = v.reason;
+  r.compaction_resistance_N = r.motion_resistance_N;
+  const auto flex = o.flexing_resistance_N.find(c.load_N);
+  r.flexing_resistance_N = o.rigid || flex == o.flexing_resistance_N.end() ? 0.0 : flex->second;
+  if (g.model == ground::GroundModel::bekker) {
+    const double width =
+        !o.rigid && config.footprint_3d ? config.footprint_3d->tread_width_m : config.tread.width_m;
+    const ground::JanosiParams& shear = g.soil_shear();
+    r.bulldozing_resistance_N =
+        ground::bulldozing_resistance_N(g.bulldozing, shear.cohesion_kPa, shear.friction_angle_deg,
+                                        width, r.soil_sinkage_m - incoming_rut_m);
+  }
+  r.motion_resistance_N =
+      r.compaction_resistance_N + r.flexing_resistance_N + r.bulldozing_resistance_N;
+  r.drawbar_pull_N = r.thrust_N - r.motion_resistance_N;
+  if (r.torque_Nm > 0 && r.drawbar_pull_N > 0)
+    r.tractive_efficiency = r.drawbar_pull_N * speed_ratio_over_R0(c, R0) * R0 / r.torque_Nm;
+}
+
 }  // namespace
+
+double rolling_radius_slip(const TractionCase& c, double R0_m) {
+  if (!(c.rolling_radius_m > 0)) return c.slip;
+  const double v_over_omega_re = speed_ratio_over_R0(c, R0_m) * R0_m / c.rolling_radius_m;
+  return v_over_omega_re <= 1 ? 1 - v_over_omega_re : 1 / v_over_omega_re - 1;
+}
+
+double speed_ratio_over_R0(const TractionCase& c, double R0_m) {
+  return ground::speed_ratio(c.slip) * (c.slip_radius_m > 0 ? c.slip_radius_m / R0_m : 1.0);
+}
 
 TractionResult traction_pass(const TyreModel& model, const ground::GroundSettings& g,
                              const TractionCase& c, double prior, const TractionOptions& o) {
-  if (o.rigid) return rigid_pass(model, g, c, 1, prior);
-  if (model.config.footprint_3d) {
+  const double R0 = model.config.outer_radius_m;
+  TractionResult r;
+  if (o.rigid) {
+    r = rigid_pass(model, g, c, 1, prior);
+  } else if (model.config.footprint_3d) {
     const detail::Rolling3d rolling(model, g);
     detail::Rolling3dState st;
-    return rolling.pass(c, 1, std::vector<double>(rolling.columns(), prior), o, st);
+    r = rolling.pass(c, 1, std::vector<double>(rolling.columns(), prior), o, st);
+  } else {
+    RollingState st;
+    r = rolling_pass(model, vertical_from_horizontal(model), g, c, 1, prior, o, st);
   }
-  RollingState st;
-  return rolling_pass(model, vertical_from_horizontal(model), g, c, 1, prior, o, st);
+  RollingRadius rigid;  // the rigid cylinder rolls on the road at its radius
+  if (o.rigid) rigid.radius_m = rigid.loaded_radius_m = R0;
+  finish_case(r, c, model, g, o, rigid, 0.0);
+  return r;
 }
 
 std::vector<TractionResult> steady_traction(const TyreModel& model, const ground::GroundSettings& g,
@@ -222,8 +293,36 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
   const std::size_t P = std::max(1, o.passes);
   std::vector<RollingState> states(P);
   std::vector<detail::Rolling3dState> states3d(P);
-  for (const auto& c : cases) {
-    double prior = 0;
+  // The rolling radius per load (the rigid cylinder's is its radius).
+  const double R0 = model.config.outer_radius_m;
+  std::map<double, RollingRadius> radii;
+  for (const auto& given : cases) {
+    TractionCase c = given;
+    auto it = radii.find(c.load_N);
+    if (it == radii.end()) {
+      RollingRadius rr;
+      if (o.rigid) {
+        rr.status = SolveStatus::converged, rr.radius_m = R0, rr.loaded_radius_m = R0;
+      } else {
+        rr = rolling_radius(model, c.load_N);
+      }
+      it = radii.emplace(c.load_N, rr).first;
+    }
+    const RollingRadius& re = it->second;
+    if (o.slip_reference == SlipReference::rolling) {
+      if (!re.ok()) {
+        for (int p = 1; p <= o.passes; ++p) {
+          TractionResult r = detail::case_result(c, p, re.message);
+          r.window_exceeded = re.window_exceeded;
+          finish_case(r, c, model, g, o, re, 0.0);
+          out.push_back(std::move(r));
+        }
+        continue;
+      }
+      c.slip_radius_m = re.radius_m;
+    }
+    if (re.ok()) c.rolling_radius_m = re.radius_m;
+    double prior = 0, prior_rut = 0;
     std::vector<double> prior_columns;  // 3D: the track's memory per column
     for (int p = 1; p <= o.passes; ++p) {
       auto run = [&] {
@@ -239,7 +338,9 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
       if (!r.ok() && warm) r = run();
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
+      finish_case(r, c, model, g, o, re, prior_rut);
       prior = r.z_max_m;
+      prior_rut = r.rut_depth_m;
       prior_columns = r.column_z_max_m;
       out.push_back(std::move(r));
       if (!out.back().ok()) break;

@@ -6,12 +6,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "modaltyre/contact/footprint.h"
 #include "modaltyre/ground/rigid_wheel.h"
 #include "modaltyre/solvers/toeplitz_compliance.h"
 #include "modaltyre/solvers/unilateral_contact.h"
 #include "patch3d_operators.h"
 #include "patch3d_soil.h"
 #include "traction_anderson.h"
+#include "traction_kinematics.h"
 
 namespace modaltyre::contact::detail {
 namespace {
@@ -190,7 +192,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   const double width = patch_.settings().tread_width_m, dy = width / ny;
   const TreadSprings unit = tread_springs(m.config.tread, 1.0, 1.0);
   const std::unique_ptr<ground::ShearLaw> shear = ground_.shear_law(unit.tangential_N_m);
-  const double rho = ground::speed_ratio(c.slip);
+  const double rho = speed_ratio_over_R0(c, R0);
   std::vector<double> prior(K, 0.0);
   if (!prior_m.empty())
     for (int j = 0; j < ny; ++j)
@@ -229,7 +231,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     if (!(normal_load > 0))
       return case_result(c, pass, "the shear's vertical component exceeds the load");
     const double b_used = st.bekker_width_m > 0 ? st.bekker_width_m : width;
-    const std::unique_ptr<ground::PressureSinkage> law = ground_.normal_law(b_used);
+    const std::unique_ptr<ground::PressureSinkage> law =
+        ground_.normal_law(b_used, rolling_radius_slip(c, R0));
     SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_, zmax);
     if (st.approach_m.size() == std::size_t(S))
       for (int i = 0; i < S; ++i) laws.set_approach(i, std::max(st.approach_m[i], laws.floor(i)));
@@ -278,10 +281,16 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
           last = i;
         }
       if (first < 0) continue;
-      if (first == 0 || last == S - 1)
-        return case_result(c, pass,
-                           "contact reached the edge of the candidate window: increase "
-                           "contact.window_mm");
+      if (first == 0 || last == S - 1) {
+        TractionResult r =
+            case_result(c, pass,
+                        "contact reached the edge of the candidate window (+-" +
+                            std::to_string(int(0.5e3 * m.config.mesh.window_m)) +
+                            " mm): increase contact.window_mm (e.g. to " +
+                            std::to_string(int(suggested_window_mm(m.config))) + ")");
+        r.window_exceeded = true;
+        return r;
+      }
       columns_in_contact += class_weight_[k];
       // The level e - rut (the compression beyond the surface inside, minus the gap outside),
       // linear to its zero between the last cell in contact and the next.
@@ -295,21 +304,26 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       const double tf = edge_fraction(last, last + 1), tr = edge_fraction(first, first - 1);
       const double x_front = x[at(last)] + tf * (x[at(last + 1)] - x[at(last)]);
       const double x_rear = x[at(first)] + tr * (x[at(first - 1)] - x[at(first)]);
-      const double s_front = R0 * (m.theta[last] + tf * (m.theta[last + 1] - m.theta[last]));
+      const double theta_front = m.theta[last] + tf * (m.theta[last + 1] - m.theta[last]);
       length = std::max(length, x_front - x_rear);
       front_max = std::max(front_max, x_front);
       if (x_rear < rear_min) rear_min = x_rear, rear_depth = depth[at(first)];
       ground::ShearPoint point;
       double j_prev = 0;
       const double w = class_weight_[k];
+      // The shear along the column's deformed contour from its front edge
+      // (traction_kinematics.h).
+      ContourSlip path(R0, rho, x_front,
+                       surface[at(last)] + tf * (surface[at(last + 1)] - surface[at(last)]),
+                       theta_front);
       for (int i = last; i >= first; --i) {
         const std::size_t a = at(i);
+        const double j = path.advance(x[a], surface[a], m.theta[i]);
         if (!(f[a] > 0)) continue;
         const double slope =
             (surface[at(i - 1)] - surface[at(i + 1)]) / (x[at(i + 1)] - x[at(i - 1)]);
         const double area = area_m2_[i];
         const double sigma = f[a] / area;
-        const double j = (s_front - R0 * m.theta[i]) - rho * (x_front - x[a]);
         const double tau = shear->advance(point, sigma, j - j_prev);
         j_prev = j;
         const double fs = tau * area;

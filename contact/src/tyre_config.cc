@@ -153,6 +153,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
   c.tread.width_m = scalar(tread, "tread", "contact_width_mm", 140) * 1e-3;
   c.tread.poisson = tread.number("poisson_ratio", c.tread.poisson, 0.0, 0.5);
   c.uncertainty.tread_modulus_rel_std = tread.number("modulus_std_percent", 0, 0, 50) / 100;
+  c.uncertainty.tread_width_rel_std = tread.number("contact_width_std_percent", 0, 0, 50) / 100;
 
   const ConfigSection mesh = root.section("contact");
   c.mesh.unit_length_m = mesh.number("unit_length_mm", 0.5, 0.01, 50) * 1e-3;
@@ -205,7 +206,7 @@ TyreConfig read_tyre_config(const ConfigTree& tree) {
     c.footprint_3d = read_patch3d_settings(root.section("footprint_3d"));
     // What the 3D patch does not model is refused, not ignored.
     for (const auto& e : effect_catalogue()) {
-      if (c.effects.enabled(e.id) && !e.refused_with_3d.empty()) {
+      if (!e.is_option() && c.effects.enabled(e.id) && !e.refused_with_3d.empty()) {
         root.section("effects").section(e.name).fail(
             "enabled", "cannot be combined with footprint_3d: " + e.refused_with_3d);
       }

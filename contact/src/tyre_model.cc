@@ -119,7 +119,8 @@ namespace {
 /// C_ij = sum_ab w_a(i) Ks_ab(i - j) w_b(j) + d_i delta_ij, Ks the symmetrised kernels.
 solvers::WeightedToeplitzCompliance weighted_operator(const modal::LagKernels& kernels,
                                                       const std::vector<double>& theta,
-                                                      std::vector<double> diagonal) {
+                                                      std::vector<double> diagonal,
+                                                      bool as_given = false) {
   std::vector<double> cosv(theta.size()), sinv(theta.size());
   for (std::size_t i = 0; i < theta.size(); ++i) {
     cosv[i] = std::cos(theta[i]);
@@ -128,8 +129,12 @@ solvers::WeightedToeplitzCompliance weighted_operator(const modal::LagKernels& k
   // Projections of seed 001 eq. (12): a vertical force has radial part f cos theta and
   // tangential part f sin theta; the upward displacement is u_r cos theta + u_t sin theta.
   return solvers::WeightedToeplitzCompliance(
-      solvers::LagConvolution2x2(symmetrised_kernels(kernels), kernels.lags), std::move(cosv),
-      std::move(sinv), std::move(diagonal));
+      solvers::LagConvolution2x2(
+          as_given ? std::array<std::vector<double>, 4>{kernels.r_from_r, kernels.r_from_t,
+                                                        kernels.t_from_r, kernels.t_from_t}
+                   : symmetrised_kernels(kernels),
+          kernels.lags),
+      std::move(cosv), std::move(sinv), std::move(diagonal));
 }
 
 }  // namespace
@@ -149,9 +154,10 @@ solvers::WeightedToeplitzCompliance vertical_compliance_operator(const TyreModel
 }
 
 solvers::WeightedToeplitzCompliance carcass_compliance_operator(const TyreModel& m,
-                                                                const modal::LagKernels* kernels) {
+                                                                const modal::LagKernels* kernels,
+                                                                bool as_given) {
   if (kernels == nullptr) return m.carcass_operator_prototype();
-  return weighted_operator(*kernels, m.theta, std::vector<double>(m.theta.size(), 0.0));
+  return weighted_operator(*kernels, m.theta, std::vector<double>(m.theta.size(), 0.0), as_given);
 }
 
 Eigen::MatrixXd carcass_vertical_compliance(const modal::LagKernels& K,

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "modaltyre/core/command_files.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre {
@@ -40,8 +41,7 @@ int write_all(int fd, const std::string& content) {
 bool is_stream_target(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) return false;
-  return S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode) ||
-         S_ISBLK(st.st_mode);
+  return S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode) || S_ISBLK(st.st_mode);
 }
 
 // /dev/stdout, /dev/fd/N and /proc/self/fd/N name a descriptor of this process; when it is
@@ -68,12 +68,10 @@ void write_file_atomically(const std::string& path, const std::string& content) 
     write_in_place(path, content);
     return;
   }
-  // A symbolic link stays a link: the file it points to is replaced.
+  // A symbolic link stays a link: the file it points to is replaced (or created, when the link
+  // dangles), the one CommandFiles compared with the command's other files.
   fs::path target(path);
-  if (fs::is_symlink(target, ec)) {
-    const fs::path resolved = fs::weakly_canonical(target, ec);
-    if (!ec) target = resolved;
-  }
+  if (fs::is_symlink(fs::symlink_status(target, ec))) target = final_target(path);
   static std::atomic<unsigned> counter{0};
   std::string tmp_name = ".";
   tmp_name.append(target.filename().string())

@@ -9,14 +9,28 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The absolute, lexically normal path with the symbolic links of its existing part resolved.
-fs::path normal_form(const std::string& path) {
+/// Links followed at most (Linux's own limit on a path's symbolic links, MAXSYMLINKS).
+constexpr int kMaxLinkHops = 40;
+
+}  // namespace
+
+std::string final_target(const std::string& path) {
   std::error_code ec;
-  const fs::path abs = fs::absolute(fs::path(path), ec);
-  if (ec) return fs::path(path).lexically_normal();
-  const fs::path w = fs::weakly_canonical(abs, ec);
-  return ec ? abs.lexically_normal() : w;
+  fs::path p = fs::absolute(fs::path(path), ec);
+  if (ec) return fs::path(path).lexically_normal().string();
+  for (int hop = 0; hop <= kMaxLinkHops; ++hop) {
+    // The folders' links resolved (they exist or the output is refused), then the last part's.
+    const fs::path folder = fs::weakly_canonical(p.parent_path(), ec);
+    if (!ec) p = folder / p.filename();
+    if (!fs::is_symlink(fs::symlink_status(p, ec))) break;
+    const fs::path to = fs::read_symlink(p, ec);
+    if (ec) break;
+    p = to.is_absolute() ? to : p.parent_path() / to;
+  }
+  return p.lexically_normal().string();
 }
+
+namespace {
 
 // Streams (/dev/stdout, /dev/null, a pipe) are written in place and read nothing back: two
 // outputs to /dev/null do not clobber each other.
@@ -36,7 +50,7 @@ bool same_file(const std::string& a, const std::string& b) {
     const bool eq = fs::equivalent(a, b, ec);
     if (!ec) return eq;
   }
-  return normal_form(a) == normal_form(b);
+  return final_target(a) == final_target(b);
 }
 
 void CommandFiles::input(const std::string& path, const std::string& role) {

@@ -103,13 +103,39 @@ void check_csv_file(const std::string& path, std::uintmax_t max_bytes) {
   check_input_file(path, "a CSV file", "CSV files", max_bytes);
 }
 
-// The next line that is neither blank nor a comment, trimmed; false at the end of the file.
-bool next_content_line(std::istream& in, std::string& line, int& line_no) {
+// The first byte of `text` that is not UTF-8, as "\xNN"; empty when it is all UTF-8.
+std::string first_non_utf8(const std::string& text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t n = utf8_sequence(text, i);
+    if (n == 0) return hex_byte(static_cast<unsigned char>(text[i]));
+    i += n;
+  }
+  return "";
+}
+
+void refuse_non_utf8(const std::string& text, const std::string& path, int line_no,
+                     const std::string& where) {
+  const std::string byte = first_non_utf8(text);
+  if (byte.empty()) return;
+  throw InputError(
+      {path, line_no, where},
+      "byte " + byte + " is not UTF-8 (a Latin-1 or Windows-1252 file?): save the file as UTF-8");
+}
+
+// The next line that is neither blank nor a comment, trimmed; false at the end of the file. A
+// comment is text like the rest of the file: UTF-8, as the YAML files are (a Latin-1 degree
+// sign in a comment is the file's encoding, which its numbers' units may share).
+bool next_content_line(std::istream& in, std::string& line, int& line_no, const std::string& path) {
   std::string raw;
   while (std::getline(in, raw)) {
     ++line_no;
     if (line_no == 1 && raw.size() >= 3 && raw.compare(0, 3, "\xEF\xBB\xBF") == 0) raw.erase(0, 3);
     line = trim(raw);
+    if (line_no == 1 && line.size() >= 2 &&
+        (line.compare(0, 2, "\xFF\xFE") == 0 || line.compare(0, 2, "\xFE\xFF") == 0)) {
+      return true;  // UTF-16: read_csv names it
+    }
+    if (!line.empty() && line[0] == '#') refuse_non_utf8(line, path, line_no, "comment");
     if (!line.empty() && line[0] != '#') return true;
   }
   return false;
@@ -203,7 +229,7 @@ CsvTable read_csv(const std::string& path, const CsvSchema& schema) {
   const ColumnName data_column = [&](std::size_t i) {
     return i < table.columns_.size() ? table.columns_[i] : header_column(i);
   };
-  while (next_content_line(in, line, line_no)) {
+  while (next_content_line(in, line, line_no, path)) {
     if (line_no == 1 && line.size() >= 2 &&
         (line.compare(0, 2, "\xFF\xFE") == 0 || line.compare(0, 2, "\xFE\xFF") == 0)) {
       throw InputError({path, 1, ""}, "is UTF-16 encoded; save it as UTF-8 (\"CSV UTF-8\")");
@@ -310,7 +336,7 @@ std::vector<std::string> read_csv_header(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::string line;
     int line_no = 0;
-    if (!in || !next_content_line(in, line, line_no)) return {};
+    if (!in || !next_content_line(in, line, line_no, path)) return {};
     return split(line, path, line_no, [](std::size_t) { return std::string(); });
   } catch (const InputError&) {
     return {};

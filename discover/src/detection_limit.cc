@@ -129,30 +129,31 @@ LimitFinder::Path LimitFinder::path(EffectId id) const {
   const contact::EffectInfo& info = contact::effect_info(id);
   p.effect.effects = {id};
   p.effect.parameters = effect_parameters(id);
-  const contact::TyreConfig defaults{};  // catalogue defaults, as fit_variant starts from them
-  for (const auto& fp : p.effect.parameters) p.start.push_back(fp.get(defaults));
+  // The catalogue defaults, as fit_variant starts a new effect from them.
+  for (const auto& fp : p.effect.parameters) p.start.push_back(fp.catalogue_default);
   if (p.effect.parameters.empty()) {
     p.reason = "it has no fitted parameter";
     return p;
   }
   const FreeParameter& s = p.effect.parameters[p.strength];
   const double d = p.start[p.strength];
-  if (id == EffectId::contact_width) {
-    // Its width replaces the config's fixed one at every strength: no value switches it off.
-    p.reason = "no value of " + s.key + " switches it off (its width replaces the config's)";
+  if (info.strength == contact::EffectStrength::none) {
+    // E.g. contact_width: its width replaces the config's fixed one at every strength.
+    p.reason = "no value of " + s.key + " switches it off (" + info.no_strength + ")";
     return p;
   }
-  p.inverse = id == EffectId::soil_compliance;
+  p.inverse = info.strength == contact::EffectStrength::inverse;
+  p.off = info.neutral;
   if (p.inverse) {
     p.m_max = d / s.min;
-  } else if (s.min <= 0 && d > 0) {
+  } else if (d > p.off && s.max > p.off) {
     p.m_max = (s.max - p.off) / (d - p.off);
   } else {
-    p.reason = "its strength " + s.key + " has no zero in its range";
+    p.reason = "its strength " + s.key + " does not grow from " + std::to_string(p.off) +
+               " to its default in its range";
     return p;
   }
   p.b = jacobian(ev_, base_, p.effect, p.start, entries_);
-  (void)info;
   return p;
 }
 

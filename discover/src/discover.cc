@@ -39,25 +39,20 @@ std::size_t distinct(const MeasurementSet& d, const std::string& condition) {
 // constant factor is confounded with the re-fitted baseline scalars).
 std::string untestable_reason(EffectId id, const MeasurementSet& d, const TyreConfig& config) {
   const auto& info = contact::effect_info(id);
-  if (config.footprint_3d && !info.refused_with_3d.empty()) {
-    return "not on the 3D patch: " + info.refused_with_3d;
-  }
+  const std::string refusal = contact::effect_refusal(config, id);
+  if (!refusal.empty()) return refusal;
   const std::string& regime = condition_info(info.regime).name;
   const std::size_t n = distinct(d, regime);
-  switch (id) {
-    case EffectId::load_stiffening:
-    case EffectId::tread_coupling:
-    case EffectId::belt_flattening:
-    case EffectId::contact_width:
-      return n >= 3 ? "" : "needs at least 3 distinct loads";
-    case EffectId::rolling_speed: {
-      bool rolling = false;
-      for (const auto& r : d.rows) rolling = rolling || r.conditions.speed_kmh > 0;
-      return rolling ? "" : "no row is rolling (speed_kmh > 0)";
-    }
-    default:
-      return n >= 2 ? "" : regime + " does not vary in the data";
+  if (info.regime == ConditionId::load_N) {
+    // A load law needs a trend, not only a level the re-fitted scalars absorb.
+    return n >= 3 ? "" : "needs at least 3 distinct loads";
   }
+  if (id == EffectId::rolling_speed) {
+    bool rolling = false;
+    for (const auto& r : d.rows) rolling = rolling || r.conditions.speed_kmh > 0;
+    return rolling ? "" : "no row is rolling (speed_kmh > 0)";
+  }
+  return n >= 2 ? "" : regime + " does not vary in the data";
 }
 
 struct Stage {
@@ -339,7 +334,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     std::vector<EffectId> ids;
     std::vector<CandidateScore> scores;
     for (const auto& info : contact::effect_catalogue()) {
-      if (config.effects.enabled(info.id)) continue;  // already in the model
+      if (contact::effect_enabled(config, info.id)) continue;  // already in the model
       if (std::find(current.variant.effects.begin(), current.variant.effects.end(), info.id) !=
           current.variant.effects.end()) {
         continue;
@@ -425,8 +420,10 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     ne.name = contact::effect_info(ids[best]).name;
     const Stage& chosen = stages[best];
     const auto se = named_values(chosen.variant, chosen.fit.standard_errors, true);
+    const contact::EffectInfo& named_info = contact::effect_info(ids[best]);
     for (const auto& kv : named_values(chosen.variant, chosen.fit.values, true)) {
-      if (kv.first.rfind("effects." + ne.name + ".", 0) == 0) {
+      for (const auto& p : named_info.parameters) {  // this effect's keys (effects.*, options)
+        if (named_info.key(p) != kv.first) continue;
         ne.parameters[kv.first] = kv.second;
         ne.standard_errors[kv.first] = se.at(kv.first);
       }
@@ -459,7 +456,8 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   rep.final_parameters = named_values(current.variant, current.fit.values, false);
   fill_rows(data, baseline, current, rep.rows);
   for (auto id : current.variant.effects) {
-    rep.out_overrides.push_back("effects." + contact::effect_info(id).name + ".enabled=true");
+    for (auto& o : contact::effect_switch_overrides(current.fit.config, id))
+      rep.out_overrides.push_back(std::move(o));
   }
   for (const auto& kv : rep.final_parameters) {
     rep.out_overrides.push_back(kv.first + "=" + number_text(kv.second));

@@ -86,6 +86,7 @@ std::vector<FreeParameter> effect_parameters(EffectId id) {
     FreeParameter fp = make_parameter(info.key(p));
     fp.of_effect = true;
     fp.effect = id;
+    fp.catalogue_default = p.default_value;
     out.push_back(std::move(fp));
   }
   return out;
@@ -110,7 +111,7 @@ Variant make_variant(const TyreConfig& config, const std::vector<EffectId>& effe
 
 TyreConfig apply(const TyreConfig& base, const Variant& v, const std::vector<double>& values) {
   TyreConfig c = base;
-  for (auto id : v.effects) c.effects.enabled(id) = true;
+  for (auto id : v.effects) contact::enable_effect(c, id);
   for (std::size_t i = 0; i < v.parameters.size(); ++i) v.parameters[i].set(c, values[i]);
   return c;
 }
@@ -280,11 +281,10 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
     // Baseline scalars from the config; effect parameters from the best point of a small grid
     // (default, and two steps either side in the transformed variable) - one cheap evaluation
     // each, so that the local search starts in the right basin.
-    std::vector<int> fresh;       // parameters of effects base does not have on
-    const TyreConfig defaults{};  // catalogue defaults live in a default-constructed config
+    std::vector<int> fresh;  // parameters of effects base does not have on
     for (int i = 0; i < k; ++i) {
-      const bool is_new = ps[i].of_effect && !base.effects.enabled(ps[i].effect);
-      u0(i) = to_search(ps[i], ps[i].get(is_new ? defaults : base));
+      const bool is_new = ps[i].of_effect && !contact::effect_enabled(base, ps[i].effect);
+      u0(i) = to_search(ps[i], is_new ? ps[i].catalogue_default : ps[i].get(base));
       if (is_new) fresh.push_back(i);
     }
     if (!fresh.empty()) {

@@ -190,6 +190,19 @@ std::string TyreWheel::refusal(const WheelInput& in, double h) const {
       return msg.str();
     }
   }
+  // The carcass's critical speed (transient::critical_speed_of(), docs/transient.md section 3a):
+  // a wheel spinning at or beyond it has no steady state in the model (a blow-up, not a tyre).
+  const modal::CriticalSpeed c = transient::critical_speed_of(*I.model);
+  if (std::abs(in.plane.spin_rad_s) * R0 >= c.speed_m_s) {
+    std::ostringstream msg;
+    msg.precision(4);
+    msg << "the wheel's circumferential speed |spin| R0 = "
+        << std::abs(in.plane.spin_rad_s) * R0 * 3.6 << " km/h is at or beyond the carcass's "
+        << "critical speed " << c.speed_km_h() << " km/h (order " << c.order
+        << ", its standing wave; docs/transient.md section 3a): the model has no steady rolling "
+           "state there";
+    return msg.str();
+  }
   return "";
 }
 

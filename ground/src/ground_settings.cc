@@ -1,8 +1,10 @@
 #include "modaltyre/ground/ground_settings.h"
 
 #include <stdexcept>
+#include <vector>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/ground/slip_sinkage.h"
 
 namespace modaltyre::ground {
 
@@ -20,8 +22,14 @@ const char* to_string(GroundModel model) {
   return "?";
 }
 
-std::unique_ptr<PressureSinkage> GroundSettings::normal_law(double b_m) const {
-  if (model == GroundModel::bekker) return std::make_unique<BekkerWong>(bekker, b_m);
+std::unique_ptr<PressureSinkage> GroundSettings::normal_law(double b_m, double slip) const {
+  if (model == GroundModel::bekker) {
+    auto law = std::make_unique<BekkerWong>(bekker, b_m);
+    const double f = slip_sinkage.factor(slip);
+    if (f == 1.0) return law;
+    slip_sinkage.validate();
+    return std::make_unique<SlipSinkageLaw>(std::move(law), f);
+  }
   if (model == GroundModel::kelvin_voigt) return std::make_unique<KelvinVoigtSoil>(kelvin_voigt);
   throw std::invalid_argument(std::string("ground model '") + to_string(model) +
                               "' is a rigid road, not a soil");
@@ -49,12 +57,52 @@ JanosiParams read_shear(const ConfigSection& s, const JanosiParams& fallback) {
   return p;
 }
 
+// A soil's keys must not be dropped in silence (issue 44): a block of another model than the one
+// stated, or soil keys without a model (which would leave the rigid road), are refused; a soil
+// model needs its normal law's keys stated (no default stands in for a soil).
+void check_blocks(const ConfigSection& s, const std::string& model) {
+  const bool stated = s.has("model");
+  for (const char* block : {"bekker", "kelvin_voigt"}) {
+    if (!s.has(block)) continue;
+    // Named at the block's first key present (its --set when it came from the command line).
+    const ConfigSection keys = s.section(block);
+    std::string at;
+    for (const char* k : {"n", "k_c", "k_phi", "E2_MPa", "eta2_kPa_s", "layer_mm", "elastic_share",
+                          "cohesion_kPa", "friction_angle_deg", "shear_modulus_K_mm", "unloading",
+                          "wong_reece", "slip_sinkage", "bulldozing"})
+      if (at.empty() && keys.has(k)) at = k;
+    auto fail = [&](const std::string& why) {
+      if (at.empty()) s.fail(block, why);
+      keys.fail(at, why);
+    };
+    if (!stated)
+      fail(std::string("a soil's keys (ground.") + block +
+           ") without ground.model: state `model: " + block +
+           "` (without it the ground is the rigid road and these keys would be dropped)");
+    if (model != block)
+      fail(std::string("ground.") + block + " is given but ground.model is " + model +
+           ": its keys would be dropped (remove the block, or set model: " + block + ")");
+  }
+}
+
+void require(const ConfigSection& section, const std::vector<const char*>& keys,
+             const std::string& model) {
+  for (const char* k : keys)
+    if (!section.has(k))
+      section.fail(k, "required with model: " + model +
+                          " (no default stands in for a soil's law; configs/soils/ gives "
+                          "published values)");
+}
+
 }  // namespace
 
 GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tree) {
   GroundSettings g;
   const std::string model =
       s.choice("model", "rigid", {"rigid", "profile", "kelvin_voigt", "bekker"});
+  check_blocks(s, model);
+  if (model == "bekker") require(s.section("bekker"), {"n", "k_c", "k_phi"}, model);
+  if (model == "kelvin_voigt") require(s.section("kelvin_voigt"), {"E2_MPa", "layer_mm"}, model);
   g.model = model == "profile"        ? GroundModel::profile
             : model == "kelvin_voigt" ? GroundModel::kelvin_voigt
             : model == "bekker"       ? GroundModel::bekker
@@ -76,13 +124,39 @@ GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tr
   if (!(g.bekker.k_c + g.bekker.k_phi > 0)) b.fail("k_phi", "k_c and k_phi cannot both be 0");
   g.bekker_shear = read_shear(b, g.bekker_shear);
   if (b.has("unloading")) {
+    // Wong's elastic unloading, on when its block is given (enabled: false keeps the block's
+    // values and the rigid-plastic soil: the switch of the discovery's soil_unloading).
     const ConfigSection u = b.section("unloading");
+    const bool on = u.boolean("enabled", true);
+    if (on && !u.has("k0") && !u.has("Au"))
+      u.fail("Au", "Wong's unloading needs k0 and Au stated (identify bevameter's cycles)");
     WongUnloading w;
     w.k0_kN_m3 = u.number("k0", 0, 0, 1e12);
     w.Au_kN_m4 = u.number("Au", 0, 0, 1e15);
     if (!(w.k0_kN_m3 + w.Au_kN_m4 > 0))
       u.fail("Au", "k0 and Au cannot both be 0 (leave out unloading: for a rigid-plastic soil)");
-    g.bekker.unloading = w;
+    if (on) g.bekker.unloading = w;
+  }
+  if (b.has("slip_sinkage")) {
+    const ConfigSection w = b.section("slip_sinkage");
+    SlipSinkage& ss = g.slip_sinkage;
+    ss.enabled = w.boolean("enabled", ss.enabled);
+    ss.k1 = w.number("k1", ss.k1, 0, 10);
+    ss.k2 = w.number("k2", ss.k2, 0, 0.99);
+  }
+  if (b.has("bulldozing")) {
+    const ConfigSection w = b.section("bulldozing");
+    g.bulldozing.enabled = w.boolean("enabled", g.bulldozing.enabled);
+    g.bulldozing.unit_weight_kN_m3 =
+        w.positive("unit_weight_kN_m3", g.bulldozing.unit_weight_kN_m3, 30);
+  }
+  if (b.has("wong_reece")) {
+    const ConfigSection w = b.section("wong_reece");
+    WongReeceStress& wr = g.wong_reece;
+    wr.enabled = w.boolean("enabled", wr.enabled);
+    wr.c1 = w.number("c1", wr.c1, 0, 1);
+    wr.c2 = w.number("c2", wr.c2, 0, 1);
+    wr.c3 = w.number("c3", wr.c3, 0, 0.99);
   }
 
   const ConfigSection kv = s.section("kelvin_voigt");
@@ -91,6 +165,9 @@ GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tr
   g.kelvin_voigt.layer_mm = kv.positive("layer_mm", g.kelvin_voigt.layer_mm, 1e5);
   g.kelvin_voigt.elastic_share = kv.positive("elastic_share", g.kelvin_voigt.elastic_share, 1);
   g.kelvin_voigt_shear = read_shear(kv, g.kelvin_voigt_shear);
+  const ConfigSection& own = g.model == GroundModel::kelvin_voigt ? kv : b;
+  g.shear_stated =
+      own.has("cohesion_kPa") && own.has("friction_angle_deg") && own.has("shear_modulus_K_mm");
   return g;
 }
 

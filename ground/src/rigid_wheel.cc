@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -46,14 +47,15 @@ struct Node {
 };
 
 // Nodes on [lo, hi] with theta = hi - (hi - lo) u^2 (clustered at hi, where the loading
-// stress rises from zero as a power of the distance).
-void add_segment(std::vector<Node>& nodes, double lo, double hi, int panels) {
+// stress rises from zero as a power of the distance), or at lo (`at_lo`: Wong and Reece's rear
+// region, whose stress falls to zero there as the front's mirror).
+void add_segment(std::vector<Node>& nodes, double lo, double hi, int panels, bool at_lo = false) {
   if (!(hi > lo)) return;
   const Gauss& g = gauss8();
   for (int p = 0; p < panels; ++p) {
     for (std::size_t k = 0; k < g.x.size(); ++k) {
-      const double u = (p + g.x[k]) / panels;
-      nodes.push_back({hi - (hi - lo) * u * u, g.w[k] / panels * 2 * (hi - lo) * u});
+      const double u = (p + g.x[k]) / panels, w = g.w[k] / panels * 2 * (hi - lo) * u;
+      nodes.push_back({at_lo ? lo + (hi - lo) * u * u : hi - (hi - lo) * u * u, w});
     }
   }
 }
@@ -68,7 +70,8 @@ double speed_ratio(double slip) { return slip >= 0 ? 1 - slip : 1 / (1 + slip); 
 
 RigidWheelResult rigid_wheel_at_sinkage(const PressureSinkage& law, const ShearLaw& shear,
                                         const RigidWheel& wheel, double z0, double slip,
-                                        double prior, bool rolling, int panels) {
+                                        double prior, bool rolling, const WongReeceStress& wr,
+                                        int panels) {
   RigidWheelResult r;
   r.slip = slip;
   r.sinkage_m = z0;
@@ -81,16 +84,35 @@ RigidWheelResult rigid_wheel_at_sinkage(const PressureSinkage& law, const ShearL
   const double theta1 = angle_at_depth(R, z0 - surface);
   r.entry_angle_rad = theta1;
   std::vector<Node> nodes;
+  // Wong and Reece's distribution (soil_options.h): the front's loading stress from theta1 down
+  // to theta_m, its mirror image on [theta2, theta_m]; otherwise the front down to the lowest
+  // point and the memory's unloading branch behind it.
+  const bool wong_reece = rolling && wr.enabled;
+  const double theta_m = wong_reece ? wr.peak_ratio(slip) * theta1 : 0.0;
   // Front: a kink (elastic reload) or a jump (rigid-plastic) where z passes the prior z_max.
-  if (prior > surface && prior < z0) {
-    const double tp = angle_at_depth(R, z0 - prior);
+  const double tp = prior > surface && prior < z0 ? angle_at_depth(R, z0 - prior) : -1.0;
+  if (tp > theta_m) {
     add_segment(nodes, tp, theta1, panels);
-    add_segment(nodes, 0, tp, panels);
+    add_segment(nodes, theta_m, tp, panels);
   } else {
-    add_segment(nodes, 0, theta1, panels);
+    add_segment(nodes, theta_m, theta1, panels);
   }
   double theta2 = -theta1;
-  if (rolling) {
+  // The rear region's angle theta maps onto the front's theta1 - (theta - theta2) q.
+  double q = 0;
+  if (wong_reece) {
+    theta2 = wr.c3 > 0 ? -wr.c3 * theta1 : 0.0;
+    q = theta_m > theta2 ? (theta1 - theta_m) / (theta_m - theta2) : 0.0;
+    if (!(q > 0)) {
+      // theta_m = theta2 = 0: no rear region
+    } else if (tp > theta_m) {
+      const double tp_rear = theta2 + (theta1 - tp) / q;  // the front's jump, mirrored
+      add_segment(nodes, theta2, tp_rear, panels, true);
+      add_segment(nodes, tp_rear, theta_m, panels, true);
+    } else {
+      add_segment(nodes, theta2, theta_m, panels, true);
+    }
+  } else if (rolling) {
     theta2 = z0 > r.rut_depth_m ? -angle_at_depth(R, z0 - r.rut_depth_m) : 0.0;
     add_segment(nodes, theta2, 0, panels);
   }
@@ -105,10 +127,18 @@ RigidWheelResult rigid_wheel_at_sinkage(const PressureSinkage& law, const ShearL
   ShearPoint point;
   double j_prev = 0;
   double W = 0, H = 0, Rc = 0, T = 0;
+  auto front_stress = [&](double th) {
+    const double z = z0 - R * (1 - std::cos(th));
+    return law.pressure_Pa(z, std::max(prior, z));
+  };
   for (const Node& n : nodes) {
-    const double z = z0 - R * (1 - std::cos(n.theta));
-    const double zmax = n.theta >= 0 ? std::max(prior, z) : r.z_max_m;
-    const double sigma = law.pressure_Pa(z, zmax);
+    double sigma = 0;
+    if (wong_reece) {
+      sigma = front_stress(n.theta >= theta_m ? n.theta : theta1 - (n.theta - theta2) * q);
+    } else {
+      const double z = z0 - R * (1 - std::cos(n.theta));
+      sigma = n.theta >= 0 ? front_stress(n.theta) : law.pressure_Pa(z, r.z_max_m);
+    }
     double tau = 0;
     if (rolling) {
       const double j = j_at(n.theta);
@@ -138,11 +168,11 @@ namespace {
 // Vertical equilibrium at a fixed Bekker width: the sinkage z0 with W(z0) = load.
 RigidWheelResult solve_sinkage(const PressureSinkage& law, const ShearLaw& shear,
                                const RigidWheel& wheel, double load_N, double slip, double prior,
-                               bool rolling) {
+                               bool rolling, const WongReeceStress& wr) {
   const double surface = prior > 0 ? law.rebound_depth_m(prior) : 0.0;
   const double R = wheel.radius_m;
   auto W = [&](double z0) {
-    return rigid_wheel_at_sinkage(law, shear, wheel, z0, slip, prior, rolling).vertical_N;
+    return rigid_wheel_at_sinkage(law, shear, wheel, z0, slip, prior, rolling, wr).vertical_N;
   };
   // The wheel may not sink beyond 80 degrees of contact (its axle would plough).
   const double deepest = surface + R * (1 - std::cos(80 * M_PI / 180));
@@ -174,7 +204,7 @@ RigidWheelResult solve_sinkage(const PressureSinkage& law, const ShearLaw& shear
     fail.message = msg.str();
     return fail;
   }
-  RigidWheelResult r = rigid_wheel_at_sinkage(law, shear, wheel, root.x, slip, prior, rolling);
+  RigidWheelResult r = rigid_wheel_at_sinkage(law, shear, wheel, root.x, slip, prior, rolling, wr);
   r.load_N = load_N;
   r.message = "converged";
   return r;
@@ -194,10 +224,19 @@ RigidWheelResult solve_wheel(const GroundSettings& ground, const RigidWheel& whe
     bad.message = "rigid wheel: load, radius and width must be > 0, slip in (-1, 1]";
     return bad;
   }
+  if (rolling && ground.wong_reece.enabled) {
+    try {
+      ground.wong_reece.validate();
+    } catch (const std::invalid_argument& e) {
+      bad.message = e.what();
+      return bad;
+    }
+  }
   const JanosiHanamoto shear(ground.soil_shear());
   auto at_width = [&](double b) {
-    const auto law = ground.normal_law(b);
-    RigidWheelResult r = solve_sinkage(*law, shear, wheel, load_N, slip, prior, rolling);
+    const auto law = ground.normal_law(b, rolling ? slip : 0.0);
+    RigidWheelResult r =
+        solve_sinkage(*law, shear, wheel, load_N, slip, prior, rolling, ground.wong_reece);
     r.bekker_width_m = b;
     return r;
   };

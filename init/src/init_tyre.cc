@@ -8,11 +8,13 @@
 #include <filesystem>
 #include <sstream>
 
+#include "init_checks.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
 #include "modaltyre/modal/ring_model.h"
+#include "order_alternatives.h"
 
 namespace modaltyre::init {
 namespace {
@@ -28,6 +30,16 @@ constexpr double kTreadDepth_mm = 8.0;
 /// Tread compound static modulus [MPa]: the low end of 3-8 MPa (Shore A 60-70 by Gent's
 /// relation: 3.7-5.6 MPa), as the SF-350 default.
 constexpr double kTreadModulus_MPa = 3.0;
+/// The assumptions' spreads, carried into --uncertainty's bands (issue 44 item 2), each a
+/// uniform range written as (b - a) / sqrt(12) of the nominal: the tread-width share's
+/// 0.70-0.85 (above, when the width is not given); the compound's Shore A 60-70 by Gent's
+/// relation, 3.7-5.6 MPa.
+constexpr double kTreadWidthShareLo = 0.70, kTreadWidthShareHi = 0.85;
+constexpr double kModulusLo_MPa = 3.7, kModulusHi_MPa = 5.6;
+/// The roundest crown the flat assumption's band spans (footprint_3d.crown.round_limit_radius_mm):
+/// the SF-350's crown radius calibrated on Table 3's measured widths on this structure (laterally
+/// rigid belt), 1058 mm on its 150 mm tread (docs/validation.md), scaled with the tread width.
+constexpr double kRoundCrown_mm = 1058, kRoundCrownTread_mm = 150;
 /// Tread loss factor: a passenger compound's 0.1-0.2 at 10-100 Hz.
 constexpr double kTreadTanDelta = 0.15;
 /// Modal damping ratio when none is given: the median of seed 001 Table 2's radial modes
@@ -46,6 +58,9 @@ constexpr double kWindowPerRadius = 1.22;
 /// passenger sidewalls: 0.45-0.55 of the height), the sidewall leaving the belt edge at 37.5 deg
 /// to the axis (30-45 deg), the carcass line 4 mm under the tread (belt plies and under-tread).
 constexpr double kWidestPointShare = 0.5, kEdgeAngle_deg = 37.5, kUnderTread_mm = 4;
+/// The TNO 205/60R15 sample file's BELT_MASS [kg] (docs/validation.md), the passenger belt the
+/// warning on a free test without --belt-mass-kg compares the ring's mass with.
+constexpr double kTnoBeltMass_kg = 7.698;
 /// Order proposals whose scores differ by less than this are near-ties (Akaike's margin).
 constexpr double kNearTie = 2.0;
 
@@ -77,31 +92,18 @@ void require_positive(double v, const std::string& option, const std::string& wh
 InitResult init_tyre(const InitInputs& in) {
   InitResult r;
   const TyreSize size = parse_tyre_size(in.size);
-  require_positive(in.test_pressure_kPa, "--test-pressure-kPa", "the modal test's pressure");
-  if (in.test_pressure_kPa < 10 || in.test_pressure_kPa > 2000)
-    throw InputError({"--test-pressure-kPa", 0, ""}, "outside 10-2000 kPa");
-  const double p_kPa = in.pressure_kPa > 0 ? in.pressure_kPa : in.test_pressure_kPa;
-  if (p_kPa < 10 || p_kPa > 2000)
-    throw InputError({"--pressure-kPa", 0, ""}, "outside 10-2000 kPa");
+  check_init_inputs(in, size);
+  const double p_kPa = in.pressure_kPa.value_or(in.test_pressure_kPa);
   const bool list_given = !in.frequencies_hz.empty();
-  if (list_given == !in.hammer_csv.empty()) {
-    throw InputError({"--frequencies", 0, ""},
-                     "give the modal data as exactly one of --frequencies F1,F2,... or --hammer "
-                     "FILE");
-  }
-  if (in.boundary != "free" && in.boundary != "rim-fixed")
-    throw InputError({"--boundary", 0, ""}, "'" + in.boundary + "' is not free or rim-fixed");
 
   const double R0_mm = size.outer_radius_mm();
-  const double tread_w = in.tread_width_mm > 0
-                             ? in.tread_width_mm
-                             : std::round(kTreadWidthShare * size.section_width_mm);
-  const double belt_w = in.belt_width_mm > 0 ? in.belt_width_mm : tread_w;
-  const double depth = in.tread_depth_mm > 0 ? in.tread_depth_mm : kTreadDepth_mm;
-  const double wheel = in.wheel_mass_kg > 0
-                           ? in.wheel_mass_kg
-                           : kWheelMass14_kg + kWheelMassPerInch_kg * (size.rim_diameter_in - 14);
-  const double fnomin = in.fnomin_N > 0 ? in.fnomin_N : kFnomin_N;
+  const double tread_w =
+      in.tread_width_mm.value_or(std::round(kTreadWidthShare * size.section_width_mm));
+  const double belt_w = in.belt_width_mm.value_or(tread_w);
+  const double depth = in.tread_depth_mm.value_or(kTreadDepth_mm);
+  const double wheel = in.wheel_mass_kg.value_or(kWheelMass14_kg + kWheelMassPerInch_kg *
+                                                                       (size.rim_diameter_in - 14));
+  const double fnomin = in.fnomin_N.value_or(kFnomin_N);
   auto decide = [&](const std::string& key, const std::string& value, const std::string& source) {
     r.decisions.push_back({key, value, source});
   };
@@ -130,6 +132,7 @@ InitResult init_tyre(const InitInputs& in) {
       // A free test's order 1 is scored at the held wheel; a rim-fixed one as it is.
       o.order1_in_fit = in.boundary == "rim-fixed";
       if (in.boundary == "free") o.wheel_mass_kg = wheel;
+      o.max_alternatives = kProposalsAsked;
       r.alternatives = modal::propose_orders(freqs, o);
       if (r.alternatives.empty())
         throw InputError({"--frequencies", 0, ""},
@@ -202,37 +205,41 @@ InitResult init_tyre(const InitInputs& in) {
         << "\n";
     decide("modal.orders", list(o_list),
            r.orders_proposed ? "proposed (ring dispersion)" : "input");
-    // The near-ties the frequencies cannot decide: written with their Akaike weights
-    // exp(-(score - best) / 2) over the best and the near-ties, so that --uncertainty mixes them
-    // into its bands (issue 35; docs/uncertainty.md section 2).
+    // The readings the frequencies leave plausible (order_alternatives.h): written with their
+    // Akaike weights exp(-(score - best) / 2) over the set, so that --uncertainty mixes them
+    // into its bands (issues 35, 44; docs/uncertainty.md section 2).
     if (r.orders_proposed) {
-      const double best = r.alternatives.front().score;
-      std::vector<const modal::OrderProposal*> ties;
-      double total = 1;  // the best's weight
-      for (std::size_t k = 1; k < r.alternatives.size(); ++k) {
-        if (r.alternatives[k].score < best + kNearTie) {
-          ties.push_back(&r.alternatives[k]);
-          total += std::exp(-(r.alternatives[k].score - best) / 2);
-        }
-      }
-      if (!ties.empty()) {
+      const CarriedOrders carried = carried_orders(r.alternatives, freqs);
+      if (carried.index.size() > 1) {
         std::string lists = "[", probs = "[";
-        for (std::size_t k = 0; k < ties.size(); ++k) {
-          lists += (k ? ", " : "") + list(ties[k]->orders);
-          const double p = std::exp(-(ties[k]->score - best) / 2) / total;
-          probs += (k ? ", " : "") + num(std::round(p * 1e4) / 1e4);
+        for (std::size_t k = 1; k < carried.index.size(); ++k) {
+          lists += (k > 1 ? ", " : "") + list(r.alternatives[carried.index[k]].orders);
+          // 4 decimals, never 0 (the reader wants every probability > 0).
+          const double p = std::max(std::round(carried.probability[k] * 1e4) / 1e4, 1e-4);
+          probs += (k > 1 ? ", " : "") + num(p);
         }
-        y << "  # Assignments that fit nearly as well (scores within " << num(kNearTie)
-          << " of the best), with their Akaike\n"
-          << "  # weights exp(-(score - best)/2); the prediction uses `orders` (probability "
-          << num(std::round(1e4 / total) / 1e4) << "),\n"
-          << "  # --uncertainty mixes these into its bands. State --orders if the shapes "
-             "decide.\n";
+        y << "  # Other readings of the list, weighed by the evidence: their Akaike weights\n"
+          << "  # exp(-(score - best)/2) over every reading within 6 of the best score and the\n"
+          << "  # consecutive readings (orders 1.. and 2..) within 13.8; the prediction uses\n"
+          << "  # `orders` (probability " << num(std::round(carried.probability[0] * 1e4) / 1e4)
+          << "), --uncertainty mixes these into its bands.\n"
+          << "  # State --orders if the test's shapes decide.\n";
         y << "  order_alternatives: " << lists << "]\n";
         y << "  order_alternative_probabilities: " << probs << "]\n";
         decide("modal.order_alternatives", lists + "]",
-               "near-ties of the proposal (Akaike weights)");
+               "readings within 6 of the best score, consecutive ones within 13.8 (Akaike "
+               "weights)");
       }
+      // The JSON lists the carried readings, then the next best up to five.
+      std::vector<modal::OrderProposal> shown;
+      for (std::size_t k : carried.index) shown.push_back(r.alternatives[k]);
+      for (std::size_t k = 0; k < r.alternatives.size() && shown.size() < 5; ++k) {
+        if (std::find(carried.index.begin(), carried.index.end(), k) == carried.index.end())
+          shown.push_back(r.alternatives[k]);
+      }
+      std::stable_sort(shown.begin(), shown.end(),
+                       [](const auto& a, const auto& b) { return a.score < b.score; });
+      r.alternatives = std::move(shown);
     }
   } else {
     std::string path = in.hammer_csv;
@@ -303,7 +310,7 @@ InitResult init_tyre(const InitInputs& in) {
   }
   if (in.belt_mass_kg > 0) {
     y << "  # The maker's belt mass (input): checks the tension's mass, and is the order-1 mass.\n";
-    y << "  belt_mass_kg: " << num(in.belt_mass_kg) << "\n";
+    y << "  belt_mass_kg: " << num(*in.belt_mass_kg) << "\n";
   }
   y << "  # Unmeasured orders up to the mesh's Nyquist order from the ring fit.\n  extend_orders: "
        "true\n";
@@ -313,6 +320,14 @@ InitResult init_tyre(const InitInputs& in) {
        "(stated).\n";
   y << "  modulus_MPa: " << num(kTreadModulus_MPa) << "\n  tan_delta: " << num(kTreadTanDelta)
     << "\n";
+  {
+    const double pct =
+        std::round(1000 * (kModulusHi_MPa - kModulusLo_MPa) / std::sqrt(12.0) / kTreadModulus_MPa) /
+        10;
+    y << "  # Its spread: Shore A 60-70 by Gent's relation, 3.7-5.6 MPa, as a uniform range.\n"
+      << "  modulus_std_percent: " << num(pct) << "\n";
+    decide("tread.modulus_std_percent", num(pct), "Shore A 60-70 (Gent) as a uniform range");
+  }
   y << "  # "
     << (in.tread_depth_mm > 0 ? "Input" : "A new passenger tread's depth, 7.1-10.3 mm (NRC 2006)")
     << ".\n";
@@ -322,6 +337,15 @@ InitResult init_tyre(const InitInputs& in) {
                               : "77 % of the section width (usual passenger proportion, assumed)")
     << ".\n";
   y << "  contact_width_mm: " << num(tread_w) << "\n";
+  if (!in.tread_width_mm) {
+    const double pct = std::round(1000 * (kTreadWidthShareHi - kTreadWidthShareLo) *
+                                  size.section_width_mm / std::sqrt(12.0) / tread_w) /
+                       10;
+    y << "  # Its spread: the share's 0.70-0.85 across passenger sizes, as a uniform range.\n"
+      << "  contact_width_std_percent: " << num(pct) << "\n";
+    decide("tread.contact_width_std_percent", num(pct),
+           "tread-width share 0.70-0.85 as a uniform range");
+  }
   decide("tread.thickness_mm", num(depth),
          in.tread_depth_mm > 0 ? "input" : "new passenger tread (NRC 2006)");
   decide("tread.contact_width_mm", num(tread_w),
@@ -345,8 +369,14 @@ InitResult init_tyre(const InitInputs& in) {
     y << "  # No section drawing: the tread face is taken flat across the tread width (multi-arc\n"
       << "  # passenger profiles are 'very flat' near the centre); state the measured contour\n"
       << "  # (crown: shape: contour) or radius when you have it.\n";
-    y << "  crown:\n    shape: flat\n";
+    const double round_mm = std::round(kRoundCrown_mm * tread_w / kRoundCrownTread_mm);
+    y << "  # The flat face is an assumption: the bands span crowns from flat to a circle of\n"
+      << "  # this radius (the SF-350's, calibrated on its measured widths: 1058 mm on a 150 mm\n"
+      << "  # tread, scaled with the tread width; docs/uncertainty.md section 2).\n";
+    y << "  crown:\n    shape: flat\n    round_limit_radius_mm: " << num(round_mm) << "\n";
     decide("footprint_3d.crown.shape", "flat", "no section drawing (stated)");
+    decide("footprint_3d.crown.round_limit_radius_mm", num(round_mm),
+           "the SF-350's calibrated crown (1058 mm on 150 mm) scaled with the tread width");
   }
   // The time-domain scenarios at FNOMIN (modaltyre transient, docs/transient.md), with the
   // bundled configs' conditions; the output grid chosen per scenario (transient/output_grid.h).
@@ -364,21 +394,31 @@ InitResult init_tyre(const InitInputs& in) {
   r.yaml = y.str();
 
   // ---- build once: what is written runs ----------------------------------------------------
+  // Read as if at the output (a hammer path is relative to it); a key the reader refuses there
+  // is named by the option that set it, not by a file not yet written.
   const std::string origin = in.output_path.empty() ? std::string("init") : in.output_path;
-  const ConfigTree tree = ConfigTree::from_string(r.yaml, origin);
-  contact::TyreConfig config = contact::read_tyre_config(tree);
+  contact::TyreConfig config;
+  try {
+    config = contact::read_tyre_config(ConfigTree::from_string(r.yaml, origin));
+  } catch (const InputError& e) {
+    if (e.where().file == origin) rethrow_at_option(e);
+    throw;
+  }
   if (!list_given) config.hammer_csv = std::filesystem::absolute(in.hammer_csv).string();
   const contact::TyreModel model = contact::build_tyre_model(config);
+  check_ring_mass(model.carcass.mass_per_length_kg_m, config.outer_radius_m, list_given);
   r.carcass = model.carcass;
   r.warnings.insert(r.warnings.end(), model.basis.warnings.begin(), model.basis.warnings.end());
   if (in.boundary == "free" && !(in.belt_mass_kg > 0)) {
     // The ring's mu is the mass that makes its frequencies and statics agree, not the belt's
     // weighed mass; the two-mass correction of a free test's order 1 wants the latter.
+    const double ring_kg = 2 * M_PI * R0_mm * 1e-3 * model.carcass.mass_per_length_kg_m;
     r.warnings.push_back(
         "a free test without --belt-mass-kg: the order-1 correction takes the ring's mass 2 pi R "
         "mu = " +
-        num(std::round(2 * M_PI * R0_mm * 1e-3 * model.carcass.mass_per_length_kg_m * 10) / 10) +
-        " kg as the belt's, lighter than a passenger belt with its tread (the TNO 205/60R15 file's "
+        num(std::round(ring_kg * 10) / 10) + " kg as the belt's, " +
+        (ring_kg < kTnoBeltMass_kg ? "lighter" : "heavier") +
+        " than a passenger belt with its tread (the TNO 205/60R15 file's "
         "BELT_MASS: 7.7 kg); state the "
         "maker's BELT_MASS (docs/validation.md: +21 % stiffness on the held-out 205/60R15 without "
         "it)");

@@ -79,6 +79,8 @@ def traction(
     ground: Optional[StrPath] = None,
     overrides: dict[str, Any] = ...,
     passes: int = 1,
+    slip_reference: str = "rolling",
+    speed_km_h: Optional[float] = None,
 ) -> dict[str, Any]: ...
 def effects() -> list[dict[str, Any]]: ...
 def discover(

@@ -106,11 +106,26 @@ std::string type_name(const py::handle& v) {
 
 }  // namespace
 
+namespace {
+
+// A NUL ends a path for the operating system: "new.yaml\0.csv" would name new.yaml (Python's own
+// open() refuses it the same way).
+std::string without_nul(std::string path, const char* name) {
+  if (path.find('\0') != std::string::npos) {
+    throw InputError({name, 0, ""}, "'" + printable(path) +
+                                        "' contains a NUL byte, which no path can hold (it "
+                                        "would end the path there)");
+  }
+  return path;
+}
+
+}  // namespace
+
 std::string path_arg(const py::handle& v, const char* name) {
-  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+  if (py::isinstance<py::str>(v)) return without_nul(v.cast<std::string>(), name);
   if (py::hasattr(v, "__fspath__")) {
     const py::object p = py::module_::import("os").attr("fspath")(v);
-    if (py::isinstance<py::str>(p)) return p.cast<std::string>();
+    if (py::isinstance<py::str>(p)) return without_nul(p.cast<std::string>(), name);
   }
   throw InputError({name, 0, ""}, "must be a path (str or pathlib.Path), got " + type_name(v));
 }
@@ -128,9 +143,36 @@ double number_arg(const py::handle& v, const char* name) {
     throw InputError({name, 0, ""}, "must be a number, got " + type + " " +
                                         printable(py::repr(v).cast<std::string>()));
   }
-  const double x = py::float_(py::reinterpret_borrow<py::object>(v)).cast<double>();
+  double x = 0;
+  try {
+    x = py::float_(py::reinterpret_borrow<py::object>(v)).cast<double>();
+  } catch (py::error_already_set& e) {
+    // An int past the largest double (10**400) cannot be a float: a number out of any range.
+    if (!e.matches(PyExc_OverflowError)) throw;
+    throw InputError({name, 0, ""}, "must be a finite number; " +
+                                        printable(py::repr(v).cast<std::string>(), 40) +
+                                        " is too large for one");
+  }
   if (!std::isfinite(x)) throw InputError({name, 0, ""}, "must be a finite number");
   return x;
+}
+
+long long int_arg(const py::handle& v, const char* name, long long lo, long long hi) {
+  // bool is an int in Python: True is never a count or an order.
+  const std::string type = type_name(v);
+  if (type == "bool" || type == "bool_" || !py::isinstance<py::int_>(v)) {
+    throw InputError({name, 0, ""}, "must be an int, got " + type + " " +
+                                        printable(py::repr(v).cast<std::string>(), 40));
+  }
+  int overflow = 0;
+  const long long k = PyLong_AsLongLongAndOverflow(v.ptr(), &overflow);
+  if (overflow == 0 && k == -1 && PyErr_Occurred()) throw py::error_already_set();
+  if (overflow != 0 || k < lo || k > hi) {
+    throw InputError({name, 0, ""}, printable(py::repr(v).cast<std::string>(), 40) +
+                                        " is outside " + std::to_string(lo) + "-" +
+                                        std::to_string(hi));
+  }
+  return k;
 }
 
 std::optional<double> optional_number_arg(const py::handle& v, const char* name) {

@@ -50,6 +50,10 @@ std::string optional_path_arg(const py::handle& v, const char* name);
 /// int in Python, never a load) or anything else is an InputError naming `name`.
 double number_arg(const py::handle& v, const char* name);
 
+/// An int argument in [lo, hi] (a Python int of any size, NumPy integers not taken): a bool, a
+/// float or an int outside the range is an InputError naming `name`.
+long long int_arg(const py::handle& v, const char* name, long long lo, long long hi);
+
 /// None or number_arg.
 std::optional<double> optional_number_arg(const py::handle& v, const char* name);
 

@@ -1,11 +1,15 @@
 #include "modaltyre/report/effects_json.h"
 
+#include "modaltyre/core/number_format.h"
+
 namespace modaltyre::report {
 
 using contact::EffectInfo;
 using contact::EffectParameterInfo;
 
-std::string enabled_key(const EffectInfo& e) { return "effects." + e.name + ".enabled"; }
+std::string enabled_key(const EffectInfo& e) {
+  return e.is_option() ? e.option->keys : "effects." + e.name + ".enabled";
+}
 
 namespace {
 
@@ -25,6 +29,13 @@ nlohmann::json effect_json(const EffectInfo& e) {
           {"acts_on", e.acts_on},
           {"with_footprint_3d",
            {{"composes", e.refused_with_3d.empty()}, {"refused_because", e.refused_with_3d}}},
+          {"option", e.is_option()},
+          {"switch", contact::effect_catalogue_switch(e.id)},
+          {"needs_footprint_3d", e.is_option() && e.option->needs_3d},
+          {"strength", e.strength == contact::EffectStrength::inverse ? "vanishes as it grows"
+                       : e.strength == contact::EffectStrength::none
+                           ? "none"
+                           : "from " + number_text(e.neutral)},
           {"parameters", params}};
 }
 

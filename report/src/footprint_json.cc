@@ -22,6 +22,13 @@ std::vector<contact::OperatingConditions> footprint_cases(
                        "vertical load must be a number in [1e-06, 1e+07] N (below 1e-6 N no "
                        "contact forms; 1e7 N exceeds any tyre)");
     }
+    if (config.ground.model != ground::GroundModel::rigid && fx != 0) {
+      throw InputError({"--fx", 0, ""},
+                       std::string("a ground other than the flat rigid road (ground.model: ") +
+                           ground::to_string(config.ground.model) +
+                           ") takes no horizontal force; on a soil the tyre pulls by rolling "
+                           "with slip: modaltyre traction");
+    }
     if (config.footprint_3d && fx != 0) {
       throw InputError({"--fx", 0, ""},
                        "the config's 3D patch (footprint_3d) takes no horizontal force");
@@ -42,7 +49,7 @@ std::vector<contact::OperatingConditions> footprint_cases(
 std::vector<std::string> enabled_effects(const contact::EffectsConfig& effects) {
   std::vector<std::string> names;
   for (const auto& e : contact::effect_catalogue()) {
-    if (effects.enabled(e.id)) names.push_back(e.name);
+    if (!e.is_option() && effects.enabled(e.id)) names.push_back(e.name);
   }
   return names;
 }
@@ -86,7 +93,7 @@ nlohmann::json footprint_json(const contact::TyreModel& model,
       if (r.on_soil) units.back()["soil_depth_mm"] = round_sig(u.soil_depth_m * 1e3);
     }
     const double peak = peak_pressure_Pa(p);
-    const contact::Validity v = contact::validity(model.config, r.sinking_m, r.contact_length_m);
+    const contact::Validity v = contact::validity(model.config, r);
     cases.push_back({{"load_N", r.load.load_N},
                      {"valid", v.valid},
                      {"validity", v.valid ? nlohmann::json(nullptr) : nlohmann::json(v.reason)},

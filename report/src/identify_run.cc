@@ -120,6 +120,10 @@ IdentifyRun bevameter(const IdentifyInputs& a) {
   run.result = rh::identify_bevameter(run.data);
   nlohmann::json out = fit_report_json(run.result.report);
   out["law"] = "p[kPa] = (k_c/b + k_phi) z[m]^n; unloading p = p_max - (k0 + Au z_max)(z_max - z)";
+  const bool circular = run.data.shape == rh::PlateShape::circular;
+  out["plate_shape"] = circular ? "circular" : "rectangular";
+  out["bekker_b"] = circular ? "the plate's radius" : "the plate's width";
+  out["warnings"] = run.result.warnings;
   return {std::move(run), out};
 }
 

@@ -55,4 +55,18 @@ std::string plus_minus(double value, double two_sigma, int plain_decimals) {
   return b;
 }
 
+std::string band_text(const uncertainty::Band& b, int plain_decimals) {
+  char t[160];
+  const double half = 0.5 * (b.p975 - b.p025);
+  if (!(half > 0) || !std::isfinite(half)) {
+    std::snprintf(t, sizeof t, "%.*f (fixed: no uncertain input moves it)", plain_decimals,
+                  b.value);
+    return t;
+  }
+  const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(half))), 0, 6);
+  std::snprintf(t, sizeof t, "%.*f [%.*f, %.*f]", decimals, b.value, decimals, b.p025, decimals,
+                b.p975);
+  return t;
+}
+
 }  // namespace modaltyre::report

@@ -9,6 +9,7 @@
 
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/number_format.h"
 #include "modaltyre/solvers/linear_least_squares.h"
 
 namespace modaltyre::rheology {
@@ -48,6 +49,19 @@ double grid_then_golden(const std::function<double(double)>& f, double lo, doubl
   return golden_minimum(f, at(std::max(0, best - 1)), at(std::min(grid, best + 1)));
 }
 
+// Data that cannot separate the parameters (a singular Jacobian J of the residuals in them) give
+// no estimate at all, not a precise one (issue 44: "false precision").
+void require_determined(const Eigen::MatrixXd& J, const std::string& path, const std::string& rows,
+                        const std::string& parameters, const std::string& remedy) {
+  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(J).singularValues();
+  const double smallest = sv(sv.size() - 1);
+  if (!(smallest > 1e-9 * sv(0)))
+    throw InputError({path, 0, ""}, rows + " cannot determine " + parameters +
+                                        " together (their Jacobian is singular: condition " +
+                                        number_text(sv(0) / std::max(smallest, 1e-300)) + "); " +
+                                        remedy);
+}
+
 // Standard errors sqrt(diag(s^2 (J^T J)^-1)) with s^2 = RSS / (rows - parameters).
 Eigen::VectorXd standard_errors(const Eigen::MatrixXd& J, double rss) {
   const double dof = std::max<double>(1, J.rows() - J.cols());
@@ -56,27 +70,111 @@ Eigen::VectorXd standard_errors(const Eigen::MatrixXd& J, double rss) {
   return cov.diagonal().cwiseMax(0).cwiseSqrt();
 }
 
+// n outside 0-2 has no physical pressure-sinkage law behind it: the pressure would grow faster
+// than the square of the sinkage (a hard layer under the plate, sinkages not counted from the
+// surface) or not at all. The data's reason: each plate's own log-log slope.
+void add_loading_warnings(BevameterResult& res, const std::vector<PlateRow>& load,
+                          PlateShape shape) {
+  auto warn = [&](const std::string& w) {
+    res.warnings.push_back(w);
+    res.report.notes.push_back("warning: " + w);
+  };
+  if (res.n > 2 || res.n < 0.06) {
+    std::map<double, std::pair<const PlateRow*, const PlateRow*>> ends;  // shallowest, deepest
+    for (const auto& r : load) {
+      auto& e = ends[r.bekker_b_m];
+      if (!e.first || r.sinkage_m < e.first->sinkage_m) e.first = &r;
+      if (!e.second || r.sinkage_m > e.second->sinkage_m) e.second = &r;
+    }
+    std::string slopes;
+    for (const auto& [b, e] : ends) {
+      const double slope = std::log(e.second->pressure_Pa / e.first->pressure_Pa) /
+                           std::log(e.second->sinkage_m / e.first->sinkage_m);
+      slopes += (slopes.empty() ? "" : "; ") + std::string("b = ") + number_text(b * 1e3) +
+                " mm: " + number_text(round_sig(e.first->pressure_Pa * 1e-3, 4)) + " kPa at " +
+                number_text(round_sig(e.first->sinkage_m * 1e3, 4)) + " mm to " +
+                number_text(round_sig(e.second->pressure_Pa * 1e-3, 4)) + " kPa at " +
+                number_text(round_sig(e.second->sinkage_m * 1e3, 4)) + " mm, as z^" +
+                number_text(round_sig(slope, 3));
+    }
+    warn("n = " + number_text(round_sig(res.n, 4)) +
+         " is outside 0-2, where no soil's pressure-sinkage law lies (" +
+         (res.n > 2 ? "faster than the square of the sinkage: a hard layer under the plate, or "
+                      "sinkages not counted from the surface"
+                    : "a pressure that does not grow with sinkage") +
+         "); the data: " + slopes);
+  }
+  if (!(res.k_c >= 0))
+    warn("k_c = " + number_text(round_sig(res.k_c, 4)) +
+         " < 0: the smaller plate carries less pressure at the same sinkage than the larger one; "
+         "check the plate sizes (" +
+         bekker_b_convention(shape) + ")");
+}
+
+// k0 < 0: the unloading slopes rise faster than in proportion to z_max, and the line through
+// them reaches zero stiffness at a positive z_max (physically impossible below it).
+void add_k0_warning(BevameterResult& res, const std::vector<double>& zmax,
+                    const std::vector<double>& ku) {
+  std::string cycles;
+  for (std::size_t i = 0; i < zmax.size(); ++i)
+    cycles += (i ? ", " : "") + number_text(round_sig(ku[i], 4)) + " at " +
+              number_text(round_sig(zmax[i] * 1e3, 4)) + " mm";
+  const std::string w =
+      "k0 = " + number_text(round_sig(res.k0, 4)) +
+      " kN/m^3 < 0 (an unloading stiffness below zero for z_max < " +
+      number_text(round_sig(-res.k0 / res.Au * 1e3, 4)) +
+      " mm): the cycles' slopes k_u [kN/m^3] (" + cycles +
+      ") rise faster than in proportion to z_max; a soil file takes k0 >= 0: the fit through "
+      "the origin gives k0 = 0, Au = " +
+      number_text(round_sig(res.Au_through_origin, 4)) + " kN/m^4";
+  res.warnings.push_back(w);
+  res.report.notes.push_back("warning: " + w);
+}
+
 }  // namespace
 
+std::string bekker_b_convention(PlateShape shape) {
+  return shape == PlateShape::circular ? "circular plates: Bekker's b = the plate's radius"
+                                       : "rectangular plates: Bekker's b = the plate's width";
+}
+
 PlateData read_plate_sinkage_csv(const std::string& path) {
+  // The plate's shape from its size column: b is the width of a rectangle, the radius of a
+  // circle (Wong, Theory of Ground Vehicles, section 2.4); a diameter would double k_c / b.
+  const std::vector<std::string> header = read_csv_header(path);
+  auto has = [&](const char* c) {
+    return std::find(header.begin(), header.end(), c) != header.end();
+  };
+  if (has("plate_diameter_mm"))
+    throw InputError({path, 0, "plate_diameter_mm"},
+                     "Bekker's b of a circular plate is its radius (Wong, Theory of Ground "
+                     "Vehicles, section 2.4): give plate_radius_mm (the diameter / 2), or "
+                     "plate_width_mm for a rectangular plate");
+  if (has("plate_width_mm") && has("plate_radius_mm"))
+    throw InputError({path, 0, "plate_radius_mm"},
+                     "both plate_width_mm and plate_radius_mm: a file holds one plate shape, "
+                     "rectangular (b = the width) or circular (b = the radius)");
+  const bool circular = has("plate_radius_mm");
+  const char* size_column = circular ? "plate_radius_mm" : "plate_width_mm";
   CsvSchema schema;
-  schema.required = {"plate_width_mm", "sinkage_mm", "pressure_kPa"};
+  schema.required = {size_column, "sinkage_mm", "pressure_kPa"};
   schema.optional = {"cycle"};
   const CsvTable t = read_csv(path, schema);
   PlateData d;
   d.path = path;
+  d.shape = circular ? PlateShape::circular : PlateShape::rectangular;
   for (std::size_t r = 0; r < t.rows(); ++r) {
     PlateRow row;
     row.line = t.line(r);
-    row.plate_width_m = t.number(r, "plate_width_mm") * 1e-3;
+    row.bekker_b_m = t.number(r, size_column) * 1e-3;
     row.sinkage_m = t.number(r, "sinkage_mm") * 1e-3;
     row.pressure_Pa = t.number(r, "pressure_kPa") * 1e3;
     const double cycle = t.number_or(r, "cycle", 0);
     auto bad = [&](const char* col, const std::string& msg) {
       throw InputError({path, row.line, col}, msg);
     };
-    if (!(row.plate_width_m > 0 && row.plate_width_m <= kMaxPlateWidth_m))
-      bad("plate_width_mm", "must be in (0, 10000] mm");
+    if (!(row.bekker_b_m > 0 && row.bekker_b_m <= kMaxPlateWidth_m))
+      bad(size_column, "must be in (0, 10000] mm");
     if (!(row.sinkage_m >= 0 && row.sinkage_m <= kMaxSinkage_m))
       bad("sinkage_mm", "must be in [0, 10000] mm");
     if (!(row.pressure_Pa >= 0 && row.pressure_Pa <= kMaxStress_Pa))
@@ -91,23 +189,34 @@ PlateData read_plate_sinkage_csv(const std::string& path) {
 
 BevameterResult identify_bevameter(const PlateData& d) {
   // Virgin loading rows with a positive sinkage and pressure carry the Bekker fit.
+  const char* size_column = d.shape == PlateShape::circular ? "plate_radius_mm" : "plate_width_mm";
   std::vector<PlateRow> load;
-  std::set<double> widths;
+  std::map<double, std::set<double>> sinkages;  // per plate
   for (const auto& r : d.rows) {
     if (r.cycle == 0 && r.sinkage_m > 0 && r.pressure_Pa > 0) {
       load.push_back(r);
-      widths.insert(r.plate_width_m);
+      sinkages[r.bekker_b_m].insert(r.sinkage_m);
     }
   }
-  if (widths.size() < 2)
-    throw InputError({d.path, 0, "plate_width_mm"},
-                     "bevameter needs loading rows of at least two plate widths to separate k_c "
+  if (sinkages.size() < 2)
+    throw InputError({d.path, 0, size_column},
+                     "bevameter needs loading rows of at least two plate sizes to separate k_c "
                      "from k_phi (got " +
-                         std::to_string(widths.size()) + ")");
+                         std::to_string(sinkages.size()) + ")");
   if (load.size() < 4)
     throw InputError({d.path, 0, ""},
                      "bevameter needs at least four loading rows with sinkage "
                      "and pressure > 0");
+  // The curve's shape n shows only in how one plate's pressure grows with its sinkage: a plate
+  // pressed to one sinkage only cannot tell n from k (issue 44: "false precision").
+  for (const auto& [b, zs] : sinkages)
+    if (zs.size() < 2)
+      throw InputError({d.path, 0, "sinkage_mm"},
+                       "the plate of b = " + number_text(b * 1e3) +
+                           " mm has its loading rows at one sinkage (" +
+                           number_text(*zs.begin() * 1e3) +
+                           " mm): n (how pressure grows with sinkage) cannot be determined; "
+                           "measure each plate at two sinkages or more");
   const std::size_t N = load.size();
   // Variable projection: at fixed n, p_i = k_c z^n / b + k_phi z^n is linear; relative residuals.
   auto linear_fit = [&](double n, solvers::LinearFit& fit) {
@@ -115,7 +224,7 @@ BevameterResult identify_bevameter(const PlateData& d) {
     Eigen::VectorXd y = Eigen::VectorXd::Ones(N);
     for (std::size_t i = 0; i < N; ++i) {
       const double zn = std::pow(load[i].sinkage_m, n) * 1e3 / load[i].pressure_Pa;  // kPa units
-      A(i, 0) = zn / load[i].plate_width_m;
+      A(i, 0) = zn / load[i].bekker_b_m;
       A(i, 1) = zn;
     }
     fit = solvers::solve_linear_least_squares(A, y);
@@ -134,7 +243,7 @@ BevameterResult identify_bevameter(const PlateData& d) {
   Eigen::MatrixXd J(N, 3);
   double rss = 0, rss_abs = 0;
   for (std::size_t i = 0; i < N; ++i) {
-    const double z = load[i].sinkage_m, b = load[i].plate_width_m, p = load[i].pressure_Pa;
+    const double z = load[i].sinkage_m, b = load[i].bekker_b_m, p = load[i].pressure_Pa;
     const double k = res.k_c / b + res.k_phi, zn = std::pow(z, n);
     const double model_Pa = k * zn * 1e3;
     J(i, 0) = model_Pa * std::log(z) / p;
@@ -143,6 +252,8 @@ BevameterResult identify_bevameter(const PlateData& d) {
     rss += std::pow(model_Pa / p - 1, 2);
     rss_abs += std::pow(model_Pa - p, 2);
   }
+  require_determined(J, d.path, "the loading rows", "n, k_c and k_phi",
+                     "measure more sinkages and plate sizes");
   const Eigen::VectorXd se = standard_errors(J, rss);
   res.n_se = se(0), res.k_c_se = se(1), res.k_phi_se = se(2);
   auto& rep = res.report;
@@ -154,10 +265,11 @@ BevameterResult identify_bevameter(const PlateData& d) {
                     {"k_c", res.k_c, "kN/m^(n+1)", res.k_c_se},
                     {"k_phi", res.k_phi, "kN/m^(n+2)", res.k_phi_se}};
   rep.notes.push_back("Bekker p = (k_c/b + k_phi) z^n over the virgin loading rows (cycle 0) of " +
-                      std::to_string(widths.size()) +
-                      " plate widths; n by golden section, k_c and k_phi by "
-                      "linear least squares, on relative residuals");
-  if (!(res.k_c >= 0)) rep.notes.push_back("warning: k_c < 0: check the plate widths and data");
+                      std::to_string(sinkages.size()) + " plate sizes (" +
+                      bekker_b_convention(d.shape) +
+                      "); n by golden section, k_c and k_phi by linear least squares, on "
+                      "relative residuals");
+  add_loading_warnings(res, load, d.shape);
 
   // Unloading-reloading cycles: slope k_u of each, then k_u = k0 + Au z_max.
   std::map<int, std::vector<PlateRow>> cycles;
@@ -187,6 +299,9 @@ BevameterResult identify_bevameter(const PlateData& d) {
     }
     res.has_unloading = true;
     std::set<double> distinct(zmax.begin(), zmax.end());
+    double zz = 0, zk = 0;
+    for (std::size_t i = 0; i < zmax.size(); ++i) zz += zmax[i] * zmax[i], zk += zmax[i] * ku[i];
+    res.Au_through_origin = zk / zz;
     if (distinct.size() >= 2) {
       Eigen::MatrixXd A(zmax.size(), 2);
       Eigen::VectorXd y(zmax.size());
@@ -196,6 +311,7 @@ BevameterResult identify_bevameter(const PlateData& d) {
       res.Au = w.coef(1), res.Au_se = w.std_error(1);
       rep.notes.push_back("Wong's k_u = k0 + Au z_max over " + std::to_string(zmax.size()) +
                           " unloading cycles (slope of each cycle's rows)");
+      if (res.k0 < 0) add_k0_warning(res, zmax, ku);
     } else {
       double mean = 0;
       for (double v : ku) mean += v;
@@ -285,6 +401,8 @@ ShearResult identify_shear(const ShearData& d) {
     const double r = strength * g - rows[i].shear_stress_Pa;
     rss += std::pow(w * r, 2), rss_abs += r * r;
   }
+  require_determined(J, d.path, "the rows", "c, phi and K",
+                     "measure each normal stress at several displacements");
   const Eigen::VectorXd se = standard_errors(J, rss);
   ShearResult res;
   res.cohesion_kPa = c * 1e-3, res.cohesion_se = se(0) * 1e-3;

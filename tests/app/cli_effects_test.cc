@@ -32,19 +32,30 @@ class EffectsCli : public modaltyre_test::CliFixture {
   }
 };
 
-TEST_F(EffectsCli, JsonListsNineEffectsWithTheDocumentedShape) {
+TEST_F(EffectsCli, JsonListsThirteenEffectsWithTheDocumentedShape) {
   const auto j = catalogue();
   ASSERT_TRUE(j.contains("effects"));
-  ASSERT_EQ(j["effects"].size(), 9u);
+  ASSERT_EQ(j["effects"].size(), 13u);
   std::set<std::string> names;
+  int options = 0;
   for (const auto& e : j["effects"]) {
-    for (const char* k :
-         {"name", "description", "observables", "regime", "enabled_key", "parameters"}) {
+    for (const char* k : {"name", "description", "observables", "regime", "enabled_key", "switch",
+                          "option", "strength", "parameters"}) {
       ASSERT_TRUE(e.contains(k)) << k;
     }
     const auto name = e["name"].get<std::string>();
     names.insert(name);
+    if (e["option"].get<bool>()) {
+      // An option of the config: its own keys, listed as the switch and the parameters.
+      ++options;
+      for (const auto& p : e["parameters"]) {
+        const auto key = p["key"].get<std::string>();
+        EXPECT_TRUE(key.rfind("footprint_3d.", 0) == 0 || key.rfind("modal.", 0) == 0) << key;
+      }
+      continue;
+    }
     EXPECT_EQ(e["enabled_key"], "effects." + name + ".enabled");
+    EXPECT_EQ(e["switch"], nlohmann::json::array({"effects." + name + ".enabled=true"}));
     EXPECT_FALSE(e["observables"].empty()) << name;
     EXPECT_FALSE(e["regime"].get<std::string>().empty()) << name;
     ASSERT_FALSE(e["parameters"].empty()) << name;
@@ -59,7 +70,8 @@ TEST_F(EffectsCli, JsonListsNineEffectsWithTheDocumentedShape) {
       EXPECT_LE(def, hi) << p["key"];
     }
   }
-  EXPECT_EQ(names.size(), 9u) << "effect names must be unique";
+  EXPECT_EQ(names.size(), 13u) << "effect names must be unique";
+  EXPECT_EQ(options, 4);
 }
 
 TEST_F(EffectsCli, TextTableNamesEveryKeyAndWhetherItIsFitted) {
@@ -83,6 +95,7 @@ TEST_F(EffectsCli, EveryListedKeyIsAcceptedAtItsDefault) {
   std::vector<std::string> sets;
   const nlohmann::json all = catalogue();  // not a temporary: the loop keeps references into it
   for (const auto& e : all["effects"]) {
+    if (e["option"].get<bool>()) continue;  // options of the 3D config: below
     sets.push_back(e["enabled_key"].get<std::string>() + "=true");
     for (const auto& p : e["parameters"]) {
       sets.push_back(p["key"].get<std::string>() + "=" + p["default"].dump());
@@ -97,9 +110,39 @@ TEST_F(EffectsCli, EveryListedKeyIsAcceptedAtItsDefault) {
   EXPECT_NE(bad.err.find("friction_force"), std::string::npos) << bad.err;
 }
 
+// The options' switches and keys at their defaults, all four at once on the 3D default.
+TEST_F(EffectsCli, EveryOptionSwitchIsAcceptedByTheThreeDConfigAtItsDefaults) {
+  std::vector<std::string> args{"footprint",
+                                std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml",
+                                "--load",
+                                "4000",
+                                "--json",
+                                "--set",
+                                "contact.unit_length_mm=2"};
+  const nlohmann::json all = catalogue();
+  for (const auto& e : all["effects"]) {
+    if (!e["option"].get<bool>()) continue;
+    std::vector<std::string> sets = e["switch"].get<std::vector<std::string>>();
+    for (const auto& p : e["parameters"]) {
+      const std::string key = p["key"].get<std::string>();
+      bool in_switch = false;  // a stated value the switch already sets
+      for (const auto& s : sets) in_switch = in_switch || s.rfind(key + "=", 0) == 0;
+      if (!in_switch) sets.push_back(key + "=" + p["default"].dump());
+    }
+    for (const auto& s : sets) {
+      args.push_back("--set");
+      args.push_back(s);
+    }
+  }
+  const auto r = run(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(nlohmann::json::parse(r.out)["cases"][0]["converged"].get<bool>());
+}
+
 TEST_F(EffectsCli, OutOfRangeValueExitsTwoNamingTheKey) {
   const nlohmann::json all = catalogue();  // not a temporary: the loop keeps references into it
   for (const auto& e : all["effects"]) {
+    if (e["option"].get<bool>()) continue;  // the option's reader bounds its keys
     const auto& p = e["parameters"][0];
     const std::string key = p["key"];
     const double above = p["max"].get<double>() * 2 + 1;
@@ -134,7 +177,9 @@ TEST_F(EffectsWith3dPatchCli, CatalogueStatesWhichEffectsComposeAndRefusedOnesEx
       EXPECT_FALSE(w["refused_because"].get<std::string>().empty());
     }
   }
-  EXPECT_EQ(refused, (std::set<std::string>{"contact_width", "rolling_speed", "tread_coupling"}));
+  // rolling_speed and tread_coupling act on the 3D patch too (patch3d.h); contact_width is
+  // superseded by its crown.
+  EXPECT_EQ(refused, (std::set<std::string>{"contact_width"}));
   for (const auto& name : refused) {
     const auto f = run({"footprint", k3dConfig, "--load", "4000", "--set",
                         "contact.unit_length_mm=2", "--set", "effects." + name + ".enabled=true"});

@@ -168,4 +168,55 @@ TEST_F(CliOutputsOverInputs, DistinctOutputsAndStreamsAreAccepted) {
   EXPECT_EQ(twice.exit_code, 0) << twice.err;
 }
 
+// Issue 44 item 5: the one identity check (core/command_files.h) in every command, through
+// links: an output that is a link to one of the command's inputs, and an output that is a
+// dangling link to another output of the same run (writing the one creates the file the other
+// then writes over: transient's SVG over its CSV). Refused before anything is computed.
+TEST_F(CliOutputsOverInputs, EveryCommandSeesThroughLinksToInputsAndOtherOutputs) {
+  auto link = [&](const std::string& name, const std::string& to) {
+    fs::create_symlink(to, dir_ / name);
+    return (dir_ / name).string();
+  };
+  const std::string frf = (dir_ / "frf.unv").string();
+  fs::copy_file(kSrc + "/tests/data/ema/fixed_columns.unv", frf);
+  const std::string ld = (dir_ / "ld.csv").string();
+  fs::copy_file(kSrc + "/tests/data/rheology/load_deflection.csv", ld);
+  expect_refused({"validate", config2d(), measured(), "--plot", link("v.svg", measured())},
+                 measured(), {"--plot", "MEASURED"});
+  expect_refused({"fit-modes", hammer(), "--plot", link("f.svg", hammer())}, hammer(),
+                 {"--plot", "HAMMER"});
+  expect_refused({"init", "--size", "195/60R14", "--test-pressure-kPa", "230", "--hammer", hammer(),
+                  "--output", link("i.yaml", hammer())},
+                 hammer(), {"--output", "--hammer"});
+  expect_refused({"fmu", config2d(), "--output", link("t.fmu", config2d())}, config2d(),
+                 {"--output", "CONFIG"});
+  expect_refused({"ema", frf, "--output", link("h.csv", frf)}, frf, {"--output", "FRF_FILE"});
+  const std::string spec = (dir_ / "sweep.yaml").string();
+  std::ofstream(spec) << "base: tyre2d.yaml\ngrid:\n  load_N: [3000, 4000]\noutput: s.csv\n";
+  expect_refused({"sweep", spec, "--output", link("s.csv", config2d())}, config2d(),
+                 {"--output", "base:"});
+
+  // Two outputs, one of them a dangling link to the other: both named, neither written.
+  auto expect_pair_refused = [&](const std::vector<std::string>& args, const std::string& first,
+                                 const std::string& second, const std::string& target) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(first), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(second), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / target)) << target << " was written";
+  };
+  expect_pair_refused({"footprint", config3d(), "--load", "4000", "--map-csv",
+                       (dir_ / "m.csv").string(), "--plot", link("p.svg", "m.csv")},
+                      "--map-csv", "--plot", "m.csv");
+  expect_pair_refused({"discover", config2d(), measured(), "--out-config",
+                       (dir_ / "o.yaml").string(), "--plot", link("d.svg", "o.yaml")},
+                      "--out-config", "--plot", "o.yaml");
+  expect_pair_refused(
+      {"ema", frf, "--output", (dir_ / "e.csv").string(), "--plot", link("e.svg", "e.csv")},
+      "--output", "--plot", "e.csv");
+  expect_pair_refused({"identify", "load-deflection", ld, "--write-config",
+                       (dir_ / "w.yaml").string(), "--plot", link("w.svg", "w.yaml")},
+                      "--write-config", "--plot", "w.yaml");
+}
+
 }  // namespace

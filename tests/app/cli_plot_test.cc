@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -124,7 +125,9 @@ TEST_F(PlotCli, FitModesPanelsAreSymmetricAboutZero) {
 TEST_F(PlotCli, ValidateDrawsWidthWhenItIsMeasured) {
   auto panels = plot({"validate", kConfig, kTable3, "--plot", (dir_ / "v.svg").string()});
   ASSERT_EQ(panels.size(), 3u);
-  EXPECT_EQ(panels[2].title, "Contact width versus load");
+  EXPECT_EQ(panels[2].title,
+            "SF-350 195/60R14 at 230 kPa (2D, Table 3 fitted): contact width "
+            "versus load");
   EXPECT_EQ(panels[2].ylabel, "contact width [mm]");
   const std::string no_width = (dir_ / "no_width.csv").string();
   std::ofstream(no_width) << "load_N,sinking_mm,length_mm\n2131,8,86\n5478,20,117\n8321,29,135\n";
@@ -173,8 +176,10 @@ TEST_F(PlotCli, ValidateDrawsTheModelAtTheConditionsStatedWithSet) {
     EXPECT_GT(held[i].second, base[i].second * 1.01) << "load " << base[i].first << " kN";
   }
   ASSERT_FALSE(held_panels.empty());
-  EXPECT_EQ(base_panels[0].title, "Sinking versus load");
-  EXPECT_EQ(held_panels[0].title, "Sinking versus load (hold_s=60)");
+  // The title names the tyre (issue 44 item 4) and the stated conditions.
+  const std::string tyre = "SF-350 195/60R14 at 230 kPa (2D, Table 3 fitted)";
+  EXPECT_EQ(base_panels[0].title, tyre + ": sinking versus load");
+  EXPECT_EQ(held_panels[0].title, tyre + ": sinking versus load (hold_s=60)");
 }
 
 // discover's panels show relative residuals in %: the title names the observable without a
@@ -308,4 +313,131 @@ TEST_F(HonestPlots, StaticLoopFitStaysAtOrAboveZeroLoad) {
   }
 }
 
+// Issue 44 item 4: a footprint plot's titles name the tyre, the ground and the load(s).
+TEST_F(HonestPlots, FootprintTitlesNameTheTyreTheGroundAndTheLoad) {
+  auto titles = plot({"footprint", kConfig, "--load", "3000", "--plot", (dir_ / "f.svg").string()});
+  ASSERT_EQ(titles.size(), 1u);
+  EXPECT_EQ(titles[0].title,
+            "SF-350 195/60R14 at 230 kPa (2D, Table 3 fitted) on the rigid road, 3.00 kN: contact "
+            "pressure along the patch");
+  titles = plot({"footprint", kSrc + "/configs/sf350.yaml", "--ground",
+                 kSrc + "/configs/soils/lete_sand.yaml", "--load", "2000", "--load", "4000",
+                 "--plot", (dir_ / "f3.svg").string()});
+  ASSERT_EQ(titles.size(), 3u);  // two maps, the centre line
+  EXPECT_NE(titles[0].title.find("2.00 kN"), std::string::npos) << titles[0].title;
+  const std::string& centre = titles[2].title;
+  EXPECT_EQ(centre.rfind("SF-350", 0), 0u) << centre;
+  EXPECT_NE(centre.find("on LETE sand (bekker), 2.00-4.00 kN"), std::string::npos) << centre;
+}
+
+// Issue 44 item 2: validate --uncertainty draws the model's band at the rows as two lines, its
+// 2.5 and 97.5 % points in load order, equal to the JSON's p025 and p975.
+TEST_F(HonestPlots, ValidateDrawsTheJsonsBandAsTwoLines) {
+  const std::vector<std::string> args = {"validate",      kConfig, kTable3,
+                                         "--uncertainty", "--set", "contact.unit_length_mm=2"};
+  auto with_plot = args;
+  with_plot.insert(with_plot.end(), {"--plot", (dir_ / "v.svg").string()});
+  plot(with_plot);
+  const std::string gp = script();
+  CliRun json_run;
+  auto json_args = args;
+  json_args.push_back("--json");
+  json_run = run(json_args);
+  ASSERT_EQ(json_run.exit_code, 0) << json_run.err;
+  const auto j = nlohmann::json::parse(json_run.out);
+  // The data blocks in order; the sinking panel's series: model, measured (prediction rows),
+  // calibration rows, band 2.5 %, band 97.5 %.
+  std::vector<std::vector<std::pair<double, double>>> blocks;
+  std::istringstream in(gp);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("$d", 0) == 0 && line.find("<< EOD") != std::string::npos) {
+      blocks.emplace_back();
+      while (std::getline(in, line) && line != "EOD") {
+        const auto space = line.find(' ');
+        blocks.back().emplace_back(std::stod(line.substr(0, space)),
+                                   std::stod(line.substr(space + 1)));
+      }
+    }
+  }
+  ASSERT_NE(gp.find("model band, 2.5 % (at the rows)"), std::string::npos);
+  ASSERT_NE(gp.find("model band, 97.5 % (at the rows)"), std::string::npos);
+  ASSERT_GE(blocks.size(), 5u);
+  const auto& lo = blocks[3];
+  const auto& hi = blocks[4];
+  ASSERT_EQ(lo.size(), j["rows"].size());
+  for (std::size_t i = 0; i < lo.size(); ++i) {
+    const auto& b = j["rows"][i]["uncertainty"]["sinking_mm"];  // Table 3's rows rise in load
+    EXPECT_NEAR(lo[i].second, b["p025"].get<double>(), 1e-5 * b["p025"].get<double>());
+    EXPECT_NEAR(hi[i].second, b["p975"].get<double>(), 1e-5 * b["p975"].get<double>());
+    if (i) {
+      EXPECT_GT(lo[i].first, lo[i - 1].first) << "in load order";
+    }
+  }
+}
+
 }  // namespace
+
+// Issue 48 item 7 and issue 44 item 4: the soil plots a soil-bin engineer reads.
+class SoilPlots : public HonestPlots {
+ protected:
+  /// The script's plot line for the panel whose title holds `title`.
+  std::string plot_line_after(const std::string& title) const {
+    const std::string s = script();
+    const auto t = s.find(title);
+    if (t == std::string::npos) return "";
+    const auto p = s.find("\nplot ", t);
+    return p == std::string::npos ? "" : s.substr(p + 1, s.find('\n', p + 1) - p - 1);
+  }
+};
+
+TEST_F(SoilPlots, TractionNamesTyreSoilAndLoadAndMarksTheTowedAndSelfPropelledPoints) {
+  const auto panels = plot({"traction", kConfig, "--ground", kSrc + "/configs/soils/lete_sand.yaml",
+                            "--load", "3000", "--slip", "-0.1", "0", "0.1", "0.3", "--set",
+                            "contact.unit_length_mm=2", "--plot", (dir_ / "dp.svg").string()});
+  ASSERT_EQ(panels.size(), 3u);
+  EXPECT_NE(panels[0].title.find("SF-350"), std::string::npos) << panels[0].title;
+  EXPECT_NE(panels[0].title.find("LETE sand"), std::string::npos) << panels[0].title;
+  EXPECT_NE(panels[1].title.find("3000 N"), std::string::npos) << panels[1].title;
+  EXPECT_NE(panels[1].ylabel.find("sinkage"), std::string::npos);
+  EXPECT_NE(panels[2].ylabel.find("efficiency"), std::string::npos);
+  const std::string dp = plot_line_after(panels[0].title);
+  EXPECT_NE(dp.find("towed (T = 0)"), std::string::npos) << dp;
+  EXPECT_NE(dp.find("self-propelled (DP = 0)"), std::string::npos) << dp;
+  // The curve and its marks share one colour; the braked side and zero are on the axis.
+  EXPECT_NE(dp.find("linespoints pt 7 lc 1"), std::string::npos) << dp;
+  EXPECT_NE(dp.find("points pt 9 ps 2 lc 1"), std::string::npos) << dp;
+  const std::string s = script();
+  const auto xr = s.find("set xrange [");
+  ASSERT_NE(xr, std::string::npos);
+  EXPECT_LT(std::stod(s.substr(xr + 12)), -0.1);
+}
+
+TEST_F(SoilPlots, TheBevameterTitleWritesKPhiAndTheCyclesGetTheirLines) {
+  const auto panels = plot({"identify", "bevameter", kSrc + "/tests/data/soil/plate_sinkage.csv",
+                            "--plot", (dir_ / "b.svg").string()});
+  ASSERT_EQ(panels.size(), 1u);
+  // Enhanced text: "k_phi" rendered as k subscript p followed by "hi"; "k_{phi}" is k_phi.
+  EXPECT_NE(panels[0].title.find("k_{phi}"), std::string::npos) << panels[0].title;
+  EXPECT_EQ(panels[0].title.find("k_phi"), std::string::npos) << panels[0].title;
+  const std::string line = plot_line_after(panels[0].title);
+  for (const char* cycle : {"Wong''s unloading, cycle 1", "Wong''s unloading, cycle 3"})
+    EXPECT_NE(line.find(cycle), std::string::npos) << line;
+}
+
+TEST_F(SoilPlots, EachShearDataSetSharesItsColourWithItsOwnFit) {
+  const auto panels = plot({"identify", "shear", kSrc + "/tests/data/soil/shear.csv", "--plot",
+                            (dir_ / "s.svg").string()});
+  ASSERT_EQ(panels.size(), 1u);
+  const std::string line = plot_line_after(panels[0].title);
+  auto colour_of = [&](const std::string& title) {
+    const auto t = line.find("title '" + title + "'");
+    if (t == std::string::npos) return std::string("?");
+    const auto lc = line.rfind(" lc ", t);
+    return line.substr(lc, line.find(' ', lc + 4) - lc);
+  };
+  for (const char* s : {"2.5", "20.0", "40.0"})
+    EXPECT_EQ(colour_of(std::string("sigma = ") + s + " kPa"),
+              colour_of(std::string("fit, ") + s + " kPa"))
+        << s;
+  EXPECT_NE(colour_of("sigma = 20.0 kPa"), colour_of("fit, 40.0 kPa"));
+}

@@ -46,15 +46,17 @@ TEST_F(TransientBands, RollingResistanceHasABandAndNoInputsNoWidth) {
   EXPECT_GT(rr["std"].get<double>(), 0);
   EXPECT_LT(rr["p025"].get<double>(), j["final"]["rolling_resistance_N"].get<double>());
   EXPECT_GT(rr["p975"].get<double>(), j["final"]["rolling_resistance_N"].get<double>());
-  // A frequency-list tyre from init (ring-normalised: no shapes) with its stated tension
-  // uncertainty set to zero has no uncertain input: a band of zero width, said as such.
+  // A frequency-list tyre from init (ring-normalised: no shapes) with its stated spreads
+  // (tension, tread modulus, tread width) set to zero has no uncertain input: a band of zero
+  // width, said as such.
   const auto cfg = (dir_ / "ring2d.yaml").string();
   ASSERT_EQ(run({"init", "--size", "195/60R14", "--test-pressure-kPa", "230", "--frequencies",
                  "96,112,135,160,186,212", "--orders", "1,2,3,4,5,6", "--2d", "--output", cfg})
                 .exit_code,
             0);
   const auto z = run({"transient", cfg, "--scenario", "load-hold", "--uncertainty", "--json",
-                      "--set", "modal.belt_width_std_percent=0"});
+                      "--set", "modal.belt_width_std_percent=0", "--set",
+                      "tread.modulus_std_percent=0", "--set", "tread.contact_width_std_percent=0"});
   ASSERT_EQ(z.exit_code, 0) << z.err;
   const auto zj = nlohmann::json::parse(z.out);
   EXPECT_TRUE(zj["uncertainty_inputs"].empty());

@@ -46,7 +46,8 @@ TEST_F(ValidateBands, MarksTheRowsOutsideTheBandWidenedByTheirNoise) {
   EXPECT_TRUE(k["rows"][0]["outside_band"].empty()) << k["rows"][0];
   EXPECT_EQ(k["rows"][1]["outside_band"], nlohmann::json::array({"sinking_mm"})) << k["rows"][1];
   EXPECT_TRUE(k["rows"][2]["outside_band"].empty()) << k["rows"][2];
-  // The table prints the measured noise and the band as value +- 2 sigma, and the mark.
+  // The table prints the measured noise as value +- 2 sigma, the band as value [p025, p975],
+  // and the mark.
   const auto table = run(
       {"validate", kConfig, planted.string(), "--uncertainty", "--set", "validation.calibrate=[]"});
   ASSERT_EQ(table.exit_code, 0) << table.err;

@@ -235,13 +235,16 @@ TEST(Effects, AllEffectsTogetherAtNeutralSettingsReproduceTheBaseline) {
   }
   all.push_back("effects.inflation_pressure.enabled=true");  // row at the default 230 kPa
   const TyreConfig params = config_with(all);
-  for (const auto& info : effect_catalogue())
-    EXPECT_TRUE(params.effects.enabled(info.id)) << info.name;
+  for (const auto& info : effect_catalogue())  // the options: option_effects_test.cc
+    if (!info.is_option()) {
+      EXPECT_TRUE(params.effects.enabled(info.id)) << info.name;
+    }
   expect_same_footprint(predict(params, at(kLoad_N)), baseline(), kSame, "all nine");
 }
 
 TEST(Effects, EveryCatalogueDefaultIsAcceptedByTheConfigReader) {
   for (const auto& info : effect_catalogue()) {
+    if (info.is_option()) continue;  // options of the config: option_effects_test.cc
     std::vector<std::string> overrides{"effects." + info.name + ".enabled=true"};
     for (const auto& p : info.parameters) {
       overrides.push_back(info.key(p) + "=" + std::to_string(p.default_value));
@@ -259,6 +262,7 @@ TEST(Effects, EveryCatalogueDefaultIsAcceptedByTheConfigReader) {
 TEST(Effects, EveryEffectOnKeepsEquilibriumWithoutTension) {
   // Each effect switched on at its catalogue defaults, on a row that activates it.
   for (const auto& info : effect_catalogue()) {
+    if (info.is_option()) continue;  // options of the config: option_effects_test.cc
     SCOPED_TRACE(info.name);
     OperatingConditions c = at(kLoad_N);
     c.pressure_kPa = 300;

@@ -32,11 +32,27 @@ std::string exact(double v) {
 }
 
 // The settings a key needs beside the config's (a power crown for its exponent).
+// What a config needs besides `key` to state it: the switch of the option effect it belongs to
+// (the crown's exponent needs a power crown, a foundation a lateral belt, ...).
 std::vector<std::string> needed_by(const std::string& key) {
-  if (key == "footprint_3d.crown.exponent") {
-    return {"footprint_3d.crown.shape=power", "footprint_3d.crown.reference_half_width_mm=60"};
+  for (const auto& e : effect_catalogue()) {
+    if (!e.is_option()) continue;
+    for (const auto& p : e.parameters) {
+      if (e.key(p) != key) continue;
+      std::vector<std::string> out;
+      for (auto& s : effect_catalogue_switch(e.id))
+        if (s.rfind(key + "=", 0) != 0) out.push_back(s);
+      return out;
+    }
   }
   return {};
+}
+
+// The same with `key` at a value of its range, for a config to set it in.
+std::vector<std::string> stated_with(const std::string& key, double v) {
+  std::vector<std::string> out = needed_by(key);
+  if (!out.empty()) out.push_back(key + "=" + exact(v));
+  return out;
 }
 
 TEST(ParameterSpec, SetAndGetAgreeWithTheConfigReaderForEverySearchedKey) {
@@ -49,7 +65,7 @@ TEST(ParameterSpec, SetAndGetAgreeWithTheConfigReaderForEverySearchedKey) {
     sets.push_back(p.key + "=" + exact(v));
     const TyreConfig read = load_tyre_config(path, sets);
     EXPECT_NEAR(p.get(read), v, 1e-12 * std::abs(v)) << p.key;
-    TyreConfig set = load_tyre_config(path, needed_by(p.key));
+    TyreConfig set = load_tyre_config(path, stated_with(p.key, 0.5 * (v + range->max)));
     p.set(set, v);
     EXPECT_NEAR(p.get(set), p.get(read), 1e-12 * std::abs(v)) << p.key;
   }
@@ -71,6 +87,16 @@ TEST(ParameterSpec, EffectEntriesAreTheEffectCatalogues) {
       const ParameterSpec* p = find_parameter(e.key(ep));
       ASSERT_NE(p, nullptr) << e.key(ep);
       EXPECT_EQ(p->unit, ep.unit) << p->key;
+      if (e.is_option()) {
+        // An option's key: the option's reader bounds what a config states; discover searches
+        // the catalogue's range (a key validate calibrates keeps its calibration range).
+        ASSERT_EQ(p->fit.has_value(), ep.fitted) << p->key;
+        if (ep.fitted) {
+          EXPECT_EQ(p->fit->min, ep.min) << p->key;
+          EXPECT_EQ(p->fit->max, ep.max) << p->key;
+        }
+        continue;
+      }
       EXPECT_FALSE(p->calibration) << p->key;
       ASSERT_EQ(p->fit.has_value(), ep.fitted) << p->key;
       if (ep.fitted) {

@@ -145,9 +145,7 @@ TEST_P(Patch3dRefuses, TheConfigReaderNamesTheKeyAndTheReason) {
 INSTANTIATE_TEST_SUITE_P(
     Effects, Patch3dRefuses,
     ::testing::Values(
-        RefusedCase{"RollingSpeed", {"effects.rolling_speed.enabled=true"}, "rolling_speed"},
         RefusedCase{"ContactWidth", {"effects.contact_width.enabled=true"}, "contact_width"},
-        RefusedCase{"TreadCoupling", {"effects.tread_coupling.enabled=true"}, "tread_coupling"},
         RefusedCase{"HorizontalForce", {"horizontal_force_N=500"}, "horizontal_force_N"}),
     [](const auto& info) { return info.param.name; });
 

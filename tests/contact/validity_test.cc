@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "modaltyre/contact/predictor.h"
 
 namespace modaltyre::contact {
@@ -45,6 +47,51 @@ TEST(Validity, Table3LoadsAreInsideAndThirtyKilonewtonsOutside) {
   const Validity v = validity(cfg, p.footprint.sinking_m, p.footprint.contact_length_m);
   EXPECT_FALSE(v.valid);
   EXPECT_NE(v.reason.find("of the free radius R0 = 295 mm"), std::string::npos) << v.reason;
+}
+
+// Issue 48: on a soil the tyre's own deflection, the contact's extent and the soil's sinkage are
+// each judged against their own range, not the axle's approach (deflection + sinkage) against
+// the tyre's.
+TEST(Validity, OnASoilEachPartIsJudgedAgainstItsOwnRange) {
+  TyreConfig c;
+  c.outer_radius_m = 0.3;
+  const double deg = M_PI / 180;
+  // 10 mm of tyre and 40 mm of soil (50 mm of axle approach, 17 % of R0): valid.
+  EXPECT_TRUE(validity_on_soil(c, 0.010, 0.040, 25 * deg, -8 * deg).valid);
+  const Validity tyre = validity_on_soil(c, 0.0361, 0.01, 20 * deg, -5 * deg);
+  EXPECT_FALSE(tyre.valid);
+  EXPECT_NE(tyre.reason.find("tyre deflection 36.1 mm is 12 % of the free radius"),
+            std::string::npos)
+      << tyre.reason;
+  const Validity angle = validity_on_soil(c, 0.01, 0.05, 34 * deg, -6 * deg);
+  EXPECT_FALSE(angle.valid);
+  EXPECT_NE(angle.reason.find("the contact reaches 34 deg from the bottom"), std::string::npos)
+      << angle.reason;
+  const Validity deep = validity_on_soil(c, 0.01, 0.101, 29 * deg, -5 * deg);
+  EXPECT_FALSE(deep.valid);
+  EXPECT_NE(deep.reason.find("soil sinkage 101 mm exceeds D/6 = 100 mm"), std::string::npos)
+      << deep.reason;
+  // The rigid cylinder does not deflect and its integrals hold at any angle: the soil's range only.
+  EXPECT_TRUE(validity_on_soil(c, 0.0, 0.08, 45 * deg, 0, true).valid);
+  EXPECT_FALSE(validity_on_soil(c, 0.0, 0.11, 45 * deg, 0, true).valid);
+}
+
+TEST(Validity, TheFootprintOnSandyLoamIsJudgedByTheTyresDeflection) {
+  // The default 3D tyre at 4 kN on sandy loam (issue 48): 30.1 mm of soil, 9.9 mm of tyre, 40.0
+  // mm of axle approach (above 0.12 R0 = 35.4 mm): valid, where the road's rule called it "not a
+  // prediction".
+  const TyreConfig cfg = load_tyre_config(
+      std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml",
+      {"contact.unit_length_mm=2", "footprint_3d.lateral_cell_mm=10", "ground.model=bekker",
+       "ground.bekker.n=0.7", "ground.bekker.k_c=5.27", "ground.bekker.k_phi=1515.04"});
+  const TyreModel model = build_tyre_model(cfg);
+  const Prediction p = predict(model, cfg.default_conditions(4000));
+  ASSERT_TRUE(p.ok()) << p.message;
+  ASSERT_TRUE(p.footprint.on_soil);
+  EXPECT_GT(p.footprint.sinking_m, kMaxSinkingOverRadius * cfg.outer_radius_m);
+  EXPECT_FALSE(validity(cfg, p.footprint.sinking_m, p.footprint.contact_length_m).valid);
+  const Validity v = validity(cfg, p.footprint);
+  EXPECT_TRUE(v.valid) << v.reason;
 }
 
 }  // namespace

@@ -75,7 +75,6 @@ TEST_F(AtomicFile, DirectoryTarget) {
   EXPECT_EQ(entries(), 1u);
 }
 
-
 // A symbolic link stays a link; the file it points to gets the content.
 TEST_F(AtomicFile, SymlinkIsFollowedNotReplaced) {
   const fs::path real = dir_ / "real.csv", link = dir_ / "link.csv";
@@ -84,6 +83,17 @@ TEST_F(AtomicFile, SymlinkIsFollowedNotReplaced) {
   write_file_atomically(link.string(), "new");
   EXPECT_TRUE(fs::is_symlink(link));
   EXPECT_EQ(slurp(real), "new");
+  EXPECT_EQ(entries(), 2u);
+}
+
+// A dangling link stays a link too: the file it names is created (the file CommandFiles compared
+// with the command's other files, command_files.h final_target), relative to the link's folder.
+TEST_F(AtomicFile, DanglingSymlinkCreatesItsTarget) {
+  const fs::path link = dir_ / "link.svg";
+  fs::create_symlink("made.csv", link);
+  write_file_atomically(link.string(), "new");
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(slurp(dir_ / "made.csv"), "new");
   EXPECT_EQ(entries(), 2u);
 }
 

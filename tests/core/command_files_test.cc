@@ -86,4 +86,32 @@ TEST_F(CommandFilesTest, AcceptsDistinctFilesAndStreams) {
   EXPECT_NO_THROW(f.check());
 }
 
+// Issue 44 item 5: a dangling link names the file that writing through it creates, so an output
+// linked to another output not yet written is that output (transient --plot p.svg -> o.csv
+// wrote the SVG over the CSV written just before). Relative targets, chains and a loop.
+TEST_F(CommandFilesTest, ADanglingLinkIsTheFileItWillCreate) {
+  fs::create_symlink("o.csv", p("p.svg"));  // relative, dangling
+  EXPECT_TRUE(same_file(p("p.svg"), p("o.csv")));
+  EXPECT_EQ(modaltyre::final_target(p("p.svg")), (dir_ / "o.csv").lexically_normal().string());
+  fs::create_symlink(p("p.svg"), p("q.png"));  // a chain ending dangling
+  EXPECT_TRUE(same_file(p("q.png"), p("o.csv")));
+  fs::create_symlink("sub/../deep.csv", p("r.csv"));
+  EXPECT_TRUE(same_file(p("r.csv"), p("deep.csv")));
+  EXPECT_FALSE(same_file(p("p.svg"), p("a.csv")));
+  CommandFiles two;
+  two.output(p("o.csv"), "--csv");
+  two.output(p("p.svg"), "--plot");
+  try {
+    two.check();
+    FAIL() << "not refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().key, "--plot");
+    EXPECT_NE(std::string(e.what()).find("--csv"), std::string::npos) << e.what();
+  }
+  // A loop of links ends the walk (at 40 links) instead of hanging.
+  fs::create_symlink("loop2", p("loop1"));
+  fs::create_symlink("loop1", p("loop2"));
+  EXPECT_FALSE(same_file(p("loop1"), p("a.csv")));
+}
+
 }  // namespace

@@ -195,6 +195,24 @@ TEST_F(CsvTest, BinaryAndNonUtf8Bytes) {
   EXPECT_EQ(e2.where().key, "y");
 }
 
+// Issue 44 item 5: a comment is text like the rest of the file: bytes that are not UTF-8 in it
+// are refused at their line, as the YAML reader refuses them. UTF-8 comments (a degree sign, a
+// mu) stay accepted.
+TEST_F(CsvTest, NonUtf8CommentsAreRefusedAtTheirLine) {
+  const auto c = error_of(write("c.csv",
+                                "# tested at 20 \xB0"
+                                "C\nx,y\n1,2\n"));
+  EXPECT_EQ(c.where().line, 1);
+  EXPECT_EQ(c.where().key, "comment");
+  EXPECT_NE(std::string(c.what()).find("\\xB0 is not UTF-8"), std::string::npos) << c.what();
+  const auto late = error_of(write("late.csv", "x,y\n1,2\n  # r\xE9sum\xE9\n3,4\n"));
+  EXPECT_EQ(late.where().line, 3);
+  EXPECT_NO_THROW(read_csv(write("ok.csv",
+                                 "# 20 \xC2\xB0"
+                                 "C, \xCE\xBC = 0.8\nx,y,label\n1,2,\xC2\xB0\n"),
+                           schema()));
+}
+
 // The row limit protects against accidentally huge inputs.
 TEST_F(CsvTest, RowLimit) {
   auto s = schema();

@@ -27,6 +27,8 @@ using contact::TyreConfig;
 
 inline const std::string kConfig =
     std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+// The default tyre: the 3D patch.
+inline const std::string kConfig3d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
 // The carcass with the dispersion extension (orders up to the mesh's Nyquist order) instead of
 // the default's measured orders only.
 inline const std::string kExtended = "modal.extend_orders=true";
@@ -34,7 +36,10 @@ inline const std::string kExtended = "modal.extend_orders=true";
 struct Planted {
   std::string effect;                                  // name; "" = none
   std::function<void(contact::EffectsConfig&)> truth;  // switches it on with hidden values
-  std::map<std::string, double> hidden;                // key -> planted value
+  /// An option effect's truth (contact/effects.h): sets the option's keys in the config.
+  std::function<void(TyreConfig&)> option_truth;
+  std::string config = kConfig;          // the tyre config the data come from and discover runs on
+  std::map<std::string, double> hidden;  // key -> planted value
   std::vector<OperatingConditions> rows;
   std::vector<std::string> observables = {"sinking_mm", "length_mm"};
   double noise = 0.015;
@@ -62,16 +67,17 @@ inline studies::MeasurementSet make_data(const Planted& p, const std::string& na
       generators;
   std::vector<std::string> o = p.overrides;
   o.push_back("contact.unit_length_mm=" + std::to_string(p.unit_length_mm));
-  auto it = generators.find(joined(o));
+  auto it = generators.find(p.config + joined(o));
   if (it == generators.end()) {
-    TyreConfig c = contact::load_tyre_config(kConfig, o);
+    TyreConfig c = contact::load_tyre_config(p.config, o);
     auto g = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(c));
-    it = generators.emplace(joined(o), std::make_pair(std::move(c), std::move(g))).first;
+    it = generators.emplace(p.config + joined(o), std::make_pair(std::move(c), std::move(g))).first;
   }
   const TyreConfig& gen_cfg = it->second.first;
   const contact::TyreModel& gen = *it->second.second;
   TyreConfig truth = gen_cfg;
   if (p.truth) p.truth(truth.effects);
+  if (p.option_truth) p.option_truth(truth);
   std::mt19937 rng(p.seed);
   std::normal_distribution<double> unit(0.0, 1.0);
   const auto path = std::filesystem::temp_directory_path() /

@@ -194,3 +194,20 @@ TEST(FmuConformance, FreeingAnInstanceTwiceIsHarmless) {
 
 }  // namespace
 }  // namespace modaltyre::fmu::test
+
+namespace modaltyre::fmu::test {
+namespace {
+
+TEST(FmuConformance, AWheelSpinningBeyondTheCriticalSpeedIsRefused) {
+  // Issue 44: beyond the carcass's critical speed (277.4 km/h on the 2D variant) the transient
+  // blew up (the hub 13 m above the road at 500 km/h); the FMU refuses the step with the reason.
+  FmuInstance f(road_2d_fmu());
+  ASSERT_EQ(f.initialize(), fmi2OK);
+  const double v = 300 / 3.6, R0 = 0.2948;
+  f.set_wheel(0, R0 - 0.0145, v, 0, 0, v / R0);
+  EXPECT_EQ(f.step(1e-3), fmi2Discard);
+  EXPECT_TRUE(f.logged("critical speed 277.4 km/h")) << f.messages().back();
+}
+
+}  // namespace
+}  // namespace modaltyre::fmu::test

@@ -65,19 +65,97 @@ TEST(GroundSettings, EveryKeyCanBeSetFromTheCommandLine) {
   ASSERT_TRUE(g.bekker.unloading.has_value());
   EXPECT_EQ(g.bekker.unloading->k0_kN_m3, 10);
   EXPECT_EQ(g.bekker.unloading->Au_kN_m4, 2e6);
-  const GroundSettings kv = load_ground_file(
-      kSoils + "lete_sand.yaml", {"ground.model=kelvin_voigt", "ground.kelvin_voigt.E2_MPa=3"});
+  const std::string kv_file = temp_file(
+      "kv.yaml", "ground:\n  model: kelvin_voigt\n  kelvin_voigt: {E2_MPa: 2, layer_mm: 200}\n");
+  const GroundSettings kv = load_ground_file(kv_file, {"ground.kelvin_voigt.E2_MPa=3"});
   EXPECT_EQ(kv.model, GroundModel::kelvin_voigt);
   EXPECT_EQ(kv.kelvin_voigt.E2_MPa, 3);
 }
 
+// The discovery's soil_unloading switch: Wong's unloading on while its block is given, off with
+// enabled: false (the rigid-plastic soil, as without the block).
+TEST(GroundSettings, WongsUnloadingIsSwitchable) {
+  const std::string f =
+      temp_file("unl_on.yaml",
+                "ground:\n  model: bekker\n  bekker:\n    n: 0.79\n    k_c: 102\n    "
+                "k_phi: 5301\n    unloading: {k0: 0, Au: 5e5}\n");
+  EXPECT_TRUE(load_ground_file(f).bekker.unloading.has_value());
+  const GroundSettings off = load_ground_file(f, {"ground.bekker.unloading.enabled=false"});
+  EXPECT_FALSE(off.bekker.unloading.has_value());
+  const GroundSettings none = load_ground_file(kSoils + "lete_sand.yaml");
+  const RigidWheel wheel{0.2948, 0.14};
+  GroundSettings a = off, b = none;
+  a.bekker_shear = b.bekker_shear;
+  EXPECT_EQ(rigid_wheel_rolling(a, wheel, 3000, 0.2).sinkage_m,
+            rigid_wheel_rolling(b, wheel, 3000, 0.2).sinkage_m);
+  const std::string m = message_of([&] {
+    load_ground_file(kSoils + "lete_sand.yaml", {"ground.bekker.unloading.enabled=true"});
+  });
+  EXPECT_NE(m.find("ground.bekker.unloading.Au"), std::string::npos) << m;
+}
+
+// Issue 44, "soil settings dropped silently": each case exit 2 naming file, line and key.
+TEST(GroundSettings, SoilKeysAreNeverDroppedInSilence) {
+  // A soil file without model: (the rigid road) and model: rigid with a bekker block.
+  const std::string no_model = temp_file(
+      "no_model.yaml", "ground:\n  bekker:\n    n: 0.79\n    k_c: 102\n    k_phi: 5301\n");
+  std::string m = message_of([&] { load_ground_file(no_model); });
+  EXPECT_NE(m.find("no_model.yaml:3: ground.bekker.n"), std::string::npos) << m;
+  EXPECT_NE(m.find("without ground.model"), std::string::npos) << m;
+  const std::string rigid =
+      temp_file("rigid.yaml",
+                "ground:\n  model: rigid\n  bekker:\n    n: 0.79\n    k_c: 102\n    k_phi: 5301\n");
+  m = message_of([&] { load_ground_file(rigid); });
+  EXPECT_NE(m.find("rigid.yaml:4: ground.bekker.n"), std::string::npos) << m;
+  EXPECT_NE(m.find("ground.model is rigid"), std::string::npos) << m;
+  // --set ground.model=kelvin_voigt over a Bekker file: the Kelvin-Voigt keys are unstated and
+  // the Bekker block would be dropped.
+  m = message_of(
+      [&] { load_ground_file(kSoils + "lete_sand.yaml", {"ground.model=kelvin_voigt"}); });
+  EXPECT_NE(m.find("ground.bekker"), std::string::npos) << m;
+  EXPECT_NE(m.find("ground.model is kelvin_voigt"), std::string::npos) << m;
+  // A soil model whose normal law is not stated.
+  const std::string kv = temp_file("kv_bare.yaml", "ground:\n  model: kelvin_voigt\n");
+  m = message_of([&] { load_ground_file(kv); });
+  EXPECT_NE(m.find("ground.kelvin_voigt.E2_MPa"), std::string::npos) << m;
+  EXPECT_NE(m.find("required with model: kelvin_voigt"), std::string::npos) << m;
+  const std::string bekker =
+      temp_file("bk_bare.yaml", "ground:\n  model: bekker\n  bekker:\n    n: 0.7\n");
+  m = message_of([&] { load_ground_file(bekker); });
+  EXPECT_NE(m.find("ground.bekker.k_c"), std::string::npos) << m;
+}
+
+TEST(GroundSettings, WongReecesStressIsAStatedOptionOffByDefault) {
+  const GroundSettings off = load_ground_file(kSoils + "lete_sand.yaml");
+  EXPECT_FALSE(off.wong_reece.enabled);
+  const GroundSettings on =
+      load_ground_file(kSoils + "lete_sand.yaml",
+                       {"ground.bekker.wong_reece.enabled=true", "ground.bekker.wong_reece.c1=0.18",
+                        "ground.bekker.wong_reece.c2=0.3", "ground.bekker.wong_reece.c3=0.1"});
+  EXPECT_TRUE(on.wong_reece.enabled);
+  EXPECT_EQ(on.wong_reece.c1, 0.18);
+  EXPECT_EQ(on.wong_reece.c2, 0.3);
+  EXPECT_EQ(on.wong_reece.c3, 0.1);
+  EXPECT_NEAR(on.wong_reece.peak_ratio(0.5), 0.33, 1e-15);
+  EXPECT_EQ(on.wong_reece.peak_ratio(5), 1.0);  // clamped: the peak never leaves the contact
+  const std::string m = message_of(
+      [&] { load_ground_file(kSoils + "lete_sand.yaml", {"ground.bekker.wong_reece.c1=1.5"}); });
+  EXPECT_NE(m.find("ground.bekker.wong_reece.c1"), std::string::npos) << m;
+  const std::string bad =
+      temp_file("wr.yaml",
+                "ground:\n  model: bekker\n  bekker:\n    n: 0.79\n    k_c: 102\n    k_phi: 5301\n "
+                "   wong_reece: {enabled: true, c4: 1}\n");
+  EXPECT_NE(message_of([&] { load_ground_file(bad); }).find("wong_reece.c4"), std::string::npos);
+}
+
 TEST(GroundSettings, HostileSoilFilesNameFileLineAndKey) {
-  const std::string bad_key =
-      temp_file("bad_key.yaml", "ground:\n  model: bekker\n  bekker:\n    nn: 1\n");
+  const std::string bad_key = temp_file("bad_key.yaml",
+                                        "ground:\n  model: bekker\n  bekker:\n    n: 0.79\n    "
+                                        "k_c: 102\n    k_phi: 5301\n    nn: 1\n");
   EXPECT_NE(message_of([&] { load_ground_file(bad_key); }).find("ground.bekker.nn"),
             std::string::npos);
-  const std::string bad_n =
-      temp_file("bad_n.yaml", "ground:\n  model: bekker\n  bekker:\n    n: -1\n");
+  const std::string bad_n = temp_file(
+      "bad_n.yaml", "ground:\n  model: bekker\n  bekker:\n    n: -1\n    k_c: 1\n    k_phi: 1\n");
   const std::string m = message_of([&] { load_ground_file(bad_n); });
   EXPECT_NE(m.find(":4"), std::string::npos) << m;
   EXPECT_NE(m.find("ground.bekker.n"), std::string::npos) << m;
@@ -85,12 +163,14 @@ TEST(GroundSettings, HostileSoilFilesNameFileLineAndKey) {
   EXPECT_NE(message_of([&] { load_ground_file(bad_model); }).find("ground.model"),
             std::string::npos);
   const std::string zero =
-      temp_file("zero.yaml", "ground:\n  model: bekker\n  bekker: {k_c: 0, k_phi: 0}\n");
+      temp_file("zero.yaml", "ground:\n  model: bekker\n  bekker: {n: 1, k_c: 0, k_phi: 0}\n");
   EXPECT_FALSE(message_of([&] { load_ground_file(zero); }).empty());
   const std::string no_ground = temp_file("none.yaml", "soil:\n  model: bekker\n");
   EXPECT_FALSE(message_of([&] { load_ground_file(no_ground); }).empty());
   const std::string unloading =
-      temp_file("unl.yaml", "ground:\n  model: bekker\n  bekker:\n    unloading: {k0: 0, Au: 0}\n");
+      temp_file("unl.yaml",
+                "ground:\n  model: bekker\n  bekker:\n    n: 0.79\n    k_c: 102\n    k_phi: 5301\n "
+                "   unloading: {k0: 0, Au: 0}\n");
   EXPECT_NE(message_of([&] { load_ground_file(unloading); }).find("unloading"), std::string::npos);
   EXPECT_FALSE(message_of([&] { load_ground_file(kSoils + "nonexistent.yaml"); }).empty());
 }

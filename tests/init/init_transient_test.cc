@@ -14,7 +14,7 @@
 namespace modaltyre::init {
 namespace {
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
+const std::string kInitTransientSrc = MODALTYRE_SOURCE_DIR;
 
 TEST(InitTransient, ScenariosAtFnominOnAGridThatResolvesTheBounce) {
   InitInputs in;
@@ -27,7 +27,7 @@ TEST(InitTransient, ScenariosAtFnominOnAGridThatResolvesTheBounce) {
   in.fnomin_N = 3500;
   const InitResult r = init_tyre(in);
   ASSERT_NE(r.yaml.find("\ntransient:\n"), std::string::npos);
-  const ConfigTree tree = ConfigTree::from_string(r.yaml, kSrc + "/configs/init.yaml",
+  const ConfigTree tree = ConfigTree::from_string(r.yaml, kInitTransientSrc + "/configs/init.yaml",
                                                   {"transient.free_vibration.duration_s=0.5"});
   const contact::TyreConfig cfg = contact::read_tyre_config(tree);
   EXPECT_EQ(cfg.transient.output_step_s, 0);  // auto

@@ -30,6 +30,33 @@ def test_traction_equals_the_cli(modaltyre):
     assert np.all(cols["rut_depth_mm"] <= cols["soil_sinkage_mm"] + 1e-9)
 
 
+def test_traction_returns_the_terramechanics_fields_as_the_cli(modaltyre):
+    # Issue 48: the rolling radius, the resistance's parts, the efficiency, validity and the
+    # curve's towed and self-propelled points, for both slip references and a stated speed.
+    slips = [-0.1, 0.0, 0.1]
+    sets = {**COARSE, "ground.bekker.bulldozing.enabled": True}
+    for ref in ("rolling", "unloaded"):
+        got = modaltyre.traction(SF350_2D, [3000], slips, ground=LETE, overrides=sets,
+                                 slip_reference=ref, speed_km_h=10)
+        cols = got.pop("columns")
+        extra = ["--set", "ground.bekker.bulldozing.enabled=true", "--slip-reference", ref,
+                 "--speed-km-h", "10"]
+        assert_same(got, cli_json(*cli_args([3000], slips, extra)))
+        assert got["slip_reference"] == ref and got["speed_km_h"] == 10
+        for key in ("rolling_radius_mm", "tractive_efficiency", "compaction_resistance_N",
+                    "flexing_resistance_N", "bulldozing_resistance_N"):
+            assert cols[key].shape == (3,), key
+        parts = (cols["compaction_resistance_N"] + cols["flexing_resistance_N"]
+                 + cols["bulldozing_resistance_N"])
+        assert np.allclose(cols["motion_resistance_N"], parts, rtol=1e-6)
+        assert all("valid" in c for c in got["cases"])
+        assert got["towed_point"]["slip"] < 0 and got["towed_point"]["drawbar_pull_N"] < 0
+    with pytest.raises(modaltyre.InputError, match="slip_reference"):
+        modaltyre.traction(SF350_2D, [3000], [0.1], ground=LETE, slip_reference="R0")
+    with pytest.raises(modaltyre.InputError, match="speed_km_h"):
+        modaltyre.traction(SF350_2D, [3000], [0.1], ground=LETE, speed_km_h=500)
+
+
 def test_traction_passes_and_rigid_wheel_equal_the_cli(modaltyre):
     sets = dict(COARSE)
     sets["ground.bekker.unloading.k0"] = 0

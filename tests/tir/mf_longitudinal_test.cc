@@ -12,7 +12,7 @@ namespace {
 
 using namespace modaltyre::tir;
 
-MfBasis basis() {
+MfBasis reference_basis() {
   MfBasis b;
   b.unloaded_radius_m = 0.3;
   b.fnomin_N = 4000;
@@ -32,7 +32,7 @@ MfLongitudinal car() {
   return c;
 }
 
-double dfz(double fz) { return (fz - basis().fnomin_N) / basis().fnomin_N; }
+double dfz(double fz) { return (fz - reference_basis().fnomin_N) / reference_basis().fnomin_N; }
 
 TEST(MfLongitudinal, SlopeAtZeroShiftedSlipIsTheSlipStiffness) {
   const MfLongitudinal c = car();
@@ -40,12 +40,14 @@ TEST(MfLongitudinal, SlopeAtZeroShiftedSlipIsTheSlipStiffness) {
     const double d = dfz(fz);
     const double shx = c.phx1 + c.phx2 * d;
     const double h = 1e-7;
-    const double slope =
-        (mf_fx0_N(c, {}, basis(), -shx + h, fz) - mf_fx0_N(c, {}, basis(), -shx - h, fz)) / (2 * h);
+    const double slope = (mf_fx0_N(c, {}, reference_basis(), -shx + h, fz) -
+                          mf_fx0_N(c, {}, reference_basis(), -shx - h, fz)) /
+                         (2 * h);
     const double kxk = fz * (c.pkx1 + c.pkx2 * d) * std::exp(c.pkx3 * d);  // 4.E15
     EXPECT_NEAR(slope, kxk, 1e-5 * kxk) << fz;
     // At kappa = -S_Hx the force is the vertical shift alone (4.E18).
-    EXPECT_NEAR(mf_fx0_N(c, {}, basis(), -shx, fz), fz * (c.pvx1 + c.pvx2 * d), 1e-9 * fz);
+    EXPECT_NEAR(mf_fx0_N(c, {}, reference_basis(), -shx, fz), fz * (c.pvx1 + c.pvx2 * d),
+                1e-9 * fz);
   }
 }
 
@@ -54,7 +56,8 @@ TEST(MfLongitudinal, PeakIsDPlusTheVerticalShift) {
   const double fz = 5000, d = dfz(fz);
   const double D = (c.pdx1 + c.pdx2 * d) * fz;  // 4.E12-4.E13
   double peak = -1e9;
-  for (double k = 0; k < 1; k += 1e-4) peak = std::max(peak, mf_fx0_N(c, {}, basis(), k, fz));
+  for (double k = 0; k < 1; k += 1e-4)
+    peak = std::max(peak, mf_fx0_N(c, {}, reference_basis(), k, fz));
   EXPECT_NEAR(peak, D + fz * (c.pvx1 + c.pvx2 * d), 1e-4 * D);
 }
 
@@ -64,8 +67,8 @@ TEST(MfLongitudinal, HorizontalShiftMovesTheCurve) {
   MfLongitudinal unshifted = c;
   unshifted.phx1 = 0;
   for (double k : {-0.2, -0.03, 0.01, 0.1}) {
-    EXPECT_NEAR(mf_fx0_N(c, {}, basis(), k, 4000),
-                mf_fx0_N(unshifted, {}, basis(), k + c.phx1, 4000), 1e-9);
+    EXPECT_NEAR(mf_fx0_N(c, {}, reference_basis(), k, 4000),
+                mf_fx0_N(unshifted, {}, reference_basis(), k + c.phx1, 4000), 1e-9);
   }
 }
 
@@ -73,14 +76,15 @@ TEST(MfLongitudinal, CurvatureIsLimitedToOneAndSignedByTheSlip) {
   MfLongitudinal c = car();
   c.pex1 = 0.5, c.pex4 = 0.4;
   // (1 - PEX4 sgn kappa_x): braking 0.7, driving 0.3.
-  EXPECT_NEAR(mf_curvature_x(c, {}, basis(), -0.1, 4000), 0.7, 1e-12);
-  EXPECT_NEAR(mf_curvature_x(c, {}, basis(), 0.1, 4000), 0.3, 1e-12);
+  EXPECT_NEAR(mf_curvature_x(c, {}, reference_basis(), -0.1, 4000), 0.7, 1e-12);
+  EXPECT_NEAR(mf_curvature_x(c, {}, reference_basis(), 0.1, 4000), 0.3, 1e-12);
   // Braking E_x = 2 x 1.3 evaluates as E_x = 1 exactly (4.E14): as PEX1 = 1 / 1.3.
   c.pex1 = 2.0, c.pex4 = 0.3;
   MfLongitudinal one = c;
   one.pex1 = 1 / 1.3;
-  EXPECT_NEAR(mf_curvature_x(one, {}, basis(), -0.2, 4000), 1.0, 1e-12);
-  EXPECT_DOUBLE_EQ(mf_fx0_N(c, {}, basis(), -0.2, 4000), mf_fx0_N(one, {}, basis(), -0.2, 4000));
+  EXPECT_NEAR(mf_curvature_x(one, {}, reference_basis(), -0.2, 4000), 1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(mf_fx0_N(c, {}, reference_basis(), -0.2, 4000),
+                   mf_fx0_N(one, {}, reference_basis(), -0.2, 4000));
 }
 
 TEST(MfLongitudinal, ScalingFactorsScaleTheirTerms) {
@@ -90,8 +94,8 @@ TEST(MfLongitudinal, ScalingFactorsScaleTheirTerms) {
   // The peak halves (and lambda'_mux = 10 * 0.5 / (1 + 9 * 0.5) scales the vertical shift).
   double peak = 0, peak_half = 0;
   for (double k = 0; k < 1; k += 1e-4) {
-    peak = std::max(peak, mf_fx0_N(c, {}, basis(), k, 4000));
-    peak_half = std::max(peak_half, mf_fx0_N(c, s, basis(), k, 4000));
+    peak = std::max(peak, mf_fx0_N(c, {}, reference_basis(), k, 4000));
+    peak_half = std::max(peak_half, mf_fx0_N(c, s, reference_basis(), k, 4000));
   }
   const double sv = 4000 * c.pvx1;
   EXPECT_NEAR(peak_half - sv * 10 * 0.5 / 5.5, 0.5 * (peak - sv), 1e-3 * peak);
@@ -100,7 +104,7 @@ TEST(MfLongitudinal, ScalingFactorsScaleTheirTerms) {
 TEST(MfLongitudinal, RollingMomentByHand) {
   MfRolling q;
   q.qsy1 = 0.01, q.qsy2 = 0.002, q.qsy3 = 0.001, q.qsy4 = 2e-4, q.qsy7 = 0.85;
-  const MfBasis b = basis();
+  const MfBasis b = reference_basis();
   const double fx = -300, fz = 6000, v = 25;
   const double vr = v / b.longvl_m_s;
   const double expected = -0.3 * 4000 *
@@ -120,7 +124,7 @@ TEST(MfLongitudinal, RollingMomentByHand) {
 TEST(MfLongitudinal, EffectiveRadiusByHand) {
   MfEffectiveRadius r;
   r.q_re0 = 0.998, r.q_v1 = 1e-3, r.breff = 8, r.dreff = 0.26, r.freff = 0.07;
-  const MfBasis b = basis();
+  const MfBasis b = reference_basis();
   const double omega = 50, fz = 5000;
   const double r_omega = 0.3 * (0.998 + 1e-3 * std::pow(0.3 * omega / 16.7, 2));
   const double expected =

@@ -16,7 +16,7 @@ namespace {
 
 using namespace modaltyre_test;
 
-const std::string kTirData = std::string(MODALTYRE_SOURCE_DIR) + "/tests/data/tir/";
+const std::string kSlipTirData = std::string(MODALTYRE_SOURCE_DIR) + "/tests/data/tir/";
 
 SlipRuns planted_runs() {
   const Planted p = planted();
@@ -69,7 +69,7 @@ TEST(SlipCompare, AnotherSizeWithTheSameDimensionlessLawsComparesToZero) {
 }
 
 TEST(SlipCompare, AFileWithoutTheLawsSaysWhichKeysItLacks) {
-  const MfTyre t = read_mf_tyre(kTirData + "mfswift62_mm_kN.tir");
+  const MfTyre t = read_mf_tyre(kSlipTirData + "mfswift62_mm_kN.tir");
   const SlipComparison c = compare_slip_runs(t, planted_runs(), true, 4000, 0.3);
   EXPECT_FALSE(c.rms_fx_over_fz);
   EXPECT_NE(c.force_reason.find("PCX1, PDX1 and PKX1"), std::string::npos) << c.force_reason;
@@ -81,7 +81,7 @@ TEST(SlipCompare, AFileWithoutTheLawsSaysWhichKeysItLacks) {
 }
 
 TEST(SlipCompare, PublicMf62FileIsReadAsWritten) {
-  const MfTyre t = read_mf_tyre(kTirData + "tyredyn_car205_60R19_mf62.tir");
+  const MfTyre t = read_mf_tyre(kSlipTirData + "tyredyn_car205_60R19_mf62.tir");
   ASSERT_TRUE(t.longitudinal && t.rolling && t.effective_radius);
   EXPECT_DOUBLE_EQ(t.longitudinal->pcx1, 1.579);
   EXPECT_DOUBLE_EQ(t.longitudinal->pkx1, 21.69);
@@ -96,7 +96,7 @@ TEST(SlipCompare, PublicMf62FileIsReadAsWritten) {
 
 // MF 5.2 states M_y = -R0 F_z (QSY1 + ...): the same law as MF 6.x's with QSY7 = 1.
 TEST(SlipCompare, Mf52RollingMomentIsProportionalToTheLoad) {
-  const MfTyre t = read_mf_tyre(kTirData + "chrono_generic_mf52.tir");
+  const MfTyre t = read_mf_tyre(kSlipTirData + "chrono_generic_mf52.tir");
   ASSERT_TRUE(t.rolling);
   EXPECT_EQ(t.rolling->qsy7, 1);
   EXPECT_EQ(t.rolling->qsy8, 0);

@@ -48,23 +48,22 @@ std::vector<UncertainInput> collect_inputs(const contact::TyreConfig& config,
           {InputKind::mode_frequency, int(i), label + " frequency", f_std, source, {}, {}});
     }
   }
-  if (u.tread_modulus_rel_std > 0) {
-    out.push_back({InputKind::tread_modulus,
-                   -1,
-                   "tread modulus",
-                   u.tread_modulus_rel_std,
-                   "tread.modulus_std_percent",
-                   {},
-                   {}});
-  }
-  if (u.belt_width_rel_std > 0 && !shapes_scale) {
-    out.push_back({InputKind::belt_width,
-                   -1,
-                   "belt width (modal mass)",
-                   u.belt_width_rel_std,
-                   "modal.belt_width_std_percent",
-                   {},
-                   {}});
+  // The config's stated scalars (a ring-normalised belt width only: shapes carry their own mass).
+  struct Stated {
+    InputKind kind;
+    const char* name;
+    double rel_std;
+    const char* key;
+  };
+  const Stated stated[] = {
+      {InputKind::tread_modulus, "tread modulus", u.tread_modulus_rel_std,
+       "tread.modulus_std_percent"},
+      {InputKind::tread_width, "tread width", u.tread_width_rel_std,
+       "tread.contact_width_std_percent"},
+      {InputKind::belt_width, "belt width (modal mass)", shapes_scale ? 0.0 : u.belt_width_rel_std,
+       "modal.belt_width_std_percent"}};
+  for (const Stated& st : stated) {
+    if (st.rel_std > 0) out.push_back({st.kind, -1, st.name, st.rel_std, st.key, {}, {}});
   }
   return out;
 }
@@ -129,6 +128,10 @@ void apply(const UncertainInput& input, double x, contact::TyreConfig& config,
       break;
     case InputKind::belt_width:
       config.carcass.belt_width_m *= 1 + x;
+      break;
+    case InputKind::tread_width:
+      config.tread.width_m *= 1 + x;
+      if (config.footprint_3d) config.footprint_3d->tread_width_m *= 1 + x;
       break;
     case InputKind::calibration:
       for (std::size_t k = 0; k < input.keys.size(); ++k) {

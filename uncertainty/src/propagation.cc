@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "alternatives.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/uncertainty/order_mixture.h"
 
@@ -22,8 +23,6 @@ constexpr double kMinFactor = 0.05;
 /// Relative resolution of an output (four printed digits): differences below it are noise.
 constexpr double kOutputResolution = 1e-4;
 
-using Outputs = std::vector<std::vector<double>>;  // [case][output]
-
 Outputs perturbed(const contact::TyreConfig& config, const modal::ModeIdentification& modes,
                   const Evaluator& evaluate, const std::vector<UncertainInput>& inputs,
                   const std::vector<double>& x, const std::string& what) {
@@ -34,6 +33,8 @@ Outputs perturbed(const contact::TyreConfig& config, const modal::ModeIdentifica
   }
   return evaluate(c, m, what);
 }
+
+}  // namespace
 
 /// Every row has one value per output, all finite: a model that returns fewer, or NaN, would
 /// make a band of garbage.
@@ -49,6 +50,8 @@ void check_shape(const Outputs& v, std::size_t rows, std::size_t outputs, const 
   }
 }
 
+namespace {
+
 double percentile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
   const double pos = q * (v.size() - 1);
@@ -60,8 +63,9 @@ double percentile(std::vector<double> v, double q) {
 }  // namespace
 
 void PropagationOptions::validate() const {
-  if (samples < 20 || samples > 100000) {
-    throw std::invalid_argument("samples must be in 20..100000, got " + std::to_string(samples));
+  if (samples < kMinSamples || samples > kMaxSamples) {
+    throw std::invalid_argument("samples must be in " + std::to_string(kMinSamples) + ".." +
+                                std::to_string(kMaxSamples) + ", got " + std::to_string(samples));
   }
   if (!(max_nonlinearity > 0) || !std::isfinite(max_nonlinearity)) {
     throw std::invalid_argument("max_nonlinearity must be > 0");
@@ -258,58 +262,6 @@ PropagationResult propagate_continuous(const contact::TyreConfig& config,
   return r;
 }
 
-// A frequency list's alternative order assignments (modal.order_alternatives) mixed into the
-// bands: each alternative's nominal prediction shifts the continuous distribution
-// (order_mixture.h).
-void mix_order_alternatives(PropagationResult& r, const contact::TyreConfig& config,
-                            const modal::ModeIdentification& modes, const Evaluator& evaluate,
-                            const Outputs& nominal, const std::vector<Outputs>& samples) {
-  const contact::CarcassSettings& s = config.carcass;
-  const std::size_t na = s.order_alternatives.size();
-  if (na == 0) return;
-  std::vector<Outputs> alt(na);
-  for (std::size_t a = 0; a < na; ++a) {
-    contact::TyreConfig c = config;
-    c.carcass.orders = s.order_alternatives[a];
-    modal::ModeIdentification m = modes;
-    // config_modes: the list's modes first, in the list's order.
-    for (std::size_t i = 0; i < c.carcass.orders.size() && i < m.modes.size(); ++i) {
-      m.modes[i].apparent_order = c.carcass.orders[i];
-    }
-    const std::string what = "order alternative " + std::to_string(a + 1);
-    alt[a] = evaluate(c, m, what);
-    check_shape(alt[a], nominal.size(), nominal.front().size(), what);
-  }
-  r.evaluations += static_cast<int>(na);
-  if (r.inputs.empty())
-    r.check = "no continuous uncertain input (noise-free shapes, nothing stated)";
-  double rest = 1;
-  for (double p : s.order_alternative_probabilities) rest -= p;
-  r.order_alternatives.push_back({s.orders, rest});
-  for (std::size_t a = 0; a < na; ++a) {
-    r.order_alternatives.push_back({s.order_alternatives[a], s.order_alternative_probabilities[a]});
-  }
-  for (std::size_t c = 0; c < nominal.size(); ++c) {
-    for (std::size_t q = 0; q < nominal[c].size(); ++q) {
-      std::vector<MixtureComponent> comps = {{rest, 0.0}};
-      for (std::size_t a = 0; a < na; ++a) {
-        comps.push_back({s.order_alternative_probabilities[a], alt[a][c][q] - nominal[c][q]});
-      }
-      std::vector<double> column;
-      for (const auto& sample : samples) column.push_back(sample[c][q]);
-      r.cases[c].bands[q] =
-          mix_band(r.cases[c].bands[q], samples.empty() ? nullptr : &column, comps);
-    }
-  }
-  std::ostringstream words;
-  words.precision(3);
-  words << "; mixed with " << na << " alternative order assignment" << (na > 1 ? "s" : "")
-        << " of the frequency list (modal.order_alternatives, probabilities";
-  for (double p : s.order_alternative_probabilities) words << " " << p;
-  words << "; modal.orders " << rest << ")";
-  r.check += words.str();
-}
-
 }  // namespace
 
 PropagationResult propagate_outputs(const contact::TyreConfig& config,
@@ -319,7 +271,7 @@ PropagationResult propagate_outputs(const contact::TyreConfig& config,
   Outputs nominal;
   std::vector<Outputs> samples;
   PropagationResult r = propagate_continuous(config, modes, evaluate, outputs, o, nominal, samples);
-  mix_order_alternatives(r, config, modes, evaluate, nominal, samples);
+  mix_alternatives(r, config, modes, evaluate, nominal, samples);
   return r;
 }
 

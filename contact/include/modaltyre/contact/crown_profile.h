@@ -32,6 +32,10 @@ struct CrownProfile {
   double shoulder_start_m = 0;         ///< y1, where the shoulder arc begins, < R1
   std::vector<double> contour_y_m;     ///< |y|, strictly increasing from 0 (contour)
   std::vector<double> contour_drop_m;  ///< z at those points, from 0, strictly increasing
+  /// flat: a crown taken flat for want of a section drawing is an assumption; the bands span
+  /// crowns from flat to the circular crown of this radius (uniform in the curvature,
+  /// docs/uncertainty.md section 2). 0 = the flat crown is certain.
+  double round_limit_radius_m = 0;
 
   /// z(y) [m] for any y (symmetric). Beyond the last contour point or where a shoulder arc
   /// turns vertical the drop keeps the last slope (the tread-width limit of patch3d.h cuts the

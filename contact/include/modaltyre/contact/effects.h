@@ -28,6 +28,18 @@
 //                       c_k -> c_k / (1 + pi R kappa c_k)
 // With the 3D patch (footprint_3d:) tread_coupling, rolling_speed and contact_width are refused
 // (EffectInfo::refused_with_3d says why); the others act on it as on the 2D patch.
+//
+// Option effects: physics built as an option of the config, outside section effects:, listed,
+// switched and fitted through the same catalogue (EffectInfo::option; option_effects.cc):
+//   lateral_belt        footprint_3d.lateral_belt: the belt strip bends across the tread (free
+//                       strip on the hoop foundation, docs/footprint.md section 7)
+//   pneumatic_share     modal.pneumatic_share: beta p A carried over the contact area
+//                       (docs/footprint.md section 8)
+//   crown_shape         footprint_3d.crown.shape power: z = (y_r^2 / 2R)(|y| / y_r)^n instead of
+//                       the circular crown (crown_profile.h)
+//   sidewall_softening  footprint_3d.sidewall: the inflated sidewalls' nonlinear loss of radial
+//                       stiffness (sidewall_membrane.h, docs/footprint.md section 9)
+// A soil law of ground: is registered the same way (its keys ground.*, regime surface or slip).
 #include <array>
 #include <functional>
 #include <optional>
@@ -40,6 +52,8 @@
 
 namespace modaltyre::contact {
 
+struct TyreConfig;
+
 enum class EffectId {
   inflation_pressure,
   tread_relaxation,
@@ -50,8 +64,13 @@ enum class EffectId {
   rolling_speed,
   contact_width,
   belt_flattening,
+  // option effects (EffectInfo::option)
+  lateral_belt,
+  pneumatic_share,
+  crown_shape,
+  sidewall_softening,
 };
-inline constexpr int kEffectCount = 9;
+inline constexpr int kEffectCount = 13;
 
 /// The effects' parameters as the config states them (the unit is in each name): the catalogue
 /// (effects.cc) declares every key with its unit and range, calibrations and discover search
@@ -108,8 +127,10 @@ struct EffectsConfig {
     double stiffness_Pa() const { return stiffness_MPa * 1e6; }
   } belt_flattening;
 
+  /// The flag effects.NAME.enabled (std::logic_error for an option effect: effect_enabled()).
   bool enabled(EffectId id) const;
   bool& enabled(EffectId id);
+  /// Any effect of section effects: on.
   bool any() const;
 };
 
@@ -129,15 +150,48 @@ EffectParameterRef parameter_ref() {
           [](const EffectsConfig& e) -> const double& { return (e.*Effect).*Parameter; }};
 }
 
+/// A parameter of an option effect: its config key and value (in the key's unit) in a
+/// TyreConfig that has the option (InputError naming the key otherwise, as parameter_spec.h).
+struct OptionParameterRef {
+  std::string key;  ///< e.g. "footprint_3d.lateral_belt.foundation_MPa_per_m"
+  double (*get)(const TyreConfig&) = nullptr;
+  void (*set)(TyreConfig&, double) = nullptr;
+};
+
 /// One parameter of an effect as listed by `modaltyre effects`. Its fit range for discover and
 /// its transform are in the parameter specification (parameter_spec.h), built from this entry.
 struct EffectParameterInfo {
   std::string name;  ///< e.g. "exponent"; the config key is effects.EFFECT.name
   std::string unit;  ///< "-" for dimensionless
-  double default_value = 0, min = 0, max = 0;  ///< [min, max]: what the config reader accepts
+  /// [min, max]: what the config reader accepts (an option effect's: what discover searches;
+  /// its option's reader accepts a wider range)
+  double default_value = 0, min = 0, max = 0;
   bool fitted = true;  ///< false: a stated reference value that `discover` does not fit
   std::string meaning;
-  EffectParameterRef ref;
+  EffectParameterRef ref;          ///< an effects.NAME parameter (null for an option effect)
+  OptionParameterRef option = {};  ///< an option effect's parameter (empty key otherwise)
+};
+
+/// How the strength of an effect (its first fitted parameter) switches it off, for the
+/// detection limits (discover/detection_limit.h).
+enum class EffectStrength {
+  from_neutral,  ///< vanishes at EffectInfo::neutral, grows away from it towards the default
+  inverse,       ///< vanishes as the parameter grows without bound (a modulus, a foundation)
+  none,          ///< no value switches it off (EffectInfo::no_strength says why)
+};
+
+/// An option effect: a config option outside section effects: that the catalogue switches.
+struct EffectOption {
+  std::string keys;  ///< what switches it on, e.g. "footprint_3d.lateral_belt.enabled=true"
+  bool (*is_on)(const TyreConfig&) = nullptr;
+  /// Switches it on: the stated parameters are the config's where it states them (an option
+  /// section with enabled: false), else the catalogue's defaults; fitted ones the defaults.
+  void (*switch_on)(TyreConfig&) = nullptr;
+  /// key=value overrides that make a config file carry the option as `config` has it.
+  std::vector<std::string> (*overrides)(const TyreConfig& config) = nullptr;
+  /// Why a config cannot take it ("" when it can), e.g. a 2D config for a 3D option.
+  std::string (*refusal)(const TyreConfig&) = nullptr;
+  bool needs_3d = false;  ///< an option of the 3D patch (footprint_3d:)
 };
 
 struct EffectInfo {
@@ -150,8 +204,19 @@ struct EffectInfo {
   std::string acts_on = {};  ///< what it changes in the model: carcass, tread, applied load, road
   /// Empty when it composes with the 3D patch (footprint_3d); else why it is refused there.
   std::string refused_with_3d = {};
+  EffectStrength strength = EffectStrength::from_neutral;
+  double neutral = 0;                       ///< from_neutral: where the strength switches it off
+  std::string no_strength = {};             ///< none: why no value switches it off
+  std::optional<EffectOption> option = {};  ///< an option effect (not in section effects:)
 
-  std::string key(const EffectParameterInfo& p) const { return "effects." + name + "." + p.name; }
+  bool is_option() const { return option.has_value(); }
+  std::string key(const EffectParameterInfo& p) const {
+    return is_option() ? p.option.key : "effects." + name + "." + p.name;
+  }
+  /// What switches it on: effects.NAME.enabled=true, or the option's keys.
+  std::string switch_keys() const {
+    return is_option() ? option->keys : "effects." + name + ".enabled=true";
+  }
 };
 
 /// Every effect, in EffectId order.
@@ -163,5 +228,22 @@ const EffectInfo* find_effect(const std::string& name);
 /// Reads section `effects:` (unknown effect or parameter names, values outside the catalogue's
 /// [min, max] -> InputError naming file, line and key).
 EffectsConfig read_effects(const ConfigSection& effects);
+
+/// The option effects' catalogue entries (option_effects.cc), in EffectId order.
+std::vector<EffectInfo> option_effect_catalogue();
+
+/// Whether an effect is on in a config (its effects.NAME flag or its option).
+bool effect_enabled(const TyreConfig& config, EffectId id);
+/// Switches it on (EffectOption::switch_on for an option effect).
+void enable_effect(TyreConfig& config, EffectId id);
+/// Why the config cannot take the effect ("" when it can): refused by the 3D patch, an option
+/// the config's patch or crown does not have.
+std::string effect_refusal(const TyreConfig& config, EffectId id);
+/// key=value overrides that switch the effect on in a config file as `config` has it
+/// (effects.NAME.enabled=true, or the option's keys with its stated values).
+std::vector<std::string> effect_switch_overrides(const TyreConfig& config, EffectId id);
+/// The same for the catalogue's stated values (on a 3D config without the option): what
+/// `modaltyre effects --json` lists as the switch.
+std::vector<std::string> effect_catalogue_switch(EffectId id);
 
 }  // namespace modaltyre::contact

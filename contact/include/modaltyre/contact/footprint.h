@@ -47,6 +47,7 @@ struct FootprintResult {
   std::vector<double> contour_x_m;      ///< deformed tread surface of all candidate units
   std::vector<double> contour_height_m; ///< height above the road (0 in contact)
   std::vector<char> active;             ///< contact flags of the candidate units (warm start)
+  bool window_exceeded = false;  ///< failed: the contact reached the candidate window's edge
   /// On a soil (ground_patch.h): the deepest point of the ground below its undisturbed surface,
   /// the tyre's own deflection (sinking_m - soil_sinkage_m), Bekker's b used, and the ground's
   /// surface depth under every candidate unit (the rut where the unit is free). Zero / empty on
@@ -58,6 +59,12 @@ struct FootprintResult {
   bool ok() const { return modaltyre::ok(status); }
   double vertical_stiffness_N_m() const { return load.load_N / sinking_m; }
 };
+
+/// The largest candidate window the config reader accepts (half the circumference, at most 20000
+/// units) [m], and the window a contact that reached the window's edge should try next: 1.5
+/// times the current, at most that [mm, rounded up to 10 mm].
+double max_window_m(const TyreConfig& config);
+double suggested_window_mm(const TyreConfig& config);
 
 /// The linear operator of one load case on the model's candidate units: the carcass kernels
 /// (static or rolling) with a scale, the tread's compliance and the assembled vertical

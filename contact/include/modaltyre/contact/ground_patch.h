@@ -31,6 +31,9 @@ struct GroundPatchInput {
   std::span<const char> warm_active;
   /// Vertical forces per candidate unit to start the soil's linearisation from (empty: none).
   std::span<const double> initial_force_N;
+  /// Rolling: the slip (against the rolling radius) the soil's slip sinkage is taken at
+  /// (ground/soil_options.h; 0: none).
+  double slip = 0;
 };
 
 /// Solves one load case on the config's ground with a given operator (its horizontal_ratio must

@@ -42,6 +42,16 @@
 // The reduction stays exact: a section at approach d is then a small contact problem
 // (min 1/2 f^T (G + t_i I) f + z^T f, f >= 0, sum f = F_i), affine in d on a fixed lateral
 // pattern (compliance 1 / 1^T M_AA^-1 1 and offset in place of t_i / n_i and the mean drop).
+//
+// Rolling (Patch3dPhysics::rolling): C is not symmetric, J is no energy of the problem. The
+// same pattern steps are a Josephy-Newton method on the sections' complementarity problem
+// (each step solves the pattern-linearised problem exactly, by LU); a step that does not lower
+// the natural residual sum_i min(c_i F_i, w_i)^2 (w_i = sag_i + (C F)_i + psi_i(F_i) - delta,
+// c_i = t_i / columns) is backtracked.
+//
+// Shear-coupled tread (Patch3dPhysics::tread_coupling_m > 0): the cells are no longer
+// independent, no section reduction holds; every cell is an unknown of one contact problem
+// (patch3d_coupled.cc), started from the uncoupled reduction's contact cells.
 #include <memory>
 #include <span>
 #include <string>
@@ -53,6 +63,11 @@
 #include "modaltyre/ground/pressure_sinkage.h"
 
 namespace modaltyre::contact {
+
+namespace detail {
+class SectionLaws;   // patch3d_sections.h
+class CoupledTread;  // patch3d_operators.h
+}  // namespace detail
 
 /// The lateral compliance of one section's belt strip [m/N]: G(k, j) is the mean deflection of
 /// column k under a unit force spread over column j, for columns of equal width across the
@@ -100,6 +115,9 @@ struct Patch3dResult {
   std::vector<double> half_width_m;        ///< lateral edge |y| per section (contour per x)
   std::vector<ColumnEdges> column_edges;   ///< longitudinal edges per column (contour per y)
   std::vector<char> section_active;        ///< F_i > 0 (warm start of the next load)
+  /// sum_ij f_ij x_ij, x_ij the cell's deformed surface along the road: the contact forces'
+  /// moment about the axle (rolling_speed: the rolling resistance x the loaded radius).
+  double force_moment_Nm = 0;
   /// On a soil (Patch3dPhysics::soil): the soil's sinkage under every cell [m] (at
   /// [i * columns + j]; empty on the rigid road) and its deepest value.
   std::vector<double> soil_depth_m;
@@ -134,6 +152,14 @@ struct Patch3dPhysics {
   /// A deformable soil under every cell in series with its tread (ground/, docs/soil.md section
   /// 4; virgin soil; not with a lateral belt); null: the rigid road. Must outlive the Patch3d.
   const ground::PressureSinkage* soil = nullptr;
+  /// tread_coupling: the Pasternak length l of a shear-coupled tread [m] (patch3d_tread.cc);
+  /// 0: independent cell springs and the exact section reduction. With l > 0 every cell is an
+  /// unknown (solve_cells' coupled solve); not with a soil or a rolling carcass.
+  double tread_coupling_m = 0;
+  /// rolling_speed: `kernels` are the steady-rolling ones (not symmetric): the section problem
+  /// is a non-symmetric complementarity problem (LU inner solves, the outer steps backtracked
+  /// on its natural residual instead of the energy).
+  bool rolling = false;
 };
 
 /// The 3D patch on a tyre model's sections. Keeps a reference to the model (it must outlive
@@ -157,20 +183,45 @@ class Patch3d {
   double cell_tread_compliance(int i) const { return t_[i]; }
 
   /// The laterally rigid reduction (see the top of this file); `warm` is a previous result's
-  /// section_active.
-  Patch3dResult solve(double load_N, std::span<const char> warm = {}) const;
+  /// section_active, `warm_cells` its cell_force_N (the sections' lateral patterns start from
+  /// the cells it loads; empty or of another size: from every cell). The solution does not
+  /// depend on either (to rounding), only the steps to it.
+  Patch3dResult solve(double load_N, std::span<const char> warm = {},
+                      std::span<const double> warm_cells = {}) const;
   /// The same problem with every cell an unknown (reference for the reduction; slower).
   Patch3dResult solve_cells(double load_N) const;
   /// Loads in order, each warm-started from the previous result.
   std::vector<Patch3dResult> solve_all(const std::vector<double>& loads_N) const;
 
  private:
-  double lateral_half_width(const Patch3dResult& r, int i) const;
-  /// The contact solve with the sections' extra carcass loads `extra` (empty: none).
+  /// `shift`: per cell, what besides its drop and own compression separates it from the road at
+  /// the section's approach (the belt's lateral deflection, the coupled tread's neighbours).
+  double lateral_half_width(const Patch3dResult& r, int i, const std::vector<double>& shift) const;
+  /// The sections' lateral laws (patch3d_sections.h) of this patch, their patterns started
+  /// from `warm_cells` (Patch3d::solve).
+  std::unique_ptr<detail::SectionLaws> section_laws(std::span<const double> warm_cells = {}) const;
+  /// The contact solve with the sections' extra carcass loads `extra` (empty: none), on the
+  /// given laws (their lateral patterns carried from a previous solve) or fresh ones (null).
+  /// `sections_only`: the result's sections (forces, approaches, contact flags) and cell forces
+  /// only, for a fixed-point step (finish() completes the last one). The coupled solve when the
+  /// tread is coupled, else the reduction.
   Patch3dResult solve_loaded(double load_N, std::span<const char> warm,
-                             const Eigen::VectorXd& extra) const;
+                             const Eigen::VectorXd& extra, detail::SectionLaws* laws = nullptr,
+                             bool sections_only = false) const;
+  Patch3dResult solve_reduced(double load_N, std::span<const char> warm,
+                              const Eigen::VectorXd& extra, detail::SectionLaws* laws,
+                              bool sections_only) const;
+  /// Every cell an unknown with the coupled tread (patch3d_coupled.cc).
+  Patch3dResult solve_coupled(double load_N, std::span<const char> warm,
+                              const Eigen::VectorXd& extra, detail::SectionLaws* laws,
+                              bool sections_only) const;
+  /// For the coupled tread, per cell: its tread's share of the gap u (radial, through the layer,
+  /// and its own tangential shear), its compliance to its own force, and its radial compression.
+  void coupled_compression(const std::vector<double>& f, std::vector<double>& u,
+                           std::vector<double>& own, std::vector<double>& radial) const;
   Patch3dResult finish(double load_N, const std::vector<double>& cell_force, double delta,
-                       const Eigen::VectorXd& extra, Patch3dResult r) const;
+                       const Eigen::VectorXd& extra, Patch3dResult r,
+                       bool sections_only = false) const;
 
   const TyreModel& model_;
   Patch3dSettings settings_;
@@ -184,6 +235,10 @@ class Patch3d {
   const ground::PressureSinkage* soil_ = nullptr;  ///< the soil under the cells (null: none)
   std::vector<double> cell_area_m2_;               ///< road area of a cell of each section
   double pressure_Pa_ = 0;  ///< inflation pressure of the sidewalls' softening
+  bool symmetric_ = true;   ///< false: a rolling carcass
+  /// The coupled tread (null: independent springs) and each section's tangential tread part.
+  std::shared_ptr<const detail::CoupledTread> tread_;
+  std::vector<double> t_tangential_;
 };
 
 /// The map cropped to the sections in contact and `margin` sections either side.

@@ -24,6 +24,9 @@ struct LateralBelt {
   double foundation_Pa_m = 0;         ///< Winkler foundation k [N/m^3], >= 0; > 0 when free
   BeltSupports supports = BeltSupports::shoulders;
   double support_span_m = 0;  ///< shoulders: distance between the supports, 0 = tread width
+  /// The config states the section (enabled or, with enabled: false, its values for the
+  /// lateral_belt effect of effects.h to switch on).
+  bool given = false;
   /// Throws std::invalid_argument naming what is inconsistent.
   void validate(double tread_width_m) const;
 };

@@ -58,6 +58,9 @@ TyreParameters parameters_of(const TyreConfig& config);
 struct PredictOptions {
   /// Contact flags of the candidate units to start the active set from (empty: cold start).
   std::span<const char> warm_active;
+  /// The 3D patch: a previous result's cell forces to start the sections' lateral patterns
+  /// from (Patch3d::solve; empty: every cell).
+  std::span<const double> warm_cells;
 };
 
 struct Prediction {

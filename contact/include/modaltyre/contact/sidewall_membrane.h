@@ -20,6 +20,9 @@ struct SidewallMembrane {
   bool enabled = false;  ///< false: the linear sidewalls of the modes (today's model)
   double chord_m = 0;    ///< c0, the meridian's radial chord at rest (rim to belt edge)
   double length_m = 0;   ///< L, the meridian's length, > c0
+  /// The config states the section (enabled or, with enabled: false, its chord for the
+  /// sidewall_softening effect of effects.h to switch on).
+  bool given = false;
   /// Throws std::invalid_argument unless 0 < chord < length.
   void validate() const;
 };

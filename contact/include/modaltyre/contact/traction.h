@@ -4,26 +4,32 @@
 // patch, contact/src/traction3d.h: the same fixed point per column) or of the rigid cylinder of
 // its outer radius (tyre.rigid: ground/rigid_wheel.h).
 //
-// Slip: Wong's definitions, driven s = 1 - V / (omega R) > 0, braked s = omega R / V - 1 < 0,
-// R = the outer radius R0 (the tread's circumferential speed omega R0).
+// Slip: driven s = 1 - V / (omega r) > 0, braked s = omega r / V - 1 < 0 (Wong's forms), r the
+// slip's reference radius: the rolling radius r_e of the same tyre at the same load free-rolling
+// on the rigid road (rolling_radius.h; ISTVS, the default), or the outer radius R0
+// (SlipReference::unloaded). The rigid cylinder's r_e is its radius R0.
 //
 // The flexible tyre (2D patch, ground_patch.h) in steady rolling, as a fixed point:
 //  1. Normal contact: the static problem on the soil, each unit's ground with the memory of the
 //     ground ahead of it: a ground point under unit i has passed under every unit in front, so
 //     its z_max is max(prior, max_{j ahead of i} z_j). Loading where the unit is the deepest so
 //     far, the unloading branch behind (and the rut's reloading branch on a later pass).
-//  2. Shear: j_i = (s_f - s_i) - (V / omega R0)(x_f - x_i), s the units' arc coordinate R0 theta,
-//     x their deformed position, f the front edge (the rigid wheel's j(theta) when the contour is
-//     the circle); tau_i from the ground's shear law (shear.h) marched from the front;
+//  2. Shear: j = sum (dl - (V / omega) cos(alpha) dtheta) along the units' deformed contour from
+//     its front edge (dl its length, alpha its slope; contact/src/traction_kinematics.h: the
+//     rigid wheel's j(theta) when the contour is the circle); tau_i from the ground's shear law
+//     (shear.h) marched from the front;
 //     horizontal force on unit i: tau_i b dx_i minus the normal force's horizontal component
 //     f_i tan alpha_i (alpha_i the soil surface's slope under the unit); the shear's vertical
 //     component tau_i b dx_i tan alpha_i shares the load.
 //  3. The horizontal forces act on the carcass (seed 001's f_xi through H_tr, H_tt: the vertical
 //     displacement they cause enters the gap, vertical_from_horizontal) and on the tread.
 // Repeated until the sinkage profile, the drawbar pull and the load share settle.
-// Resultants: thrust H = sum tau b dx, motion resistance R_c = sum f tan alpha, drawbar pull
-// DP = H - R_c, torque T = sum (f_x h + f_z x) about the axle (h the axle's height above the
-// point, x its position ahead of the axle).
+// Resultants: thrust H = sum tau b dx, compaction resistance R_c = sum f tan alpha, the motion
+// resistance R = R_c + the tyre's flexing loss + the soil's bulldozing, drawbar pull DP = H - R,
+// torque T = sum (f_x h + f_z x) about the axle (h the axle's height above the
+// point, x its position ahead of the axle); tractive efficiency DP V / (T omega) where the wheel
+// is driven (T > 0) and pulls (DP > 0), else 0.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -33,10 +39,25 @@
 
 namespace modaltyre::contact {
 
+enum class SlipReference {
+  rolling,   ///< r_e: the rolling radius on the rigid road at the same load (ISTVS)
+  unloaded,  ///< R0: the outer radius
+};
+
 struct TractionCase {
   double load_N = 0;
-  double slip = 0;  ///< in (-1, 1]
+  double slip = 0;           ///< in (-1, 1]
+  double slip_radius_m = 0;  ///< the radius the slip is taken against (0: R0)
+  /// The rolling radius r_e (rolling_radius.h; 0: unknown), which the slip sinkage's slip is
+  /// taken against (ground/soil_options.h).
+  double rolling_radius_m = 0;
 };
+
+/// V / (omega R0) at the case's slip and reference radius (R0 the outer radius).
+double speed_ratio_over_R0(const TractionCase& c, double R0_m);
+
+/// The case's slip against its rolling radius (ISTVS), the slip as given when r_e is unknown.
+double rolling_radius_slip(const TractionCase& c, double R0_m);
 
 struct TractionResult {
   SolveStatus status = SolveStatus::failed;
@@ -50,9 +71,24 @@ struct TractionResult {
   std::vector<double> column_z_max_m;
   double sinking_m = 0;  ///< axle approach to the undisturbed surface
   double tyre_deflection_m = 0;
+  /// Drawbar pull DP = H - motion resistance, motion resistance = compaction + flexing +
+  /// bulldozing (docs/soil.md section 5.4).
   double drawbar_pull_N = 0, thrust_N = 0, motion_resistance_N = 0, torque_Nm = 0;
+  double compaction_resistance_N = 0;  ///< the soil's: sum f tan(alpha) (the rigid wheel's R_c)
+  double flexing_resistance_N = 0;     ///< the tyre's hysteresis on the rigid road (0: rigid)
+  double bulldozing_resistance_N = 0;  ///< the soil pushed ahead (ground.bekker.bulldozing)
   double entry_angle_rad = 0, exit_angle_rad = 0;  ///< contact edges seen from the axle
   double contact_length_m = 0, bekker_width_m = 0;
+  double rolling_radius_m = 0;     ///< r_e at this load (rolling_radius.h; R0 for the rigid wheel)
+  double loaded_radius_m = 0;      ///< R0 - the deflection on the rigid road at this load
+  double slip_radius_m = 0;        ///< the radius the slip is taken against (r_e or R0)
+  double tractive_efficiency = 0;  ///< DP V / (T omega) when T > 0 and DP > 0, else 0
+  /// In the model's validity range on a soil (validity.h: the tyre's deflection, the contact's
+  /// extent and the soil's sinkage each against its own range); the reason when not.
+  bool valid = false;
+  std::string validity;
+  bool window_exceeded = false;  ///< failed: the contact reached the candidate window's edge
+  double window_m = 0;           ///< the candidate window it ran on (contact.window_mm)
   int iterations = 0;
   bool ok() const { return modaltyre::ok(status); }
 };
@@ -60,6 +96,11 @@ struct TractionResult {
 struct TractionOptions {
   bool rigid = false;  ///< the rigid cylinder of the outer radius (ground/rigid_wheel.h)
   int passes = 1;      ///< 1..20: each pass meets the previous pass's rut
+  SlipReference slip_reference = SlipReference::rolling;
+  /// Per load [N]: the tyre's own rolling resistance on the rigid road at the same load and
+  /// speed, its flexing (hysteresis) loss (report/traction_flexing.h measures it with the
+  /// transient's rolling scenario); a load not in the map: 0.
+  std::map<double, double> flexing_resistance_N;
   int max_iterations = 200;
   /// Settled when a step changes the drawbar pull, the shear's load share and every unit's
   /// horizontal force by at most tolerance x load, Bekker's b by tolerance x width, and the
@@ -77,7 +118,8 @@ std::vector<TractionResult> steady_traction(const TyreModel& model,
                                             const std::vector<TractionCase>& cases,
                                             const TractionOptions& options = {});
 
-/// One pass of the flexible tyre on a track of memory prior_z_max_m (2D or 3D patch).
+/// One pass of the flexible tyre on a track of memory prior_z_max_m (2D or 3D patch), its slip
+/// against c.slip_radius_m (0: R0).
 TractionResult traction_pass(const TyreModel& model, const ground::GroundSettings& ground,
                              const TractionCase& c, double prior_z_max_m,
                              const TractionOptions& options = {});

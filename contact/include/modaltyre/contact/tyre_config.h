@@ -95,6 +95,9 @@ struct StatedUncertainty {
   double frequency_rel_std = 0;      ///< modal.frequency_std_percent / 100, every mode
   double tread_modulus_rel_std = 0;  ///< tread.modulus_std_percent / 100
   double belt_width_rel_std = 0;     ///< modal.belt_width_std_percent / 100 (ring mass)
+  /// tread.contact_width_std_percent / 100: the tread width (2D contact width and the 3D patch's
+  /// tread width together)
+  double tread_width_rel_std = 0;
 };
 
 struct TyreConfig {

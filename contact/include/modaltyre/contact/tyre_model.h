@@ -111,9 +111,10 @@ solvers::WeightedToeplitzCompliance vertical_compliance_operator(const TyreModel
 
 /// The same with the tread springs rigid (no diagonal): the carcass alone between the
 /// candidates' vertical forces, on `kernels` (the model's when null, then sharing the model's
-/// spectra).
+/// spectra). Symmetrised (the static kernels are symmetric to rounding), unless `as_given`:
+/// steady-rolling kernels, whose asymmetry is the rolling resistance.
 solvers::WeightedToeplitzCompliance carcass_compliance_operator(
-    const TyreModel& model, const modal::LagKernels* kernels = nullptr);
+    const TyreModel& model, const modal::LagKernels* kernels = nullptr, bool as_given = false);
 
 /// Vertical displacement at i per unit horizontal (+x) force at j [m/N]; built on demand (only
 /// load cases with a horizontal force need it).

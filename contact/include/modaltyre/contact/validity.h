@@ -14,14 +14,28 @@
 //  - half contact length <= 0.5 R0: a contact up to +-30 deg around the bottom, where the normals
 //    turn by less than cos(30 deg) = 0.87; beyond, the vertical projection of the unit forces
 //    and the flat-road gap are no longer small corrections.
+//
+// On a soil (docs/soil.md section 5.2) the axle's approach is the tyre's deflection plus the
+// soil's sinkage; each is judged against its own range:
+//  - the tyre's own deflection <= 0.12 R0 (the limit above);
+//  - the contact's extent: its edges, seen from the axle, within +-30 deg of the bottom (on the
+//    road the same as half the contact length <= 0.5 R0), where the units' forces along their
+//    undeformed normals hold;
+//  - the soil's sinkage <= D/6 = R0/3: the moderate sinkage for which the rigid-wheel relations of
+//    Bekker's pressure-sinkage law are stated (Wong, Theory of Ground Vehicles, 4th ed., 2008,
+//    section 2.7); deeper, the soil ahead is pushed aside (bulldozing) rather than compacted.
+// The rigid cylinder (tyre.rigid) does not deflect: only the soil's range applies to it.
 #include <string>
 
+#include "modaltyre/contact/footprint.h"
 #include "modaltyre/contact/tyre_config.h"
 
 namespace modaltyre::contact {
 
 inline constexpr double kMaxSinkingOverRadius = 0.12;
 inline constexpr double kMaxHalfLengthOverRadius = 0.5;
+inline constexpr double kMaxContactAngle_deg = 30;              ///< asin(kMaxHalfLengthOverRadius)
+inline constexpr double kMaxSoilSinkageOverDiameter = 1.0 / 6;  ///< Wong's moderate sinkage
 
 struct Validity {
   bool valid = true;
@@ -30,5 +44,15 @@ struct Validity {
 
 /// Whether a footprint of this sinking and contact length lies in the model's validity range.
 Validity validity(const TyreConfig& config, double sinking_m, double contact_length_m);
+
+/// On a soil: the tyre's deflection, the contact's edges seen from the axle (entry ahead,
+/// exit behind the bottom) and the soil's sinkage each against its range; `rigid`: the rigid
+/// cylinder (only the soil's range).
+Validity validity_on_soil(const TyreConfig& config, double tyre_deflection_m, double soil_sinkage_m,
+                          double entry_angle_rad, double exit_angle_rad, bool rigid = false);
+
+/// A footprint's validity: on a soil by validity_on_soil (its edges seen from the axle), on a
+/// road by validity(config, sinking, contact length).
+Validity validity(const TyreConfig& config, const FootprintResult& footprint);
 
 }  // namespace modaltyre::contact

@@ -4,8 +4,9 @@
 // lost) or as another output (two writers, one survivor). "Same file" is file identity, not
 // spelling: hard links, symbolic links, "..", "./" and an absolute spelling of a relative path
 // are all seen through (an existing file is compared by device and inode, a path that does not
-// exist yet by its normalised absolute form with the symbolic links of its existing folders
-// resolved).
+// exist yet by the absolute, normalised form of the file its links finally name: a dangling link
+// names the file that writing through it creates, so a link to another output not yet written
+// is that output).
 #include <string>
 #include <vector>
 
@@ -35,6 +36,11 @@ class CommandFiles {
  private:
   std::vector<Entry> inputs_, outputs_;
 };
+
+/// The absolute, normalised path of the file `path` finally names: the symbolic links of its
+/// folders and of the file itself followed, a dangling link's target included (at most 40 links,
+/// as the kernel's limit; a loop stops there).
+std::string final_target(const std::string& path);
 
 /// Whether two paths name the same file (see the header comment); false when either is empty.
 bool same_file(const std::string& a, const std::string& b);

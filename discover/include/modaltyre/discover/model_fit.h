@@ -34,6 +34,7 @@ struct FreeParameter {
   bool log_scale = false;  ///< SearchTransform::log_logistic, else logistic
   bool of_effect = false;  ///< an effect's parameter (else a baseline scalar)
   contact::EffectId effect = contact::EffectId::inflation_pressure;  ///< when of_effect
+  double catalogue_default = 0;  ///< when of_effect: where a new effect's search starts
   std::function<double(const contact::TyreConfig&)> get;
   std::function<void(contact::TyreConfig&, double)> set;
 };
@@ -104,7 +105,7 @@ struct FitResult {
   double rms_all = 0;
   double bic = 0;
   int evaluations = 0;
-  int failures = 0;  ///< rows whose prediction failed at the optimum
+  int failures = 0;                          ///< rows whose prediction failed at the optimum
   SolveStatus status = SolveStatus::failed;  ///< the search's (converged or max_iterations)
   bool ok() const { return modaltyre::ok(status); }
 };

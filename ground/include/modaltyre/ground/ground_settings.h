@@ -16,8 +16,11 @@
 //       cohesion_kPa: 1.3           # Janosi-Hanamoto shear (shear.h)
 //       friction_angle_deg: 31.1
 //       shear_modulus_K_mm: 12
-//       unloading: {k0: 0, Au: 5e5} # Wong's k_u = k0 [kN/m^3] + Au [kN/m^4] z_max; absent:
-//                                   # rigid-plastic (no rebound)
+//       unloading: {k0: 0, Au: 5e5} # Wong's k_u = k0 [kN/m^3] + Au [kN/m^4] z_max; absent
+//                                   # or enabled: false: rigid-plastic (no rebound)
+//       wong_reece: {enabled: false, c1: 0.43, c2: 0.32, c3: 0}   # soil_options.h
+//       slip_sinkage: {enabled: false, k1: 1, k2: 0.5}            # soil_options.h
+//       bulldozing: {enabled: false, unit_weight_kN_m3: 15.7}     # soil_options.h
 //     kelvin_voigt:                 # seed 000 eq. 23-28 (kelvin_voigt_soil.h)
 //       E2_MPa: 2
 //       eta2_kPa_s: 0
@@ -35,6 +38,7 @@
 #include "modaltyre/ground/kelvin_voigt_soil.h"
 #include "modaltyre/ground/road_profile.h"
 #include "modaltyre/ground/shear.h"
+#include "modaltyre/ground/soil_options.h"
 
 namespace modaltyre::ground {
 
@@ -50,14 +54,20 @@ struct GroundSettings {
   std::shared_ptr<const RoadProfile> profile;  ///< read from profile_csv by the reader
   BekkerParams bekker;
   JanosiParams bekker_shear{0, 30, 25};
+  WongReeceStress wong_reece;  ///< the rigid wheel's stress distribution (soil_options.h)
+  SlipSinkage slip_sinkage;    ///< sinkage growing with slip (soil_options.h)
+  Bulldozing bulldozing;       ///< the soil pushed ahead of the tyre (soil_options.h)
   KelvinVoigtParams kelvin_voigt;
   JanosiParams kelvin_voigt_shear{0, 30, 25};
+  /// The soil's three shear keys were stated (read_ground_settings); traction needs them.
+  bool shear_stated = false;
 
   /// A deformable soil (bekker, kelvin_voigt), as opposed to a rigid road.
   bool soil() const { return model == GroundModel::bekker || model == GroundModel::kelvin_voigt; }
-  /// The soil's normal law with Bekker's width b (ignored by the Kelvin-Voigt soil);
+  /// The soil's normal law with Bekker's width b (ignored by the Kelvin-Voigt soil), stretched
+  /// by the slip sinkage at `slip` (ISTVS; slip_sinkage.h) when that is enabled on a Bekker soil;
   /// std::invalid_argument for a rigid ground.
-  std::unique_ptr<PressureSinkage> normal_law(double b_m) const;
+  std::unique_ptr<PressureSinkage> normal_law(double b_m, double slip = 0) const;
   /// The soil's Janosi-Hanamoto parameters (std::invalid_argument for a rigid ground).
   const JanosiParams& soil_shear() const;
   /// The tangential law: Janosi-Hanamoto on soil, Coulomb with the tread's stick stiffness

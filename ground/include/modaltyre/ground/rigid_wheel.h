@@ -22,6 +22,9 @@
 //   DP = H - Rc,   T = b_w R^2 int tau dtheta          (drawbar pull, driving torque)
 // Static (pressed, not rolling): the symmetric contact W = 2 b_w R int_0^theta1 sigma cos.
 // Bekker's b = min(b_w, contact length): solved as a fixed point with the sinkage.
+// With ground.bekker.wong_reece enabled the rolling wheel's normal stress is Wong and Reece's
+// (soil_options.h): its peak at theta_m = (c1 + c2 s) theta1, the rear region the front's mirror,
+// the rear angle theta2 = -c3 theta1.
 #include <string>
 
 #include "modaltyre/core/solve_status.h"
@@ -52,10 +55,13 @@ struct RigidWheelResult {
 
 /// The integrals at a given sinkage z0 (no equilibrium solve): for tests and the root search.
 /// `prior_z_max_m`: the track's memory (0: virgin soil); `rolling` false: the static symmetric
-/// contact (no shear).
+/// contact (no shear); `wong_reece` enabled: Wong and Reece's normal stress while rolling
+/// (soil_options.h; off: the front's loading stress and the memory's unloading branch behind the
+/// lowest point).
 RigidWheelResult rigid_wheel_at_sinkage(const PressureSinkage& law, const ShearLaw& shear,
                                         const RigidWheel& wheel, double sinkage_m, double slip,
-                                        double prior_z_max_m, bool rolling, int panels = 48);
+                                        double prior_z_max_m, bool rolling,
+                                        const WongReeceStress& wong_reece = {}, int panels = 48);
 
 /// Static sinkage under `load_N`, pressed straight down onto soil of memory prior_z_max_m.
 RigidWheelResult rigid_wheel_static(const GroundSettings& ground, const RigidWheel& wheel,

@@ -14,12 +14,19 @@ namespace modaltyre::report {
 /// `pass` when passes > 1.
 nlohmann::json traction_case_json(const contact::TractionResult& r, bool with_pass);
 
+/// Per curve (load and pass): load_N, pass, towed_point {slip, drawbar_pull_N} and
+/// self_propelled_point {slip, torque_Nm} (null where the curve does not cross zero).
+nlohmann::json traction_curves_json(const std::vector<contact::TractionResult>& results);
+
 /// The document: tyre, ground, model (flexible tyre on the 2D or the 3D patch, as the results
-/// were computed, or the rigid cylinder), cases.
+/// were computed, or the rigid cylinder), the slip's definition, cases, and per curve (load and
+/// pass) its towed and self-propelled points (`curves`; with one curve also at the top level).
 nlohmann::json traction_json(const contact::TyreConfig& config,
                              const ground::GroundSettings& ground,
                              const std::vector<contact::TractionResult>& results, bool rigid,
-                             int passes);
+                             int passes,
+                             contact::SlipReference reference = contact::SlipReference::rolling,
+                             double speed_km_h = 0);
 
 /// ComputationError naming the first failed case with its reason.
 void require_traction_converged(const std::vector<contact::TractionResult>& results);
@@ -32,6 +39,12 @@ struct TractionSetup {
   /// A 3D config's 2D patch at its 3D tread width (`traction --patch 2d`, the fast variant;
   /// docs/soil.md section 9); the rigid cylinder takes the tread width either way.
   bool patch_2d = false;
+  /// The slip's reference radius (`traction --slip-reference`): the rolling radius r_e on the
+  /// rigid road at the same load (ISTVS, the default) or the outer radius R0.
+  contact::SlipReference slip_reference = contact::SlipReference::rolling;
+  /// The rolling speed of the tyre's flexing loss [km/h] (`traction --speed-km-h`, [0, 100];
+  /// 0: none); negative: the config's transient.rolling.speed_km_h.
+  double speed_km_h = -1;
   std::string ground_source;  ///< the file that gave the ground (for its messages)
 };
 
@@ -45,7 +58,11 @@ TractionSetup traction_setup(const std::string& config_path, const std::string& 
 /// The 3D config's 2D patch (docs/soil.md sections 5, 9): the 3D tread width as contact width.
 void use_2d_patch_of_3d(contact::TyreConfig& config);
 
-/// Steady rolling for every load and slip (case by case, pass by pass), checked converged.
+/// The speed of the flexing loss [km/h]: setup.speed_km_h, or the config's rolling scenario's.
+double traction_speed_km_h(const TractionSetup& setup);
+
+/// Steady rolling for every load and slip (case by case, pass by pass): failed slips are rows
+/// with their reason (ComputationError only when every case failed).
 std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
                                                   const std::vector<double>& loads_N,
                                                   const std::vector<double>& slips, int passes);

@@ -24,4 +24,13 @@ void add_uncertainty_method_json(nlohmann::json& document, const uncertainty::Pr
 /// digits of the half-width), or the value alone to `plain_decimals` when the width is zero.
 std::string plus_minus(double value, double two_sigma, int plain_decimals);
 
+/// "18.9 [15.2, 23.6]": the band's value and its 2.5 and 97.5 % points (the JSON's p025 and
+/// p975, which a skewed or mixed band need not hold symmetrically), to the digits its half-width
+/// supports (two significant digits of it); a band of zero width prints the value to
+/// `plain_decimals` and says "(fixed: no uncertain input moves it)".
+std::string band_text(const uncertainty::Band& band, int plain_decimals);
+
+/// The tables' words for band_text's columns.
+inline constexpr const char* kBandHeading = "value [2.5 %, 97.5 %] (the JSON's value [p025, p975])";
+
 }  // namespace modaltyre::report

@@ -1,0 +1,105 @@
+// The 3D patch's shear-coupled tread (tread_coupling on the cells, patch3d_operators.h): a
+// Pasternak layer over the cell grid, k (u - a_x D_xx u - a_y D_yy u) = f per cell with
+// a_x = (l / ds)^2, a_y = (l / dy)^2 (effects.h: the same layer as the 2D patch's, sheared along
+// and across the road). Along the road the layer is unbounded (as the 2D patch's); across it
+// the tread ends at its edges, which carry no shear (a free edge: zero slope of u).
+//
+// The free edges make the discrete Laplacian across the tread the Neumann one: eigenvectors
+// phi_m(j) = cos(pi m (j + 1/2) / n) (normalised), eigenvalues lambda_m = 4 sin^2(pi m / 2n).
+// In mode m the layer is the 1D Pasternak layer of stiffness k (1 + a_y lambda_m) and coupling
+// a_x / (1 + a_y lambda_m), whose unbounded-line Green's function is pasternak_tread_lags
+// (predictor.h). So
+//   T((i, j), (k, l)) = sum_m phi_m(j) phi_m(l) g_m(|i - k|),
+// and a product T f is a transform across the tread, one lag convolution per mode along it, and
+// the transform back. A load uniform across the tread excites mode 0 alone: the 2D patch's
+// layer (test: a flat crown gives the 2D patch's coupled footprint).
+#include <algorithm>
+#include <cmath>
+
+#include "modaltyre/contact/predictor.h"
+#include "patch3d_operators.h"
+
+namespace modaltyre::contact::detail {
+
+CoupledTread::CoupledTread(double k_cell_N_m, double coupling_m, double ds_m, double dy_m,
+                           int sections, int columns, std::vector<double> cos_theta)
+    : columns_(columns), cos_(std::move(cos_theta)) {
+  const int n = columns;
+  modes_.resize(n, n);
+  lags_.resize(n);
+  const double ay = (coupling_m / dy_m) * (coupling_m / dy_m);
+  for (int m = 0; m < n; ++m) {
+    const double norm = std::sqrt((m == 0 ? 1.0 : 2.0) / n);
+    for (int j = 0; j < n; ++j) modes_(j, m) = norm * std::cos(M_PI * m * (j + 0.5) / n);
+    const double s = std::sin(0.5 * M_PI * m / n);
+    const double stiffening = 1 + ay * 4 * s * s;  // 1 + a_y lambda_m
+    lags_[m] = pasternak_tread_lags(k_cell_N_m * stiffening, coupling_m / std::sqrt(stiffening),
+                                    ds_m, sections);
+  }
+  both_sides_.resize(n);
+  for (int m = 0; m < n; ++m) {
+    const std::vector<double>& g = lags_[m];
+    const int L = static_cast<int>(g.size());
+    both_sides_[m].resize(2 * L - 1);
+    for (int l = 0; l < L; ++l) both_sides_[m][L - 1 + l] = both_sides_[m][L - 1 - l] = g[l];
+  }
+  own_.resize(n);
+  for (int j = 0; j < n; ++j) {
+    double g = 0;
+    for (int m = 0; m < n; ++m) g += modes_(j, m) * modes_(j, m) * lags_[m][0];
+    own_[j] = g;
+  }
+}
+
+double CoupledTread::entry(int a, int b) const {
+  const int i = a / columns_, j = a % columns_, k = b / columns_, l = b % columns_;
+  const std::size_t lag = static_cast<std::size_t>(std::abs(i - k));
+  double g = 0;
+  for (int m = 0; m < columns_; ++m) {
+    if (lag < lags_[m].size()) g += modes_(j, m) * modes_(l, m) * lags_[m][lag];
+  }
+  return cos_[i] * cos_[k] * g;
+}
+
+void CoupledTread::add_product(int r0, int nr, int c0, int nc,
+                               const Eigen::Ref<const Eigen::MatrixXd>& X,
+                               Eigen::Ref<Eigen::MatrixXd> Y) const {
+  const int n = columns_, cols = static_cast<int>(X.cols());
+  // The sections the blocks touch (the first and last may be partial).
+  const int s0 = c0 / n, s1 = (c0 + nc - 1) / n, q0 = r0 / n, q1 = (r0 + nr - 1) / n;
+  const int span = s1 - s0 + 1, rows = q1 - q0 + 1;
+  Eigen::MatrixXd cells(span, n), coef(span, n), out(rows, n), back(rows, n);
+  for (int c = 0; c < cols; ++c) {
+    // The column block's forces as sections x columns, cos-weighted; to modal coefficients
+    // c(s, m) = sum_l phi_m(l) cos_s f(s, l) (one matrix product).
+    cells.setZero();
+    for (int b = 0; b < nc; ++b) {
+      const int cell = c0 + b, s = cell / n;
+      cells(s - s0, cell % n) = cos_[s] * X(b, c);
+    }
+    coef.noalias() = cells.lazyProduct(modes_);  // small: no (threaded) GEMM
+    // Convolution along the road per mode, onto the row block's sections.
+    out.setZero();
+    for (int m = 0; m < n; ++m) {
+      // g_m at lags -(L-1) .. L-1 (symmetric), so that both sides run contiguously.
+      const std::vector<double>& g = both_sides_[m];
+      const int L = (static_cast<int>(g.size()) + 1) / 2;
+      double* o = out.col(m).data();
+      for (int s = s0; s <= s1; ++s) {
+        const double v = coef(s - s0, m);
+        if (v == 0) continue;
+        const int lo = std::max(q0, s - L + 1), hi = std::min(q1, s + L - 1);
+        const double* gs = g.data() + (L - 1) - s;  // gs[q] = g_m(q - s)
+        for (int q = lo; q <= hi; ++q) o[q - q0] += gs[q] * v;
+      }
+    }
+    // Back across the tread, weighted by the row cells' cos theta.
+    back.noalias() = out.lazyProduct(modes_.transpose());
+    for (int a = 0; a < nr; ++a) {
+      const int cell = r0 + a, q = cell / n;
+      Y(a, c) += cos_[q] * back(q - q0, cell % n);
+    }
+  }
+}
+
+}  // namespace modaltyre::contact::detail
