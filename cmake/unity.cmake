@@ -53,6 +53,7 @@ if(MODALTYRE_UNITY_BUILD)
       ema/src/lscf.cc
       fmu/src/package.cc
       solvers/src/serial_vector_ops.cc
+      solvers/src/dense_product.cc
       transient/src/cell_kernels.cc
       transient/src/column_product.cc
       transient/src/cell_system.cc

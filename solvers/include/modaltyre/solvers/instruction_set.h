@@ -1,10 +1,10 @@
 #pragma once
 // The instruction set of the vector kernels chosen at run time: CVODE's vector operations
-// (serial_vector_ops.cc) and the transient's cell and column kernels (transient/src/
-// cell_kernels.cc, column_product.cc). Each kernel has an AVX2 path (with FMA where it fuses)
-// and a portable one in the same order of operations: both give the same bits, so a run's
-// answers do not depend on the CPU. Everything else (Eigen included) is compiled for the
-// compiler's baseline, x86-64's SSE2.
+// (serial_vector_ops.cc), the dense contact solve's products (dense_product.cc) and the
+// transient's cell and column kernels (transient/src/cell_kernels.cc, column_product.cc). Each
+// kernel has an AVX2 path (with FMA where it fuses) and a portable one in the same order of
+// operations: both give the same bits, so a run's answers do not depend on the CPU. Everything else
+// (Eigen included) is compiled for the compiler's baseline, x86-64's SSE2.
 //
 // The environment variable MODALTYRE_ISA, read once per process, caps the choice: `portable`
 // forces the portable loops, `avx2` allows AVX2 + FMA where the CPU runs them (the default: no
