@@ -9,7 +9,8 @@ contact block, FFT products; its forces are compared with SciPy's too). At that 
 non-negative quadratic programme  min 1/2 f^T C f - (delta - s)^T f,  f >= 0,  which with the
 Cholesky factor C = L L^T is the NNLS problem  min |L^T f - L^{-1}(delta - s)|,  f >= 0.
 SciPy solves it (timed: nnls only, median of several runs, in this same run of the script) and
-the two force vectors are compared. One JSON line per size.
+the two force vectors are compared. One JSON line per size, with the instruction set ModalTyre's
+kernels ran (MODALTYRE_ISA=portable times the portable ones; solvers/instruction_set.h).
 
 Usage: /usr/bin/python3 bench/compare_nnls.py [BUILD_DIR [M ...]]   (default build 250 1000 4000)
 """
@@ -44,7 +45,8 @@ def main():
     for m_target in sizes:
         with tempfile.TemporaryDirectory() as tmp:
             path = os.path.join(tmp, "problem.bin")
-            subprocess.run([exe, str(m_target), path, "5"], check=True)
+            run = subprocess.run([exe, str(m_target), path, "5"], check=True,
+                                 capture_output=True, text=True)
             m, C, s, f_ours, delta, t_ours, f_mf, delta_mf, t_mf = load(path)
         L = cholesky(0.5 * (C + C.T), lower=True)
         A = L.T.copy()
@@ -58,7 +60,9 @@ def main():
         t_scipy = float(np.median(times))
         diff = float(np.max(np.abs(f_scipy - f_ours)) / np.max(np.abs(f_ours)))
         diff_mf = float(np.max(np.abs(f_scipy - f_mf)) / np.max(np.abs(f_mf)))
-        print(json.dumps({"m": m, "scipy_s": t_scipy, "modaltyre_s": t_ours,
+        isa = [line.split(": ", 1)[1] for line in run.stdout.splitlines()
+               if line.startswith("instruction_set: ")]
+        print(json.dumps({"m": m, "instruction_set": isa[0] if isa else "", "scipy_s": t_scipy, "modaltyre_s": t_ours,
                           "ratio": t_scipy / t_ours, "max_rel_diff": diff,
                           "footprint_s": t_mf, "footprint_ratio": t_scipy / t_mf,
                           "footprint_max_rel_diff": diff_mf}), flush=True)

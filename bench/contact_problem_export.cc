@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "modaltyre/contact/footprint.h"
+#include "modaltyre/solvers/instruction_set.h"
 #include "modaltyre/solvers/unilateral_contact.h"
 
 int main(int argc, char** argv) {
@@ -27,10 +28,13 @@ int main(int argc, char** argv) {
   const int repeats = argc > 3 ? std::max(1, std::atoi(argv[3])) : 5;
   if (m_target < 10) return 2;
   using namespace modaltyre;
+  // The instruction set the solves ran (compare_nnls.py reports it with the times).
+  std::printf("instruction_set: %s\n", solvers::instruction_set_label().c_str());
   const std::string config = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
   // A 180 mm window holds the 5478 N patch (about 124 mm) with margin.
   const auto model = contact::build_tyre_model(contact::load_tyre_config(
-      config, {"contact.window_mm=180", "contact.unit_length_mm=" + std::to_string(180.0 / m_target)}));
+      config,
+      {"contact.window_mm=180", "contact.unit_length_mm=" + std::to_string(180.0 / m_target)}));
   solvers::ContactProblem p;
   p.compliance = model.vertical_compliance;
   p.initial_gap = model.sag;

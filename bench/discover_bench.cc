@@ -10,6 +10,7 @@
 
 #include <string>
 
+#include "instruction_set_context.h"
 #include "modaltyre/discover/discover.h"
 #include "test_matrix.h"
 

@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "../tests/ema/planted_models.h"
+#include "instruction_set_context.h"
 #include "modaltyre/ema/ema.h"
 
 namespace {

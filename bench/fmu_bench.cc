@@ -22,6 +22,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "instruction_set_context.h"
 #include "modaltyre/fmu/fmi2.h"
 #include "modaltyre/fmu/package.h"
 
@@ -218,6 +219,7 @@ void quarter_car(benchmark::State& state, double speed, double duration, double 
     simulated += duration;
     L.free_instance(w.c);
   }
+  state.SetLabel(modaltyre_bench::instruction_set());
   state.counters["real_time_factor"] = simulated / wall;
   state.counters["cpu_real_time_factor"] = simulated / cpu;
   state.counters["instantiate_s"] = instantiate / state.iterations();

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "instruction_set_context.h"
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/modal/carcass_kernel.h"
@@ -65,6 +66,7 @@ void BM_FootprintSolve(benchmark::State& state) {
     iterations = r.iterations;
     benchmark::DoNotOptimize(r);
   }
+  state.SetLabel(modaltyre_bench::instruction_set());
   state.counters["m"] = model.candidates();
   state.counters["active_set_iterations"] = iterations;
   state.SetComplexityN(model.candidates());

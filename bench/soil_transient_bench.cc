@@ -12,6 +12,7 @@
 #include <ctime>
 #include <string>
 
+#include "instruction_set_context.h"
 #include "modaltyre/transient/transient.h"
 
 namespace {
@@ -48,6 +49,7 @@ void run_on_soil(benchmark::State& state, Scenario scenario, std::vector<std::st
     wall += r.wall_s;
     last = std::move(r);
   }
+  state.SetLabel(modaltyre_bench::instruction_set());
   state.counters["real_time_factor"] = wall > 0 ? simulated / wall : 0;
   state.counters["cpu_real_time_factor"] = cpu > 0 ? simulated / cpu : 0;
   state.counters["steps"] = static_cast<double>(last.stats.steps);

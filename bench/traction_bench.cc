@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "instruction_set_context.h"
 #include "modaltyre/contact/traction.h"
 #include "modaltyre/ground/ground_settings.h"
 #include "modaltyre/report/traction_flexing.h"

@@ -13,6 +13,7 @@
 #include <ctime>
 #include <string>
 
+#include "instruction_set_context.h"
 #include "modaltyre/transient/transient.h"
 
 namespace {
@@ -70,6 +71,7 @@ void run(benchmark::State& state, Scenario s) {
     last = r;
   }
   rtf = wall > 0 ? simulated / wall : 0;
+  state.SetLabel(modaltyre_bench::instruction_set());
   state.counters["real_time_factor"] = rtf;
   state.counters["cpu_real_time_factor"] = cpu > 0 ? simulated / cpu : 0;
   state.counters["simulated_s"] = simulated / state.iterations();

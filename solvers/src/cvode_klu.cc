@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "modaltyre/core/errors.h"
+#include "modaltyre/solvers/instruction_set.h"
 #include "serial_vector_ops.h"
 
 static_assert(sizeof(sunindextype) == sizeof(int64_t), "SUNDIALS must use 64-bit indices");
@@ -238,6 +239,7 @@ extern "C" void error_trampoline(int code, const char* module, const char* funct
 CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
                    const std::vector<double>& y0, int64_t nnz_hint)
     : impl_(std::make_unique<Impl>()), y_(y0), t_(t0) {
+  check_instruction_set_variable();  // the vector kernels' MODALTYRE_ISA (instruction_set.h)
   Impl& I = *impl_;
   I.problem = std::move(problem);
   const int64_t n = I.problem.size;

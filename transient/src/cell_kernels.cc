@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "modaltyre/solvers/instruction_set.h"
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define MODALTYRE_CELL_KERNELS_AVX2 1
@@ -11,7 +13,7 @@
 namespace modaltyre::transient::detail {
 namespace {
 
-/// lu_in_place()'s step k up to the row updates: the first row i >= k with the largest |a_ik|
+/// lu_factor()'s step k up to the row updates: the first row i >= k with the largest |a_ik|
 /// swapped into row k; false at a zero or non-finite pivot.
 inline bool lu_pivot(int n, double* a, int* rows, int k) {
   int p = k;
@@ -26,15 +28,13 @@ inline bool lu_pivot(int n, double* a, int* rows, int k) {
 }
 
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-/// Whether this CPU runs the AVX2 (and FMA) paths (checked once).
-bool avx2() {
-  static const bool yes = __builtin_cpu_supports("avx2");
-  return yes;
-}
+/// Whether the AVX2 (and FMA) paths run: the CPU has them and MODALTYRE_ISA allows them
+/// (solvers/instruction_set.h; decided once).
 bool avx2_fma() {
-  static const bool yes = avx2() && __builtin_cpu_supports("fma");
+  static const bool yes = solvers::instruction_set() == solvers::InstructionSet::avx2_fma;
   return yes;
 }
+bool avx2() { return avx2_fma(); }
 #endif
 
 /// Rows [k, n) of one output in order onto its combined partial sums s.
@@ -135,27 +135,89 @@ __attribute__((target("avx2"))) void band_row_avx(int n, bool with_t, double a, 
   band_row_scalar(j, n, with_t, a, t, y1, y2, s1, s2, d, y, r, w, gamma);
 }
 
-__attribute__((target("avx2,fma"))) bool lu_in_place_avx2(int n, double* a, int* rows) {
-  // lu_in_place()'s steps, the row update four entries at a time.
+/// fnmadd_sweep()'s entries [i, i + 4 V) (the last vector's lanes under `mask`), in V registers
+/// across the whole sum.
+template <int V>
+__attribute__((target("avx2,fma"))) inline void fnmadd_block(int i, __m256i mask, int np,
+                                                             const double* x, int ldx,
+                                                             const double* y, int ldy, double* c) {
+  __m256d acc[V];
+  for (int v = 0; v + 1 < V; ++v) acc[v] = _mm256_loadu_pd(c + i + 4 * v);
+  acc[V - 1] = _mm256_maskload_pd(c + i + 4 * (V - 1), mask);
+  for (int p = 0; p < np; ++p) {
+    const __m256d yp = _mm256_broadcast_sd(y + p * ldy);
+    const double* xp = x + p * ldx + i;
+    for (int v = 0; v + 1 < V; ++v)
+      acc[v] = _mm256_fnmadd_pd(_mm256_loadu_pd(xp + 4 * v), yp, acc[v]);
+    acc[V - 1] = _mm256_fnmadd_pd(_mm256_maskload_pd(xp + 4 * (V - 1), mask), yp, acc[V - 1]);
+  }
+  for (int v = 0; v + 1 < V; ++v) _mm256_storeu_pd(c + i + 4 * v, acc[v]);
+  _mm256_maskstore_pd(c + i + 4 * (V - 1), mask, acc[V - 1]);
+}
+
+/// c_i = fma(-x_p[i], y_p, c_i) for p = 0 .. np - 1 in order, i < m (x_p = x + p ldx, y_p =
+/// y[p ldy]): 16 entries at a time in four registers across the whole sum, the last 1-16 with
+/// the lanes beyond m under a mask (neither read nor written).
+__attribute__((target("avx2,fma"))) void fnmadd_sweep(int m, int np, const double* x, int ldx,
+                                                      const double* y, int ldy, double* c) {
+  const __m256i all = _mm256_set1_epi64x(-1);
+  int i = 0;
+  for (; i + 16 < m; i += 16) fnmadd_block<4>(i, all, np, x, ldx, y, ldy, c);
+  const int left = m - i;  // 0 .. 16
+  if (left <= 0) return;
+  const int last = left - 4 * ((left - 1) / 4);  // lanes of the last vector, 1 .. 4
+  const __m256i mask =
+      _mm256_setr_epi64x(-1, last > 1 ? -1 : 0, last > 2 ? -1 : 0, last > 3 ? -1 : 0);
+  switch ((left + 3) / 4) {
+    case 1:
+      return fnmadd_block<1>(i, mask, np, x, ldx, y, ldy, c);
+    case 2:
+      return fnmadd_block<2>(i, mask, np, x, ldx, y, ldy, c);
+    case 3:
+      return fnmadd_block<3>(i, mask, np, x, ldx, y, ldy, c);
+    default:
+      return fnmadd_block<4>(i, mask, np, x, ldx, y, ldy, c);
+  }
+}
+
+/// lu_factor()'s steps in Crout's order: every entry takes the same fused multiply-adds in the
+/// same order as the row updates (the same bits and pivots), but each is loaded and stored once,
+/// not at every step, and a's rows are never swapped (read through the permutation). Step k:
+/// column k at rows >= k from the final rows of L (column-major, lc) and column k of U; the
+/// pivot; L's column k; then row k of U from U's rows above. L goes into lu's lower triangle at
+/// the end.
+__attribute__((target("avx2,fma"))) bool lu_factor_avx2(int n, const double* a, double* lu,
+                                                        int* rows) {
+  thread_local std::vector<double> lc_buffer, c_buffer;
+  lc_buffer.resize(static_cast<std::size_t>(n) * n);
+  c_buffer.resize(n);
+  double* lc = lc_buffer.data();  // lc[p n + i] = L_ip at the current row positions
+  double* c = c_buffer.data();
   for (int i = 0; i < n; ++i) rows[i] = i;
   for (int k = 0; k < n; ++k) {
-    if (!lu_pivot(n, a, rows, k)) return false;
-    const double pivot = a[k * n + k];
-    const double* rk = a + k * n + k + 1;
-    const int m = n - k - 1;
-    for (int i = k + 1; i < n; ++i) {
-      double* ri = a + i * n;
-      const double l = ri[k] / pivot;
-      ri[k] = l;
-      double* r = ri + k + 1;
-      const __m256d vl = _mm256_set1_pd(l);
-      int j = 0;
-      for (; j + 4 <= m; j += 4)
-        _mm256_storeu_pd(r + j,
-                         _mm256_fnmadd_pd(vl, _mm256_loadu_pd(rk + j), _mm256_loadu_pd(r + j)));
-      for (; j < m; ++j) r[j] = std::fma(-l, rk[j], r[j]);
+    const int m = n - k;  // rows k .. n - 1
+    const double* col = a + k * n;
+    for (int i = 0; i < m; ++i) c[i] = col[rows[k + i]];
+    fnmadd_sweep(m, k, lc + k, n, lu + k, n, c);
+    int p = 0;
+    for (int i = 1; i < m; ++i)
+      if (std::abs(c[i]) > std::abs(c[p])) p = i;
+    if (p != 0) {
+      std::swap(rows[k], rows[k + p]);
+      for (int q = 0; q < k; ++q) std::swap(lc[q * n + k], lc[q * n + k + p]);
+      std::swap(c[0], c[p]);
     }
+    const double pivot = c[0];
+    if (!(std::isfinite(pivot) && pivot != 0)) return false;
+    lu[k * n + k] = pivot;
+    for (int i = 1; i < m; ++i) lc[k * n + k + i] = c[i] / pivot;
+    double* u = lu + k * n + k + 1;
+    const int r = rows[k];
+    for (int j = 0; j + 1 < m; ++j) u[j] = a[(k + 1 + j) * n + r];
+    fnmadd_sweep(m - 1, k, lu + k + 1, n, lc + k, n, u);
   }
+  for (int i = 1; i < n; ++i)
+    for (int j = 0; j < i; ++j) lu[i * n + j] = lc[j * n + i];
   return true;
 }
 
@@ -341,17 +403,20 @@ void sign_mismatches(int n, const double* a, const double* b, std::vector<int>& 
     if ((a[k] > 0) != (b[k] > 0)) out.push_back(k);
 }
 
-bool lu_in_place(int n, double* a, int* rows) {
+bool lu_factor(int n, const double* a, double* lu, int* rows) {
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  if (avx2_fma()) return lu_in_place_avx2(n, a, rows);
+  if (avx2_fma()) return lu_factor_avx2(n, a, lu, rows);
 #endif
+  // The row-major copy, then the row updates of the stated steps.
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) lu[i * n + j] = a[j * n + i];
   for (int i = 0; i < n; ++i) rows[i] = i;
   for (int k = 0; k < n; ++k) {
-    if (!lu_pivot(n, a, rows, k)) return false;
-    const double pivot = a[k * n + k];
-    const double* rk = a + k * n + k + 1;
+    if (!lu_pivot(n, lu, rows, k)) return false;
+    const double pivot = lu[k * n + k];
+    const double* rk = lu + k * n + k + 1;
     for (int i = k + 1; i < n; ++i) {
-      double* ri = a + i * n;
+      double* ri = lu + i * n;
       const double l = ri[k] / pivot;
       ri[k] = l;
       for (int j = 0; j < n - k - 1; ++j) ri[k + 1 + j] = std::fma(-l, rk[j], ri[k + 1 + j]);

@@ -24,14 +24,16 @@ void pair_dots(int n, const double* a, const double* b, const double* x, const d
 void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,
               double s1, double s2, double d, double* y, double* r, double w, double gamma);
 
-/// In-place LU with partial pivoting of the row-major n x n matrix a (unit L below the diagonal,
-/// U on and above it; CellNewton::lu_cap()): at step k the first row i >= k with the largest
-/// |a_ik| is swapped into row k (rows[k] <-> rows[i]: rows[pos] = the original row at pos), and
-/// each row below updated as l = a_ik / a_kk, a_ij = fma(-l, a_kj, a_ij) for j > k. False at a
-/// zero or non-finite pivot (a and rows then partly factored). One function per instruction set
-/// (the AVX2 path four entries at a time, the same operations): a call per row update had cost
-/// more than its arithmetic on the 42-square capacitance matrices.
-bool lu_in_place(int n, double* a, int* rows);
+/// LU with partial pivoting of the column-major n x n matrix a into the row-major lu (unit L
+/// below the diagonal, U on and above it; CellNewton's and ContactNewton's capacitance matrices,
+/// row_lu_factor()): the steps on a's row-major copy are, at step k, the first row i >= k with
+/// the largest |a_ik| swapped into row k (rows[k] <-> rows[i]: rows[pos] = the original row at
+/// pos), and each row below updated as l = a_ik / a_kk, a_ij = fma(-l, a_kj, a_ij) for j > k.
+/// False at a zero or non-finite pivot (lu and rows then partly written). One function per
+/// instruction set: the AVX2 path takes each entry's fused multiply-adds in the same order in
+/// Crout's arrangement (column k of L and row k of U from the final factors, in registers, and a
+/// read through the permutation instead of copied and swapped), the same bits.
+bool lu_factor(int n, const double* a, double* lu, int* rows);
 
 /// Appends to `out` every k < n where (a[k] > 0) != (b[k] > 0), in increasing order (the cells
 /// whose side of the contact kink differs between the iterate's forces a and the matrix's

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "modaltyre/solvers/instruction_set.h"
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define MODALTYRE_COLUMN_PRODUCT_AVX2 1
@@ -24,35 +26,33 @@ void rows_scalar(Index i0, Index i1, Index cols, const double* A, Index lda, con
 }
 
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-/// 16 rows at a time in four AVX2 registers (fused multiply-add), then 4 at a time.
+/// Rows [i, i + 4 V) in V registers, each a chain of fused multiply-adds over the columns.
+template <int V>
+__attribute__((target("avx2,fma"))) inline void rows_block(Index i, Index cols, const double* A,
+                                                           Index lda, const double* x, double* out,
+                                                           bool accumulate) {
+  __m256d c[V];
+  for (int v = 0; v < V; ++v) c[v] = _mm256_setzero_pd();
+  for (Index j = 0; j < cols; ++j) {
+    const double* a = A + j * lda + i;
+    const __m256d b = _mm256_broadcast_sd(x + j);
+    for (int v = 0; v < V; ++v) c[v] = _mm256_fmadd_pd(_mm256_loadu_pd(a + 4 * v), b, c[v]);
+  }
+  double* o = out + i;
+  for (int v = 0; v < V; ++v)
+    _mm256_storeu_pd(o + 4 * v, _mm256_add_pd(c[v], accumulate ? _mm256_loadu_pd(o + 4 * v)
+                                                               : _mm256_setzero_pd()));
+}
+
+/// 32 rows at a time in eight AVX2 registers (fused multiply-add; eight independent chains, so
+/// that the multiply-adds' latency overlaps: four had left the loop latency-bound), then 16, 4.
 __attribute__((target("avx2,fma"))) Index rows_avx2(Index rows, Index cols, const double* A,
                                                     Index lda, const double* x, double* out,
                                                     bool accumulate) {
   Index i = 0;
-  for (; i + 16 <= rows; i += 16) {
-    __m256d c0 = _mm256_setzero_pd(), c1 = c0, c2 = c0, c3 = c0;
-    for (Index j = 0; j < cols; ++j) {
-      const double* a = A + j * lda + i;
-      const __m256d b = _mm256_broadcast_sd(x + j);
-      c0 = _mm256_fmadd_pd(_mm256_loadu_pd(a), b, c0);
-      c1 = _mm256_fmadd_pd(_mm256_loadu_pd(a + 4), b, c1);
-      c2 = _mm256_fmadd_pd(_mm256_loadu_pd(a + 8), b, c2);
-      c3 = _mm256_fmadd_pd(_mm256_loadu_pd(a + 12), b, c3);
-    }
-    double* o = out + i;
-    const __m256d z = _mm256_setzero_pd();
-    _mm256_storeu_pd(o, _mm256_add_pd(c0, accumulate ? _mm256_loadu_pd(o) : z));
-    _mm256_storeu_pd(o + 4, _mm256_add_pd(c1, accumulate ? _mm256_loadu_pd(o + 4) : z));
-    _mm256_storeu_pd(o + 8, _mm256_add_pd(c2, accumulate ? _mm256_loadu_pd(o + 8) : z));
-    _mm256_storeu_pd(o + 12, _mm256_add_pd(c3, accumulate ? _mm256_loadu_pd(o + 12) : z));
-  }
-  for (; i + 4 <= rows; i += 4) {
-    __m256d c = _mm256_setzero_pd();
-    for (Index j = 0; j < cols; ++j)
-      c = _mm256_fmadd_pd(_mm256_loadu_pd(A + j * lda + i), _mm256_broadcast_sd(x + j), c);
-    _mm256_storeu_pd(out + i,
-                     _mm256_add_pd(c, accumulate ? _mm256_loadu_pd(out + i) : _mm256_setzero_pd()));
-  }
+  for (; i + 32 <= rows; i += 32) rows_block<8>(i, cols, A, lda, x, out, accumulate);
+  for (; i + 16 <= rows; i += 16) rows_block<4>(i, cols, A, lda, x, out, accumulate);
+  for (; i + 4 <= rows; i += 4) rows_block<1>(i, cols, A, lda, x, out, accumulate);
   for (; i < rows; ++i) {  // the last rows % 4, as rows_scalar() (std::fma: vfmadd here)
     double c = 0.0;
     for (Index j = 0; j < cols; ++j) c = std::fma(A[j * lda + i], x[j], c);
@@ -94,35 +94,33 @@ __attribute__((target("avx2,fma"))) void dots_finish(__m256d c, Index k, Index r
   out[k] = (accumulate ? out[k] : 0.0) + alpha * s;
 }
 
-/// Four outputs at a time, each a register of four partial sums along the rows (one load of v
-/// per four rows for all four), in dots_scalar()'s order.
+/// Outputs [k, k + W), each a register of four partial sums along the rows (one load of v per
+/// four rows for all W), in dots_scalar()'s order.
+template <int W>
+__attribute__((target("avx2,fma"))) inline void dots_block(Index k, Index r4, Index rows,
+                                                           const double* A, Index lda,
+                                                           const double* v, double* out,
+                                                           double alpha, bool accumulate) {
+  __m256d c[W];
+  for (int w = 0; w < W; ++w) c[w] = _mm256_setzero_pd();
+  const double* a = A + k * lda;
+  for (Index i = 0; i < r4; i += 4) {
+    const __m256d b = _mm256_loadu_pd(v + i);
+    for (int w = 0; w < W; ++w) c[w] = _mm256_fmadd_pd(_mm256_loadu_pd(a + w * lda + i), b, c[w]);
+  }
+  for (int w = 0; w < W; ++w) dots_finish(c[w], k + w, r4, rows, A, lda, v, out, alpha, accumulate);
+}
+
+/// Eight outputs at a time (eight independent chains: four had left the loop latency-bound),
+/// then four, then one.
 __attribute__((target("avx2,fma"))) Index dots_avx2(Index rows, Index cols, const double* A,
                                                     Index lda, const double* v, double* out,
                                                     double alpha, bool accumulate) {
   Index k = 0;
   const Index r4 = rows / 4 * 4;
-  for (; k + 4 <= cols; k += 4) {
-    const double *a0 = A + k * lda, *a1 = a0 + lda, *a2 = a1 + lda, *a3 = a2 + lda;
-    __m256d c0 = _mm256_setzero_pd(), c1 = c0, c2 = c0, c3 = c0;
-    for (Index i = 0; i < r4; i += 4) {
-      const __m256d b = _mm256_loadu_pd(v + i);
-      c0 = _mm256_fmadd_pd(_mm256_loadu_pd(a0 + i), b, c0);
-      c1 = _mm256_fmadd_pd(_mm256_loadu_pd(a1 + i), b, c1);
-      c2 = _mm256_fmadd_pd(_mm256_loadu_pd(a2 + i), b, c2);
-      c3 = _mm256_fmadd_pd(_mm256_loadu_pd(a3 + i), b, c3);
-    }
-    dots_finish(c0, k, r4, rows, A, lda, v, out, alpha, accumulate);
-    dots_finish(c1, k + 1, r4, rows, A, lda, v, out, alpha, accumulate);
-    dots_finish(c2, k + 2, r4, rows, A, lda, v, out, alpha, accumulate);
-    dots_finish(c3, k + 3, r4, rows, A, lda, v, out, alpha, accumulate);
-  }
-  for (; k < cols; ++k) {
-    const double* a = A + k * lda;
-    __m256d c = _mm256_setzero_pd();
-    for (Index i = 0; i < r4; i += 4)
-      c = _mm256_fmadd_pd(_mm256_loadu_pd(a + i), _mm256_loadu_pd(v + i), c);
-    dots_finish(c, k, r4, rows, A, lda, v, out, alpha, accumulate);
-  }
+  for (; k + 8 <= cols; k += 8) dots_block<8>(k, r4, rows, A, lda, v, out, alpha, accumulate);
+  for (; k + 4 <= cols; k += 4) dots_block<4>(k, r4, rows, A, lda, v, out, alpha, accumulate);
+  for (; k < cols; ++k) dots_block<1>(k, r4, rows, A, lda, v, out, alpha, accumulate);
   return k;
 }
 #endif
@@ -133,7 +131,7 @@ void column_dots(Index rows, Index cols, const double* A, Index lda, const doubl
                  double alpha, bool accumulate) {
   Index done = 0;
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  static const bool avx2 = solvers::instruction_set() == solvers::InstructionSet::avx2_fma;
   if (avx2) done = dots_avx2(rows, cols, A, lda, v, out, alpha, accumulate);
 #endif
   dots_scalar(done, cols, rows, A, lda, v, out, alpha, accumulate);
@@ -143,7 +141,7 @@ void column_product(Index rows, Index cols, const double* A, Index lda, const do
                     double* out, bool accumulate) {
   Index done = 0;
 #ifdef MODALTYRE_COLUMN_PRODUCT_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  static const bool avx2 = solvers::instruction_set() == solvers::InstructionSet::avx2_fma;
   if (avx2) done = rows_avx2(rows, cols, A, lda, x, out, accumulate);
 #endif
   rows_scalar(done, rows, cols, A, lda, x, out, accumulate);

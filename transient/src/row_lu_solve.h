@@ -10,7 +10,7 @@
 
 namespace modaltyre::transient {
 
-/// The row-major LU of a (n x n, partial pivoting, detail::lu_in_place) and the permutation
+/// The row-major LU of a (n x n, partial pivoting, detail::lu_factor) and the permutation
 /// row_lu_solve() reads (perm(original row) = its position); rows is work space. False at a
 /// zero or non-finite pivot. Eigen's blocked LU would run these 10-42 squares through its
 /// matrix-product kernels.
@@ -19,9 +19,9 @@ inline bool row_lu_factor(
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& lu_matrix,
     Eigen::VectorXi& perm, std::vector<int>& rows) {
   const int n = static_cast<int>(a.rows());
-  lu_matrix = a;
+  lu_matrix.resize(n, n);
   rows.resize(n);
-  if (!detail::lu_in_place(n, lu_matrix.data(), rows.data())) return false;
+  if (!detail::lu_factor(n, a.data(), lu_matrix.data(), rows.data())) return false;
   perm.resize(n);
   for (int pos = 0; pos < n; ++pos) perm(rows[pos]) = pos;
   return true;

@@ -78,8 +78,10 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
   std::sort(map_times.begin(), map_times.end());
   std::size_t next_map = 0;
   // The pressure maps (3D) at their times within [t_from, t_to], from y_at or interpolated.
+  // (Called at every step: the state's work vector only when a map is due, not allocated and
+  // cleared at each step for none.)
+  std::vector<double> ym;
   auto take_maps = [&](double t_from, double t_to, const std::vector<double>* y_at) {
-    std::vector<double> ym(sys.size());
     while (next_map < map_times.size() && map_times[next_map] <= t_to * (1 + 1e-14)) {
       const double tm = map_times[next_map++];
       if (tm < t_from) continue;
