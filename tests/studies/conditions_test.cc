@@ -92,7 +92,18 @@ TEST(ConditionCatalogue, NamesAreUniqueInIdOrderAndAreTheMeasurementColumns) {
 TEST(ConditionCatalogue, SlipIsRefusedByFootprintMeasurementsAndSweeps) {
   const ConditionInfo& slip = condition_info(ConditionId::slip);
   EXPECT_EQ(slip.range_text(), "[-1, 1]");
-  EXPECT_NE(measured(slip, "0.2").find("slip"), std::string::npos) << measured(slip, "0.2");
+  // A footprint row (sinking_mm) with a slip is refused naming the slip; a traction row takes it.
+  const fs::path p = scratch("footprint_slip.csv");
+  std::ofstream(p) << "sinking_mm,load_N,slip\n15,4000,0.2\n";
+  std::string why;
+  try {
+    studies::read_measurements(p.string(), defaults());
+  } catch (const InputError& e) {
+    why = e.what();
+  }
+  fs::remove(p);
+  EXPECT_NE(why.find("slip"), std::string::npos) << why;
+  EXPECT_EQ(measured(slip, "0.2"), "");
   EXPECT_NE(swept(slip, "0.2").find(footprint_refusal(ConditionId::slip)), std::string::npos)
       << swept(slip, "0.2");
   for (const ConditionInfo& c : condition_catalogue())
