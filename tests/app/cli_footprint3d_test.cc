@@ -196,8 +196,12 @@ TEST_F(Footprint3dCli, ValidateRefusesAFourthCalibratedKey) {
 }
 
 // On the 3D patch discover re-fits the crown radius and offers no effect the patch refuses.
+// On 4 mm sections and 10 mm columns: what is checked is which parameters and candidates the 3D
+// patch takes, not the mesh (the 1 mm default tries every candidate for ~60 s of CPU, too long
+// under the sanitizers).
 TEST_F(Footprint3dCli, DiscoverOnTable3RefitsTheCrownAndOffersNoRefusedEffect) {
-  const auto r = run({"discover", k3d, kTable3, "--json", "--max-effects", "1"});
+  const auto r = run({"discover", k3d, kTable3, "--json", "--max-effects", "1", "--unit-length-mm",
+                      "4", "--set", "footprint_3d.lateral_cell_mm=10"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["baseline_parameters"].contains("footprint_3d.crown.radius_mm"));
