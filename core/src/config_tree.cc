@@ -1,5 +1,6 @@
 #include "modaltyre/core/config_tree.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -348,9 +349,11 @@ std::vector<std::vector<long>> ConfigSection::integer_lists(const std::string& k
       const auto x = item.IsScalar() ? parse_finite_double(item.Scalar()) : std::nullopt;
       if (!x || std::floor(*x) != *x) fail(key, "every list item must be an integer");
       if (*x < static_cast<double>(min) || *x > static_cast<double>(max)) {
-        fail(key, "list value " + std::to_string(static_cast<long long>(*x)) +
-                      " is out of range [" + std::to_string(min) + ", " + std::to_string(max) +
-                      "]");
+        // Written as a double: a value beyond long long's range has no integer conversion (UB).
+        char value[40];  // shortest round trip, e.g. 1001 or 1e+300
+        const auto end = std::to_chars(value, value + sizeof value, *x).ptr;
+        fail(key, "list value " + std::string(value, end) + " is out of range [" +
+                      std::to_string(min) + ", " + std::to_string(max) + "]");
       }
       v.push_back(static_cast<long>(*x));
     }
