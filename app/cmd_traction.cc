@@ -101,16 +101,10 @@ void register_traction(CLI::App& app) {
     files.input(a->ground, "--ground");
     if (!a->plot.empty()) files.output(a->plot, "--plot");
     files.check();
-    // The Kelvin-Voigt soil's rate term eta2 acts under the rigid wheel at the speed (docs/soil.md
-    // section 3.2) and in the transient (section 8.4); the flexible tyre's steady rolling takes
-    // the elastic law: said, not dropped quietly.
+    // The Kelvin-Voigt soil's rate term eta2 acts at the speed on the rigid wheel and the
+    // flexible tyre alike (docs/soil.md sections 3.2, 9.1): the JSON prints that speed.
     const bool viscous = setup.ground.model == ground::GroundModel::kelvin_voigt &&
                          setup.ground.kelvin_voigt.eta2_kPa_s > 0;
-    if (viscous && !setup.rigid) {
-      std::cerr << "warning: the flexible tyre's traction leaves out the soil's viscous term "
-                   "(ground.kelvin_voigt.eta2_kPa_s): steady rolling on its elastic law; the "
-                   "rigid wheel (tyre.rigid) and the transient model it (docs/soil.md 3.2, 8.4)\n";
-    }
     const auto results = report::run_traction(setup, a->loads, a->slips, a->passes);
     for (const auto& r : results) {
       if (r.window_m > setup.config.mesh.window_m) {

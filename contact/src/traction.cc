@@ -7,6 +7,7 @@
 
 #include "modaltyre/contact/ground_patch.h"
 #include "modaltyre/contact/rolling_radius.h"
+#include "modaltyre/contact/soil_rate_term.h"
 #include "modaltyre/contact/validity.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/ground/rigid_wheel.h"
@@ -26,7 +27,8 @@ struct RollingState {
   double shear_vertical_N = 0;  ///< vertical component of the shear forces
   double bekker_width_m = 0;
   std::vector<char> active;
-  std::vector<double> force_N;  ///< vertical force per unit (the soil's linearisation point)
+  std::vector<double> force_N;    ///< vertical force per unit (the soil's linearisation point)
+  std::vector<double> surface_m;  ///< a viscous soil's rolled surface per unit (soil_rate_term.h)
 };
 
 using detail::case_result;
@@ -47,6 +49,17 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   const PatchOperator op = static_matrix_free_operator(model);
   double last_dp = 0;
   detail::AndersonMixer mixer(kAndersonDepth);
+  // A viscous soil's rate term (soil_rate_term.h): its surface is part of the state.
+  const double tau = soil_rate_time_s(g, o.speed_m_per_s);  // 0: no rate term
+  SoilRate rate;
+  std::unique_ptr<ground::PressureSinkage> rate_law;
+  double incoming = 0;
+  if (tau > 0) {
+    rate_law = g.normal_law(width, rolling_radius_slip(c, R0));  // b, slip: a Bekker soil's
+    incoming = rate_law->sinkage_m(0.0, prior);
+    rate.weight.resize(m), rate.start_m.resize(m);
+    if (st.surface_m.size() != std::size_t(m)) st.surface_m.assign(m, incoming);
+  }
   for (int it = 1; it <= o.max_iterations; ++it) {
     // 1. The memory of the ground ahead of each unit (front = the highest index).
     double ahead = prior;
@@ -69,6 +82,10 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     const double b_used = in.bekker_width_m;
     in.warm_active = st.active;
     in.initial_force_N = st.force_N;
+    if (tau > 0) {
+      soil_rate_column(rate, model.theta, R0, tau, o.speed_m_per_s, incoming, 0, 1, st.surface_m);
+      in.rate = &rate;
+    }
     const FootprintResult f = solve_ground_patch(model, op, {normal_load, 0}, g, in);
     if (!f.ok()) {
       TractionResult r = case_result(c, pass, f.message, f.status);
@@ -127,8 +144,12 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     const double dp = H - Rc;
     // Residual of the fixed point x = G(x) on the state (depth profile, horizontal forces, the
     // shear's load share), in mm and N so that the mixing weighs them alike.
-    const int n = 2 * m + 1;
+    std::vector<double> rolled(tau > 0 ? m : 0);
+    if (tau > 0) soil_rate_surface(rolled, rate, *rate_law, incoming, 0, 1, m, depth, z_max);
+    const int n = 2 * m + 1 + static_cast<int>(rolled.size());
     Eigen::VectorXd state(n), image(n);
+    for (std::size_t i = 0; i < rolled.size(); ++i)
+      state(2 * m + 1 + i) = st.surface_m[i] * 1e3, image(2 * m + 1 + i) = rolled[i] * 1e3;
     for (int i = 0; i < m; ++i) {
       state(i) = st.depth_m[i] * 1e3, image(i) = depth[i] * 1e3;
       state(m + i) = st.fx_N[i], image(m + i) = fx_new[i];
@@ -153,6 +174,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       st.fx_N[i] = next(m + i);
     }
     st.shear_vertical_N = next(2 * m);
+    for (std::size_t i = 0; i < rolled.size(); ++i)
+      st.surface_m[i] = std::max(next(2 * m + 1 + i) * 1e-3, 0.0);
     if (settled) {
       TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
       r.iterations = it;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "modaltyre/contact/footprint.h"
+#include "modaltyre/contact/soil_rate_term.h"
 #include "modaltyre/ground/rigid_wheel.h"
 #include "modaltyre/solvers/toeplitz_compliance.h"
 #include "modaltyre/solvers/unilateral_contact.h"
@@ -218,6 +219,17 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
                                   // linearisations over the rolling steps
   std::vector<double> zmax(cells), f(cells), depth(cells), surface(cells), x(cells);
   std::vector<double> fr(S), ft(S), ur(S), ut(S);
+  // A viscous soil's rate term (soil_rate_term.h): its surface per cell is part of the state.
+  const double tau = soil_rate_time_s(ground_, o.speed_m_per_s);  // 0: no rate term
+  std::vector<double> incoming(K, 0.0), rolled(tau > 0 ? cells : 0);
+  if (tau > 0) {
+    const auto kv = ground_.normal_law(width, rolling_radius_slip(c, R0));  // b, slip: Bekker's
+    for (int k = 0; k < K; ++k) incoming[k] = kv->sinkage_m(0.0, prior[k]);
+    if (st.surface_m.size() != cells) {
+      st.surface_m.resize(cells);
+      for (std::size_t a = 0; a < cells; ++a) st.surface_m[a] = incoming[a % K];
+    }
+  }
   for (int it = 1; it <= o.max_iterations; ++it) {
     // 1. The memory of the cells ahead in each column (front = the highest section index).
     for (int k = 0; k < K; ++k) {
@@ -233,7 +245,13 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     const double b_used = st.bekker_width_m > 0 ? st.bekker_width_m : width;
     const std::unique_ptr<ground::PressureSinkage> law =
         ground_.normal_law(b_used, rolling_radius_slip(c, R0));
-    SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_, zmax);
+    SoilRate rate;
+    if (tau > 0) {
+      rate.weight.resize(cells), rate.start_m.resize(cells);
+      for (int k = 0; k < K; ++k)
+        soil_rate_column(rate, m.theta, R0, tau, o.speed_m_per_s, incoming[k], k, K, st.surface_m);
+    }
+    SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_, zmax, rate);
     if (st.approach_m.size() == std::size_t(S))
       for (int i = 0; i < S; ++i) laws.set_approach(i, std::max(st.approach_m[i], laws.floor(i)));
     const Eigen::Map<const Eigen::VectorXd> fx(st.fx_N.data(), S);
@@ -295,7 +313,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       // The level e - rut (the compression beyond the surface inside, minus the gap outside),
       // linear to its zero between the last cell in contact and the next.
       auto level = [&](int i) {
-        return n.approach_m[i] - class_drop_m_[k] - law->rebound_depth_m(zmax[at(i)]);
+        return n.approach_m[i] - class_drop_m_[k] - laws.rest_depth(i, k);
       };
       auto edge_fraction = [&](int in, int out) {
         const double a = level(in), b = level(out);
@@ -341,8 +359,12 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     const double b_change = std::abs(b_new - b_used);
     st.bekker_width_m = b_new;
     // 3. The fixed point's state: cell depths [mm], section horizontal forces [N], load share.
-    const Eigen::Index nstate = Eigen::Index(cells) + S + 1;
-    Eigen::VectorXd state(nstate), image(nstate);
+    for (int k = 0; k < K && tau > 0; ++k)
+      soil_rate_surface(rolled, rate, *law, incoming[k], k, K, S, depth, zmax);
+    const Eigen::Index nstate = Eigen::Index(cells) + S + 1, nrate = Eigen::Index(rolled.size());
+    Eigen::VectorXd state(nstate + nrate), image(nstate + nrate);
+    for (Eigen::Index a = 0; a < nrate; ++a)
+      state(nstate + a) = st.surface_m[a] * 1e3, image(nstate + a) = rolled[a] * 1e3;
     double change = 0, fx_change = 0;
     for (std::size_t a = 0; a < cells; ++a) {
       state(a) = st.depth_m[a] * 1e3, image(a) = depth[a] * 1e3;
@@ -363,6 +385,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     for (std::size_t a = 0; a < cells; ++a) st.depth_m[a] = std::max(next(a) * 1e-3, 0.0);
     for (int i = 0; i < S; ++i) st.fx_N[i] = next(cells + i);
     st.shear_vertical_N = next(nstate - 1);
+    for (Eigen::Index a = 0; a < nrate; ++a)
+      st.surface_m[a] = std::max(next(nstate + a) * 1e-3, 0.0);
     if (!settled) continue;
     TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
     r.iterations = it;
