@@ -20,6 +20,15 @@ double soil_rate_time_s(const ground::GroundSettings& g, double speed_m_per_s) {
   return eta2_Pa_s > 0 ? eta2_Pa_s / E2_Pa : 0.0;
 }
 
+SoilRateBudget soil_rate_budget(int max_iterations, double depth_tolerance, double tau_s,
+                                double speed_m_per_s, double ds_m) {
+  const double passage = tau_s * speed_m_per_s / ds_m;  // relaxation length over unit length
+  SoilRateBudget b;
+  b.max_iterations = max_iterations + static_cast<int>(std::min(20 * passage, 20000.0));
+  b.depth_tolerance = depth_tolerance * std::max(1 - std::exp(-1 / passage), kMinShare);
+  return b;
+}
+
 void soil_rate_column(SoilRate& rate, std::span<const double> theta, double R0_m, double tau_s,
                       double speed_m_per_s, double incoming_m, std::size_t first,
                       std::size_t stride, std::span<const double> surface_m) {

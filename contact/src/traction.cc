@@ -50,17 +50,21 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   double last_dp = 0;
   detail::AndersonMixer mixer(kAndersonDepth);
   // A viscous soil's rate term (soil_rate_term.h): its surface is part of the state.
-  const double tau = soil_rate_time_s(g, o.speed_m_per_s);  // 0: no rate term
+  const double rate_tau_s = soil_rate_time_s(g, o.speed_m_per_s);  // 0: no rate term
   SoilRate rate;
+  const SoilRateBudget budget =
+      rate_tau_s > 0
+          ? soil_rate_budget(o.max_iterations, o.depth_tolerance, rate_tau_s, o.speed_m_per_s, ds)
+          : SoilRateBudget{o.max_iterations, o.depth_tolerance};
   std::unique_ptr<ground::PressureSinkage> rate_law;
   double incoming = 0;
-  if (tau > 0) {
+  if (rate_tau_s > 0) {
     rate_law = g.normal_law(width, rolling_radius_slip(c, R0));  // b, slip: a Bekker soil's
     incoming = rate_law->sinkage_m(0.0, prior);
     rate.weight.resize(m), rate.start_m.resize(m);
     if (st.surface_m.size() != std::size_t(m)) st.surface_m.assign(m, incoming);
   }
-  for (int it = 1; it <= o.max_iterations; ++it) {
+  for (int it = 1; it <= budget.max_iterations; ++it) {
     // 1. The memory of the ground ahead of each unit (front = the highest index).
     double ahead = prior;
     for (int i = m - 1; i >= 0; --i) {
@@ -82,8 +86,9 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     const double b_used = in.bekker_width_m;
     in.warm_active = st.active;
     in.initial_force_N = st.force_N;
-    if (tau > 0) {
-      soil_rate_column(rate, model.theta, R0, tau, o.speed_m_per_s, incoming, 0, 1, st.surface_m);
+    if (rate_tau_s > 0) {
+      soil_rate_column(rate, model.theta, R0, rate_tau_s, o.speed_m_per_s, incoming, 0, 1,
+                       st.surface_m);
       in.rate = &rate;
     }
     const FootprintResult f = solve_ground_patch(model, op, {normal_load, 0}, g, in);
@@ -144,8 +149,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     const double dp = H - Rc;
     // Residual of the fixed point x = G(x) on the state (depth profile, horizontal forces, the
     // shear's load share), in mm and N so that the mixing weighs them alike.
-    std::vector<double> rolled(tau > 0 ? m : 0);
-    if (tau > 0) soil_rate_surface(rolled, rate, *rate_law, incoming, 0, 1, m, depth, z_max);
+    std::vector<double> rolled(rate_tau_s > 0 ? m : 0);
+    if (rate_tau_s > 0) soil_rate_surface(rolled, rate, *rate_law, incoming, 0, 1, m, depth, z_max);
     const int n = 2 * m + 1 + static_cast<int>(rolled.size());
     Eigen::VectorXd state(n), image(n);
     for (std::size_t i = 0; i < rolled.size(); ++i)
@@ -161,7 +166,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       deepest = std::max(deepest, std::abs(depth[i]));
       fx_change = std::max(fx_change, std::abs(fx_new[i] - st.fx_N[i]));
     }
-    const bool settled = it > 1 && change <= o.depth_tolerance * std::max(deepest, f.sinking_m) &&
+    const bool settled = it > 1 &&
+                         change <= budget.depth_tolerance * std::max(deepest, f.sinking_m) &&
                          std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
                          fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
                          std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N;
@@ -202,7 +208,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     }
   }
   std::ostringstream msg;
-  msg << "steady rolling did not settle in " << o.max_iterations << " steps";
+  msg << "steady rolling did not settle in " << budget.max_iterations << " steps";
   return case_result(c, pass, msg.str(), SolveStatus::max_iterations);
 }
 

@@ -220,9 +220,13 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   std::vector<double> zmax(cells), f(cells), depth(cells), surface(cells), x(cells);
   std::vector<double> fr(S), ft(S), ur(S), ut(S);
   // A viscous soil's rate term (soil_rate_term.h): its surface per cell is part of the state.
-  const double tau = soil_rate_time_s(ground_, o.speed_m_per_s);  // 0: no rate term
-  std::vector<double> incoming(K, 0.0), rolled(tau > 0 ? cells : 0);
-  if (tau > 0) {
+  const double rate_tau_s = soil_rate_time_s(ground_, o.speed_m_per_s);  // 0: no rate term
+  const SoilRateBudget budget = rate_tau_s > 0
+                                    ? soil_rate_budget(o.max_iterations, o.depth_tolerance,
+                                                       rate_tau_s, o.speed_m_per_s, m.unit_length_m)
+                                    : SoilRateBudget{o.max_iterations, o.depth_tolerance};
+  std::vector<double> incoming(K, 0.0), rolled(rate_tau_s > 0 ? cells : 0);
+  if (rate_tau_s > 0) {
     const auto kv = ground_.normal_law(width, rolling_radius_slip(c, R0));  // b, slip: Bekker's
     for (int k = 0; k < K; ++k) incoming[k] = kv->sinkage_m(0.0, prior[k]);
     if (st.surface_m.size() != cells) {
@@ -230,7 +234,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       for (std::size_t a = 0; a < cells; ++a) st.surface_m[a] = incoming[a % K];
     }
   }
-  for (int it = 1; it <= o.max_iterations; ++it) {
+  for (int it = 1; it <= budget.max_iterations; ++it) {
     // 1. The memory of the cells ahead in each column (front = the highest section index).
     for (int k = 0; k < K; ++k) {
       double ahead = prior[k];
@@ -246,10 +250,11 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     const std::unique_ptr<ground::PressureSinkage> law =
         ground_.normal_law(b_used, rolling_radius_slip(c, R0));
     SoilRate rate;
-    if (tau > 0) {
+    if (rate_tau_s > 0) {
       rate.weight.resize(cells), rate.start_m.resize(cells);
       for (int k = 0; k < K; ++k)
-        soil_rate_column(rate, m.theta, R0, tau, o.speed_m_per_s, incoming[k], k, K, st.surface_m);
+        soil_rate_column(rate, m.theta, R0, rate_tau_s, o.speed_m_per_s, incoming[k], k, K,
+                         st.surface_m);
     }
     SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_, zmax, rate);
     if (st.approach_m.size() == std::size_t(S))
@@ -359,7 +364,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     const double b_change = std::abs(b_new - b_used);
     st.bekker_width_m = b_new;
     // 3. The fixed point's state: cell depths [mm], section horizontal forces [N], load share.
-    for (int k = 0; k < K && tau > 0; ++k)
+    for (int k = 0; k < K && rate_tau_s > 0; ++k)
       soil_rate_surface(rolled, rate, *law, incoming[k], k, K, S, depth, zmax);
     const Eigen::Index nstate = Eigen::Index(cells) + S + 1, nrate = Eigen::Index(rolled.size());
     Eigen::VectorXd state(nstate + nrate), image(nstate + nrate);
@@ -376,7 +381,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     }
     state(nstate - 1) = st.shear_vertical_N, image(nstate - 1) = shear_v;
     const double deepest = std::max(soil_sinkage, 1e-12);
-    const bool settled = it > 1 && change <= o.depth_tolerance * std::max(deepest, n.delta_m) &&
+    const bool settled = it > 1 &&
+                         change <= budget.depth_tolerance * std::max(deepest, n.delta_m) &&
                          std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
                          fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
                          std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N;
@@ -417,7 +423,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     return r;
   }
   std::ostringstream msg;
-  msg << "steady rolling on the 3D patch did not settle in " << o.max_iterations << " steps";
+  msg << "steady rolling on the 3D patch did not settle in " << budget.max_iterations << " steps";
   return case_result(c, pass, msg.str(), SolveStatus::max_iterations);
 }
 

@@ -10,6 +10,11 @@
 // recovering freely behind the tyre (where sigma would fall below 0 the tyre leaves it). The
 // rolling fixed points take z_a from their current iterate's profile (one-sided toward the
 // front, where the ground point comes from) and converge it with the rest of their state.
+// That state's level returns through z_a with the factor w: a level error decays as w^n over the
+// rolling steps (w = 1 - 1/35 at 1 mm units, 5 km/h, tau 25 ms), so the steps' budget and the
+// depth test scale with 1 / (1 - w) (soil_rate_budget). Taking the level implicitly (z_a moved
+// with the axle's approach) was tried: the entry point, whose z_a is the fixed ground ahead,
+// then lags the approach and the steps oscillated apart (docs/soil.md section 9.1).
 // Off (eta2 = 0 or V = 0) the map is the identity and no arithmetic is added.
 #include <cstddef>
 #include <span>
@@ -36,6 +41,17 @@ struct SoilRate {
     return on() ? weight[i] * start_m[i] * p_Pa + (1 - weight[i]) * w_el_J_m2 : w_el_J_m2;
   }
 };
+
+/// The rolling fixed point's budget with the rate term at unit length ds: the steps
+/// max_iterations + 20 tau V / ds (at most 20000) and the depth test depth_tolerance (1 - w) at
+/// w = exp(-ds / (tau V)), so that the level's remaining error (change / (1 - w)) stays within
+/// depth_tolerance of the sinkage.
+struct SoilRateBudget {
+  int max_iterations = 0;
+  double depth_tolerance = 0;
+};
+SoilRateBudget soil_rate_budget(int max_iterations, double depth_tolerance, double tau_s,
+                                double speed_m_per_s, double ds_m);
 
 /// tau = eta2 / E2 [s] where the rate term acts (a Kelvin-Voigt soil with eta2 > 0 rolled at
 /// V > 0), else 0.
