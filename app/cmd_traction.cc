@@ -74,8 +74,9 @@ void register_traction(CLI::App& app) {
                   "the same load free-rolling on the rigid road, ISTVS) or unloaded (R0)")
       ->check(CLI::IsMember({"rolling", "unloaded"}));
   cmd->add_option("--speed-km-h", a->speed_km_h,
-                  "rolling speed of the tyre's flexing (hysteresis) loss on the road, 0-100 km/h "
-                  "(0: none; default: the config's transient.rolling.speed_km_h)")
+                  "rolling speed, 0-100 km/h: of the tyre's flexing (hysteresis) loss on the "
+                  "road and a Kelvin-Voigt soil's rate term eta2 (0: neither; default: the "
+                  "config's transient.rolling.speed_km_h)")
       ->check(physical_range(0, 100, "km/h",
                              "steady traction on soil is a slow process (soil bins run at "
                              "0.1-3 m/s)",
