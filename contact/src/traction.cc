@@ -151,10 +151,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     // shear's load share), in mm and N so that the mixing weighs them alike.
     std::vector<double> rolled(rate_tau_s > 0 ? m : 0);
     if (rate_tau_s > 0) soil_rate_surface(rolled, rate, *rate_law, incoming, 0, 1, m, depth, z_max);
-    const int n = 2 * m + 1 + static_cast<int>(rolled.size());
+    const int n = 2 * m + 1;
     Eigen::VectorXd state(n), image(n);
-    for (std::size_t i = 0; i < rolled.size(); ++i)
-      state(2 * m + 1 + i) = st.surface_m[i] * 1e3, image(2 * m + 1 + i) = rolled[i] * 1e3;
     for (int i = 0; i < m; ++i) {
       state(i) = st.depth_m[i] * 1e3, image(i) = depth[i] * 1e3;
       state(m + i) = st.fx_N[i], image(m + i) = fx_new[i];
@@ -180,8 +178,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       st.fx_N[i] = next(m + i);
     }
     st.shear_vertical_N = next(2 * m);
-    for (std::size_t i = 0; i < rolled.size(); ++i)
-      st.surface_m[i] = std::max(next(2 * m + 1 + i) * 1e-3, 0.0);
+    if (rate_tau_s > 0) st.surface_m = rolled;  // plain, not mixed (soil_rate_term.h)
     if (settled) {
       TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
       r.iterations = it;

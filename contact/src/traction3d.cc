@@ -366,10 +366,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     // 3. The fixed point's state: cell depths [mm], section horizontal forces [N], load share.
     for (int k = 0; k < K && rate_tau_s > 0; ++k)
       soil_rate_surface(rolled, rate, *law, incoming[k], k, K, S, depth, zmax);
-    const Eigen::Index nstate = Eigen::Index(cells) + S + 1, nrate = Eigen::Index(rolled.size());
-    Eigen::VectorXd state(nstate + nrate), image(nstate + nrate);
-    for (Eigen::Index a = 0; a < nrate; ++a)
-      state(nstate + a) = st.surface_m[a] * 1e3, image(nstate + a) = rolled[a] * 1e3;
+    const Eigen::Index nstate = Eigen::Index(cells) + S + 1;
+    Eigen::VectorXd state(nstate), image(nstate);
     double change = 0, fx_change = 0;
     for (std::size_t a = 0; a < cells; ++a) {
       state(a) = st.depth_m[a] * 1e3, image(a) = depth[a] * 1e3;
@@ -391,8 +389,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     for (std::size_t a = 0; a < cells; ++a) st.depth_m[a] = std::max(next(a) * 1e-3, 0.0);
     for (int i = 0; i < S; ++i) st.fx_N[i] = next(cells + i);
     st.shear_vertical_N = next(nstate - 1);
-    for (Eigen::Index a = 0; a < nrate; ++a)
-      st.surface_m[a] = std::max(next(nstate + a) * 1e-3, 0.0);
+    if (rate_tau_s > 0) st.surface_m = rolled;  // plain, not mixed (soil_rate_term.h)
     if (!settled) continue;
     TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
     r.iterations = it;

@@ -8,13 +8,14 @@
 //   Z_i(p) = w_i z_a + (1 - w_i) Z_el(p; z_max),   w_i = exp(-h_i / tau),  tau = eta2 / E2:
 // continuous and non-decreasing in p (the contact problems stay convex), Z_i(0) the surface
 // recovering freely behind the tyre (where sigma would fall below 0 the tyre leaves it). The
-// rolling fixed points take z_a from their current iterate's profile (one-sided toward the
-// front, where the ground point comes from) and converge it with the rest of their state.
-// That state's level returns through z_a with the factor w: a level error decays as w^n over the
-// rolling steps (w = 1 - 1/35 at 1 mm units, 5 km/h, tau 25 ms), so the steps' budget and the
-// depth test scale with 1 / (1 - w) (soil_rate_budget). Taking the level implicitly (z_a moved
-// with the axle's approach) was tried: the entry point, whose z_a is the fixed ground ahead,
-// then lags the approach and the steps oscillated apart (docs/soil.md section 9.1).
+// rolling fixed points take z_a from the last rolling step's surface (one-sided toward the
+// front, where the ground point comes from; a plain step beside their Anderson-mixed state:
+// mixed, an extrapolated surface could put the load on one point, docs/soil.md section 9.1).
+// The surface's level returns through z_a with the factor w: a level error decays as w^n over
+// the rolling steps (w = 1 - 1/35 at 1 mm units, 5 km/h, tau 25 ms), so the steps' budget and
+// the depth test scale with 1 / (1 - w) (soil_rate_budget). Taking the level implicitly (z_a
+// moved with the axle's approach) was tried: the entry point, whose z_a is the fixed ground
+// ahead, then lags the approach and the steps oscillated apart.
 // Off (eta2 = 0 or V = 0) the map is the identity and no arithmetic is added.
 #include <cstddef>
 #include <span>
