@@ -49,7 +49,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   const PatchOperator op = static_matrix_free_operator(model);
   double last_dp = 0;
   detail::AndersonMixer mixer(kAndersonDepth);
-  // A viscous soil's rate term (soil_rate_term.h): its surface is part of the state.
+  // A viscous soil's rate term (soil_rate_term.h): its surface carried from step to step.
   const double rate_tau_s = soil_rate_time_s(g, o.speed_m_per_s);  // 0: no rate term
   SoilRate rate;
   const SoilRateBudget budget =

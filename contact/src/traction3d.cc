@@ -219,7 +219,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
                                   // linearisations over the rolling steps
   std::vector<double> zmax(cells), f(cells), depth(cells), surface(cells), x(cells);
   std::vector<double> fr(S), ft(S), ur(S), ut(S);
-  // A viscous soil's rate term (soil_rate_term.h): its surface per cell is part of the state.
+  // A viscous soil's rate term (soil_rate_term.h): its surface per cell carried from step to step.
   const double rate_tau_s = soil_rate_time_s(ground_, o.speed_m_per_s);  // 0: no rate term
   const SoilRateBudget budget = rate_tau_s > 0
                                     ? soil_rate_budget(o.max_iterations, o.depth_tolerance,
