@@ -190,13 +190,19 @@ TEST(SoilEffects, EachMovesTheTractionOutputsItListsAndNoOther) {
 // soil_viscosity: the Kelvin-Voigt soil's rate term under the rolling rigid wheel (docs/soil.md
 // 3.2) and the flexible tyre (9.1). Off (eta2 = 0) and standing (V = 0) are the elastic law bit
 // for bit; on at 5 km/h it moves every output it lists; refused on a Bekker soil.
-TyreConfig soilfx_kelvin_voigt() {
-  return load_tyre_config(
-      kSoilFxConfig,
-      {"contact.unit_length_mm=2", "ground.model=kelvin_voigt", "ground.kelvin_voigt.E2_MPa=2",
-       "ground.kelvin_voigt.layer_mm=200", "ground.kelvin_voigt.elastic_share=0.7",
-       "ground.kelvin_voigt.cohesion_kPa=1", "ground.kelvin_voigt.friction_angle_deg=30",
-       "ground.kelvin_voigt.shear_modulus_K_mm=25"});
+// The 2D SF-350 (or the default 3D config, 10 mm columns) at 2 mm units on section 3.2's soil.
+TyreConfig soilfx_kelvin_voigt(const std::string& config = kSoilFxConfig) {
+  std::vector<std::string> sets = {"contact.unit_length_mm=2",
+                                   "ground.model=kelvin_voigt",
+                                   "ground.kelvin_voigt.E2_MPa=2",
+                                   "ground.kelvin_voigt.layer_mm=200",
+                                   "ground.kelvin_voigt.elastic_share=0.7",
+                                   "ground.kelvin_voigt.cohesion_kPa=1",
+                                   "ground.kelvin_voigt.friction_angle_deg=30",
+                                   "ground.kelvin_voigt.shear_modulus_K_mm=25"};
+  // (on the 2D config a footprint_3d key would make it a 3D one)
+  if (config != kSoilFxConfig) sets.push_back("footprint_3d.lateral_cell_mm=10");
+  return load_tyre_config(config, sets);
 }
 
 void soilfx_viscosity_moves_its_outputs(const TyreConfig& kv, bool rigid) {
@@ -238,7 +244,12 @@ TEST(SoilEffects, SoilViscosityActsThroughTheSpeedOnTheRigidWheel) {
 }
 
 TEST(SoilEffects, SoilViscosityActsThroughTheSpeedOnTheFlexibleTyre) {
-  soilfx_viscosity_moves_its_outputs(soilfx_kelvin_voigt(), false);
+  const TyreConfig two_d = soilfx_kelvin_voigt();
+  ASSERT_FALSE(two_d.footprint_3d.has_value());
+  soilfx_viscosity_moves_its_outputs(two_d, false);
+  const TyreConfig three_d = soilfx_kelvin_voigt(kSoilFxSrc + "/configs/sf350.yaml");
+  ASSERT_TRUE(three_d.footprint_3d.has_value());  // the default tyre's 3D patch
+  soilfx_viscosity_moves_its_outputs(three_d, false);
 }
 
 }  // namespace
