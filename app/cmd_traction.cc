@@ -74,8 +74,9 @@ void register_traction(CLI::App& app) {
                   "the same load free-rolling on the rigid road, ISTVS) or unloaded (R0)")
       ->check(CLI::IsMember({"rolling", "unloaded"}));
   cmd->add_option("--speed-km-h", a->speed_km_h,
-                  "rolling speed of the tyre's flexing (hysteresis) loss on the road, 0-100 km/h "
-                  "(0: none; default: the config's transient.rolling.speed_km_h)")
+                  "rolling speed, 0-100 km/h: of the tyre's flexing (hysteresis) loss on the "
+                  "road and a Kelvin-Voigt soil's rate term eta2 (0: neither; default: the "
+                  "config's transient.rolling.speed_km_h)")
       ->check(physical_range(0, 100, "km/h",
                              "steady traction on soil is a slow process (soil bins run at "
                              "0.1-3 m/s)",
@@ -101,16 +102,10 @@ void register_traction(CLI::App& app) {
     files.input(a->ground, "--ground");
     if (!a->plot.empty()) files.output(a->plot, "--plot");
     files.check();
-    // The Kelvin-Voigt soil's rate term eta2 acts under the rigid wheel at the speed (docs/soil.md
-    // section 3.2) and in the transient (section 8.4); the flexible tyre's steady rolling takes
-    // the elastic law: said, not dropped quietly.
+    // The Kelvin-Voigt soil's rate term eta2 acts at the speed on the rigid wheel and the
+    // flexible tyre alike (docs/soil.md sections 3.2, 9.1): the JSON prints that speed.
     const bool viscous = setup.ground.model == ground::GroundModel::kelvin_voigt &&
                          setup.ground.kelvin_voigt.eta2_kPa_s > 0;
-    if (viscous && !setup.rigid) {
-      std::cerr << "warning: the flexible tyre's traction leaves out the soil's viscous term "
-                   "(ground.kelvin_voigt.eta2_kPa_s): steady rolling on its elastic law; the "
-                   "rigid wheel (tyre.rigid) and the transient model it (docs/soil.md 3.2, 8.4)\n";
-    }
     const auto results = report::run_traction(setup, a->loads, a->slips, a->passes);
     for (const auto& r : results) {
       if (r.window_m > setup.config.mesh.window_m) {

@@ -29,7 +29,7 @@ GroundContactSolution solve_ground_contact(const GroundContactProblem& P,
   MODALTYRE_CHECK(!soil || static_cast<int>(P.area_m2.size()) == m, "areas");
   auto zmax = [&](int i) { return P.z_max_m.empty() ? 0.0 : P.z_max_m[i]; };
   auto Z = [&](int i, double f) {
-    return P.law->sinkage_m(std::max(f, 0.0) / P.area_m2[i], zmax(i));
+    return P.rate.sinkage_m(i, P.law->sinkage_m(std::max(f, 0.0) / P.area_m2[i], zmax(i)));
   };
   GroundContactSolution out;
   std::vector<char> active(warm.begin(), warm.end());
@@ -50,7 +50,10 @@ GroundContactSolution solve_ground_contact(const GroundContactProblem& P,
   auto objective = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& Cx) {
     double J = 0.5 * x.dot(Cx) + P.initial_gap.dot(x);
     for (int i = 0; i < m; ++i)
-      if (x(i) > 0) J += P.area_m2[i] * P.law->work_J_m2(x(i) / P.area_m2[i], zmax(i));
+      if (x(i) > 0) {
+        const double p = x(i) / P.area_m2[i];
+        J += P.area_m2[i] * P.rate.work_J_m2(i, p, P.law->work_J_m2(p, zmax(i)));
+      }
     return J;
   };
   // The step's model of Z: the secant through the unloaded point (0, Z(0)) and the current one
@@ -76,7 +79,7 @@ GroundContactSolution solve_ground_contact(const GroundContactProblem& P,
           const double p_max = zmax(i) > 0 ? P.law->loading_Pa(zmax(i)) : 0.0;
           if (p < p_max) dzdp = std::max(dzdp, P.law->compliance_m_per_Pa(p_max, zmax(i)));
         }
-        d[i] = dzdp / A;
+        d[i] = dzdp * P.rate.scale(i) / A;  // the rate term scales the law (soil_rate_term.h)
         gap(i) += Z(i, fi) - d[i] * fi;
       }
     }

@@ -40,6 +40,7 @@ FootprintResult solve_at_width(const TyreModel& model, const PatchOperator& op,
     for (int i = 0; i < m; ++i)
       P.area_m2[i] = op.width_m * model.unit_length_m * std::cos(model.theta[i]);
     P.z_max_m.assign(in.z_max_m.begin(), in.z_max_m.end());
+    if (in.rate) P.rate = *in.rate;
     if (static_cast<int>(in.initial_force_N.size()) == m)
       P.initial_force = Eigen::Map<const Eigen::VectorXd>(in.initial_force_N.data(), m);
     if (!P.z_max_m.empty() && static_cast<int>(P.z_max_m.size()) != m)

@@ -17,13 +17,14 @@ constexpr double kGapFloor_m = 1e-9;
 
 SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::vector<double> weight,
                            const ground::PressureSinkage& law, std::vector<double> area,
-                           std::vector<double> z_max)
+                           std::vector<double> z_max, SoilRate rate)
     : t_(std::move(t)),
       z_(std::move(z)),
       w_(std::move(weight)),
       law_(law),
       area_(std::move(area)),
       zmax_(std::move(z_max)),
+      rate_(std::move(rate)),
       floor_(t_.size()),
       d_(t_.size()) {
   const int S = static_cast<int>(t_.size()), K = classes();
@@ -31,15 +32,16 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
   if (!zmax_.empty()) {
     rut_.resize(zmax_.size());
     pv_.resize(zmax_.size());
+    rest_.resize(zmax_.size());
     for (std::size_t a = 0; a < zmax_.size(); ++a) {
       rut_[a] = zmax_[a] > 0 ? law_.rebound_depth_m(zmax_[a]) : 0.0;
       pv_[a] = zmax_[a] > 0 ? law_.loading_Pa(zmax_[a]) : 0.0;
+      rest_[a] = rate_.sinkage_m(a, rut_[a]);
     }
   }
   for (int i = 0; i < S; ++i) {
     double lowest = 1e300;
-    for (int k = 0; k < K; ++k)
-      lowest = std::min(lowest, z_[k] + (rut_.empty() ? 0 : rut_[idx(i, k)]));
+    for (int k = 0; k < K; ++k) lowest = std::min(lowest, z_[k] + rest_depth(i, k));
     floor_[i] = lowest;
     d_[i] = lowest;  // at the floor: F = 0
   }
@@ -50,17 +52,25 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
 // at e_v = t A p_v + z_max (p_v = p(z_max)): beyond it the root is on the virgin curve
 // (f > A p_v), below it on the branch (for a rigid-plastic soil the vertical branch at z_max:
 // f = (e - z_max) / t exactly). Newton from the cell's last root (or the series estimate of tread
-// and soil alone), safeguarded by bisection on the branch's bracket.
+// and soil alone), safeguarded by bisection on the branch's bracket. With the rate term,
+// t f + w z_a + (1 - w) Z = e is the same root for the spring t / (1 - w) and the compression
+// (e - w z_a) / (1 - w), and df/de gains the factor 1 / (1 - w).
 double SoilSections::cell(int i, int k, double e, double* dfde) const {
   if (dfde) *dfde = 0;
   const std::size_t a = idx(i, k);
   const double zmax = memory(i, k), rut = rut_.empty() ? 0.0 : rut_[a];
+  double t = t_[i], share = 1;
+  if (rate_.on()) {
+    share = rate_.scale(a);
+    e = (e - rate_.weight[a] * rate_.start_m[a]) / share;
+    t /= share;
+  }
   if (!(e > rut)) return 0.0;
-  const double t = t_[i], A = area_[i];
+  const double A = area_[i];
   const double pv = pv_.empty() ? 0.0 : pv_[a];
   const bool virgin = e >= t * A * pv + zmax;
   if (!virgin && law_.rigid_plastic()) {
-    if (dfde) *dfde = 1.0 / t;
+    if (dfde) *dfde = 1.0 / (t * share);
     return (e - zmax) / t;
   }
   double lo = virgin ? A * pv : 0, hi = (e - (virgin ? zmax : rut)) / t;
@@ -87,7 +97,7 @@ double SoilSections::cell(int i, int k, double e, double* dfde) const {
     f = next;
   }
   last_[a] = f;
-  if (dfde) *dfde = 1.0 / slope;
+  if (dfde) *dfde = rate_.on() ? 1.0 / (slope * share) : 1.0 / slope;
   return f;
 }
 
@@ -100,7 +110,7 @@ double SoilSections::section(int i, double d, double* stiffness) const {
     const double e = d - z_[k];
     F += w_[k] * cell(i, k, e, stiffness ? &dfde : nullptr);
     if (stiffness) {
-      const double lowest = z_[k] + (rut_.empty() ? 0.0 : rut_[idx(i, k)]);
+      const double lowest = z_[k] + rest_depth(i, k);
       kk += w_[k] * (e > lowest - z_[k] ? dfde : (lowest <= floor_[i] ? 1.0 / t_[i] : 0.0));
     }
   }
@@ -127,7 +137,7 @@ double SoilSections::approach(int i, double F) const {
 }
 
 double SoilSections::depth(int i, int k, double f) const {
-  return law_.sinkage_m(f / area_[i], memory(i, k));
+  return rate_.sinkage_m(idx(i, k), law_.sinkage_m(f / area_[i], memory(i, k)));
 }
 
 void SoilSections::reduced(int i, double& c, double& o) const {
@@ -165,8 +175,10 @@ double SoilSections::energy_at(int i, double F, double& d) const {
   double psi = 0;
   for (int k = 0; k < classes(); ++k) {
     const double f = cell(i, k, d - z_[k]);
-    if (f > 0)
-      psi += w_[k] * (t_[i] * f * f / 2 + A * law_.work_J_m2(f / A, memory(i, k)) + z_[k] * f);
+    if (f > 0) {
+      const double W = rate_.work_J_m2(idx(i, k), f / A, law_.work_J_m2(f / A, memory(i, k)));
+      psi += w_[k] * (t_[i] * f * f / 2 + A * W + z_[k] * f);
+    }
   }
   return psi;
 }

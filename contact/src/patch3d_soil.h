@@ -16,6 +16,7 @@
 #include <memory>
 #include <vector>
 
+#include "modaltyre/contact/soil_rate_term.h"
 #include "modaltyre/ground/pressure_sinkage.h"
 #include "patch3d_sections.h"
 
@@ -25,10 +26,11 @@ class SoilSections final : public SectionLaws {
  public:
   /// t: cell tread compliance per section [m/N]; z: drop per class [m]; weight: columns per
   /// class; area: a cell's road area per section [m^2]; z_max: memory per cell at
-  /// [i * classes + k] (empty: virgin soil everywhere).
+  /// [i * classes + k] (empty: virgin soil everywhere); rate: a viscous soil's rate term per
+  /// cell in steady rolling (soil_rate_term.h: Z = w z_a + (1 - w) Z_el; off: none).
   SoilSections(std::vector<double> t, std::vector<double> z, std::vector<double> weight,
                const ground::PressureSinkage& law, std::vector<double> area,
-               std::vector<double> z_max = {});
+               std::vector<double> z_max = {}, SoilRate rate = {});
 
   int classes() const { return static_cast<int>(z_.size()); }
   /// A cell's force at compression e [N] (and df/de).
@@ -45,6 +47,9 @@ class SoilSections final : public SectionLaws {
   /// The soil's depth under a cell of section i, class k carrying f [m].
   double depth(int i, int k, double f) const;
   double memory(int i, int k) const { return zmax_.empty() ? 0.0 : zmax_[idx(i, k)]; }
+  /// The surface under an unloaded cell: the rut, or with the rate term the surface recovering
+  /// from the depth it arrived with.
+  double rest_depth(int i, int k) const { return rest_.empty() ? 0.0 : rest_[idx(i, k)]; }
 
   void reduced(int i, double& c, double& o) const override;
   bool consistent(int i, double F, double d, double tol) const override;
@@ -60,10 +65,12 @@ class SoilSections final : public SectionLaws {
   std::vector<double> t_, z_, w_;
   const ground::PressureSinkage& law_;
   std::vector<double> area_, zmax_, rut_;  ///< rut per cell (empty: virgin)
-  std::vector<double> pv_;                 ///< virgin pressure at the memory per cell
-  mutable std::vector<double> last_;       ///< each cell's last root (Newton's start)
-  std::vector<double> floor_;              ///< per section
-  std::vector<double> d_;                  ///< each section's approach (linearisation point)
+  SoilRate rate_;
+  std::vector<double> rest_;  ///< Z(0) per cell: the rut through the rate term (empty: virgin)
+  std::vector<double> pv_;    ///< virgin pressure at the memory per cell
+  mutable std::vector<double> last_;  ///< each cell's last root (Newton's start)
+  std::vector<double> floor_;         ///< per section
+  std::vector<double> d_;             ///< each section's approach (linearisation point)
 };
 
 }  // namespace modaltyre::contact::detail

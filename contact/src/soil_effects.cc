@@ -287,7 +287,9 @@ constexpr const char* kEta2Key = "ground.kelvin_voigt.eta2_kPa_s";
 
 EffectInfo soil_viscosity() {
   EffectOption o;
-  o.keys = "ground.kelvin_voigt.eta2_kPa_s > 0 (with tyre.rigid=true)";
+  o.keys =
+      "ground.kelvin_voigt.eta2_kPa_s > 0 (rolled at the speed: --speed-km-h or "
+      "transient.rolling.speed_km_h)";
   o.is_on = [](const TyreConfig& c) {
     return c.ground.model == GroundModel::kelvin_voigt && c.ground.kelvin_voigt.eta2_kPa_s > 0;
   };
@@ -301,32 +303,30 @@ EffectInfo soil_viscosity() {
              "ground is " +
              std::string(c.ground.soil() ? "the " : "a rigid road, ") + model_word(c.ground.model) +
              (c.ground.soil() ? " soil" : "");
-    if (!c.rigid)
-      return "steady rolling takes the rate term under the rigid wheel (tyre.rigid=true); the "
-             "flexible tyre's fixed point rolls the elastic law (docs/soil.md 3.2)";
     return "";
   };
-  EffectInfo e{EffectId::soil_viscosity,
-               "soil_viscosity",
-               "the Kelvin-Voigt soil's rate term: sigma = k_E (E2 z + eta2 dz/dt) / H with dz/dt "
-               "= V tan(theta) under the rolling wheel (seed 000 eq. 23): the soil stiffens and "
-               "resists more with speed",
-               {"soil_sinkage_mm", "drawbar_pull_N", "torque_Nm"},
-               ConditionId::speed_kmh,
-               // Searched over tau = eta2 / E2 from 0.5 ms to 1 s at E2 = 2 MPa.
-               {{"eta2_kPa_s",
-                 "kPa s",
-                 kEta2_kPa_s,
-                 1,
-                 2000,
-                 true,
-                 "viscosity factor eta2 (no published soil value at hand: identify soil-rolling "
-                 "measures it)",
-                 {},
-                 ground_key(
-                     kEta2Key, [](const TyreConfig& c) { return c.ground.kelvin_voigt.eta2_kPa_s; },
-                     [](TyreConfig& c, double v) { c.ground.kelvin_voigt.eta2_kPa_s = v; })}},
-               "soil (the rate term of its loading and unloading)"};
+  EffectInfo e{
+      EffectId::soil_viscosity,
+      "soil_viscosity",
+      "the Kelvin-Voigt soil's rate term: sigma = k_E (E2 z + eta2 dz/dt) / H with dz/dt "
+      "= -V dz/dx under the rolling tyre or wheel (seed 000 eq. 23; V tan(theta) under the "
+      "rigid wheel): the soil stiffens and resists more with speed",
+      {"soil_sinkage_mm", "drawbar_pull_N", "torque_Nm"},
+      ConditionId::speed_kmh,
+      // Searched over tau = eta2 / E2 from 0.5 ms to 1 s at E2 = 2 MPa.
+      {{"eta2_kPa_s",
+        "kPa s",
+        kEta2_kPa_s,
+        1,
+        2000,
+        true,
+        "viscosity factor eta2 (no published soil value at hand: identify soil-rolling "
+        "measures it)",
+        {},
+        ground_key(
+            kEta2Key, [](const TyreConfig& c) { return c.ground.kelvin_voigt.eta2_kPa_s; },
+            [](TyreConfig& c, double v) { c.ground.kelvin_voigt.eta2_kPa_s = v; })}},
+      "soil (the rate term of its loading and unloading)"};
   e.option = o;  // strength from eta2 = 0: the elastic law
   return e;
 }

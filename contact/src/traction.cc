@@ -7,6 +7,7 @@
 
 #include "modaltyre/contact/ground_patch.h"
 #include "modaltyre/contact/rolling_radius.h"
+#include "modaltyre/contact/soil_rate_term.h"
 #include "modaltyre/contact/validity.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/ground/rigid_wheel.h"
@@ -26,7 +27,8 @@ struct RollingState {
   double shear_vertical_N = 0;  ///< vertical component of the shear forces
   double bekker_width_m = 0;
   std::vector<char> active;
-  std::vector<double> force_N;  ///< vertical force per unit (the soil's linearisation point)
+  std::vector<double> force_N;    ///< vertical force per unit (the soil's linearisation point)
+  std::vector<double> surface_m;  ///< a viscous soil's rolled surface per unit (soil_rate_term.h)
 };
 
 using detail::case_result;
@@ -47,7 +49,22 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   const PatchOperator op = static_matrix_free_operator(model);
   double last_dp = 0;
   detail::AndersonMixer mixer(kAndersonDepth);
-  for (int it = 1; it <= o.max_iterations; ++it) {
+  // A viscous soil's rate term (soil_rate_term.h): its surface carried from step to step.
+  const double rate_tau_s = soil_rate_time_s(g, o.speed_m_per_s);  // 0: no rate term
+  SoilRate rate;
+  const SoilRateBudget budget =
+      rate_tau_s > 0
+          ? soil_rate_budget(o.max_iterations, o.depth_tolerance, rate_tau_s, o.speed_m_per_s, ds)
+          : SoilRateBudget{o.max_iterations, o.depth_tolerance};
+  std::unique_ptr<ground::PressureSinkage> rate_law;
+  double incoming = 0;
+  if (rate_tau_s > 0) {
+    rate_law = g.normal_law(width, rolling_radius_slip(c, R0));  // b, slip: a Bekker soil's
+    incoming = rate_law->sinkage_m(0.0, prior);
+    rate.weight.resize(m), rate.start_m.resize(m);
+    if (st.surface_m.size() != std::size_t(m)) st.surface_m.assign(m, incoming);
+  }
+  for (int it = 1; it <= budget.max_iterations; ++it) {
     // 1. The memory of the ground ahead of each unit (front = the highest index).
     double ahead = prior;
     for (int i = m - 1; i >= 0; --i) {
@@ -69,6 +86,11 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     const double b_used = in.bekker_width_m;
     in.warm_active = st.active;
     in.initial_force_N = st.force_N;
+    if (rate_tau_s > 0) {
+      soil_rate_column(rate, model.theta, R0, rate_tau_s, o.speed_m_per_s, incoming, 0, 1,
+                       st.surface_m);
+      in.rate = &rate;
+    }
     const FootprintResult f = solve_ground_patch(model, op, {normal_load, 0}, g, in);
     if (!f.ok()) {
       TractionResult r = case_result(c, pass, f.message, f.status);
@@ -127,6 +149,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     const double dp = H - Rc;
     // Residual of the fixed point x = G(x) on the state (depth profile, horizontal forces, the
     // shear's load share), in mm and N so that the mixing weighs them alike.
+    std::vector<double> rolled(rate_tau_s > 0 ? m : 0);
+    if (rate_tau_s > 0) soil_rate_surface(rolled, rate, *rate_law, incoming, 0, 1, m, depth, z_max);
     const int n = 2 * m + 1;
     Eigen::VectorXd state(n), image(n);
     for (int i = 0; i < m; ++i) {
@@ -140,7 +164,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       deepest = std::max(deepest, std::abs(depth[i]));
       fx_change = std::max(fx_change, std::abs(fx_new[i] - st.fx_N[i]));
     }
-    const bool settled = it > 1 && change <= o.depth_tolerance * std::max(deepest, f.sinking_m) &&
+    const bool settled = it > 1 &&
+                         change <= budget.depth_tolerance * std::max(deepest, f.sinking_m) &&
                          std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
                          fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
                          std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N;
@@ -153,6 +178,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       st.fx_N[i] = next(m + i);
     }
     st.shear_vertical_N = next(2 * m);
+    if (rate_tau_s > 0) st.surface_m = rolled;  // plain, not mixed (soil_rate_term.h)
     if (settled) {
       TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
       r.iterations = it;
@@ -179,7 +205,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     }
   }
   std::ostringstream msg;
-  msg << "steady rolling did not settle in " << o.max_iterations << " steps";
+  msg << "steady rolling did not settle in " << budget.max_iterations << " steps";
   return case_result(c, pass, msg.str(), SolveStatus::max_iterations);
 }
 

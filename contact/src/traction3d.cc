@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "modaltyre/contact/footprint.h"
+#include "modaltyre/contact/soil_rate_term.h"
 #include "modaltyre/ground/rigid_wheel.h"
 #include "modaltyre/solvers/toeplitz_compliance.h"
 #include "modaltyre/solvers/unilateral_contact.h"
@@ -218,7 +219,22 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
                                   // linearisations over the rolling steps
   std::vector<double> zmax(cells), f(cells), depth(cells), surface(cells), x(cells);
   std::vector<double> fr(S), ft(S), ur(S), ut(S);
-  for (int it = 1; it <= o.max_iterations; ++it) {
+  // A viscous soil's rate term (soil_rate_term.h): its surface per cell carried from step to step.
+  const double rate_tau_s = soil_rate_time_s(ground_, o.speed_m_per_s);  // 0: no rate term
+  const SoilRateBudget budget = rate_tau_s > 0
+                                    ? soil_rate_budget(o.max_iterations, o.depth_tolerance,
+                                                       rate_tau_s, o.speed_m_per_s, m.unit_length_m)
+                                    : SoilRateBudget{o.max_iterations, o.depth_tolerance};
+  std::vector<double> incoming(K, 0.0), rolled(rate_tau_s > 0 ? cells : 0);
+  if (rate_tau_s > 0) {
+    const auto kv = ground_.normal_law(width, rolling_radius_slip(c, R0));  // b, slip: Bekker's
+    for (int k = 0; k < K; ++k) incoming[k] = kv->sinkage_m(0.0, prior[k]);
+    if (st.surface_m.size() != cells) {
+      st.surface_m.resize(cells);
+      for (std::size_t a = 0; a < cells; ++a) st.surface_m[a] = incoming[a % K];
+    }
+  }
+  for (int it = 1; it <= budget.max_iterations; ++it) {
     // 1. The memory of the cells ahead in each column (front = the highest section index).
     for (int k = 0; k < K; ++k) {
       double ahead = prior[k];
@@ -233,7 +249,14 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     const double b_used = st.bekker_width_m > 0 ? st.bekker_width_m : width;
     const std::unique_ptr<ground::PressureSinkage> law =
         ground_.normal_law(b_used, rolling_radius_slip(c, R0));
-    SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_, zmax);
+    SoilRate rate;
+    if (rate_tau_s > 0) {
+      rate.weight.resize(cells), rate.start_m.resize(cells);
+      for (int k = 0; k < K; ++k)
+        soil_rate_column(rate, m.theta, R0, rate_tau_s, o.speed_m_per_s, incoming[k], k, K,
+                         st.surface_m);
+    }
+    SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_, zmax, rate);
     if (st.approach_m.size() == std::size_t(S))
       for (int i = 0; i < S; ++i) laws.set_approach(i, std::max(st.approach_m[i], laws.floor(i)));
     const Eigen::Map<const Eigen::VectorXd> fx(st.fx_N.data(), S);
@@ -295,7 +318,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       // The level e - rut (the compression beyond the surface inside, minus the gap outside),
       // linear to its zero between the last cell in contact and the next.
       auto level = [&](int i) {
-        return n.approach_m[i] - class_drop_m_[k] - law->rebound_depth_m(zmax[at(i)]);
+        return n.approach_m[i] - class_drop_m_[k] - laws.rest_depth(i, k);
       };
       auto edge_fraction = [&](int in, int out) {
         const double a = level(in), b = level(out);
@@ -341,6 +364,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     const double b_change = std::abs(b_new - b_used);
     st.bekker_width_m = b_new;
     // 3. The fixed point's state: cell depths [mm], section horizontal forces [N], load share.
+    for (int k = 0; k < K && rate_tau_s > 0; ++k)
+      soil_rate_surface(rolled, rate, *law, incoming[k], k, K, S, depth, zmax);
     const Eigen::Index nstate = Eigen::Index(cells) + S + 1;
     Eigen::VectorXd state(nstate), image(nstate);
     double change = 0, fx_change = 0;
@@ -354,7 +379,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     }
     state(nstate - 1) = st.shear_vertical_N, image(nstate - 1) = shear_v;
     const double deepest = std::max(soil_sinkage, 1e-12);
-    const bool settled = it > 1 && change <= o.depth_tolerance * std::max(deepest, n.delta_m) &&
+    const bool settled = it > 1 &&
+                         change <= budget.depth_tolerance * std::max(deepest, n.delta_m) &&
                          std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
                          fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
                          std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N;
@@ -363,6 +389,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     for (std::size_t a = 0; a < cells; ++a) st.depth_m[a] = std::max(next(a) * 1e-3, 0.0);
     for (int i = 0; i < S; ++i) st.fx_N[i] = next(cells + i);
     st.shear_vertical_N = next(nstate - 1);
+    if (rate_tau_s > 0) st.surface_m = rolled;  // plain, not mixed (soil_rate_term.h)
     if (!settled) continue;
     TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
     r.iterations = it;
@@ -393,7 +420,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     return r;
   }
   std::ostringstream msg;
-  msg << "steady rolling on the 3D patch did not settle in " << o.max_iterations << " steps";
+  msg << "steady rolling on the 3D patch did not settle in " << budget.max_iterations << " steps";
   return case_result(c, pass, msg.str(), SolveStatus::max_iterations);
 }
 

@@ -34,6 +34,7 @@ struct Rolling3dState {
   double sinking_m = 0;            ///< the axle's approach (0: none yet)
   std::vector<char> active;        ///< sections in contact
   std::vector<double> approach_m;  ///< sections' approaches (the soil's linearisation)
+  std::vector<double> surface_m;   ///< a viscous soil's rolled surface per cell class
 };
 
 class Rolling3d {

@@ -188,31 +188,33 @@ TEST(SoilEffects, EachMovesTheTractionOutputsItListsAndNoOther) {
 }
 
 // soil_viscosity: the Kelvin-Voigt soil's rate term under the rolling rigid wheel (docs/soil.md
-// 3.2). Off (eta2 = 0) and standing (V = 0) are the elastic law bit for bit; on at 5 km/h it
-// moves every output it lists; refused on a Bekker soil and on the flexible tyre.
-TEST(SoilEffects, SoilViscosityActsThroughTheSpeedOnTheRigidWheel) {
-  TyreConfig kv = load_tyre_config(
-      kSoilFxConfig,
-      {"contact.unit_length_mm=2", "ground.model=kelvin_voigt", "ground.kelvin_voigt.E2_MPa=2",
-       "ground.kelvin_voigt.layer_mm=200", "ground.kelvin_voigt.elastic_share=0.7",
-       "ground.kelvin_voigt.cohesion_kPa=1", "ground.kelvin_voigt.friction_angle_deg=30",
-       "ground.kelvin_voigt.shear_modulus_K_mm=25"});
+// 3.2) and the flexible tyre (9.1). Off (eta2 = 0) and standing (V = 0) are the elastic law bit
+// for bit; on at 5 km/h it moves every output it lists; refused on a Bekker soil.
+// The 2D SF-350 (or the default 3D config, 10 mm columns) at 2 mm units on section 3.2's soil.
+TyreConfig soilfx_kelvin_voigt(const std::string& config = kSoilFxConfig) {
+  std::vector<std::string> sets = {"contact.unit_length_mm=2",
+                                   "ground.model=kelvin_voigt",
+                                   "ground.kelvin_voigt.E2_MPa=2",
+                                   "ground.kelvin_voigt.layer_mm=200",
+                                   "ground.kelvin_voigt.elastic_share=0.7",
+                                   "ground.kelvin_voigt.cohesion_kPa=1",
+                                   "ground.kelvin_voigt.friction_angle_deg=30",
+                                   "ground.kelvin_voigt.shear_modulus_K_mm=25"};
+  // (on the 2D config a footprint_3d key would make it a 3D one)
+  if (config != kSoilFxConfig) sets.push_back("footprint_3d.lateral_cell_mm=10");
+  return load_tyre_config(config, sets);
+}
+
+void soilfx_viscosity_moves_its_outputs(const TyreConfig& kv, bool rigid) {
   const EffectInfo& e = effect_info(EffectId::soil_viscosity);
-  EXPECT_EQ(e.regime, ConditionId::speed_kmh);
-  EXPECT_FALSE(effect_enabled(kv, EffectId::soil_viscosity));
-  EXPECT_NE(effect_refusal(kv, EffectId::soil_viscosity).find("tyre.rigid"), std::string::npos);
-  EXPECT_NE(
-      effect_refusal(soilfx_config("lete_sand.yaml"), EffectId::soil_viscosity).find("bekker soil"),
-      std::string::npos);
-  kv.rigid = true;
   EXPECT_EQ(effect_refusal(kv, EffectId::soil_viscosity), "");
   const TyreConfig on = soilfx_switched(kv, EffectId::soil_viscosity);
   ASSERT_TRUE(effect_enabled(on, EffectId::soil_viscosity));
   EXPECT_EQ(on.ground.kelvin_voigt.eta2_kPa_s, e.parameters.front().default_value);
   const double V = 5 / 3.6;
-  const SoilFxCurve elastic = soilfx_traction(kv, true, V);
-  const SoilFxCurve standing = soilfx_traction(on, true, 0);
-  const SoilFxCurve rolling = soilfx_traction(on, true, V);
+  const SoilFxCurve elastic = soilfx_traction(kv, rigid, V);
+  const SoilFxCurve standing = soilfx_traction(on, rigid, 0);
+  const SoilFxCurve rolling = soilfx_traction(on, rigid, V);
   for (const char* name : {"soil_sinkage_mm", "drawbar_pull_N", "torque_Nm"}) {
     ASSERT_NE(std::find(e.observables.begin(), e.observables.end(), name), e.observables.end());
     EXPECT_EQ(soilfx_output(standing, name), soilfx_output(elastic, name)) << name;
@@ -224,6 +226,30 @@ TEST(SoilEffects, SoilViscosityActsThroughTheSpeedOnTheRigidWheel) {
   // The soil stiffens with speed and resists more.
   EXPECT_LT(rolling.soil_sinkage_mm[1], elastic.soil_sinkage_mm[1]);
   EXPECT_LT(rolling.drawbar_pull_N[1], elastic.drawbar_pull_N[1]);
+}
+
+TEST(SoilEffects, SoilViscosityIsRefusedOffAKelvinVoigtSoil) {
+  const EffectInfo& e = effect_info(EffectId::soil_viscosity);
+  EXPECT_EQ(e.regime, ConditionId::speed_kmh);
+  EXPECT_FALSE(effect_enabled(soilfx_kelvin_voigt(), EffectId::soil_viscosity));
+  EXPECT_NE(
+      effect_refusal(soilfx_config("lete_sand.yaml"), EffectId::soil_viscosity).find("bekker soil"),
+      std::string::npos);
+}
+
+TEST(SoilEffects, SoilViscosityActsThroughTheSpeedOnTheRigidWheel) {
+  TyreConfig kv = soilfx_kelvin_voigt();
+  kv.rigid = true;
+  soilfx_viscosity_moves_its_outputs(kv, true);
+}
+
+TEST(SoilEffects, SoilViscosityActsThroughTheSpeedOnTheFlexibleTyre) {
+  const TyreConfig two_d = soilfx_kelvin_voigt();
+  ASSERT_FALSE(two_d.footprint_3d.has_value());
+  soilfx_viscosity_moves_its_outputs(two_d, false);
+  const TyreConfig three_d = soilfx_kelvin_voigt(kSoilFxSrc + "/configs/sf350.yaml");
+  ASSERT_TRUE(three_d.footprint_3d.has_value());  // the default tyre's 3D patch
+  soilfx_viscosity_moves_its_outputs(three_d, false);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "modaltyre/contact/soil_rate_term.h"
 #include "modaltyre/core/solve_status.h"
 #include "modaltyre/ground/pressure_sinkage.h"
 #include "modaltyre/solvers/compliance_operator.h"
@@ -30,6 +31,9 @@ struct GroundContactProblem {
   const ground::PressureSinkage* law = nullptr;  ///< null: a rigid ground (one linear solve)
   std::vector<double> area_m2;                   ///< A_i > 0
   std::vector<double> z_max_m;                   ///< memory per point (empty: virgin)
+  /// The Kelvin-Voigt soil's rate term in steady rolling: Z_i = w z_a + (1 - w) Z_el
+  /// (soil_rate_term.h); off: the law itself.
+  SoilRate rate;
   /// Forces to linearise the soil at first (e.g. a neighbouring solution, scaled to the load);
   /// empty: the soil's tangent at zero pressure.
   Eigen::VectorXd initial_force;

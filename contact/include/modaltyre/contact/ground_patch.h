@@ -13,6 +13,7 @@
 #include <span>
 
 #include "modaltyre/contact/footprint.h"
+#include "modaltyre/contact/soil_rate_term.h"
 #include "modaltyre/ground/ground_settings.h"
 
 namespace modaltyre::contact {
@@ -34,6 +35,8 @@ struct GroundPatchInput {
   /// Rolling: the slip (against the rolling radius) the soil's slip sinkage is taken at
   /// (ground/soil_options.h; 0: none).
   double slip = 0;
+  /// Rolling on a viscous soil: the rate term per candidate unit (soil_rate_term.h); null: none.
+  const SoilRate* rate = nullptr;
 };
 
 /// Solves one load case on the config's ground with a given operator (its horizontal_ratio must
