@@ -98,6 +98,7 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
     slips[k].assign(s.begin(), s.end());  // increasing: each slip warm-starts the next
     const auto f = flex_.find({g.speed_kmh, g.load_N});
     if (f != flex_.end()) opt.flexing_resistance_N[g.load_N] = f->second;
+    opt.speed_m_per_s = g.speed_kmh / 3.6;  // the rate term eta2 rolls at the row's speed
     std::vector<contact::TractionCase> cases;
     for (double slip : slips[k]) cases.push_back({g.load_N, slip});
     results[k] = contact::steady_traction(model, config.ground, cases, opt);
