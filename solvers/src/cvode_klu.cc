@@ -174,6 +174,12 @@ extern "C" int custom_setpreconditioner(SUNLinearSolver S, void* p_data, SUNPSet
   return 0;
 }
 
+// Accepts CVODE's error weights and ignores them (the solve is exact). Declared so that
+// cvLsSolve hands the weights over instead of estimating their mean for an iterative solver's
+// tolerance (a pass setting a work vector to one and a weighted norm of it, at every Newton
+// iteration; the tolerance is never read here).
+extern "C" int custom_setscalingvectors(SUNLinearSolver, N_Vector, N_Vector) { return 0; }
+
 extern "C" int custom_setup(SUNLinearSolver S, SUNMatrix) {
   auto* c = static_cast<CustomSolverContent*>(S->content);
   return c->pset ? c->pset(c->p_data) : -1;
@@ -282,6 +288,7 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
     I.LS->ops->gettype = custom_gettype;
     I.LS->ops->setpreconditioner = custom_setpreconditioner;
     I.LS->ops->setatimes = custom_setatimes;
+    I.LS->ops->setscalingvectors = custom_setscalingvectors;
     I.LS->ops->setup = custom_setup;
     I.LS->ops->solve = custom_solve;
     I.LS->ops->free = custom_free;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "modaltyre/transient/cell_model.h"
+#include "modaltyre/transient/ode_system.h"
 #include "modaltyre/transient/scenario.h"
 #include "modaltyre/transient/tread_window.h"
 
@@ -107,6 +108,9 @@ class CellSystem {
   Eigen::VectorXd drop_slot_;         ///< per slot: crown drop of its class
   mutable Eigen::VectorXd xi_, P_, f_, F_, phi_, G_, Vf_, g_, road_, g_work_;
   mutable std::vector<char> in_contact_;
+  /// rhs()'s modal rows (ode_system.h's ModalRow) at the spin rows_Omega_, rows_dOmega_.
+  mutable std::vector<ModalRow> modal_rows_;
+  mutable double rows_Omega_ = 0, rows_dOmega_ = 0;
   CellSoil* soil_ = nullptr;
   mutable Eigen::VectorXd kd_soil_, f_acc_;  ///< on a soil: d f / d g per slot of the last forces()
   /// The forces at the last accepted state (update_contact_set(), accepted_forces()).
