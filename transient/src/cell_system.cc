@@ -117,6 +117,28 @@ double CellSystem::road(double t, int i, int c, double* slope) const {
   return 0.5 * H * (1 + std::cos(u));
 }
 
+void CellSystem::road_heights(double t, int lo, int n, int c, double* h) const {
+  if (plan_.road_profile || !plan_.cleat || !cm_.classes.on_cleat[c]) {
+    for (int k = 0; k < n; ++k) h[k] = road(t, lo + k, c);
+    return;
+  }
+  // road()'s cleat with the rolled distance taken once (the same operations per section).
+  const double L = plan_.cleat_length_m, H = plan_.cleat_height_m;
+  const double shift = plan_.cleat_start_m - plan_.distance(t);
+  const double a = 0.25 * L;
+  const Eigen::VectorXd& x = cm_.M().x_road;
+  for (int k = 0; k < n; ++k) {
+    const double ax = std::abs(x(lo + k) - shift);
+    if (ax >= 0.5 * L) {
+      h[k] = 0;
+    } else if (ax <= 0.5 * L - a) {
+      h[k] = H;
+    } else {
+      h[k] = 0.5 * H * (1 + std::cos(M_PI * (ax - (0.5 * L - a)) / a));
+    }
+  }
+}
+
 void CellSystem::contact_coordinates(const double* y) const {
   const TransientModel& M = cm_.M();
   xi_.resize(M.rank);
@@ -150,7 +172,7 @@ void CellSystem::slots(double t, const double* y, Eigen::VectorXd& g, Eigen::Vec
     if (plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c])) road_class = c;
   if (road_class >= 0) {
     road_.resize(n);
-    for (int k = 0; k < n; ++k) road_(k) = road(t, lo + k, road_class);
+    road_heights(t, lo, n, road_class, road_.data());
   }
   for (int c = 0; c < nc; ++c) {
     const UnitRange& r = ranges_[c];

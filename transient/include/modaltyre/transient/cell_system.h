@@ -91,6 +91,8 @@ class CellSystem {
 
  private:
   void contact_coordinates(const double* y) const;
+  /// road(t, i, c) for the sections i = lo .. lo + n - 1 into h (the cleat's distance once).
+  void road_heights(double t, int lo, int n, int c, double* h) const;
   /// penetration()'s pass; with f and F (sized), also the rigid road's cell and section forces
   /// (F zeroed by the caller).
   void slots(double t, const double* y, Eigen::VectorXd& g, Eigen::VectorXd& P, Eigen::VectorXd* f,
