@@ -166,24 +166,18 @@ __attribute__((target("avx2"))) void slot_scale_avx2(int n, const double* d, dou
 /// two upper neighbours from the last two steps' registers, the results stored lane by lane.
 __attribute__((target("avx2"))) void band_four(const long* end, int t0, int t1, double s1,
                                                double s2, const double* d, double* y) {
-  const __m256i one = _mm256_set1_epi64x(1);
-  __m256i i = _mm256_sub_epi64(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(end)),
-                               _mm256_set1_epi64x(t0 - 2));
+  const __m256i e = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(end));
   const __m256d vs1 = _mm256_set1_pd(s1), vs2 = _mm256_set1_pd(s2);
-  __m256d y2 = _mm256_i64gather_pd(y, i, 8);
-  i = _mm256_sub_epi64(i, one);
-  __m256d y1 = _mm256_i64gather_pd(y, i, 8);
-  double *p0 = y + end[0] - t0, *p1 = y + end[1] - t0, *p2 = y + end[2] - t0, *p3 = y + end[3] - t0;
+  __m256d y1 = _mm256_i64gather_pd(y, _mm256_sub_epi64(e, _mm256_set1_epi64x(t0 - 1)), 8),
+          y2 = _mm256_i64gather_pd(y, _mm256_sub_epi64(e, _mm256_set1_epi64x(t0 - 2)), 8);
+  alignas(32) double out[4];
   for (int t = t0; t < t1; ++t) {
-    i = _mm256_sub_epi64(i, one);  // end - t
+    const __m256i i = _mm256_sub_epi64(e, _mm256_set1_epi64x(t));
     const __m256d yt = _mm256_i64gather_pd(y, i, 8), dt = _mm256_i64gather_pd(d, i, 8);
     const __m256d v = _mm256_mul_pd(
         _mm256_sub_pd(_mm256_sub_pd(yt, _mm256_mul_pd(vs1, y1)), _mm256_mul_pd(vs2, y2)), dt);
-    const __m128d lo = _mm256_castpd256_pd128(v), hi = _mm256_extractf128_pd(v, 1);
-    _mm_storel_pd(p0--, lo);
-    _mm_storeh_pd(p1--, lo);
-    _mm_storel_pd(p2--, hi);
-    _mm_storeh_pd(p3--, hi);
+    _mm256_store_pd(out, v);
+    for (int l = 0; l < 4; ++l) y[end[l] - t] = out[l];
     y2 = y1;
     y1 = v;
   }
