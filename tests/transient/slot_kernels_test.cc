@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -116,35 +115,6 @@ TEST(SlotKernels, NewtonsSlotPassesAreTheirExpressions) {
       ASSERT_TRUE(same_bits(x_roll[k], x0[k] + g[k] * s0[k])) << n << " " << k;
       ASSERT_TRUE(same_bits(x_scaled[k], x0[k] * d[k])) << n << " " << k;
     }
-  }
-}
-
-TEST(SlotKernels, BandLanesIsEachLanesBackSubstitution) {
-  // solve_ee()'s lockstep: every lane's recurrence from its last slot down, as one lane at a
-  // time would run it (1 to 8 lanes of different lengths in one array).
-  std::mt19937 rng(3);
-  const double s1 = -0.37, s2 = 0.11;
-  for (int lanes = 1; lanes <= 8; ++lanes) {
-    std::vector<long> end(lanes);
-    std::vector<int> len(lanes);
-    long size = 0;
-    int nmin = 1 << 30;
-    for (int l = 0; l < lanes; ++l) {
-      len[l] = 5 + static_cast<int>(rng() % 40);
-      size += len[l];
-      end[l] = size - 1;
-      nmin = std::min(nmin, len[l]);
-    }
-    const std::vector<double> y0 = random_values(rng, static_cast<int>(size)),
-                              d = random_values(rng, static_cast<int>(size));
-    std::vector<double> got = y0, want = y0;
-    band_lanes(lanes, end.data(), 2, nmin, s1, s2, d.data(), got.data());
-    for (int l = 0; l < lanes; ++l)
-      for (int t = 2; t < nmin; ++t) {
-        const long i = end[l] - t;
-        want[i] = ((want[i] - s1 * want[i + 1]) - s2 * want[i + 2]) * d[i];
-      }
-    for (long i = 0; i < size; ++i) ASSERT_TRUE(same_bits(got[i], want[i])) << lanes << " " << i;
   }
 }
 

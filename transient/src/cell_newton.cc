@@ -313,12 +313,19 @@ void CellNewton::solve_ee(double* y) const {
     const int head = std::min(2, nmin);
     for (int l = 0; l < lanes; ++l)
       for (int t = 0; t < head; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
-    // (A last group of fewer classes in lockstep too: one class at a time, the 6 classes left
-    // of 30 were the cleat's longest chain.)
-    if (head < nmin) {
-      long end[kLanes];
-      for (int l = 0; l < lanes; ++l) end[l] = (yc[l] - y) + n[l] - 1;
-      detail::band_lanes(lanes, end, head, nmin, s1, s2, dinv, y);
+    double* ye[kLanes];
+    const double* de[kLanes];
+    for (int l = 0; l < lanes; ++l) ye[l] = yc[l] + n[l] - 1, de[l] = dc[l] + n[l] - 1;
+    if (lanes == kLanes) {
+      for (int t = head; t < nmin; ++t)
+        for (int l = 0; l < kLanes; ++l)
+          ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
+    } else {
+      // A last group of fewer classes in lockstep too (one class at a time, the 6 classes left
+      // of 30 were the cleat's longest chain).
+      for (int t = head; t < nmin; ++t)
+        for (int l = 0; l < lanes; ++l)
+          ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
     }
     for (int l = 0; l < lanes; ++l)
       for (int t = nmin; t < n[l]; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);

@@ -3,7 +3,6 @@
 #include "modaltyre/solvers/instruction_set.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#include <immintrin.h>
 #define MODALTYRE_SLOT_KERNELS_AVX2 1
 #endif
 
@@ -113,16 +112,6 @@ template <bool kForces>
   for (int k = 0; k < n; ++k) x[k] *= d[k];
 }
 
-/// band_lanes() for lanes [l0, l1), one element at a time.
-inline void band_lanes_scalar(int l0, int l1, const long* end, int t0, int t1, double s1, double s2,
-                              const double* d, double* y) {
-  for (int t = t0; t < t1; ++t)
-    for (int l = l0; l < l1; ++l) {
-      const long i = end[l] - t;
-      y[i] = ((y[i] - s1 * y[i + 1]) - s2 * y[i + 2]) * d[i];
-    }
-}
-
 #ifdef MODALTYRE_SLOT_KERNELS_AVX2
 /// Whether the AVX2 paths run (solvers/instruction_set.h; decided once).
 bool avx2() {
@@ -160,35 +149,6 @@ __attribute__((target("avx2"))) void slot_scatter_avx2(int n, const double* g, c
 
 __attribute__((target("avx2"))) void slot_scale_avx2(int n, const double* d, double* x) {
   slot_scale_body(n, d, x);
-}
-
-/// Four lanes from end[0 .. 3] in one vector: the element loaded and the factor by gathers, the
-/// two upper neighbours from the last two steps' registers, the results stored lane by lane.
-__attribute__((target("avx2"))) void band_four(const long* end, int t0, int t1, double s1,
-                                               double s2, const double* d, double* y) {
-  const __m256i e = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(end));
-  const __m256d vs1 = _mm256_set1_pd(s1), vs2 = _mm256_set1_pd(s2);
-  __m256d y1 = _mm256_i64gather_pd(y, _mm256_sub_epi64(e, _mm256_set1_epi64x(t0 - 1)), 8),
-          y2 = _mm256_i64gather_pd(y, _mm256_sub_epi64(e, _mm256_set1_epi64x(t0 - 2)), 8);
-  alignas(32) double out[4];
-  for (int t = t0; t < t1; ++t) {
-    const __m256i i = _mm256_sub_epi64(e, _mm256_set1_epi64x(t));
-    const __m256d yt = _mm256_i64gather_pd(y, i, 8), dt = _mm256_i64gather_pd(d, i, 8);
-    const __m256d v = _mm256_mul_pd(
-        _mm256_sub_pd(_mm256_sub_pd(yt, _mm256_mul_pd(vs1, y1)), _mm256_mul_pd(vs2, y2)), dt);
-    _mm256_store_pd(out, v);
-    for (int l = 0; l < 4; ++l) y[end[l] - t] = out[l];
-    y2 = y1;
-    y1 = v;
-  }
-}
-
-__attribute__((target("avx2"))) void band_lanes_avx2(int lanes, const long* end, int t0, int t1,
-                                                     double s1, double s2, const double* d,
-                                                     double* y) {
-  int l = 0;
-  for (; l + 4 <= lanes; l += 4) band_four(end + l, t0, t1, s1, s2, d, y);
-  band_lanes_scalar(l, lanes, end, t0, t1, s1, s2, d, y);
 }
 #endif
 
@@ -236,14 +196,6 @@ void slot_scale(int n, const double* d, double* x) {
   if (avx2()) return slot_scale_avx2(n, d, x);
 #endif
   slot_scale_body(n, d, x);
-}
-
-void band_lanes(int lanes, const long* end, int t0, int t1, double s1, double s2, const double* d,
-                double* y) {
-#ifdef MODALTYRE_SLOT_KERNELS_AVX2
-  if (avx2()) return band_lanes_avx2(lanes, end, t0, t1, s1, s2, d, y);
-#endif
-  band_lanes_scalar(0, lanes, end, t0, t1, s1, s2, d, y);
 }
 
 }  // namespace modaltyre::transient::detail

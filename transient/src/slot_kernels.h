@@ -37,13 +37,4 @@ void slot_gather(int n, const double* w, const double* b, const double* d, doubl
 void slot_scatter(int n, const double* g, const double* s, const double* d, double* x);
 void slot_scale(int n, const double* d, double* x);
 
-/// CellNewton::solve_ee()'s back substitution along the advection band, for `lanes` classes in
-/// lockstep (at most 8), over the steps t in [t0, t1) counted down from each lane's last slot
-/// end[l] (y and d indexed alike; t0 >= 2 so that both upper neighbours exist):
-///   y[end_l - t] = ((y[end_l - t] - s1 y[end_l - t + 1]) - s2 y[end_l - t + 2]) d[end_l - t].
-/// The AVX2 path runs four lanes a vector, the neighbours kept in registers (the same
-/// operations per element).
-void band_lanes(int lanes, const long* end, int t0, int t1, double s1, double s2, const double* d,
-                double* y);
-
 }  // namespace modaltyre::transient::detail
