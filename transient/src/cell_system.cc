@@ -117,9 +117,9 @@ double CellSystem::road(double t, int i, int c, double* slope) const {
   return 0.5 * H * (1 + std::cos(u));
 }
 
-void CellSystem::road_heights(double t, int lo, int n, int c, double* h) const {
+void CellSystem::road_heights(double t, int lo, int n, int c, double* h, double* slope) const {
   if (plan_.road_profile || !plan_.cleat || !cm_.classes.on_cleat[c]) {
-    for (int k = 0; k < n; ++k) h[k] = road(t, lo + k, c);
+    for (int k = 0; k < n; ++k) h[k] = road(t, lo + k, c, slope ? slope + k : nullptr);
     return;
   }
   // road()'s cleat with the rolled distance taken once (the same operations per section).
@@ -128,13 +128,16 @@ void CellSystem::road_heights(double t, int lo, int n, int c, double* h) const {
   const double a = 0.25 * L;
   const Eigen::VectorXd& x = cm_.M().x_road;
   for (int k = 0; k < n; ++k) {
-    const double ax = std::abs(x(lo + k) - shift);
+    const double xi = x(lo + k) - shift, ax = std::abs(xi);
+    if (slope) slope[k] = 0;
     if (ax >= 0.5 * L) {
       h[k] = 0;
     } else if (ax <= 0.5 * L - a) {
       h[k] = H;
     } else {
-      h[k] = 0.5 * H * (1 + std::cos(M_PI * (ax - (0.5 * L - a)) / a));
+      const double u = M_PI * (ax - (0.5 * L - a)) / a;
+      if (slope) slope[k] = -0.5 * H * std::sin(u) * M_PI / a * (xi > 0 ? 1.0 : -1.0);
+      h[k] = 0.5 * H * (1 + std::cos(u));
     }
   }
 }

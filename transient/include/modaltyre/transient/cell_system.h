@@ -86,13 +86,15 @@ class CellSystem {
   double hub_z(double t, const double* y) const { return plan_.hub_z(t, y[cm_.M().z_index()]); }
   /// Road height (and slope) under section i for class c at t.
   double road(double t, int i, int c, double* slope = nullptr) const;
+  /// road(t, i, c, slope) for the sections i = lo .. lo + n - 1 into h (and slope when given):
+  /// the same values, the cleat's rolled distance taken once.
+  void road_heights(double t, int lo, int n, int c, double* h, double* slope = nullptr) const;
   std::vector<double> state_from(const StaticCells& s) const;
   std::vector<double> absolute_tolerances() const;
 
  private:
   void contact_coordinates(const double* y) const;
-  /// road(t, i, c) for the sections i = lo .. lo + n - 1 into h (the cleat's distance once).
-  void road_heights(double t, int lo, int n, int c, double* h) const;
+
   /// penetration()'s pass; with f and F (sized), also the rigid road's cell and section forces
   /// (F zeroed by the caller).
   void slots(double t, const double* y, Eigen::VectorXd& g, Eigen::VectorXd& P, Eigen::VectorXd* f,
