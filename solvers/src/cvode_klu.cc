@@ -174,6 +174,12 @@ extern "C" int custom_setpreconditioner(SUNLinearSolver S, void* p_data, SUNPSet
   return 0;
 }
 
+// Accepts CVODE's error weights and ignores them (the solve is exact). Declared so that
+// cvLsSolve hands the weights over instead of estimating their mean for an iterative solver's
+// tolerance (a pass setting a work vector to one and a weighted norm of it, at every Newton
+// iteration; the tolerance is never read here).
+extern "C" int custom_setscalingvectors(SUNLinearSolver, N_Vector, N_Vector) { return 0; }
+
 extern "C" int custom_setup(SUNLinearSolver S, SUNMatrix) {
   auto* c = static_cast<CustomSolverContent*>(S->content);
   return c->pset ? c->pset(c->p_data) : -1;
@@ -249,9 +255,10 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
                   "ODE problem needs rhs and a Jacobian or a structured linear solver");
   MODALTYRE_CHECK(I.problem.roots == 0 || I.problem.root_functions, "root functions missing");
   if (SUNContext_Create(nullptr, &I.ctx) != 0) throw ComputationError("SUNContext_Create failed");
-  I.y = N_VNew_Serial(n, I.ctx);
-  if (!I.y) throw ComputationError("N_VNew_Serial failed (out of memory?)");
-  std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(I.y));
+  // CVODE's output vector is state()'s memory (y_, never resized): a returned step needs no
+  // copy. (CVODE also iterates in it during a call; state() is read between calls only.)
+  I.y = N_VMake_Serial(n, y_.data(), I.ctx);
+  if (!I.y) throw ComputationError("N_VMake_Serial failed (out of memory?)");
   // CVODE clones all its work vectors from y0: they inherit the faster kernels.
   install_serial_vector_ops(I.y);
   I.dky = N_VClone(I.y);  // interpolate()'s output, with the same kernels
@@ -282,6 +289,7 @@ CvodeKlu::CvodeKlu(OdeProblem problem, const OdeOptions& opt, double t0,
     I.LS->ops->gettype = custom_gettype;
     I.LS->ops->setpreconditioner = custom_setpreconditioner;
     I.LS->ops->setatimes = custom_setatimes;
+    I.LS->ops->setscalingvectors = custom_setscalingvectors;
     I.LS->ops->setup = custom_setup;
     I.LS->ops->solve = custom_solve;
     I.LS->ops->free = custom_free;
@@ -338,12 +346,15 @@ OdeStatus CvodeKlu::step(double t_stop) {
 
 void CvodeKlu::interpolate(double t, std::vector<double>& y) const {
   Impl& I = *impl_;
+  // Into y's own memory (the work vector lent it for the call): no copy of the state after.
+  y.resize(static_cast<std::size_t>(I.problem.size));
+  double* own = N_VGetArrayPointer(I.dky);
+  N_VSetArrayPointer(y.data(), I.dky);
   const int flag = CVodeGetDky(I.mem, t, 0, I.dky);
+  N_VSetArrayPointer(own, I.dky);
   if (flag < 0)
     throw ComputationError("CVodeGetDky at t = " + std::to_string(t) + " s: outside the last step" +
                            (I.last_error.empty() ? "" : ": " + I.last_error));
-  const double* p = N_VGetArrayPointer(I.dky);
-  y.assign(p, p + I.problem.size);
 }
 
 OdeStatus CvodeKlu::call_cvode(double t_out, double t_stop, int task) {
@@ -364,9 +375,7 @@ OdeStatus CvodeKlu::call_cvode(double t_out, double t_stop, int task) {
   }
   int flag = 0;
   realtype t_reached = t_;
-  flag = CVode(I.mem, t_out, I.y, &t_reached, task);
-  const double* yp = N_VGetArrayPointer(I.y);
-  std::copy(yp, yp + I.problem.size, y_.begin());
+  flag = CVode(I.mem, t_out, I.y, &t_reached, task);  // into y_ (the constructor)
   t_ = t_reached;
   st.t = t_reached;
   if (flag == CV_TSTOP_RETURN) I.stop_time = std::nan("");  // reached: CVODE disabled it
@@ -399,12 +408,11 @@ void CvodeKlu::set_max_step(double h) {
 void CvodeKlu::reinit(double t, const std::vector<double>& y) {
   Impl& I = *impl_;
   MODALTYRE_CHECK(static_cast<int64_t>(y.size()) == I.problem.size, "reinit size");
-  std::copy(y.begin(), y.end(), N_VGetArrayPointer(I.y));
+  if (y.data() != y_.data()) std::copy(y.begin(), y.end(), y_.begin());  // I.y's memory
   const OdeStats now = stats();
   I.before_reinit = now;
   check(CVodeReInit(I.mem, t, I.y), "CVodeReInit", I);
   I.stop_time = std::nan("");  // a re-initialisation clears the stop time
-  y_ = y;
   t_ = t;
   ++I.reinits;
 }

@@ -1,15 +1,18 @@
-// The 3D transient's vector kernels (transient/src/cell_kernels.h) against their stated
-// operations to the bit (the AVX2 paths on this CPU, the portable ones elsewhere: the same bits)
-// and the scans against plain loops.
+// The 3D transient's vector kernels (transient/src/cell_kernels.h, slot_kernels.h) against their
+// stated operations to the bit (the AVX2 paths on this CPU, the portable ones under
+// MODALTYRE_ISA=portable, the `portable.` tests: the same bits) and the scans against plain loops.
 #include "../../transient/src/cell_kernels.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
 
+#include "../../transient/src/slot_kernels.h"
 #include "modaltyre/transient/column_product.h"
 
 namespace modaltyre::transient::detail {
@@ -145,48 +148,179 @@ TEST(CellKernels, ScansEqualPlainLoops) {
   }
 }
 
+/// lu_factor() of the row-major n x n a0 against its stated steps as a plain loop on the
+/// row-major copy, to the bit (pivots too), and L U = P A. False if a pivot vanished.
+bool lu_matches_the_stated_steps(int n, const std::vector<double>& a0) {
+  std::vector<double> col(n * n), a(n * n, 0.0), want = a0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) col[j * n + i] = a0[i * n + j];
+  std::vector<int> rows(n), want_rows(n);
+  const bool ok = lu_factor(n, col.data(), a.data(), rows.data());
+  for (int i = 0; i < n; ++i) want_rows[i] = i;
+  for (int k = 0; k < n; ++k) {
+    int p = k;
+    for (int i = k + 1; i < n; ++i)
+      if (std::abs(want[i * n + k]) > std::abs(want[p * n + k])) p = i;
+    for (int j = 0; j < n; ++j) std::swap(want[k * n + j], want[p * n + j]);
+    std::swap(want_rows[k], want_rows[p]);
+    if (want[k * n + k] == 0) {
+      EXPECT_FALSE(ok) << "n " << n << ": the stated steps meet a zero pivot at " << k;
+      return false;
+    }
+    for (int i = k + 1; i < n; ++i) {
+      const double l = want[i * n + k] / want[k * n + k];
+      want[i * n + k] = l;
+      for (int j = k + 1; j < n; ++j)
+        want[i * n + j] = std::fma(-l, want[k * n + j], want[i * n + j]);
+    }
+  }
+  EXPECT_TRUE(ok) << n;
+  EXPECT_EQ(want_rows, rows) << n;
+  for (int e = 0; e < n * n; ++e) EXPECT_EQ(want[e], a[e]) << "n " << n << " entry " << e;
+  // L U = P A.
+  double worst = 0, scale = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      double s = 0;
+      for (int k = 0; k <= std::min(i, j); ++k) s += (k == i ? 1.0 : a[i * n + k]) * a[k * n + j];
+      worst = std::max(worst, std::abs(s - a0[rows[i] * n + j]));
+      scale = std::max(scale, std::abs(a0[i * n + j]));
+    }
+  EXPECT_LT(worst, 1e-12 * n * scale) << n;
+  return true;
+}
+
 TEST(CellKernels, LuFactorIsPartialPivotingWithOneFusedMultiplyAddPerEntry) {
-  // The stated steps as a plain loop on the row-major copy, to the bit, and the factors
-  // reproduce the matrix.
   std::mt19937 rng(3);
   // Sizes around the AVX2 path's blocks of 4 and 16 rows (Crout's order there).
-  for (int n : {1, 2, 3, 4, 5, 6, 7, 16, 17, 20, 21, 36, 37, 41, 42, 70}) {
-    const std::vector<double> a0 = random_values(rng, n * n);  // row-major
-    std::vector<double> col(n * n), a(n * n, 0.0), want = a0;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) col[j * n + i] = a0[i * n + j];
-    std::vector<int> rows(n), want_rows(n);
-    ASSERT_TRUE(lu_factor(n, col.data(), a.data(), rows.data()));
-    for (int i = 0; i < n; ++i) want_rows[i] = i;
-    for (int k = 0; k < n; ++k) {
-      int p = k;
-      for (int i = k + 1; i < n; ++i)
-        if (std::abs(want[i * n + k]) > std::abs(want[p * n + k])) p = i;
-      for (int j = 0; j < n; ++j) std::swap(want[k * n + j], want[p * n + j]);
-      std::swap(want_rows[k], want_rows[p]);
-      for (int i = k + 1; i < n; ++i) {
-        const double l = want[i * n + k] / want[k * n + k];
-        want[i * n + k] = l;
-        for (int j = k + 1; j < n; ++j)
-          want[i * n + j] = std::fma(-l, want[k * n + j], want[i * n + j]);
-      }
-    }
-    ASSERT_EQ(want_rows, rows);
-    for (int e = 0; e < n * n; ++e) ASSERT_EQ(want[e], a[e]) << "n " << n << " entry " << e;
-    // L U = P A.
-    double worst = 0, scale = 0;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        double s = 0;
-        for (int k = 0; k <= std::min(i, j); ++k) s += (k == i ? 1.0 : a[i * n + k]) * a[k * n + j];
-        worst = std::max(worst, std::abs(s - a0[rows[i] * n + j]));
-        scale = std::max(scale, std::abs(a0[i * n + j]));
-      }
-    EXPECT_LT(worst, 1e-12 * n * scale) << n;
-  }
+  for (int n : {1, 2, 3, 4, 5, 6, 7, 16, 17, 20, 21, 36, 37, 41, 42, 70})
+    EXPECT_TRUE(lu_matches_the_stated_steps(n, random_values(rng, n * n))) << n;
   std::vector<double> singular = {1, 2, 2, 4}, lu(4);
   std::vector<int> rows(2);
   EXPECT_FALSE(lu_factor(2, singular.data(), lu.data(), rows.data()));
+}
+
+TEST(CellKernels, LuFactorTakesTheFirstOfTiedPivots) {
+  // Small integers: columns with several entries of the same largest magnitude (either sign),
+  // where the pivot must be the first of them, as the stated search takes it (the AVX2 path
+  // searches by a vector maximum, then its first occurrence).
+  std::mt19937 rng(17);
+  std::uniform_int_distribution<int> v(-3, 3);
+  int factored = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    for (int n : {5, 8, 9, 13, 37}) {
+      std::vector<double> a0(n * n);
+      for (double& x : a0) x = v(rng);
+      factored += lu_matches_the_stated_steps(n, a0) ? 1 : 0;
+    }
+  }
+  EXPECT_GT(factored, 100);  // most are regular
+}
+
+/// random_values() with exact zeros at every seventh entry (the contact kink's own side).
+std::vector<double> random_with_zeros(std::mt19937& rng, int n) {
+  std::vector<double> v = random_values(rng, n);
+  for (int k = 0; k < n; k += 7) v[k] = 0.0;
+  return v;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// The slot passes (transient/src/slot_kernels.h): the bits of the plain loops they replaced.
+
+TEST(SlotKernels, SlotPassIsThePenetrationAndTheForcesOfEachSlot) {
+  std::mt19937 rng(47);
+  const double drop = 3.7e-4, mu = 2.0;
+  for (int n : {0, 1, 3, 4, 5, 8, 17, 41, 137}) {
+    const std::vector<double> P = random_with_zeros(rng, n), h = random_with_zeros(rng, n),
+                              e = random_with_zeros(rng, n), F0 = random_with_zeros(rng, n);
+    std::vector<double> kc = random_with_zeros(rng, n);
+    for (double& k : kc) k = std::abs(k) + 1.0;  // springs are positive
+    for (bool road : {false, true}) {
+      for (bool tread : {false, true}) {
+        for (bool with_forces : {false, true}) {
+          std::vector<double> g(n), f(n, -1.0), F = F0;
+          slot_pass(n, P.data(), drop, road ? h.data() : nullptr, tread ? e.data() : nullptr,
+                    kc.data(), mu, g.data(), with_forces ? f.data() : nullptr,
+                    with_forces ? F.data() : nullptr);
+          for (int k = 0; k < n; ++k) {
+            double gk = P[k] - drop;
+            if (road) gk = gk + h[k];
+            if (tread) gk = gk - e[k];
+            ASSERT_TRUE(same_bits(g[k], gk)) << n << " " << k;
+            if (!with_forces) {
+              ASSERT_EQ(f[k], -1.0);  // untouched
+              ASSERT_TRUE(same_bits(F[k], F0[k]));
+              continue;
+            }
+            const double fk = gk > 0 ? kc[k] * gk : 0.0;
+            ASSERT_TRUE(same_bits(f[k], fk)) << n << " " << k;
+            ASSERT_TRUE(same_bits(F[k], F0[k] + mu * fk)) << n << " " << k;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(SlotKernels, ContactFlipsCountsTheCellsThatChangedSide) {
+  std::mt19937 rng(5);
+  for (int n : {0, 1, 3, 4, 7, 16, 33, 200}) {
+    const std::vector<double> g = random_with_zeros(rng, n);
+    std::vector<char> in(n);
+    for (int k = 0; k < n; ++k) in[k] = static_cast<char>(rng() % 2);
+    int expected = 0;
+    std::vector<char> now(n);
+    for (int k = 0; k < n; ++k) {
+      now[k] = g[k] > 0 ? 1 : 0;
+      expected += now[k] != in[k];
+    }
+    ASSERT_EQ(contact_flips(n, g.data(), in.data()), expected) << n;
+    ASSERT_EQ(in, now) << n;
+    ASSERT_EQ(contact_flips(n, g.data(), in.data()), 0) << n;  // nothing changed since
+  }
+}
+
+TEST(SlotKernels, TreadRatesAreTheUpwindExpression) {
+  std::mt19937 rng(11);
+  const double a0 = 1.5e3, a1 = -2.0e3, a2 = 0.5e3;
+  for (int n : {0, 1, 2, 3, 4, 5, 9, 64, 65}) {
+    const std::vector<double> f = random_with_zeros(rng, n), ic = random_with_zeros(rng, n),
+                              kk = random_with_zeros(rng, n), e = random_with_zeros(rng, n);
+    std::vector<double> d(n), rest(n);
+    tread_rates(n, f.data(), ic.data(), kk.data(), e.data(), a0, a1, a2, false, d.data());
+    tread_rates(n, f.data(), ic.data(), kk.data(), e.data(), 0, 0, 0, true, rest.data());
+    for (int k = 0; k < n; ++k) {
+      double v = (f[k] * ic[k] - e[k] * kk[k]) + a0 * e[k];
+      if (k + 1 < n) v = v + a1 * e[k + 1];
+      if (k + 2 < n) v = v + a2 * e[k + 2];
+      ASSERT_TRUE(same_bits(d[k], v)) << n << " " << k;
+      ASSERT_TRUE(same_bits(rest[k], f[k] * ic[k] - e[k] * kk[k])) << n << " " << k;
+    }
+  }
+}
+
+TEST(SlotKernels, NewtonsSlotPassesAreTheirExpressions) {
+  // CellNewton::solve()'s gather onto the sections and scatter back to the tread rows.
+  std::mt19937 rng(21);
+  for (int n : {0, 1, 3, 4, 6, 13, 64, 111}) {
+    const std::vector<double> w = random_with_zeros(rng, n), b = random_with_zeros(rng, n),
+                              d = random_with_zeros(rng, n), g = random_with_zeros(rng, n),
+                              s0 = random_with_zeros(rng, n), x0 = random_with_zeros(rng, n);
+    std::vector<double> s_rest = s0, s_roll = s0, x_rest = x0, x_roll = x0, x_scaled = x0;
+    slot_gather(n, w.data(), b.data(), d.data(), s_rest.data());
+    slot_gather(n, w.data(), b.data(), nullptr, s_roll.data());
+    slot_scatter(n, g.data(), s0.data(), d.data(), x_rest.data());
+    slot_scatter(n, g.data(), s0.data(), nullptr, x_roll.data());
+    slot_scale(n, d.data(), x_scaled.data());
+    for (int k = 0; k < n; ++k) {
+      ASSERT_TRUE(same_bits(s_rest[k], s0[k] + w[k] * (b[k] * d[k]))) << n << " " << k;
+      ASSERT_TRUE(same_bits(s_roll[k], s0[k] + w[k] * b[k])) << n << " " << k;
+      ASSERT_TRUE(same_bits(x_rest[k], (x0[k] + g[k] * s0[k]) * d[k])) << n << " " << k;
+      ASSERT_TRUE(same_bits(x_roll[k], x0[k] + g[k] * s0[k])) << n << " " << k;
+      ASSERT_TRUE(same_bits(x_scaled[k], x0[k] * d[k])) << n << " " << k;
+    }
+  }
 }
 
 }  // namespace

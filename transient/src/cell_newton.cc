@@ -7,6 +7,7 @@
 #include "modaltyre/transient/column_product.h"
 #include "modaltyre/transient/ode_system.h"
 #include "row_lu_solve.h"
+#include "slot_kernels.h"
 
 namespace modaltyre::transient {
 
@@ -360,16 +361,12 @@ void CellNewton::solve(double* x) {
       const UnitRange& r = sys_.ranges()[c];
       const int o = sys_.offset(c), k0 = std::max(0, s0_ - r.lo),
                 k1 = std::min(r.size(), s0_ + ns_ - r.lo);
-      const double* mk = mukd_.data() + o;
-      double* ws = work_s_.data() + (r.lo - s0_);
-      if (at_rest) {
-        const double* b = xe + o;
-        const double* d = ee_d_inv_.data() + o;
-        for (int k = k0; k < k1; ++k) ws[k] += mk[k] * (b[k] * d[k]);
-      } else {
-        const double* we = work_e_.data() + o;
-        for (int k = k0; k < k1; ++k) ws[k] += mk[k] * we[k];
-      }
+      if (k1 <= k0) continue;
+      // ws += mu kd (b d) at rest, ws += mu kd (M_EE^-1 b) rolling (slot_kernels.h).
+      const int ok = o + k0;
+      detail::slot_gather(k1 - k0, mukd_.data() + ok, at_rest ? xe + ok : work_e_.data() + ok,
+                          at_rest ? ee_d_inv_.data() + ok : nullptr,
+                          work_s_.data() + (r.lo + k0 - s0_));
     }
     column_dots(Tt_, work_s_, phi_, -gamma_);
   }
@@ -393,16 +390,16 @@ void CellNewton::solve(double* x) {
         const UnitRange& r = sys_.ranges()[c];
         const int o = sys_.offset(c), k0 = std::max(0, s0_ - r.lo),
                   k1 = std::min(r.size(), s0_ + ns_ - r.lo);
-        const double* g = gkc_.data() + o;
-        const double* ws = work_s_.data() + (r.lo - s0_);
+        // x = (x + g ws) d at rest (x d alone outside the active sections), x += g ws rolling.
+        const double* d = ee_d_inv_.data() + o;
         double* xc = xe + o;
+        if (at_rest) detail::slot_scale(std::min(k0, r.size()), d, xc);
+        if (k1 > k0)
+          detail::slot_scatter(k1 - k0, gkc_.data() + o + k0, work_s_.data() + (r.lo + k0 - s0_),
+                               at_rest ? d + k0 : nullptr, xc + k0);
         if (at_rest) {
-          const double* d = ee_d_inv_.data() + o;
-          for (int k = 0; k < std::min(k0, r.size()); ++k) xc[k] *= d[k];
-          for (int k = k0; k < k1; ++k) xc[k] = (xc[k] + g[k] * ws[k]) * d[k];
-          for (int k = std::max(k0, k1); k < r.size(); ++k) xc[k] *= d[k];
-        } else {
-          for (int k = k0; k < k1; ++k) xc[k] += g[k] * ws[k];
+          const int k2 = std::max(k0, k1);
+          detail::slot_scale(r.size() - k2, d + k2, xc + k2);
         }
       }
       if (at_rest) return;

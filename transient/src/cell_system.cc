@@ -7,6 +7,7 @@
 #include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/column_product.h"
 #include "modaltyre/transient/ode_system.h"
+#include "slot_kernels.h"
 
 namespace modaltyre::transient {
 namespace {
@@ -116,6 +117,31 @@ double CellSystem::road(double t, int i, int c, double* slope) const {
   return 0.5 * H * (1 + std::cos(u));
 }
 
+void CellSystem::road_heights(double t, int lo, int n, int c, double* h, double* slope) const {
+  if (plan_.road_profile || !plan_.cleat || !cm_.classes.on_cleat[c]) {
+    for (int k = 0; k < n; ++k) h[k] = road(t, lo + k, c, slope ? slope + k : nullptr);
+    return;
+  }
+  // road()'s cleat with the rolled distance taken once (the same operations per section).
+  const double L = plan_.cleat_length_m, H = plan_.cleat_height_m;
+  const double shift = plan_.cleat_start_m - plan_.distance(t);
+  const double a = 0.25 * L;
+  const Eigen::VectorXd& x = cm_.M().x_road;
+  for (int k = 0; k < n; ++k) {
+    const double xi = x(lo + k) - shift, ax = std::abs(xi);
+    if (slope) slope[k] = 0;
+    if (ax >= 0.5 * L) {
+      h[k] = 0;
+    } else if (ax <= 0.5 * L - a) {
+      h[k] = H;
+    } else {
+      const double u = M_PI * (ax - (0.5 * L - a)) / a;
+      if (slope) slope[k] = -0.5 * H * std::sin(u) * M_PI / a * (xi > 0 ? 1.0 : -1.0);
+      h[k] = 0.5 * H * (1 + std::cos(u));
+    }
+  }
+}
+
 void CellSystem::contact_coordinates(const double* y) const {
   const TransientModel& M = cm_.M();
   xi_.resize(M.rank);
@@ -149,45 +175,20 @@ void CellSystem::slots(double t, const double* y, Eigen::VectorXd& g, Eigen::Vec
     if (plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c])) road_class = c;
   if (road_class >= 0) {
     road_.resize(n);
-    for (int k = 0; k < n; ++k) road_(k) = road(t, lo + k, road_class);
+    road_heights(t, lo, n, road_class, road_.data());
   }
   for (int c = 0; c < nc; ++c) {
     const UnitRange& r = ranges_[c];
     if (r.size() == 0) continue;
     const int o = offset_[c];
-    const double drop = cm_.classes.drop_m[c];
-    double* gc = g.data() + o;
-    const double* Pc = P.data() + r.lo;
-    const double* ec = e + o;
-    const int n = r.size();
-    // g = ((P - drop) + h) - e in one pass (the same operations in the same order as three).
-    if (plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c])) {
-      const double* hc = road_.data() + (r.lo - lo);
-      if (relax_) {
-        for (int k = 0; k < n; ++k) gc[k] = ((Pc[k] - drop) + hc[k]) - ec[k];
-      } else {
-        for (int k = 0; k < n; ++k) gc[k] = (Pc[k] - drop) + hc[k];
-      }
-    } else if (relax_) {
-      for (int k = 0; k < n; ++k) gc[k] = (Pc[k] - drop) - ec[k];
-    } else {
-      for (int k = 0; k < n; ++k) gc[k] = Pc[k] - drop;
-    }
-    if (!f) continue;
-    // The class's forces and its share of the section forces while its g is in cache (as
-    // forces() computed them in passes over all slots: the same values).
-    const double* __restrict kc = kc_slot_.data() + o;
-    const double* __restrict gk = gc;
-    double* __restrict fc = f->data() + o;
-    double* __restrict Fc = F->data() + r.lo;
-    const double mu = cm_.classes.multiplicity[c];
-    for (int k = 0; k < n; ++k) {
-      // k max(0, g) with the select before the product (k > 0: the same values), so that the
-      // loop vectorises.
-      const double fk = kc[k] * (gk[k] > 0 ? gk[k] : 0.0);
-      fc[k] = fk;
-      Fc[k] += mu * fk;
-    }
+    // g = ((P - drop) + h) - e and, with f, the class's forces k max(0, g) and its share of the
+    // section forces in the same pass (slot_kernels.h: the same operations in the same order
+    // as a pass per term).
+    const bool on_road = plan_.road_profile || (plan_.cleat && cm_.classes.on_cleat[c]);
+    detail::slot_pass(r.size(), P.data() + r.lo, cm_.classes.drop_m[c],
+                      on_road ? road_.data() + (r.lo - lo) : nullptr, relax_ ? e + o : nullptr,
+                      kc_slot_.data() + o, cm_.classes.multiplicity[c], g.data() + o,
+                      f ? f->data() + o : nullptr, f ? F->data() + r.lo : nullptr);
   }
 }
 
@@ -245,8 +246,15 @@ void CellSystem::rhs(double t, const double* y, double* ydot) const {
     column_product(CrT_, phi_, Vf_);
   }
   const double Omega = spin(t), dOmega = spin_rate(t);
+  // The modal rows at this spin, kept while it holds (as the 2D system: the same values).
+  if (modal_rows_.size() != static_cast<std::size_t>(nq) || Omega != rows_Omega_ ||
+      dOmega != rows_dOmega_) {
+    modal_rows_.resize(nq);
+    for (int j = 0; j < nq; ++j) modal_rows_[j] = modal_row(M, j, Omega, dOmega);
+    rows_Omega_ = Omega, rows_dOmega_ = dOmega;
+  }
   for (int j = 0; j < nq; ++j) {
-    const ModalRow d = modal_row(M, j, Omega, dOmega);
+    const ModalRow& d = modal_rows_[j];
     const int p = std::max(M.partner[j], 0);
     ydot[j] = y[nq + j];
     ydot[nq + j] = G_(j) + d.dq * y[j] + d.dv * y[nq + j] + d.dq_p * y[p] + d.dv_p * y[nq + p];
@@ -262,8 +270,9 @@ void CellSystem::rhs(double t, const double* y, double* ydot) const {
   const Eigen::Map<const Eigen::VectorXd> e(y + E, ncells_);
   Eigen::Map<Eigen::VectorXd> de(ydot + E, ncells_);
   const double adv = Omega / M.tyre.dtheta_rad;
-  if (adv == 0) {
-    de = f_.cwiseProduct(inv_c_) - e.cwiseProduct(k_over_c_);
+  if (adv == 0) {  // de = f / c' - e k' / c'
+    detail::tread_rates(ncells_, f_.data(), inv_c_.data(), k_over_c_.data(), e.data(), 0, 0, 0,
+                        /*at_rest=*/true, de.data());
     return;
   }
   // Per class in one pass: (((f / c' - e k' / c') + a0 e_k) + a1 e_k+1) + a2 e_k+2, the upwind
@@ -275,13 +284,7 @@ void CellSystem::rhs(double t, const double* y, double* ydot) const {
   const int nc = cm_.classes.size();
   for (int c = 0; c < nc; ++c) {
     const int n = ranges_[c].size(), o = offset_[c];
-    const double *f = fv + o, *ik = ic + o, *kk = kc + o, *ec = ev + o;
-    double* d = dv + o;
-    int k = 0;
-    for (; k + 2 < n; ++k)
-      d[k] = (((f[k] * ik[k] - ec[k] * kk[k]) + a0 * ec[k]) + a1 * ec[k + 1]) + a2 * ec[k + 2];
-    for (; k + 1 < n; ++k) d[k] = ((f[k] * ik[k] - ec[k] * kk[k]) + a0 * ec[k]) + a1 * ec[k + 1];
-    for (; k < n; ++k) d[k] = (f[k] * ik[k] - ec[k] * kk[k]) + a0 * ec[k];
+    detail::tread_rates(n, fv + o, ic + o, kc + o, ev + o, a0, a1, a2, /*at_rest=*/false, dv + o);
   }
 }
 
@@ -334,13 +337,7 @@ int CellSystem::update_contact_set(double t, const double* y) const {
     const UnitRange& r = ranges_[c];
     const int o = offset_[c], mu = cm_.classes.multiplicity[c];
     const double* gc = g_.data() + o;
-    char* in = in_contact_.data() + o;
-    int flips = 0;
-    for (int k = 0; k < r.size(); ++k) {
-      const char now = gc[k] > 0 ? 1 : 0;
-      flips += now ^ in[k];
-      in[k] = now;
-    }
+    const int flips = detail::contact_flips(r.size(), gc, in_contact_.data() + o);
     changed += static_cast<long>(mu) * flips;
     // Sections just outside the range (e = 0 there): a positive penetration means the range
     // did not hold the scenario's contact. The undeformed tread's penetration z - s_i - u_i is

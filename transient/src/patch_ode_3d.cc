@@ -93,8 +93,10 @@ class CellObserver {
       int lo = span.hi + 1, hi = span.lo - 1;
       const int k0 = forces_only ? std::max(first - span.lo, 0) : 0;
       const int k1 = forces_only ? last - span.lo : span.size() - 1;
+      if (road_class >= 0 && k1 >= k0)
+        sys_.road_heights(t, span.lo + k0, k1 - k0 + 1, road_class, road_h_.data() + k0,
+                          road_s_.data() + k0);
       for (int k = k0; road_class >= 0 && k <= k1; ++k) {
-        road_h_[k] = sys_.road(t, span.lo + k, road_class, &road_s_[k]);
         if (road_h_[k] > 0 || road_s_[k] != 0)
           lo = std::min(lo, span.lo + k), hi = std::max(hi, span.lo + k);
       }

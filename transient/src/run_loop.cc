@@ -132,11 +132,14 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
   // and middle give it exactly and bound its rate, |y'| <= D over the step. A sample within
   // (bound - |y - last|) / D of a checked one (SampleReuse::slack_s) then provably repeats the
   // last computed sample, as unchecked; the first outside is interpolated and checked as before.
-  std::vector<double> y_step_start = y, y_a, y_m;
+  // Whether the step's start (the last step's end) repeats the last computed sample: decided at
+  // the end of the last emit_until(), after its samples, while the integrator still held that
+  // state (the same test as on a copy of it kept for this step).
+  bool start_unchanged = reuse.unchanged(y);
+  std::vector<double> y_a, y_m;
   Eigen::ArrayXd rate;
   auto emit_until = [&](double t_start, double t_reached) {
-    const bool step_settled = reuse.unchanged(y_step_start) && reuse.unchanged(ode.state());
-    y_step_start = ode.state();
+    const bool step_settled = start_unchanged && reuse.unchanged(ode.state());
     const double h = t_reached - t_start;
     // (Not with root functions: a return at a located switch ends inside an internal step.)
     const bool bounded =
@@ -185,6 +188,7 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
       }
       t_out = grid.next_after(t_out);
     }
+    start_unchanged = reuse.unchanged(ode.state());
     return true;
   };
   while (!all_out) {

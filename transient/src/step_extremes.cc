@@ -47,7 +47,7 @@ void StepExtremes::offer(const TransientSample& s) {
 void StepExtremes::start(double t0, const std::vector<double>& y0) {
   const TransientSample s = observe_(t0, y0.data());
   for (Tracker& k : trackers_) k.best = value(k, s), k.t_best = t0, k.kept.clear();
-  t_[2] = t0, y_[2] = y0, s_[2] = s;
+  t_[2] = t0, y_[2] = std::make_shared<std::vector<double>>(y0), s_[2] = s;
   ends_seen_ = 1;
   started_ = true;
   hub_.clear();
@@ -60,7 +60,7 @@ void StepExtremes::on_quadratic(const Pair& p, double t, std::vector<double>& y)
   const double l0 = (t - t1) * (t - t2) / ((t0 - t1) * (t0 - t2));
   const double l1 = (t - t0) * (t - t2) / ((t1 - t0) * (t1 - t2));
   const double l2 = (t - t0) * (t - t1) / ((t2 - t0) * (t2 - t1));
-  const auto &a = p.y[0], &b = p.y[1], &c = p.y[2];
+  const auto &a = *p.y[0], &b = *p.y[1], &c = *p.y[2];
   y.resize(b.size());
   for (std::size_t i = 0; i < y.size(); ++i) y[i] = l0 * a[i] + l1 * b[i] + l2 * c[i];
 }
@@ -78,7 +78,7 @@ void StepExtremes::keep(Tracker& k, double v) {
   p.value = v;
   p.t = t_;
   p.s = s_;
-  p.y = y_;
+  for (std::size_t i = 0; i < 3; ++i) p.y[i] = y_[i];
   kept.push_back(std::move(p));
 }
 
@@ -91,7 +91,11 @@ void StepExtremes::step(double t1, const std::vector<double>& y1) {
   std::swap(y_[0], y_[1]), std::swap(y_[1], y_[2]);
   std::swap(s_[0], s_[1]), std::swap(s_[1], s_[2]);
   t_[2] = t1, s_[2] = s1;
-  y_[2].assign(y1.begin(), y1.end());
+  // The oldest end's buffer takes the new state unless a kept pair holds it.
+  if (!y_[2] || y_[2].use_count() > 1)
+    y_[2] = std::make_shared<std::vector<double>>(y1);
+  else
+    y_[2]->assign(y1.begin(), y1.end());
   if (hub_z_index_ >= 0) hub_.push_back({t1, y1[static_cast<std::size_t>(hub_z_index_)]});
   if (++ends_seen_ < 3) return;
   // A local extreme at the middle end of the last three: keep the three ends if it is among

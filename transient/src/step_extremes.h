@@ -6,6 +6,7 @@
 // force's minimum as -285 N against -780 N. Internal to the transient library (run_loop.cc).
 #include <array>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "modaltyre/transient/driver.h"
@@ -47,7 +48,8 @@ class StepExtremes {
     double value = 0;  ///< the signed value at t[1]
     std::array<double, 3> t{};
     std::array<TransientSample, 3> s{};  ///< the samples at t
-    std::array<std::vector<double>, 3> y;
+    /// The states at t, shared with the ring of the last ends (no copy when a pair is kept).
+    std::array<std::shared_ptr<const std::vector<double>>, 3> y;
   };
   /// One extreme: sign * quantity is maximised (quantity 0 load, 1 longitudinal force).
   struct Tracker {
@@ -70,7 +72,8 @@ class StepExtremes {
   /// The last three step ends (oldest first).
   int ends_seen_ = 0;
   std::array<double, 3> t_{};
-  std::array<std::vector<double>, 3> y_;
+  /// Their states; a buffer that a kept pair still holds is not written again (step()).
+  std::array<std::shared_ptr<std::vector<double>>, 3> y_;
   std::array<TransientSample, 3> s_{};
   std::vector<double> work_;
   std::vector<HubStep> hub_;

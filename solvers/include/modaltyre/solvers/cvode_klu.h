@@ -140,7 +140,7 @@ class CvodeKlu {
   OdeStatus call_cvode(double t_out, double t_stop, int task);
 
   std::unique_ptr<Impl> impl_;
-  std::vector<double> y_;
+  std::vector<double> y_;  ///< the state; CVODE's output vector wraps its memory (never resized)
   double t_ = 0;
 };
 

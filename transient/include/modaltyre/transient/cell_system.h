@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "modaltyre/transient/cell_model.h"
+#include "modaltyre/transient/ode_system.h"
 #include "modaltyre/transient/scenario.h"
 #include "modaltyre/transient/tread_window.h"
 
@@ -85,11 +86,15 @@ class CellSystem {
   double hub_z(double t, const double* y) const { return plan_.hub_z(t, y[cm_.M().z_index()]); }
   /// Road height (and slope) under section i for class c at t.
   double road(double t, int i, int c, double* slope = nullptr) const;
+  /// road(t, i, c, slope) for the sections i = lo .. lo + n - 1 into h (and slope when given):
+  /// the same values, the cleat's rolled distance taken once.
+  void road_heights(double t, int lo, int n, int c, double* h, double* slope = nullptr) const;
   std::vector<double> state_from(const StaticCells& s) const;
   std::vector<double> absolute_tolerances() const;
 
  private:
   void contact_coordinates(const double* y) const;
+
   /// penetration()'s pass; with f and F (sized), also the rigid road's cell and section forces
   /// (F zeroed by the caller).
   void slots(double t, const double* y, Eigen::VectorXd& g, Eigen::VectorXd& P, Eigen::VectorXd* f,
@@ -107,6 +112,9 @@ class CellSystem {
   Eigen::VectorXd drop_slot_;         ///< per slot: crown drop of its class
   mutable Eigen::VectorXd xi_, P_, f_, F_, phi_, G_, Vf_, g_, road_, g_work_;
   mutable std::vector<char> in_contact_;
+  /// rhs()'s modal rows (ode_system.h's ModalRow) at the spin rows_Omega_, rows_dOmega_.
+  mutable std::vector<ModalRow> modal_rows_;
+  mutable double rows_Omega_ = 0, rows_dOmega_ = 0;
   CellSoil* soil_ = nullptr;
   mutable Eigen::VectorXd kd_soil_, f_acc_;  ///< on a soil: d f / d g per slot of the last forces()
   /// The forces at the last accepted state (update_contact_set(), accepted_forces()).
