@@ -28,8 +28,9 @@ GroundContactSolution solve_ground_contact(const GroundContactProblem& P,
   const bool soil = P.law != nullptr;
   MODALTYRE_CHECK(!soil || static_cast<int>(P.area_m2.size()) == m, "areas");
   auto zmax = [&](int i) { return P.z_max_m.empty() ? 0.0 : P.z_max_m[i]; };
+  auto law = [&](int i) { return P.unit_law.empty() || !P.unit_law[i] ? P.law : P.unit_law[i]; };
   auto Z = [&](int i, double f) {
-    return P.law->sinkage_m(std::max(f, 0.0) / P.area_m2[i], zmax(i));
+    return law(i)->sinkage_m(std::max(f, 0.0) / P.area_m2[i], zmax(i));
   };
   GroundContactSolution out;
   std::vector<char> active(warm.begin(), warm.end());
@@ -50,7 +51,7 @@ GroundContactSolution solve_ground_contact(const GroundContactProblem& P,
   auto objective = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& Cx) {
     double J = 0.5 * x.dot(Cx) + P.initial_gap.dot(x);
     for (int i = 0; i < m; ++i)
-      if (x(i) > 0) J += P.area_m2[i] * P.law->work_J_m2(x(i) / P.area_m2[i], zmax(i));
+      if (x(i) > 0) J += P.area_m2[i] * law(i)->work_J_m2(x(i) / P.area_m2[i], zmax(i));
     return J;
   };
   // The step's model of Z: the secant through the unloaded point (0, Z(0)) and the current one
@@ -67,14 +68,14 @@ GroundContactSolution solve_ground_contact(const GroundContactProblem& P,
         const double A = P.area_m2[i];
         const double p_floor = 1e-3 * P.load_N / (mean_area * m);
         const double p = std::max(fi / A, p_floor);
-        double dzdp = P.law->compliance_m_per_Pa(p, zmax(i));
+        double dzdp = law(i)->compliance_m_per_Pa(p, zmax(i));
         if (secant) {
-          const double z0 = P.law->sinkage_m(0.0, zmax(i));
-          dzdp = std::max(dzdp, (P.law->sinkage_m(p, zmax(i)) - z0) / p);
+          const double z0 = law(i)->sinkage_m(0.0, zmax(i));
+          dzdp = std::max(dzdp, (law(i)->sinkage_m(p, zmax(i)) - z0) / p);
           // Below the point's previous maximum a rigid-plastic branch is vertical: a model
           // without the virgin curve beyond p_max would load the point without bound.
-          const double p_max = zmax(i) > 0 ? P.law->loading_Pa(zmax(i)) : 0.0;
-          if (p < p_max) dzdp = std::max(dzdp, P.law->compliance_m_per_Pa(p_max, zmax(i)));
+          const double p_max = zmax(i) > 0 ? law(i)->loading_Pa(zmax(i)) : 0.0;
+          if (p < p_max) dzdp = std::max(dzdp, law(i)->compliance_m_per_Pa(p_max, zmax(i)));
         }
         d[i] = dzdp / A;
         gap(i) += Z(i, fi) - d[i] * fi;

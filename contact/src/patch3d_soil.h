@@ -25,10 +25,13 @@ class SoilSections final : public SectionLaws {
  public:
   /// t: cell tread compliance per section [m/N]; z: drop per class [m]; weight: columns per
   /// class; area: a cell's road area per section [m^2]; z_max: memory per cell at
-  /// [i * classes + k] (empty: virgin soil everywhere).
+  /// [i * classes + k] (empty: virgin soil everywhere); cell_law: a cell's own law in place of
+  /// `law` at [i * classes + k] (empty or null: `law`; Wong and Reece's rear region,
+  /// wong_reece_flexible.h).
   SoilSections(std::vector<double> t, std::vector<double> z, std::vector<double> weight,
                const ground::PressureSinkage& law, std::vector<double> area,
-               std::vector<double> z_max = {});
+               std::vector<double> z_max = {},
+               std::vector<const ground::PressureSinkage*> cell_law = {});
 
   int classes() const { return static_cast<int>(z_.size()); }
   /// A cell's force at compression e [N] (and df/de).
@@ -57,8 +60,12 @@ class SoilSections final : public SectionLaws {
 
  private:
   std::size_t idx(int i, int k) const { return std::size_t(i) * z_.size() + k; }
+  const ground::PressureSinkage& law(std::size_t a) const {
+    return cell_law_.empty() || !cell_law_[a] ? law_ : *cell_law_[a];
+  }
   std::vector<double> t_, z_, w_;
   const ground::PressureSinkage& law_;
+  std::vector<const ground::PressureSinkage*> cell_law_;
   std::vector<double> area_, zmax_, rut_;  ///< rut per cell (empty: virgin)
   std::vector<double> pv_;                 ///< virgin pressure at the memory per cell
   mutable std::vector<double> last_;       ///< each cell's last root (Newton's start)

@@ -18,6 +18,7 @@
 
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/contact/traction.h"
+#include "wong_reece_flexible.h"
 
 namespace modaltyre::contact::detail {
 
@@ -34,6 +35,7 @@ struct Rolling3dState {
   double sinking_m = 0;            ///< the axle's approach (0: none yet)
   std::vector<char> active;        ///< sections in contact
   std::vector<double> approach_m;  ///< sections' approaches (the soil's linearisation)
+  RearState rear;                  ///< Wong and Reece's rear region (wong_reece_flexible.h)
 };
 
 class Rolling3d {

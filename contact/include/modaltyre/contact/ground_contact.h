@@ -30,6 +30,9 @@ struct GroundContactProblem {
   const ground::PressureSinkage* law = nullptr;  ///< null: a rigid ground (one linear solve)
   std::vector<double> area_m2;                   ///< A_i > 0
   std::vector<double> z_max_m;                   ///< memory per point (empty: virgin)
+  /// A point's own law in place of `law` (empty, or null at a point: `law`), e.g. Wong and
+  /// Reece's rear region on the rolling tyre (contact/src/wong_reece_flexible.h).
+  std::vector<const ground::PressureSinkage*> unit_law;
   /// Forces to linearise the soil at first (e.g. a neighbouring solution, scaled to the load);
   /// empty: the soil's tangent at zero pressure.
   Eigen::VectorXd initial_force;

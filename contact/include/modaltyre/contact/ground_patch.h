@@ -34,6 +34,8 @@ struct GroundPatchInput {
   /// Rolling: the slip (against the rolling radius) the soil's slip sinkage is taken at
   /// (ground/soil_options.h; 0: none).
   double slip = 0;
+  /// Per candidate unit its own law in place of the soil's (empty or null: the soil's).
+  std::span<const ground::PressureSinkage* const> unit_law;
 };
 
 /// Solves one load case on the config's ground with a given operator (its horizontal_ratio must
