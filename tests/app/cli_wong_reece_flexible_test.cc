@@ -18,14 +18,14 @@ const std::string kWrCliLete = kWrCliSource + "/configs/soils/lete_sand.yaml";
 
 class WongReeceFlexibleCli : public modaltyre_test::CliFixture {
  protected:
-  nlohmann::json traction(std::vector<std::string> extra) {
-    std::vector<std::string> a{"traction", kWrCliConfig, "--ground", kWrCliLete, "--load", "3000",
-                               "--slip", "0.1", "0.3", "--json",
-                               // coarse: 2 mm sections, 10 mm columns
-                               "--set", "contact.unit_length_mm=2", "--set",
-                               "footprint_3d.lateral_cell_mm=10"};
-    a.insert(a.end(), extra.begin(), extra.end());
-    const auto r = run(a);
+  // The default tyre on LETE sand at 3 kN, s = 0.1 and 0.3, on a patch, with or without the
+  // option; coarse: 2 mm sections, 10 mm columns.
+  nlohmann::json rolled(const std::string& patch, bool wong_reece) {
+    const auto r =
+        run({"traction", kWrCliConfig, "--ground", kWrCliLete, "--load", "3000", "--slip", "0.1",
+             "0.3", "--json", "--patch", patch, "--set", "contact.unit_length_mm=2", "--set",
+             "footprint_3d.lateral_cell_mm=10", "--set",
+             std::string("ground.bekker.wong_reece.enabled=") + (wong_reece ? "true" : "false")});
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return nlohmann::json::parse(r.out);
   }
@@ -34,9 +34,7 @@ class WongReeceFlexibleCli : public modaltyre_test::CliFixture {
 TEST_F(WongReeceFlexibleCli, TheDefaultTyreTakesWongReecesStressOnBothPatches) {
   for (const char* patch : {"3d", "2d"}) {
     SCOPED_TRACE(patch);
-    const nlohmann::json front = traction({"--patch", patch});
-    const nlohmann::json wr =
-        traction({"--patch", patch, "--set", "ground.bekker.wong_reece.enabled=true"});
+    const nlohmann::json front = rolled(patch, false), wr = rolled(patch, true);
     EXPECT_FALSE(front["ground"]["bekker"]["wong_reece"].get<bool>());
     EXPECT_TRUE(wr["ground"]["bekker"]["wong_reece"].get<bool>());
     ASSERT_EQ(wr["cases"].size(), 2u);
