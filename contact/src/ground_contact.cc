@@ -28,8 +28,9 @@ GroundContactSolution solve_ground_contact(const GroundContactProblem& P,
   const bool soil = P.law != nullptr;
   MODALTYRE_CHECK(!soil || static_cast<int>(P.area_m2.size()) == m, "areas");
   auto zmax = [&](int i) { return P.z_max_m.empty() ? 0.0 : P.z_max_m[i]; };
+  auto law = [&](int i) { return P.unit_law.empty() || !P.unit_law[i] ? P.law : P.unit_law[i]; };
   auto Z = [&](int i, double f) {
-    return P.rate.sinkage_m(i, P.law->sinkage_m(std::max(f, 0.0) / P.area_m2[i], zmax(i)));
+    return P.rate.sinkage_m(i, law(i)->sinkage_m(std::max(f, 0.0) / P.area_m2[i], zmax(i)));
   };
   GroundContactSolution out;
   std::vector<char> active(warm.begin(), warm.end());
@@ -52,7 +53,7 @@ GroundContactSolution solve_ground_contact(const GroundContactProblem& P,
     for (int i = 0; i < m; ++i)
       if (x(i) > 0) {
         const double p = x(i) / P.area_m2[i];
-        J += P.area_m2[i] * P.rate.work_J_m2(i, p, P.law->work_J_m2(p, zmax(i)));
+        J += P.area_m2[i] * P.rate.work_J_m2(i, p, law(i)->work_J_m2(p, zmax(i)));
       }
     return J;
   };
@@ -70,14 +71,14 @@ GroundContactSolution solve_ground_contact(const GroundContactProblem& P,
         const double A = P.area_m2[i];
         const double p_floor = 1e-3 * P.load_N / (mean_area * m);
         const double p = std::max(fi / A, p_floor);
-        double dzdp = P.law->compliance_m_per_Pa(p, zmax(i));
+        double dzdp = law(i)->compliance_m_per_Pa(p, zmax(i));
         if (secant) {
-          const double z0 = P.law->sinkage_m(0.0, zmax(i));
-          dzdp = std::max(dzdp, (P.law->sinkage_m(p, zmax(i)) - z0) / p);
+          const double z0 = law(i)->sinkage_m(0.0, zmax(i));
+          dzdp = std::max(dzdp, (law(i)->sinkage_m(p, zmax(i)) - z0) / p);
           // Below the point's previous maximum a rigid-plastic branch is vertical: a model
           // without the virgin curve beyond p_max would load the point without bound.
-          const double p_max = zmax(i) > 0 ? P.law->loading_Pa(zmax(i)) : 0.0;
-          if (p < p_max) dzdp = std::max(dzdp, P.law->compliance_m_per_Pa(p_max, zmax(i)));
+          const double p_max = zmax(i) > 0 ? law(i)->loading_Pa(zmax(i)) : 0.0;
+          if (p < p_max) dzdp = std::max(dzdp, law(i)->compliance_m_per_Pa(p_max, zmax(i)));
         }
         d[i] = dzdp * P.rate.scale(i) / A;  // the rate term scales the law (soil_rate_term.h)
         gap(i) += Z(i, fi) - d[i] * fi;

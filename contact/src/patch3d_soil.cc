@@ -17,11 +17,13 @@ constexpr double kGapFloor_m = 1e-9;
 
 SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::vector<double> weight,
                            const ground::PressureSinkage& law, std::vector<double> area,
-                           std::vector<double> z_max, SoilRate rate)
+                           std::vector<double> z_max, SoilRate rate,
+                           std::vector<const ground::PressureSinkage*> cell_law)
     : t_(std::move(t)),
       z_(std::move(z)),
       w_(std::move(weight)),
       law_(law),
+      cell_law_(std::move(cell_law)),
       area_(std::move(area)),
       zmax_(std::move(z_max)),
       rate_(std::move(rate)),
@@ -34,8 +36,8 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
     pv_.resize(zmax_.size());
     rest_.resize(zmax_.size());
     for (std::size_t a = 0; a < zmax_.size(); ++a) {
-      rut_[a] = zmax_[a] > 0 ? law_.rebound_depth_m(zmax_[a]) : 0.0;
-      pv_[a] = zmax_[a] > 0 ? law_.loading_Pa(zmax_[a]) : 0.0;
+      rut_[a] = zmax_[a] > 0 ? this->law(a).rebound_depth_m(zmax_[a]) : 0.0;
+      pv_[a] = zmax_[a] > 0 ? this->law(a).loading_Pa(zmax_[a]) : 0.0;
       rest_[a] = rate_.sinkage_m(a, rut_[a]);
     }
   }
@@ -67,9 +69,10 @@ double SoilSections::cell(int i, int k, double e, double* dfde) const {
   }
   if (!(e > rut)) return 0.0;
   const double A = area_[i];
+  const ground::PressureSinkage& soil = law(a);
   const double pv = pv_.empty() ? 0.0 : pv_[a];
   const bool virgin = e >= t * A * pv + zmax;
-  if (!virgin && law_.rigid_plastic()) {
+  if (!virgin && soil.rigid_plastic()) {
     if (dfde) *dfde = 1.0 / (t * share);
     return (e - zmax) / t;
   }
@@ -77,7 +80,7 @@ double SoilSections::cell(int i, int k, double e, double* dfde) const {
   if (!virgin) hi = std::min(hi, A * pv);
   double f = last_[a];
   if (!(f > lo && f < hi)) {
-    const double soil_alone = A * law_.pressure_Pa(e, zmax);
+    const double soil_alone = A * soil.pressure_Pa(e, zmax);
     f = soil_alone > 0 ? 1.0 / (1.0 / hi + 1.0 / soil_alone) : hi;
     f = std::clamp(f, lo, hi);
   }
@@ -86,8 +89,8 @@ double SoilSections::cell(int i, int k, double e, double* dfde) const {
     const double p = f / A;
     double dz = 0;
     // On the virgin curve Z(p; z_max) = Z(p; 0): z_max is reached below A p_v.
-    const double z = virgin ? law_.virgin_sinkage_m(p, dz) : law_.sinkage_m(p, zmax);
-    if (!virgin) dz = law_.compliance_m_per_Pa(p, zmax);
+    const double z = virgin ? soil.virgin_sinkage_m(p, dz) : soil.sinkage_m(p, zmax);
+    if (!virgin) dz = soil.compliance_m_per_Pa(p, zmax);
     const double g = t * f + z - e;
     slope = t + dz / A;
     (g > 0 ? hi : lo) = f;
@@ -137,7 +140,7 @@ double SoilSections::approach(int i, double F) const {
 }
 
 double SoilSections::depth(int i, int k, double f) const {
-  return rate_.sinkage_m(idx(i, k), law_.sinkage_m(f / area_[i], memory(i, k)));
+  return rate_.sinkage_m(idx(i, k), law(idx(i, k)).sinkage_m(f / area_[i], memory(i, k)));
 }
 
 void SoilSections::reduced(int i, double& c, double& o) const {
@@ -176,7 +179,8 @@ double SoilSections::energy_at(int i, double F, double& d) const {
   for (int k = 0; k < classes(); ++k) {
     const double f = cell(i, k, d - z_[k]);
     if (f > 0) {
-      const double W = rate_.work_J_m2(idx(i, k), f / A, law_.work_J_m2(f / A, memory(i, k)));
+      const double W =
+          rate_.work_J_m2(idx(i, k), f / A, law(idx(i, k)).work_J_m2(f / A, memory(i, k)));
       psi += w_[k] * (t_[i] * f * f / 2 + A * W + z_[k] * f);
     }
   }

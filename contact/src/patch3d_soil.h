@@ -27,10 +27,13 @@ class SoilSections final : public SectionLaws {
   /// t: cell tread compliance per section [m/N]; z: drop per class [m]; weight: columns per
   /// class; area: a cell's road area per section [m^2]; z_max: memory per cell at
   /// [i * classes + k] (empty: virgin soil everywhere); rate: a viscous soil's rate term per
-  /// cell in steady rolling (soil_rate_term.h: Z = w z_a + (1 - w) Z_el; off: none).
+  /// cell in steady rolling (soil_rate_term.h: Z = w z_a + (1 - w) Z_el; off: none); cell_law: a
+  /// cell's own law in place of `law` at [i * classes + k] (empty or null: `law`; Wong and
+  /// Reece's rear region, wong_reece_flexible.h).
   SoilSections(std::vector<double> t, std::vector<double> z, std::vector<double> weight,
                const ground::PressureSinkage& law, std::vector<double> area,
-               std::vector<double> z_max = {}, SoilRate rate = {});
+               std::vector<double> z_max = {}, SoilRate rate = {},
+               std::vector<const ground::PressureSinkage*> cell_law = {});
 
   int classes() const { return static_cast<int>(z_.size()); }
   /// A cell's force at compression e [N] (and df/de).
@@ -62,8 +65,12 @@ class SoilSections final : public SectionLaws {
 
  private:
   std::size_t idx(int i, int k) const { return std::size_t(i) * z_.size() + k; }
+  const ground::PressureSinkage& law(std::size_t a) const {
+    return cell_law_.empty() || !cell_law_[a] ? law_ : *cell_law_[a];
+  }
   std::vector<double> t_, z_, w_;
   const ground::PressureSinkage& law_;
+  std::vector<const ground::PressureSinkage*> cell_law_;
   std::vector<double> area_, zmax_, rut_;  ///< rut per cell (empty: virgin)
   SoilRate rate_;
   std::vector<double> rest_;  ///< Z(0) per cell: the rut through the rate term (empty: virgin)

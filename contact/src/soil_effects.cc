@@ -95,11 +95,11 @@ EffectInfo slip_sinkage() {
   return e;
 }
 
-// ---- wong_reece_stress: ground.bekker.wong_reece (Wong & Reece 1967; docs/soil.md 3.1) -------
+// ---- wong_reece_stress: ground.bekker.wong_reece (Wong & Reece 1967; docs/soil.md 3.1, 10) ---
 
 EffectInfo wong_reece_stress() {
   EffectOption o;
-  o.keys = "ground.bekker.wong_reece.enabled=true (with tyre.rigid=true)";
+  o.keys = "ground.bekker.wong_reece.enabled=true (a candidate with tyre.rigid=true)";
   o.is_on = [](const TyreConfig& c) {
     return c.ground.model == GroundModel::bekker && c.ground.wong_reece.enabled;
   };
@@ -109,20 +109,27 @@ EffectInfo wong_reece_stress() {
         "ground.bekker.wong_reece.enabled=true",
         "ground.bekker.wong_reece.c3=" + number_text(c.ground.wong_reece.c3)};
   };
+  // The rigid wheel's distribution (docs/soil.md 3.1). The flexible tyre rolls with it too
+  // (section 10: its rear soil flowing at it, `--set ground.bekker.wong_reece.enabled=true`),
+  // but as a candidate it is refused there: on noise-only traction curves of the 2D tyre
+  // (tests/discover/traction_evidence_test.cc, 4 mm units) discover named it at c1 0.037, c2
+  // 0.023 (Delta BIC 11.4), a rear region of one unit that moves the rolling fixed point's
+  // stopping point, not its solution (section 9's stopping error, 0.5-1 %).
   o.refusal = [](const TyreConfig& c) -> std::string {
     const std::string why = needs_bekker(c, "the Wong-Reece stress");
     if (!why.empty()) return why;
     if (!c.rigid)
-      return "a prescribed stress of the rigid wheel (tyre.rigid=true): the flexible tyre's "
-             "stress is the contact problem's outcome (docs/soil.md 3.1); on the tyre the slip "
-             "acts through slip_sinkage";
+      return "a candidate of the rigid wheel (tyre.rigid=true): on the flexible tyre the option "
+             "rolls (docs/soil.md 10), but its weakest rear regions are at the mesh's scale and "
+             "move the rolling fixed point's stopping error (named on noise-only curves)";
     return "";
   };
   EffectInfo e{EffectId::wong_reece_stress,
                "wong_reece_stress",
-               "the rigid wheel's normal stress peaks behind the entry, at theta_m = (c1 + c2 s) "
-               "theta1, moving back with slip (Wong & Reece, J. Terramechanics 4, 1967): deeper "
-               "sinkage, less pull",
+               "the normal stress peaks behind the entry, at theta_m = (c1 + c2 s) theta1, moving "
+               "back with slip (Wong & Reece, J. Terramechanics 4, 1967): the rear region carries "
+               "the front's stress mapped onto [theta2, theta_m] (the rigid wheel's stress; on the "
+               "flexible tyre the soil there flows at it): deeper sinkage, less pull",
                {"soil_sinkage_mm", "drawbar_pull_N", "torque_Nm"},
                ConditionId::slip,
                {{"c1",
@@ -161,7 +168,7 @@ EffectInfo wong_reece_stress() {
                      "ground.bekker.wong_reece.c3",
                      [](const TyreConfig& c) { return c.ground.wong_reece.c3; },
                      [](TyreConfig& c, double v) { c.ground.wong_reece.c3 = v; })}},
-               "soil (the rigid wheel's stress distribution)"};
+               "soil (the normal stress's distribution along the contact)"};
   e.strength = EffectStrength::none;
   e.no_strength = "the front-only stress needs c1 = c2 = 0 together";
   e.option = o;

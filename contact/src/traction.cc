@@ -14,6 +14,7 @@
 #include "traction3d.h"
 #include "traction_anderson.h"
 #include "traction_kinematics.h"
+#include "wong_reece_flexible.h"
 
 namespace modaltyre::contact {
 namespace {
@@ -29,6 +30,7 @@ struct RollingState {
   std::vector<char> active;
   std::vector<double> force_N;    ///< vertical force per unit (the soil's linearisation point)
   std::vector<double> surface_m;  ///< a viscous soil's rolled surface per unit (soil_rate_term.h)
+  detail::RearState rear;         ///< Wong and Reece's rear region (wong_reece_flexible.h)
 };
 
 using detail::case_result;
@@ -64,6 +66,10 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     rate.weight.resize(m), rate.start_m.resize(m);
     if (st.surface_m.size() != std::size_t(m)) st.surface_m.assign(m, incoming);
   }
+  detail::WongReeceRear wong_reece(g.wong_reece, rolling_radius_slip(c, R0), R0, m, 1);
+  wong_reece.prepare(st.rear);
+  std::vector<double> area(m), z_law;
+  for (int i = 0; i < m; ++i) area[i] = width * ds * std::cos(model.theta[i]);
   for (int it = 1; it <= budget.max_iterations; ++it) {
     // 1. The memory of the ground ahead of each unit (front = the highest index).
     double ahead = prior;
@@ -91,6 +97,14 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
                        st.surface_m);
       in.rate = &rate;
     }
+    std::vector<const ground::PressureSinkage*> unit_law;
+    std::unique_ptr<ground::PressureSinkage> soil_law;
+    if (wong_reece.on()) {
+      z_law = z_max;
+      soil_law = g.normal_law(b_used, in.slip);
+      unit_law = wong_reece.laws(st.rear, *soil_law, area, z_law);
+      in.z_max_m = z_law, in.unit_law = unit_law;
+    }
     const FootprintResult f = solve_ground_patch(model, op, {normal_load, 0}, g, in);
     if (!f.ok()) {
       TractionResult r = case_result(c, pass, f.message, f.status);
@@ -106,6 +120,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     if (f.on_soil) {
       surface = f.soil_depth_m;
       for (int i = 0; i < m; ++i) depth[i] = f.active[i] ? f.soil_depth_m[i] : 0.0;
+      if (wong_reece.on()) wong_reece.fill_track(st.rear, *soil_law, {prior}, depth);
     }
     const std::vector<double>& x = f.contour_x_m;
     // 2. Slopes of the ground surface, shear from the front edge.
@@ -147,17 +162,19 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       T += fx_new[i] * h + (fz + fs * slope[i]) * x[i];
     }
     const double dp = H - Rc;
+    const detail::RearState rear = wong_reece.image(x, fz_unit, depth, area, {f.front_edge_x_m});
     // Residual of the fixed point x = G(x) on the state (depth profile, horizontal forces, the
     // shear's load share), in mm and N so that the mixing weighs them alike.
     std::vector<double> rolled(rate_tau_s > 0 ? m : 0);
     if (rate_tau_s > 0) soil_rate_surface(rolled, rate, *rate_law, incoming, 0, 1, m, depth, z_max);
-    const int n = 2 * m + 1;
+    const Eigen::Index n = 2 * m + 1 + wong_reece.size();
     Eigen::VectorXd state(n), image(n);
     for (int i = 0; i < m; ++i) {
       state(i) = st.depth_m[i] * 1e3, image(i) = depth[i] * 1e3;
       state(m + i) = st.fx_N[i], image(m + i) = fx_new[i];
     }
     state(2 * m) = st.shear_vertical_N, image(2 * m) = shear_v;
+    wong_reece.pack(st.rear, rear, state, image, 2 * m + 1);
     double change = 0, deepest = 1e-12, fx_change = 0;
     for (int i = 0; i < m; ++i) {
       change = std::max(change, std::abs(depth[i] - st.depth_m[i]));
@@ -168,7 +185,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
                          change <= budget.depth_tolerance * std::max(deepest, f.sinking_m) &&
                          std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
                          fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
-                         std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N;
+                         std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N &&
+                         wong_reece.change(st.rear, rear) <= o.tolerance * c.load_N;
     last_dp = dp;
     // Anderson mixing (traction_anderson.h): the plain step x <- G(x) converges linearly at a
     // ratio of ~0.7 here (the ground's memory follows the sinkage of the units ahead).
@@ -179,6 +197,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     }
     st.shear_vertical_N = next(2 * m);
     if (rate_tau_s > 0) st.surface_m = rolled;  // plain, not mixed (soil_rate_term.h)
+    wong_reece.unpack(next, 2 * m + 1, rear, st.rear);
     if (settled) {
       TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
       r.iterations = it;

@@ -213,6 +213,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   const modal::LagKernels& HK = m.kernels;
   const solvers::LagConvolution2x2 H({HK.r_from_r, HK.r_from_t, HK.t_from_r, HK.t_from_t}, HK.lags);
   AndersonMixer mixer(kAndersonDepth);
+  WongReeceRear wong_reece(ground_.wong_reece, rolling_radius_slip(c, R0), R0, S, K);
+  wong_reece.prepare(st.rear);
   double last_dp = 0;
   int normal_steps = 0;
   double sinking = st.sinking_m;  // the last rolling step's (0: none yet)  // the section laws'
@@ -256,7 +258,11 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
         soil_rate_column(rate, m.theta, R0, rate_tau_s, o.speed_m_per_s, incoming[k], k, K,
                          st.surface_m);
     }
-    SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_, zmax, rate);
+    std::vector<double> z_law;
+    std::vector<const ground::PressureSinkage*> cell_law;
+    if (wong_reece.on()) z_law = zmax, cell_law = wong_reece.laws(st.rear, *law, area_m2_, z_law);
+    SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_,
+                      wong_reece.on() ? z_law : zmax, rate, cell_law);
     if (st.approach_m.size() == std::size_t(S))
       for (int i = 0; i < S; ++i) laws.set_approach(i, std::max(st.approach_m[i], laws.floor(i)));
     const Eigen::Map<const Eigen::VectorXd> fx(st.fx_N.data(), S);
@@ -281,6 +287,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       }
       fr[i] = n.force(i) * cos_th[i], ft[i] = n.force(i) * sin_th[i];
     }
+    wong_reece.fill_track(st.rear, *law, prior, depth);
     H.apply(0, S, 0, S, fr.data(), ft.data(), ur.data(), ut.data());
     for (int i = 0; i < S; ++i) {
       const double cs = cos_th[i], sn = sin_th[i];
@@ -295,6 +302,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     std::vector<double> fx_new(S, 0.0);
     double H_N = 0, Rc = 0, shear_v = 0, T = 0, length = 0, front_max = -1e300, rear_min = 1e300;
     double rear_depth = 0, columns_in_contact = 0;
+    std::vector<double> front_x(K, std::nan(""));  // per class (Wong and Reece's entry)
     for (int k = 0; k < K; ++k) {
       auto at = [&](int i) { return std::size_t(i) * K + k; };
       int first = -1, last = -1;
@@ -330,6 +338,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       const double theta_front = m.theta[last] + tf * (m.theta[last + 1] - m.theta[last]);
       length = std::max(length, x_front - x_rear);
       front_max = std::max(front_max, x_front);
+      front_x[k] = x_front;
       if (x_rear < rear_min) rear_min = x_rear, rear_depth = depth[at(first)];
       ground::ShearPoint point;
       double j_prev = 0;
@@ -359,6 +368,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       }
     }
     const double dp = H_N - Rc;
+    const RearState rear = wong_reece.image(x, f, depth, area_m2_, front_x);
     st.sinking_m = n.delta_m;
     const double b_new = std::min(columns_in_contact * dy, length);
     const double b_change = std::abs(b_new - b_used);
@@ -366,7 +376,7 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     // 3. The fixed point's state: cell depths [mm], section horizontal forces [N], load share.
     for (int k = 0; k < K && rate_tau_s > 0; ++k)
       soil_rate_surface(rolled, rate, *law, incoming[k], k, K, S, depth, zmax);
-    const Eigen::Index nstate = Eigen::Index(cells) + S + 1;
+    const Eigen::Index nstate = Eigen::Index(cells) + S + 1 + wong_reece.size();
     Eigen::VectorXd state(nstate), image(nstate);
     double change = 0, fx_change = 0;
     for (std::size_t a = 0; a < cells; ++a) {
@@ -377,19 +387,22 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
       state(cells + i) = st.fx_N[i], image(cells + i) = fx_new[i];
       fx_change = std::max(fx_change, std::abs(fx_new[i] - st.fx_N[i]));
     }
-    state(nstate - 1) = st.shear_vertical_N, image(nstate - 1) = shear_v;
+    state(Eigen::Index(cells) + S) = st.shear_vertical_N, image(Eigen::Index(cells) + S) = shear_v;
+    wong_reece.pack(st.rear, rear, state, image, Eigen::Index(cells) + S + 1);
     const double deepest = std::max(soil_sinkage, 1e-12);
     const bool settled = it > 1 &&
                          change <= budget.depth_tolerance * std::max(deepest, n.delta_m) &&
                          std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
                          fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
-                         std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N;
+                         std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N &&
+                         wong_reece.change(st.rear, rear) <= o.tolerance * c.load_N;
     last_dp = dp;
     const Eigen::VectorXd next = mixer.next(state, image);
     for (std::size_t a = 0; a < cells; ++a) st.depth_m[a] = std::max(next(a) * 1e-3, 0.0);
     for (int i = 0; i < S; ++i) st.fx_N[i] = next(cells + i);
-    st.shear_vertical_N = next(nstate - 1);
+    st.shear_vertical_N = next(Eigen::Index(cells) + S);
     if (rate_tau_s > 0) st.surface_m = rolled;  // plain, not mixed (soil_rate_term.h)
+    wong_reece.unpack(next, Eigen::Index(cells) + S + 1, rear, st.rear);
     if (!settled) continue;
     TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
     r.iterations = it;

@@ -18,6 +18,7 @@
 
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/contact/traction.h"
+#include "wong_reece_flexible.h"
 
 namespace modaltyre::contact::detail {
 
@@ -35,6 +36,7 @@ struct Rolling3dState {
   std::vector<char> active;        ///< sections in contact
   std::vector<double> approach_m;  ///< sections' approaches (the soil's linearisation)
   std::vector<double> surface_m;   ///< a viscous soil's rolled surface per cell class
+  RearState rear;                  ///< Wong and Reece's rear region (wong_reece_flexible.h)
 };
 
 class Rolling3d {

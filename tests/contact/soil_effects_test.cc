@@ -92,7 +92,8 @@ TEST(SoilEffects, AreOptionsOfGroundOffInEveryBundledSoilAndRefusedOnARoad) {
                                        "ground.kelvin_voigt.layer_mm=200"});
   EXPECT_NE(effect_refusal(kv, EffectId::slip_sinkage).find("kelvin_voigt soil"),
             std::string::npos);
-  // Wong and Reece's distribution is the rigid wheel's: refused on the flexible tyre.
+  // Wong and Reece's distribution is a candidate of the rigid wheel; the flexible tyre rolls with
+  // it (docs/soil.md section 10) but refuses it as a candidate (its mesh-scale rear regions).
   TyreConfig sand = soilfx_config("lete_sand.yaml");
   EXPECT_EQ(effect_refusal(sand, EffectId::slip_sinkage), "");
   EXPECT_NE(effect_refusal(sand, EffectId::wong_reece_stress).find("tyre.rigid"),

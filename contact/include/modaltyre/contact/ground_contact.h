@@ -34,6 +34,9 @@ struct GroundContactProblem {
   /// The Kelvin-Voigt soil's rate term in steady rolling: Z_i = w z_a + (1 - w) Z_el
   /// (soil_rate_term.h); off: the law itself.
   SoilRate rate;
+  /// A point's own law in place of `law` (empty, or null at a point: `law`), e.g. Wong and
+  /// Reece's rear region on the rolling tyre (contact/src/wong_reece_flexible.h).
+  std::vector<const ground::PressureSinkage*> unit_law;
   /// Forces to linearise the soil at first (e.g. a neighbouring solution, scaled to the load);
   /// empty: the soil's tangent at zero pressure.
   Eigen::VectorXd initial_force;

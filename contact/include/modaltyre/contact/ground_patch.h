@@ -37,6 +37,8 @@ struct GroundPatchInput {
   double slip = 0;
   /// Rolling on a viscous soil: the rate term per candidate unit (soil_rate_term.h); null: none.
   const SoilRate* rate = nullptr;
+  /// Per candidate unit its own law in place of the soil's (empty or null: the soil's).
+  std::span<const ground::PressureSinkage* const> unit_law;
 };
 
 /// Solves one load case on the config's ground with a given operator (its horizontal_ratio must

@@ -58,7 +58,7 @@ struct GroundSettings {
   /// them on; bekker.unloading holds them only when on).
   std::optional<WongUnloading> stated_unloading;
   JanosiParams bekker_shear{0, 30, 25};
-  WongReeceStress wong_reece;  ///< the rigid wheel's stress distribution (soil_options.h)
+  WongReeceStress wong_reece;  ///< Wong and Reece's stress distribution (soil_options.h)
   SlipSinkage slip_sinkage;    ///< sinkage growing with slip (soil_options.h)
   Bulldozing bulldozing;       ///< the soil pushed ahead of the tyre (soil_options.h)
   KelvinVoigtParams kelvin_voigt;

@@ -12,6 +12,8 @@
 //     with theta_m = (c1 + c2 s) theta1 (clamped to [0, theta1]) and the rear angle
 //     theta2 = -c3 theta1 behind the vertical. c1 0.43, c2 0.32: Wong and Reece's compact sand
 //     (loose sand c1 0.18); c3 0: no rebound (the rigid-plastic soil's theta2 = 0).
+//     On the flexible tyre (contact/src/wong_reece_flexible.h, docs/soil.md section 10) the rear
+//     region's soil flows at that stress inside the rolling contact problem.
 //
 //   slip_sinkage: {enabled: false, k1: 1, k2: 0.5}
 //     Sinkage that grows with slip as the shear excavates the soil under the contact (M. Lyasko,

@@ -1,0 +1,60 @@
+// `traction` on the default tyre with Wong and Reece's stress (docs/soil.md section 10): the
+// switch is accepted on the flexible tyre's 3D patch and its 2D patch, the JSON states it, and the
+// tyre sinks deeper and pulls less than under the front-only stress; a bad coefficient is refused
+// naming its key (exit 2).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli_runner.h"
+
+namespace {
+
+const std::string kWrCliSource = MODALTYRE_SOURCE_DIR;
+const std::string kWrCliConfig = kWrCliSource + "/configs/sf350.yaml";
+const std::string kWrCliLete = kWrCliSource + "/configs/soils/lete_sand.yaml";
+
+class WongReeceFlexibleCli : public modaltyre_test::CliFixture {
+ protected:
+  // The default tyre on LETE sand at 3 kN, s = 0.1 and 0.3, on a patch, with or without the
+  // option; coarse: 2 mm sections, 10 mm columns.
+  nlohmann::json rolled(const std::string& patch, bool wong_reece) {
+    const auto r =
+        run({"traction", kWrCliConfig, "--ground", kWrCliLete, "--load", "3000", "--slip", "0.1",
+             "0.3", "--json", "--patch", patch, "--set", "contact.unit_length_mm=2", "--set",
+             "footprint_3d.lateral_cell_mm=10", "--set",
+             std::string("ground.bekker.wong_reece.enabled=") + (wong_reece ? "true" : "false")});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  }
+};
+
+TEST_F(WongReeceFlexibleCli, TheDefaultTyreTakesWongReecesStressOnBothPatches) {
+  for (const char* patch : {"3d", "2d"}) {
+    SCOPED_TRACE(patch);
+    const nlohmann::json front = rolled(patch, false), wr = rolled(patch, true);
+    EXPECT_FALSE(front["ground"]["bekker"]["wong_reece"].get<bool>());
+    EXPECT_TRUE(wr["ground"]["bekker"]["wong_reece"].get<bool>());
+    ASSERT_EQ(wr["cases"].size(), 2u);
+    for (int k = 0; k < 2; ++k) {
+      const auto &a = front["cases"][k], &b = wr["cases"][k];
+      ASSERT_TRUE(b["converged"].get<bool>()) << b;
+      EXPECT_GT(b["soil_sinkage_mm"].get<double>(), a["soil_sinkage_mm"].get<double>());
+      EXPECT_LT(b["drawbar_pull_N"].get<double>(), a["drawbar_pull_N"].get<double>());
+    }
+    EXPECT_GT(wr["cases"][1]["soil_sinkage_mm"].get<double>(),
+              wr["cases"][0]["soil_sinkage_mm"].get<double>());
+  }
+}
+
+TEST_F(WongReeceFlexibleCli, ABadCoefficientIsRefusedNamingItsKey) {
+  const auto r = run({"traction", kWrCliConfig, "--ground", kWrCliLete, "--load", "3000", "--slip",
+                      "0.1", "--set", "ground.bekker.wong_reece.enabled=true", "--set",
+                      "ground.bekker.wong_reece.c2=1.5"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("wong_reece.c2"), std::string::npos) << r.err;
+}
+
+}  // namespace
