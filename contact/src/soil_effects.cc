@@ -109,19 +109,12 @@ EffectInfo wong_reece_stress() {
         "ground.bekker.wong_reece.enabled=true",
         "ground.bekker.wong_reece.c3=" + number_text(c.ground.wong_reece.c3)};
   };
-  // The rigid wheel's distribution (docs/soil.md 3.1). The flexible tyre rolls with it too
-  // (section 10: its rear soil flowing at it, `--set ground.bekker.wong_reece.enabled=true`),
-  // but as a candidate it is refused there: on noise-only traction curves of the 2D tyre
-  // (tests/discover/traction_evidence_test.cc, 4 mm units) discover named it at c1 0.037, c2
-  // 0.023 (Delta BIC 11.4), a rear region of one unit that moves the rolling fixed point's
-  // stopping point, not its solution (section 9's stopping error, 0.5-1 %).
+  // The rigid wheel's distribution (docs/soil.md 3.1); the flexible tyre's rear soil flows at it
+  // (section 10). c1 is searched from 0.1: from 0, discover named it on noise-only traction
+  // curves at c1 0.037 (a rear region of one unit moving the fixed point's stopping point).
   o.refusal = [](const TyreConfig& c) -> std::string {
     const std::string why = needs_bekker(c, "the Wong-Reece stress");
     if (!why.empty()) return why;
-    if (!c.rigid)
-      return "a candidate of the rigid wheel (tyre.rigid=true): on the flexible tyre the option "
-             "rolls (docs/soil.md 10), but its weakest rear regions are at the mesh's scale and "
-             "move the rolling fixed point's stopping error (named on noise-only curves)";
     return "";
   };
   EffectInfo e{EffectId::wong_reece_stress,
@@ -135,7 +128,7 @@ EffectInfo wong_reece_stress() {
                {{"c1",
                  "-",
                  kWongReeceC1,
-                 0,
+                 0.1,
                  1,
                  true,
                  "theta_m / theta1 at zero slip (compact sand 0.43, loose sand 0.18)",

@@ -183,5 +183,21 @@ TEST(TractionDiscover, HiddenSlipSinkageIsNamedAndTheGapShrinks) {
   EXPECT_LT(r.cv_gap_after.at("soil_sinkage_mm"), 0.5 * r.cv_gap_before.at("soil_sinkage_mm"));
 }
 
+TEST(TractionDiscover, HiddenWongReeceStressOnTheFlexibleTyreIsNamed) {
+  // Wong and Reece's compact sand (c1 0.43, c2 0.32; docs/soil.md 3.1) under the flexible tyre
+  // (section 10): named with the gap shrinking; c1's search starts at 0.1, below the loosest
+  // sand measured (0.18), where a rear region of one unit only moves the fixed point's stop.
+  const TyreConfig c = lete_config();
+  TyreConfig truth = c;
+  truth.ground.wong_reece.enabled = true;
+  truth.ground.wong_reece.c1 = 0.43;
+  truth.ground.wong_reece.c2 = 0.32;
+  const auto data = make_traction_data(truth, kRows, 0.02, 13, "wong_reece");
+  const DiscoverReport r = discover(c, data, traction_options());
+  ASSERT_EQ(r.effects.size(), 1u) << r.conclusion;
+  EXPECT_EQ(r.effects.front().name, "wong_reece_stress");
+  EXPECT_LT(r.effects.front().cv_rms_after, 0.5 * r.effects.front().cv_rms_before);
+}
+
 }  // namespace
 }  // namespace modaltyre::discover
