@@ -235,6 +235,20 @@ void add_detection_limits(const Evaluator& ev, const Stage& current, const Namin
   m.text = s.str();
 }
 
+// A named parameter's band: its profile likelihood's (profile_band.h) on the exact procedure's
+// rows, the Gauss-Newton one (value +- 2 standard errors, within the range) above them.
+ParameterBand named_band(const Evaluator& ev, const TyreConfig& base, const Stage& chosen,
+                         const std::vector<int>& rows, const DiscoverOptions& opt, int i) {
+  if (static_cast<int>(rows.size()) <= opt.fit.exact_rows)
+    return profile_band(ev, base, chosen.variant, chosen.fit, rows, i);
+  const FreeParameter& p = chosen.variant.parameters[i];
+  const double x = chosen.fit.values[i], se = chosen.fit.standard_errors[i];
+  ParameterBand b;
+  b.lower = std::max(x - 2 * se, p.min), b.upper = std::min(x + 2 * se, p.max);
+  b.lower_at_bound = !(x - 2 * se > p.min), b.upper_at_bound = !(x + 2 * se < p.max);
+  return b;
+}
+
 std::string number_text(double v) {
   std::ostringstream s;
   s.precision(10);
@@ -458,6 +472,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     for (std::size_t i = 0; i < chosen.variant.parameters.size(); ++i) {
       const auto& p = chosen.variant.parameters[i];
       if (!ne.parameters.count(p.key)) continue;
+      ne.bands[p.key] = named_band(ev, current.fit.config, chosen, all, opt, static_cast<int>(i));
       if (!studies::range_bound_side(chosen.fit.values[i], p.min, p.max, p.log_scale).empty())
         ne.at_bound.push_back(p.key);
     }
