@@ -236,7 +236,7 @@ double LimitFinder::power(EffectId id, double m, int replicas) const {
   return power(p, signal(p, m), replicas);
 }
 
-DetectionLimit LimitFinder::limit(EffectId id) const {
+DetectionLimit LimitFinder::limit(EffectId id, bool below_neutral) const {
   DetectionLimit out;
   const contact::EffectInfo& info = contact::effect_info(id);
   out.effect = info.name;
@@ -255,7 +255,7 @@ DetectionLimit LimitFinder::limit(EffectId id) const {
   // Both sides of a neutral value inside the strength parameter's range (from_neutral only: an
   // inverse strength vanishes at its range's far end).
   const FreeParameter& s = p.effect.parameters[p.strength];
-  if (p.inverse || !(s.min < p.off && p.off < p.start[p.strength])) return out;
+  if (!below_neutral || p.inverse || !(s.min < p.off && p.off < p.start[p.strength])) return out;
   const Path q = path(id, true);
   DetectionLimit lower;
   search(q, lower);

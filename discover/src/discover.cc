@@ -202,7 +202,15 @@ void add_detection_limits(const Evaluator& ev, const Stage& current, const Namin
   const auto tick = phase(n);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
   for (int t = 0; t < n; ++t) {
-    last[unnamed[t]].limit = finder.limit(ids[t]);
+    // The side below a neutral value inside the strength's range (crown_shape's n < 2) where the
+    // candidate's own fit lies there (the side the data lean to), on the exact procedure's rows
+    // as the profile bands (above them the approximations keep their cost: one side).
+    const auto strength = effect_parameters(ids[t]);
+    const auto& fitted = last[unnamed[t]].parameters;
+    const auto it = strength.empty() ? fitted.end() : fitted.find(strength.front().key);
+    const bool below = static_cast<int>(ev.data().rows.size()) <= opt.fit.exact_rows &&
+                       it != fitted.end() && it->second < contact::effect_info(ids[t]).neutral;
+    last[unnamed[t]].limit = finder.limit(ids[t], below);
     tick();
   }
   if (rep.effects.size() >= rep.rounds.size() || n == 0) return;  // the last round named one

@@ -340,20 +340,31 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
     u0 = scout_from(starts);
   }
   auto lm = solvers::levenberg_marquardt(residual, u0, opt);
-  const auto at_bound = [&](const Eigen::VectorXd& u) {
-    for (int i : fresh) {
-      const double x = from_search(ps[i], u(i));
-      if (!studies::range_bound_side(x, ps[i].min, ps[i].max, ps[i].log_scale).empty()) return true;
-    }
-    return false;
+  // Whether the new effect's strength (its first fitted parameter, as detection_limit.h's) ended
+  // at the bound of its range where the effect is strongest: at the bound where it vanishes the
+  // data ask for none of it (every candidate of a noise-only set), at the other the effect may
+  // saturate an observable over much of the range.
+  const auto at_strong_bound = [&](const Eigen::VectorXd& u) {
+    if (fresh.empty()) return false;
+    const FreeParameter& p = ps[fresh.front()];
+    const std::string side =
+        studies::range_bound_side(from_search(p, u(fresh.front())), p.min, p.max, p.log_scale);
+    if (side.empty()) return false;
+    const contact::EffectInfo& info = contact::effect_info(p.effect);
+    if (info.strength == contact::EffectStrength::inverse) return side == "lower";
+    if (info.strength == contact::EffectStrength::from_neutral && info.neutral <= p.min)
+      return side == "upper";
+    if (info.strength == contact::EffectStrength::from_neutral && info.neutral >= p.max)
+      return side == "lower";
+    return true;  // a neutral value inside the range, or no strength: both bounds
   };
-  if (at_bound(lm.x)) {
-    // Ended at a bound of the new effect's range: no value located. The cost can be flat over
-    // much of the range with a narrow basin elsewhere (the lateral belt's foundation on twelve
-    // SF-350 footprints: profile RMS 2.7 % from 10 to 250 MPa/m, 1.2 % at 300-500), and the
-    // default and its corners can all lie on the plateau: scout the strength parameter's whole
-    // transformed range too (u = -4 ... 4, the range's 2 % to 98 % points) and keep the better
-    // refined fit.
+  if (at_strong_bound(lm.x)) {
+    // Ended at a bound of the new effect's range where it is strongest: no value located. The
+    // cost can be flat over much of the range with a narrow basin elsewhere (the lateral belt's
+    // foundation on twelve SF-350 footprints: profile RMS 2.7 % from 10 to 250 MPa/m, 1.2 % at
+    // 300-500), and the default and its corners can all lie on the plateau: scout the strength
+    // parameter's whole transformed range too (u = -4 ... 4, the range's 2 % to 98 % points)
+    // and keep the better refined fit.
     std::vector<Eigen::VectorXd> starts;
     for (double u : {-4.0, -2.0, 0.0, 2.0, 4.0}) {
       starts.push_back(lm.x);

@@ -93,7 +93,9 @@ class LimitFinder {
 
   /// Thread-safe (candidates may run in parallel). About 2 k + 10 evaluations of all rows
   /// (k: the effect's fitted parameters).
-  DetectionLimit limit(contact::EffectId id) const;
+  /// `below_neutral`: search the side below a neutral value inside the range too (discover asks
+  /// it where the candidate's own fit lies on that side).
+  DetectionLimit limit(contact::EffectId id, bool below_neutral = true) const;
 
   /// Times the rows must be repeated (1 = as they are, up to options.max_replicas; 0 = not
   /// enough) for the effect at its catalogue default to be named with options.power
