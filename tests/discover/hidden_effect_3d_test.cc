@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <string>
 
@@ -83,6 +84,30 @@ TEST(DiscoverDefaultTyre, BeltFlatteningHiddenAloneIsNamed) {
   expect_named_first(p, discover_default(p, "default_flattening"));
 }
 
+// A planted set on twelve loads as discover evaluates it (its evaluation mesh, every row), with
+// the baseline's fit: for the tests that look into one candidate's fit or limit.
+struct Evaluated {
+  studies::MeasurementSet data;
+  TyreConfig config;
+  std::unique_ptr<const contact::TyreModel> model;
+  std::unique_ptr<const Evaluator> ev;
+  std::vector<int> rows;
+  FitResult base;
+
+  Evaluated(Planted p, const std::string& name) {
+    p.rows =
+        grid({2000, 2600, 3200, 3800, 4400, 5000, 5600, 6200, 6800, 7400, 8000, 8600}, nullptr, 1);
+    data = make_data(p, name);
+    config = contact::load_tyre_config(p.config, p.overrides);
+    config.mesh.unit_length_m = p.unit_length_mm * 1e-3;
+    model = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(config));
+    ev = std::make_unique<const Evaluator>(*model, data);
+    rows.resize(data.rows.size());
+    std::iota(rows.begin(), rows.end(), 0);
+    base = fit_variant(*ev, config, make_variant(config, {}), rows);
+  }
+};
+
 // The lateral belt's foundation hidden alone in twelve footprints
 // (bench/discover_default_check.py's grid for the option effects and seed 45's drawn 447.7 MPa/m),
 // on the default's 5 mm lateral cells: the profile cost is flat from 10 to ~250 MPa/m and the basin
@@ -95,17 +120,11 @@ TEST(DiscoverDefaultTyre, LateralBeltHiddenAloneFitFindsItsBasin) {
   const std::string key = "footprint_3d.lateral_belt.foundation_MPa_per_m";
   Planted p = hidden_alone(45, "lateral_belt", key, 447.7);
   p.overrides = {};
-  p.rows =
-      grid({2000, 2600, 3200, 3800, 4400, 5000, 5600, 6200, 6800, 7400, 8000, 8600}, nullptr, 1);
-  const auto data = make_data(p, "default_lateral_belt");
-  TyreConfig config = contact::load_tyre_config(p.config, p.overrides);
-  config.mesh.unit_length_m = p.unit_length_mm * 1e-3;
-  const contact::TyreModel model = contact::build_tyre_model(config);
-  const Evaluator ev(model, data);
-  std::vector<int> rows(data.rows.size());
-  std::iota(rows.begin(), rows.end(), 0);
-  const FitResult base = fit_variant(ev, config, make_variant(config, {}), rows);
-  const Variant v = make_variant(config, {contact::EffectId::lateral_belt});
+  const Evaluated e(p, "default_lateral_belt");
+  const Evaluator& ev = *e.ev;
+  const FitResult& base = e.base;
+  const std::vector<int>& rows = e.rows;
+  const Variant v = make_variant(e.config, {contact::EffectId::lateral_belt});
   const FitResult fit = fit_variant(ev, base.config, v, rows, std::nullopt, true);
   const int i = static_cast<int>(v.parameters.size()) - 1;
   ASSERT_EQ(v.parameters[i].key, key);
@@ -132,20 +151,12 @@ TEST(DiscoverDefaultTyre, LateralBeltHiddenAloneFitFindsItsBasin) {
 // Delta BIC 4.2, reported limit n >= 2.88).
 TEST(DiscoverDefaultTyre, CrownShapeHiddenAloneBelowTheCircleIsLimitedOnItsSide) {
   const std::string key = "footprint_3d.crown.exponent";
-  Planted p = hidden_alone(45, "crown_shape", key, 1.9);
-  p.rows =
-      grid({2000, 2600, 3200, 3800, 4400, 5000, 5600, 6200, 6800, 7400, 8000, 8600}, nullptr, 1);
-  const auto data = make_data(p, "default_crown_low");
-  TyreConfig config = contact::load_tyre_config(p.config, p.overrides);
-  config.mesh.unit_length_m = p.unit_length_mm * 1e-3;
-  const contact::TyreModel model = contact::build_tyre_model(config);
-  const Evaluator ev(model, data);
-  std::vector<int> rows(data.rows.size());
-  std::iota(rows.begin(), rows.end(), 0);
-  const Variant baseline = make_variant(config, {});
-  const FitResult base = fit_variant(ev, config, baseline, rows);
-  const FitResult crown =
-      fit_variant(ev, base.config, make_variant(config, {contact::EffectId::crown_shape}), rows);
+  const Evaluated e(hidden_alone(45, "crown_shape", key, 1.9), "default_crown_low");
+  const Evaluator& ev = *e.ev;
+  const FitResult& base = e.base;
+  const Variant baseline = make_variant(e.config, {});
+  const FitResult crown = fit_variant(
+      ev, base.config, make_variant(e.config, {contact::EffectId::crown_shape}), e.rows);
   EXPECT_LT(base.bic - crown.bic, 10) << "not named: below the rule's Delta BIC";
   const LimitFinder finder(ev, base.config, baseline, base, NamingRule{});
   const DetectionLimit l = finder.limit(contact::EffectId::crown_shape);
