@@ -119,6 +119,12 @@ void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet
     for (const auto& kv : e.parameters) {
       std::cout << " " << kv.first << " = " << kv.second << " +- "
                 << e.standard_errors.at(kv.first);
+      const auto b = e.bands.find(kv.first);
+      if (b != e.bands.end()) {
+        std::cout << " (two standard errors: " << b->second.lower
+                  << (b->second.lower_at_bound ? " (range bound)" : "") << " to " << b->second.upper
+                  << (b->second.upper_at_bound ? " (range bound)" : "") << ")";
+      }
     }
     for (const auto& k : e.at_bound) {
       std::cout << "\n    " << k << " ended at a bound of its range: the data bound it from one "

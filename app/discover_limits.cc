@@ -41,6 +41,15 @@ void print_limits(const discover::DiscoverReport& r) {
     }
     std::cout << ") with 80 % probability; at its default: "
               << std::lround(100 * l.power_at_default) << " %\n";
+    if (l.two_sided) {  // the side below the neutral value (detection_limit.h)
+      std::ostringstream lower;
+      lower.precision(3);
+      lower << l.lower_value;
+      std::cout << "    below its neutral value: "
+                << (l.lower_reason.empty() ? name + " <= " + lower.str() : l.lower_reason)
+                << "; at " << l.lower_reference_value << ": "
+                << std::lround(100 * l.power_at_lower_reference) << " %\n";
+    }
   }
   if (!r.more_rows.effect.empty()) std::cout << "Rows to add: " << r.more_rows.text << ".\n";
 }

@@ -5,8 +5,9 @@ sweep` on configs/sf350.yaml with magnitudes drawn inside each effect's range, 1
 Gaussian noise on every observable. Each set goes through `modaltyre discover --json`:
 
 - a set with one effect: that effect named first; for an option effect (lateral_belt,
-  pneumatic_share, crown_shape, sidewall_softening) its drawn value within two of its reported
-  standard errors as well;
+  pneumatic_share, crown_shape, sidewall_softening) its drawn value within its reported band as
+  well (two standard errors either side, from the profile likelihood; a report without bands:
+  the fitted value +- two Gauss-Newton standard errors);
 - a pair: both named;
 - a noise-only set: nothing named;
 - every set with an effect: the pooled cross-validated gap shrinks.
@@ -122,7 +123,7 @@ def main():
     for k, grid in enumerate(NOISE_GRIDS):
         sets.append(("noise_%d" % k, [], grid, rng.randrange(1 << 30)))
     print("seed %d, noise %.3g, config %s" % (a.seed, a.noise, a.config))
-    print("set | planted | named | cv gap before -> after | recovered (+- se) | verdict | s")
+    print("set | planted | named | cv gap before -> after | recovered (band) | verdict | s")
     failures = 0
     for tag, planted, grid, seed in sets:
         if only and tag not in only:
@@ -153,9 +154,15 @@ def main():
                 key = EFFECTS[name][0]
                 fit = j["effects"][0]["parameters"].get(key)
                 se = j["effects"][0]["standard_errors"].get(key)
-                good = fit is not None and se is not None and abs(fit - value) <= 2 * se
-                recovered.append("%s %.4g (+- %.3g; planted %.4g)" % (key, fit or 0, se or 0,
-                                                                     value))
+                band = j["effects"][0].get("bands_two_standard_errors", {}).get(key)
+                if band:  # the reported band (profile likelihood, two standard errors)
+                    good = fit is not None and band["lower"] <= value <= band["upper"]
+                    recovered.append("%s %.4g (%.4g to %.4g; planted %.4g)" % (
+                        key, fit or 0, band["lower"], band["upper"], value))
+                else:
+                    good = fit is not None and se is not None and abs(fit - value) <= 2 * se
+                    recovered.append("%s %.4g (+- %.3g; planted %.4g)" % (key, fit or 0, se or 0,
+                                                                         value))
                 ok = good
         else:
             ok = set(named) >= {p[0] for p in planted}
@@ -165,8 +172,11 @@ def main():
             cand = next((c for c in j["rounds"][-1] if c["name"] == name), None)
             lim = cand.get("detection_limit") if cand else None
             if lim:
-                recovered.append("%s unnamed (dBIC %.1f): limit %s %.4g" % (
-                    name, cand["delta_bic"], lim["bound"], lim["value"]))
+                below = lim.get("below_neutral")
+                recovered.append("%s unnamed (dBIC %.1f): limit %s %.4g%s" % (
+                    name, cand["delta_bic"], lim["bound"], lim["value"],
+                    " or at most %.4g" % below["value"] if below and below.get("value")
+                    else ""))
             else:
                 recovered.append("%s unnamed: %s" % (name, cand.get("detection_limit_reason", "")
                                                      if cand else "not a candidate"))

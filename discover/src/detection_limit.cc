@@ -124,7 +124,7 @@ LimitFinder::LimitFinder(const Evaluator& ev, const contact::TyreConfig& base,
   }
 }
 
-LimitFinder::Path LimitFinder::path(EffectId id) const {
+LimitFinder::Path LimitFinder::path(EffectId id, bool lower) const {
   Path p;
   const contact::EffectInfo& info = contact::effect_info(id);
   p.effect.effects = {id};
@@ -144,7 +144,13 @@ LimitFinder::Path LimitFinder::path(EffectId id) const {
   }
   p.inverse = info.strength == contact::EffectStrength::inverse;
   p.off = info.neutral;
-  if (p.inverse) {
+  if (lower) {
+    // The mirror image of the default about the neutral value, or half-way to the range's
+    // lower bound when the mirror lies beyond it.
+    const double mirror = 2 * p.off - d;
+    p.start[p.strength] = mirror > s.min ? mirror : 0.5 * (s.min + p.off);
+    p.m_max = (s.min - p.off) / (p.start[p.strength] - p.off);
+  } else if (p.inverse) {
     p.m_max = d / s.min;
   } else if (d > p.off && s.max > p.off) {
     p.m_max = (s.max - p.off) / (d - p.off);
@@ -230,20 +236,39 @@ double LimitFinder::power(EffectId id, double m, int replicas) const {
   return power(p, signal(p, m), replicas);
 }
 
-DetectionLimit LimitFinder::limit(EffectId id) const {
+DetectionLimit LimitFinder::limit(EffectId id, bool below_neutral) const {
   DetectionLimit out;
-  out.effect = contact::effect_info(id).name;
+  const contact::EffectInfo& info = contact::effect_info(id);
+  out.effect = info.name;
   const Path p = path(id);
   if (!p.effect.parameters.empty()) {
     out.parameter = p.effect.parameters[p.strength].key;
-    for (const auto& ep : contact::effect_info(id).parameters) {
-      if (contact::effect_info(id).key(ep) == out.parameter) out.unit = ep.unit;
+    for (const auto& ep : info.parameters) {
+      if (info.key(ep) == out.parameter) out.unit = ep.unit;
     }
   }
   if (!p.reason.empty()) {
     out.reason = p.reason;
     return out;
   }
+  search(p, out);
+  // Both sides of a neutral value inside the strength parameter's range (from_neutral only: an
+  // inverse strength vanishes at its range's far end).
+  const FreeParameter& s = p.effect.parameters[p.strength];
+  if (!below_neutral || p.inverse || !(s.min < p.off && p.off < p.start[p.strength])) return out;
+  const Path q = path(id, true);
+  DetectionLimit lower;
+  search(q, lower);
+  out.two_sided = true;
+  out.lower_reference_value = q.start[q.strength];
+  out.lower_value = lower.value;
+  out.lower_magnitude = lower.magnitude;
+  out.lower_reason = lower.reason;
+  out.power_at_lower_reference = lower.power_at_default;
+  return out;
+}
+
+void LimitFinder::search(const Path& p, DetectionLimit& out) const {
   const double target = opt_.power;
   auto power_at = [&](double m) { return power(p, signal(p, m), 1); };
   out.power_at_default = power_at(1);
@@ -263,10 +288,10 @@ DetectionLimit LimitFinder::limit(EffectId id) const {
         std::ostringstream s;
         s.precision(3);
         s << "not named with " << 100 * target << " % probability anywhere in the range of "
-          << out.parameter << " (at its bound " << p.value(p.m_max) << ": "
+          << p.effect.parameters[p.strength].key << " (at its bound " << p.value(p.m_max) << ": "
           << 100 * power_at(p.m_max) << " %)";
         out.reason = s.str();
-        return out;
+        return;
       }
       if (power_at(hi) >= target) break;
     }
@@ -276,11 +301,11 @@ DetectionLimit LimitFinder::limit(EffectId id) const {
     (power_at(mid) >= target ? hi : lo) = mid;
   }
   out.magnitude = hi;
-  out.at_most = p.inverse;
+  out.at_most = p.inverse || p.start[p.strength] < p.off;
   out.value = p.value(hi);
   // The change at the limit beyond what the re-fitted baseline absorbs (its Jacobian's span).
-  const Eigen::VectorXd s = signal(p, hi);
-  const Eigen::VectorXd left = s - a_ * (pseudo_inverse(a_) * s);
+  const Eigen::VectorXd sig = signal(p, hi);
+  const Eigen::VectorXd left = sig - a_ * (pseudo_inverse(a_) * sig);
   std::vector<double> sum(sigma_.size(), 0.0);
   std::vector<int> count(sigma_.size(), 0);
   for (std::size_t i = 0; i < entries_.size(); ++i) {
@@ -290,7 +315,6 @@ DetectionLimit LimitFinder::limit(EffectId id) const {
   for (std::size_t o = 0; o < sum.size(); ++o) {
     if (count[o]) out.observable_rms_rel[ev_.data().observables[o]] = std::sqrt(sum[o] / count[o]);
   }
-  return out;
 }
 
 int LimitFinder::replicas_for_default(EffectId id) const {

@@ -202,7 +202,15 @@ void add_detection_limits(const Evaluator& ev, const Stage& current, const Namin
   const auto tick = phase(n);
 #pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
   for (int t = 0; t < n; ++t) {
-    last[unnamed[t]].limit = finder.limit(ids[t]);
+    // The side below a neutral value inside the strength's range (crown_shape's n < 2) where the
+    // candidate's own fit lies there (the side the data lean to), on the exact procedure's rows
+    // as the profile bands (above them the approximations keep their cost: one side).
+    const auto strength = effect_parameters(ids[t]);
+    const auto& fitted = last[unnamed[t]].parameters;
+    const auto it = strength.empty() ? fitted.end() : fitted.find(strength.front().key);
+    const bool below = static_cast<int>(ev.data().rows.size()) <= opt.fit.exact_rows &&
+                       it != fitted.end() && it->second < contact::effect_info(ids[t]).neutral;
+    last[unnamed[t]].limit = finder.limit(ids[t], below);
     tick();
   }
   if (rep.effects.size() >= rep.rounds.size() || n == 0) return;  // the last round named one
@@ -233,6 +241,20 @@ void add_detection_limits(const Evaluator& ev, const Stage& current, const Namin
       << "reach 80 %: widen the range of " << m.condition << " or measure more precisely";
   }
   m.text = s.str();
+}
+
+// A named parameter's band: its profile likelihood's (profile_band.h) on the exact procedure's
+// rows, the Gauss-Newton one (value +- 2 standard errors, within the range) above them.
+ParameterBand named_band(const Evaluator& ev, const TyreConfig& base, const Stage& chosen,
+                         const std::vector<int>& rows, const DiscoverOptions& opt, int i) {
+  if (static_cast<int>(rows.size()) <= opt.fit.exact_rows)
+    return profile_band(ev, base, chosen.variant, chosen.fit, rows, i);
+  const FreeParameter& p = chosen.variant.parameters[i];
+  const double x = chosen.fit.values[i], se = chosen.fit.standard_errors[i];
+  ParameterBand b;
+  b.lower = std::max(x - 2 * se, p.min), b.upper = std::min(x + 2 * se, p.max);
+  b.lower_at_bound = !(x - 2 * se > p.min), b.upper_at_bound = !(x + 2 * se < p.max);
+  return b;
 }
 
 std::string number_text(double v) {
@@ -458,6 +480,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     for (std::size_t i = 0; i < chosen.variant.parameters.size(); ++i) {
       const auto& p = chosen.variant.parameters[i];
       if (!ne.parameters.count(p.key)) continue;
+      ne.bands[p.key] = named_band(ev, current.fit.config, chosen, all, opt, static_cast<int>(i));
       if (!studies::range_bound_side(chosen.fit.values[i], p.min, p.max, p.log_scale).empty())
         ne.at_bound.push_back(p.key);
     }

@@ -12,6 +12,7 @@
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/levenberg_marquardt.h"
 #include "modaltyre/studies/traction_rows.h"
+#include "modaltyre/studies/validation.h"
 
 namespace modaltyre::discover {
 namespace {
@@ -296,46 +297,83 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
     return Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<int>(r.size())).eval();
   };
 
+  solvers::LeastSquaresOptions opt;
+  opt.max_iterations = 60;
+  opt.relative_step = 1e-5;
+  opt.step_tolerance = 1e-7;
   Eigen::VectorXd u0(k);
+  std::vector<int> fresh;  // parameters of effects base does not have on
   if (start) {
     for (int i = 0; i < k; ++i) u0(i) = to_search(ps[i], (*start)[i]);
   } else {
-    // Baseline scalars from the config; effect parameters from the best point of a small grid
-    // (default, and two steps either side in the transformed variable) - one cheap evaluation
-    // each, so that the local search starts in the right basin.
-    std::vector<int> fresh;  // parameters of effects base does not have on
+    // Baseline scalars from the config; effect parameters from the default.
     for (int i = 0; i < k; ++i) {
       const bool is_new = ps[i].of_effect && !contact::effect_enabled(base, ps[i].effect);
       u0(i) = to_search(ps[i], is_new ? ps[i].catalogue_default : ps[i].get(base));
       if (is_new) fresh.push_back(i);
     }
-    if (!fresh.empty()) {
-      // A new effect's parameters may start where the effect is negligible (a flat direction a
-      // local search cannot leave) or far from the basin the re-fitted baseline scalars need:
-      // short searches from the default and from every corner 2.5 units away in the transformed
-      // variables (1 + 2^n starts), then the best one is refined below.
-      solvers::LeastSquaresOptions scout;
-      scout.max_iterations = 8;
-      scout.relative_step = 1e-5;
-      const int corners = 1 << fresh.size();
-      double best = -1;
-      Eigen::VectorXd best_u = u0;
-      for (int c = -1; c < corners; ++c) {
-        Eigen::VectorXd u = u0;
-        for (std::size_t j = 0; c >= 0 && j < fresh.size(); ++j) {
-          u(fresh[j]) += (c >> j & 1) ? 2.5 : -2.5;
-        }
-        const auto trial = solvers::levenberg_marquardt(residual, u, scout);
-        if (best < 0 || trial.cost < best) best = trial.cost, best_u = trial.x;
-      }
-      u0 = best_u;
-    }
   }
-  solvers::LeastSquaresOptions opt;
-  opt.max_iterations = 60;
-  opt.relative_step = 1e-5;
-  opt.step_tolerance = 1e-7;
-  const auto lm = solvers::levenberg_marquardt(residual, u0, opt);
+  // Short searches from each start; the best one is refined.
+  auto scout_from = [&](const std::vector<Eigen::VectorXd>& starts) {
+    solvers::LeastSquaresOptions scout;
+    scout.max_iterations = 8;
+    scout.relative_step = 1e-5;
+    double best = -1;
+    Eigen::VectorXd best_u = starts.front();
+    for (const auto& u : starts) {
+      const auto trial = solvers::levenberg_marquardt(residual, u, scout);
+      if (best < 0 || trial.cost < best) best = trial.cost, best_u = trial.x;
+    }
+    return best_u;
+  };
+  if (!fresh.empty()) {
+    // A new effect's parameters may start where the effect is negligible (a flat direction a
+    // local search cannot leave) or far from the basin the re-fitted baseline scalars need:
+    // short searches from the default and from every corner 2.5 units away in the transformed
+    // variables (1 + 2^n starts).
+    std::vector<Eigen::VectorXd> starts = {u0};
+    for (int c = 0; c < 1 << fresh.size(); ++c) {
+      starts.push_back(u0);
+      for (std::size_t j = 0; j < fresh.size(); ++j)
+        starts.back()(fresh[j]) += (c >> j & 1) ? 2.5 : -2.5;
+    }
+    u0 = scout_from(starts);
+  }
+  auto lm = solvers::levenberg_marquardt(residual, u0, opt);
+  // Whether the new effect's strength (its first fitted parameter, as detection_limit.h's) ended
+  // at the bound of its range where the effect is strongest: at the bound where it vanishes the
+  // data ask for none of it (every candidate of a noise-only set), at the other the effect may
+  // saturate an observable over much of the range.
+  const auto at_strong_bound = [&](const Eigen::VectorXd& u) {
+    if (fresh.empty()) return false;
+    const FreeParameter& p = ps[fresh.front()];
+    const std::string side =
+        studies::range_bound_side(from_search(p, u(fresh.front())), p.min, p.max, p.log_scale);
+    if (side.empty()) return false;
+    const contact::EffectInfo& info = contact::effect_info(p.effect);
+    if (info.strength == contact::EffectStrength::inverse) return side == "lower";
+    if (info.strength == contact::EffectStrength::from_neutral && info.neutral <= p.min)
+      return side == "upper";
+    if (info.strength == contact::EffectStrength::from_neutral && info.neutral >= p.max)
+      return side == "lower";
+    return true;  // a neutral value inside the range, or no strength: both bounds
+  };
+  if (at_strong_bound(lm.x)) {
+    // Ended at a bound of the new effect's range where it is strongest: no value located. The
+    // cost can be flat over much of the range with a narrow basin elsewhere (the lateral belt's
+    // foundation on twelve SF-350 footprints: profile RMS 2.7 % from 10 to 250 MPa/m, 1.2 % at
+    // 300-500), and the default and its corners can all lie on the plateau: scout the strength
+    // parameter's whole transformed range too (u = -4 ... 4, the range's 2 % to 98 % points)
+    // and keep the better refined fit.
+    std::vector<Eigen::VectorXd> starts;
+    for (double u : {-4.0, -2.0, 0.0, 2.0, 4.0}) {
+      starts.push_back(lm.x);
+      for (int i : fresh) starts.back()(i) = to_search(ps[i], ps[i].catalogue_default);
+      starts.back()(fresh.front()) = u;
+    }
+    const auto other = solvers::levenberg_marquardt(residual, scout_from(starts), opt);
+    if (other.cost < lm.cost) lm = other;
+  }
 
   FitResult fr = evaluate_fit(ev, base, v, values_of(ps, lm.x), entries);
   fr.evaluations += evaluations;

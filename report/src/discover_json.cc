@@ -29,6 +29,19 @@ nlohmann::json errors(const std::map<std::string, double>& m) {
   return j;
 }
 
+// A named parameter's band at two standard errors (profile_band.h): [lower, upper] and whether
+// each side reaches the parameter's range bound.
+nlohmann::json bands(const std::map<std::string, discover::ParameterBand>& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [key, b] : m) {
+    j[key] = {{"lower", round_sig(b.lower, 6)},
+              {"upper", round_sig(b.upper, 6)},
+              {"lower_at_bound", b.lower_at_bound},
+              {"upper_at_bound", b.upper_at_bound}};
+  }
+  return j;
+}
+
 // The candidate's detection limit (issue 23), null with a reason where there is none: an
 // untestable or named candidate, or one whose limit cannot be computed.
 void put_limit(const discover::CandidateScore& c, nlohmann::json& j) {
@@ -51,6 +64,18 @@ void put_limit(const discover::CandidateScore& c, nlohmann::json& j) {
                           {"probability", 0.8},
                           {"observable_rms_rel", gaps(l.observable_rms_rel)}};
   j["power_at_default"] = round_sig(l.power_at_default, 3);
+  if (!l.two_sided) return;
+  // The side below the neutral value (detection_limit.h): null with a reason when none.
+  nlohmann::json lower = {{"reference_value", round_sig(l.lower_reference_value, 4)},
+                          {"power_at_reference", round_sig(l.power_at_lower_reference, 3)}};
+  if (l.lower_reason.empty()) {
+    lower["value"] = round_sig(l.lower_value, 4);
+    lower["bound"] = "at most";
+  } else {
+    lower["value"] = nullptr;
+    lower["reason"] = l.lower_reason;
+  }
+  j["detection_limit"]["below_neutral"] = lower;
 }
 
 nlohmann::json more_rows_json(const discover::MoreRows& m) {
@@ -96,6 +121,7 @@ nlohmann::json discover_json(const discover::DiscoverReport& r, const std::strin
     effects.push_back({{"name", e.name},
                        {"parameters", values(e.parameters)},
                        {"standard_errors", errors(e.standard_errors)},
+                       {"bands_two_standard_errors", bands(e.bands)},
                        {"at_bound", e.at_bound},
                        {"delta_bic", round_sig(e.delta_bic, 6)},
                        {"cv_rms_before", round_sig(e.cv_rms_before, 6)},

@@ -196,7 +196,15 @@ TEST_F(DiscoverCli, JsonOnASmallDataSetAndTheAugmentedConfigRuns) {
   EXPECT_LE(std::abs(j["regime"]["correlation"].get<double>()), 1.0);
   ASSERT_TRUE(j["effects"].is_array());
   EXPECT_LE(j["effects"].size(), 1u);  // --max-effects 1
-  for (const auto& e : j["effects"]) EXPECT_TRUE(e["name"].is_string());
+  for (const auto& e : j["effects"]) {
+    EXPECT_TRUE(e["name"].is_string());
+    // Each fitted value inside its band (profile likelihood, two standard errors).
+    for (const auto& [key, value] : e["parameters"].items()) {
+      const auto& b = e["bands_two_standard_errors"][key];
+      EXPECT_LE(b["lower"].get<double>(), value.get<double>()) << e;
+      EXPECT_GE(b["upper"].get<double>(), value.get<double>()) << e;
+    }
+  }
   ASSERT_TRUE(j["candidates"].is_array());
   ASSERT_FALSE(j["candidates"].empty());
   for (const auto& c : j["candidates"]) {
@@ -220,6 +228,9 @@ TEST_F(DiscoverCli, JsonOnASmallDataSetAndTheAugmentedConfigRuns) {
         EXPECT_GE(kv.value().get<double>(), 0) << c;
       EXPECT_GE(c["power_at_default"].get<double>(), 0) << c;
       EXPECT_LE(c["power_at_default"].get<double>(), 1) << c;
+      // A two-sided effect's limit below its neutral value lies below the one above it.
+      if (l.contains("below_neutral") && l["below_neutral"]["value"].is_number())
+        EXPECT_LT(l["below_neutral"]["value"].get<double>(), l["value"].get<double>()) << c;
     }
   }
   EXPECT_EQ(j["out_config"], cfg);

@@ -69,6 +69,17 @@ struct DetectionLimit {
   /// named with `power` probability; 0 when max_replicas do not suffice or not asked
   /// (LimitFinder::replicas_for_default).
   int replicas_for_default = 0;
+  /// An effect that grows on both sides of its neutral value (crown_shape's exponent below and
+  /// above the circular crown's 2, load_stiffening's exponent of either sign): the limit on the
+  /// side the catalogue default is not on, searched from the default's mirror image about the
+  /// neutral value (reference_value; half-way to the range's bound when the mirror lies beyond
+  /// it). Revealed at values <= lower_value below the neutral value.
+  bool two_sided = false;
+  double lower_value = 0;
+  double lower_reference_value = 0;
+  double lower_magnitude = 0;  ///< over the reference's strength
+  std::string lower_reason;    ///< empty when computed
+  double power_at_lower_reference = 0;
   bool computed() const { return reason.empty(); }
 };
 
@@ -82,7 +93,9 @@ class LimitFinder {
 
   /// Thread-safe (candidates may run in parallel). About 2 k + 10 evaluations of all rows
   /// (k: the effect's fitted parameters).
-  DetectionLimit limit(contact::EffectId id) const;
+  /// `below_neutral`: search the side below a neutral value inside the range too (discover asks
+  /// it where the candidate's own fit lies on that side).
+  DetectionLimit limit(contact::EffectId id, bool below_neutral = true) const;
 
   /// Times the rows must be repeated (1 = as they are, up to options.max_replicas; 0 = not
   /// enough) for the effect at its catalogue default to be named with options.power
@@ -98,7 +111,10 @@ class LimitFinder {
 
  private:
   struct Path;
-  Path path(contact::EffectId id) const;
+  /// `lower`: the side below the neutral value of a two-sided effect.
+  Path path(contact::EffectId id, bool lower = false) const;
+  /// The limit along one path: value, magnitude, power at m = 1 and the reason when none.
+  void search(const Path& p, DetectionLimit& out) const;
   double power(const Path& p, const Eigen::VectorXd& signal, int replicas) const;
   Eigen::VectorXd signal(const Path& p, double m) const;
 

@@ -33,6 +33,7 @@
 #include "modaltyre/discover/large_fit.h"
 #include "modaltyre/discover/model_fit.h"
 #include "modaltyre/discover/model_uncertainty.h"
+#include "modaltyre/discover/profile_band.h"
 #include "modaltyre/discover/traction_evidence.h"
 #include "modaltyre/studies/measurements.h"
 
@@ -122,6 +123,9 @@ struct NamedEffect {
   std::string name;
   std::map<std::string, double> parameters;  ///< the effect's fitted parameters
   std::map<std::string, double> standard_errors;
+  /// Two standard errors either side from the profile likelihood (profile_band.h); up to
+  /// DiscoverOptions::fit.exact_rows rows, else the Gauss-Newton value +- 2 standard errors.
+  std::map<std::string, ParameterBand> bands;
   /// Parameters that ended at a bound of their range: the data bound them from one side only
   /// (e.g. a stiffness "at least this large"), the value is not a measurement.
   std::vector<std::string> at_bound;
