@@ -229,8 +229,9 @@ TEST_F(DiscoverCli, JsonOnASmallDataSetAndTheAugmentedConfigRuns) {
       EXPECT_GE(c["power_at_default"].get<double>(), 0) << c;
       EXPECT_LE(c["power_at_default"].get<double>(), 1) << c;
       // A two-sided effect's limit below its neutral value lies below the one above it.
-      if (l.contains("below_neutral") && l["below_neutral"]["value"].is_number())
+      if (l.contains("below_neutral") && l["below_neutral"]["value"].is_number()) {
         EXPECT_LT(l["below_neutral"]["value"].get<double>(), l["value"].get<double>()) << c;
+      }
     }
   }
   EXPECT_EQ(j["out_config"], cfg);
