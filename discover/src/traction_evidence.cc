@@ -58,7 +58,7 @@ TractionRows::TractionRows(const contact::TyreConfig& config, const studies::Mea
                          " need a soil to roll on: give --ground SOIL.yaml or a config with a "
                          "ground: section of model bekker or kelvin_voigt");
   modes_ = contact::config_modes(config);
-  if (!flexing) return;
+  if (!flexing || config.rigid) return;  // the rigid wheel has no flexing loss
   // The flexing loss per speed over that speed's loads, once, at the config as given.
   const contact::TyreModel model = contact::build_tyre_model(config, modes_);
   std::map<double, std::set<double>> loads;
@@ -90,6 +90,10 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
   for (int k = 0; k < n; ++k) {
     const Group& g = groups_[run[k]];
     contact::TractionOptions opt;  // ISTVS slip against the rolling radius, as `traction`
+    // The row's speed, as `traction --speed-km-h` gives it: a Kelvin-Voigt soil's rate term
+    // (soil_viscosity) acts at it (docs/soil.md 3.2); the Bekker soils do not read it.
+    opt.speed_m_per_s = g.speed_kmh / 3.6;
+    opt.rigid = config.rigid;  // tyre.rigid=true: the rigid cylinder, as `traction` rolls it
     std::set<double> s;
     for (int r : wanted[run[k]]) {
       s.insert(data_.rows[r].traction->slip);
