@@ -81,7 +81,17 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
     if (!wanted[g].empty()) run.push_back(static_cast<int>(g));
   std::map<int, contact::TractionResult> out;
   if (run.empty()) return out;
-  const contact::TyreModel model = contact::build_tyre_model(config, modes_);
+  // The rigid cylinder of a 3D config rolls at the 3D patch's tread width, as `traction` rolls
+  // it (report/traction_run.cc, use_2d_patch_of_3d); it reads no modes.
+  const bool cylinder_of_3d = config.rigid && config.footprint_3d;
+  contact::TyreConfig rolled;
+  if (cylinder_of_3d) {
+    rolled = config;
+    rolled.tread.width_m = rolled.footprint_3d->tread_width_m;
+    rolled.footprint_3d.reset();
+  }
+  const contact::TyreModel model =
+      contact::build_tyre_model(cylinder_of_3d ? rolled : config, modes_);
   std::vector<std::vector<contact::TractionResult>> results(run.size());
   std::vector<std::vector<double>> slips(run.size());
   const int n = static_cast<int>(run.size());
