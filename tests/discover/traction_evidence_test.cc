@@ -138,6 +138,17 @@ TEST(TractionEvidence, TheModelsOwnCurvesGiveZeroResidualsRowForRow) {
   EXPECT_EQ(ev.traction_cases(), 4 + 4 * 2);  // two curves, the second with 2 passes
 }
 
+// The rows' model at `c` reproduces the two rows of `data` (made without noise) exactly.
+void expect_rolled_exactly(const TyreConfig& c, const studies::MeasurementSet& data) {
+  const contact::TyreModel model = contact::build_tyre_model(c);
+  const Evaluator ev(model, data);
+  const auto entries = ev.entries({0, 1});
+  int failures = -1;
+  const auto r = ev.residuals(c, entries, failures);
+  EXPECT_EQ(failures, 0);
+  for (std::size_t i = 0; i < r.size(); ++i) EXPECT_LT(std::abs(r[i]), 1e-9) << i;
+}
+
 TEST(TractionEvidence, RowsOfTheRigidWheelOnAViscousSoilRollItAtTheirSpeed) {
   // tyre.rigid=true and a Kelvin-Voigt soil's rate term (docs/soil.md 3.2's soil, eta2 50 kPa s):
   // the rows' model is the rigid cylinder at the row's speed, as `traction` rolls it. Rolled as
@@ -156,13 +167,7 @@ TEST(TractionEvidence, RowsOfTheRigidWheelOnAViscousSoilRollItAtTheirSpeed) {
   o.rigid = true;
   o.speed_m_per_s = 5 / 3.6;
   const auto data = make_traction_data(c, curve_rows({3000}, {0.1, 0.3}), 0, 1, "rigid_kv", o);
-  const contact::TyreModel model = contact::build_tyre_model(c);
-  const Evaluator ev(model, data);
-  const auto entries = ev.entries({0, 1});
-  int failures = -1;
-  const auto r = ev.residuals(c, entries, failures);
-  EXPECT_EQ(failures, 0);
-  for (std::size_t i = 0; i < r.size(); ++i) EXPECT_LT(std::abs(r[i]), 1e-9) << i;
+  expect_rolled_exactly(c, data);
 }
 
 TEST(TractionEvidence, TheRigidWheelOfThe3dDefaultRollsAtItsTreadWidth) {
@@ -182,13 +187,7 @@ TEST(TractionEvidence, TheRigidWheelOfThe3dDefaultRollsAtItsTreadWidth) {
   contact::TractionOptions o;
   o.rigid = true;
   const auto data = make_traction_data(wheel, curve_rows({3000}, {0.1, 0.3}), 0, 1, "rigid3d", o);
-  const contact::TyreModel model = contact::build_tyre_model(c);
-  const Evaluator ev(model, data);
-  const auto entries = ev.entries({0, 1});
-  int failures = -1;
-  const auto r = ev.residuals(c, entries, failures);
-  EXPECT_EQ(failures, 0);
-  for (std::size_t i = 0; i < r.size(); ++i) EXPECT_LT(std::abs(r[i]), 1e-9) << i;
+  expect_rolled_exactly(c, data);
 }
 
 DiscoverOptions traction_options() {
