@@ -25,8 +25,11 @@ Usage (from the checkout; one table row per set, exit 1 if a check fails):
 Sets: EFFECT@SOIL (slip_sinkage, soil_unloading, bulldozing, wong_reece_stress on lete_sand and
 sandy_loam; soil_viscosity on kv) and noise@SOIL; then EFFECT@SOIL+rigid for the two effects
 the registry takes on the rigid wheel only, with noise@lete_sand+rigid and noise@kv+rigid: the
-same on the rigid cylinder (--set tyre.rigid=true for traction and discover). Only the standard library is used; the noise
-and run helpers are bench/discover_outside_check.py's, the gap bench/discover_default_check.py's.
+same on the rigid cylinder (--set tyre.rigid=true for traction and discover). discover runs at
+4 mm and names one effect by default: a set on the 3D patch is ~8 min of CPU even so
+(docs/discover.md, "Hidden soil effects on the default tyre"). Only the standard library is
+used; the noise and run helpers are bench/discover_outside_check.py's, the gap
+bench/discover_default_check.py's.
 """
 import argparse
 import csv
