@@ -227,10 +227,12 @@ def main():
         ok, refused, recovered = judge(j, planted)
         before, after = pooled_gaps(j)
         failures += not ok
-        print("%s | %s | %s | %.2f -> %.2f %% | %s | %s | %.0f" % (
+        gap = ("%.2f -> %.2f %%" % (100 * before, 100 * after) if before is not None else
+               "- (no candidate testable)")
+        print("%s | %s | %s | %s | %s | %s | %.0f" % (
             tag, ", ".join("%s %.4g" % (k.split(".")[-1], v) for k, v in planted[1].items())
             if planted else "none", ",".join(e["name"] for e in j["effects"]) or "nothing",
-            100 * (before or 0), 100 * (after or 0), recovered,
+            gap, recovered,
             ("refused on main" if ok else "FAIL (named on refused)") if refused else
             ("ok" if ok else "FAIL"), seconds))
         sys.stdout.flush()
