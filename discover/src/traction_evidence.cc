@@ -58,7 +58,7 @@ TractionRows::TractionRows(const contact::TyreConfig& config, const studies::Mea
                          " need a soil to roll on: give --ground SOIL.yaml or a config with a "
                          "ground: section of model bekker or kelvin_voigt");
   modes_ = contact::config_modes(config);
-  if (!flexing) return;
+  if (!flexing || config.rigid) return;  // the rigid wheel has no flexing loss
   // The flexing loss per speed over that speed's loads, once, at the config as given.
   const contact::TyreModel model = contact::build_tyre_model(config, modes_);
   std::map<double, std::set<double>> loads;
@@ -81,7 +81,17 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
     if (!wanted[g].empty()) run.push_back(static_cast<int>(g));
   std::map<int, contact::TractionResult> out;
   if (run.empty()) return out;
-  const contact::TyreModel model = contact::build_tyre_model(config, modes_);
+  // The rigid cylinder of a 3D config rolls at the 3D patch's tread width, as `traction` rolls
+  // it (report/traction_run.cc, use_2d_patch_of_3d); it reads no modes.
+  const bool cylinder_of_3d = config.rigid && config.footprint_3d;
+  contact::TyreConfig rolled;
+  if (cylinder_of_3d) {
+    rolled = config;
+    rolled.tread.width_m = rolled.footprint_3d->tread_width_m;
+    rolled.footprint_3d.reset();
+  }
+  const contact::TyreModel model =
+      contact::build_tyre_model(cylinder_of_3d ? rolled : config, modes_);
   std::vector<std::vector<contact::TractionResult>> results(run.size());
   std::vector<std::vector<double>> slips(run.size());
   const int n = static_cast<int>(run.size());
@@ -90,6 +100,10 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
   for (int k = 0; k < n; ++k) {
     const Group& g = groups_[run[k]];
     contact::TractionOptions opt;  // ISTVS slip against the rolling radius, as `traction`
+    // The row's speed, as `traction --speed-km-h` gives it: a Kelvin-Voigt soil's rate term
+    // (soil_viscosity) acts at it (docs/soil.md 3.2); the Bekker soils do not read it.
+    opt.speed_m_per_s = g.speed_kmh / 3.6;
+    opt.rigid = config.rigid;  // tyre.rigid=true: the rigid cylinder, as `traction` rolls it
     std::set<double> s;
     for (int r : wanted[run[k]]) {
       s.insert(data_.rows[r].traction->slip);
@@ -98,7 +112,6 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
     slips[k].assign(s.begin(), s.end());  // increasing: each slip warm-starts the next
     const auto f = flex_.find({g.speed_kmh, g.load_N});
     if (f != flex_.end()) opt.flexing_resistance_N[g.load_N] = f->second;
-    opt.speed_m_per_s = g.speed_kmh / 3.6;  // the rate term eta2 rolls at the row's speed
     std::vector<contact::TractionCase> cases;
     for (double slip : slips[k]) cases.push_back({g.load_N, slip});
     results[k] = contact::steady_traction(model, config.ground, cases, opt);
