@@ -99,7 +99,7 @@ EffectInfo slip_sinkage() {
 
 EffectInfo wong_reece_stress() {
   EffectOption o;
-  o.keys = "ground.bekker.wong_reece.enabled=true (a candidate with tyre.rigid=true)";
+  o.keys = "ground.bekker.wong_reece.enabled=true";
   o.is_on = [](const TyreConfig& c) {
     return c.ground.model == GroundModel::bekker && c.ground.wong_reece.enabled;
   };
@@ -112,11 +112,7 @@ EffectInfo wong_reece_stress() {
   // The rigid wheel's distribution (docs/soil.md 3.1); the flexible tyre's rear soil flows at it
   // (section 10). c1 is searched from 0.1: from 0, discover named it on noise-only traction
   // curves at c1 0.037 (a rear region of one unit moving the fixed point's stopping point).
-  o.refusal = [](const TyreConfig& c) -> std::string {
-    const std::string why = needs_bekker(c, "the Wong-Reece stress");
-    if (!why.empty()) return why;
-    return "";
-  };
+  o.refusal = [](const TyreConfig& c) { return needs_bekker(c, "the Wong-Reece stress"); };
   EffectInfo e{EffectId::wong_reece_stress,
                "wong_reece_stress",
                "the normal stress peaks behind the entry, at theta_m = (c1 + c2 s) theta1, moving "
