@@ -1,7 +1,9 @@
 #include "fmu_host.h"
 
 #include <dlfcn.h>
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
 #include <unistd.h>
 #include <zip.h>
 
@@ -11,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <sstream>
 
@@ -89,19 +92,15 @@ void logger(fmi2ComponentEnvironment env, fmi2String, fmi2Status status, fmi2Str
 
 }  // namespace
 
-std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets,
-                           const std::string& ground) {
-  static std::atomic<int> counter{0};
-  const fs::path dir =
-      fs::temp_directory_path() /
-      ("modaltyre_fmu_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+namespace {
+
+/// Packs with `cmd` into dir/tyre.fmu and unzips it to dir/unzipped; "" (and a gtest failure
+/// with the packer's output) if `modaltyre fmu` fails.
+std::string pack_into(std::string cmd, const fs::path& dir) {
   fs::remove_all(dir);
   fs::create_directories(dir / "unzipped");
   const std::string fmu = (dir / "tyre.fmu").string();
-  std::string cmd = std::string(MODALTYRE_CLI) + " fmu " + config + " --output " + fmu;
-  for (const std::string& s : sets) cmd += " --set " + s;
-  if (!ground.empty()) cmd += " --ground " + ground;
-  cmd += " > " + (dir / "pack.log").string() + " 2>&1";
+  cmd += " --output " + fmu + " > " + (dir / "pack.log").string() + " 2>&1";
   const int rc = std::system(cmd.c_str());
   if (rc != 0) {
     std::ifstream in(dir / "pack.log");
@@ -112,6 +111,51 @@ std::string pack_and_unzip(const std::string& config, const std::vector<std::str
   }
   unzip(fmu, dir / "unzipped");
   return (dir / "unzipped").string();
+}
+
+/// An exclusive lock on a file for the lifetime of the object (two ctest -j processes may ask
+/// for the same FMU at once: one packs, the other waits and reuses).
+class FileLock {
+ public:
+  explicit FileLock(const fs::path& path) : fd_(::open(path.c_str(), O_RDWR | O_CREAT, 0644)) {
+    if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+  }
+  ~FileLock() {
+    if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+  }
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  int fd_;
+};
+
+}  // namespace
+
+std::string pack_and_unzip(const std::string& config, const std::vector<std::string>& sets,
+                           const std::string& ground) {
+  std::string cmd = std::string(MODALTYRE_CLI) + " fmu " + config;
+  for (const std::string& s : sets) cmd += " --set " + s;
+  if (!ground.empty()) cmd += " --ground " + ground;
+  // Under ctest: one packed folder per distinct command in the run's cache (tests/CMakeLists.txt,
+  // the FmuPackCache fixture empties it first, so a rebuilt modaltyre is always repacked).
+  if (const char* cache = std::getenv("MODALTYRE_FMU_PACK_CACHE"); cache && *cache) {
+    std::ostringstream key;
+    key << std::hex << std::hash<std::string>{}(cmd);
+    const fs::path dir = fs::path(cache) / key.str();
+    fs::create_directories(cache);
+    const FileLock lock(fs::path(cache) / (key.str() + ".lock"));
+    std::ifstream done(dir / "complete");
+    std::string packed;
+    if (std::getline(done, packed) && packed == cmd) return (dir / "unzipped").string();
+    std::string folder = pack_into(cmd, dir);
+    if (!folder.empty()) std::ofstream(dir / "complete") << cmd << "\n";
+    return folder;
+  }
+  static std::atomic<int> counter{0};
+  return pack_into(
+      cmd, fs::temp_directory_path() / ("modaltyre_fmu_test_" + std::to_string(::getpid()) + "_" +
+                                        std::to_string(counter++)));
 }
 
 const FmuFolder& road_2d_fmu() {
