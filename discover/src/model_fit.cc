@@ -257,14 +257,24 @@ std::vector<double> standard_errors(const studies::MeasurementSet& data, const F
     const auto it = fr.rms.find(data.observables[o]);
     if (it != fr.rms.end()) sigma[o] = std::max(it->second, 1e-4);
   }
-  Eigen::MatrixXd J = jacobian;
+  // A parameter no row reads (its column exactly zero: e.g. the baseline's tyre scalars under
+  // traction rows of the rigid wheel, tyre.rigid=true) is not identified and keeps an infinite
+  // error; it must not make the others' errors infinite too, so the information matrix is formed
+  // over the columns the rows read.
+  std::vector<int> read;
+  for (int j = 0; j < k; ++j)
+    if (jacobian.rows() > 0 && jacobian.col(j).cwiseAbs().maxCoeff() > 0) read.push_back(j);
+  const int kr = static_cast<int>(read.size());
+  Eigen::MatrixXd J(jacobian.rows(), kr);
+  for (int j = 0; j < kr; ++j) J.col(j) = jacobian.col(read[j]);
   for (int i = 0; i < J.rows(); ++i) J.row(i) /= sigma[fr.entries[i].observable];
+  std::vector<double> se(k, std::numeric_limits<double>::infinity());
+  if (kr == 0) return se;
   const Eigen::MatrixXd info = J.transpose() * J;
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(info);
-  std::vector<double> se(k, std::numeric_limits<double>::infinity());
-  if (cod.rank() < k) return se;  // not identifiable: infinite uncertainty
+  if (cod.rank() < kr) return se;  // not identifiable: infinite uncertainty
   const Eigen::MatrixXd cov = cod.pseudoInverse();
-  for (int j = 0; j < k; ++j) se[j] = std::sqrt(std::max(cov(j, j), 0.0));
+  for (int j = 0; j < kr; ++j) se[read[j]] = std::sqrt(std::max(cov(j, j), 0.0));
   return se;
 }
 

@@ -277,5 +277,34 @@ TEST(TractionDiscover, HiddenSoilUnloadingIsNamedWithItsAuInItsBand) {
       << e.parameters.at(key) << " +- " << e.standard_errors.at(key);
 }
 
+TEST(TractionDiscover, TheRigidWheelsSoilParametersGetFiniteErrorsAndTheirBand) {
+  // tyre.rigid=true: the rows never read the baseline's tyre scalars (compliance, tread modulus),
+  // whose Jacobian columns are zero. The soil parameter the rows do read still gets a finite
+  // standard error, and Wong and Reece's compact-sand c1 (0.43, docs/soil.md 3.1) hidden with 2 %
+  // noise is recovered within two of them; the tyre scalars stay unidentified (infinite).
+  TyreConfig c = lete_config();
+  c.rigid = true;
+  TyreConfig truth = c;
+  truth.ground.wong_reece.enabled = true;
+  truth.ground.wong_reece.c1 = 0.43;
+  truth.ground.wong_reece.c2 = 0.32;
+  contact::TractionOptions o;
+  o.rigid = true;
+  const auto rows = curve_rows({2500, 4000}, {0.05, 0.2, 0.5});
+  const auto data = make_traction_data(truth, rows, 0.02, 31, "rigid_wr", o);
+  const DiscoverReport r = discover(c, data, traction_options());
+  ASSERT_EQ(r.effects.size(), 1u) << r.conclusion;
+  const NamedEffect& e = r.effects.front();
+  EXPECT_EQ(e.name, "wong_reece_stress");
+  for (const char* key : {"ground.bekker.wong_reece.c1", "ground.bekker.wong_reece.c2"}) {
+    ASSERT_TRUE(e.standard_errors.count(key)) << key;
+    EXPECT_TRUE(std::isfinite(e.standard_errors.at(key))) << key;
+    EXPECT_GT(e.standard_errors.at(key), 0) << key;
+  }
+  const std::string c1 = "ground.bekker.wong_reece.c1";
+  EXPECT_LT(std::abs(e.parameters.at(c1) - 0.43), 2 * e.standard_errors.at(c1))
+      << e.parameters.at(c1) << " +- " << e.standard_errors.at(c1);
+}
+
 }  // namespace
 }  // namespace modaltyre::discover
