@@ -109,6 +109,11 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
   const std::vector<double> atol = sys.absolute_tolerances();
   SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.has_road());
   reuse.remember(y);
+  // Samples with the forces only (TransientRunOptions::summary_samples): the final one is made
+  // whole after the loop from the last computed sample's state and time (t_remembered), which is
+  // what a whole run's final sample repeats or is.
+  const bool forces_only = options.summary_samples && !M.tyre.config.ground.soil();
+  double t_remembered = 0.0;
   std::vector<double> breaks = plan.breakpoints;
   std::sort(breaks.begin(), breaks.end());
   std::size_t next_break = 0;
@@ -174,8 +179,10 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
         smp.speed_m_s = plan.speed(t_out);
         res.samples.push_back(smp);
       } else {
-        res.samples.push_back(sys.observe(t_out, y_out.data()));
+        res.samples.push_back(forces_only ? sys.observe_forces(t_out, y_out.data())
+                                          : sys.observe(t_out, y_out.data()));
         reuse.remember(y_out);
+        t_remembered = t_out;
         if (bounded) reuse_until = t_out + kSlackSafety * reuse.slack_s(y_out, rate);
       }
       if (options.progress && !options.progress(t_out, T)) {
@@ -250,6 +257,14 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
       ode.set_max_step(plan.step_limit(st.t));
       ++next_break;
     }
+  }
+  if (forces_only && res.samples.size() > 1) {
+    TransientSample& fin = res.samples.back();
+    TransientSample whole = sys.observe(t_remembered, reuse.last_state());
+    whole.t_s = fin.t_s;
+    whole.applied_load_N = fin.applied_load_N;
+    whole.speed_m_s = fin.speed_m_s;
+    fin = whole;
   }
   res.simulated_s = ode.time();
   res.stats = ode.stats();

@@ -131,6 +131,14 @@ struct TransientRunOptions {
   /// 3D patch: one class per column instead of merging columns of equal drop and road (the
   /// full per-cell model, for tests of the reduction).
   bool per_column_cells = false;
+  /// The output samples between the first and the last with the forces only: t_s, load_N,
+  /// applied_load_N, hub_displacement_m, longitudinal_force_N, pressure_centre_m, speed_m_s and
+  /// contact_units, each with the bits of the full sample; sinking, length, width and area not
+  /// computed. What the JSON, the summary and the bands read (the final sample, the rolling
+  /// resistance, the free vibration's decay), not the CSV or the plot; the first and the final
+  /// sample stay whole. The width and edges were ~3/4 of a 3D sample's work. Ignored on a soil (its
+  /// final sample reads the soil's memory of the run's end).
+  bool summary_samples = false;
 };
 
 /// Runs a scenario. Failures of the integrator are reported in the result (message and time
