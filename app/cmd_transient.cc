@@ -322,6 +322,9 @@ void register_transient(CLI::App& app) {
       return true;
     };
     opts.map_times_s = a->map_times;
+    // Without a CSV or a plot the printed outputs read only the samples' forces and the final
+    // sample (TransientRunOptions::summary_samples).
+    opts.summary_samples = a->csv.empty() && a->plot.empty();
     if (!a->map_times.empty() && a->map_csv.empty())
       throw InputError({"--map-times", 0, ""}, "needs --map-csv FILE to write the maps to");
     if (!a->map_csv.empty() && a->map_times.empty())

@@ -22,6 +22,8 @@ constexpr double kZenoWindow_s = 1e-12;
 constexpr int kBoundedStepSamples = 4;
 /// Fraction of the proven time a sample is repeated over (rounding of the interpolant).
 constexpr double kSlackSafety = 0.5;
+/// The rolling resistance is the mean of -F_x over the samples from this share of the run.
+constexpr double kResistanceFrom = 0.9;
 
 }  // namespace
 
@@ -109,6 +111,26 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
   const std::vector<double> atol = sys.absolute_tolerances();
   SampleReuse reuse(M.settings.relative_tolerance, atol, !plan.has_road());
   reuse.remember(y);
+  // Samples with the forces only (TransientRunOptions::summary_samples): the final one is made
+  // whole after the loop from the last computed sample's state and time (t_remembered), which is
+  // what a whole run's final sample repeats or is.
+  const bool forces_only = options.summary_samples && !M.tyre.config.ground.soil();
+  double t_remembered = 0.0;
+  bool remembered_forces = true;  // whether the last computed sample carries its forces
+  // A computed sample: whole; or with summary samples the forces in the rolling resistance's
+  // window (its start a rounding margin early) and before it the hub alone (as observe(): the
+  // plan's hub_z of the state's z), which the decay on the samples reads.
+  const double forces_from = kResistanceFrom * T * (1 - 1e-9);
+  auto sample_at = [&](double t, const std::vector<double>& ys) {
+    if (!forces_only) return sys.observe(t, ys.data());
+    if (t >= forces_from) return sys.observe_forces(t, ys.data());
+    TransientSample s;
+    s.t_s = t;
+    s.applied_load_N = plan.load(t);
+    s.speed_m_s = plan.speed(t);
+    s.hub_displacement_m = plan.hub_z(t, ys[static_cast<std::size_t>(M.z_index())]);
+    return s;
+  };
   std::vector<double> breaks = plan.breakpoints;
   std::sort(breaks.begin(), breaks.end());
   std::size_t next_break = 0;
@@ -169,13 +191,21 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
         // observables are the same to that accuracy; only the time and the scenario's own
         // functions advance.
         TransientSample smp = res.samples.back();
+        // (Summary samples: a repeat inside the resistance's window of a sample computed
+        // before it takes the forces that sample's state has.)
+        if (forces_only && !remembered_forces && t_out >= forces_from) {
+          smp = sys.observe_forces(t_remembered, reuse.last_state());
+          remembered_forces = true;
+        }
         smp.t_s = t_out;
         smp.applied_load_N = plan.load(t_out);
         smp.speed_m_s = plan.speed(t_out);
         res.samples.push_back(smp);
       } else {
-        res.samples.push_back(sys.observe(t_out, y_out.data()));
+        res.samples.push_back(sample_at(t_out, y_out));
+        remembered_forces = !forces_only || t_out >= forces_from;
         reuse.remember(y_out);
+        t_remembered = t_out;
         if (bounded) reuse_until = t_out + kSlackSafety * reuse.slack_s(y_out, rate);
       }
       if (options.progress && !options.progress(t_out, T)) {
@@ -251,6 +281,14 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
       ++next_break;
     }
   }
+  if (forces_only && res.samples.size() > 1) {
+    TransientSample& fin = res.samples.back();
+    TransientSample whole = sys.observe(t_remembered, reuse.last_state());
+    whole.t_s = fin.t_s;
+    whole.applied_load_N = fin.applied_load_N;
+    whole.speed_m_s = fin.speed_m_s;
+    fin = whole;
+  }
   res.simulated_s = ode.time();
   res.stats = ode.stats();
   extremes.finish(res);
@@ -263,7 +301,7 @@ TransientResult run_plan(PatchOde& sys, const TransientModel& M, const ScenarioP
     res.message = msg.str();
   }
   // Rolling resistance: mean of -F_x over the last 10 % of the run.
-  const double t_from = 0.9 * res.simulated_s;
+  const double t_from = kResistanceFrom * res.simulated_s;
   double sum = 0;
   int cnt = 0;
   for (const auto& s : res.samples)

@@ -27,6 +27,8 @@ class SampleReuse {
     return ((v - last_).abs() <= bound_).all();
   }
   bool allowed() const { return allowed_; }
+  /// The state of the last remember() (size() entries).
+  const double* last_state() const { return last_.data(); }
   /// For a state y that unchanged() accepts and rates bounded by |y'| <= rate (per component):
   /// the time over which the state stays within the bound, min (bound - |y - last|) / rate
   /// (infinite where the rate is zero).

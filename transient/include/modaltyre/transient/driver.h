@@ -131,6 +131,16 @@ struct TransientRunOptions {
   /// 3D patch: one class per column instead of merging columns of equal drop and road (the
   /// full per-cell model, for tests of the reduction).
   bool per_column_cells = false;
+  /// The output samples between the first and the last with what the printed outputs read:
+  /// t_s, applied_load_N, speed_m_s and hub_displacement_m (the decay on the samples) of every
+  /// sample, and from 0.9 of the duration (the rolling resistance's window) also load_N,
+  /// longitudinal_force_N, pressure_centre_m and contact_units, each with the bits of the whole
+  /// sample; the rest not computed (0). The first and the final sample stay whole. For the JSON,
+  /// the text summary and the bands, not the CSV or the plot: the width, edges and belt sums
+  /// were ~3/4 of a 3D sample's work, its forces most of the rest. Ignored on a soil (its final
+  /// sample reads the soil's memory at the run's end). A failed run's rolling resistance is then
+  /// not a mean over its last tenth.
+  bool summary_samples = false;
 };
 
 /// Runs a scenario. Failures of the integrator are reported in the result (message and time
