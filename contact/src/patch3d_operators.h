@@ -54,12 +54,17 @@ class CoupledTread {
     return d < static_cast<int>(lags_[m].size()) ? lags_[m][d] : 0.0;
   }
   double cos_theta(int i) const { return cos_[i]; }
+  /// The same layer on the columns j0 .. j0 + n - 1 alone, free at their edges.
+  CoupledTread narrowed(int n) const {
+    return CoupledTread(k_cell_, coupling_, ds_, dy_, sections_, n, cos_);
+  }
   /// Y += (this operator)(r0 .. r0+nr-1, c0 .. c0+nc-1) X.
   void add_product(int r0, int nr, int c0, int nc, const Eigen::Ref<const Eigen::MatrixXd>& X,
                    Eigen::Ref<Eigen::MatrixXd> Y) const;
 
  private:
-  int columns_;
+  double k_cell_, coupling_, ds_, dy_;
+  int sections_, columns_;
   std::vector<double> cos_;
   Eigen::MatrixXd modes_;                  ///< phi_m(j) at (j, m), orthonormal
   Eigen::MatrixXd modes_t_;                ///< its transpose
@@ -87,8 +92,9 @@ class CellCompliance final : public solvers::ComplianceOperator {
   }
   void apply(int r0, int nr, int c0, int nc, const Eigen::Ref<const Eigen::MatrixXd>& X,
              Eigen::Ref<Eigen::MatrixXd> Y) const override;
-  /// With the coupled tread: the exact inverse of this operator on the rectangle of cells the
-  /// set spans, restricted to the set (patch3d_preconditioner.cc); else null (Jacobi).
+  /// With the coupled tread: the inverse of this operator on the rectangle of cells the set
+  /// spans (the layer free at its side columns), restricted to the set
+  /// (patch3d_preconditioner.cc); else null (Jacobi).
   std::unique_ptr<solvers::SetPreconditioner> preconditioner(
       const std::vector<int>& S) const override;
 

@@ -23,7 +23,13 @@ namespace modaltyre::contact::detail {
 
 CoupledTread::CoupledTread(double k_cell_N_m, double coupling_m, double ds_m, double dy_m,
                            int sections, int columns, std::vector<double> cos_theta)
-    : columns_(columns), cos_(std::move(cos_theta)) {
+    : k_cell_(k_cell_N_m),
+      coupling_(coupling_m),
+      ds_(ds_m),
+      dy_(dy_m),
+      sections_(sections),
+      columns_(columns),
+      cos_(std::move(cos_theta)) {
   const int n = columns;
   modes_.resize(n, n);
   lags_.resize(n);
