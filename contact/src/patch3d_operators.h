@@ -24,6 +24,17 @@ class DiagonalShifted final : public solvers::ComplianceOperator {
   std::vector<double> d_;
 };
 
+/// out = A B for the small products of the tread's mode transforms (A: sections x columns, B:
+/// columns x columns) as column updates out.col(m) += B(l, m) A.col(l), which vectorise along
+/// the sections; Eigen's lazy product reads A's rows with a stride, and its blocked GEMM would
+/// start OpenMP threads for these sizes.
+inline void modal_product(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
+                          Eigen::MatrixXd& out) {
+  out.setZero(A.rows(), B.cols());
+  for (Eigen::Index m = 0; m < B.cols(); ++m)
+    for (Eigen::Index l = 0; l < A.cols(); ++l) out.col(m) += B(l, m) * A.col(l);
+}
+
 /// The radial compliance of the shear-coupled tread between cells (patch3d_tread.cc):
 /// cos theta_i cos theta_k T((i, j), (k, l)), T the Pasternak layer's Green's function on the
 /// cell grid (unbounded along the road, free edges across it).
@@ -35,14 +46,28 @@ class CoupledTread {
   /// T's lag-0 entry of column j (without the cos^2 theta weight): a cell's compliance to its
   /// own force.
   double own(int j) const { return own_[j]; }
+  int columns() const { return columns_; }
+  /// phi_m(j) at (j, m): the layer's modes across the tread (orthonormal).
+  const Eigen::MatrixXd& modes() const { return modes_; }
+  /// g_m at lag d along the road (0 beyond the lags kept), and section i's cos theta.
+  double lag(int m, int d) const {
+    return d < static_cast<int>(lags_[m].size()) ? lags_[m][d] : 0.0;
+  }
+  double cos_theta(int i) const { return cos_[i]; }
+  /// The same layer on the columns j0 .. j0 + n - 1 alone, free at their edges.
+  CoupledTread narrowed(int n) const {
+    return CoupledTread(k_cell_, coupling_, ds_, dy_, sections_, n, cos_);
+  }
   /// Y += (this operator)(r0 .. r0+nr-1, c0 .. c0+nc-1) X.
   void add_product(int r0, int nr, int c0, int nc, const Eigen::Ref<const Eigen::MatrixXd>& X,
                    Eigen::Ref<Eigen::MatrixXd> Y) const;
 
  private:
-  int columns_;
+  double k_cell_, coupling_, ds_, dy_;
+  int sections_, columns_;
   std::vector<double> cos_;
   Eigen::MatrixXd modes_;                  ///< phi_m(j) at (j, m), orthonormal
+  Eigen::MatrixXd modes_t_;                ///< its transpose
   std::vector<std::vector<double>> lags_;  ///< g_m at lags 0, 1, ...
   std::vector<double> ratio_;              ///< rho_m = g_m(1) / g_m(0)
   std::vector<double> own_;
@@ -67,6 +92,11 @@ class CellCompliance final : public solvers::ComplianceOperator {
   }
   void apply(int r0, int nr, int c0, int nc, const Eigen::Ref<const Eigen::MatrixXd>& X,
              Eigen::Ref<Eigen::MatrixXd> Y) const override;
+  /// With the coupled tread: the inverse of this operator on the rectangle of cells the set
+  /// spans (the layer free at its side columns), restricted to the set
+  /// (patch3d_preconditioner.cc); else null (Jacobi).
+  std::unique_ptr<solvers::SetPreconditioner> preconditioner(
+      const std::vector<int>& S) const override;
 
  private:
   const solvers::ComplianceOperator& carcass_;

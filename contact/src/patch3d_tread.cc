@@ -23,7 +23,13 @@ namespace modaltyre::contact::detail {
 
 CoupledTread::CoupledTread(double k_cell_N_m, double coupling_m, double ds_m, double dy_m,
                            int sections, int columns, std::vector<double> cos_theta)
-    : columns_(columns), cos_(std::move(cos_theta)) {
+    : k_cell_(k_cell_N_m),
+      coupling_(coupling_m),
+      ds_(ds_m),
+      dy_(dy_m),
+      sections_(sections),
+      columns_(columns),
+      cos_(std::move(cos_theta)) {
   const int n = columns;
   modes_.resize(n, n);
   lags_.resize(n);
@@ -36,6 +42,7 @@ CoupledTread::CoupledTread(double k_cell_N_m, double coupling_m, double ds_m, do
     lags_[m] = pasternak_tread_lags(k_cell_N_m * stiffening, coupling_m / std::sqrt(stiffening),
                                     ds_m, sections);
   }
+  modes_t_ = modes_.transpose();
   ratio_.resize(n);
   for (int m = 0; m < n; ++m) {
     const std::vector<double>& g = lags_[m];
@@ -78,7 +85,7 @@ void CoupledTread::add_product(int r0, int nr, int c0, int nc,
       const int cell = c0 + b, s = cell / n;
       cells(s - s0, cell % n) = cos_[s] * X(b, c);
     }
-    coef.noalias() = cells.lazyProduct(modes_);  // small: no (threaded) GEMM
+    modal_product(cells, modes_, coef);
     // Convolution along the road per mode, onto the row block's sections. g_m is geometric,
     // g_m(d) = g_m(0) rho_m^|d| (pasternak_tread_lags), so the sum over sections is two
     // first-order recursions, one running forward and one back (O(sections) per mode instead
@@ -100,7 +107,7 @@ void CoupledTread::add_product(int r0, int nr, int c0, int nc,
       }
     }
     // Back across the tread, weighted by the row cells' cos theta.
-    back.noalias() = out.lazyProduct(modes_.transpose());
+    modal_product(out, modes_t_, back);
     for (int a = 0; a < nr; ++a) {
       const int cell = r0 + a, q = cell / n;
       Y(a, c) += cos_[q] * back(q - q0, cell % n);

@@ -31,17 +31,17 @@ constexpr int kIterativeThreshold = 96;
 // CG relative residual: far below what the load multiplier and forces need (1e-9).
 constexpr double kCgTolerance = 1e-13;
 
-/// Conjugate gradients for several right-hand sides in lockstep (one product A X per iteration
-/// serves all columns), Jacobi-preconditioned. `product(P, AP)` sets AP = A P. Returns false
-/// without convergence.
-template <class Product>
-bool lockstep_cg(const Product& product, const Eigen::VectorXd& diagonal, const Eigen::MatrixXd& B,
-                 Eigen::MatrixXd& X, double tol, int max_iterations) {
-  const Eigen::VectorXd inv_diag = diagonal.cwiseInverse();
+/// Preconditioned conjugate gradients for several right-hand sides in lockstep (one product A X
+/// per iteration serves all columns). `product(P, AP)` sets AP = A P, `precondition(R, Z)` sets
+/// Z = M^-1 R. Returns false without convergence; `iterations` counts the products.
+template <class Product, class Precondition>
+bool lockstep_cg(const Product& product, const Precondition& precondition, const Eigen::MatrixXd& B,
+                 Eigen::MatrixXd& X, double tol, int max_iterations, int& iterations) {
   Eigen::MatrixXd AP(B.rows(), B.cols());
   product(X, AP);
   Eigen::MatrixXd R = B - AP;
-  Eigen::MatrixXd Z = inv_diag.asDiagonal() * R;
+  Eigen::MatrixXd Z(B.rows(), B.cols());
+  precondition(R, Z);
   Eigen::MatrixXd P = Z;
   const Eigen::Index nrhs = B.cols();
   Eigen::VectorXd rz(nrhs), bnorm(nrhs);
@@ -49,18 +49,24 @@ bool lockstep_cg(const Product& product, const Eigen::VectorXd& diagonal, const 
     rz(c) = R.col(c).dot(Z.col(c));
     bnorm(c) = std::max(B.col(c).norm(), 1e-300);
   }
+  std::vector<char> moved(nrhs);
   for (int it = 0; it < max_iterations; ++it) {
     bool done = true;
     for (Eigen::Index c = 0; c < nrhs; ++c) done = done && R.col(c).norm() <= tol * bnorm(c);
     if (done) return true;
     product(P, AP);
+    ++iterations;
     for (Eigen::Index c = 0; c < nrhs; ++c) {
       const double pAp = P.col(c).dot(AP.col(c));
-      if (!(pAp > 0)) continue;  // this column has converged exactly (or A is not SPD)
+      moved[c] = pAp > 0;
+      if (!moved[c]) continue;  // this column has converged exactly (or A is not SPD)
       const double alpha = rz(c) / pAp;
       X.col(c) += alpha * P.col(c);
       R.col(c) -= alpha * AP.col(c);
-      Z.col(c) = inv_diag.cwiseProduct(R.col(c));
+    }
+    precondition(R, Z);
+    for (Eigen::Index c = 0; c < nrhs; ++c) {
+      if (!moved[c]) continue;
       const double rz_new = R.col(c).dot(Z.col(c));
       P.col(c) = Z.col(c) + (rz_new / rz(c)) * P.col(c);
       rz(c) = rz_new;
@@ -91,7 +97,8 @@ void product_on_set(const ComplianceOperator& C, const std::vector<int>& S,
 }
 
 RestrictedSolve solve_on_set(const ContactProblem& p, const ComplianceOperator& C,
-                             const std::vector<int>& S, SolveWorkspace& ws) {
+                             const std::vector<int>& S, SolveWorkspace& ws,
+                             bool use_operator_preconditioner, int& cg_iterations) {
   const int k = static_cast<int>(S.size());
   Eigen::MatrixXd rhs(k, 2);
   for (int a = 0; a < k; ++a) {
@@ -103,12 +110,24 @@ RestrictedSolve solve_on_set(const ContactProblem& p, const ComplianceOperator& 
   bool solved = false;
   if (p.symmetric && k > kIterativeThreshold) {
     for (int a = 0; a < k; ++a) x(a, 0) = ws.a(S[a]), x(a, 1) = ws.b(S[a]);
-    Eigen::VectorXd diagonal(k);
-    for (int a = 0; a < k; ++a) diagonal(a) = C.entry(S[a], S[a]);
     const auto product = [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& Y) {
       product_on_set(C, S, X, Y, ws);
     };
-    solved = lockstep_cg(product, diagonal, rhs, x, kCgTolerance, 4 * k);
+    const std::unique_ptr<SetPreconditioner> M =
+        use_operator_preconditioner ? C.preconditioner(S) : nullptr;
+    if (M) {
+      const auto precondition = [&](const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) {
+        M->apply(R, Z);
+      };
+      solved = lockstep_cg(product, precondition, rhs, x, kCgTolerance, 4 * k, cg_iterations);
+    } else {
+      Eigen::VectorXd inv_diag(k);
+      for (int a = 0; a < k; ++a) inv_diag(a) = 1.0 / C.entry(S[a], S[a]);
+      const auto jacobi = [&](const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) {
+        Z = inv_diag.asDiagonal() * R;
+      };
+      solved = lockstep_cg(product, jacobi, rhs, x, kCgTolerance, 4 * k, cg_iterations);
+    }
   }
   if (!solved) {
     C.gather(S, ws.A);
@@ -188,7 +207,8 @@ ContactSolution solve_unilateral_contact(const ContactProblem& p, const ContactO
     std::vector<int> S;
     for (int i = 0; i < m; ++i)
       if (in[i]) S.push_back(i);
-    const RestrictedSolve rs = solve_on_set(p, C, S, ws);
+    const RestrictedSolve rs =
+        solve_on_set(p, C, S, ws, opt.operator_preconditioner, sol.cg_iterations);
     if (!rs.ok) {
       sol.status = SolveStatus::singular;
       sol.message = "the compliance restricted to " + std::to_string(S.size()) +

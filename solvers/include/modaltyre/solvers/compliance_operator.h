@@ -3,9 +3,19 @@
 // products with contiguous blocks. Lets the solver run on structured compliances (e.g. the
 // Toeplitz one of toeplitz_compliance.h) without ever forming the m x m matrix.
 #include <Eigen/Dense>
+#include <memory>
 #include <vector>
 
 namespace modaltyre::solvers {
+
+/// An approximation M^-1 of C(S, S)^-1 on one contact set S (symmetric positive definite), for
+/// the conjugate gradients of the contact solve.
+class SetPreconditioner {
+ public:
+  virtual ~SetPreconditioner() = default;
+  /// Z = M^-1 R for R with |S| rows (any number of columns); Z is overwritten.
+  virtual void apply(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) const = 0;
+};
 
 class ComplianceOperator {
  public:
@@ -21,6 +31,11 @@ class ComplianceOperator {
   /// overwritten and must have nr rows and X's columns.
   virtual void apply(int r0, int nr, int c0, int nc, const Eigen::Ref<const Eigen::MatrixXd>& X,
                      Eigen::Ref<Eigen::MatrixXd> Y) const = 0;
+  /// A preconditioner of C(S, S) for a structured operator (S sorted); null: the solver's
+  /// Jacobi one (the default).
+  virtual std::unique_ptr<SetPreconditioner> preconditioner(const std::vector<int>& /*S*/) const {
+    return nullptr;
+  }
 };
 
 /// The operator of an explicit matrix (kept by reference: it must outlive the operator).

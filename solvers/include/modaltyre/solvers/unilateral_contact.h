@@ -38,6 +38,9 @@ struct ContactOptions {
   int max_iterations = 200;
   /// Gap tolerance relative to the approach: a point counts as penetrating below -tol * delta.
   double gap_tolerance = 1e-10;
+  /// The conjugate gradients take the operator's own preconditioner where it has one
+  /// (ComplianceOperator::preconditioner); false: Jacobi on every operator.
+  bool operator_preconditioner = true;
 };
 
 struct ContactSolution {
@@ -46,6 +49,7 @@ struct ContactSolution {
   Eigen::VectorXd gap;          ///< g [m]
   double approach_m = 0;        ///< delta
   int iterations = 0;
+  int cg_iterations = 0;        ///< conjugate-gradient iterations of the inner solves, all sets
   std::vector<char> active;     ///< 1 where the point is in contact
   double equilibrium_residual = 0;     ///< |1^T f - F| / F
   double complementarity_residual = 0; ///< max |f_i g_i| / (F delta)
