@@ -18,9 +18,18 @@ double sum_of_squares(const FitResult& f) {
   return std::inner_product(f.residuals.begin(), f.residuals.end(), f.residuals.begin(), 0.0);
 }
 
-class FoldStart : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
+// The rows, the config, its model and the creeping tread's fit from its default start with its
+// cross-validation, made once for both tests.
+struct Rows {
+  studies::MeasurementSet data;
+  TyreConfig config;
+  contact::TyreModel model;
+  Variant v;
+  FitAndCv good;
+};
+
+const Rows& creeping_tread_rows() {
+  static const Rows rows = [] {
     Planted p;
     p.truth = [](auto& e) {
       e.tread_relaxation.enabled = true;
@@ -31,28 +40,22 @@ class FoldStart : public ::testing::Test {
     p.rows = grid(
         {2000, 3200, 4400, 5600, 6800, 8000}, [&](auto& c, int l) { c.hold_s = hold[l]; }, 2);
     p.seed = 3;
-    data_ = new studies::MeasurementSet(make_data(p, "fold_start"));
-    config_ = new TyreConfig(contact::load_tyre_config(kConfig, {"contact.unit_length_mm=2"}));
-    model_ = new contact::TyreModel(contact::build_tyre_model(*config_));
-  }
-  static void TearDownTestSuite() {
-    delete model_;
-    delete config_;
-    delete data_;
-  }
-  static studies::MeasurementSet* data_;
-  static TyreConfig* config_;
-  static contact::TyreModel* model_;
-};
+    TyreConfig c = contact::load_tyre_config(kConfig, {"contact.unit_length_mm=2"});
+    contact::TyreModel m = contact::build_tyre_model(c);
+    Variant v = make_variant(c, {contact::EffectId::tread_relaxation});
+    studies::MeasurementSet data = make_data(p, "fold_start");
+    FitAndCv good = fit_and_cross_validate(Evaluator(m, data), c, v);  // holds no reference
+    return Rows{std::move(data), std::move(c), std::move(m), std::move(v), std::move(good)};
+  }();
+  return rows;
+}
 
-studies::MeasurementSet* FoldStart::data_ = nullptr;
-TyreConfig* FoldStart::config_ = nullptr;
-contact::TyreModel* FoldStart::model_ = nullptr;
-
-TEST_F(FoldStart, AFitLeftWorseThanItsFoldsIsRefinedFromTheBestFold) {
-  const Evaluator ev(*model_, *data_);
-  const Variant v = make_variant(*config_, {contact::EffectId::tread_relaxation});
-  const FitAndCv good = fit_and_cross_validate(ev, *config_, v);
+TEST(FoldStart, AFitLeftWorseThanItsFoldsIsRefinedFromTheBestFold) {
+  const Rows& rows = creeping_tread_rows();
+  const TyreConfig& config = rows.config;
+  const Variant& v = rows.v;
+  const FitAndCv& good = rows.good;
+  const Evaluator ev(rows.model, rows.data);
   ASSERT_EQ(good.cv.fold_values.size(), static_cast<std::size_t>(good.cv.folds));
   // The same fit stopped where its search started: the config's baseline scalars and the
   // effect's catalogue defaults (creep ratio and time constant far from the planted 0.8 and
@@ -60,11 +63,11 @@ TEST_F(FoldStart, AFitLeftWorseThanItsFoldsIsRefinedFromTheBestFold) {
   // folds' optima, each a re-fit on 5/6 of the rows, lie in the planted basin.
   std::vector<double> start;
   for (const auto& p : v.parameters)
-    start.push_back(p.of_effect ? p.catalogue_default : p.get(*config_));
+    start.push_back(p.of_effect ? p.catalogue_default : p.get(config));
   FitAndCv stuck = good;
-  stuck.fit = evaluate_fit(ev, *config_, v, start, good.fit.entries);
+  stuck.fit = evaluate_fit(ev, config, v, start, good.fit.entries);
   ASSERT_GT(sum_of_squares(stuck.fit), 2 * sum_of_squares(good.fit));
-  EXPECT_TRUE(refit_from_folds(ev, *config_, v, stuck));
+  EXPECT_TRUE(refit_from_folds(ev, config, v, stuck));
   // Refined from the best fold it reaches the planted basin: the fit from the default start's,
   // to a fraction of its standard errors, with its standard errors and cross-validation.
   EXPECT_NEAR(sum_of_squares(stuck.fit), sum_of_squares(good.fit), 1e-3 * sum_of_squares(good.fit));
@@ -75,15 +78,14 @@ TEST_F(FoldStart, AFitLeftWorseThanItsFoldsIsRefinedFromTheBestFold) {
   EXPECT_NEAR(stuck.cv.rms_all, good.cv.rms_all, 0.01 * good.cv.rms_all);
 }
 
-TEST_F(FoldStart, AFitNoFoldImprovesIsLeftAsItIs) {
+TEST(FoldStart, AFitNoFoldImprovesIsLeftAsItIs) {
   // Where the search's own start was the best (every existing discover answer), the guard costs
   // one evaluation a fold and changes nothing.
-  const Evaluator ev(*model_, *data_);
-  const Variant v = make_variant(*config_, {contact::EffectId::tread_relaxation});
-  const FitAndCv fc = fit_and_cross_validate(ev, *config_, v);
+  const Rows& rows = creeping_tread_rows();
+  const FitAndCv& fc = rows.good;
   FitAndCv again = fc;
   const int evaluations = again.cv.evaluations;
-  EXPECT_FALSE(refit_from_folds(ev, *config_, v, again));
+  EXPECT_FALSE(refit_from_folds(Evaluator(rows.model, rows.data), rows.config, rows.v, again));
   EXPECT_EQ(again.fit.values, fc.fit.values);
   EXPECT_EQ(again.cv.residuals, fc.cv.residuals);
   EXPECT_EQ(again.cv.evaluations, evaluations + fc.cv.folds);
