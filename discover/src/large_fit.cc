@@ -252,7 +252,10 @@ bool refit_from_folds(const Evaluator& ev, const TyreConfig& base, const Variant
   for (const auto& e : fc.fit.entries)
     if (rows.empty() || rows.back() != e.row) rows.push_back(e.row);
   FitResult refined = fit_variant(ev, base, v, rows, *start, true);
-  if (!(sum_of_squares(refined.residuals) < own)) return false;
+  if (!(sum_of_squares(refined.residuals) < own)) {
+    fc.cv.evaluations += refined.evaluations;  // spent, though the fit stays
+    return false;
+  }
   refined.evaluations += fc.fit.evaluations;
   const int evaluations = fc.cv.evaluations;
   fc.fit = std::move(refined);
