@@ -9,9 +9,10 @@ same way. Each set's traction CSV goes through `modaltyre discover --ground SOIL
 - a set with one effect: that effect named first, the pooled cross-validated gap shrinking (its
   fitted parameters and standard errors are printed beside the drawn ones);
 - a noise-only set: nothing named;
-- an effect the registry refuses on this tyre and soil (wong_reece_stress and soil_viscosity on
-  the flexible tyre until its steady rolling takes them): "refused on main", not a failure, and
-  the set must then name nothing (its data carry no effect the model rolls).
+- an effect the registry refuses on this tyre and soil (none of the five on the flexible tyre
+  today: wong_reece_stress and soil_viscosity are candidates there too): "refused by the
+  registry", not a failure, and the set must then name nothing (its data carry no effect the
+  model rolls).
 
 soil_viscosity needs a Kelvin-Voigt soil and a speed: its sets run on docs/soil.md section 3.2's
 Kelvin-Voigt soil (E2 2 MPa, layer 200 mm, elastic share 0.7, c 1 kPa, phi 30 deg, K 25 mm: the
@@ -24,8 +25,8 @@ Usage (from the checkout; one table row per set, exit 1 if a check fails):
       [--max-effects 1]
 Sets: EFFECT@SOIL (slip_sinkage, soil_unloading, bulldozing, wong_reece_stress on lete_sand and
 sandy_loam; soil_viscosity on kv) and noise@SOIL; then EFFECT@SOIL+rigid for the two effects
-the registry takes on the rigid wheel only, with noise@lete_sand+rigid and noise@kv+rigid: the
-same on the rigid cylinder (--set tyre.rigid=true for traction and discover). discover runs at
+the registry first took on the rigid wheel only, with noise@lete_sand+rigid and noise@kv+rigid:
+the same on the rigid cylinder (--set tyre.rigid=true for traction and discover). discover runs at
 4 mm and names one effect by default: a set on the 3D patch is ~8 min of CPU even so
 (docs/discover.md, "Hidden soil effects on the default tyre"). Only the standard library is
 used; the noise and run helpers are bench/discover_outside_check.py's, the gap
@@ -86,8 +87,8 @@ EFFECTS = {
     # tau = eta2 / E2 from 10 to 100 ms at E2 2 MPa.
     "soil_viscosity": ({"ground.kelvin_voigt.eta2_kPa_s": (20, 200, True)}, {}, ["kv"]),
 }
-# Effects the registry takes on the rigid wheel only (today): their sets again on the rigid
-# cylinder of the outer radius (tyre.rigid=true), where discover can name them now.
+# Effects the registry first took on the rigid wheel only (candidates on the flexible tyre too
+# now): their sets again on the rigid cylinder of the outer radius (tyre.rigid=true).
 RIGID = {"wong_reece_stress", "soil_viscosity"}
 
 
@@ -233,7 +234,7 @@ def main():
             tag, ", ".join("%s %.4g" % (k.split(".")[-1], v) for k, v in planted[1].items())
             if planted else "none", ",".join(e["name"] for e in j["effects"]) or "nothing",
             gap, recovered,
-            ("refused on main" if ok else "FAIL (named on refused)") if refused else
+            ("refused by the registry" if ok else "FAIL (named on refused)") if refused else
             ("ok" if ok else "FAIL"), seconds))
         sys.stdout.flush()
     print("%d failed" % failures)

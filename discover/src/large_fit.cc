@@ -233,6 +233,37 @@ CrossValidation cross_validate_one_step(const Evaluator& ev, const TyreConfig& b
   return cv;
 }
 
+bool refit_from_folds(const Evaluator& ev, const TyreConfig& base, const Variant& v, FitAndCv& fc) {
+  const auto sum_of_squares = [](const std::vector<double>& r) {
+    double s = 0;
+    for (double x : r) s += x * x;
+    return s;
+  };
+  const double own = sum_of_squares(fc.fit.residuals);
+  double best = own;
+  const std::vector<double>* start = nullptr;
+  for (const auto& values : fc.cv.fold_values) {
+    const double s = sum_of_squares(ev.residuals(apply(base, v, values), fc.fit.entries));
+    ++fc.cv.evaluations;
+    if (s < best) best = s, start = &values;
+  }
+  if (!start || !(best < (1 - kFoldStartGain) * own)) return false;
+  std::vector<int> rows;
+  for (const auto& e : fc.fit.entries)
+    if (rows.empty() || rows.back() != e.row) rows.push_back(e.row);
+  FitResult refined = fit_variant(ev, base, v, rows, *start, true);
+  if (!(sum_of_squares(refined.residuals) < own)) {
+    fc.cv.evaluations += refined.evaluations;  // spent, though the fit stays
+    return false;
+  }
+  refined.evaluations += fc.fit.evaluations;
+  const int evaluations = fc.cv.evaluations;
+  fc.fit = std::move(refined);
+  fc.cv = cross_validate(ev, base, v, fc.fit);
+  fc.cv.evaluations += evaluations;
+  return true;
+}
+
 FitAndCv fit_and_cross_validate(const Evaluator& ev, const TyreConfig& base, const Variant& v,
                                 const FitOptions& options, const std::function<void()>& tick) {
   const int n = static_cast<int>(ev.data().rows.size());
@@ -243,6 +274,7 @@ FitAndCv fit_and_cross_validate(const Evaluator& ev, const TyreConfig& base, con
     out.fit = fit_variant(ev, base, v, all, std::nullopt, true);
     if (tick) tick();
     out.cv = cross_validate(ev, base, v, out.fit);
+    refit_from_folds(ev, base, v, out);
   } else {
     Eigen::MatrixXd J;
     out.fit = fit_variant_many_rows(ev, base, v, all, options, &J);

@@ -412,6 +412,7 @@ CrossValidation cross_validate(const Evaluator& ev, const TyreConfig& base, cons
     for (int r = 0; r < n; ++r) (r % cv.folds == f ? test : train).push_back(r);
     const FitResult fit = fit_variant(ev, base, v, train, full.values);
     cv.evaluations += fit.evaluations;
+    cv.fold_values.push_back(fit.values);
     const auto test_entries = ev.entries(test);
     const auto r = ev.residuals(fit.config, test_entries);
     for (std::size_t i = 0; i < test_entries.size(); ++i) {

@@ -114,7 +114,9 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
     if (f != flex_.end()) opt.flexing_resistance_N[g.load_N] = f->second;
     std::vector<contact::TractionCase> cases;
     for (double slip : slips[k]) cases.push_back({g.load_N, slip});
-    results[k] = contact::steady_traction(model, config.ground, cases, opt);
+    // The window grown where the contact reaches its edge, as `traction` grows it: a row the
+    // command rolls on a longer window would fail here (100 %) and hide the variant's fit.
+    results[k] = contact::steady_traction_growing_window(model, modes_, config.ground, cases, opt);
     cases_.fetch_add(static_cast<long>(results[k].size()), std::memory_order_relaxed);
   }
   for (int k = 0; k < n; ++k) {

@@ -1,8 +1,10 @@
 // What `modaltyre traction` runs (report/traction_json.h): the tyre config on its soil, the cases,
-// the candidate window grown where the sinkage needs it, failed slips kept as rows.
+// the candidate window grown where the sinkage needs it (contact/traction.h), failed slips kept
+// as rows.
 #include <sstream>
 
-#include "modaltyre/contact/footprint.h"
+#include "modaltyre/contact/carcass_source.h"
+#include "modaltyre/contact/traction.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
@@ -11,26 +13,6 @@
 #include "modaltyre/report/traction_json.h"
 
 namespace modaltyre::report {
-namespace {
-
-// steady_traction's rows split per case (each case's rows start with pass 1).
-std::vector<std::vector<contact::TractionResult>> by_case(
-    std::vector<contact::TractionResult> results) {
-  std::vector<std::vector<contact::TractionResult>> out;
-  for (auto& r : results) {
-    if (r.pass == 1 || out.empty()) out.emplace_back();
-    out.back().push_back(std::move(r));
-  }
-  return out;
-}
-
-bool window_exceeded(const std::vector<contact::TractionResult>& rows) {
-  for (const auto& r : rows)
-    if (r.window_exceeded) return true;
-  return false;
-}
-
-}  // namespace
 
 void require_traction_converged(const std::vector<contact::TractionResult>& results) {
   // A failed slip is a row with its reason; the run fails only when no case converged.
@@ -111,39 +93,15 @@ std::vector<contact::TractionResult> run_traction(const TractionSetup& setup,
   std::vector<contact::TractionCase> cases;
   for (double load : loads_N)
     for (double s : slips) cases.push_back({load, s});
-  contact::TyreModel model = contact::build_tyre_model(config);
+  const modal::ModeIdentification modes = contact::config_modes(config);
+  const contact::TyreModel model = contact::build_tyre_model(config, modes);
   // The tyre's flexing loss on the rigid road at each load (report/traction_flexing.h).
   if (!setup.rigid)
     opt.flexing_resistance_N =
         flexing_resistance_N(model, loads_N, traction_speed_km_h(setup) / 3.6);
-  std::vector<std::vector<contact::TractionResult>> per_case =
-      by_case(contact::steady_traction(model, setup.ground, cases, opt));
-  // The candidate window grows where the sinkage needs it: the cases whose contact reached its
-  // edge run again on a window 1.5 times longer, up to the largest the config reader accepts
-  // (half the circumference, 20000 units).
-  const double first_window_m = config.mesh.window_m;
-  for (int growth = 0; growth < 20; ++growth) {
-    std::vector<std::size_t> again;
-    for (std::size_t k = 0; k < per_case.size(); ++k)
-      if (window_exceeded(per_case[k])) again.push_back(k);
-    if (again.empty() || config.mesh.window_m >= contact::max_window_m(config) * (1 - 1e-9)) break;
-    config.mesh.window_m = contact::suggested_window_mm(config) * 1e-3;
-    model = contact::build_tyre_model(config);
-    std::vector<contact::TractionCase> redo;
-    for (std::size_t k : again) redo.push_back(cases[k]);
-    std::vector<std::vector<contact::TractionResult>> rerun =
-        by_case(contact::steady_traction(model, setup.ground, redo, opt));
-    for (std::size_t n = 0; n < again.size() && n < rerun.size(); ++n)
-      per_case[again[n]] = std::move(rerun[n]);
-  }
-  std::vector<contact::TractionResult> results;
-  for (auto& rows : per_case)
-    for (auto& r : rows) {
-      if (r.window_exceeded && config.mesh.window_m > first_window_m)
-        r.message += " (the window grew from " + number_text(first_window_m * 1e3) + " to " +
-                     number_text(config.mesh.window_m * 1e3) + " mm, the largest allowed)";
-      results.push_back(std::move(r));
-    }
+  // The candidate window grows where the sinkage needs it (contact/traction.h).
+  std::vector<contact::TractionResult> results =
+      contact::steady_traction_growing_window(model, modes, setup.ground, cases, opt);
   require_traction_converged(results);
   return results;
 }

@@ -8,8 +8,10 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
 
@@ -47,6 +49,17 @@ std::vector<Row> curve_rows(const std::vector<double>& loads, const std::vector<
   return rows;
 }
 
+// A traction CSV's text written and read back as the CLI reads it.
+studies::MeasurementSet as_measurements(const std::string& csv, const TyreConfig& config,
+                                        const std::string& name) {
+  const fs::path p = fs::temp_directory_path() /
+                     ("modaltyre_traction_" + std::to_string(::getpid()) + "_" + name + ".csv");
+  std::ofstream(p) << csv;
+  studies::MeasurementSet set = studies::read_measurements(p.string(), config);
+  fs::remove(p);
+  return set;
+}
+
 // Each row run alone from a cold start (not grouped as TractionRows groups them), its pull,
 // sinkage and torque times (1 + noise N(0, 1)), written as CSV and read back as the CLI reads it.
 // `base`: the options every row runs with (its speed written as the rows' speed_kmh).
@@ -70,12 +83,7 @@ studies::MeasurementSet make_traction_data(const TyreConfig& truth, const std::v
         << noisy(t.soil_sinkage_m * 1e3) << "," << noisy(t.torque_Nm) << ","
         << base.speed_m_per_s * 3.6 << "\n";
   }
-  const fs::path p = fs::temp_directory_path() /
-                     ("modaltyre_traction_" + std::to_string(::getpid()) + "_" + name + ".csv");
-  std::ofstream(p) << csv.str();
-  studies::MeasurementSet set = studies::read_measurements(p.string(), truth);
-  fs::remove(p);
-  return set;
+  return as_measurements(csv.str(), truth, name);
 }
 
 TEST(TractionEvidence, ResidualScalesAreRelativeAboveTheLoadFloor) {
@@ -188,6 +196,56 @@ TEST(TractionEvidence, TheRigidWheelOfThe3dDefaultRollsAtItsTreadWidth) {
   o.rigid = true;
   const auto data = make_traction_data(wheel, curve_rows({3000}, {0.1, 0.3}), 0, 1, "rigid3d", o);
   expect_rolled_exactly(c, data);
+}
+
+// What `modaltyre traction --json` prints for one row (load, slip; at rest: no flexing loss):
+// its JSON case, or null when the command did not run.
+nlohmann::json traction_prints(const std::string& config, const std::string& soil,
+                               const std::vector<std::string>& sets, double load_N, double slip) {
+  std::ostringstream cmd;
+  cmd << MODALTYRE_CLI << " traction " << config << " --ground " << soil << " --json --load "
+      << load_N << " --slip " << slip << " --speed-km-h 0";
+  for (const auto& s : sets) cmd << " --set " << s;
+  cmd << " 2>/dev/null";  // its note that the window grew
+  FILE* pipe = ::popen(cmd.str().c_str(), "r");
+  if (!pipe) return nullptr;
+  std::string out;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
+  if (::pclose(pipe) != 0) return nullptr;
+  return nlohmann::json::parse(out)["cases"].at(0);
+}
+
+TEST(TractionEvidence, ARowBeyondTheConfiguredWindowRollsAsTractionPrintsIt) {
+  // Sandy loam under the 2D SF-350 at 3.5 kN and slip 0.5 sinks ~55 mm: its contact outgrows a
+  // 200 mm window, and `traction` grows the window (1.5 times, contact/traction.h) and rolls it
+  // there. The row's printed pull, sinkage and torque as measurements: discover's model of the
+  // row at the same config reproduces them to the printed digits. Without the growth the row
+  // fails and its residuals are 100 %.
+  const std::string config = kSource + "/configs/sf350_2d_table3.yaml";
+  const std::string soil = kSource + "/configs/soils/sandy_loam.yaml";
+  const std::vector<std::string> sets = {"contact.unit_length_mm=4", "contact.window_mm=200"};
+  const nlohmann::json p = traction_prints(config, soil, sets, 3500, 0.5);
+  ASSERT_TRUE(p.is_object()) << "modaltyre traction failed";
+  ASSERT_TRUE(p.at("converged").get<bool>());
+  ASSERT_GT(p.at("window_mm").get<double>(), 200);  // the contact did reach the window's edge
+  TyreConfig c = contact::load_tyre_config(config, sets);
+  c.ground = ground::load_ground_file(soil, {});
+  std::ostringstream csv;
+  csv.precision(12);
+  csv << "load_N,slip,drawbar_pull_N,soil_sinkage_mm,torque_Nm,speed_kmh\n3500,0.5,"
+      << p.at("drawbar_pull_N").get<double>() << "," << p.at("soil_sinkage_mm").get<double>() << ","
+      << p.at("torque_Nm").get<double>() << ",0\n";
+  const auto data = as_measurements(csv.str(), c, "window");
+  const contact::TyreModel model = contact::build_tyre_model(c);
+  const Evaluator ev(model, data);
+  const auto entries = ev.entries({0});
+  ASSERT_EQ(entries.size(), 3u);
+  int failures = -1;
+  const auto r = ev.residuals(c, entries, failures);
+  EXPECT_EQ(failures, 0);
+  for (std::size_t i = 0; i < r.size(); ++i)
+    EXPECT_LT(std::abs(r[i]), 1e-6) << data.observables[entries[i].observable];
 }
 
 DiscoverOptions traction_options() {

@@ -121,6 +121,17 @@ std::vector<TractionResult> steady_traction(const TyreModel& model,
                                             const std::vector<TractionCase>& cases,
                                             const TractionOptions& options = {});
 
+/// steady_traction with the candidate window grown where the contact reaches its edge: the cases
+/// whose rows report window_exceeded run again on a model rebuilt (on `modes`, the model's own)
+/// with a window 1.5 times longer, up to max_window_m (footprint.h); a case still exceeding the
+/// largest keeps its failed rows, their message saying how far the window grew. The path
+/// `modaltyre traction` and discover's traction rows both run, so they roll the same contact.
+std::vector<TractionResult> steady_traction_growing_window(const TyreModel& model,
+                                                           const modal::ModeIdentification& modes,
+                                                           const ground::GroundSettings& ground,
+                                                           const std::vector<TractionCase>& cases,
+                                                           const TractionOptions& options = {});
+
 /// One pass of the flexible tyre on a track of memory prior_z_max_m (2D or 3D patch), its slip
 /// against c.slip_radius_m (0: R0).
 TractionResult traction_pass(const TyreModel& model, const ground::GroundSettings& ground,

@@ -168,8 +168,11 @@ double bic(const std::vector<Evaluator::Entry>& entries, const std::vector<doubl
 
 struct CrossValidation {
   int folds = 0;
-  bool one_step = false;          ///< folds re-fitted by one Gauss-Newton step (large_fit.h)
-  int evaluations = 0;            ///< model evaluations (all rows of a fold each)
+  bool one_step = false;  ///< folds re-fitted by one Gauss-Newton step (large_fit.h)
+  int evaluations = 0;    ///< model evaluations (all rows of a fold each)
+  /// Each fold's re-fitted values (config units; exact folds only): starts the fit on all rows
+  /// may not have reached (large_fit.h, refit_from_folds).
+  std::vector<std::vector<double>> fold_values;
   std::vector<double> residuals;  ///< held-out relative residual per entry of all rows
   std::vector<Evaluator::Entry> entries;
   std::map<std::string, double> rms;  ///< per observable
