@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "modaltyre/contact/effects.h"
+#include "modaltyre/contact/ground_contact.h"
 #include "modaltyre/contact/traction.h"
 #include "modaltyre/ground/ground_settings.h"
 
@@ -217,6 +218,54 @@ TEST(WongReeceFlexible, TheRearSoilIsRigidUpToTheFlowStressAndFlowsAtIt) {
            (law.sinkage_m(a, zs) + 4 * law.sinkage_m(0.5 * (a + b), zs) + law.sinkage_m(b, zs));
   };
   EXPECT_NEAR(law.work_J_m2(p, zs), simpson(0, sigma) + simpson(sigma, p), 1e-9 * zs * p);
+}
+
+// A row of points under a curved belt (a parabolic gap at zero load, an exponential compliance
+// kernel), its rear half on the flowing soil (FlowStressLaw: rigid at the floor up to the flow
+// stress, flowing beyond), pressed cold: the linearised solve meets the KKT conditions of section
+// 4 (equilibrium; every point in contact at its law's sinkage with its gap closed, the others
+// open) with some rear points past the kink.
+TEST(WongReeceFlexible, TheGroundContactSolvesAFlowingRear) {
+  constexpr int kPoints = 40;
+  constexpr double kRadius_m = 0.3, kPitch_m = 4e-3, kArea_m2 = 0.13 * kPitch_m;
+  const double sigma_Pa = 40e3, floor_m = 0.02, flow_m_per_Pa = 1e-7;
+  Eigen::MatrixXd C(kPoints, kPoints);
+  Eigen::VectorXd gap(kPoints);
+  for (int i = 0; i < kPoints; ++i) {
+    const double x = (i - 0.5 * (kPoints - 1)) * kPitch_m;
+    gap(i) = x * x / (2 * kRadius_m);
+    for (int j = 0; j < kPoints; ++j) C(i, j) = 2e-7 * std::exp(-std::abs(i - j) / 5.0);
+  }
+  const modaltyre::solvers::DenseCompliance dense(C);
+  // The front half under a stiffer flow law (the soil's own), the rear half flowing at sigma.
+  const detail::FlowStressLaw front(4 * sigma_Pa, floor_m, 0.2 * flow_m_per_Pa);
+  const detail::FlowStressLaw rear(sigma_Pa, floor_m, flow_m_per_Pa);
+  GroundContactProblem P;
+  P.compliance = &dense;
+  P.initial_gap = gap;
+  P.load_N = 3000;
+  P.law = &front;
+  P.area_m2.assign(kPoints, kArea_m2);
+  P.z_max_m.assign(kPoints, floor_m);
+  P.unit_law.assign(kPoints, nullptr);
+  for (int i = 0; i < kPoints / 2; ++i) P.unit_law[i] = &rear;
+  GroundContactOptions o;
+  o.max_iterations = 1000;
+  const GroundContactSolution s = solve_ground_contact(P, o);
+  ASSERT_TRUE(s.ok()) << s.message;
+  EXPECT_NEAR(s.force.sum(), P.load_N, 1e-9 * P.load_N);
+  int flowing = 0;
+  for (int i = 0; i < kPoints; ++i) {
+    const auto& law = i < kPoints / 2 ? rear : front;
+    if (s.force(i) > 0) {
+      EXPECT_NEAR(s.soil_sinkage(i), law.sinkage_m(s.force(i) / kArea_m2, floor_m), 1e-12);
+      EXPECT_LT(std::abs(s.gap(i)), 1e-6 * s.approach_m) << i;
+    } else {
+      EXPECT_GE(s.gap(i), -1e-6 * s.approach_m) << i;
+    }
+    flowing += i < kPoints / 2 && s.force(i) / kArea_m2 > sigma_Pa;
+  }
+  EXPECT_GT(flowing, 0);  // the planted case crosses the kink
 }
 
 // The effect's switch on the default tyre moves every output it lists (a candidate there:
