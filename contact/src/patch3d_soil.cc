@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -12,6 +13,7 @@ namespace modaltyre::contact::detail {
 namespace {
 
 constexpr double kGapFloor_m = 1e-9;
+constexpr double kNoRepeat = std::numeric_limits<double>::quiet_NaN();  ///< equal to no e
 
 }  // namespace
 
@@ -31,6 +33,8 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
       d_(t_.size()) {
   const int S = static_cast<int>(t_.size()), K = classes();
   last_.assign(std::size_t(S) * K, -1.0);
+  repeat_e_.assign(std::size_t(S) * K, kNoRepeat);
+  repeat_slope_.assign(std::size_t(S) * K, 0.0);
   if (!zmax_.empty()) {
     rut_.resize(zmax_.size());
     pv_.resize(zmax_.size());
@@ -58,12 +62,18 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
 // t f + w z_a + (1 - w) Z = e is the same root for the spring t / (1 - w) and the compression
 // (e - w z_a) / (1 - w), and df/de gains the factor 1 / (1 - w).
 double SoilSections::cell(int i, int k, double e, double* dfde) const {
-  if (dfde) *dfde = 0;
   const std::size_t a = idx(i, k);
+  const bool rate = rate_.on();
+  const double share = rate ? rate_.scale(a) : 1.0;
+  if (e == repeat_e_[a]) {  // the root this cell's last solve ended on, exactly (see below)
+    if (dfde) *dfde = rate ? 1.0 / (repeat_slope_[a] * share) : 1.0 / repeat_slope_[a];
+    return last_[a];
+  }
+  if (dfde) *dfde = 0;
+  const double e_in = e;
   const double zmax = memory(i, k), rut = rut_.empty() ? 0.0 : rut_[a];
-  double t = t_[i], share = 1;
-  if (rate_.on()) {
-    share = rate_.scale(a);
+  double t = t_[i];
+  if (rate) {
     e = (e - rate_.weight[a] * rate_.start_m[a]) / share;
     t /= share;
   }
@@ -78,6 +88,7 @@ double SoilSections::cell(int i, int k, double e, double* dfde) const {
   }
   double lo = virgin ? A * pv : 0, hi = (e - (virgin ? zmax : rut)) / t;
   if (!virgin) hi = std::min(hi, A * pv);
+  const double lo0 = lo, hi0 = hi;
   double f = last_[a];
   if (!(f > lo && f < hi)) {
     const double soil_alone = A * soil.pressure_Pa(e, zmax);
@@ -85,6 +96,7 @@ double SoilSections::cell(int i, int k, double e, double* dfde) const {
     f = std::clamp(f, lo, hi);
   }
   double slope = t;
+  bool root = false;  // ended on the residual test at the f it evaluated
   for (int it = 0; it < 100; ++it) {
     const double p = f / A;
     double dz = 0;
@@ -94,13 +106,20 @@ double SoilSections::cell(int i, int k, double e, double* dfde) const {
     const double g = t * f + z - e;
     slope = t + dz / A;
     (g > 0 ? hi : lo) = f;
-    if (std::abs(g) <= 1e-13 * e || hi - lo <= 1e-14 * hi) break;
+    if ((root = std::abs(g) <= 1e-13 * e) || hi - lo <= 1e-14 * hi) break;
     double next = f - g / slope;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     f = next;
   }
   last_[a] = f;
-  if (dfde) *dfde = rate_.on() ? 1.0 / (slope * share) : 1.0 / slope;
+  // A root strictly inside the fresh bracket that met the residual test is where a solve at the
+  // same e restarts (from last_) and stops at its first evaluation, with the same slope: the
+  // repeat returns it without the law's evaluation, bit for bit. Any other ending (the bracket
+  // collapsed, the iterations ran out) would iterate on: no repeat then.
+  const bool repeat = root && f > lo0 && f < hi0;
+  repeat_e_[a] = repeat ? e_in : kNoRepeat;
+  repeat_slope_[a] = slope;
+  if (dfde) *dfde = rate ? 1.0 / (slope * share) : 1.0 / slope;
   return f;
 }
 

@@ -76,8 +76,11 @@ class SoilSections final : public SectionLaws {
   std::vector<double> rest_;  ///< Z(0) per cell: the rut through the rate term (empty: virgin)
   std::vector<double> pv_;    ///< virgin pressure at the memory per cell
   mutable std::vector<double> last_;  ///< each cell's last root (Newton's start)
-  std::vector<double> floor_;         ///< per section
-  std::vector<double> d_;             ///< each section's approach (linearisation point)
+  /// The compression e whose solve ended on last_ by the residual test (NaN: none) and the
+  /// slope there: a call at the same e returns them (cell()).
+  mutable std::vector<double> repeat_e_, repeat_slope_;
+  std::vector<double> floor_;  ///< per section
+  std::vector<double> d_;      ///< each section's approach (linearisation point)
 };
 
 }  // namespace modaltyre::contact::detail
