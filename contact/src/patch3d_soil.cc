@@ -144,7 +144,19 @@ double SoilSections::approach(int i, double F) const {
   const double z0 = floor_[i];
   if (!(F > 0)) return z0;
   double lo = z0, hi = z0 + F * t_[i];  // every cell's tread alone at least that long
-  while (section(i, hi) < F) hi = z0 + 2 * (hi - z0);
+  {
+    // The bracket's trial approaches lie beyond the root: their cell roots would be the next
+    // solves' Newton starts, far from the roots near d_. The section's own starts are kept.
+    const auto first = std::ptrdiff_t(idx(i, 0)), K = std::ptrdiff_t(z_.size());
+    saved_.resize(3 * z_.size());
+    std::copy_n(last_.begin() + first, K, saved_.begin());
+    std::copy_n(repeat_e_.begin() + first, K, saved_.begin() + K);
+    std::copy_n(repeat_slope_.begin() + first, K, saved_.begin() + 2 * K);
+    while (section(i, hi) < F) hi = z0 + 2 * (hi - z0);
+    std::copy_n(saved_.begin(), K, last_.begin() + first);
+    std::copy_n(saved_.begin() + K, K, repeat_e_.begin() + first);
+    std::copy_n(saved_.begin() + 2 * K, K, repeat_slope_.begin() + first);
+  }
   double d = std::clamp(d_[i], lo, hi);
   for (int it = 0; it < 100; ++it) {
     double slope = 0;

@@ -79,8 +79,9 @@ class SoilSections final : public SectionLaws {
   /// The compression e whose solve ended on last_ by the residual test (NaN: none) and the
   /// slope there: a call at the same e returns them (cell()).
   mutable std::vector<double> repeat_e_, repeat_slope_;
-  std::vector<double> floor_;  ///< per section
-  std::vector<double> d_;      ///< each section's approach (linearisation point)
+  mutable std::vector<double> saved_;  ///< a section's cell starts kept over approach()'s bracket
+  std::vector<double> floor_;          ///< per section
+  std::vector<double> d_;              ///< each section's approach (linearisation point)
 };
 
 }  // namespace modaltyre::contact::detail
