@@ -13,6 +13,10 @@ namespace modaltyre::contact::detail {
 namespace {
 
 constexpr double kGapFloor_m = 1e-9;
+// approach()'s known approaches answer its bracket's test only beyond this relative margin in
+// force: the roots behind a section's force meet a relative 1e-13 (cell()), so the evaluated
+// test could not come out otherwise.
+constexpr double kKnownMargin = 1e-9;
 constexpr double kNoRepeat = std::numeric_limits<double>::quiet_NaN();  ///< equal to no e
 
 }  // namespace
@@ -33,6 +37,8 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
       d_(t_.size()) {
   const int S = static_cast<int>(t_.size()), K = classes();
   last_.assign(std::size_t(S) * K, -1.0);
+  known_d_.assign(2 * std::size_t(S), std::numeric_limits<double>::infinity());
+  known_F_.assign(2 * std::size_t(S), 0.0);
   repeat_e_.assign(std::size_t(S) * K, kNoRepeat);
   repeat_slope_.assign(std::size_t(S) * K, 0.0);
   if (!zmax_.empty()) {
@@ -144,7 +150,12 @@ double SoilSections::approach(int i, double F) const {
   const double z0 = floor_[i];
   if (!(F > 0)) return z0;
   double lo = z0, hi = z0 + F * t_[i];  // every cell's tread alone at least that long
-  {
+  // Phi is non-decreasing: an approach known to carry F (with a margin far above the roots'
+  // rounding) at or below hi answers the bracket's first test without evaluating it.
+  bool bracketed = false;
+  for (int j = 0; j < 2 && !bracketed; ++j)
+    bracketed = known_d_[2 * i + j] <= hi && known_F_[2 * i + j] >= F * (1 + kKnownMargin);
+  if (!bracketed) {
     // The bracket's trial approaches lie beyond the root: their cell roots would be the next
     // solves' Newton starts, far from the roots near d_. The section's own starts are kept.
     const auto first = std::ptrdiff_t(idx(i, 0)), K = std::ptrdiff_t(z_.size());
@@ -152,7 +163,9 @@ double SoilSections::approach(int i, double F) const {
     std::copy_n(last_.begin() + first, K, saved_.begin());
     std::copy_n(repeat_e_.begin() + first, K, saved_.begin() + K);
     std::copy_n(repeat_slope_.begin() + first, K, saved_.begin() + 2 * K);
-    while (section(i, hi) < F) hi = z0 + 2 * (hi - z0);
+    double Fhi = 0;
+    while ((Fhi = section(i, hi)) < F) hi = z0 + 2 * (hi - z0);
+    known_d_[2 * i] = hi, known_F_[2 * i] = Fhi;
     std::copy_n(saved_.begin(), K, last_.begin() + first);
     std::copy_n(saved_.begin() + K, K, repeat_e_.begin() + first);
     std::copy_n(saved_.begin() + 2 * K, K, repeat_slope_.begin() + first);
@@ -160,7 +173,8 @@ double SoilSections::approach(int i, double F) const {
   double d = std::clamp(d_[i], lo, hi);
   for (int it = 0; it < 100; ++it) {
     double slope = 0;
-    const double g = section(i, d, &slope) - F;
+    const double Fd = section(i, d, &slope), g = Fd - F;
+    known_d_[2 * i + 1] = d, known_F_[2 * i + 1] = Fd;
     (g > 0 ? hi : lo) = d;
     if (std::abs(g) <= 1e-12 * F || hi - lo <= 1e-13 * std::max(std::abs(hi), 1e-3)) break;
     double next = d - g / std::max(slope, 1e-300);

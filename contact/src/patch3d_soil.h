@@ -80,8 +80,11 @@ class SoilSections final : public SectionLaws {
   /// slope there: a call at the same e returns them (cell()).
   mutable std::vector<double> repeat_e_, repeat_slope_;
   mutable std::vector<double> saved_;  ///< a section's cell starts kept over approach()'s bracket
-  std::vector<double> floor_;          ///< per section
-  std::vector<double> d_;              ///< each section's approach (linearisation point)
+  /// Per section, two approaches with the force they were found to carry: approach()'s last
+  /// bracket end [2 i] and last Newton iterate [2 i + 1] (d = inf: none).
+  mutable std::vector<double> known_d_, known_F_;
+  std::vector<double> floor_;  ///< per section
+  std::vector<double> d_;      ///< each section's approach (linearisation point)
 };
 
 }  // namespace modaltyre::contact::detail
