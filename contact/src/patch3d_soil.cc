@@ -33,6 +33,7 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
       area_(std::move(area)),
       zmax_(std::move(z_max)),
       rate_(std::move(rate)),
+      keep_starts_(cell_law_.empty()),
       floor_(t_.size()),
       d_(t_.size()) {
   const int S = static_cast<int>(t_.size()), K = classes();
@@ -151,24 +152,29 @@ double SoilSections::approach(int i, double F) const {
   if (!(F > 0)) return z0;
   double lo = z0, hi = z0 + F * t_[i];  // every cell's tread alone at least that long
   // Phi is non-decreasing: an approach known to carry F (with a margin far above the roots'
-  // rounding) at or below hi answers the bracket's first test without evaluating it.
+  // rounding) at or below hi answers the bracket's first test without evaluating it. Only where
+  // the bracket keeps the cells' starts (below): otherwise its roots are the next starts.
   bool bracketed = false;
-  for (int j = 0; j < 2 && !bracketed; ++j)
+  for (int j = 0; j < 2 && !bracketed && keep_starts_; ++j)
     bracketed = known_d_[2 * i + j] <= hi && known_F_[2 * i + j] >= F * (1 + kKnownMargin);
   if (!bracketed) {
     // The bracket's trial approaches lie beyond the root: their cell roots would be the next
     // solves' Newton starts, far from the roots near d_. The section's own starts are kept.
     const auto first = std::ptrdiff_t(idx(i, 0)), K = std::ptrdiff_t(z_.size());
-    saved_.resize(3 * z_.size());
-    std::copy_n(last_.begin() + first, K, saved_.begin());
-    std::copy_n(repeat_e_.begin() + first, K, saved_.begin() + K);
-    std::copy_n(repeat_slope_.begin() + first, K, saved_.begin() + 2 * K);
+    if (keep_starts_) {
+      saved_.resize(3 * z_.size());
+      std::copy_n(last_.begin() + first, K, saved_.begin());
+      std::copy_n(repeat_e_.begin() + first, K, saved_.begin() + K);
+      std::copy_n(repeat_slope_.begin() + first, K, saved_.begin() + 2 * K);
+    }
     double Fhi = 0;
     while ((Fhi = section(i, hi)) < F) hi = z0 + 2 * (hi - z0);
     known_d_[2 * i] = hi, known_F_[2 * i] = Fhi;
-    std::copy_n(saved_.begin(), K, last_.begin() + first);
-    std::copy_n(saved_.begin() + K, K, repeat_e_.begin() + first);
-    std::copy_n(saved_.begin() + 2 * K, K, repeat_slope_.begin() + first);
+    if (keep_starts_) {
+      std::copy_n(saved_.begin(), K, last_.begin() + first);
+      std::copy_n(saved_.begin() + K, K, repeat_e_.begin() + first);
+      std::copy_n(saved_.begin() + 2 * K, K, repeat_slope_.begin() + first);
+    }
   }
   double d = std::clamp(d_[i], lo, hi);
   for (int it = 0; it < 100; ++it) {

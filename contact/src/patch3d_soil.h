@@ -73,6 +73,11 @@ class SoilSections final : public SectionLaws {
   std::vector<const ground::PressureSinkage*> cell_law_;
   std::vector<double> area_, zmax_, rut_;  ///< rut per cell (empty: virgin)
   SoilRate rate_;
+  /// approach()'s bracket keeps the cells' Newton starts (and may be answered from known
+  /// approaches): not with cells of their own law (Wong and Reece's rear region, whose
+  /// flow-stress law has a kink: there the roots' last bits follow their starts, and the
+  /// rolling fixed point's stopping test turns that into a step more or less, ~1e-4).
+  bool keep_starts_;
   std::vector<double> rest_;  ///< Z(0) per cell: the rut through the rate term (empty: virgin)
   std::vector<double> pv_;    ///< virgin pressure at the memory per cell
   mutable std::vector<double> last_;  ///< each cell's last root (Newton's start)
