@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -12,6 +13,11 @@ namespace modaltyre::contact::detail {
 namespace {
 
 constexpr double kGapFloor_m = 1e-9;
+// approach()'s known approaches answer its bracket's test only beyond this relative margin in
+// force: the roots behind a section's force meet a relative 1e-13 (cell()), so the evaluated
+// test could not come out otherwise.
+constexpr double kKnownMargin = 1e-9;
+constexpr double kNoRepeat = std::numeric_limits<double>::quiet_NaN();  ///< equal to no e
 
 }  // namespace
 
@@ -27,10 +33,15 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
       area_(std::move(area)),
       zmax_(std::move(z_max)),
       rate_(std::move(rate)),
+      keep_starts_(cell_law_.empty()),
       floor_(t_.size()),
       d_(t_.size()) {
   const int S = static_cast<int>(t_.size()), K = classes();
   last_.assign(std::size_t(S) * K, -1.0);
+  known_d_.assign(2 * std::size_t(S), std::numeric_limits<double>::infinity());
+  known_F_.assign(2 * std::size_t(S), 0.0);
+  repeat_e_.assign(std::size_t(S) * K, kNoRepeat);
+  repeat_slope_.assign(std::size_t(S) * K, 0.0);
   if (!zmax_.empty()) {
     rut_.resize(zmax_.size());
     pv_.resize(zmax_.size());
@@ -58,12 +69,18 @@ SoilSections::SoilSections(std::vector<double> t, std::vector<double> z, std::ve
 // t f + w z_a + (1 - w) Z = e is the same root for the spring t / (1 - w) and the compression
 // (e - w z_a) / (1 - w), and df/de gains the factor 1 / (1 - w).
 double SoilSections::cell(int i, int k, double e, double* dfde) const {
-  if (dfde) *dfde = 0;
   const std::size_t a = idx(i, k);
+  const bool rate = rate_.on();
+  const double share = rate ? rate_.scale(a) : 1.0;
+  if (e == repeat_e_[a]) {  // the root this cell's last solve ended on, exactly (see below)
+    if (dfde) *dfde = rate ? 1.0 / (repeat_slope_[a] * share) : 1.0 / repeat_slope_[a];
+    return last_[a];
+  }
+  if (dfde) *dfde = 0;
+  const double e_in = e;
   const double zmax = memory(i, k), rut = rut_.empty() ? 0.0 : rut_[a];
-  double t = t_[i], share = 1;
-  if (rate_.on()) {
-    share = rate_.scale(a);
+  double t = t_[i];
+  if (rate) {
     e = (e - rate_.weight[a] * rate_.start_m[a]) / share;
     t /= share;
   }
@@ -78,6 +95,7 @@ double SoilSections::cell(int i, int k, double e, double* dfde) const {
   }
   double lo = virgin ? A * pv : 0, hi = (e - (virgin ? zmax : rut)) / t;
   if (!virgin) hi = std::min(hi, A * pv);
+  const double lo0 = lo, hi0 = hi;
   double f = last_[a];
   if (!(f > lo && f < hi)) {
     const double soil_alone = A * soil.pressure_Pa(e, zmax);
@@ -85,6 +103,7 @@ double SoilSections::cell(int i, int k, double e, double* dfde) const {
     f = std::clamp(f, lo, hi);
   }
   double slope = t;
+  bool root = false;  // ended on the residual test at the f it evaluated
   for (int it = 0; it < 100; ++it) {
     const double p = f / A;
     double dz = 0;
@@ -94,13 +113,20 @@ double SoilSections::cell(int i, int k, double e, double* dfde) const {
     const double g = t * f + z - e;
     slope = t + dz / A;
     (g > 0 ? hi : lo) = f;
-    if (std::abs(g) <= 1e-13 * e || hi - lo <= 1e-14 * hi) break;
+    if ((root = std::abs(g) <= 1e-13 * e) || hi - lo <= 1e-14 * hi) break;
     double next = f - g / slope;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     f = next;
   }
   last_[a] = f;
-  if (dfde) *dfde = rate_.on() ? 1.0 / (slope * share) : 1.0 / slope;
+  // A root strictly inside the fresh bracket that met the residual test is where a solve at the
+  // same e restarts (from last_) and stops at its first evaluation, with the same slope: the
+  // repeat returns it without the law's evaluation, bit for bit. Any other ending (the bracket
+  // collapsed, the iterations ran out) would iterate on: no repeat then.
+  const bool repeat = root && f > lo0 && f < hi0;
+  repeat_e_[a] = repeat ? e_in : kNoRepeat;
+  repeat_slope_[a] = slope;
+  if (dfde) *dfde = rate ? 1.0 / (slope * share) : 1.0 / slope;
   return f;
 }
 
@@ -125,11 +151,36 @@ double SoilSections::approach(int i, double F) const {
   const double z0 = floor_[i];
   if (!(F > 0)) return z0;
   double lo = z0, hi = z0 + F * t_[i];  // every cell's tread alone at least that long
-  while (section(i, hi) < F) hi = z0 + 2 * (hi - z0);
+  // Phi is non-decreasing: an approach known to carry F (with a margin far above the roots'
+  // rounding) at or below hi answers the bracket's first test without evaluating it. Only where
+  // the bracket keeps the cells' starts (below): otherwise its roots are the next starts.
+  bool bracketed = false;
+  for (int j = 0; j < 2 && !bracketed && keep_starts_; ++j)
+    bracketed = known_d_[2 * i + j] <= hi && known_F_[2 * i + j] >= F * (1 + kKnownMargin);
+  if (!bracketed) {
+    // The bracket's trial approaches lie beyond the root: their cell roots would be the next
+    // solves' Newton starts, far from the roots near d_. The section's own starts are kept.
+    const auto first = std::ptrdiff_t(idx(i, 0)), K = std::ptrdiff_t(z_.size());
+    if (keep_starts_) {
+      saved_.resize(3 * z_.size());
+      std::copy_n(last_.begin() + first, K, saved_.begin());
+      std::copy_n(repeat_e_.begin() + first, K, saved_.begin() + K);
+      std::copy_n(repeat_slope_.begin() + first, K, saved_.begin() + 2 * K);
+    }
+    double Fhi = 0;
+    while ((Fhi = section(i, hi)) < F) hi = z0 + 2 * (hi - z0);
+    known_d_[2 * i] = hi, known_F_[2 * i] = Fhi;
+    if (keep_starts_) {
+      std::copy_n(saved_.begin(), K, last_.begin() + first);
+      std::copy_n(saved_.begin() + K, K, repeat_e_.begin() + first);
+      std::copy_n(saved_.begin() + 2 * K, K, repeat_slope_.begin() + first);
+    }
+  }
   double d = std::clamp(d_[i], lo, hi);
   for (int it = 0; it < 100; ++it) {
     double slope = 0;
-    const double g = section(i, d, &slope) - F;
+    const double Fd = section(i, d, &slope), g = Fd - F;
+    known_d_[2 * i + 1] = d, known_F_[2 * i + 1] = Fd;
     (g > 0 ? hi : lo) = d;
     if (std::abs(g) <= 1e-12 * F || hi - lo <= 1e-13 * std::max(std::abs(hi), 1e-3)) break;
     double next = d - g / std::max(slope, 1e-300);

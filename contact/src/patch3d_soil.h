@@ -73,11 +73,23 @@ class SoilSections final : public SectionLaws {
   std::vector<const ground::PressureSinkage*> cell_law_;
   std::vector<double> area_, zmax_, rut_;  ///< rut per cell (empty: virgin)
   SoilRate rate_;
+  /// approach()'s bracket keeps the cells' Newton starts (and may be answered from known
+  /// approaches): not with cells of their own law (Wong and Reece's rear region, whose
+  /// flow-stress law has a kink: there the roots' last bits follow their starts, and the
+  /// rolling fixed point's stopping test turns that into a step more or less, ~1e-4).
+  bool keep_starts_;
   std::vector<double> rest_;  ///< Z(0) per cell: the rut through the rate term (empty: virgin)
   std::vector<double> pv_;    ///< virgin pressure at the memory per cell
   mutable std::vector<double> last_;  ///< each cell's last root (Newton's start)
-  std::vector<double> floor_;         ///< per section
-  std::vector<double> d_;             ///< each section's approach (linearisation point)
+  /// The compression e whose solve ended on last_ by the residual test (NaN: none) and the
+  /// slope there: a call at the same e returns them (cell()).
+  mutable std::vector<double> repeat_e_, repeat_slope_;
+  mutable std::vector<double> saved_;  ///< a section's cell starts kept over approach()'s bracket
+  /// Per section, two approaches with the force they were found to carry: approach()'s last
+  /// bracket end [2 i] and last Newton iterate [2 i + 1] (d = inf: none).
+  mutable std::vector<double> known_d_, known_F_;
+  std::vector<double> floor_;  ///< per section
+  std::vector<double> d_;      ///< each section's approach (linearisation point)
 };
 
 }  // namespace modaltyre::contact::detail
