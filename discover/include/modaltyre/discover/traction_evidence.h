@@ -19,8 +19,8 @@
 // takes every slip of the group in increasing order (each slip warm-starts the next) and as
 // many passes as the group's highest pass. The tyre model is rebuilt for each parameter set
 // (the baseline scalars act in its kernels and tread; the modes are identified once), on
-// discover's evaluation mesh and the config's candidate window, grown where a row's contact
-// reaches its edge as `traction` grows it (contact::steady_traction_growing_window).
+// discover's evaluation mesh and the config's candidate window (a row whose contact reaches the
+// window's edge fails; `traction` grows its window there, discover does not: see the .cc).
 #include <atomic>
 #include <functional>
 #include <map>
