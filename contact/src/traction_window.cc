@@ -1,6 +1,6 @@
-// steady_traction with the candidate window grown where the contact reaches its edge: the one
-// place `traction` (report/traction_run.cc) and discover's traction rows
-// (discover/traction_evidence.cc) grow it, so that both roll the same contact.
+// steady_traction with the candidate window grown where the contact reaches its edge, as
+// `traction` (report/traction_run.cc) rolls it. discover's traction rows do not grow it per
+// evaluation (discover/traction_evidence.cc says why).
 #include <utility>
 
 #include "modaltyre/contact/footprint.h"

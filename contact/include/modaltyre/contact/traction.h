@@ -124,8 +124,8 @@ std::vector<TractionResult> steady_traction(const TyreModel& model,
 /// steady_traction with the candidate window grown where the contact reaches its edge: the cases
 /// whose rows report window_exceeded run again on a model rebuilt (on `modes`, the model's own)
 /// with a window 1.5 times longer, up to max_window_m (footprint.h); a case still exceeding the
-/// largest keeps its failed rows, their message saying how far the window grew. The path
-/// `modaltyre traction` and discover's traction rows both run, so they roll the same contact.
+/// largest keeps its failed rows, their message saying how far the window grew. `modaltyre
+/// traction` runs it; discover's traction rows keep the config's window (traction_evidence.cc).
 std::vector<TractionResult> steady_traction_growing_window(const TyreModel& model,
                                                            const modal::ModeIdentification& modes,
                                                            const ground::GroundSettings& ground,
