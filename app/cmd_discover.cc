@@ -49,6 +49,7 @@ struct DiscoverArgs {
   int max_effects = 2;
   int exact_rows = 64;
   bool uncertainty = false;
+  bool no_mesh_check = false;
 };
 
 // "length_mm and sinking_mm": the observables with a relative residual (a non-zero
@@ -126,6 +127,15 @@ void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet
                   << (b->second.upper_at_bound ? " (range bound)" : "") << ")";
       }
     }
+    for (const auto& kv : e.mesh.shift) {
+      const auto b = e.bands_with_mesh.find(kv.first);
+      if (b == e.bands_with_mesh.end()) continue;
+      std::cout << "\n    " << kv.first << " moves by " << kv.second << " on "
+                << e.mesh.fine_unit_length_mm << " mm units (fitted on " << e.mesh.unit_length_mm
+                << "); with the mesh's share to the continuum (twice that): " << b->second.lower
+                << " to " << b->second.upper;
+    }
+    if (!e.mesh.note.empty()) std::cout << "\n    mesh check: " << e.mesh.note;
     for (const auto& k : e.at_bound) {
       std::cout << "\n    " << k << " ended at a bound of its range: the data bound it from one "
                 << "side only";
@@ -254,6 +264,9 @@ void register_discover(CLI::App& app) {
                 "weigh each candidate against the model's own uncertainty too (the config's "
                 "uncertain inputs, propagated): the evidence they could produce is taken off its "
                 "Delta BIC (docs/uncertainty.md)");
+  cmd->add_flag("--no-mesh-check", a->no_mesh_check,
+                "skip the named effects' mesh shift (their fitted values on half the unit length, "
+                "docs/discover.md \"The mesh's share\")");
   cmd->add_option("--max-effects", a->max_effects, "effects to name at most (default 2)")
       ->check(CLI::Range(1, 9));
   cmd->add_option("--exact-rows", a->exact_rows,
@@ -267,6 +280,7 @@ void register_discover(CLI::App& app) {
     opt.max_effects = a->max_effects;
     opt.fit.exact_rows = a->exact_rows;
     opt.model_uncertainty = a->uncertainty;
+    opt.mesh_check = !a->no_mesh_check;
     opt.validate();  // CLI::Range lets NaN through (every comparison with it is false)
     refuse_repeated_overrides(a->overrides);
     const contact::TyreConfig cfg = report::config_on_ground(a->config, a->ground, a->overrides);

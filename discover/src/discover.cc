@@ -6,7 +6,9 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -257,6 +259,37 @@ ParameterBand named_band(const Evaluator& ev, const TyreConfig& base, const Stag
   return b;
 }
 
+// The rows evaluated on half the evaluation unit length, for the mesh shift.
+struct FineMesh {
+  double unit_length_m = 0;
+  std::unique_ptr<const contact::TyreModel> model;
+  std::unique_ptr<const Evaluator> ev;
+};
+
+MeshBias named_mesh_bias(const Evaluator& ev, std::optional<FineMesh>& fine, const TyreConfig& base,
+                         const Stage& chosen, const DiscoverOptions& opt, int threads) {
+  const TyreConfig& eval = ev.model().config;
+  const double h = 0.5 * ev.model().unit_length_m;
+  if (!(eval.mesh.window_m / h <= 20000)) {  // the config reader's limit on the units
+    MeshBias b;
+    b.unit_length_mm = 2e3 * h;
+    b.note = "half the unit length would exceed 20000 candidate units: no mesh shift";
+    return b;
+  }
+  if (!fine) {
+    TyreConfig c = eval;
+    c.mesh.unit_length_m = h;
+    FineMesh f;
+    f.unit_length_m = h;
+    f.model = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(c));
+    auto fine_ev = std::make_unique<Evaluator>(*f.model, ev.data(), opt.traction_flexing);
+    fine_ev->set_threads(threads);
+    f.ev = std::move(fine_ev);
+    fine = std::move(f);
+  }
+  return mesh_bias(ev, *fine->ev, h, base, chosen.variant, chosen.fit);
+}
+
 std::string number_text(double v) {
   std::ostringstream s;
   s.precision(10);
@@ -325,6 +358,9 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
   std::vector<int> all(data.rows.size());
   std::iota(all.begin(), all.end(), 0);
 
+  // The mesh of half the unit length for the named effects' mesh shift (mesh_bias.h), built
+  // when first needed.
+  std::optional<FineMesh> fine;
   DiscoverReport rep;
   {
     std::ostringstream s;
@@ -483,6 +519,15 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
       ne.bands[p.key] = named_band(ev, current.fit.config, chosen, all, opt, static_cast<int>(i));
       if (!studies::range_bound_side(chosen.fit.values[i], p.min, p.max, p.log_scale).empty())
         ne.at_bound.push_back(p.key);
+    }
+    if (opt.mesh_check) {
+      ne.mesh = named_mesh_bias(ev, fine, current.fit.config, chosen, opt, threads);
+      for (std::size_t i = 0; i < chosen.variant.parameters.size(); ++i) {
+        const auto& p = chosen.variant.parameters[i];
+        const auto d = ne.mesh.shift.find(p.key);
+        if (ne.bands.count(p.key) && d != ne.mesh.shift.end())
+          ne.bands_with_mesh[p.key] = band_with_mesh(ne.bands.at(p.key), d->second, p);
+      }
     }
     ne.delta_bic = current.fit.bic - chosen.fit.bic;
     ne.cv_rms_before = current.cv.rms_all;

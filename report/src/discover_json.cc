@@ -42,6 +42,17 @@ nlohmann::json bands(const std::map<std::string, discover::ParameterBand>& m) {
   return j;
 }
 
+// A named effect's mesh shift (mesh_bias.h): the fitted values' move on half the unit length,
+// or the note saying why there is none; null when the check was off.
+nlohmann::json mesh_shift(const discover::MeshBias& m) {
+  if (m.unit_length_mm <= 0) return nullptr;
+  nlohmann::json j = {{"unit_length_mm", round_sig(m.unit_length_mm, 6)},
+                      {"fine_unit_length_mm", round_sig(m.fine_unit_length_mm, 6)},
+                      {"shift", values(m.shift)}};
+  if (!m.note.empty()) j["note"] = m.note;
+  return j;
+}
+
 // The candidate's detection limit (issue 23), null with a reason where there is none: an
 // untestable or named candidate, or one whose limit cannot be computed.
 void put_limit(const discover::CandidateScore& c, nlohmann::json& j) {
@@ -123,6 +134,8 @@ nlohmann::json discover_json(const discover::DiscoverReport& r, const std::strin
                        {"standard_errors", errors(e.standard_errors)},
                        {"bands_two_standard_errors", bands(e.bands)},
                        {"at_bound", e.at_bound},
+                       {"mesh_shift", mesh_shift(e.mesh)},
+                       {"bands_with_mesh", bands(e.bands_with_mesh)},
                        {"delta_bic", round_sig(e.delta_bic, 6)},
                        {"cv_rms_before", round_sig(e.cv_rms_before, 6)},
                        {"cv_rms_after", round_sig(e.cv_rms_after, 6)}});

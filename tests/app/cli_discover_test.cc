@@ -203,7 +203,16 @@ TEST_F(DiscoverCli, JsonOnASmallDataSetAndTheAugmentedConfigRuns) {
       const auto& b = e["bands_two_standard_errors"][key];
       EXPECT_LE(b["lower"].get<double>(), value.get<double>()) << e;
       EXPECT_GE(b["upper"].get<double>(), value.get<double>()) << e;
+      // The band with the mesh's share holds the noise band (mesh_bias.h).
+      const auto& m = e["bands_with_mesh"][key];
+      EXPECT_LE(m["lower"].get<double>(), b["lower"].get<double>()) << e;
+      EXPECT_GE(m["upper"].get<double>(), b["upper"].get<double>()) << e;
+      EXPECT_TRUE(e["mesh_shift"]["shift"][key].is_number()) << e;
     }
+    EXPECT_NEAR(e["mesh_shift"]["fine_unit_length_mm"].get<double>(),
+                0.5 * e["mesh_shift"]["unit_length_mm"].get<double>(),
+                1e-5 * e["mesh_shift"]["unit_length_mm"].get<double>())
+        << e;
   }
   ASSERT_TRUE(j["candidates"].is_array());
   ASSERT_FALSE(j["candidates"].empty());

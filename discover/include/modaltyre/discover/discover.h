@@ -31,6 +31,7 @@
 
 #include "modaltyre/discover/detection_limit.h"
 #include "modaltyre/discover/large_fit.h"
+#include "modaltyre/discover/mesh_bias.h"
 #include "modaltyre/discover/model_fit.h"
 #include "modaltyre/discover/model_uncertainty.h"
 #include "modaltyre/discover/profile_band.h"
@@ -58,6 +59,9 @@ struct DiscoverOptions {
   /// condition at least this strongly.
   double structure_correlation = 0.5;
   int threads = 0;  ///< 0: OpenMP default
+  /// For each named effect, its fitted parameters' shift on half the evaluation unit length
+  /// and the bands with it (mesh_bias.h): 2k + 1 evaluations and one on the fine mesh.
+  bool mesh_check = true;
   /// Detection limits of the candidates left unnamed (detection_limit.h) and the rows to add.
   bool detection_limits = true;
   LimitOptions limits;
@@ -129,6 +133,11 @@ struct NamedEffect {
   /// Parameters that ended at a bound of their range: the data bound them from one side only
   /// (e.g. a stiffness "at least this large"), the value is not a measurement.
   std::vector<std::string> at_bound;
+  /// With DiscoverOptions::mesh_check: how far the fitted values move when the rows are
+  /// evaluated on half the unit length (mesh_bias.h), and the bands widened by the continuum
+  /// estimate (twice that shift) on its side; empty with mesh.note saying why where not made.
+  MeshBias mesh;
+  std::map<std::string, ParameterBand> bands_with_mesh;
   double delta_bic = 0;
   double cv_rms_before = 0, cv_rms_after = 0;
 };
