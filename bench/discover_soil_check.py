@@ -161,7 +161,14 @@ def judge(j, planted):
         if key in fit:
             # null: infinite (the rigid wheel reads none of the re-fitted tyre scalars)
             err = "%.2g" % se[key] if se.get(key) is not None else "inf"
-            parts.append("%s %.4g +- %s (drawn %.4g)" % (short, fit[key], err, value))
+            text = "%s %.4g +- %s (drawn %.4g)" % (short, fit[key], err, value)
+            # The band with the evaluation mesh's share (discover/mesh_bias.h), where made.
+            band = j["effects"][0].get("bands_with_mesh", {}).get(key)
+            if band:
+                inside = band["lower"] <= value <= band["upper"]
+                text += ", mesh band %.4g-%.4g %s" % (band["lower"], band["upper"],
+                                                      "holds it" if inside else "misses it")
+            parts.append(text)
     before, after = pooled_gaps(j)
     return after < before, False, "; ".join(parts)
 
