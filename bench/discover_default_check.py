@@ -157,8 +157,16 @@ def main():
                 band = j["effects"][0].get("bands_two_standard_errors", {}).get(key)
                 if band:  # the reported band (profile likelihood, two standard errors)
                     good = fit is not None and band["lower"] <= value <= band["upper"]
-                    recovered.append("%s %.4g (%.4g to %.4g; planted %.4g)" % (
-                        key, fit or 0, band["lower"], band["upper"], value))
+                    text = "%s %.4g (%.4g to %.4g; planted %.4g)" % (
+                        key, fit or 0, band["lower"], band["upper"], value)
+                    # The band with the evaluation mesh's share (discover/mesh_bias.h): the data
+                    # come from a finer mesh than discover's.
+                    mesh = j["effects"][0].get("bands_with_mesh", {}).get(key)
+                    if mesh and not good and fit is not None:
+                        good = mesh["lower"] <= value <= mesh["upper"]
+                        text += "; with the mesh %.4g to %.4g %s" % (
+                            mesh["lower"], mesh["upper"], "holds it" if good else "misses it")
+                    recovered.append(text)
                 else:
                     good = fit is not None and se is not None and abs(fit - value) <= 2 * se
                     recovered.append("%s %.4g (+- %.3g; planted %.4g)" % (key, fit or 0, se or 0,
