@@ -5,7 +5,7 @@
 #include <unsupported/Eigen/FFT>
 #include <utility>
 
-#include "dense_product.h"
+#include "modaltyre/solvers/dense_product.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/solvers/instruction_set.h"
 
