@@ -5,8 +5,8 @@
 #include <unsupported/Eigen/FFT>
 #include <utility>
 
-#include "modaltyre/solvers/dense_product.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/solvers/dense_product.h"
 #include "modaltyre/solvers/instruction_set.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -87,17 +87,37 @@ __attribute__((target("avx2"))) inline void lag_rows(int p, int nc, LagKernels k
   }
 }
 
-/// The portable loop's sums, 8 (then 4) rows at a time in registers: u is written once instead
-/// of loaded and stored per column (SSE2's 2 doubles an instruction: the static footprint's CG
-/// products, ~70 % of a 3D transient's static start).
+/// The last 1-3 rows [p, nr) as lag_rows<1>, the lanes beyond nr under a mask (neither read nor
+/// written: the kernels' arrays may end there).
+__attribute__((target("avx2"))) inline void lag_rows_masked(int p, int nr, int nc, LagKernels k,
+                                                            const double* v0, const double* v1,
+                                                            double* u0, double* u1) {
+  const int left = nr - p;
+  const __m256i mask = _mm256_setr_epi64x(-1, left > 1 ? -1 : 0, left > 2 ? -1 : 0, 0);
+  __m256d s0 = _mm256_setzero_pd(), s1 = _mm256_setzero_pd();
+  for (int q = 0; q < nc; ++q) {
+    const __m256d a = _mm256_broadcast_sd(v0 + q), b = _mm256_broadcast_sd(v1 + q);
+    const int i = p - q;
+    const __m256d t0 = _mm256_add_pd(_mm256_mul_pd(_mm256_maskload_pd(k.k00 + i, mask), a),
+                                     _mm256_mul_pd(_mm256_maskload_pd(k.k01 + i, mask), b));
+    const __m256d t1 = _mm256_add_pd(_mm256_mul_pd(_mm256_maskload_pd(k.k10 + i, mask), a),
+                                     _mm256_mul_pd(_mm256_maskload_pd(k.k11 + i, mask), b));
+    s0 = _mm256_add_pd(s0, t0);
+    s1 = _mm256_add_pd(s1, t1);
+  }
+  _mm256_maskstore_pd(u0 + p, mask, s0);
+  _mm256_maskstore_pd(u1 + p, mask, s1);
+}
+
+/// The portable loop's sums, 8 (then 4, then the last 1-3) rows at a time in registers: u is
+/// written once instead of loaded and stored per column (SSE2's 2 doubles an instruction: the
+/// static footprint's CG products, ~70 % of a 3D transient's static start).
 __attribute__((target("avx2"))) void lag_direct_avx2(int nr, int nc, LagKernels k, const double* v0,
                                                      const double* v1, double* u0, double* u1) {
   int p = 0;
   for (; p + 8 <= nr; p += 8) lag_rows<2>(p, nc, k, v0, v1, u0, u1);
   for (; p + 4 <= nr; p += 4) lag_rows<1>(p, nc, k, v0, v1, u0, u1);
-  if (p == nr) return;
-  const LagKernels rest{k.k00 + p, k.k01 + p, k.k10 + p, k.k11 + p};
-  lag_direct_portable(nr - p, nc, rest, v0, v1, u0 + p, u1 + p);
+  if (p < nr) lag_rows_masked(p, nr, nc, k, v0, v1, u0, u1);
 }
 #endif
 
