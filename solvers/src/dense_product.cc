@@ -1,4 +1,4 @@
-#include "dense_product.h"
+#include "modaltyre/solvers/dense_product.h"
 
 #include <algorithm>
 
@@ -55,6 +55,21 @@ __attribute__((target("avx2"))) inline void one_rows8(int i, int j0, int j1, con
   _mm256_storeu_pd(y + i + 4, _mm256_add_pd(c1, _mm256_loadu_pd(y + i + 4)));
 }
 
+/// Rows [i, i + 4) of one or two right-hand sides (x1, y1 null for one): the rows 8 at a time
+/// leave (the per-entry sums are the same, in the same order, for any grouping of the rows).
+__attribute__((target("avx2"))) inline void rows4(int i, int j0, int j1, const double* a, int lda,
+                                                  const double* x0, const double* x1, double* y0,
+                                                  double* y1) {
+  __m256d c0 = _mm256_setzero_pd(), c1 = c0;
+  for (int j = j0; j < j1; ++j) {
+    const __m256d p = _mm256_loadu_pd(a + static_cast<long>(j) * lda + i);
+    c0 = _mm256_add_pd(_mm256_mul_pd(p, _mm256_broadcast_sd(x0 + j)), c0);
+    if (x1) c1 = _mm256_add_pd(_mm256_mul_pd(p, _mm256_broadcast_sd(x1 + j)), c1);
+  }
+  _mm256_storeu_pd(y0 + i, _mm256_add_pd(c0, _mm256_loadu_pd(y0 + i)));
+  if (y1) _mm256_storeu_pd(y1 + i, _mm256_add_pd(c1, _mm256_loadu_pd(y1 + i)));
+}
+
 /// The AVX2 path (no FMA: the target has none, so nothing is contracted). Y starts at zero, as
 /// Eigen's product sets it before adding each column block's sums.
 __attribute__((target("avx2"))) void dense_product_avx2(int nr, int nc, const double* a, int lda,
@@ -75,7 +90,11 @@ __attribute__((target("avx2"))) void dense_product_avx2(int nr, int nc, const do
         else
           one_rows8(i, j0, j1, a, lda, x0, y0);
       }
-      for (; i < nr; ++i) {  // the last nr % 8 rows
+      if (i + 4 <= nr) {
+        rows4(i, j0, j1, a, lda, x0, x1, y0, y1);
+        i += 4;
+      }
+      for (; i < nr; ++i) {  // the last nr % 4 rows
         double s0 = 0, s1 = 0;
         for (int j = j0; j < j1; ++j) {
           const double aij = a[static_cast<long>(j) * lda + i];

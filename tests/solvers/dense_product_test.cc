@@ -1,8 +1,10 @@
 // DenseCompliance::apply(): every right-hand side's product equals Eigen's matrix-vector product
-// to the bit on each kernel path (solvers/src/dense_product.h; run again with
-// MODALTYRE_ISA=portable, tests/CMakeLists.txt), over the sizes around its blocks of 8 rows, two
-// right-hand sides and Eigen's column blocks (16 columns from 128 on; 4 when the leading
+// to the bit on each kernel path (solvers/dense_product.h; run again with
+// MODALTYRE_ISA=portable, tests/CMakeLists.txt), over the sizes around its blocks of 8 and 4 rows,
+// two right-hand sides and Eigen's column blocks (16 columns from 128 on; 4 when the leading
 // dimension reaches 4000 doubles).
+#include "modaltyre/solvers/dense_product.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -41,13 +43,37 @@ void expect_eigens_bits(const Eigen::MatrixXd& C, int r0, int nr, int c0, int nc
 TEST(DenseProduct, EqualsEigensMatrixVectorProductToTheBit) {
   std::mt19937 rng(47);
   const Eigen::MatrixXd C = dense_product_random(rng, 300, 300);
-  for (int nr : {1, 2, 7, 8, 9, 17, 100, 290})
+  for (int nr : {1, 2, 4, 5, 7, 8, 9, 12, 13, 17, 37, 100, 290})
     for (int nc : {1, 3, 16, 127, 128, 145, 290})
       for (int nrhs : {1, 2, 3}) expect_eigens_bits(C, 5, nr, 7, nc, nrhs, rng);
   // Leading dimension >= 4000 doubles: Eigen's blocks of 4 columns.
   const Eigen::MatrixXd tall = dense_product_random(rng, 4003, 150);
   for (int nr : {9, 4003})
     for (int nrhs : {1, 2}) expect_eigens_bits(tall, 0, nr, 3, 140, nrhs, rng);
+}
+
+// CellNewton::solve() adds the products as Eigen's `r += A x` and `r += g (A x)` do (each row's
+// sum c, then r + c and r + g c): the same bits from dense_product() and one addition, on the
+// capacitance's sizes (rank + 1 ~ 10-40) and a few more.
+TEST(DenseProduct, AddedProductsEqualEigensCompoundAssignmentsToTheBit) {
+  std::mt19937 rng(4747);
+  for (int n : {2, 9, 13, 37, 41}) {
+    const Eigen::MatrixXd A = dense_product_random(rng, n, n);
+    const Eigen::VectorXd x = dense_product_random(rng, n, 1).col(0);
+    const Eigen::VectorXd r0 = dense_product_random(rng, n, 1).col(0);
+    const double g = 3.7e-5;
+    Eigen::VectorXd want_sum = r0, want_scaled = r0, prod(n);
+    want_sum.noalias() += A * x;
+    want_scaled.noalias() += g * (A * x);
+    modaltyre::solvers::detail::dense_product(n, n, A.data(), n, x, prod);
+    const Eigen::VectorXd sum = r0 + prod;
+    Eigen::VectorXd scaled = r0;
+    scaled += g * prod;
+    for (int i = 0; i < n; ++i) {
+      ASSERT_EQ(std::memcmp(&sum(i), &want_sum(i), sizeof(double)), 0) << n << " row " << i;
+      ASSERT_EQ(std::memcmp(&scaled(i), &want_scaled(i), sizeof(double)), 0) << n << " row " << i;
+    }
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cell_kernels.h"
+#include "modaltyre/solvers/dense_product.h"
 #include "modaltyre/transient/column_product.h"
 #include "modaltyre/transient/ode_system.h"
 #include "row_lu_solve.h"
@@ -374,16 +375,20 @@ void CellNewton::solve(double* x) {
   column_dots(CqT_, xx.head(nq), eta0_);
   if (nr > 0) column_dots(CrT_, xx.segment(2 * nq, nr), eta0_, 1.0, true);
   eta0_(rank) = xx(Z);
-  eta_ = eta0_;
-  eta_.noalias() += H_ * phi_;
+  // H phi and K w with Eigen's matrix-vector bits (solvers/dense_product.h: its AVX2 path where
+  // the CPU runs it), each added as Eigen's += adds its sums (alpha c + r, c = the product).
+  prod_.resize(np_);
+  solvers::detail::dense_product(np_, np_, H_.data(), np_, phi_, prod_);
+  eta_ = eta0_ + prod_;
   solve_cap(eta_, w_);
-  phi_.noalias() += gamma_ * (K_ * w_);
+  solvers::detail::dense_product(np_, np_, K_.data(), np_, w_, prod_);
+  phi_ += gamma_ * prod_;
   column_product(DQ_, phi_, xx, true);
   if (ne_ > 0) {
     if (ns_ > 0) {
       // x_E = M_EE^-1 (b_E - M_EX x_X), M_EX = -gamma diag(kd / c') T~ P.
-      eta_ = eta0_;
-      eta_.noalias() += H_ * phi_;
+      solvers::detail::dense_product(np_, np_, H_.data(), np_, phi_, prod_);
+      eta_ = eta0_ + prod_;
       work_s_.resize(ns_);
       column_product(Tt_, eta_, work_s_);  // T~_i P x_X per section
       for (int c = 0; c < nc; ++c) {

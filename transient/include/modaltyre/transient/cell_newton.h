@@ -88,7 +88,7 @@ class CellNewton {
   Eigen::MatrixXd CqT_, CrT_, DQ_, H_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_, Y_, TtR_, RR_;
   Eigen::VectorXi cap_perm_;
-  mutable Eigen::VectorXd eta_, eta0_, phi_, w_, work_e_, work_s_;
+  mutable Eigen::VectorXd eta_, eta0_, phi_, w_, work_e_, work_s_, prod_;
 };
 
 }  // namespace modaltyre::transient

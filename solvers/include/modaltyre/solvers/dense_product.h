@@ -1,6 +1,7 @@
 #pragma once
 // Dense column-major products with several right-hand sides in one pass over the matrix
-// (DenseCompliance::apply(), the lockstep CG of the dense contact solve, issue 47).
+// (DenseCompliance::apply(), the lockstep CG of the dense contact solve; the 3D transient's
+// Newton solve, CellNewton; issue 47).
 #include <Eigen/Dense>
 
 namespace modaltyre::solvers::detail {
