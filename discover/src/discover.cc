@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <memory>
 #include <numeric>
@@ -270,24 +271,33 @@ MeshBias named_mesh_bias(const Evaluator& ev, std::optional<FineMesh>& fine, con
                          const Stage& chosen, const DiscoverOptions& opt, int threads) {
   const TyreConfig& eval = ev.model().config;
   const double h = 0.5 * ev.model().unit_length_m;
+  MeshBias none;
+  none.unit_length_mm = 1e3 * ev.model().unit_length_m;
+  none.fine_unit_length_mm = 1e3 * h;
   if (!(eval.mesh.window_m / h <= 20000)) {  // the config reader's limit on the units
-    MeshBias b;
-    b.unit_length_mm = 2e3 * h;
-    b.note = "half the unit length would exceed 20000 candidate units: no mesh shift";
-    return b;
+    none.note = "half the unit length would exceed 20000 candidate units: no mesh shift";
+    return none;
   }
-  if (!fine) {
-    TyreConfig c = eval;
-    c.mesh.unit_length_m = h;
-    FineMesh f;
-    f.unit_length_m = h;
-    f.model = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(c));
-    auto fine_ev = std::make_unique<Evaluator>(*f.model, ev.data(), opt.traction_flexing);
-    fine_ev->set_threads(threads);
-    f.ev = std::move(fine_ev);
-    fine = std::move(f);
+  // A check after the fit: whatever the fine mesh refuses or fails becomes its note, never the
+  // run's error (the report above it stands).
+  try {
+    if (!fine) {
+      TyreConfig c = eval;
+      c.mesh.unit_length_m = h;
+      FineMesh f;
+      f.unit_length_m = h;
+      f.model = std::make_unique<const contact::TyreModel>(contact::build_tyre_model(c));
+      auto fine_ev = std::make_unique<Evaluator>(*f.model, ev.data(), opt.traction_flexing);
+      fine_ev->set_threads(threads);
+      f.ev = std::move(fine_ev);
+      fine = std::move(f);
+    }
+    return mesh_bias(ev, *fine->ev, h, base, chosen.variant, chosen.fit);
+  } catch (const std::exception& e) {
+    none.note =
+        std::string("the half mesh could not be evaluated (") + e.what() + "): no mesh shift";
+    return none;
   }
-  return mesh_bias(ev, *fine->ev, h, base, chosen.variant, chosen.fit);
 }
 
 std::string number_text(double v) {
