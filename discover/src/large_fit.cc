@@ -177,6 +177,7 @@ FitResult fit_variant_many_rows(const Evaluator& ev, const TyreConfig& base, con
   Eigen::MatrixXd J_values = J;
   for (int j = 0; j < k; ++j) J_values.col(j) /= search_derivative(v.parameters[j], u(j));
   best.standard_errors = standard_errors(ev.data(), best, J_values);
+  best.jacobian = std::move(J_values);
   if (jacobian_search) *jacobian_search = std::move(J);
   return best;
 }

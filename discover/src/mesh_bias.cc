@@ -60,7 +60,12 @@ MeshBias mesh_bias(const Evaluator& coarse, const Evaluator& fine, double fine_u
   }
   std::vector<double> change(r_fine.size());
   for (std::size_t i = 0; i < change.size(); ++i) change[i] = r_fine[i] - fit.residuals[i];
-  const Eigen::MatrixXd J = jacobian(coarse, base, v, fit.values, fit.entries);
+  // The fit's own Jacobian where it kept one (its standard errors came from it), else 2k
+  // evaluations.
+  const bool kept = fit.jacobian.rows() == static_cast<Eigen::Index>(fit.entries.size()) &&
+                    fit.jacobian.cols() == static_cast<Eigen::Index>(v.parameters.size());
+  const Eigen::MatrixXd J =
+      kept ? fit.jacobian : jacobian(coarse, base, v, fit.values, fit.entries);
   const std::vector<double> d = gauss_newton_shift(coarse.data(), fit, J, change);
   if (d.empty()) {
     b.note = "the fitted parameters are not identifiable from these rows: no mesh shift";

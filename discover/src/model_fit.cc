@@ -388,7 +388,8 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
   FitResult fr = evaluate_fit(ev, base, v, values_of(ps, lm.x), entries);
   fr.evaluations += evaluations;
   if (with_errors) {
-    fr.standard_errors = standard_errors(ev.data(), fr, jacobian(ev, base, v, fr.values, entries));
+    fr.jacobian = jacobian(ev, base, v, fr.values, entries);
+    fr.standard_errors = standard_errors(ev.data(), fr, fr.jacobian);
   }
   fr.status = lm.status;
   return fr;

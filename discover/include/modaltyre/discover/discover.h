@@ -60,7 +60,7 @@ struct DiscoverOptions {
   double structure_correlation = 0.5;
   int threads = 0;  ///< 0: OpenMP default
   /// For each named effect, its fitted parameters' shift on half the evaluation unit length
-  /// and the bands with it (mesh_bias.h): 2k + 1 evaluations and one on the fine mesh.
+  /// and the bands with it (mesh_bias.h): one evaluation of the rows on the fine mesh.
   bool mesh_check = true;
   /// Detection limits of the candidates left unnamed (detection_limit.h) and the rows to add.
   bool detection_limits = true;

@@ -41,8 +41,9 @@ struct MeshBias {
 
 /// The shift of every fitted parameter of `fit` (a full fit of `v` on all rows of `coarse`)
 /// when the rows are evaluated on `fine` (the same data, half the unit length) with the
-/// configs' mesh set to `fine_unit_length_m`. 2k + 1 evaluations on the coarse mesh and one on
-/// the fine; a note instead of a shift when a fine row fails or the information is singular.
+/// configs' mesh set to `fine_unit_length_m`: one evaluation on the fine mesh, the Jacobian the
+/// fit's standard errors came from (2k evaluations where it kept none); a note instead of a
+/// shift when a fine row fails or the information is singular.
 MeshBias mesh_bias(const Evaluator& coarse, const Evaluator& fine, double fine_unit_length_m,
                    const contact::TyreConfig& base, const Variant& v, const FitResult& fit);
 

@@ -111,6 +111,9 @@ struct FitResult {
   /// Standard errors (config units) from the Gauss-Newton covariance of the residuals weighted
   /// by each observable's fitted noise level; computed only when asked (full fits).
   std::vector<double> standard_errors;
+  /// The Jacobian the standard errors came from (d residual / d value per entry and free
+  /// parameter, config units); empty where none were computed. The mesh check reuses it.
+  Eigen::MatrixXd jacobian;
   contact::TyreConfig config;  ///< fitted config (effects on, values set)
   std::vector<Evaluator::Entry> entries;
   std::vector<double> residuals;      ///< relative, per entry
