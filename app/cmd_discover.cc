@@ -318,6 +318,12 @@ void register_discover(CLI::App& app) {
     opt.traction_flexing = report::flexing_resistance_N;
     const discover::DiscoverReport r = discover::discover(cfg, data, opt);
     if (bar) bar->finish();
+    for (const auto& t : r.traction_windows) {
+      if (!t.window.grown) continue;  // as `traction`'s "window grew" note: only a grown window
+      std::cerr << "note: the traction rows at " << t.load_N << " N, " << t.speed_kmh
+                << " km/h rolled on a window of " << t.window.why
+                << ", decided once from the data (traction_windows in --json)\n";
+    }
     // Output files only once the report is known to be printable (the JSON finite), the plot
     // (which can still refuse) before the config, so that a failure leaves neither behind.
     auto write_outputs = [&] {

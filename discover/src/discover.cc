@@ -377,6 +377,7 @@ DiscoverReport discover(const TyreConfig& config, const MeasurementSet& data,
     s << model.unit_length_m * 1e3 << " mm units, " << model.candidates() << " candidate units";
     rep.evaluation_mesh = s.str();
   }
+  rep.traction_windows = ev.traction_windows();
   const auto all_entries = ev.entries(all);
   int config_failures = 0;
   rep.gap_config =

@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 
 #include "modaltyre/contact/carcass_source.h"
+#include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/tyre_model.h"
 #include "modaltyre/core/errors.h"
+#include "modaltyre/core/number_format.h"
 #include "modaltyre/studies/traction_rows.h"
 
 namespace modaltyre::discover {
@@ -47,7 +50,7 @@ TractionRows::TractionRows(const contact::TyreConfig& config, const studies::Mea
     auto it = std::find_if(groups_.begin(), groups_.end(), [&](const Group& g) {
       return g.load_N == load && g.speed_kmh == speed;
     });
-    if (it == groups_.end()) it = groups_.insert(groups_.end(), Group{load, speed, {}});
+    if (it == groups_.end()) it = groups_.insert(groups_.end(), Group{load, speed, {}, {}});
     it->rows.push_back(static_cast<int>(r));
     group_of_[r] = static_cast<int>(it - groups_.begin());
   }
@@ -58,6 +61,7 @@ TractionRows::TractionRows(const contact::TyreConfig& config, const studies::Mea
                          " need a soil to roll on: give --ground SOIL.yaml or a config with a "
                          "ground: section of model bekker or kelvin_voigt");
   modes_ = contact::config_modes(config);
+  decide_windows(config);
   if (!flexing || config.rigid) return;  // the rigid wheel has no flexing loss
   // The flexing loss per speed over that speed's loads, once, at the config as given.
   const contact::TyreModel model = contact::build_tyre_model(config, modes_);
@@ -68,6 +72,54 @@ TractionRows::TractionRows(const contact::TyreConfig& config, const studies::Mea
     const auto f = flexing(model, {set.begin(), set.end()}, speed / 3.6);
     for (const auto& [load, value] : f) flex_[{speed, load}] = value;
   }
+}
+
+void TractionRows::decide_windows(const contact::TyreConfig& config) {
+  // Each group's largest measured sinkage; the tyre's deflection on the rigid road at the
+  // group's load bounds its deflection on the soil (evidence_window.h). Once, at the config as
+  // given: the window then stays the same for every parameter set a fit tries.
+  std::vector<double> sinkage_m(groups_.size(), 0.0);
+  for (std::size_t k = 0; k < groups_.size(); ++k)
+    for (int r : groups_[k].rows) {
+      const auto& obs = data_.rows[r].observed;
+      const auto it = obs.find("soil_sinkage_mm");
+      if (it != obs.end()) sinkage_m[k] = std::max(sinkage_m[k], it->second * 1e-3);
+    }
+  std::optional<contact::TyreModel> road;
+  for (std::size_t k = 0; k < groups_.size(); ++k) {
+    Group& g = groups_[k];
+    if (config.rigid) {  // rolled as the Bekker-Wong wheel (contact/traction.h): no units
+      g.window = config_window(config, "the rigid wheel rolls on no candidate window");
+      continue;
+    }
+    double deflection_m = 0;
+    if (sinkage_m[k] > 0) {
+      if (!road) {
+        contact::TyreConfig on_road = config;
+        on_road.ground = ground::GroundSettings{};  // the rigid flat road
+        road.emplace(contact::build_tyre_model(on_road, modes_));
+      }
+      contact::OperatingConditions c = data_.rows[g.rows.front()].conditions;
+      c.surface = contact::Surface::rigid;
+      c.slip = c.speed_kmh = c.horizontal_force_N = 0;  // standing, the static deflection
+      const contact::Prediction p = contact::predict(*road, c);
+      if (!p.ok()) {
+        g.window = config_window(config,
+                                 "the measured sinkage not used: the tyre's road "
+                                 "footprint at " +
+                                     number_text(g.load_N) + " N failed: " + p.message);
+        continue;
+      }
+      deflection_m = p.sinking_mm * 1e-3;
+    }
+    g.window = evidence_window(config, sinkage_m[k], deflection_m);
+  }
+}
+
+std::vector<TractionWindow> TractionRows::windows() const {
+  std::vector<TractionWindow> out;
+  for (const auto& g : groups_) out.push_back({g.load_N, g.speed_kmh, g.window});
+  return out;
 }
 
 std::map<int, contact::TractionResult> TractionRows::predict(const contact::TyreConfig& config,
@@ -90,8 +142,12 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
     rolled.tread.width_m = rolled.footprint_3d->tread_width_m;
     rolled.footprint_3d.reset();
   }
-  const contact::TyreModel model =
-      contact::build_tyre_model(cylinder_of_3d ? rolled : config, modes_);
+  const contact::TyreConfig& base = cylinder_of_3d ? rolled : config;
+  // The model on the config's window, for the groups that keep it; the others build their own.
+  auto own_window = [&](const Group& g) { return g.window.window_m > base.mesh.window_m; };
+  std::optional<contact::TyreModel> model;
+  if (std::any_of(run.begin(), run.end(), [&](int g) { return !own_window(groups_[g]); }))
+    model.emplace(contact::build_tyre_model(base, modes_));
   std::vector<std::vector<contact::TractionResult>> results(run.size());
   std::vector<std::vector<double>> slips(run.size());
   const int n = static_cast<int>(run.size());
@@ -114,12 +170,21 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
     if (f != flex_.end()) opt.flexing_resistance_N[g.load_N] = f->second;
     std::vector<contact::TractionCase> cases;
     for (double slip : slips[k]) cases.push_back({g.load_N, slip});
-    // The config's window, not grown per evaluation as `traction` grows it: growing it for every
-    // parameter set a fit tries made the soil fits 6.6 times dearer (TractionDiscover's unloading
-    // set 44 -> 297 s of CPU; one growth at most still 2.2 times), for trial sets whose sinkage
-    // runs away. A row whose contact reaches the edge fails (100 %); deep-sinking data need
-    // contact.window_mm set for the run (docs/discover.md, "Hidden soil effects").
-    results[k] = contact::steady_traction(model, config.ground, cases, opt);
+    // The group's window, decided once from its measured sinkage (decide_windows), not grown
+    // per evaluation as `traction` grows it: growing it for every parameter set a fit tries
+    // made the soil fits 6.6 times dearer (TractionDiscover's unloading set 44 -> 297 s of CPU),
+    // for trial sets whose sinkage runs away, and made the objective jump where a trial set's
+    // contact reached an edge; a window fixed over the fit keeps it continuous in the
+    // parameters. A trial set whose contact outgrows the window fails the row (100 %), as a
+    // set sinking far deeper than the data should (docs/discover.md, "Hidden soil effects").
+    if (own_window(g)) {
+      contact::TyreConfig c = base;
+      c.mesh.window_m = g.window.window_m;
+      const contact::TyreModel grown = contact::build_tyre_model(c, modes_);
+      results[k] = contact::steady_traction(grown, config.ground, cases, opt);
+    } else {
+      results[k] = contact::steady_traction(*model, config.ground, cases, opt);
+    }
     cases_.fetch_add(static_cast<long>(results[k].size()), std::memory_order_relaxed);
   }
   for (int k = 0; k < n; ++k) {

@@ -193,6 +193,17 @@ nlohmann::json discover_json(const discover::DiscoverReport& r, const std::strin
       {"uncertainty_inputs", r.uncertainty_inputs},
       {"conclusion", r.conclusion}};
   if (!r.more_rows.effect.empty()) j["more_rows"] = more_rows_json(r.more_rows);
+  if (!r.traction_windows.empty()) {
+    // Only with traction rows: a footprint-only run's document stays as it was.
+    nlohmann::json w = nlohmann::json::array();
+    for (const auto& t : r.traction_windows)
+      w.push_back({{"load_N", t.load_N},
+                   {"speed_kmh", t.speed_kmh},
+                   {"window_mm", round_sig(t.window.window_m * 1e3, 6)},
+                   {"grown", t.window.grown},
+                   {"why", t.window.why}});
+    j["traction_windows"] = w;
+  }
   return j;
 }
 

@@ -216,42 +216,96 @@ nlohmann::json traction_prints(const std::string& config, const std::string& soi
   return nlohmann::json::parse(out)["cases"].at(0);
 }
 
-TEST(TractionEvidence, ARowBeyondTheWindowFailsAndRollsAsTractionOnTheWindowTractionGrewTo) {
+// A traction CSV row of what `traction` printed (p) for a load and slip, with or without its
+// sinkage.
+std::string printed_row_csv(const nlohmann::json& p, bool with_sinkage, double load_N,
+                            double slip) {
+  std::ostringstream csv;
+  csv.precision(12);
+  csv << "load_N,slip,drawbar_pull_N," << (with_sinkage ? "soil_sinkage_mm," : "")
+      << "torque_Nm,speed_kmh\n"
+      << load_N << "," << slip << "," << p.at("drawbar_pull_N").get<double>() << ",";
+  if (with_sinkage) csv << p.at("soil_sinkage_mm").get<double>() << ",";
+  csv << p.at("torque_Nm").get<double>() << ",0\n";
+  return csv.str();
+}
+
+TEST(TractionEvidence, ADeepRowRollsOnTheWindowItsMeasuredSinkageJustifies) {
   // Sandy loam under the 2D SF-350 at 3.5 kN and slip 0.5 sinks ~55 mm: its contact outgrows a
-  // 200 mm window, and `traction` grows the window (1.5 times, contact/traction.h) and rolls it
-  // there. discover does not grow it per evaluation (discover/traction_evidence.cc: 6.6 times
-  // the cost of a soil fit): on the 200 mm window the row fails (100 %); with contact.window_mm
-  // set to the window `traction` printed, discover's model of the row reproduces the printed
-  // pull, sinkage and torque.
+  // 200 mm window, and `traction` grows the window there (1.5 times, contact/traction.h).
+  // discover decides the row's window once from its measured sinkage (evidence_window.h): the
+  // row rolls whole on it and reproduces what `traction` prints on that window. Without the
+  // sinkage column the row keeps the config's 200 mm window and fails at its edge (100 %), as
+  // every such row did before the window was decided from the data.
   const std::string config = kSource + "/configs/sf350_2d_table3.yaml";
   const std::string soil = kSource + "/configs/soils/sandy_loam.yaml";
   const std::vector<std::string> sets = {"contact.unit_length_mm=4", "contact.window_mm=200"};
-  const nlohmann::json p = traction_prints(config, soil, sets, 3500, 0.5);
-  ASSERT_TRUE(p.is_object()) << "modaltyre traction failed";
-  ASSERT_TRUE(p.at("converged").get<bool>());
-  const double grown_mm = p.at("window_mm").get<double>();
-  ASSERT_GT(grown_mm, 200);  // the contact did reach the window's edge
-  std::ostringstream csv;
-  csv.precision(12);
-  csv << "load_N,slip,drawbar_pull_N,soil_sinkage_mm,torque_Nm,speed_kmh\n3500,0.5,"
-      << p.at("drawbar_pull_N").get<double>() << "," << p.at("soil_sinkage_mm").get<double>() << ","
-      << p.at("torque_Nm").get<double>() << ",0\n";
-  for (const bool grown : {false, true}) {
-    std::vector<std::string> s = sets;
-    if (grown) s.back() = "contact.window_mm=" + std::to_string(grown_mm);
-    TyreConfig c = contact::load_tyre_config(config, s);
-    c.ground = ground::load_ground_file(soil, {});
-    const auto data = as_measurements(csv.str(), c, grown ? "window_grown" : "window");
-    const contact::TyreModel model = contact::build_tyre_model(c);
+  const nlohmann::json grew = traction_prints(config, soil, sets, 3500, 0.5);
+  ASSERT_TRUE(grew.is_object()) << "modaltyre traction failed";
+  ASSERT_GT(grew.at("window_mm").get<double>(), 200);  // the contact did reach the window's edge
+  TyreConfig c = contact::load_tyre_config(config, sets);
+  c.ground = ground::load_ground_file(soil, {});
+  const contact::TyreModel model = contact::build_tyre_model(c);
+  for (const bool with_sinkage : {true, false}) {
+    const auto data = as_measurements(printed_row_csv(grew, with_sinkage, 3500, 0.5), c,
+                                      with_sinkage ? "deep" : "deep_no_sinkage");
     const Evaluator ev(model, data);
+    const auto windows = ev.traction_windows();
+    ASSERT_EQ(windows.size(), 1u);
+    const EvidenceWindow& w = windows.front().window;
+    EXPECT_EQ(w.grown, with_sinkage) << w.why;
     const auto entries = ev.entries({0});
-    ASSERT_EQ(entries.size(), 3u);
     int failures = -1;
     const auto r = ev.residuals(c, entries, failures);
-    EXPECT_EQ(failures, grown ? 0 : 1) << grown;
-    if (!grown) continue;
-    for (std::size_t i = 0; i < r.size(); ++i)
-      EXPECT_LT(std::abs(r[i]), 1e-6) << data.observables[entries[i].observable];
+    if (!with_sinkage) {
+      EXPECT_DOUBLE_EQ(w.window_m, 0.2);
+      EXPECT_EQ(failures, 1);  // the config's window: the contact reaches its edge
+      continue;
+    }
+    EXPECT_EQ(failures, 0);
+    // `traction` on the decided window rolls the row without growing it (the bound holds), and
+    // discover's model of the row reproduces what it prints.
+    std::vector<std::string> on_window = sets;
+    on_window.back() = "contact.window_mm=" + std::to_string(w.window_m * 1e3);
+    const nlohmann::json p = traction_prints(config, soil, on_window, 3500, 0.5);
+    ASSERT_TRUE(p.is_object()) << "modaltyre traction failed";
+    EXPECT_NEAR(p.at("window_mm").get<double>(), w.window_m * 1e3, 1e-6) << w.why;
+    const auto printed = as_measurements(printed_row_csv(p, true, 3500, 0.5), c, "deep_printed");
+    const Evaluator on_printed(model, printed);
+    const auto r2 = on_printed.residuals(c, entries, failures);
+    EXPECT_EQ(failures, 0);
+    for (std::size_t i = 0; i < r2.size(); ++i)
+      EXPECT_LT(std::abs(r2[i]), 1e-6) << printed.observables[entries[i].observable];
+  }
+}
+
+TEST(TractionEvidence, ShallowRowsKeepTheConfigsWindowBitForBit) {
+  // LETE sand sinks 15-25 mm under the 2D SF-350: the rim's chord at that depth plus the tyre's
+  // road deflection, +10 %, fits in the config's 360 mm window, so the rows roll on the
+  // config's own model, exactly as steady_traction rolls it (as discover did before the window
+  // was decided from the data).
+  const TyreConfig c = lete_config();
+  const auto rows = curve_rows({2500, 4000}, {0.05, 0.35});
+  const auto data = make_traction_data(c, rows, 0.02, 3, "shallow");
+  const contact::TyreModel model = contact::build_tyre_model(c);
+  const Evaluator ev(model, data);
+  for (const auto& t : ev.traction_windows()) {
+    EXPECT_FALSE(t.window.grown) << t.window.why;
+    EXPECT_EQ(t.window.window_m, c.mesh.window_m);
+  }
+  const auto predicted = ev.traction(c, {0, 1, 2, 3});
+  ASSERT_EQ(predicted.size(), 4u);
+  for (int k = 0; k < 2; ++k) {
+    const auto direct = contact::steady_traction(
+        model, c.ground, {{rows[2 * k].load_N, 0.05}, {rows[2 * k].load_N, 0.35}}, {});
+    ASSERT_EQ(direct.size(), 2u);
+    for (int j = 0; j < 2; ++j) {
+      const auto& a = predicted.at(2 * k + j);
+      EXPECT_EQ(a.drawbar_pull_N, direct[j].drawbar_pull_N);
+      EXPECT_EQ(a.soil_sinkage_m, direct[j].soil_sinkage_m);
+      EXPECT_EQ(a.torque_Nm, direct[j].torque_Nm);
+      EXPECT_EQ(a.window_m, c.mesh.window_m);
+    }
   }
 }
 
@@ -340,6 +394,30 @@ TEST(TractionDiscover, HiddenSoilUnloadingIsNamedWithItsAuInItsBand) {
   ASSERT_TRUE(e.parameters.count(key) && e.standard_errors.count(key));
   EXPECT_LT(std::abs(e.parameters.at(key) - kAu_kN_m4), 2 * e.standard_errors.at(key))
       << e.parameters.at(key) << " +- " << e.standard_errors.at(key);
+}
+
+TEST(TractionDiscover, DeepSinkingRowsAreFittedOnTheWindowTheirSinkageJustifies) {
+  // Sandy loam under the 2D SF-350 at 2.5 and 3.5 kN, slips 0.2 and 0.5 (40-55 mm of sinkage),
+  // made on a 600 mm window, given to discover on a config whose window is 200 mm: each load's
+  // rows roll on the window decided from their measured sinkage (grown), and the baseline is
+  // fitted on them to the noise (2 %). On the config's 200 mm window every row failed at its
+  // edge (100 %): the config's gap was 100 % on every observable.
+  TyreConfig c = contact::load_tyre_config(
+      kSource + "/configs/sf350_2d_table3.yaml",
+      {"contact.unit_length_mm=" + std::to_string(kUnit_mm), "contact.window_mm=200"});
+  c.ground = ground::load_ground_file(kSource + "/configs/soils/sandy_loam.yaml", {});
+  TyreConfig truth = c;
+  truth.mesh.window_m = 0.6;
+  const auto data =
+      make_traction_data(truth, curve_rows({2500, 3500}, {0.2, 0.5}), 0.02, 41, "deep");
+  const DiscoverReport r = discover(c, data, traction_options());
+  ASSERT_EQ(r.traction_windows.size(), 2u);
+  for (const auto& t : r.traction_windows) {
+    EXPECT_TRUE(t.window.grown) << t.window.why;
+    EXPECT_LT(t.window.window_m, truth.mesh.window_m) << t.window.why;
+  }
+  for (const auto& [obs, gap] : r.gap_config) EXPECT_LT(gap, 0.05) << obs;
+  for (const auto& [obs, gap] : r.gap_before) EXPECT_LT(gap, 0.05) << obs;
 }
 
 TEST(TractionDiscover, TheRigidWheelsSoilParametersGetFiniteErrorsAndTheirBand) {

@@ -149,7 +149,9 @@ struct RowResidual {
 };
 
 struct DiscoverReport {
-  std::string evaluation_mesh;               ///< e.g. "2 mm units"
+  std::string evaluation_mesh;  ///< e.g. "2 mm units"
+  /// The candidate window each group of traction rows rolls on, decided from the data.
+  std::vector<TractionWindow> traction_windows;
   std::map<std::string, double> gap_config;  ///< config as given, RMS relative per observable
   std::map<std::string, double> gap_before;  ///< baseline re-fitted, in-sample
   std::map<std::string, double> gap_after;

@@ -94,6 +94,10 @@ class Evaluator {
   long predictions() const { return predictions_.load(std::memory_order_relaxed); }
   /// Traction slip cases run so far (one per traction row's slip and pass and call).
   long traction_cases() const { return traction_ ? traction_->cases() : 0; }
+  /// The window each group of traction rows rolls on (traction_evidence.h; empty: no rows).
+  std::vector<TractionWindow> traction_windows() const {
+    return traction_ ? traction_->windows() : std::vector<TractionWindow>{};
+  }
   /// The model's traction for the traction rows among `rows` (traction_evidence.h).
   std::map<int, contact::TractionResult> traction(const contact::TyreConfig& config,
                                                   const std::vector<int>& rows) const;

@@ -19,8 +19,11 @@
 // takes every slip of the group in increasing order (each slip warm-starts the next) and as
 // many passes as the group's highest pass. The tyre model is rebuilt for each parameter set
 // (the baseline scalars act in its kernels and tread; the modes are identified once), on
-// discover's evaluation mesh and the config's candidate window (a row whose contact reaches the
-// window's edge fails; `traction` grows its window there, discover does not: see the .cc).
+// discover's evaluation mesh. Each group rolls on one candidate window for the whole run,
+// decided once from its measured sinkage (evidence_window.h: the rim's chord at the measured
+// sinkage plus the tyre's road deflection, +10 %; the config's where that fits in it or nothing
+// was measured). A row whose contact reaches that window's edge fails; `traction` grows its
+// window there, discover does not per evaluation (see the .cc).
 #include <atomic>
 #include <functional>
 #include <map>
@@ -29,6 +32,7 @@
 
 #include "modaltyre/contact/effects.h"
 #include "modaltyre/contact/traction.h"
+#include "modaltyre/discover/evidence_window.h"
 #include "modaltyre/modal/mode_identification.h"
 #include "modaltyre/studies/measurements.h"
 
@@ -55,6 +59,12 @@ bool acts_on_soil_runs(const contact::EffectInfo& info);
 /// The model's value of a traction observable (drawbar_pull_N, soil_sinkage_mm, torque_Nm).
 double traction_observable(const contact::TractionResult& r, const std::string& name);
 
+/// The window a group of traction rows rolls on (evidence_window.h).
+struct TractionWindow {
+  double load_N = 0, speed_kmh = 0;
+  EvidenceWindow window;
+};
+
 class TractionRows {
  public:
   /// `config`: discover's evaluation config (its mesh; its ground must be a soil when the data
@@ -69,6 +79,8 @@ class TractionRows {
   /// parallel over `threads` when not already inside a parallel region.
   std::map<int, contact::TractionResult> predict(const contact::TyreConfig& config,
                                                  const std::vector<int>& rows, int threads) const;
+  /// The window each group (load, speed) rolls on and why, in the data's order.
+  std::vector<TractionWindow> windows() const;
   /// Slip cases run so far (one per slip, pass and predict()).
   long cases() const { return cases_.load(std::memory_order_relaxed); }
 
@@ -76,7 +88,9 @@ class TractionRows {
   struct Group {
     double load_N = 0, speed_kmh = 0;
     std::vector<int> rows;
+    EvidenceWindow window;  ///< decided once, at construction
   };
+  void decide_windows(const contact::TyreConfig& config);
   const studies::MeasurementSet& data_;
   modal::ModeIdentification modes_;
   std::vector<Group> groups_;
