@@ -13,6 +13,7 @@
 #include "modaltyre/ground/rigid_wheel.h"
 #include "traction3d.h"
 #include "traction_anderson.h"
+#include "traction_cycle.h"
 #include "traction_kinematics.h"
 #include "wong_reece_flexible.h"
 
@@ -51,6 +52,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   const PatchOperator op = static_matrix_free_operator(model);
   double last_dp = 0;
   detail::AndersonMixer mixer(kAndersonDepth);
+  detail::CycleGuard cycle;
+  bool plain = false;  // Anderson's mixing left for plain steps (traction_cycle.h)
   // A viscous soil's rate term (soil_rate_term.h): its surface carried from step to step.
   const double rate_tau_s = soil_rate_time_s(g, o.speed_m_per_s);  // 0: no rate term
   SoilRate rate;
@@ -187,10 +190,17 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
                          fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
                          std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N &&
                          wong_reece.change(st.rear, rear) <= o.tolerance * c.load_N;
+    // The settle test's largest ratio (the limit cycle's guard, traction_cycle.h).
+    const double depth_tol_m = budget.depth_tolerance * std::max(deepest, f.sinking_m);
+    const double force_tol_N = o.tolerance * c.load_N;
+    const double worst = std::max({change / depth_tol_m, std::abs(dp - last_dp) / force_tol_N,
+                                   fx_change / force_tol_N, b_change / (o.tolerance * width),
+                                   std::abs(shear_v - st.shear_vertical_N) / force_tol_N,
+                                   wong_reece.change(st.rear, rear) / force_tol_N});
     last_dp = dp;
     // Anderson mixing (traction_anderson.h): the plain step x <- G(x) converges linearly at a
     // ratio of ~0.7 here (the ground's memory follows the sinkage of the units ahead).
-    const Eigen::VectorXd next = mixer.next(state, image);
+    const Eigen::VectorXd next = plain ? image : mixer.next(state, image);
     for (int i = 0; i < m; ++i) {
       st.depth_m[i] = std::max(next(i) * 1e-3, 0.0);
       st.fx_N[i] = next(m + i);
@@ -221,6 +231,15 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       msg << "converged in " << it << " rolling steps";
       r.message = msg.str();
       return r;
+    }
+    // A run orbiting a limit cycle (traction_cycle.h) goes on with plain steps, which settle
+    // where the mixing cycles; one that cycles with them too is failed now.
+    if (const int period =
+            detail::cycle_period(cycle, next, m, st.bekker_width_m, st.surface_m, st.active,
+                                 depth_tol_m, force_tol_N, o.tolerance * width, worst)) {
+      if (plain)
+        return case_result(c, pass, detail::cycle_message(it, period), SolveStatus::max_iterations);
+      plain = true, cycle = {};
     }
   }
   std::ostringstream msg;

@@ -14,6 +14,7 @@
 #include "patch3d_operators.h"
 #include "patch3d_soil.h"
 #include "traction_anderson.h"
+#include "traction_cycle.h"
 #include "traction_kinematics.h"
 
 namespace modaltyre::contact::detail {
@@ -213,6 +214,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   const modal::LagKernels& HK = m.kernels;
   const solvers::LagConvolution2x2 H({HK.r_from_r, HK.r_from_t, HK.t_from_r, HK.t_from_t}, HK.lags);
   AndersonMixer mixer(kAndersonDepth);
+  CycleGuard cycle;
+  bool plain = false;  // Anderson's mixing left for plain steps (traction_cycle.h)
   WongReeceRear wong_reece(ground_.wong_reece, rolling_radius_slip(c, R0), R0, S, K);
   wong_reece.prepare(st.rear);
   double last_dp = 0;
@@ -396,14 +399,31 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
                          fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
                          std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N &&
                          wong_reece.change(st.rear, rear) <= o.tolerance * c.load_N;
+    // The settle test's largest ratio (the limit cycle's guard, traction_cycle.h).
+    const double depth_tol_m = budget.depth_tolerance * std::max(deepest, n.delta_m);
+    const double force_tol_N = o.tolerance * c.load_N;
+    const double worst = std::max({change / depth_tol_m, std::abs(dp - last_dp) / force_tol_N,
+                                   fx_change / force_tol_N, b_change / (o.tolerance * width),
+                                   std::abs(shear_v - st.shear_vertical_N) / force_tol_N,
+                                   wong_reece.change(st.rear, rear) / force_tol_N});
     last_dp = dp;
-    const Eigen::VectorXd next = mixer.next(state, image);
+    const Eigen::VectorXd next = plain ? image : mixer.next(state, image);
     for (std::size_t a = 0; a < cells; ++a) st.depth_m[a] = std::max(next(a) * 1e-3, 0.0);
     for (int i = 0; i < S; ++i) st.fx_N[i] = next(cells + i);
     st.shear_vertical_N = next(Eigen::Index(cells) + S);
     if (rate_tau_s > 0) st.surface_m = rolled;  // plain, not mixed (soil_rate_term.h)
     wong_reece.unpack(next, Eigen::Index(cells) + S + 1, rear, st.rear);
-    if (!settled) continue;
+    if (!settled) {
+      // A run orbiting a limit cycle (traction_cycle.h) goes on with plain steps, which settle
+      // where the mixing cycles; one that cycles with them too is failed now.
+      const int period =
+          cycle_period(cycle, next, Eigen::Index(cells), st.bekker_width_m, st.surface_m, st.active,
+                       depth_tol_m, force_tol_N, o.tolerance * width, worst);
+      if (period > 0 && plain)
+        return case_result(c, pass, cycle_message(it, period), SolveStatus::max_iterations);
+      if (period > 0) plain = true, cycle = {};
+      continue;
+    }
     TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
     r.iterations = it;
     r.sinking_m = n.delta_m;

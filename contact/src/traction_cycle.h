@@ -1,0 +1,99 @@
+#pragma once
+// A rolling fixed point caught in a limit cycle (traction.cc, traction3d.cc), internal to the
+// contact library. On a stiff tyre the rear unit on the rut's rigid floor can leave and re-enter
+// contact step after step: with it the tyre rides on the floor and the depths ahead creep until
+// it lets go; without it the tyre drops and they creep back (docs/soil.md section 10, "Runs that
+// do not settle"). The orbit converges to that cycle (its return after p steps shrinks
+// geometrically, to the solver's rounding) and the settle test fails at each of its steps, so
+// the run cannot settle however many steps it is given: once it orbits the cycle within the
+// settle tolerance it is failed there, with the status of a run that used its whole budget.
+#include <Eigen/Dense>
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace modaltyre::contact::detail {
+
+/// The last steps' carried states; a run orbiting a cycle is found by its returns.
+class CycleGuard {
+ public:
+  /// Records this step's carried state and returns the period p of the cycle it orbits, 0 if
+  /// none. state: the next step's iterate (and whatever else it carries), unscaled; scale: each
+  /// entry's settle tolerance now (depths: depth_tolerance x the sinkage; forces: tolerance x the
+  /// load); active: its contact set; worst: the settle test's largest ratio (> 1: not settled).
+  /// A cycle of p >= 2 steps: for max(p, kHold) steps in a row, the state came back within its
+  /// settle tolerance of the state p steps before, in the same contact set, the settle test failed
+  /// by a factor kMargin or more, and within those steps one step moved the state by kAmplitude
+  /// tolerances or more (so a run creeping to its fixed point, whose return is the sum of its
+  /// steps, is never taken for one).
+  int repeat(const Eigen::VectorXd& state, const Eigen::VectorXd& scale,
+             const std::vector<char>& active, double worst) {
+    const int n = static_cast<int>(states_.size());
+    held_.resize(kWindow + 1, 0), moved_.resize(kWindow + 1, 0.0);
+    const double step =
+        n > 0 && active_[n - 1] == active ? distance(state, states_[n - 1], scale) : 1e300;
+    if (n > 0 && active_[n - 1] != active)
+      for (int p = 2; p <= n; ++p)
+        if (active_[n - p] == active) {
+          ++returns_;
+          break;
+        }
+    int found = 0;
+    for (int p = 2; p <= kWindow; ++p) {
+      const bool back = p <= n && worst >= kMargin && active_[n - p] == active &&
+                        distance(state, states_[n - p], scale) <= 1.0;
+      held_[p] = back ? held_[p] + 1 : 0;
+      moved_[p] = back ? std::max(held_[p] > 1 ? moved_[p] : 0.0, step) : 0.0;
+      if (!found && held_[p] >= std::max(p, kHold) && moved_[p] >= kAmplitude) found = p;
+    }
+    states_.push_back(state), active_.push_back(active);
+    if (static_cast<int>(states_.size()) > kWindow)
+      states_.erase(states_.begin()), active_.erase(active_.begin());
+    return found;
+  }
+  /// Steps so far whose contact set changed back to one of the last kWindow steps'.
+  int returns() const { return returns_; }
+
+ private:
+  static double distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
+                         const Eigen::VectorXd& scale) {
+    if (a.size() != b.size()) return 1e300;
+    return ((a - b).cwiseAbs().array() / scale.array()).maxCoeff();
+  }
+  static constexpr int kWindow = 64;          ///< the longest cycle looked for [steps]
+  static constexpr int kHold = 8;             ///< the fewest returns in a row [steps]
+  static constexpr double kMargin = 2.0;      ///< the settle test's least failing ratio
+  static constexpr double kAmplitude = 10.0;  ///< the cycle's least step [tolerances]
+  std::vector<Eigen::VectorXd> states_;
+  std::vector<std::vector<char>> active_;
+  std::vector<int> held_;
+  int returns_ = 0;
+  std::vector<double> moved_;
+};
+
+/// The run's cycle period (0: none) from the carried state: the mixed iterate `next` (its first
+/// `depths` entries depths in mm, the rest forces in N), Bekker's b and a viscous soil's rolled
+/// surface [m], with the settle test's tolerances [m, N, m] and its largest ratio this step.
+inline int cycle_period(CycleGuard& guard, const Eigen::VectorXd& next, Eigen::Index depths,
+                        double bekker_width_m, const std::vector<double>& surface_m,
+                        const std::vector<char>& active, double depth_tol_m, double force_tol_N,
+                        double width_tol_m, double worst) {
+  const Eigen::Index n = next.size(), r = Eigen::Index(surface_m.size());
+  Eigen::VectorXd y(n + 1 + r), scale(n + 1 + r);
+  y.head(n) = next, y(n) = bekker_width_m;
+  scale.head(depths).setConstant(depth_tol_m * 1e3);
+  scale.segment(depths, n - depths).setConstant(force_tol_N);
+  scale(n) = width_tol_m;
+  for (Eigen::Index i = 0; i < r; ++i) y(n + 1 + i) = surface_m[i], scale(n + 1 + i) = depth_tol_m;
+  return guard.repeat(y, scale, active, worst);
+}
+
+/// The failure of a run caught in a cycle of `period` steps at step `step`.
+inline std::string cycle_message(int step, int period) {
+  return "steady rolling did not settle: at step " + std::to_string(step) +
+         " it orbits a cycle of " + std::to_string(period) +
+         " steps (the state returns within the settle tolerance, the contact switching), which "
+         "more steps do not end";
+}
+
+}  // namespace modaltyre::contact::detail
