@@ -3,10 +3,12 @@
 // contact library. On a stiff tyre the rear unit on the rut's rigid floor can leave and re-enter
 // contact step after step: with it the tyre rides on the floor and the depths ahead creep until
 // it lets go; without it the tyre drops and they creep back (docs/soil.md section 10, "Runs that
-// do not settle"). The orbit converges to that cycle (its return after p steps shrinks
-// geometrically, to the solver's rounding) and the settle test fails at each of its steps, so
-// the run cannot settle however many steps it is given: once it orbits the cycle within the
-// settle tolerance it is failed there, with the status of a run that used its whole budget.
+// do not settle"). The orbit closes on that cycle (its return after p steps shrinks to the
+// solver's rounding, or stays within a per cent of its swing) and the settle test fails at each
+// of its steps, so more steps do not help; the plain step x <- G(x) settles on such runs (the
+// fixed point exists; the mixing's secants, spanning a contact switch, miss it). A run found
+// orbiting goes on with plain steps; found cycling again it is failed there, with the status of a
+// run that used its whole budget.
 #include <Eigen/Dense>
 #include <algorithm>
 #include <string>
@@ -21,38 +23,35 @@ class CycleGuard {
   /// none. state: the next step's iterate (and whatever else it carries), unscaled; scale: each
   /// entry's settle tolerance now (depths: depth_tolerance x the sinkage; forces: tolerance x the
   /// load); active: its contact set; worst: the settle test's largest ratio (> 1: not settled).
-  /// A cycle of p >= 2 steps: for max(p, kHold) steps in a row, the state came back within its
-  /// settle tolerance of the state p steps before, in the same contact set, the settle test failed
-  /// by a factor kMargin or more, and within those steps one step moved the state by kAmplitude
-  /// tolerances or more (so a run creeping to its fixed point, whose return is the sum of its
-  /// steps, is never taken for one).
+  /// A cycle of p >= 2 steps: for max(p, kHold) steps in a row the state came back, in the same
+  /// contact set, to the state p steps before within kReturn of the period's largest step (its
+  /// swing), the settle test failing by kMargin or more, and the swing is kAmplitude tolerances or
+  /// more. A run creeping to its fixed point is never taken for one: its return is the sum of its
+  /// steps, not less than its largest. A damped oscillation returning within 1 % of its swing
+  /// loses at most 2 % of it per period, and from kAmplitude tolerances needs ln(10) / 0.02 = 115
+  /// periods (230 steps or more) to settle: more than the run's 200 steps.
   int repeat(const Eigen::VectorXd& state, const Eigen::VectorXd& scale,
              const std::vector<char>& active, double worst) {
     const int n = static_cast<int>(states_.size());
-    held_.resize(kWindow + 1, 0), moved_.resize(kWindow + 1, 0.0);
-    const double step =
-        n > 0 && active_[n - 1] == active ? distance(state, states_[n - 1], scale) : 1e300;
-    if (n > 0 && active_[n - 1] != active)
-      for (int p = 2; p <= n; ++p)
-        if (active_[n - p] == active) {
-          ++returns_;
-          break;
-        }
+    held_.resize(kWindow + 1, 0);
+    steps_.push_back(n > 0 ? distance(state, states_[n - 1], scale) : 0.0);
     int found = 0;
-    for (int p = 2; p <= kWindow; ++p) {
+    double swing = 0;  // the largest step of the last p (this one included)
+    for (int p = 1; p <= kWindow; ++p) {
+      if (p <= static_cast<int>(steps_.size())) swing = std::max(swing, steps_[steps_.size() - p]);
+      if (p < 2) continue;
       const bool back = p <= n && worst >= kMargin && active_[n - p] == active &&
-                        distance(state, states_[n - p], scale) <= 1.0;
+                        distance(state, states_[n - p], scale) <= kReturn * swing;
       held_[p] = back ? held_[p] + 1 : 0;
-      moved_[p] = back ? std::max(held_[p] > 1 ? moved_[p] : 0.0, step) : 0.0;
-      if (!found && held_[p] >= std::max(p, kHold) && moved_[p] >= kAmplitude) found = p;
+      if (!found && held_[p] >= std::max(p, kHold) && swing >= kAmplitude) found = p;
     }
     states_.push_back(state), active_.push_back(active);
-    if (static_cast<int>(states_.size()) > kWindow)
+    if (static_cast<int>(states_.size()) > kWindow) {
       states_.erase(states_.begin()), active_.erase(active_.begin());
+      steps_.erase(steps_.begin());
+    }
     return found;
   }
-  /// Steps so far whose contact set changed back to one of the last kWindow steps'.
-  int returns() const { return returns_; }
 
  private:
   static double distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
@@ -63,12 +62,12 @@ class CycleGuard {
   static constexpr int kWindow = 64;          ///< the longest cycle looked for [steps]
   static constexpr int kHold = 8;             ///< the fewest returns in a row [steps]
   static constexpr double kMargin = 2.0;      ///< the settle test's least failing ratio
-  static constexpr double kAmplitude = 10.0;  ///< the cycle's least step [tolerances]
+  static constexpr double kAmplitude = 10.0;  ///< the cycle's least swing [tolerances]
+  static constexpr double kReturn = 0.01;     ///< the return's largest share of the swing
   std::vector<Eigen::VectorXd> states_;
   std::vector<std::vector<char>> active_;
+  std::vector<double> steps_;  ///< each step's move [tolerances]
   std::vector<int> held_;
-  int returns_ = 0;
-  std::vector<double> moved_;
 };
 
 /// The run's cycle period (0: none) from the carried state: the mixed iterate `next` (its first
