@@ -184,19 +184,16 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       deepest = std::max(deepest, std::abs(depth[i]));
       fx_change = std::max(fx_change, std::abs(fx_new[i] - st.fx_N[i]));
     }
-    const bool settled = it > 1 &&
-                         change <= budget.depth_tolerance * std::max(deepest, f.sinking_m) &&
-                         std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
-                         fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
-                         std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N &&
-                         wong_reece.change(st.rear, rear) <= o.tolerance * c.load_N;
-    // The settle test's largest ratio (the limit cycle's guard, traction_cycle.h).
-    const double depth_tol_m = budget.depth_tolerance * std::max(deepest, f.sinking_m);
-    const double force_tol_N = o.tolerance * c.load_N;
-    const double worst = std::max({change / depth_tol_m, std::abs(dp - last_dp) / force_tol_N,
-                                   fx_change / force_tol_N, b_change / (o.tolerance * width),
-                                   std::abs(shear_v - st.shear_vertical_N) / force_tol_N,
-                                   wong_reece.change(st.rear, rear) / force_tol_N});
+    const detail::SettleTolerances tol{budget.depth_tolerance * std::max(deepest, f.sinking_m),
+                                       o.tolerance * c.load_N, o.tolerance * width};
+    const detail::StepChanges changes{change,
+                                      std::abs(dp - last_dp),
+                                      fx_change,
+                                      b_change,
+                                      std::abs(shear_v - st.shear_vertical_N),
+                                      wong_reece.change(st.rear, rear)};
+    const bool settled = it > 1 && detail::within(changes, tol);
+    const double worst = detail::worst_ratio(changes, tol);  // the cycle guard's (traction_cycle.h)
     last_dp = dp;
     // Anderson mixing (traction_anderson.h): the plain step x <- G(x) converges linearly at a
     // ratio of ~0.7 here (the ground's memory follows the sinkage of the units ahead).
@@ -234,9 +231,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     }
     // A run orbiting a limit cycle (traction_cycle.h) goes on with plain steps, which settle
     // where the mixing cycles; one that cycles with them too is failed now.
-    if (const int period =
-            detail::cycle_period(cycle, next, m, st.bekker_width_m, st.surface_m, st.active,
-                                 depth_tol_m, force_tol_N, o.tolerance * width, worst)) {
+    if (const int period = detail::cycle_period(cycle, next, m, st.bekker_width_m, st.surface_m,
+                                                st.active, tol, worst)) {
       if (plain)
         return case_result(c, pass, detail::cycle_message(it, period), SolveStatus::max_iterations);
       plain = true, cycle = {};

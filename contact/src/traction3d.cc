@@ -393,19 +393,16 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     state(Eigen::Index(cells) + S) = st.shear_vertical_N, image(Eigen::Index(cells) + S) = shear_v;
     wong_reece.pack(st.rear, rear, state, image, Eigen::Index(cells) + S + 1);
     const double deepest = std::max(soil_sinkage, 1e-12);
-    const bool settled = it > 1 &&
-                         change <= budget.depth_tolerance * std::max(deepest, n.delta_m) &&
-                         std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
-                         fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
-                         std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N &&
-                         wong_reece.change(st.rear, rear) <= o.tolerance * c.load_N;
-    // The settle test's largest ratio (the limit cycle's guard, traction_cycle.h).
-    const double depth_tol_m = budget.depth_tolerance * std::max(deepest, n.delta_m);
-    const double force_tol_N = o.tolerance * c.load_N;
-    const double worst = std::max({change / depth_tol_m, std::abs(dp - last_dp) / force_tol_N,
-                                   fx_change / force_tol_N, b_change / (o.tolerance * width),
-                                   std::abs(shear_v - st.shear_vertical_N) / force_tol_N,
-                                   wong_reece.change(st.rear, rear) / force_tol_N});
+    const SettleTolerances tol{budget.depth_tolerance * std::max(deepest, n.delta_m),
+                               o.tolerance * c.load_N, o.tolerance * width};
+    const StepChanges changes{change,
+                              std::abs(dp - last_dp),
+                              fx_change,
+                              b_change,
+                              std::abs(shear_v - st.shear_vertical_N),
+                              wong_reece.change(st.rear, rear)};
+    const bool settled = it > 1 && within(changes, tol);
+    const double worst = worst_ratio(changes, tol);  // the cycle guard's (traction_cycle.h)
     last_dp = dp;
     const Eigen::VectorXd next = plain ? image : mixer.next(state, image);
     for (std::size_t a = 0; a < cells; ++a) st.depth_m[a] = std::max(next(a) * 1e-3, 0.0);
@@ -416,9 +413,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     if (!settled) {
       // A run orbiting a limit cycle (traction_cycle.h) goes on with plain steps, which settle
       // where the mixing cycles; one that cycles with them too is failed now.
-      const int period =
-          cycle_period(cycle, next, Eigen::Index(cells), st.bekker_width_m, st.surface_m, st.active,
-                       depth_tol_m, force_tol_N, o.tolerance * width, worst);
+      const int period = cycle_period(cycle, next, Eigen::Index(cells), st.bekker_width_m,
+                                      st.surface_m, st.active, tol, worst);
       if (period > 0 && plain)
         return case_result(c, pass, cycle_message(it, period), SolveStatus::max_iterations);
       if (period > 0) plain = true, cycle = {};

@@ -16,6 +16,25 @@
 
 namespace modaltyre::contact::detail {
 
+/// A rolling step's changes from its state to its image (the largest per kind) and the settle
+/// test's tolerances on them (traction.h: TractionOptions).
+struct StepChanges {
+  double depth_m = 0, pull_N = 0, fx_N = 0, width_m = 0, shear_N = 0, rear_N = 0;
+};
+struct SettleTolerances {
+  double depth_m = 0, force_N = 0, width_m = 0;
+};
+/// Every change within its tolerance.
+inline bool within(const StepChanges& d, const SettleTolerances& t) {
+  return d.depth_m <= t.depth_m && d.pull_N <= t.force_N && d.fx_N <= t.force_N &&
+         d.width_m <= t.width_m && d.shear_N <= t.force_N && d.rear_N <= t.force_N;
+}
+/// The largest change over its tolerance (> 1: not settled).
+inline double worst_ratio(const StepChanges& d, const SettleTolerances& t) {
+  return std::max({d.depth_m / t.depth_m, d.pull_N / t.force_N, d.fx_N / t.force_N,
+                   d.width_m / t.width_m, d.shear_N / t.force_N, d.rear_N / t.force_N});
+}
+
 /// The last steps' carried states; a run orbiting a cycle is found by its returns.
 class CycleGuard {
  public:
@@ -75,8 +94,9 @@ class CycleGuard {
 /// surface [m], with the settle test's tolerances [m, N, m] and its largest ratio this step.
 inline int cycle_period(CycleGuard& guard, const Eigen::VectorXd& next, Eigen::Index depths,
                         double bekker_width_m, const std::vector<double>& surface_m,
-                        const std::vector<char>& active, double depth_tol_m, double force_tol_N,
-                        double width_tol_m, double worst) {
+                        const std::vector<char>& active, const SettleTolerances& tol,
+                        double worst) {
+  const double depth_tol_m = tol.depth_m, force_tol_N = tol.force_N, width_tol_m = tol.width_m;
   const Eigen::Index n = next.size(), r = Eigen::Index(surface_m.size());
   Eigen::VectorXd y(n + 1 + r), scale(n + 1 + r);
   y.head(n) = next, y(n) = bekker_width_m;
