@@ -229,11 +229,11 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       r.message = msg.str();
       return r;
     }
-    // A run orbiting a limit cycle (traction_cycle.h) goes on with plain steps, which settle
-    // where the mixing cycles; one that cycles with them too is failed now.
+    // A run orbiting a limit cycle (traction_cycle.h) fails now, or, with plain_steps_on_cycle,
+    // goes on with plain steps, which settle where the mixing cycles.
     if (const int period = detail::cycle_period(cycle, next, m, st.bekker_width_m, st.surface_m,
                                                 st.active, tol, worst)) {
-      if (plain)
+      if (plain || !o.plain_steps_on_cycle)
         return case_result(c, pass, detail::cycle_message(it, period), SolveStatus::max_iterations);
       plain = true, cycle = {};
     }

@@ -411,11 +411,11 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     if (rate_tau_s > 0) st.surface_m = rolled;  // plain, not mixed (soil_rate_term.h)
     wong_reece.unpack(next, Eigen::Index(cells) + S + 1, rear, st.rear);
     if (!settled) {
-      // A run orbiting a limit cycle (traction_cycle.h) goes on with plain steps, which settle
-      // where the mixing cycles; one that cycles with them too is failed now.
+      // A run orbiting a limit cycle (traction_cycle.h) fails now, or, with
+      // plain_steps_on_cycle, goes on with plain steps, which settle where the mixing cycles.
       const int period = cycle_period(cycle, next, Eigen::Index(cells), st.bekker_width_m,
                                       st.surface_m, st.active, tol, worst);
-      if (period > 0 && plain)
+      if (period > 0 && (plain || !o.plain_steps_on_cycle))
         return case_result(c, pass, cycle_message(it, period), SolveStatus::max_iterations);
       if (period > 0) plain = true, cycle = {};
       continue;

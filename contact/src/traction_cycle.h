@@ -7,8 +7,8 @@
 // solver's rounding, or stays within a per cent of its swing) and the settle test fails at each
 // of its steps, so more steps do not help; the plain step x <- G(x) settles on such runs (the
 // fixed point exists; the mixing's secants, spanning a contact switch, miss it). A run found
-// orbiting goes on with plain steps; found cycling again it is failed there, with the status of a
-// run that used its whole budget.
+// orbiting fails there, with the status of a run that used its whole budget, or (the option
+// TractionOptions::plain_steps_on_cycle) goes on with plain steps, failing if found cycling again.
 #include <Eigen/Dense>
 #include <algorithm>
 #include <string>

@@ -1,8 +1,8 @@
 // Steady rolling caught in a limit cycle (contact/src/traction_cycle.h, docs/soil.md section 10,
 // "Runs that do not settle"): the guard finds an orbit that returns with its contact switching and
 // never takes a run creeping to its fixed point for one; a stiff tyre whose Anderson-mixed rolling
-// cycled for its whole budget (and was retried cold, cycling again) now settles on plain steps,
-// at a state that is the fixed point (rolled again from it, it stays).
+// cycled for its whole budget fails at the cycle, or, with plain_steps_on_cycle, settles on plain
+// steps at a state that is the fixed point (rolled again from it, it stays).
 #include "../../contact/src/traction_cycle.h"
 
 #include <gtest/gtest.h>
@@ -96,10 +96,25 @@ TyreConfig stiff_tyre_on_lete_sand() {
   return c;
 }
 
+TEST(RollingCycle, AStiffTyreWhoseMixingCyclesFailsAtTheCycleNotAtItsBudget) {
+  // The default: the run fails as it did at its 200th step, once the cycle is found.
+  const TyreConfig c = stiff_tyre_on_lete_sand();
+  const TyreModel model = build_tyre_model(c);
+  const auto r = steady_traction(model, c.ground, {{2500, 0.05}}, TractionOptions{});
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_FALSE(r.front().ok());
+  EXPECT_EQ(r.front().status, SolveStatus::max_iterations);
+  EXPECT_NE(r.front().message.find("did not settle: at step"), std::string::npos)
+      << r.front().message;
+  EXPECT_NE(r.front().message.find("orbits a cycle of 10 steps"), std::string::npos)
+      << r.front().message;
+}
+
 TEST(RollingCycle, AStiffTyreWhoseMixingCycledSettlesOnPlainStepsAtItsFixedPoint) {
   const TyreConfig c = stiff_tyre_on_lete_sand();
   const TyreModel model = build_tyre_model(c);
-  const TractionOptions o;
+  TractionOptions o;
+  o.plain_steps_on_cycle = true;
   // Cold, slip 0.05: with Anderson's mixing alone it cycled with a period of 10 steps for its
   // 200 (a unit at the rear switching in and out of contact) and failed.
   const auto once = steady_traction(model, c.ground, {{2500, 0.05}}, o);
