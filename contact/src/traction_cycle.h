@@ -111,7 +111,7 @@ inline int cycle_period(CycleGuard& guard, const Eigen::VectorXd& next, Eigen::I
 inline std::string cycle_message(int step, int period) {
   return "steady rolling did not settle: at step " + std::to_string(step) +
          " it orbits a cycle of " + std::to_string(period) +
-         " steps (the state returns within the settle tolerance, the contact switching), which "
+         " steps (the state returning within 1 % of its swing, the contact switching), which "
          "more steps do not end";
 }
 
