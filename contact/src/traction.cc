@@ -13,6 +13,7 @@
 #include "modaltyre/ground/rigid_wheel.h"
 #include "traction3d.h"
 #include "traction_anderson.h"
+#include "traction_cycle.h"
 #include "traction_kinematics.h"
 #include "wong_reece_flexible.h"
 
@@ -51,6 +52,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
   const PatchOperator op = static_matrix_free_operator(model);
   double last_dp = 0;
   detail::AndersonMixer mixer(kAndersonDepth);
+  detail::CycleGuard cycle;
+  bool plain = false;  // Anderson's mixing left for plain steps (traction_cycle.h)
   // A viscous soil's rate term (soil_rate_term.h): its surface carried from step to step.
   const double rate_tau_s = soil_rate_time_s(g, o.speed_m_per_s);  // 0: no rate term
   SoilRate rate;
@@ -181,16 +184,20 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       deepest = std::max(deepest, std::abs(depth[i]));
       fx_change = std::max(fx_change, std::abs(fx_new[i] - st.fx_N[i]));
     }
-    const bool settled = it > 1 &&
-                         change <= budget.depth_tolerance * std::max(deepest, f.sinking_m) &&
-                         std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
-                         fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
-                         std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N &&
-                         wong_reece.change(st.rear, rear) <= o.tolerance * c.load_N;
+    const detail::SettleTolerances tol{budget.depth_tolerance * std::max(deepest, f.sinking_m),
+                                       o.tolerance * c.load_N, o.tolerance * width};
+    const detail::StepChanges changes{change,
+                                      std::abs(dp - last_dp),
+                                      fx_change,
+                                      b_change,
+                                      std::abs(shear_v - st.shear_vertical_N),
+                                      wong_reece.change(st.rear, rear)};
+    const bool settled = it > 1 && detail::within(changes, tol);
+    const double worst = detail::worst_ratio(changes, tol);  // the cycle guard's (traction_cycle.h)
     last_dp = dp;
     // Anderson mixing (traction_anderson.h): the plain step x <- G(x) converges linearly at a
     // ratio of ~0.7 here (the ground's memory follows the sinkage of the units ahead).
-    const Eigen::VectorXd next = mixer.next(state, image);
+    const Eigen::VectorXd next = plain ? image : mixer.next(state, image);
     for (int i = 0; i < m; ++i) {
       st.depth_m[i] = std::max(next(i) * 1e-3, 0.0);
       st.fx_N[i] = next(m + i);
@@ -221,6 +228,14 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
       msg << "converged in " << it << " rolling steps";
       r.message = msg.str();
       return r;
+    }
+    // A run orbiting a limit cycle (traction_cycle.h) fails now, or, with plain_steps_on_cycle,
+    // goes on with plain steps, which settle where the mixing cycles.
+    if (const int period = detail::cycle_period(cycle, next, m, st.bekker_width_m, st.surface_m,
+                                                st.active, tol, worst)) {
+      if (plain || !o.plain_steps_on_cycle)
+        return case_result(c, pass, detail::cycle_message(it, period), SolveStatus::max_iterations);
+      plain = true, cycle = {};
     }
   }
   std::ostringstream msg;

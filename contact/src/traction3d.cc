@@ -14,6 +14,7 @@
 #include "patch3d_operators.h"
 #include "patch3d_soil.h"
 #include "traction_anderson.h"
+#include "traction_cycle.h"
 #include "traction_kinematics.h"
 
 namespace modaltyre::contact::detail {
@@ -213,6 +214,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   const modal::LagKernels& HK = m.kernels;
   const solvers::LagConvolution2x2 H({HK.r_from_r, HK.r_from_t, HK.t_from_r, HK.t_from_t}, HK.lags);
   AndersonMixer mixer(kAndersonDepth);
+  CycleGuard cycle;
+  bool plain = false;  // Anderson's mixing left for plain steps (traction_cycle.h)
   WongReeceRear wong_reece(ground_.wong_reece, rolling_radius_slip(c, R0), R0, S, K);
   wong_reece.prepare(st.rear);
   double last_dp = 0;
@@ -390,20 +393,33 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     state(Eigen::Index(cells) + S) = st.shear_vertical_N, image(Eigen::Index(cells) + S) = shear_v;
     wong_reece.pack(st.rear, rear, state, image, Eigen::Index(cells) + S + 1);
     const double deepest = std::max(soil_sinkage, 1e-12);
-    const bool settled = it > 1 &&
-                         change <= budget.depth_tolerance * std::max(deepest, n.delta_m) &&
-                         std::abs(dp - last_dp) <= o.tolerance * c.load_N &&
-                         fx_change <= o.tolerance * c.load_N && b_change <= o.tolerance * width &&
-                         std::abs(shear_v - st.shear_vertical_N) <= o.tolerance * c.load_N &&
-                         wong_reece.change(st.rear, rear) <= o.tolerance * c.load_N;
+    const SettleTolerances tol{budget.depth_tolerance * std::max(deepest, n.delta_m),
+                               o.tolerance * c.load_N, o.tolerance * width};
+    const StepChanges changes{change,
+                              std::abs(dp - last_dp),
+                              fx_change,
+                              b_change,
+                              std::abs(shear_v - st.shear_vertical_N),
+                              wong_reece.change(st.rear, rear)};
+    const bool settled = it > 1 && within(changes, tol);
+    const double worst = worst_ratio(changes, tol);  // the cycle guard's (traction_cycle.h)
     last_dp = dp;
-    const Eigen::VectorXd next = mixer.next(state, image);
+    const Eigen::VectorXd next = plain ? image : mixer.next(state, image);
     for (std::size_t a = 0; a < cells; ++a) st.depth_m[a] = std::max(next(a) * 1e-3, 0.0);
     for (int i = 0; i < S; ++i) st.fx_N[i] = next(cells + i);
     st.shear_vertical_N = next(Eigen::Index(cells) + S);
     if (rate_tau_s > 0) st.surface_m = rolled;  // plain, not mixed (soil_rate_term.h)
     wong_reece.unpack(next, Eigen::Index(cells) + S + 1, rear, st.rear);
-    if (!settled) continue;
+    if (!settled) {
+      // A run orbiting a limit cycle (traction_cycle.h) fails now, or, with
+      // plain_steps_on_cycle, goes on with plain steps, which settle where the mixing cycles.
+      const int period = cycle_period(cycle, next, Eigen::Index(cells), st.bekker_width_m,
+                                      st.surface_m, st.active, tol, worst);
+      if (period > 0 && (plain || !o.plain_steps_on_cycle))
+        return case_result(c, pass, cycle_message(it, period), SolveStatus::max_iterations);
+      if (period > 0) plain = true, cycle = {};
+      continue;
+    }
     TractionResult r = case_result(c, pass, {}, SolveStatus::converged);
     r.iterations = it;
     r.sinking_m = n.delta_m;

@@ -111,6 +111,11 @@ struct TractionOptions {
   /// ground's memory makes the last digits of the profile creep at the patch's rear).
   double tolerance = 1e-5;
   double depth_tolerance = 1e-4;
+  /// A run whose Anderson-mixed rolling orbits a limit cycle (contact/src/traction_cycle.h,
+  /// docs/soil.md section 10) fails there, as it would at its last step, sooner (false), or goes
+  /// on with plain steps, which settle on the cases met (true; it then rolls where it failed,
+  /// and discover's fits, whose rows then roll in that corner, spend more time there).
+  bool plain_steps_on_cycle = false;
 };
 
 /// Every case for passes 1..P, in the order case by case, pass by pass. A 2D model runs its
