@@ -14,24 +14,12 @@ std::vector<double> gauss_newton_shift(const studies::MeasurementSet& data, cons
   if (m != static_cast<Eigen::Index>(residual_change.size()) ||
       m != static_cast<Eigen::Index>(fit.entries.size()))
     return {};
-  // The weights standard_errors() uses: one noise level per observable, the fit's RMS.
-  std::vector<double> sigma(data.observables.size(), 1.0);
-  for (std::size_t o = 0; o < sigma.size(); ++o) {
-    const auto it = fit.rms.find(data.observables[o]);
-    if (it != fit.rms.end()) sigma[o] = std::max(it->second, 1e-4);
-  }
-  std::vector<Eigen::Index> read;  // a parameter no row reads moves by 0
-  for (Eigen::Index j = 0; j < k; ++j)
-    if (m > 0 && jacobian.col(j).cwiseAbs().maxCoeff() > 0) read.push_back(j);
+  std::vector<int> read;  // a parameter no row reads moves by 0
+  Eigen::VectorXd w;      // 1 / each entry's noise level
+  const Eigen::MatrixXd J = weighted_read_columns(data, fit, jacobian, read, &w);
   const auto kr = static_cast<Eigen::Index>(read.size());
-  Eigen::MatrixXd J(m, kr);
-  Eigen::VectorXd dr(m);
-  for (Eigen::Index j = 0; j < kr; ++j) J.col(j) = jacobian.col(read[j]);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    const double s = sigma[fit.entries[i].observable];
-    J.row(i) /= s;
-    dr(i) = residual_change[i] / s;
-  }
+  const Eigen::VectorXd dr =
+      Eigen::Map<const Eigen::VectorXd>(residual_change.data(), m).cwiseProduct(w);
   std::vector<double> d(k, 0.0);
   if (kr == 0) return d;
   const Eigen::MatrixXd info = J.transpose() * J;

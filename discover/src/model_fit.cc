@@ -249,8 +249,9 @@ Eigen::MatrixXd jacobian(const Evaluator& ev, const TyreConfig& base, const Vari
   return J;
 }
 
-std::vector<double> standard_errors(const studies::MeasurementSet& data, const FitResult& fr,
-                                    const Eigen::MatrixXd& jacobian) {
+Eigen::MatrixXd weighted_read_columns(const studies::MeasurementSet& data, const FitResult& fr,
+                                      const Eigen::MatrixXd& jacobian, std::vector<int>& read,
+                                      Eigen::VectorXd* row_weights) {
   const int k = static_cast<int>(jacobian.cols());
   std::vector<double> sigma(data.observables.size(), 1.0);
   for (std::size_t o = 0; o < sigma.size(); ++o) {
@@ -258,16 +259,28 @@ std::vector<double> standard_errors(const studies::MeasurementSet& data, const F
     if (it != fr.rms.end()) sigma[o] = std::max(it->second, 1e-4);
   }
   // A parameter no row reads (its column exactly zero: e.g. the baseline's tyre scalars under
-  // traction rows of the rigid wheel, tyre.rigid=true) is not identified and keeps an infinite
-  // error; it must not make the others' errors infinite too, so the information matrix is formed
-  // over the columns the rows read.
-  std::vector<int> read;
+  // traction rows of the rigid wheel, tyre.rigid=true) is not identified; it must not make the
+  // others unidentified too, so the information matrix is formed over the columns the rows read.
+  read.clear();
   for (int j = 0; j < k; ++j)
     if (jacobian.rows() > 0 && jacobian.col(j).cwiseAbs().maxCoeff() > 0) read.push_back(j);
+  Eigen::MatrixXd J(jacobian.rows(), static_cast<Eigen::Index>(read.size()));
+  for (std::size_t j = 0; j < read.size(); ++j)
+    J.col(static_cast<Eigen::Index>(j)) = jacobian.col(read[j]);
+  if (row_weights) row_weights->resize(J.rows());
+  for (Eigen::Index i = 0; i < J.rows(); ++i) {
+    J.row(i) /= sigma[fr.entries[i].observable];
+    if (row_weights) (*row_weights)(i) = 1 / sigma[fr.entries[i].observable];
+  }
+  return J;
+}
+
+std::vector<double> standard_errors(const studies::MeasurementSet& data, const FitResult& fr,
+                                    const Eigen::MatrixXd& jacobian) {
+  const int k = static_cast<int>(jacobian.cols());
+  std::vector<int> read;  // an unread parameter keeps an infinite error
+  const Eigen::MatrixXd J = weighted_read_columns(data, fr, jacobian, read);
   const int kr = static_cast<int>(read.size());
-  Eigen::MatrixXd J(jacobian.rows(), kr);
-  for (int j = 0; j < kr; ++j) J.col(j) = jacobian.col(read[j]);
-  for (int i = 0; i < J.rows(); ++i) J.row(i) /= sigma[fr.entries[i].observable];
   std::vector<double> se(k, std::numeric_limits<double>::infinity());
   if (kr == 0) return se;
   const Eigen::MatrixXd info = J.transpose() * J;

@@ -143,6 +143,14 @@ Eigen::MatrixXd jacobian(const Evaluator& ev, const contact::TyreConfig& base, c
 std::vector<double> standard_errors(const studies::MeasurementSet& data, const FitResult& fit,
                                     const Eigen::MatrixXd& jacobian);
 
+/// The Jacobian's columns the rows read (a non-zero column; their indices in `read`), each row
+/// divided by its observable's noise level (the fit's RMS, floored at 1e-4): the weighted
+/// system standard_errors() and the mesh shift (mesh_bias.h) solve; `row_weights` (if given)
+/// gets each row's 1 / noise level.
+Eigen::MatrixXd weighted_read_columns(const studies::MeasurementSet& data, const FitResult& fit,
+                                      const Eigen::MatrixXd& jacobian, std::vector<int>& read,
+                                      Eigen::VectorXd* row_weights = nullptr);
+
 /// The search variable of a parameter (bounded logistic transform, in the logarithm when
 /// log_scale) and back.
 double to_search(const FreeParameter& p, double value);
