@@ -6,6 +6,7 @@
 // (tyre.rigid=true) on LETE sand keeps every run cheap (Bekker-Wong in closed form).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -87,7 +88,8 @@ TEST(TractionUncertainty, TheSoilsScatterMovesTheRowsResidualsAsTheirOwnDifferen
 }
 
 TEST(TractionUncertainty, SoilRowsWithoutAStatedScatterGiveTheSameReportBitForBit) {
-  // No ground.bekker.uncertainty: no soil input; the rigid wheel reads no tyre input. The
+  // No ground.bekker.uncertainty: no soil input; the tyre's inputs (the hammer shapes' noise)
+  // are there, but the rigid wheel reads none of them (its sensitivities are exactly 0). The
   // report with --uncertainty is the one without, number for number.
   const auto c = rigid_lete({});
   EXPECT_EQ(c.ground.bekker_scatter.k_phi_rel_std, 0);
@@ -120,6 +122,40 @@ TEST(TractionUncertainty, SoilRowsWithoutAStatedScatterGiveTheSameReportBitForBi
   }
   EXPECT_EQ(with.gap_after, plain.gap_after);
   EXPECT_EQ(with.final_parameters, plain.final_parameters);
+}
+
+TEST(TractionUncertainty, AGapOneStatedSigmaOfTheSoilMakesIsNotNamed) {
+  // LETE sand whose shear modulus K is stated to scatter by 11 % (the soil file's
+  // ground.bekker.uncertainty), curves made at K + 1 sigma (12 -> 13.32 mm) with 1 % noise:
+  // without the model's uncertainty the pull's gap the baseline cannot absorb is named
+  // bulldozing (a false name: the soil is LETE sand one sigma off); with it, the share of that
+  // evidence the stated K could produce is taken off and nothing is named.
+  const auto c = rigid_lete({"ground.bekker.uncertainty.shear_modulus_K_std_percent=11"});
+  auto truth = c;
+  truth.ground.bekker_shear.shear_modulus_K_mm *= 1.11;
+  const auto rows = td::curve_rows({2500, 4000, 5500}, {0.05, 0.1, 0.2, 0.35, 0.5});
+  const auto data = td::make_traction_data(truth, rows, 0.01, 3, "unc_k", rigid_rolling());
+  DiscoverOptions o;
+  o.unit_length_mm = td::kUnit_mm;
+  o.max_effects = 1;
+  o.detection_limits = false;
+  o.mesh_check = false;
+  const DiscoverReport plain = discover(c, data, o);
+  ASSERT_EQ(plain.effects.size(), 1u) << plain.conclusion;  // the false name guarded against
+  o.model_uncertainty = true;
+  const DiscoverReport with = discover(c, data, o);
+  EXPECT_TRUE(with.effects.empty()) << with.conclusion;
+  // The tyre's inputs (the hammer shapes' noise) are there too; the rigid wheel reads none.
+  const auto& names = with.uncertainty_inputs;
+  EXPECT_NE(std::find(names.begin(), names.end(), "soil shear modulus K"), names.end());
+  const CandidateScore& first = with.rounds.front().front();
+  EXPECT_EQ(first.name, plain.effects.front().name);
+  EXPECT_EQ(first.delta_bic, plain.rounds.front().front().delta_bic);  // the fit is the same
+  // The candidate fits the pull's share of the gap, not the torque's: the inputs could
+  // produce about half of its evidence (f = cos^2 of its change and K's, D-weighted).
+  const double lr = first.delta_bic + std::log(static_cast<double>(3 * rows.size()));
+  EXPECT_GT(first.uncertainty_discount, 0.4 * lr) << first.delta_bic;
+  EXPECT_LT(first.delta_bic - first.uncertainty_discount, 10) << first.uncertainty_discount;
 }
 
 // A soil file with `block` as ground.bekker.uncertainty's lines (line 10 on), read.
