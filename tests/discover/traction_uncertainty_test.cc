@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,16 @@ contact::TyreConfig rigid_lete(const std::vector<std::string>& soil_sets) {
 contact::TractionOptions rigid_rolling() {
   contact::TractionOptions o;
   o.rigid = true;
+  return o;
+}
+
+// One round, no detection limits or mesh shift: what the decision needs, at its least cost.
+DiscoverOptions one_round() {
+  DiscoverOptions o;
+  o.unit_length_mm = td::kUnit_mm;
+  o.max_effects = 1;
+  o.detection_limits = false;
+  o.mesh_check = false;
   return o;
 }
 
@@ -87,6 +98,90 @@ TEST(TractionUncertainty, TheSoilsScatterMovesTheRowsResidualsAsTheirOwnDifferen
   EXPECT_GT(uncertain_share(mu, friction), 0.95);
 }
 
+// C of `csv`'s rows at `c` as given (no search: the same noise levels on any subset of the
+// rows), with the entries' rows.
+struct RowsCovariance {
+  Eigen::MatrixXd cov;
+  std::vector<int> entry_rows;  ///< the CSV's row number of each entry
+};
+RowsCovariance covariance_of(const contact::TyreConfig& c, const std::string& csv,
+                             const std::string& name) {
+  const auto data = td::as_measurements(csv, c, name);
+  const contact::TyreModel model = contact::build_tyre_model(c);
+  const Evaluator ev(model, data);
+  std::vector<int> all(data.rows.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  // No free parameter: C as propagated, nothing projected out.
+  Variant v = make_variant(c, {});
+  v.parameters.clear();
+  const FitResult fit = evaluate_fit(ev, c, v, {}, ev.entries(all));
+  RowsCovariance out{model_uncertainty(ev, c, v, fit).cov, {}};
+  for (const auto& e : fit.entries) out.entry_rows.push_back(data.rows[e.row].row);
+  return out;
+}
+
+TEST(TractionUncertainty, MixedRowsKeepEachKindsSensitivities) {
+  // The rigid wheel's footprints (the cylinder pressed into the soil, contact/predictor.h) and
+  // its traction rows on LETE sand, one CSV with the kinds interleaved, the soil's k_phi stated
+  // to scatter by 10 % (it moves both kinds; the wheel reads none of the tyre's inputs, so C is
+  // its j j^T): each kind's block of C is the one its rows give alone, and the cross block's
+  // elements are +-sqrt(C_ii C_kk) of those blocks' diagonals.
+  const auto c = rigid_lete({"ground.bekker.uncertainty.k_phi_std_percent=10"});
+  const contact::TyreModel model = contact::build_tyre_model(c);
+  const std::string head =
+      "load_N,sinking_mm,length_mm,slip,drawbar_pull_N,soil_sinkage_mm,torque_Nm\n";
+  std::vector<std::string> footprint, traction;
+  for (double load : {2500.0, 4000.0, 5500.0}) {
+    contact::OperatingConditions oc;
+    oc.load_N = load;
+    const contact::Prediction p = contact::predict(model, oc);
+    ASSERT_TRUE(p.ok()) << p.message;
+    std::ostringstream f;
+    f.precision(10);
+    f << load << "," << p.sinking_mm << "," << p.length_mm << ",,,,\n";
+    footprint.push_back(f.str());
+    const auto t = contact::steady_traction(model, c.ground, {{load, 0.2}}, rigid_rolling());
+    ASSERT_TRUE(t.back().ok()) << t.back().message;
+    std::ostringstream r;
+    r.precision(10);
+    r << load << ",,,0.2," << t.back().drawbar_pull_N << "," << t.back().soil_sinkage_m * 1e3 << ","
+      << t.back().torque_Nm << "\n";
+    traction.push_back(r.str());
+  }
+  std::string mixed = head, footprints = head, tractions = head;
+  for (std::size_t k = 0; k < footprint.size(); ++k) {
+    mixed += traction[k] + footprint[k];  // a traction row first: the cases must be mapped
+    footprints += footprint[k];
+    tractions += traction[k];
+  }
+  const RowsCovariance all = covariance_of(c, mixed, "unc_mixed");
+  const RowsCovariance fp = covariance_of(c, footprints, "unc_fp");
+  const RowsCovariance tr = covariance_of(c, tractions, "unc_tr");
+  ASSERT_EQ(all.cov.rows(), fp.cov.rows() + tr.cov.rows());
+  // Mixed entry i is the k-th footprint or traction entry (the rows keep their order per kind).
+  std::vector<int> kind(all.entry_rows.size()), index(all.entry_rows.size());
+  int nf = 0, nt = 0;
+  for (std::size_t i = 0; i < all.entry_rows.size(); ++i) {
+    kind[i] = all.entry_rows[i] % 2;  // CSV rows 1, 3, 5 traction; 2, 4, 6 footprints
+    index[i] = kind[i] ? nt++ : nf++;
+  }
+  ASSERT_EQ(nf, fp.cov.rows());
+  const double scale = std::max(fp.cov.cwiseAbs().maxCoeff(), tr.cov.cwiseAbs().maxCoeff());
+  ASSERT_GT(fp.cov.cwiseAbs().maxCoeff(), 0);
+  ASSERT_GT(tr.cov.cwiseAbs().maxCoeff(), 0);
+  for (std::size_t i = 0; i < kind.size(); ++i)
+    for (std::size_t k = 0; k < kind.size(); ++k) {
+      const auto& own = kind[i] ? tr.cov : fp.cov;
+      if (kind[i] == kind[k]) {
+        EXPECT_NEAR(all.cov(i, k), own(index[i], index[k]), 1e-9 * scale) << i << " " << k;
+        continue;
+      }
+      const auto& other = kind[k] ? tr.cov : fp.cov;
+      const double cross = std::sqrt(own(index[i], index[i]) * other(index[k], index[k]));
+      EXPECT_NEAR(std::abs(all.cov(i, k)), cross, 1e-9 * scale) << i << " " << k;
+    }
+}
+
 TEST(TractionUncertainty, SoilRowsWithoutAStatedScatterGiveTheSameReportBitForBit) {
   // No ground.bekker.uncertainty: no soil input; the tyre's inputs (the hammer shapes' noise)
   // are there, but the rigid wheel reads none of them (its sensitivities are exactly 0). The
@@ -99,11 +194,7 @@ TEST(TractionUncertainty, SoilRowsWithoutAStatedScatterGiveTheSameReportBitForBi
   truth.ground.bekker_shear.shear_modulus_K_mm *= 1.3;
   const auto rows = td::curve_rows({2500, 4000}, {0.05, 0.2, 0.5});
   const auto data = td::make_traction_data(truth, rows, 0.01, 3, "unc_none", rigid_rolling());
-  DiscoverOptions o;
-  o.unit_length_mm = td::kUnit_mm;
-  o.max_effects = 1;
-  o.detection_limits = false;
-  o.mesh_check = false;
+  DiscoverOptions o = one_round();
   const DiscoverReport plain = discover(c, data, o);
   o.model_uncertainty = true;
   const DiscoverReport with = discover(c, data, o);
@@ -135,11 +226,7 @@ TEST(TractionUncertainty, AGapOneStatedSigmaOfTheSoilMakesIsNotNamed) {
   truth.ground.bekker_shear.shear_modulus_K_mm *= 1.11;
   const auto rows = td::curve_rows({2500, 4000, 5500}, {0.05, 0.1, 0.2, 0.35, 0.5});
   const auto data = td::make_traction_data(truth, rows, 0.01, 3, "unc_k", rigid_rolling());
-  DiscoverOptions o;
-  o.unit_length_mm = td::kUnit_mm;
-  o.max_effects = 1;
-  o.detection_limits = false;
-  o.mesh_check = false;
+  DiscoverOptions o = one_round();
   const DiscoverReport plain = discover(c, data, o);
   ASSERT_EQ(plain.effects.size(), 1u) << plain.conclusion;  // the false name guarded against
   o.model_uncertainty = true;
