@@ -125,10 +125,11 @@ Evaluator::Evaluator(const contact::TyreModel& model, const studies::Measurement
     traction_ = std::make_shared<const TractionRows>(model.config, data, flexing);
 }
 
-std::map<int, contact::TractionResult> Evaluator::traction(const TyreConfig& config,
-                                                           const std::vector<int>& rows) const {
+std::map<int, contact::TractionResult> Evaluator::traction(
+    const TyreConfig& config, const std::vector<int>& rows,
+    const modal::ModeIdentification* modes) const {
   if (!traction_) return {};
-  return traction_->predict(config, rows, threads_ > 0 ? threads_ : omp_get_max_threads());
+  return traction_->predict(config, rows, threads_ > 0 ? threads_ : omp_get_max_threads(), modes);
 }
 
 std::vector<Evaluator::Entry> Evaluator::entries(const std::vector<int>& rows) const {

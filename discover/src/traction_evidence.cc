@@ -122,9 +122,10 @@ std::vector<TractionWindow> TractionRows::windows() const {
   return out;
 }
 
-std::map<int, contact::TractionResult> TractionRows::predict(const contact::TyreConfig& config,
-                                                             const std::vector<int>& rows,
-                                                             int threads) const {
+std::map<int, contact::TractionResult> TractionRows::predict(
+    const contact::TyreConfig& config, const std::vector<int>& rows, int threads,
+    const modal::ModeIdentification* modes) const {
+  const modal::ModeIdentification& basis = modes ? *modes : modes_;
   std::vector<std::vector<int>> wanted(groups_.size());
   for (int r : rows)
     if (group_of_[r] >= 0) wanted[group_of_[r]].push_back(r);
@@ -147,7 +148,7 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
   auto own_window = [&](const Group& g) { return g.window.window_m > base.mesh.window_m; };
   std::optional<contact::TyreModel> model;
   if (std::any_of(run.begin(), run.end(), [&](int g) { return !own_window(groups_[g]); }))
-    model.emplace(contact::build_tyre_model(base, modes_));
+    model.emplace(contact::build_tyre_model(base, basis));
   std::vector<std::vector<contact::TractionResult>> results(run.size());
   std::vector<std::vector<double>> slips(run.size());
   const int n = static_cast<int>(run.size());
@@ -180,7 +181,7 @@ std::map<int, contact::TractionResult> TractionRows::predict(const contact::Tyre
     if (own_window(g)) {
       contact::TyreConfig c = base;
       c.mesh.window_m = g.window.window_m;
-      const contact::TyreModel grown = contact::build_tyre_model(c, modes_);
+      const contact::TyreModel grown = contact::build_tyre_model(c, basis);
       results[k] = contact::steady_traction(grown, config.ground, cases, opt);
     } else {
       results[k] = contact::steady_traction(*model, config.ground, cases, opt);

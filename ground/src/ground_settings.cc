@@ -69,7 +69,7 @@ void check_blocks(const ConfigSection& s, const std::string& model) {
     std::string at;
     for (const char* k : {"n", "k_c", "k_phi", "E2_MPa", "eta2_kPa_s", "layer_mm", "elastic_share",
                           "cohesion_kPa", "friction_angle_deg", "shear_modulus_K_mm", "unloading",
-                          "wong_reece", "slip_sinkage", "bulldozing"})
+                          "wong_reece", "slip_sinkage", "bulldozing", "uncertainty"})
       if (at.empty() && keys.has(k)) at = k;
     auto fail = [&](const std::string& why) {
       if (at.empty()) s.fail(block, why);
@@ -92,6 +92,38 @@ void require(const ConfigSection& section, const std::vector<const char*>& keys,
       section.fail(k, "required with model: " + model +
                           " (no default stands in for a soil's law; configs/soils/ gives "
                           "published values)");
+}
+
+// ground.bekker.uncertainty: each key a standard deviation, bounded so that a 1-sigma change
+// keeps the parameter physical; a percentage of a zero parameter is refused (it would be no
+// scatter at all, dropped in silence).
+SoilScatter read_scatter(const ConfigSection& b, const BekkerParams& p, const JanosiParams& shear) {
+  const ConfigSection u = b.section("uncertainty");
+  SoilScatter sc;
+  auto percent = [&](const char* key, double value, const char* of) {
+    const double pct = u.number(key, 0, 0, 50);
+    if (pct > 0 && !(value > 0))
+      u.fail(key, std::string("a percentage of ") + of + " = 0 is no scatter: state " + of +
+                      " or leave the key out");
+    return pct / 100;
+  };
+  sc.k_c_rel_std = percent("k_c_std_percent", p.k_c, "k_c");
+  sc.k_phi_rel_std = percent("k_phi_std_percent", p.k_phi, "k_phi");
+  sc.cohesion_rel_std = percent("cohesion_std_percent", shear.cohesion_kPa, "cohesion_kPa");
+  sc.shear_modulus_rel_std =
+      percent("shear_modulus_K_std_percent", shear.shear_modulus_K_mm, "shear_modulus_K_mm");
+  sc.n_std = u.number("n_std", 0, 0, 1);
+  if (sc.n_std > 0 && !(sc.n_std < 0.5 * p.n))
+    u.fail("n_std", "must be below half of n (" + std::to_string(p.n) +
+                        "): a 1-sigma change would take the exponent near 0");
+  sc.friction_angle_std_deg = u.number("friction_angle_std_deg", 0, 0, 15);
+  if (sc.friction_angle_std_deg > 0 &&
+      !(sc.friction_angle_std_deg < 0.5 * shear.friction_angle_deg))
+    u.fail("friction_angle_std_deg", "must be below half of friction_angle_deg (" +
+                                         std::to_string(shear.friction_angle_deg) + ")");
+  if (!(shear.friction_angle_deg + sc.friction_angle_std_deg < 89))
+    u.fail("friction_angle_std_deg", "friction_angle_deg + 1 sigma must stay below 89 degrees");
+  return sc;
 }
 
 }  // namespace
@@ -151,6 +183,7 @@ GroundSettings read_ground_settings(const ConfigSection& s, const ConfigTree& tr
     g.bulldozing.unit_weight_kN_m3 =
         w.positive("unit_weight_kN_m3", g.bulldozing.unit_weight_kN_m3, 30);
   }
+  if (b.has("uncertainty")) g.bekker_scatter = read_scatter(b, g.bekker, g.bekker_shear);
   if (b.has("wong_reece")) {
     const ConfigSection w = b.section("wong_reece");
     WongReeceStress& wr = g.wong_reece;

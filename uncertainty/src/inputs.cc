@@ -65,6 +65,29 @@ std::vector<UncertainInput> collect_inputs(const contact::TyreConfig& config,
   for (const Stated& st : stated) {
     if (st.rel_std > 0) out.push_back({st.kind, -1, st.name, st.rel_std, st.key, {}, {}});
   }
+  if (config.ground.model != ground::GroundModel::bekker) return out;
+  // The soil's stated scatter; n and the friction angle as relative deviations of their values
+  // (the reader keeps both below half the value, and refuses a percentage of a zero value).
+  const auto& sc = config.ground.bekker_scatter;
+  const auto& b = config.ground.bekker;
+  const auto& sh = config.ground.bekker_shear;
+  const Stated soil[] = {
+      {InputKind::soil_k_c, "soil k_c", sc.k_c_rel_std,
+       "ground.bekker.uncertainty.k_c_std_percent"},
+      {InputKind::soil_k_phi, "soil k_phi", sc.k_phi_rel_std,
+       "ground.bekker.uncertainty.k_phi_std_percent"},
+      {InputKind::soil_n, "soil n", b.n > 0 ? sc.n_std / b.n : 0.0,
+       "ground.bekker.uncertainty.n_std"},
+      {InputKind::soil_cohesion, "soil cohesion", sc.cohesion_rel_std,
+       "ground.bekker.uncertainty.cohesion_std_percent"},
+      {InputKind::soil_friction_angle, "soil friction angle",
+       sh.friction_angle_deg > 0 ? sc.friction_angle_std_deg / sh.friction_angle_deg : 0.0,
+       "ground.bekker.uncertainty.friction_angle_std_deg"},
+      {InputKind::soil_shear_modulus, "soil shear modulus K", sc.shear_modulus_rel_std,
+       "ground.bekker.uncertainty.shear_modulus_K_std_percent"}};
+  for (const Stated& st : soil) {
+    if (st.rel_std > 0) out.push_back({st.kind, -1, st.name, st.rel_std, st.key, {}, {}});
+  }
   return out;
 }
 
@@ -132,6 +155,24 @@ void apply(const UncertainInput& input, double x, contact::TyreConfig& config,
     case InputKind::tread_width:
       config.tread.width_m *= 1 + x;
       if (config.footprint_3d) config.footprint_3d->tread_width_m *= 1 + x;
+      break;
+    case InputKind::soil_k_c:
+      config.ground.bekker.k_c *= 1 + x;
+      break;
+    case InputKind::soil_k_phi:
+      config.ground.bekker.k_phi *= 1 + x;
+      break;
+    case InputKind::soil_n:
+      config.ground.bekker.n *= 1 + x;
+      break;
+    case InputKind::soil_cohesion:
+      config.ground.bekker_shear.cohesion_kPa *= 1 + x;
+      break;
+    case InputKind::soil_friction_angle:
+      config.ground.bekker_shear.friction_angle_deg *= 1 + x;
+      break;
+    case InputKind::soil_shear_modulus:
+      config.ground.bekker_shear.shear_modulus_K_mm *= 1 + x;
       break;
     case InputKind::calibration:
       for (std::size_t k = 0; k < input.keys.size(); ++k) {

@@ -98,9 +98,11 @@ class Evaluator {
   std::vector<TractionWindow> traction_windows() const {
     return traction_ ? traction_->windows() : std::vector<TractionWindow>{};
   }
-  /// The model's traction for the traction rows among `rows` (traction_evidence.h).
-  std::map<int, contact::TractionResult> traction(const contact::TyreConfig& config,
-                                                  const std::vector<int>& rows) const;
+  /// The model's traction for the traction rows among `rows` (traction_evidence.h), on
+  /// `modes` (null: the basis identified for the rows).
+  std::map<int, contact::TractionResult> traction(
+      const contact::TyreConfig& config, const std::vector<int>& rows,
+      const modal::ModeIdentification* modes = nullptr) const;
 
  private:
   const contact::TyreModel& model_;

@@ -5,7 +5,11 @@
 // could not have produced it.
 //
 // Linearised: each input u moves the relative residuals of the fitted entries by j_u (its
-// central difference at +-1 sigma, uncertainty::propagate, divided by |measured|). The part the
+// central difference at +-1 sigma divided as the residual is, residual_scale): on footprint rows
+// uncertainty::propagate's, on traction rows (issue 45) uncertainty::propagate_outputs' with the
+// rows' traction run as the Evaluator runs it (TractionRows: groups, windows, mesh, flexing
+// loss). The inputs are the config's (collect_inputs), a Bekker soil's stated scatter among them
+// (ground.bekker.uncertainty). The part the
 // variant's re-fitted parameters absorb is projected out (j_u - J (J^T W J)^-1 J^T W j_u, J the
 // fit's Jacobian, W = 1 / sigma_o^2 its noise weights), and C = sum_u j_u j_u^T is the residuals'
 // covariance the inputs add to the measurement noise D = diag(sigma_o^2). A candidate that
@@ -31,8 +35,9 @@ struct ModelUncertainty {
 };
 
 /// C and D at `fit` of variant `v` on `base` (Jacobian by central differences: 2 k evaluations
-/// of every row; the propagation: 1 + 2 n_inputs model builds). Empty cov when the config has
-/// no uncertain input.
+/// of every row; the propagation: 1 + 2 n_inputs model builds for the footprint rows and as many
+/// traction runs of the traction rows). Empty cov (and nothing evaluated) when the config has no
+/// uncertain input.
 ModelUncertainty model_uncertainty(const Evaluator& ev, const contact::TyreConfig& base,
                                    const Variant& v, const FitResult& fit);
 

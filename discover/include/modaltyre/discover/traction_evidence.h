@@ -77,8 +77,11 @@ class TractionRows {
   /// The model's traction at `config` for the traction rows among `rows` (indices into
   /// data.rows): the result per row index (failed where the case failed). Groups run in
   /// parallel over `threads` when not already inside a parallel region.
-  std::map<int, contact::TractionResult> predict(const contact::TyreConfig& config,
-                                                 const std::vector<int>& rows, int threads) const;
+  /// `modes`: the modal basis the models are built on (null: the one identified at
+  /// construction); the propagation of the model's uncertainty perturbs it.
+  std::map<int, contact::TractionResult> predict(
+      const contact::TyreConfig& config, const std::vector<int>& rows, int threads,
+      const modal::ModeIdentification* modes = nullptr) const;
   /// The window each group (load, speed) rolls on and why, in the data's order.
   std::vector<TractionWindow> windows() const;
   /// Slip cases run so far (one per slip, pass and predict()).

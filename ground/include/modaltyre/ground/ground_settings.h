@@ -21,6 +21,9 @@
 //       wong_reece: {enabled: false, c1: 0.43, c2: 0.32, c3: 0}   # soil_options.h
 //       slip_sinkage: {enabled: false, k1: 1, k2: 0.5}            # soil_options.h
 //       bulldozing: {enabled: false, unit_weight_kN_m3: 15.7}     # soil_options.h
+//       uncertainty:                # optional: the soil's stated scatter (SoilScatter below)
+//         k_phi_std_percent: 10     # also k_c_std_percent, n_std, cohesion_std_percent,
+//         friction_angle_std_deg: 1 # shear_modulus_K_std_percent; absent: none
 //     kelvin_voigt:                 # seed 000 eq. 23-28 (kelvin_voigt_soil.h)
 //       E2_MPa: 2
 //       eta2_kPa_s: 0
@@ -47,6 +50,19 @@ enum class GroundModel { rigid, profile, kelvin_voigt, bekker };
 
 const char* to_string(GroundModel model);
 
+/// A Bekker soil's stated scatter (ground.bekker.uncertainty): one standard deviation of each
+/// parameter, from repeated bevameter and shear tests on the same soil (docs/uncertainty.md
+/// section 9); the uncertain inputs of `--uncertainty` (uncertainty/inputs.h). All 0 (the
+/// default): the soil is taken as exact, as Wong's Table 2.3 states it.
+struct SoilScatter {
+  double k_c_rel_std = 0;             ///< k_c_std_percent / 100
+  double k_phi_rel_std = 0;           ///< k_phi_std_percent / 100
+  double n_std = 0;                   ///< n_std, absolute (n is dimensionless)
+  double cohesion_rel_std = 0;        ///< cohesion_std_percent / 100
+  double friction_angle_std_deg = 0;  ///< friction_angle_std_deg
+  double shear_modulus_rel_std = 0;   ///< shear_modulus_K_std_percent / 100
+};
+
 struct GroundSettings {
   GroundModel model = GroundModel::rigid;
   std::string name, source;
@@ -61,6 +77,7 @@ struct GroundSettings {
   WongReeceStress wong_reece;  ///< Wong and Reece's stress distribution (soil_options.h)
   SlipSinkage slip_sinkage;    ///< sinkage growing with slip (soil_options.h)
   Bulldozing bulldozing;       ///< the soil pushed ahead of the tyre (soil_options.h)
+  SoilScatter bekker_scatter;  ///< the Bekker soil's stated scatter (none by default)
   KelvinVoigtParams kelvin_voigt;
   JanosiParams kelvin_voigt_shear{0, 30, 25};
   /// The soil's three shear keys were stated (read_ground_settings); traction needs them.

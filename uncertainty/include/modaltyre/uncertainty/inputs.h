@@ -2,7 +2,8 @@
 // The uncertain inputs of a tyre model (issue 35, docs/uncertainty.md): what the data say of
 // their own precision (the hammer shapes' residual noise per mode) and what a config states
 // where no data give it (modal.frequency_std_percent, tread.modulus_std_percent,
-// modal.belt_width_std_percent, tread.contact_width_std_percent). Each input is a relative
+// modal.belt_width_std_percent, tread.contact_width_std_percent, a Bekker soil's
+// ground.bekker.uncertainty). Each input is a relative
 // perturbation x of one quantity with a standard deviation; apply() sets it on a copy of the config
 // and of the identified modes.
 #include <string>
@@ -19,6 +20,14 @@ enum class InputKind {
   tread_modulus,   ///< the tread compound's modulus (1 + x)
   belt_width,      ///< the belt width of the ring's tension, i.e. the modal mass (1 + x)
   tread_width,     ///< the tread width, 2D contact width and 3D tread width together (1 + x)
+  /// A Bekker soil's parameter (ground.bekker.uncertainty, ground::SoilScatter): its value times
+  /// (1 + x); n and the friction angle, stated as absolute deviations, enter as relative ones.
+  soil_k_c,
+  soil_k_phi,
+  soil_n,
+  soil_cohesion,
+  soil_friction_angle,
+  soil_shear_modulus,
   /// One principal direction of calibrated scalars' covariance (validate): every key's value
   /// times exp(x direction_k), x with std sqrt(eigenvalue) of Cov(ln value).
   calibration,
@@ -37,7 +46,8 @@ struct UncertainInput {
 /// The inputs with a standard deviation > 0: one amplitude per mode the carcass uses when its
 /// shapes are mass-normalised (their residual noise; ring-normalised shapes carry no amplitude
 /// of their own), one frequency per mode when the config states modal.frequency_std_percent, the
-/// tread modulus, the belt width and the tread width when stated.
+/// tread modulus, the belt width and the tread width when stated, and a Bekker soil's parameters
+/// whose scatter its ground file states (ground.bekker.uncertainty).
 std::vector<UncertainInput> collect_inputs(const contact::TyreConfig& config,
                                            const modal::ModeIdentification& modes);
 
