@@ -135,6 +135,14 @@ void print_text(const discover::DiscoverReport& r, const studies::MeasurementSet
                 << "); with the mesh's share to the continuum (twice that): " << b->second.lower
                 << " to " << b->second.upper;
     }
+    if (e.mesh.change_rms >= 0) {
+      std::cout << "\n    mesh check: on " << e.mesh.fine_unit_length_mm
+                << " mm units the predictions move by " << 100 * e.mesh.change_rms
+                << " % RMS (to the continuum about twice that) against the fit's residual "
+                << 100 * e.mesh.residual_rms << " % RMS";
+      if (discover::mesh_is_coarse(e.mesh))
+        std::cout << ": the mesh is a sizable part of the gap; refit with a finer --unit-length-mm";
+    }
     if (!e.mesh.note.empty()) std::cout << "\n    mesh check: " << e.mesh.note;
     for (const auto& k : e.at_bound) {
       std::cout << "\n    " << k << " ended at a bound of its range: the data bound it from one "

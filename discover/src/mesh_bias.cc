@@ -47,7 +47,13 @@ MeshBias mesh_bias(const Evaluator& coarse, const Evaluator& fine, double fine_u
     return b;
   }
   std::vector<double> change(r_fine.size());
-  for (std::size_t i = 0; i < change.size(); ++i) change[i] = r_fine[i] - fit.residuals[i];
+  double sum = 0;
+  for (std::size_t i = 0; i < change.size(); ++i) {
+    change[i] = r_fine[i] - fit.residuals[i];
+    sum += change[i] * change[i];
+  }
+  b.change_rms = change.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(change.size()));
+  b.residual_rms = fit.rms_all;
   // The fit's own Jacobian where it kept one (its standard errors came from it), else 2k
   // evaluations.
   const bool kept = fit.jacobian.rows() == static_cast<Eigen::Index>(fit.entries.size()) &&
@@ -62,6 +68,10 @@ MeshBias mesh_bias(const Evaluator& coarse, const Evaluator& fine, double fine_u
   for (std::size_t j = 0; j < v.parameters.size() && j < d.size(); ++j)
     if (std::isfinite(d[j])) b.shift[v.parameters[j].key] = d[j];
   return b;
+}
+
+bool mesh_is_coarse(const MeshBias& b) {
+  return b.change_rms >= 0 && 2 * b.change_rms >= 0.5 * b.residual_rms;
 }
 
 ParameterBand band_with_mesh(const ParameterBand& band, double shift, const FreeParameter& p) {

@@ -49,6 +49,11 @@ nlohmann::json mesh_shift(const discover::MeshBias& m) {
   nlohmann::json j = {{"unit_length_mm", round_sig(m.unit_length_mm, 6)},
                       {"fine_unit_length_mm", round_sig(m.fine_unit_length_mm, 6)},
                       {"shift", values(m.shift)}};
+  if (m.change_rms >= 0) {
+    j["prediction_change_rms"] = round_sig(m.change_rms, 4);
+    j["residual_rms"] = round_sig(m.residual_rms, 4);
+    j["mesh_is_coarse"] = discover::mesh_is_coarse(m);
+  }
   if (!m.note.empty()) j["note"] = m.note;
   return j;
 }

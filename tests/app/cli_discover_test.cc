@@ -213,6 +213,12 @@ TEST_F(DiscoverCli, JsonOnASmallDataSetAndTheAugmentedConfigRuns) {
                 0.5 * e["mesh_shift"]["unit_length_mm"].get<double>(),
                 1e-5 * e["mesh_shift"]["unit_length_mm"].get<double>())
         << e;
+    // The predictions' change and the residual it is weighed against, and the verdict's rule.
+    const double change = e["mesh_shift"]["prediction_change_rms"].get<double>();
+    const double residual = e["mesh_shift"]["residual_rms"].get<double>();
+    EXPECT_GE(change, 0) << e;
+    EXPECT_GT(residual, 0) << e;
+    EXPECT_EQ(e["mesh_shift"]["mesh_is_coarse"].get<bool>(), 2 * change >= 0.5 * residual) << e;
   }
   ASSERT_TRUE(j["candidates"].is_array());
   ASSERT_FALSE(j["candidates"].empty());

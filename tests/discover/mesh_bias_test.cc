@@ -105,6 +105,18 @@ TEST(MeshBias, TheBandWithTheMeshReachesTheContinuumEstimateOnItsSide) {
   EXPECT_FALSE(down.upper_at_bound);
 }
 
+// The mesh is called coarse when its share to the continuum (twice the change on half the unit
+// length) reaches half the residual the fit leaves; a check that did not run says nothing.
+TEST(MeshBias, TheMeshIsCoarseWhenItsShareReachesHalfTheResidual) {
+  MeshBias b;
+  EXPECT_FALSE(mesh_is_coarse(b));  // not evaluated
+  b.residual_rms = 0.02;
+  b.change_rms = 0.004;  // 0.8 % to the continuum against 2 %: the noise's gap
+  EXPECT_FALSE(mesh_is_coarse(b));
+  b.change_rms = 0.006;  // 1.2 % against 2 %
+  EXPECT_TRUE(mesh_is_coarse(b));
+}
+
 // The 2D SF-350's tread coupling hidden in footprints made on 0.5 mm units, fitted on 4 mm: the
 // coupling length is the parameter the mesh moves most (the units' shear links are the
 // coupling's discretisation).
@@ -155,6 +167,10 @@ TEST(MeshBias, OnAPlantedEffectTheShiftMatchesAFitOnTheFineMesh) {
   EXPECT_LE(e.bands_with_mesh.at(key).lower, truth);
   EXPECT_GE(e.bands_with_mesh.at(key).upper, truth);
   EXPECT_LT(std::abs(l4 + 2 * d - truth), std::abs(l4 - truth));
+  // Measured: the predictions move by 2.01 % RMS on 2 mm units against the 4 mm fit's residual
+  // 0.88 % (its noise is 0.2 %): the mesh, not the noise, leaves the gap, and the check says so.
+  EXPECT_GT(e.mesh.change_rms, e.mesh.residual_rms);
+  EXPECT_TRUE(mesh_is_coarse(e.mesh));
   // The baseline scalars move too and are reported (not banded).
   EXPECT_EQ(e.mesh.shift.size(), v.parameters.size());
   EXPECT_EQ(e.bands_with_mesh.size(), e.bands.size());

@@ -36,8 +36,18 @@ struct MeshBias {
   double fine_unit_length_mm = 0;  ///< half of it
   /// Per fitted parameter (config key): the estimate on the fine mesh minus the fit's (d).
   std::map<std::string, double> shift;
+  /// RMS over the fit's entries of the predictions' change on the fine mesh, in the residuals'
+  /// relative units (-1: not evaluated), and the fit's own residual RMS: a change near the
+  /// residual (to the continuum, at first order, twice the change) says the mesh, not only the
+  /// noise, is in the gap the fit leaves.
+  double change_rms = -1;
+  double residual_rms = 0;
   std::string note;  ///< why there is no shift (empty when computed)
 };
+
+/// Whether the mesh's share of the predictions (2 x change_rms, to the continuum at first order)
+/// reaches half the fit's residual RMS: the fit should be repeated on a finer mesh.
+bool mesh_is_coarse(const MeshBias& b);
 
 /// The shift of every fitted parameter of `fit` (a full fit of `v` on all rows of `coarse`)
 /// when the rows are evaluated on `fine` (the same data, half the unit length) with the
