@@ -10,6 +10,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -96,6 +98,50 @@ TEST(TractionUncertainty, TheSoilsScatterMovesTheRowsResidualsAsTheirOwnDifferen
   // A gap exactly one sigma of a stated input makes is all the inputs' to produce (the fit's
   // noise levels here are the grouped-against-cold-start runs', ~1e-3: a >> 1).
   EXPECT_GT(uncertain_share(mu, friction), 0.95);
+}
+
+// The soil's inputs move their parameters by the stated deviations at +-1 sigma: n and the
+// friction angle by the absolute n_std and friction_angle_std_deg, the others by their
+// percentages; none is collected off a Bekker soil.
+TEST(TractionUncertainty, EachSoilInputMovesItsParameterByTheStatedDeviation) {
+  const auto c = rigid_lete({"ground.bekker.uncertainty.k_c_std_percent=5",
+                             "ground.bekker.uncertainty.k_phi_std_percent=10",
+                             "ground.bekker.uncertainty.n_std=0.03",
+                             "ground.bekker.uncertainty.cohesion_std_percent=20",
+                             "ground.bekker.uncertainty.friction_angle_std_deg=2",
+                             "ground.bekker.uncertainty.shear_modulus_K_std_percent=15"});
+  const modal::ModeIdentification modes = contact::config_modes(c);
+  const auto& b = c.ground.bekker;
+  const auto& sh = c.ground.bekker_shear;
+  using K = uncertainty::InputKind;
+  const std::map<K, std::pair<std::function<double(const contact::TyreConfig&)>, double>> moved = {
+      {K::soil_k_c, {[](const auto& x) { return x.ground.bekker.k_c; }, 0.05 * b.k_c}},
+      {K::soil_k_phi, {[](const auto& x) { return x.ground.bekker.k_phi; }, 0.10 * b.k_phi}},
+      {K::soil_n, {[](const auto& x) { return x.ground.bekker.n; }, 0.03}},
+      {K::soil_cohesion,
+       {[](const auto& x) { return x.ground.bekker_shear.cohesion_kPa; }, 0.2 * sh.cohesion_kPa}},
+      {K::soil_friction_angle,
+       {[](const auto& x) { return x.ground.bekker_shear.friction_angle_deg; }, 2.0}},
+      {K::soil_shear_modulus,
+       {[](const auto& x) { return x.ground.bekker_shear.shear_modulus_K_mm; },
+        0.15 * sh.shear_modulus_K_mm}}};
+  int soil_inputs = 0;
+  for (const auto& in : uncertainty::collect_inputs(c, modes)) {
+    const auto it = moved.find(in.kind);
+    if (it == moved.end()) continue;
+    ++soil_inputs;
+    contact::TyreConfig up = c;
+    modal::ModeIdentification m = modes;
+    uncertainty::apply(in, in.rel_std, up, m);
+    EXPECT_NEAR(it->second.first(up) - it->second.first(c), it->second.second,
+                1e-12 * std::abs(it->second.first(c)))
+        << in.name;
+  }
+  EXPECT_EQ(soil_inputs, 6);
+  contact::TyreConfig road = c;
+  road.ground.model = ground::GroundModel::rigid;
+  for (const auto& in : uncertainty::collect_inputs(road, modes))
+    EXPECT_EQ(moved.count(in.kind), 0u) << in.name;
 }
 
 // C of `csv`'s rows at `c` as given (no search: the same noise levels on any subset of the

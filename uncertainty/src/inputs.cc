@@ -55,37 +55,35 @@ std::vector<UncertainInput> collect_inputs(const contact::TyreConfig& config,
     double rel_std;
     const char* key;
   };
+  // A Bekker soil's stated scatter (ground.bekker.uncertainty); n and the friction angle are
+  // stated as absolute deviations and enter relative to their values (the reader keeps both below
+  // half the value and refuses a percentage of a zero value).
+  const bool bekker = config.ground.model == ground::GroundModel::bekker;
+  const auto& sc = config.ground.bekker_scatter;
+  const auto& b = config.ground.bekker;
+  const auto& sh = config.ground.bekker_shear;
+  auto soil = [&](double rel_std) { return bekker ? rel_std : 0.0; };
   const Stated stated[] = {
       {InputKind::tread_modulus, "tread modulus", u.tread_modulus_rel_std,
        "tread.modulus_std_percent"},
       {InputKind::tread_width, "tread width", u.tread_width_rel_std,
        "tread.contact_width_std_percent"},
       {InputKind::belt_width, "belt width (modal mass)", shapes_scale ? 0.0 : u.belt_width_rel_std,
-       "modal.belt_width_std_percent"}};
-  for (const Stated& st : stated) {
-    if (st.rel_std > 0) out.push_back({st.kind, -1, st.name, st.rel_std, st.key, {}, {}});
-  }
-  if (config.ground.model != ground::GroundModel::bekker) return out;
-  // The soil's stated scatter; n and the friction angle as relative deviations of their values
-  // (the reader keeps both below half the value, and refuses a percentage of a zero value).
-  const auto& sc = config.ground.bekker_scatter;
-  const auto& b = config.ground.bekker;
-  const auto& sh = config.ground.bekker_shear;
-  const Stated soil[] = {
-      {InputKind::soil_k_c, "soil k_c", sc.k_c_rel_std,
+       "modal.belt_width_std_percent"},
+      {InputKind::soil_k_c, "soil k_c", soil(sc.k_c_rel_std),
        "ground.bekker.uncertainty.k_c_std_percent"},
-      {InputKind::soil_k_phi, "soil k_phi", sc.k_phi_rel_std,
+      {InputKind::soil_k_phi, "soil k_phi", soil(sc.k_phi_rel_std),
        "ground.bekker.uncertainty.k_phi_std_percent"},
-      {InputKind::soil_n, "soil n", b.n > 0 ? sc.n_std / b.n : 0.0,
+      {InputKind::soil_n, "soil n", soil(b.n > 0 ? sc.n_std / b.n : 0.0),
        "ground.bekker.uncertainty.n_std"},
-      {InputKind::soil_cohesion, "soil cohesion", sc.cohesion_rel_std,
+      {InputKind::soil_cohesion, "soil cohesion", soil(sc.cohesion_rel_std),
        "ground.bekker.uncertainty.cohesion_std_percent"},
       {InputKind::soil_friction_angle, "soil friction angle",
-       sh.friction_angle_deg > 0 ? sc.friction_angle_std_deg / sh.friction_angle_deg : 0.0,
+       soil(sh.friction_angle_deg > 0 ? sc.friction_angle_std_deg / sh.friction_angle_deg : 0.0),
        "ground.bekker.uncertainty.friction_angle_std_deg"},
-      {InputKind::soil_shear_modulus, "soil shear modulus K", sc.shear_modulus_rel_std,
+      {InputKind::soil_shear_modulus, "soil shear modulus K", soil(sc.shear_modulus_rel_std),
        "ground.bekker.uncertainty.shear_modulus_K_std_percent"}};
-  for (const Stated& st : soil) {
+  for (const Stated& st : stated) {
     if (st.rel_std > 0) out.push_back({st.kind, -1, st.name, st.rel_std, st.key, {}, {}});
   }
   return out;
