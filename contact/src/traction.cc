@@ -105,6 +105,7 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     if (wong_reece.on()) {
       z_law = z_max;
       soil_law = g.normal_law(b_used, in.slip);
+      wong_reece.set_exit_depths(st.rear, st.depth_m);
       unit_law = wong_reece.laws(st.rear, *soil_law, area, z_law);
       in.z_max_m = z_law, in.unit_law = unit_law;
     }

@@ -263,7 +263,10 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
     }
     std::vector<double> z_law;
     std::vector<const ground::PressureSinkage*> cell_law;
-    if (wong_reece.on()) z_law = zmax, cell_law = wong_reece.laws(st.rear, *law, area_m2_, z_law);
+    if (wong_reece.on()) {
+      wong_reece.set_exit_depths(st.rear, st.depth_m);
+      z_law = zmax, cell_law = wong_reece.laws(st.rear, *law, area_m2_, z_law);
+    }
     SoilSections laws(t, class_drop_m_, class_weight_, *law, area_m2_,
                       wong_reece.on() ? z_law : zmax, rate, cell_law);
     if (st.approach_m.size() == std::size_t(S))

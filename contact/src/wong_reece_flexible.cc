@@ -66,6 +66,25 @@ void WongReeceRear::prepare(RearState& st) const {
   if (st.rear.size() != cells_) st.rear.assign(cells_, 0);
   if (st.behind.size() != cells_) st.behind.assign(cells_, 0);
   if (st.flow_m_per_Pa.size() != std::size_t(classes_)) st.flow_m_per_Pa.assign(classes_, 0.0);
+  if (st.exit_depth_m.size() != std::size_t(classes_)) st.exit_depth_m.assign(classes_, 0.0);
+  if (st.exit_last.size() != std::size_t(classes_)) st.exit_last.assign(classes_, -1);
+  if (st.exit_prev.size() != std::size_t(classes_)) st.exit_prev.assign(classes_, -1);
+  if (st.exit_weight.size() != std::size_t(classes_)) st.exit_weight.assign(classes_, 0.0);
+}
+
+void WongReeceRear::set_exit_depths(RearState& st, const std::vector<double>& depth_m) const {
+  if (!on_) return;
+  for (int k = 0; k < classes_; ++k) {
+    const int last = st.exit_last[k], prev = st.exit_prev[k];
+    if (last < 0 || std::size_t(last) >= depth_m.size()) {
+      st.exit_depth_m[k] = 0;
+      continue;
+    }
+    const double d_last = depth_m[last];
+    const double d_prev = prev >= 0 && std::size_t(prev) < depth_m.size() ? depth_m[prev] : d_last;
+    // The profile deepens towards theta2; a rear cell whose gap is open (d_prev deeper) adds 0.
+    st.exit_depth_m[k] = d_last + st.exit_weight[k] * std::max(0.0, d_last - d_prev);
+  }
 }
 
 std::vector<const ground::PressureSinkage*> WongReeceRear::laws(const RearState& st,
@@ -78,6 +97,14 @@ std::vector<const ground::PressureSinkage*> WongReeceRear::laws(const RearState&
   out.assign(cells_, nullptr);
   if (z_max_m.size() != cells_) z_max_m.assign(cells_, 0.0);
   for (int k = 0; k < classes_; ++k) {
+    // Behind theta2 the soil keeps the depth the rear region left there: the continuous
+    // profile's, not only its rearmost cell's, which lies up to a unit ahead of theta2 and
+    // shallower (a rut one unit's slope too high that the tyre behind it presses: an O(h) share
+    // of the load on the rut, docs/soil.md section 10).
+    for (int i = 0; i < sections_; ++i) {
+      const std::size_t a = std::size_t(i) * classes_ + k;
+      if (st.behind[a] && !st.rear[a]) z_max_m[a] = std::max(z_max_m[a], st.exit_depth_m[k]);
+    }
     const double c = st.flow_m_per_Pa[k];
     if (!(c > 0)) continue;
     // The flowing soil's surface: the surface the front region leaves at theta_m (the memory of
@@ -141,6 +168,9 @@ RearState WongReeceRear::image(const std::vector<double>& x_m, const std::vector
       const double t = (th - lo->first) / (hi->first - lo->first);
       return lo->second + t * (hi->second - lo->second);
     };
+    // The two rearmost rear cells with a depth (theta ascending with the section index).
+    double th_last = 0;
+    int found = 0;
     for (int i = 0; i < sections_; ++i) {
       const std::size_t a = std::size_t(i) * K + k;
       const double th = angle(x_m[a], R0_);
@@ -149,6 +179,12 @@ RearState WongReeceRear::image(const std::vector<double>& x_m, const std::vector
       if (th < theta2) continue;
       img.rear[a] = 1;
       img.target_N[a] = sigma_front(theta1 - (th - theta2) * q) * area_m2[i];
+      if (depth_m[a] > 0 && found == 1) {  // the one ahead of the rearmost: the weight
+        img.exit_prev[k] = int(a);
+        img.exit_weight[k] = th > th_last ? std::min(1.0, (th_last - theta2) / (th - th_last)) : 0;
+        ++found;
+      }
+      if (depth_m[a] > 0 && found == 0) img.exit_last[k] = int(a), th_last = th, ++found;
     }
   }
   return img;
@@ -162,7 +198,10 @@ void WongReeceRear::fill_track(const RearState& st, const ground::PressureSinkag
     double ahead = prior_m.empty() ? 0.0 : prior_m[k];
     for (int i = sections_ - 1; i >= 0; --i) {
       const std::size_t a = std::size_t(i) * classes_ + k;
-      if (st.behind[a] && !(depth_m[a] > 0) && ahead > 0) depth_m[a] = soil.rebound_depth_m(ahead);
+      const double memory =
+          st.behind[a] && !st.rear[a] ? std::max(ahead, st.exit_depth_m[k]) : ahead;
+      if (st.behind[a] && !(depth_m[a] > 0) && memory > 0)
+        depth_m[a] = soil.rebound_depth_m(memory);
       ahead = std::max(ahead, depth_m[a]);
     }
   }

@@ -54,6 +54,14 @@ struct RearState {
   std::vector<char> behind;      ///< the last image's cells behind theta_m (rear set and beyond)
   std::vector<double> flow_m_per_Pa;  ///< per class: the flow compliance of the last image
   std::vector<double> force_N;        ///< the image's: each cell's force in the solution
+  /// Per class, from the last image: the rear region's rearmost cell with a depth and the one
+  /// ahead of it (-1: none), and the extrapolation's weight w, so that the depth the rear region
+  /// leaves at theta2 is d_last + w (d_last - d_prev) (linear in theta, w in [0, 1]).
+  std::vector<int> exit_last, exit_prev;
+  std::vector<double> exit_weight;
+  /// Per class: that depth from the rolling state's (mixed) depths, set_exit_depths(); the
+  /// memory of the cells behind theta2 (0: none).
+  std::vector<double> exit_depth_m;
 };
 
 class WongReeceRear {
@@ -68,9 +76,13 @@ class WongReeceRear {
   Eigen::Index size() const { return on_ ? Eigen::Index(cells_) : 0; }
   /// The state sized (and zero) if it is not.
   void prepare(RearState& st) const;
+  /// st.exit_depth_m from the rolling state's cell depths (the Anderson-mixed ones, so that the
+  /// rut behind theta2 converges with the depth profile rather than jumping to each image's).
+  void set_exit_depths(RearState& st, const std::vector<double>& depth_m) const;
   /// Per cell the law under it (null: the soil's own) from the state (area_m2: a cell's road
   /// area per section); the memory of an
-  /// overridden cell set to its surface (the soil's rut at its memory), as FlowStressLaw takes it.
+  /// overridden cell set to its surface (the soil's rut at its memory), as FlowStressLaw takes it;
+  /// the memory of a cell behind theta2 no shallower than the state's exit depth.
   std::vector<const ground::PressureSinkage*> laws(const RearState& st,
                                                    const ground::PressureSinkage& soil,
                                                    const std::vector<double>& area_m2,
