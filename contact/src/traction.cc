@@ -69,7 +69,8 @@ TractionResult rolling_pass(const TyreModel& model, const Eigen::MatrixXd& V,
     rate.weight.resize(m), rate.start_m.resize(m);
     if (st.surface_m.size() != std::size_t(m)) st.surface_m.assign(m, incoming);
   }
-  detail::WongReeceRear wong_reece(g.wong_reece, rolling_radius_slip(c, R0), R0, m, 1);
+  detail::WongReeceRear wong_reece(g.wong_reece, rolling_radius_slip(c, R0), R0, m, 1,
+                                   o.wong_reece_exit_reach);
   wong_reece.prepare(st.rear);
   std::vector<double> area(m), z_law;
   for (int i = 0; i < m; ++i) area[i] = width * ds * std::cos(model.theta[i]);
@@ -319,20 +320,51 @@ double speed_ratio_over_R0(const TractionCase& c, double R0_m) {
   return ground::speed_ratio(c.slip) * (c.slip_radius_m > 0 ? c.slip_radius_m / R0_m : 1.0);
 }
 
+namespace {
+
+// A case whose rolling did not settle with Wong and Reece's rut extrapolated towards theta2
+// (TractionOptions::wong_reece_exit_reach) is rolled again from the virgin state with the rut
+// extrapolated half a unit (to the last rear cell's segment's edge), then at that cell's depth:
+// the extrapolated floor moves with the tyre and can leave the first cell behind theta2, or a
+// stretch of the tyre's flat bottom, in grazing contact, switching step after step (docs/soil.md
+// section 10, "Mesh"). The reach used is kept on the result when it is not the option's.
+template <class Run, class Reset>
+TractionResult roll_with_a_shorter_reach(TractionResult r, const ground::GroundSettings& g,
+                                         const TractionOptions& o, Run run, Reset reset) {
+  TractionOptions shorter = o;
+  while (!r.ok() && r.status == SolveStatus::max_iterations && !o.rigid && g.wong_reece.enabled &&
+         shorter.wong_reece_exit_reach > 0) {
+    shorter.wong_reece_exit_reach = shorter.wong_reece_exit_reach > 0.5 ? 0.5 : 0.0;
+    reset();
+    TractionResult again = run(shorter);
+    if (!again.ok()) continue;
+    again.rut_reach_units = shorter.wong_reece_exit_reach;
+    std::ostringstream msg;
+    msg << " (Wong-Reece rut extrapolated " << shorter.wong_reece_exit_reach
+        << " of a unit behind the last rear cell: with " << o.wong_reece_exit_reach
+        << " the rolling did not settle)";
+    again.message += msg.str();
+    return again;
+  }
+  return r;
+}
+
+}  // namespace
+
 TractionResult traction_pass(const TyreModel& model, const ground::GroundSettings& g,
                              const TractionCase& c, double prior, const TractionOptions& o) {
   const double R0 = model.config.outer_radius_m;
-  TractionResult r;
-  if (o.rigid) {
-    r = rigid_pass(model, g, c, 1, prior, o);
-  } else if (model.config.footprint_3d) {
-    const detail::Rolling3d rolling(model, g);
-    detail::Rolling3dState st;
-    r = rolling.pass(c, 1, std::vector<double>(rolling.columns(), prior), o, st);
-  } else {
+  auto run = [&](const TractionOptions& oo) {
+    if (oo.rigid) return rigid_pass(model, g, c, 1, prior, oo);
+    if (model.config.footprint_3d) {
+      const detail::Rolling3d rolling(model, g);
+      detail::Rolling3dState st;
+      return rolling.pass(c, 1, std::vector<double>(rolling.columns(), prior), oo, st);
+    }
     RollingState st;
-    r = rolling_pass(model, vertical_from_horizontal(model), g, c, 1, prior, o, st);
-  }
+    return rolling_pass(model, vertical_from_horizontal(model), g, c, 1, prior, oo, st);
+  };
+  TractionResult r = roll_with_a_shorter_reach(run(o), g, o, run, [] {});
   RollingRadius rigid;  // the rigid cylinder rolls on the road at its radius
   if (o.rigid) rigid.radius_m = rigid.loaded_radius_m = R0;
   finish_case(r, c, model, g, o, rigid, 0.0);
@@ -387,18 +419,21 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
     double prior = 0, prior_rut = 0;
     std::vector<double> prior_columns;  // 3D: the track's memory per column
     for (int p = 1; p <= o.passes; ++p) {
-      auto run = [&] {
-        return o.rigid   ? rigid_pass(model, g, c, p, prior, o)
-               : three_d ? rolling3d->pass(c, p, prior_columns, o, states3d[p - 1])
-                         : rolling_pass(model, V, g, c, p, prior, o, states[p - 1]);
+      auto run = [&](const TractionOptions& oo) {
+        return oo.rigid  ? rigid_pass(model, g, c, p, prior, oo)
+               : three_d ? rolling3d->pass(c, p, prior_columns, oo, states3d[p - 1])
+                         : rolling_pass(model, V, g, c, p, prior, oo, states[p - 1]);
       };
       const bool warm =
           !o.rigid && (three_d ? !states3d[p - 1].depth_m.empty() : !states[p - 1].depth_m.empty());
-      TractionResult r = run();
+      TractionResult r = run(o);
       // A warm start that does not settle is tried once more from the virgin state (the previous
       // slip's state can sit across a change of the contact's edges from this slip's).
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
-      if (!r.ok() && warm) r = run();
+      if (!r.ok() && warm) r = run(o);
+      if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
+      r = roll_with_a_shorter_reach(std::move(r), g, o, run,
+                                    [&] { states[p - 1] = {}, states3d[p - 1] = {}; });
       if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
       finish_case(r, c, model, g, o, re, prior_rut);
       prior = r.z_max_m;

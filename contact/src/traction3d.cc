@@ -216,7 +216,8 @@ TractionResult Rolling3d::pass(const TractionCase& c, int pass, const std::vecto
   AndersonMixer mixer(kAndersonDepth);
   CycleGuard cycle;
   bool plain = false;  // Anderson's mixing left for plain steps (traction_cycle.h)
-  WongReeceRear wong_reece(ground_.wong_reece, rolling_radius_slip(c, R0), R0, S, K);
+  WongReeceRear wong_reece(ground_.wong_reece, rolling_radius_slip(c, R0), R0, S, K,
+                           o.wong_reece_exit_reach);
   wong_reece.prepare(st.rear);
   double last_dp = 0;
   int normal_steps = 0;

@@ -48,10 +48,11 @@ double FlowStressLaw::work_J_m2(double p_Pa, double) const {
 }
 
 WongReeceRear::WongReeceRear(const ground::WongReeceStress& wr, double slip, double R0_m,
-                             int sections, int classes)
+                             int sections, int classes, double exit_reach)
     : wr_(wr),
       slip_(slip),
       R0_(R0_m),
+      exit_reach_(std::clamp(exit_reach, 0.0, 1.0)),
       sections_(sections),
       classes_(classes),
       cells_(std::size_t(sections) * classes) {
@@ -83,7 +84,12 @@ void WongReeceRear::set_exit_depths(RearState& st, const std::vector<double>& de
     const double d_last = depth_m[last];
     const double d_prev = prev >= 0 && std::size_t(prev) < depth_m.size() ? depth_m[prev] : d_last;
     // The profile deepens towards theta2; a rear cell whose gap is open (d_prev deeper) adds 0.
-    st.exit_depth_m[k] = d_last + st.exit_weight[k] * std::max(0.0, d_last - d_prev);
+    // Extrapolated no further than exit_reach_ (the caller's: the last rear cell's own segment,
+    // half a unit behind it; beyond, theta2 lies in the first behind cell's segment, whose floor
+    // would then follow that cell's own depth: a floor that moves with the tyre, on which its
+    // contact switches step after step without end; docs/soil.md section 10).
+    const double w = std::min(st.exit_weight[k], exit_reach_);
+    st.exit_depth_m[k] = d_last + w * std::max(0.0, d_last - d_prev);
   }
 }
 

@@ -66,9 +66,11 @@ struct RearState {
 
 class WongReeceRear {
  public:
-  /// slip: Wong's slip of the case (the rolling radius's, as the soil's slip sinkage).
+  /// slip: Wong's slip of the case (the rolling radius's, as the soil's slip sinkage);
+  /// exit_reach: how far behind the last rear cell, in its spacing, the rut's level is
+  /// extrapolated towards theta2 (set_exit_depths; 0: that cell's depth).
   WongReeceRear(const ground::WongReeceStress& wr, double slip, double R0_m, int sections,
-                int classes);
+                int classes, double exit_reach = 0);
   /// Off: enabled false, or no rear region at this slip (c3 = 0 and c1 + c2 s <= 0): the soil's
   /// own law everywhere, today's fixed point bit for bit.
   bool on() const { return on_; }
@@ -112,6 +114,7 @@ class WongReeceRear {
  private:
   ground::WongReeceStress wr_;
   double slip_, R0_;
+  double exit_reach_ = 0;
   int sections_, classes_;
   std::size_t cells_;
   bool on_ = false;

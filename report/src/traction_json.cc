@@ -46,6 +46,8 @@ nlohmann::json traction_case_json(const contact::TractionResult& r, bool with_pa
                       {"validity", r.valid ? nlohmann::json(nullptr) : nlohmann::json(r.validity)},
                       {"iterations", r.iterations}};
   if (with_pass) j["pass"] = r.pass;
+  // Only on the cases it concerns (docs/soil.md section 10, "Mesh"): the run's other keys as ever.
+  if (r.rut_reach_units >= 0) j["wong_reece_rut_reach_units"] = r.rut_reach_units;
   return j;
 }
 

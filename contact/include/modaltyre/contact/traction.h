@@ -90,6 +90,10 @@ struct TractionResult {
   bool window_exceeded = false;  ///< failed: the contact reached the candidate window's edge
   double window_m = 0;           ///< the candidate window it ran on (contact.window_mm)
   int iterations = 0;
+  /// Wong and Reece's rut behind theta2 extrapolated this many cell spacings behind the last rear
+  /// cell, shorter than TractionOptions::wong_reece_exit_reach because the rolling did not settle
+  /// with that (-1: the option's reach).
+  double rut_reach_units = -1;
   bool ok() const { return modaltyre::ok(status); }
 };
 
@@ -116,6 +120,12 @@ struct TractionOptions {
   /// on with plain steps, which settle on the cases met (true; it then rolls where it failed,
   /// and discover's fits, whose rows then roll in that corner, spend more time there).
   bool plain_steps_on_cycle = false;
+  /// Wong and Reece's rear region on the flexible tyre (docs/soil.md section 10, "Mesh"): the rut
+  /// the cells behind theta2 press is the depth profile extrapolated from the last rear cell
+  /// towards theta2 by at most this many cell spacings (1: to theta2; 0: that cell's depth, an
+  /// O(h) error). A case whose rolling does not settle with it is rolled again with 0.5 (the
+  /// cell's own segment's edge), then 0, and says so (TractionResult::rut_reach_units).
+  double wong_reece_exit_reach = 1;
 };
 
 /// Every case for passes 1..P, in the order case by case, pass by pass. A 2D model runs its
