@@ -62,11 +62,17 @@ void print_traction_table(const TractionRun& run,
       notes.push_back(r.validity);
       std::cout << "  *" << notes.size();
     }
+    if (r.rut_reach_units >= 0) std::cout << "  ~" << fixed(r.rut_reach_units, 1);
     std::cout << "\n";
   }
   for (std::size_t k = 0; k < notes.size(); ++k)
     std::cout << "  *" << k + 1 << " outside the validity range, not a prediction: " << notes[k]
               << "\n";
+  if (std::any_of(results.begin(), results.end(),
+                  [](const contact::TractionResult& r) { return r.rut_reach_units >= 0; }))
+    std::cout << "  ~R: Wong-Reece's rut behind theta2 extrapolated R of a unit behind the last "
+                 "rear cell, not to theta2, where the rolling did not settle (an O(h) error on "
+                 "coarse units; docs/soil.md section 10, \"Mesh\")\n";
   for (const contact::TractionCurve& c : contact::traction_curves(results)) {
     const contact::TractionResult& first = *c.rows.front();
     if (!(first.rolling_radius_m > 0)) continue;

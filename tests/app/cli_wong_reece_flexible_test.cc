@@ -57,4 +57,47 @@ TEST_F(WongReeceFlexibleCli, ABadCoefficientIsRefusedNamingItsKey) {
   EXPECT_NE(r.err.find("wong_reece.c2"), std::string::npos) << r.err;
 }
 
+// A case rolled with a shorter reach of the rut's extrapolation (contact/traction.h,
+// TractionOptions::wong_reece_exit_reach) is marked in the table with its reach and a note, and
+// carries it in its JSON; the case beside it that settled with the rut at theta2 carries neither
+// (the fold's point of WongReeceFlexible.ARunThatOrbits..., 0.5 mm units: only the last rear
+// cell's depth settles there).
+TEST_F(WongReeceFlexibleCli, ACaseRolledWithAShorterReachSaysSo) {
+  const std::vector<std::string> args = {"traction",
+                                         kWrCliSource + "/configs/sf350_2d_table3.yaml",
+                                         "--ground",
+                                         kWrCliLete,
+                                         "--load",
+                                         "2500",
+                                         "--slip",
+                                         "0.05",
+                                         "0.2",
+                                         "--set",
+                                         "contact.unit_length_mm=0.5",
+                                         "--set",
+                                         "ground.bekker.wong_reece.enabled=true",
+                                         "--set",
+                                         "ground.bekker.wong_reece.c1=0.457719",
+                                         "--set",
+                                         "ground.bekker.wong_reece.c2=0.266089",
+                                         "--set",
+                                         "modal.compliance_scale=0.599631",
+                                         "--set",
+                                         "tread.modulus_MPa=1.11304"};
+  const auto text = run(args);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("  ~0.0\n"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("~R: Wong-Reece's rut behind theta2 extrapolated R"), std::string::npos)
+      << text.out;
+  std::vector<std::string> with_json = args;
+  with_json.push_back("--json");
+  const auto js = run(with_json);
+  ASSERT_EQ(js.exit_code, 0) << js.err;
+  const nlohmann::json j = nlohmann::json::parse(js.out);
+  ASSERT_EQ(j["cases"].size(), 2u);
+  EXPECT_FALSE(j["cases"][0].contains("wong_reece_rut_reach_units")) << j["cases"][0];
+  ASSERT_TRUE(j["cases"][1].contains("wong_reece_rut_reach_units")) << j["cases"][1];
+  EXPECT_EQ(j["cases"][1]["wong_reece_rut_reach_units"].get<double>(), 0.0);
+}
+
 }  // namespace
