@@ -29,20 +29,17 @@ CoupledTread::CoupledTread(double k_cell_N_m, double coupling_m, double ds_m, do
       dy_(dy_m),
       sections_(sections),
       columns_(columns),
-      cos_(std::move(cos_theta)) {
+      cos_(std::move(cos_theta)),
+      modes_(columns) {
   const int n = columns;
-  modes_.resize(n, n);
   lags_.resize(n);
   const double ay = (coupling_m / dy_m) * (coupling_m / dy_m);
   for (int m = 0; m < n; ++m) {
-    const double norm = std::sqrt((m == 0 ? 1.0 : 2.0) / n);
-    for (int j = 0; j < n; ++j) modes_(j, m) = norm * std::cos(M_PI * m * (j + 0.5) / n);
     const double s = std::sin(0.5 * M_PI * m / n);
     const double stiffening = 1 + ay * 4 * s * s;  // 1 + a_y lambda_m
     lags_[m] = pasternak_tread_lags(k_cell_N_m * stiffening, coupling_m / std::sqrt(stiffening),
                                     ds_m, sections);
   }
-  modes_t_ = modes_.transpose();
   ratio_.resize(n);
   for (int m = 0; m < n; ++m) {
     const std::vector<double>& g = lags_[m];
@@ -51,7 +48,7 @@ CoupledTread::CoupledTread(double k_cell_N_m, double coupling_m, double ds_m, do
   own_.resize(n);
   for (int j = 0; j < n; ++j) {
     double g = 0;
-    for (int m = 0; m < n; ++m) g += modes_(j, m) * modes_(j, m) * lags_[m][0];
+    for (int m = 0; m < n; ++m) g += modes()(j, m) * modes()(j, m) * lags_[m][0];
     own_[j] = g;
   }
 }
@@ -61,7 +58,7 @@ double CoupledTread::entry(int a, int b) const {
   const std::size_t lag = static_cast<std::size_t>(std::abs(i - k));
   double g = 0;
   for (int m = 0; m < columns_; ++m) {
-    if (lag < lags_[m].size()) g += modes_(j, m) * modes_(l, m) * lags_[m][lag];
+    if (lag < lags_[m].size()) g += modes()(j, m) * modes()(l, m) * lags_[m][lag];
   }
   return cos_[i] * cos_[k] * g;
 }
@@ -79,13 +76,13 @@ void CoupledTread::add_product(int r0, int nr, int c0, int nc,
   constexpr double kTiny = 1e-290;
   for (int c = 0; c < cols; ++c) {
     // The column block's forces as sections x columns, cos-weighted; to modal coefficients
-    // c(s, m) = sum_l phi_m(l) cos_s f(s, l) (one matrix product).
+    // c(s, m) = sum_l phi_m(l) cos_s f(s, l) (patch3d_cosine.h).
     cells.setZero();
     for (int b = 0; b < nc; ++b) {
       const int cell = c0 + b, s = cell / n;
       cells(s - s0, cell % n) = cos_[s] * X(b, c);
     }
-    modal_product(cells, modes_, coef);
+    modes_.forward(cells, coef);
     // Convolution along the road per mode, onto the row block's sections. g_m is geometric,
     // g_m(d) = g_m(0) rho_m^|d| (pasternak_tread_lags), so the sum over sections is two
     // first-order recursions, one running forward and one back (O(sections) per mode instead
@@ -107,7 +104,7 @@ void CoupledTread::add_product(int r0, int nr, int c0, int nc,
       }
     }
     // Back across the tread, weighted by the row cells' cos theta.
-    modal_product(out, modes_t_, back);
+    modes_.backward(out, back);
     for (int a = 0; a < nr; ++a) {
       const int cell = r0 + a, q = cell / n;
       Y(a, c) += cos_[q] * back(q - q0, cell % n);
