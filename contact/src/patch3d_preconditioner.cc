@@ -59,18 +59,18 @@ class TridiagonalMode {
     }
   }
 
-  /// r := M^-1 r (length L).
+  /// r := M^-1 r (length L), in place: v over r, then y = K v (each v_i read before it is
+  /// overwritten) and z = y / cos.
   void solve(double* r) const {
     const int L = static_cast<int>(cos_.size());
-    std::vector<double>& v = v_;
-    v.resize(L);
     for (int i = 0; i < L; ++i)
-      v[i] = (r[i] / cos_[i] - (i > 0 ? sub_[i] * v[i - 1] : 0.0)) * inv_pivot_[i];
-    for (int i = L - 2; i >= 0; --i) v[i] -= sup_[i] * v[i + 1];
+      r[i] = (r[i] / cos_[i] - (i > 0 ? sub_[i] * r[i - 1] : 0.0)) * inv_pivot_[i];
+    for (int i = L - 2; i >= 0; --i) r[i] -= sup_[i] * r[i + 1];
+    double previous = 0;
     for (int i = 0; i < L; ++i) {
-      const double y =
-          diag_[i] * v[i] + off_ * ((i > 0 ? v[i - 1] : 0.0) + (i + 1 < L ? v[i + 1] : 0.0));
-      r[i] = y / cos_[i];
+      const double v = r[i], next = i + 1 < L ? r[i + 1] : 0.0;
+      r[i] = (diag_[i] * v + off_ * (previous + next)) / cos_[i];
+      previous = v;
     }
   }
 
@@ -78,7 +78,6 @@ class TridiagonalMode {
   std::vector<double> cos_, diag_;
   double off_ = 0;
   std::vector<double> sub_, inv_pivot_, sup_;
-  mutable std::vector<double> v_;  ///< scratch (one preconditioner per CG, single-threaded)
 };
 
 class CoupledCellPreconditioner final : public solvers::SetPreconditioner {
@@ -86,35 +85,35 @@ class CoupledCellPreconditioner final : public solvers::SetPreconditioner {
   CoupledCellPreconditioner(const std::vector<int>& S, int columns, int first_section, int sections,
                             int first_column, CoupledTread layer, Eigen::LLT<Eigen::MatrixXd> mode0,
                             std::vector<TridiagonalMode> modes)
-      : S_(S),
-        n_(columns),
-        q0_(first_section),
-        L_(sections),
-        j0_(first_column),
-        layer_(std::move(layer)),
-        mode0_(std::move(mode0)),
-        modes_(std::move(modes)) {}
-
-  void apply(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) const override {
-    const int w = layer_.columns();
-    Z.resize(R.rows(), R.cols());
-    Eigen::MatrixXd cells(L_, w), coef, back;
-    for (Eigen::Index c = 0; c < R.cols(); ++c) {
-      cells.setZero();
-      for (std::size_t a = 0; a < S_.size(); ++a)
-        cells(S_[a] / n_ - q0_, S_[a] % n_ - j0_) = R(a, c);
-      layer_.transform().forward(cells, coef);
-      mode0_.solveInPlace(coef.col(0));
-      for (int m = 1; m < w; ++m) modes_[m - 1].solve(coef.col(m).data());
-      layer_.transform().backward(coef, back);
-      for (std::size_t a = 0; a < S_.size(); ++a)
-        Z(a, c) = back(S_[a] / n_ - q0_, S_[a] % n_ - j0_);
+      : L_(sections), layer_(std::move(layer)), mode0_(std::move(mode0)), modes_(std::move(modes)) {
+    for (int a : S) {
+      row_.push_back(a / columns - first_section);
+      col_.push_back(a % columns - first_column);
     }
   }
 
+  void apply(const Eigen::MatrixXd& R, Eigen::MatrixXd& Z) const override {
+    const int w = layer_.columns();
+    const Eigen::Index cols = R.cols();
+    Z.resize(R.rows(), cols);
+    // Every right-hand side at once, stacked along the rows (c * L + section).
+    Eigen::MatrixXd cells = Eigen::MatrixXd::Zero(cols * L_, w), coef, back;
+    for (Eigen::Index c = 0; c < cols; ++c)
+      for (std::size_t a = 0; a < row_.size(); ++a) cells(c * L_ + row_[a], col_[a]) = R(a, c);
+    layer_.transform().forward(cells, coef);
+    for (Eigen::Index c = 0; c < cols; ++c) {
+      auto mode0 = coef.col(0).segment(c * L_, L_);
+      mode0_.solveInPlace(mode0);
+      for (int m = 1; m < w; ++m) modes_[m - 1].solve(&coef(c * L_, m));
+    }
+    layer_.transform().backward(coef, back);
+    for (Eigen::Index c = 0; c < cols; ++c)
+      for (std::size_t a = 0; a < row_.size(); ++a) Z(a, c) = back(c * L_ + row_[a], col_[a]);
+  }
+
  private:
-  std::vector<int> S_;
-  int n_, q0_, L_, j0_;
+  std::vector<int> row_, col_;  ///< each set cell's section and column in the rectangle
+  int L_;
   CoupledTread layer_;                  ///< the layer on the set's columns
   Eigen::LLT<Eigen::MatrixXd> mode0_;   ///< mode 0 (with the carcass), sections q0..q1
   std::vector<TridiagonalMode> modes_;  ///< modes 1 .. w - 1

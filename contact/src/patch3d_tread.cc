@@ -70,44 +70,54 @@ void CoupledTread::add_product(int r0, int nr, int c0, int nc,
   // The sections the blocks touch (the first and last may be partial).
   const int s0 = c0 / n, s1 = (c0 + nc - 1) / n, q0 = r0 / n, q1 = (r0 + nr - 1) / n;
   const int span = s1 - s0 + 1, rows = q1 - q0 + 1;
-  Eigen::MatrixXd cells(span, n), coef(span, n), out(rows, n), back(rows, n);
-  const int lo = std::min(s0, q0), hi = std::max(s1, q1);
-  std::vector<double> ahead(hi - lo + 1);
-  constexpr double kTiny = 1e-290;
+  // Every right-hand side at once, stacked along the rows (c * span + s): one transform each way.
+  // The column block's forces as sections x columns, cos-weighted; to modal coefficients
+  // c(s, m) = sum_l phi_m(l) cos_s f(s, l) (patch3d_cosine.h).
+  Eigen::MatrixXd cells = Eigen::MatrixXd::Zero(Eigen::Index(cols) * span, n), coef;
   for (int c = 0; c < cols; ++c) {
-    // The column block's forces as sections x columns, cos-weighted; to modal coefficients
-    // c(s, m) = sum_l phi_m(l) cos_s f(s, l) (patch3d_cosine.h).
-    cells.setZero();
+    int s = s0, j = c0 - s0 * n;
     for (int b = 0; b < nc; ++b) {
-      const int cell = c0 + b, s = cell / n;
-      cells(s - s0, cell % n) = cos_[s] * X(b, c);
+      cells(Eigen::Index(c) * span + s - s0, j) = cos_[s] * X(b, c);
+      if (++j == n) j = 0, ++s;
     }
-    modes_.forward(cells, coef);
-    // Convolution along the road per mode, onto the row block's sections. g_m is geometric,
-    // g_m(d) = g_m(0) rho_m^|d| (pasternak_tread_lags), so the sum over sections is two
-    // first-order recursions, one running forward and one back (O(sections) per mode instead
-    // of O(sections^2); the lags' 1e-12 truncation is not repeated: 1e-12 of the answer).
+  }
+  modes_.forward(cells, coef);
+  // Convolution along the road per mode, onto the row block's sections. g_m is geometric,
+  // g_m(d) = g_m(0) rho_m^|d| (pasternak_tread_lags), so the sum over sections is two
+  // first-order recursions, one running forward and one back (O(sections) per mode instead
+  // of O(sections^2); the lags' 1e-12 truncation is not repeated: 1e-12 of the answer). The
+  // forces lie on s0..s1 alone: before s0 the forward sum is 0, after s1 the backward one.
+  const int lo = std::min(s0, q0), hi = std::max(s1, q1);
+  std::vector<double> ahead(hi - s0 + 1);  // sum over s' <= s of rho^(s - s') v(s'), s >= s0
+  Eigen::MatrixXd out(Eigen::Index(cols) * rows, n), back;
+  constexpr double kTiny = 1e-290;  // no subnormal steps once a tail has decayed
+  for (int c = 0; c < cols; ++c) {
     for (int m = 0; m < n; ++m) {
       const double rho = ratio_[m], g0 = lags_[m][0];
-      auto v = [&](int s) { return s >= s0 && s <= s1 ? coef(s - s0, m) : 0.0; };
-      double f = 0;  // sum over s' <= s of rho^(s - s') v(s')
-      for (int s = lo; s <= hi; ++s) {
-        f = rho * f + v(s);
-        if (std::abs(f) < kTiny) f = 0;  // no subnormal steps once the tail has decayed
-        ahead[s - lo] = f;
+      const double* v = &coef(Eigen::Index(c) * span, m);  // v[s - s0], s0 <= s <= s1
+      double* o = &out(Eigen::Index(c) * rows, m);         // o[q - q0], q0 <= q <= q1
+      double f = 0;
+      for (int s = s0; s <= hi; ++s) {
+        f = s <= s1 ? rho * f + v[s - s0] : rho * f;
+        if (std::abs(f) < kTiny) f = 0;
+        ahead[s - s0] = f;
       }
+      for (int s = std::max(q0, s1 + 1); s <= q1; ++s) o[s - q0] = g0 * ahead[s - s0];
       double b = 0;  // sum over s' > s of rho^(s' - s) v(s')
-      for (int s = hi; s >= lo; --s) {
-        if (s >= q0 && s <= q1) out(s - q0, m) = g0 * (ahead[s - lo] + b);
-        b = rho * (b + v(s));
+      for (int s = s1; s >= lo; --s) {
+        if (s >= q0 && s <= q1) o[s - q0] = g0 * ((s >= s0 ? ahead[s - s0] : 0.0) + b);
+        b = s >= s0 ? rho * (b + v[s - s0]) : rho * b;
         if (std::abs(b) < kTiny) b = 0;
       }
     }
-    // Back across the tread, weighted by the row cells' cos theta.
-    modes_.backward(out, back);
+  }
+  // Back across the tread, weighted by the row cells' cos theta.
+  modes_.backward(out, back);
+  for (int c = 0; c < cols; ++c) {
+    int q = q0, j = r0 - q0 * n;
     for (int a = 0; a < nr; ++a) {
-      const int cell = r0 + a, q = cell / n;
-      Y(a, c) += cos_[q] * back(q - q0, cell % n);
+      Y(a, c) += cos_[q] * back(Eigen::Index(c) * rows + q - q0, j);
+      if (++j == n) j = 0, ++q;
     }
   }
 }
