@@ -21,6 +21,45 @@
 
 namespace modaltyre::contact::detail {
 
+namespace {
+
+// One mode's convolution along the road, o[q - q0] = g0 sum_s rho^|q - s| v[s - s0] for
+// q0 <= q <= q1, the forces on s0..s1 (`ahead`: s1 - s0 + 1 values). g_m is geometric,
+// g_m(d) = g_m(0) rho_m^|d| (pasternak_tread_lags), so the sum is two first-order recursions,
+// one running forward and one back (O(sections) instead of O(sections^2); the lags' 1e-12
+// truncation is not repeated: 1e-12 of the answer). Before s0 the forward sum is 0, after s1
+// the backward one.
+[[gnu::noinline]] void convolve_mode(double rho, double g0, const double* v, int s0, int s1,
+                                     double* o, int q0, int q1, double* ahead) {
+  constexpr double kTiny = 1e-290;  // no subnormal steps once a tail has decayed
+  // Forward: the sums at s0..s1 kept, then their decay onto the rows after s1.
+  double f = 0;
+  for (int s = s0; s <= s1; ++s) {
+    f = rho * f + v[s - s0];
+    if (std::abs(f) < kTiny) f = 0;
+    ahead[s - s0] = f;
+  }
+  for (int s = s1 + 1; s <= q1; ++s) {
+    f = rho * f;
+    if (std::abs(f) < kTiny) f = 0;
+    if (s >= q0) o[s - q0] = g0 * f;
+  }
+  // Backward: b = sum over s' > s of rho^(s' - s) v(s'), 0 after s1.
+  double b = 0;
+  for (int s = s1; s >= s0; --s) {
+    if (s >= q0 && s <= q1) o[s - q0] = g0 * (ahead[s - s0] + b);
+    b = rho * (b + v[s - s0]);
+    if (std::abs(b) < kTiny) b = 0;
+  }
+  for (int s = s0 - 1; s >= q0; --s) {
+    if (s <= q1) o[s - q0] = g0 * b;
+    b = rho * b;
+    if (std::abs(b) < kTiny) b = 0;
+  }
+}
+
+}  // namespace
+
 CoupledTread::CoupledTread(double k_cell_N_m, double coupling_m, double ds_m, double dy_m,
                            int sections, int columns, std::vector<double> cos_theta)
     : k_cell_(k_cell_N_m),
@@ -73,42 +112,30 @@ void CoupledTread::add_product(int r0, int nr, int c0, int nc,
   // Every right-hand side at once, stacked along the rows (c * span + s): one transform each way.
   // The column block's forces as sections x columns, cos-weighted; to modal coefficients
   // c(s, m) = sum_l phi_m(l) cos_s f(s, l) (patch3d_cosine.h).
-  Eigen::MatrixXd cells = Eigen::MatrixXd::Zero(Eigen::Index(cols) * span, n), coef;
+  // The block covers its sections but for the first one's columns before c0 and the last one's
+  // after c0 + nc - 1: only those are zeroed.
+  Eigen::MatrixXd cells(Eigen::Index(cols) * span, n), coef;
+  const int first = c0 - s0 * n, last = c0 + nc - 1 - s1 * n;
   for (int c = 0; c < cols; ++c) {
-    int s = s0, j = c0 - s0 * n;
+    const Eigen::Index row = Eigen::Index(c) * span;
+    for (int j = 0; j < first; ++j) cells(row, j) = 0;
+    for (int j = last + 1; j < n; ++j) cells(row + span - 1, j) = 0;
+    int s = s0, j = first;
     for (int b = 0; b < nc; ++b) {
-      cells(Eigen::Index(c) * span + s - s0, j) = cos_[s] * X(b, c);
+      cells(row + s - s0, j) = cos_[s] * X(b, c);
       if (++j == n) j = 0, ++s;
     }
   }
   modes_.forward(cells, coef);
-  // Convolution along the road per mode, onto the row block's sections. g_m is geometric,
-  // g_m(d) = g_m(0) rho_m^|d| (pasternak_tread_lags), so the sum over sections is two
-  // first-order recursions, one running forward and one back (O(sections) per mode instead
-  // of O(sections^2); the lags' 1e-12 truncation is not repeated: 1e-12 of the answer). The
-  // forces lie on s0..s1 alone: before s0 the forward sum is 0, after s1 the backward one.
-  const int lo = std::min(s0, q0), hi = std::max(s1, q1);
-  std::vector<double> ahead(hi - s0 + 1);  // sum over s' <= s of rho^(s - s') v(s'), s >= s0
+  // Convolution along the road per mode, onto the row block's sections (convolve_mode).
+  std::vector<double> ahead(span);  // sum over s' <= s of rho^(s - s') v(s'), s0 <= s <= s1
   Eigen::MatrixXd out(Eigen::Index(cols) * rows, n), back;
-  constexpr double kTiny = 1e-290;  // no subnormal steps once a tail has decayed
   for (int c = 0; c < cols; ++c) {
     for (int m = 0; m < n; ++m) {
       const double rho = ratio_[m], g0 = lags_[m][0];
       const double* v = &coef(Eigen::Index(c) * span, m);  // v[s - s0], s0 <= s <= s1
       double* o = &out(Eigen::Index(c) * rows, m);         // o[q - q0], q0 <= q <= q1
-      double f = 0;
-      for (int s = s0; s <= hi; ++s) {
-        f = s <= s1 ? rho * f + v[s - s0] : rho * f;
-        if (std::abs(f) < kTiny) f = 0;
-        ahead[s - s0] = f;
-      }
-      for (int s = std::max(q0, s1 + 1); s <= q1; ++s) o[s - q0] = g0 * ahead[s - s0];
-      double b = 0;  // sum over s' > s of rho^(s' - s) v(s')
-      for (int s = s1; s >= lo; --s) {
-        if (s >= q0 && s <= q1) o[s - q0] = g0 * ((s >= s0 ? ahead[s - s0] : 0.0) + b);
-        b = s >= s0 ? rho * (b + v[s - s0]) : rho * b;
-        if (std::abs(b) < kTiny) b = 0;
-      }
+      convolve_mode(rho, g0, v, s0, s1, o, q0, q1, ahead.data());
     }
   }
   // Back across the tread, weighted by the row cells' cos theta.
