@@ -31,18 +31,37 @@ void CellCompliance::apply(int r0, int nr, int c0, int nc,
                            const Eigen::Ref<const Eigen::MatrixXd>& X,
                            Eigen::Ref<Eigen::MatrixXd> Y) const {
   const int n = columns_;
-  // Section resultants of the column block (its first and last sections may be partial).
+  const Eigen::Index cols = X.cols();
+  // Section resultants of the column block (its first and last sections may be partial); the
+  // cells walked by section and column (no division per cell).
   const int s0 = c0 / n, s1 = (c0 + nc - 1) / n;
-  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(s1 - s0 + 1, X.cols());
-  for (int b = 0; b < nc; ++b) F.row((c0 + b) / n - s0) += X.row(b);
+  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(s1 - s0 + 1, cols);
+  for (Eigen::Index c = 0; c < cols; ++c) {
+    int s = 0, j = c0 - s0 * n;
+    for (int b = 0; b < nc; ++b) {
+      F(s, c) += X(b, c);
+      if (++j == n) j = 0, ++s;
+    }
+  }
   // Carcass displacement of the row block's sections, spread to their cells.
   const int q0 = r0 / n, q1 = (r0 + nr - 1) / n;
-  Eigen::MatrixXd W(q1 - q0 + 1, X.cols());
+  Eigen::MatrixXd W(q1 - q0 + 1, cols);
   carcass_.apply(q0, q1 - q0 + 1, s0, s1 - s0 + 1, F, W);
-  for (int a = 0; a < nr; ++a) Y.row(a) = W.row((r0 + a) / n - q0);
-  // Each cell's own tread.
-  for (int a = std::max(r0, c0); a < std::min(r0 + nr, c0 + nc); ++a) {
-    Y.row(a - r0) += t_[a / n] * X.row(a - c0);
+  // Each cell's own tread on the cells both blocks hold.
+  const int d0 = std::max(r0, c0), d1 = std::min(r0 + nr, c0 + nc);
+  for (Eigen::Index c = 0; c < cols; ++c) {
+    int q = 0, j = r0 - q0 * n;
+    for (int a = 0; a < nr; ++a) {
+      Y(a, c) = W(q, c);
+      if (++j == n) j = 0, ++q;
+    }
+    if (d0 >= d1) continue;
+    int i = d0 / n;
+    j = d0 - i * n;
+    for (int a = d0; a < d1; ++a) {
+      Y(a - r0, c) += t_[i] * X(a - c0, c);
+      if (++j == n) j = 0, ++i;
+    }
   }
   if (tread_) tread_->add_product(r0, nr, c0, nc, X, Y);
   if (!G_) return;

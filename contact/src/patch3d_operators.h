@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "modaltyre/solvers/compliance_operator.h"
+#include "patch3d_cosine.h"
 
 namespace modaltyre::contact::detail {
 
@@ -24,17 +25,6 @@ class DiagonalShifted final : public solvers::ComplianceOperator {
   std::vector<double> d_;
 };
 
-/// out = A B for the small products of the tread's mode transforms (A: sections x columns, B:
-/// columns x columns) as column updates out.col(m) += B(l, m) A.col(l), which vectorise along
-/// the sections; Eigen's lazy product reads A's rows with a stride, and its blocked GEMM would
-/// start OpenMP threads for these sizes.
-inline void modal_product(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B,
-                          Eigen::MatrixXd& out) {
-  out.setZero(A.rows(), B.cols());
-  for (Eigen::Index m = 0; m < B.cols(); ++m)
-    for (Eigen::Index l = 0; l < A.cols(); ++l) out.col(m) += B(l, m) * A.col(l);
-}
-
 /// The radial compliance of the shear-coupled tread between cells (patch3d_tread.cc):
 /// cos theta_i cos theta_k T((i, j), (k, l)), T the Pasternak layer's Green's function on the
 /// cell grid (unbounded along the road, free edges across it).
@@ -48,12 +38,16 @@ class CoupledTread {
   double own(int j) const { return own_[j]; }
   int columns() const { return columns_; }
   /// phi_m(j) at (j, m): the layer's modes across the tread (orthonormal).
-  const Eigen::MatrixXd& modes() const { return modes_; }
+  const Eigen::MatrixXd& modes() const { return modes_.dense(); }
+  /// The same modes as a transform of blocks of cells (patch3d_cosine.h).
+  const CosineModes& transform() const { return modes_; }
   /// g_m at lag d along the road (0 beyond the lags kept), and section i's cos theta.
   double lag(int m, int d) const {
     return d < static_cast<int>(lags_[m].size()) ? lags_[m][d] : 0.0;
   }
   double cos_theta(int i) const { return cos_[i]; }
+  /// rho_m = g_m(1) / g_m(0): g_m(d) = g_m(0) rho_m^|d| (the lags' geometric law).
+  double ratio(int m) const { return ratio_[m]; }
   /// The same layer on the columns j0 .. j0 + n - 1 alone, free at their edges.
   CoupledTread narrowed(int n) const {
     return CoupledTread(k_cell_, coupling_, ds_, dy_, sections_, n, cos_);
@@ -66,8 +60,7 @@ class CoupledTread {
   double k_cell_, coupling_, ds_, dy_;
   int sections_, columns_;
   std::vector<double> cos_;
-  Eigen::MatrixXd modes_;                  ///< phi_m(j) at (j, m), orthonormal
-  Eigen::MatrixXd modes_t_;                ///< its transpose
+  CosineModes modes_;                      ///< phi_m(j), orthonormal
   std::vector<std::vector<double>> lags_;  ///< g_m at lags 0, 1, ...
   std::vector<double> ratio_;              ///< rho_m = g_m(1) / g_m(0)
   std::vector<double> own_;
