@@ -308,6 +308,18 @@ FitResult evaluate_fit(const Evaluator& ev, const TyreConfig& base, const Varian
   return fr;
 }
 
+namespace {
+// Whether a re-fitted baseline scalar (not an effect's parameter) lies at a bound of its range.
+bool scalar_at_bound(const std::vector<FreeParameter>& ps, const Eigen::VectorXd& u) {
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (ps[i].of_effect) continue;
+    const double x = from_search(ps[i], u(Eigen::Index(i)));
+    if (!studies::range_bound_side(x, ps[i].min, ps[i].max, ps[i].log_scale).empty()) return true;
+  }
+  return false;
+}
+}  // namespace
+
 FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant& v,
                       const std::vector<int>& rows, std::optional<std::span<const double>> start,
                       bool with_errors) {
@@ -326,7 +338,8 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
   opt.relative_step = 1e-5;
   opt.step_tolerance = 1e-7;
   Eigen::VectorXd u0(k);
-  std::vector<int> fresh;  // parameters of effects base does not have on
+  std::vector<int> fresh;      // parameters of effects base does not have on
+  Eigen::VectorXd configured;  // the tyre's scalars as configured, the new effect at default
   if (start) {
     for (int i = 0; i < k; ++i) u0(i) = to_search(ps[i], (*start)[i]);
   } else {
@@ -336,6 +349,11 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
       u0(i) = to_search(ps[i], is_new ? ps[i].catalogue_default : ps[i].get(base));
       if (is_new) fresh.push_back(i);
     }
+    // The tyre as the user's config calibrates it (base is the current model's fit), the new
+    // effect at its default.
+    configured = u0;
+    for (int i = 0; i < k; ++i)
+      if (!ps[i].of_effect) configured(i) = to_search(ps[i], ps[i].get(ev.model().config));
   }
   // Short searches from each start; the best one is refined.
   auto scout_from = [&](const std::vector<Eigen::VectorXd>& starts) {
@@ -396,6 +414,26 @@ FitResult fit_variant(const Evaluator& ev, const TyreConfig& base, const Variant
       starts.back()(fresh.front()) = u;
     }
     const auto other = solvers::levenberg_marquardt(residual, scout_from(starts), opt);
+    if (other.cost < lm.cost) lm = other;
+  }
+
+  if (!fresh.empty() && scalar_at_bound(ps, lm.x)) {
+    // A re-fitted tyre scalar ended at a bound of its range (the soil's Wong-Reece set on the
+    // default: the carcass 20x stiffer at compliance_scale 0.05, c1 at its own bound): the search
+    // may have bent the tyre to the new effect's start rather than found the effect. Fit the
+    // effect alone on the tyre as the user's config has it first, then release the scalars from
+    // there; the better of the two fits is kept.
+    auto alone = [&](const Eigen::VectorXd& uf) {
+      Eigen::VectorXd u = configured;
+      for (std::size_t j = 0; j < fresh.size(); ++j) u(fresh[j]) = uf(Eigen::Index(j));
+      return residual(u);
+    };
+    Eigen::VectorXd uf(static_cast<Eigen::Index>(fresh.size()));
+    for (std::size_t j = 0; j < fresh.size(); ++j) uf(Eigen::Index(j)) = configured(fresh[j]);
+    const auto first = solvers::levenberg_marquardt(alone, uf, opt);
+    Eigen::VectorXd from = configured;
+    for (std::size_t j = 0; j < fresh.size(); ++j) from(fresh[j]) = first.x(Eigen::Index(j));
+    const auto other = solvers::levenberg_marquardt(residual, from, opt);
     if (other.cost < lm.cost) lm = other;
   }
 
