@@ -328,11 +328,15 @@ namespace {
 // the extrapolated floor moves with the tyre and can leave the first cell behind theta2, or a
 // stretch of the tyre's flat bottom, in grazing contact, switching step after step (docs/soil.md
 // section 10, "Mesh"). The reach used is kept on the result when it is not the option's.
+// Only a case with a rear region is rolled again (WongReeceStress::has_rear_region: the rut
+// exists only there); the reset clears the pass's warm state before each new roll.
 template <class Run, class Reset>
 TractionResult roll_with_a_shorter_reach(TractionResult r, const ground::GroundSettings& g,
+                                         const TractionCase& c, double R0_m,
                                          const TractionOptions& o, Run run, Reset reset) {
   TractionOptions shorter = o;
-  while (!r.ok() && r.status == SolveStatus::max_iterations && !o.rigid && g.wong_reece.enabled &&
+  const bool rear = g.wong_reece.has_rear_region(rolling_radius_slip(c, R0_m));
+  while (!r.ok() && r.status == SolveStatus::max_iterations && !o.rigid && rear &&
          shorter.wong_reece_exit_reach > 0) {
     shorter.wong_reece_exit_reach = shorter.wong_reece_exit_reach > 0.5 ? 0.5 : 0.0;
     reset();
@@ -364,7 +368,7 @@ TractionResult traction_pass(const TyreModel& model, const ground::GroundSetting
     RollingState st;
     return rolling_pass(model, vertical_from_horizontal(model), g, c, 1, prior, oo, st);
   };
-  TractionResult r = roll_with_a_shorter_reach(run(o), g, o, run, [] {});
+  TractionResult r = roll_with_a_shorter_reach(run(o), g, c, R0, o, run, [] {});
   RollingRadius rigid;  // the rigid cylinder rolls on the road at its radius
   if (o.rigid) rigid.radius_m = rigid.loaded_radius_m = R0;
   finish_case(r, c, model, g, o, rigid, 0.0);
@@ -429,12 +433,11 @@ std::vector<TractionResult> steady_traction(const TyreModel& model, const ground
       TractionResult r = run(o);
       // A warm start that does not settle is tried once more from the virgin state (the previous
       // slip's state can sit across a change of the contact's edges from this slip's).
-      if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
+      auto reset = [&] { states[p - 1] = {}, states3d[p - 1] = {}; };
+      if (!r.ok()) reset();
       if (!r.ok() && warm) r = run(o);
-      if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
-      r = roll_with_a_shorter_reach(std::move(r), g, o, run,
-                                    [&] { states[p - 1] = {}, states3d[p - 1] = {}; });
-      if (!r.ok()) states[p - 1] = {}, states3d[p - 1] = {};
+      r = roll_with_a_shorter_reach(std::move(r), g, c, R0, o, run, reset);
+      if (!r.ok()) reset();
       finish_case(r, c, model, g, o, re, prior_rut);
       prior = r.z_max_m;
       prior_rut = r.rut_depth_m;

@@ -57,7 +57,7 @@ WongReeceRear::WongReeceRear(const ground::WongReeceStress& wr, double slip, dou
       classes_(classes),
       cells_(std::size_t(sections) * classes) {
   // The rear region [theta2, theta_m) is empty for every entry angle when both ends are 0.
-  on_ = wr.enabled && (wr.c3 > 0 || wr.peak_ratio(slip) > 0);
+  on_ = wr.has_rear_region(slip);
   if (on_) wr.validate();
 }
 

@@ -18,6 +18,10 @@ double WongReeceStress::peak_ratio(double slip) const {
   return std::clamp(c1 + c2 * slip, 0.0, 1.0);
 }
 
+bool WongReeceStress::has_rear_region(double slip) const {
+  return enabled && (c3 > 0 || peak_ratio(slip) > 0);
+}
+
 void SlipSinkage::validate() const {
   auto bad = [](const std::string& what) { throw std::invalid_argument(what); };
   if (!(k1 >= 0 && k1 <= 10)) bad("bekker.slip_sinkage.k1 must be in [0, 10]");

@@ -49,6 +49,9 @@ struct WongReeceStress {
   void validate() const;  ///< std::invalid_argument naming the key
   /// theta_m / theta1 at slip s, clamped to [0, 1].
   double peak_ratio(double slip) const;
+  /// Whether the stress is shifted at slip s: enabled, and a rear region [theta2, theta_m)
+  /// exists (c3 > 0 or theta_m > 0); otherwise the soil's own law holds everywhere.
+  bool has_rear_region(double slip) const;
 };
 
 struct SlipSinkage {
