@@ -86,6 +86,7 @@ TEST(CellNewton, SolvesNewtonsSystemAtRestLikeADenseLuAfterSemismoothUpdates) {
   const double gamma = 4e-4;
   CellNewton newton(F.cells, sys);
   ASSERT_TRUE(newton.setup(t, y0.data(), gamma, false));
+  EXPECT_TRUE(newton.symmetric_at_rest());  // the capacitance matrix's Cholesky form
   std::vector<double> ydot(n);
   sys.rhs(t, y0.data(), ydot.data());
   const Eigen::VectorXd f0 = sys.last_forces();

@@ -80,7 +80,9 @@ bool CellNewton::setup(double t, const double* y, double gamma, bool jacobian_ok
     dOmega_ = sys_.spin_rate(t);
   }
   factor(gamma);
-  return cap_lu_.allFinite() && (cap_lu_.diagonal().array() != 0).all() && ee_d_inv_.allFinite();
+  const bool cap_ok = rest_ ? cap_chol_.diagonal().allFinite()
+                            : cap_lu_.allFinite() && (cap_lu_.diagonal().array() != 0).all();
+  return cap_ok && ee_d_inv_.allFinite();
 }
 
 void CellNewton::factor(double gamma) {
@@ -198,7 +200,11 @@ void CellNewton::factor(double gamma) {
   // The capacitance matrix in the 2D solver's order of operations (contact_newton.cc): a flat
   // crown's one class then repeats the 2D transient's arithmetic (FlatCrown test; a
   // rounding-level change here moved its 0.3 s hold's end load by 0.9 %).
-  if (semismooth_) {
+  rest_ = semismooth_ && rest_ok_ && at_rest;
+  if (rest_ && !cap_rest(gamma)) rest_ = false;  // (M's eigenvalues are >= 1: not seen)
+  if (rest_) {
+    // At rest: the symmetric form's Cholesky factor (cell_newton_rest.cc).
+  } else if (semismooth_) {
     // More than one class: the vectorised product and the unblocked LU (Eigen's LU where a
     // pivot vanishes, so that setup() reports the singular matrix as before).
     cap_product(gamma);
@@ -262,9 +268,12 @@ void CellNewton::factor_dq(double gamma) {
     detail::small_gemm(np_, static_cast<int>(TspanT_.cols()), np_, H_.data(), np_, TspanT_.data(),
                        np_, HT_.data(), np_);
   }
+  // At rest (no spin: uncoupled modal blocks, H symmetric) the symmetric form's basis.
+  rest_ok_ = semismooth_ && Omega_ == 0 && dOmega_ == 0 && rest_basis();
 }
 
 void CellNewton::solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  if (rest_) return solve_cap_rest(b, x);
   row_lu_solve(cap_lu_, cap_perm_, b, x);
 }
 

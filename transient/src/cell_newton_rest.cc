@@ -1,0 +1,64 @@
+// The 3D patch's Newton solver at rest (cell_newton.h, docs/transient.md section 7): the
+// capacitance matrix I - gamma H K in its symmetric positive definite form, factored by Cholesky.
+// Without spin the modal blocks of D are uncoupled 2 x 2 blocks, so H = P D^-1 Q = -(Cq diag(a)
+// Cq^T + Cr diag(b) Cr^T + hub) with a, b > 0: A = -H is symmetric, and positive definite where
+// the modes span the contact basis (else the LU of cell_newton.cc stays).
+#include <Eigen/Dense>
+
+#include "cell_kernels.h"
+#include "modaltyre/transient/cell_newton.h"
+
+namespace modaltyre::transient {
+
+bool CellNewton::rest_basis() {
+  // A from H symmetrised (H is symmetric up to the rounding of its products).
+  const Eigen::MatrixXd A = -0.5 * (H_ + H_.transpose());
+  la_.setZero(np_, np_);
+  if (!detail::cholesky_factor(np_, A.data(), la_.data())) return false;
+  la_t_ = la_.transpose();
+  z_span_.resize(np_, TspanT_.cols());
+  if (TspanT_.cols() > 0)
+    detail::small_gemm(np_, static_cast<int>(TspanT_.cols()), np_, la_t_.data(), np_,
+                       TspanT_.data(), np_, z_span_.data(), np_);
+  return true;
+}
+
+bool CellNewton::cap_rest(double gamma) {
+  // M = I + gamma L^T K L (at each setup; update_rest() changes it between setups).
+  rest_work_.resize(np_, np_);
+  detail::small_gemm(np_, np_, np_, K_.data(), np_, la_.data(), np_, rest_work_.data(), np_);
+  cap_mat_.resize(np_, np_);
+  detail::small_gemm(np_, np_, np_, la_t_.data(), np_, rest_work_.data(), np_, cap_mat_.data(),
+                     np_);
+  cap_mat_ *= gamma;
+  cap_mat_.diagonal().array() += 1.0;
+  cap_chol_.setZero(np_, np_);
+  return detail::cholesky_factor(np_, cap_mat_.data(), cap_chol_.data());
+}
+
+void CellNewton::update_rest(double gamma) {
+  // dM = gamma L^T dK L = sum over the changed sections of gamma dw_a z_a z_a^T (z_a: Z's column
+  // of section a), as update_active_set()'s dK: (gamma Zc) (diag(dw) Zc^T).
+  const int nchg = static_cast<int>(dw_.size()), span_lo = sys_.sections().lo;
+  zc_.resize(np_, nchg);
+  wz_.resize(nchg, np_);
+  for (int a = 0; a < nchg; ++a) zc_.col(a) = z_span_.col(dw_[a].first - span_lo);
+  for (int b = 0; b < np_; ++b)
+    for (int a = 0; a < nchg; ++a) wz_(a, b) = dw_[a].second * zc_(b, a);
+  zc_ *= gamma;
+  detail::small_gemm(np_, np_, nchg, zc_.data(), np_, wz_.data(), nchg, cap_mat_.data(), np_, true);
+}
+
+void CellNewton::solve_cap_rest(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  // (I - gamma H K)^-1 = L M^-1 L^-1.
+  rest_t_.resize(np_);
+  double* t = rest_t_.data();
+  for (int i = 0; i < np_; ++i) t[i] = b(i);
+  detail::lower_solve(np_, la_.data(), t);
+  detail::lower_solve(np_, cap_chol_.data(), t);
+  detail::lower_transpose_solve(np_, cap_chol_.data(), t);
+  x.resize(np_);
+  detail::lower_product(np_, la_.data(), t, x.data());
+}
+
+}  // namespace modaltyre::transient
