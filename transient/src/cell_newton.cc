@@ -390,8 +390,12 @@ void CellNewton::solve(double* x) {
   solvers::detail::dense_product(np_, np_, H_.data(), np_, phi_, prod_);
   eta_ = eta0_ + prod_;
   solve_cap(eta_, w_);
-  solvers::detail::dense_product(np_, np_, K_.data(), np_, w_, prod_);
-  phi_ += gamma_ * prod_;
+  if (rest_) {
+    phi_ += rest_gamma_kw();  // gamma K w from the capacitance solve (cell_newton_rest.cc)
+  } else {
+    solvers::detail::dense_product(np_, np_, K_.data(), np_, w_, prod_);
+    phi_ += gamma_ * prod_;
+  }
   column_product(DQ_, phi_, xx, true);
   if (ne_ > 0) {
     if (ns_ > 0) {

@@ -50,15 +50,20 @@ void CellNewton::update_rest(double gamma) {
 }
 
 void CellNewton::solve_cap_rest(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
-  // (I - gamma H K)^-1 = L M^-1 L^-1.
-  rest_t_.resize(np_);
-  double* t = rest_t_.data();
-  for (int i = 0; i < np_; ++i) t[i] = b(i);
-  detail::lower_solve(np_, la_.data(), t);
-  detail::lower_solve(np_, cap_chol_.data(), t);
-  detail::lower_transpose_solve(np_, cap_chol_.data(), t);
+  // (I - gamma H K)^-1 = L M^-1 L^-1; s and t kept for rest_gamma_kw().
+  rest_s_ = b;
+  detail::lower_solve(np_, la_.data(), rest_s_.data());
+  rest_t_ = rest_s_;
+  detail::lower_solve(np_, cap_chol_.data(), rest_t_.data());
+  detail::lower_transpose_solve(np_, cap_chol_.data(), rest_t_.data());
   x.resize(np_);
-  detail::lower_product(np_, la_.data(), t, x.data());
+  detail::lower_product(np_, la_.data(), rest_t_.data(), x.data());
+}
+
+const Eigen::VectorXd& CellNewton::rest_gamma_kw() const {
+  rest_s_ -= rest_t_;
+  detail::lower_transpose_solve(np_, la_.data(), rest_s_.data());
+  return rest_s_;
 }
 
 }  // namespace modaltyre::transient

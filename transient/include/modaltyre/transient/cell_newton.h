@@ -55,6 +55,10 @@ class CellNewton {
   bool cap_rest(double gamma);
   void update_rest(double gamma);
   void solve_cap_rest(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  /// gamma K w after solve_cap_rest()'s w = L t, t = M^-1 s, s = L^-1 b: gamma L^T K L t =
+  /// (M - I) t = s - t, so gamma K w = L^-T (s - t), one triangular solve, and the semismooth
+  /// update need not change K (update_active_set()).
+  const Eigen::VectorXd& rest_gamma_kw() const;
   void solve_d(double* x) const;
   void solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// y <- M_EE^-1 y over the tread states (per class, back substitution along its band).
@@ -80,10 +84,10 @@ class CellNewton {
   /// solve_ee(): classes with tread states, longest range first, run kLanes at a time.
   static constexpr int kLanes = 8;
   std::vector<int> lane_order_;
-  int s0_ = 0, ns_ = 0;    ///< sections with an active cell: [s0_, s0_ + ns_)
-  Eigen::MatrixXd Tt_;     ///< T~ rows of those sections (ns x np)
-  Eigen::VectorXd w_sec_;  ///< sum_c mu_c kd_ic per section (ns)
-  Eigen::MatrixXd K_, cap_mat_;
+  int s0_ = 0, ns_ = 0;          ///< sections with an active cell: [s0_, s0_ + ns_)
+  Eigen::MatrixXd Tt_;           ///< T~ rows of those sections (ns x np)
+  Eigen::VectorXd w_sec_;        ///< sum_c mu_c kd_ic per section (ns)
+  Eigen::MatrixXd K_, cap_mat_;  ///< K: at rest (rest_) the setup's, M carries the updates
   bool dq_ready_ = false;
   bool semismooth_ = false;
   Eigen::VectorXd kc_slot_;      ///< per slot: contact spring
@@ -103,7 +107,7 @@ class CellNewton {
   /// A's Cholesky factor L and its transpose, Z = L^T T~^T over the span, M's factor, and
   /// update_rest()'s columns of the switched sections.
   Eigen::MatrixXd la_, la_t_, z_span_, cap_chol_, zc_, wz_, rest_work_;
-  mutable Eigen::VectorXd rest_t_;
+  mutable Eigen::VectorXd rest_s_, rest_t_;
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
   Eigen::MatrixXd CqT_, CrT_, DQ_, H_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_, Y_, TtR_, RR_;
