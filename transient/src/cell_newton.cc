@@ -400,10 +400,14 @@ void CellNewton::solve(double* x) {
   if (ne_ > 0) {
     if (ns_ > 0) {
       // x_E = M_EE^-1 (b_E - M_EX x_X), M_EX = -gamma diag(kd / c') T~ P.
-      solvers::detail::dense_product(np_, np_, H_.data(), np_, phi_, prod_);
-      eta_ = eta0_ + prod_;
+      // P x_X = eta0 + H phi, which is the capacitance solve's w (w = eta0 + H phi1 + gamma H K
+      // w): at rest taken as such, otherwise recomputed (the bits of the 2D solver's order).
+      if (!rest_) {
+        solvers::detail::dense_product(np_, np_, H_.data(), np_, phi_, prod_);
+        eta_ = eta0_ + prod_;
+      }
       work_s_.resize(ns_);
-      column_product(Tt_, eta_, work_s_);  // T~_i P x_X per section
+      column_product(Tt_, rest_ ? w_ : eta_, work_s_);  // T~_i P x_X per section
       for (int c = 0; c < nc; ++c) {
         const UnitRange& r = sys_.ranges()[c];
         const int o = sys_.offset(c), k0 = std::max(0, s0_ - r.lo),

@@ -4,6 +4,7 @@
 // Cq^T + Cr diag(b) Cr^T + hub) with a, b > 0: A = -H is symmetric, and positive definite where
 // the modes span the contact basis (else the LU of cell_newton.cc stays).
 #include <Eigen/Dense>
+#include <algorithm>
 
 #include "cell_kernels.h"
 #include "modaltyre/transient/cell_newton.h"
@@ -38,15 +39,22 @@ bool CellNewton::cap_rest(double gamma) {
 
 void CellNewton::update_rest(double gamma) {
   // dM = gamma L^T dK L = sum over the changed sections of gamma dw_a z_a z_a^T (z_a: Z's column
-  // of section a), as update_active_set()'s dK: (gamma Zc) (diag(dw) Zc^T).
+  // of section a) as (Zc) (gamma diag(dw) Zc^T), on and below the diagonal only (Cholesky reads
+  // no more): per block of four columns from its first column's row down.
   const int nchg = static_cast<int>(dw_.size()), span_lo = sys_.sections().lo;
   zc_.resize(np_, nchg);
   wz_.resize(nchg, np_);
-  for (int a = 0; a < nchg; ++a) zc_.col(a) = z_span_.col(dw_[a].first - span_lo);
-  for (int b = 0; b < np_; ++b)
-    for (int a = 0; a < nchg; ++a) wz_(a, b) = dw_[a].second * zc_(b, a);
-  zc_ *= gamma;
-  detail::small_gemm(np_, np_, nchg, zc_.data(), np_, wz_.data(), nchg, cap_mat_.data(), np_, true);
+  for (int a = 0; a < nchg; ++a) {
+    const double* z = z_span_.col(dw_[a].first - span_lo).data();
+    const double c = gamma * dw_[a].second;
+    double* zc = zc_.col(a).data();
+    for (int b = 0; b < np_; ++b) zc[b] = z[b], wz_(a, b) = c * z[b];
+  }
+  for (int j0 = 0; j0 < np_; j0 += 4) {
+    const int cols = std::min(4, np_ - j0);
+    detail::small_gemm(np_ - j0, cols, nchg, zc_.data() + j0, np_, wz_.data() + j0 * nchg, nchg,
+                       cap_mat_.data() + j0 * np_ + j0, np_, true);
+  }
 }
 
 void CellNewton::solve_cap_rest(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {

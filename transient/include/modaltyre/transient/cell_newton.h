@@ -105,8 +105,8 @@ class CellNewton {
   bool rest_ok_ = false;  ///< factor_dq() made la_ and z_span_ (rest_basis())
   bool rest_ = false;     ///< the current capacitance factor is M's Cholesky factor
   /// A's Cholesky factor L and its transpose, Z = L^T T~^T over the span, M's factor, and
-  /// update_rest()'s columns of the switched sections.
-  Eigen::MatrixXd la_, la_t_, z_span_, cap_chol_, zc_, wz_, rest_work_;
+  /// update_rest()'s columns of the switched sections (Zc, gamma diag(dw) Zc^T).
+  Eigen::MatrixXd la_, la_t_, z_span_, cap_chol_, rest_work_, zc_, wz_;
   mutable Eigen::VectorXd rest_s_, rest_t_;
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
   Eigen::MatrixXd CqT_, CrT_, DQ_, H_;
