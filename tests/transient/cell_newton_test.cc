@@ -110,5 +110,32 @@ TEST(CellNewton, SolvesNewtonsSystemAtRestLikeADenseLuAfterSemismoothUpdates) {
   }
 }
 
+TEST(CellNewton, SolvesNewtonsSystemRollingLikeADenseLuAtItsContactSet) {
+  // Rolling, M_EE is a band along each class (the tread advected): its back substitution first
+  // serves the gather over the contact's sections only, then the tread states' solution whole.
+  // Exact at the contact set of the setup (no cell switched: the update is then a no-op).
+  const Fixture& F = fixture();
+  const ScenarioPlan plan = plan_scenario(F.model, Scenario::rolling);
+  const CellSystem sys(F.cells, plan);
+  ASSERT_GT(sys.tread_states(), 0);
+  const double t = 0.5 * plan.duration_s;
+  ASSERT_GT(std::abs(sys.spin(t)), 0.0);
+  const std::vector<double> y = sys.state_from(static_cells(F.cells, 4000));
+  const int n = sys.size();
+  const double gamma = 4e-4;
+  CellNewton newton(F.cells, sys);
+  ASSERT_TRUE(newton.setup(t, y.data(), gamma, false));
+  EXPECT_FALSE(newton.symmetric_at_rest());
+  std::vector<double> ydot(n);
+  sys.rhs(t, y.data(), ydot.data());
+  const Eigen::MatrixXd A = newton_matrix(sys, t, y, gamma);
+  Eigen::VectorXd b(n);
+  for (int k = 0; k < n; ++k) b(k) = std::cos(0.7 * k) * (1.0 + k % 5);
+  Eigen::VectorXd x = b;
+  newton.solve(x.data());
+  const Eigen::VectorXd want = A.partialPivLu().solve(b);
+  EXPECT_LT((x - want).cwiseAbs().maxCoeff(), kSolveTol * want.cwiseAbs().maxCoeff());
+}
+
 }  // namespace
 }  // namespace modaltyre::transient

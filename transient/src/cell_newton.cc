@@ -288,7 +288,7 @@ void CellNewton::solve_d(double* x) const {
   x[M_.z_index()] += d_zw_ * x[M_.z_index() + 1];
 }
 
-void CellNewton::solve_ee(double* y) const {
+void CellNewton::solve_ee(double* y, bool span_only) const {
   if (ee_s1_ == 0 && ee_s2_ == 0) {
     Eigen::Map<Eigen::VectorXd>(y, ne_).array() *= ee_d_inv_.array();
     return;
@@ -308,14 +308,18 @@ void CellNewton::solve_ee(double* y) const {
     const int lanes = static_cast<int>(std::min<std::size_t>(kLanes, lane_order_.size() - g));
     double* yc[kLanes];
     const double* dc[kLanes];
-    int n[kLanes];
+    int n[kLanes], m[kLanes];  // the class's slots, and how many from its end are computed
     int nmin = 1 << 30;
     for (int l = 0; l < lanes; ++l) {
       const int c = lane_order_[g + l];
-      n[l] = sys_.ranges()[c].size();
+      const UnitRange& r = sys_.ranges()[c];
+      n[l] = r.size();
       yc[l] = y + sys_.offset(c);
       dc[l] = dinv + sys_.offset(c);
-      nmin = std::min(nmin, n[l]);
+      // Span only: down to the class's first slot in the sections [s0, s0 + ns) (the slots
+      // below are not computed; the upwind band carries nothing from them upwards).
+      m[l] = span_only ? std::max(0, std::min(r.size(), r.hi + 1 - s0_)) : n[l];
+      nmin = std::min(nmin, m[l]);
     }
 
     // Steps t = 0, 1 from each end (the band's boundary), then t = 2 .. nmin - 1 in lockstep,
@@ -338,7 +342,7 @@ void CellNewton::solve_ee(double* y) const {
           ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
     }
     for (int l = 0; l < lanes; ++l)
-      for (int t = nmin; t < n[l]; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
+      for (int t = nmin; t < m[l]; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
   }
 }
 
@@ -363,7 +367,7 @@ void CellNewton::solve(double* x) {
   if (ne_ > 0 && ns_ > 0) {
     if (!at_rest) {
       work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
-      solve_ee(work_e_.data());
+      solve_ee(work_e_.data(), /*span_only=*/true);  // read by the gather below only
     }
     work_s_.setZero(ns_);
     // Over each class's slots within the sections [s0, s0 + ns) (mu kd = 0 where not active).

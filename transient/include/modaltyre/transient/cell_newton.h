@@ -62,7 +62,9 @@ class CellNewton {
   void solve_d(double* x) const;
   void solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// y <- M_EE^-1 y over the tread states (per class, back substitution along its band).
-  void solve_ee(double* y) const;
+  /// span_only: rolling, each class's slots from its end down to the first in the sections
+  /// [s0_, s0_ + ns_) only (the rest of y left as it was).
+  void solve_ee(double* y, bool span_only = false) const;
 
   const CellModel& cm_;
   const TransientModel& M_;
