@@ -284,6 +284,28 @@ TEST(CellKernels, LowerTriangularSolvesAreTheirStatedOperationsToTheBit) {
   }
 }
 
+TEST(CellKernels, BandLockstep8IsTheScalarRecurrenceToTheBit) {
+  std::mt19937 rng(50);
+  for (int len : {2, 3, 4, 9, 40}) {
+    std::vector<std::vector<double>> y0, d;
+    for (int l = 0; l < 8; ++l)
+      y0.push_back(random_values(rng, len)), d.push_back(random_values(rng, len));
+    const double s1 = -0.37, s2 = 0.093;
+    auto want = y0, got = y0;
+    double* ye[8];
+    const double* de[8];
+    for (int l = 0; l < 8; ++l) {
+      double* e = want[l].data() + len - 1;
+      for (int t = 2; t < len; ++t)
+        e[-t] = (e[-t] - s1 * e[1 - t] - s2 * e[2 - t]) * d[l][len - 1 - t];
+      ye[l] = got[l].data() + len - 1, de[l] = d[l].data() + len - 1;
+    }
+    band_lockstep8(2, len, ye, de, s1, s2);
+    for (int l = 0; l < 8; ++l)
+      for (int k = 0; k < len; ++k) ASSERT_EQ(want[l][k], got[l][k]) << len << " " << l << " " << k;
+  }
+}
+
 TEST(CellKernels, LuFactorTakesTheFirstOfTiedPivots) {
   // Small integers: columns with several entries of the same largest magnitude (either sign),
   // where the pivot must be the first of them, as the stated search takes it (the AVX2 path

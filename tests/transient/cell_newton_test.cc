@@ -10,6 +10,7 @@
 
 #include <cmath>
 
+#include "dense_lu_check.h"
 #include "modaltyre/transient/cell_model.h"
 #include "modaltyre/transient/cell_system.h"
 #include "modaltyre/transient/transient.h"
@@ -90,8 +91,7 @@ TEST(CellNewton, SolvesNewtonsSystemAtRestLikeADenseLuAfterSemismoothUpdates) {
   std::vector<double> ydot(n);
   sys.rhs(t, y0.data(), ydot.data());
   const Eigen::VectorXd f0 = sys.last_forces();
-  Eigen::VectorXd b(n);
-  for (int k = 0; k < n; ++k) b(k) = std::cos(0.7 * k) * (1.0 + k % 5);
+  const Eigen::VectorXd b = smooth_rhs(n);
   for (const double dz_m : {4e-4, -4e-4}) {
     SCOPED_TRACE(dz_m);
     std::vector<double> y = y0;
@@ -99,10 +99,7 @@ TEST(CellNewton, SolvesNewtonsSystemAtRestLikeADenseLuAfterSemismoothUpdates) {
     const Eigen::MatrixXd A = newton_matrix(sys, t, y, gamma);
     sys.rhs(t, y.data(), ydot.data());  // the iterate whose contact set the update takes
     EXPECT_GT(switched_cells(sys.last_forces(), f0), 4);
-    Eigen::VectorXd x = b;
-    newton.solve(x.data());
-    const Eigen::VectorXd want = A.partialPivLu().solve(b);
-    EXPECT_LT((x - want).cwiseAbs().maxCoeff(), kSolveTol * want.cwiseAbs().maxCoeff());
+    const Eigen::VectorXd x = expect_solve_near_dense_lu(newton, A, kSolveTol);
     // Normwise backward error (the tread rows' entries gamma k / c' are large).
     const double scale =
         A.cwiseAbs().rowwise().sum().maxCoeff() * x.cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff();
@@ -128,13 +125,7 @@ TEST(CellNewton, SolvesNewtonsSystemRollingLikeADenseLuAtItsContactSet) {
   EXPECT_FALSE(newton.symmetric_at_rest());
   std::vector<double> ydot(n);
   sys.rhs(t, y.data(), ydot.data());
-  const Eigen::MatrixXd A = newton_matrix(sys, t, y, gamma);
-  Eigen::VectorXd b(n);
-  for (int k = 0; k < n; ++k) b(k) = std::cos(0.7 * k) * (1.0 + k % 5);
-  Eigen::VectorXd x = b;
-  newton.solve(x.data());
-  const Eigen::VectorXd want = A.partialPivLu().solve(b);
-  EXPECT_LT((x - want).cwiseAbs().maxCoeff(), kSolveTol * want.cwiseAbs().maxCoeff());
+  expect_solve_near_dense_lu(newton, newton_matrix(sys, t, y, gamma), kSolveTol);
 }
 
 }  // namespace

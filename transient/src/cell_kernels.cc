@@ -260,6 +260,40 @@ __attribute__((target("avx2,fma"))) double lane_dot_avx2(int n, const double* a,
   return r;
 }
 
+/// The entries p_l[o] of four lanes as one vector.
+__attribute__((target("avx2"))) inline __m256d at(const double* const* p, int o) {
+  return _mm256_setr_pd(p[0][o], p[1][o], p[2][o], p[3][o]);
+}
+
+/// Stores the four lanes of v to p_l[o].
+__attribute__((target("avx2"))) inline void put(__m256d v, double* const* p, int o) {
+  const __m128d lo = _mm256_castpd256_pd128(v), hi = _mm256_extractf128_pd(v, 1);
+  _mm_storel_pd(p[0] + o, lo);
+  _mm_storeh_pd(p[1] + o, lo);
+  _mm_storel_pd(p[2] + o, hi);
+  _mm_storeh_pd(p[3] + o, hi);
+}
+
+/// band_lockstep8()'s steps, the lanes as two vectors of four (no fused multiply-add: the
+/// scalar expression's roundings), y_k+1 and y_k+2 carried in registers from step to step.
+__attribute__((target("avx2"))) void band_lockstep8_avx2(int t0, int t1, double* const* y,
+                                                         const double* const* d, double s1,
+                                                         double s2) {
+  const __m256d v1 = _mm256_set1_pd(s1), v2 = _mm256_set1_pd(s2);
+  __m256d a1 = at(y, 1 - t0), a2 = at(y, 2 - t0), b1 = at(y + 4, 1 - t0), b2 = at(y + 4, 2 - t0);
+  for (int t = t0; t < t1; ++t) {
+    const __m256d a = _mm256_mul_pd(
+        _mm256_sub_pd(_mm256_sub_pd(at(y, -t), _mm256_mul_pd(v1, a1)), _mm256_mul_pd(v2, a2)),
+        at(d, -t));
+    const __m256d b = _mm256_mul_pd(
+        _mm256_sub_pd(_mm256_sub_pd(at(y + 4, -t), _mm256_mul_pd(v1, b1)), _mm256_mul_pd(v2, b2)),
+        at(d + 4, -t));
+    put(a, y, -t);
+    put(b, y + 4, -t);
+    a2 = a1, a1 = a, b2 = b1, b1 = b;
+  }
+}
+
 /// lower_solve()'s columns: x_i = fma(-L_ip, x_p, x_i) below each solved x_p.
 __attribute__((target("avx2,fma"))) void lower_solve_avx2(int n, const double* l, double* x) {
   for (int p = 0; p < n; ++p) {
@@ -523,6 +557,17 @@ void lower_product(int n, const double* l, const double* x, double* y) {
 #endif
   for (int i = 0; i < n; ++i)
     for (int p = 0; p < n; ++p) y[i] = std::fma(-l[p * n + i], negated[p], y[i]);
+}
+
+void band_lockstep8(int t0, int t1, double* const* y, const double* const* d, double s1,
+                    double s2) {
+  if (t1 <= t0) return;
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2()) return band_lockstep8_avx2(t0, t1, y, d, s1, s2);
+#endif
+  for (int t = t0; t < t1; ++t)
+    for (int l = 0; l < 8; ++l)
+      y[l][-t] = (y[l][-t] - s1 * y[l][1 - t] - s2 * y[l][2 - t]) * d[l][-t];
 }
 
 void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,

@@ -24,6 +24,13 @@ void pair_dots(int n, const double* a, const double* b, const double* x, const d
 void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,
               double s1, double s2, double d, double* y, double* r, double w, double gamma);
 
+/// CellNewton::solve_ee()'s lockstep of eight classes' back substitutions along their bands:
+/// for t = t0 .. t1 - 1, for each lane l < 8, y_l[-t] = ((y_l[-t] - s1 y_l[1 - t]) - s2 y_l[2 - t])
+/// d_l[-t] (t0 >= 2 or the entries at 1 - t0 and 2 - t0 readable), exactly these operations (no
+/// fused multiply-add): the AVX2 path runs the lanes as two vectors with y_l[1 - t], y_l[2 - t]
+/// carried in registers, the same bits.
+void band_lockstep8(int t0, int t1, double* const* y, const double* const* d, double s1, double s2);
+
 /// LU with partial pivoting of the column-major n x n matrix a into the row-major lu (unit L
 /// below the diagonal, U on and above it; CellNewton's and ContactNewton's capacitance matrices,
 /// row_lu_factor()): the steps on a's row-major copy are, at step k, the first row i >= k with

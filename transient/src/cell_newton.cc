@@ -63,6 +63,9 @@ CellNewton::CellNewton(const CellModel& cm, const CellSystem& system)
   std::stable_sort(lane_order_.begin(), lane_order_.end(), [&](int a, int b) {
     return system.ranges()[a].size() > system.ranges()[b].size();
   });
+  int longest = 0;
+  for (int c : lane_order_) longest = std::max(longest, system.ranges()[c].size());
+  pad_.assign(longest + 2, 0.0);
   eta_.resize(np_);
   eta0_.resize(np_);
   phi_.resize(np_);
@@ -330,17 +333,10 @@ void CellNewton::solve_ee(double* y, bool span_only) const {
     double* ye[kLanes];
     const double* de[kLanes];
     for (int l = 0; l < lanes; ++l) ye[l] = yc[l] + n[l] - 1, de[l] = dc[l] + n[l] - 1;
-    if (lanes == kLanes) {
-      for (int t = head; t < nmin; ++t)
-        for (int l = 0; l < kLanes; ++l)
-          ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
-    } else {
-      // A last group of fewer classes in lockstep too (one class at a time, the 6 classes left
-      // of 30 were the cleat's longest chain).
-      for (int t = head; t < nmin; ++t)
-        for (int l = 0; l < lanes; ++l)
-          ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
-    }
+    // A last group of fewer classes runs with idle lanes on zeros (pad_: zeros stay zeros).
+    static_assert(kLanes == 8, "band_lockstep8() runs eight lanes");
+    for (int l = lanes; l < kLanes; ++l) ye[l] = pad_.data() + pad_.size() - 1, de[l] = ye[l];
+    detail::band_lockstep8(head, nmin, ye, de, s1, s2);  // cell_kernels.h
     for (int l = 0; l < lanes; ++l)
       for (int t = nmin; t < m[l]; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
   }

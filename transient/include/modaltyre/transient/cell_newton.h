@@ -86,10 +86,11 @@ class CellNewton {
   /// solve_ee(): classes with tread states, longest range first, run kLanes at a time.
   static constexpr int kLanes = 8;
   std::vector<int> lane_order_;
-  int s0_ = 0, ns_ = 0;          ///< sections with an active cell: [s0_, s0_ + ns_)
-  Eigen::MatrixXd Tt_;           ///< T~ rows of those sections (ns x np)
-  Eigen::VectorXd w_sec_;        ///< sum_c mu_c kd_ic per section (ns)
-  Eigen::MatrixXd K_, cap_mat_;  ///< K: at rest (rest_) the setup's, M carries the updates
+  mutable std::vector<double> pad_;  ///< solve_ee()'s idle lanes (zeros, as long as a class)
+  int s0_ = 0, ns_ = 0;              ///< sections with an active cell: [s0_, s0_ + ns_)
+  Eigen::MatrixXd Tt_;               ///< T~ rows of those sections (ns x np)
+  Eigen::VectorXd w_sec_;            ///< sum_c mu_c kd_ic per section (ns)
+  Eigen::MatrixXd K_, cap_mat_;      ///< K: at rest (rest_) the setup's, M carries the updates
   bool dq_ready_ = false;
   bool semismooth_ = false;
   Eigen::VectorXd kc_slot_;      ///< per slot: contact spring
