@@ -275,7 +275,7 @@ TEST(CellKernels, LowerTriangularSolvesAreTheirStatedOperationsToTheBit) {
     for (int i = 0; i < n; ++i) ASSERT_EQ(want[i], got[i]) << "L^-T, n " << n << " row " << i;
     // y = L x.
     std::vector<double> y(n);
-    lower_product(n, l.data(), b.data(), y.data());
+    square_product(n, l.data(), b.data(), y.data());
     for (int i = 0; i < n; ++i) {
       double s = 0;
       for (int p = 0; p < n; ++p) s = std::fma(-l[p * n + i], -b[p], s);

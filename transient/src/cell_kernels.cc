@@ -547,16 +547,16 @@ void lower_transpose_solve(int n, const double* l, double* x) {
     x[i] = (x[i] - dot(n - i - 1, l + i * n + i + 1, x + i + 1)) / l[i * n + i];
 }
 
-void lower_product(int n, const double* l, const double* x, double* y) {
+void square_product(int n, const double* a, const double* x, double* y) {
   thread_local std::vector<double> negated;
   negated.resize(n);
   for (int p = 0; p < n; ++p) negated[p] = -x[p];
   for (int i = 0; i < n; ++i) y[i] = 0;
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
-  if (avx2_fma()) return fnmadd_sweep(n, n, l, n, negated.data(), 1, y);
+  if (avx2_fma()) return fnmadd_sweep(n, n, a, n, negated.data(), 1, y);
 #endif
   for (int i = 0; i < n; ++i)
-    for (int p = 0; p < n; ++p) y[i] = std::fma(-l[p * n + i], negated[p], y[i]);
+    for (int p = 0; p < n; ++p) y[i] = std::fma(-a[p * n + i], negated[p], y[i]);
 }
 
 void band_lockstep8(int t0, int t1, double* const* y, const double* const* d, double s1,

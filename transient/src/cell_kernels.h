@@ -49,16 +49,17 @@ bool lu_factor(int n, const double* a, double* lu, int* rows);
 /// in registers) and the portable one (std::fma). False at a pivot that is not positive and
 /// finite (CellNewton's capacitance matrix at rest, cell_newton_rest.cc).
 bool cholesky_factor(int n, const double* a, double* l);
-/// For cholesky_factor()'s L, the same bits on both paths:
+/// For cholesky_factor()'s L, the same bits on both paths (serial chains along the rows):
 /// x <- L^-1 x by columns: x_p = x_p / L_pp, then x_i = fma(-L_ip, x_p, x_i) for i > p;
 /// x <- L^-T x by rows from the last: x_i = (x_i - d) / L_ii, d = sum_{p > i} L_pi x_p as four
 /// partial sums (p - i - 1 mod 4) of fused multiply-adds, added (s0 + s1) + (s2 + s3), then the
 /// last terms in order;
-/// y = L x as y_i = fma(-L_ip, -x_p, y_i) from y_i = 0 over every p < n in order (entries above
-/// the diagonal must be zero).
 void lower_solve(int n, const double* l, double* x);
 void lower_transpose_solve(int n, const double* l, double* x);
-void lower_product(int n, const double* l, const double* x, double* y);
+/// y = A x for the column-major n x n a as y_i = fma(-A_ip, -x_p, y_i) from y_i = 0 over every
+/// p < n in order (zeros of a triangular a included), the same bits on both paths (16 rows in
+/// registers across the sum on AVX2).
+void square_product(int n, const double* a, const double* x, double* y);
 
 /// Appends to `out` every k < n where (a[k] > 0) != (b[k] > 0), in increasing order (the cells
 /// whose side of the contact kink differs between the iterate's forces a and the matrix's

@@ -17,6 +17,11 @@ bool CellNewton::rest_basis() {
   la_.setZero(np_, np_);
   if (!detail::cholesky_factor(np_, A.data(), la_.data())) return false;
   la_t_ = la_.transpose();
+  // L^-1 and L^-T as matrices (once per setup): the capacitance solve's two products with them
+  // are independent sums, not the serial chains of triangular solves.
+  la_inv_.setIdentity(np_, np_);
+  for (int j = 0; j < np_; ++j) detail::lower_solve(np_, la_.data(), la_inv_.col(j).data());
+  la_inv_t_ = la_inv_.transpose();
   z_span_.resize(np_, TspanT_.cols());
   if (TspanT_.cols() > 0)
     detail::small_gemm(np_, static_cast<int>(TspanT_.cols()), np_, la_t_.data(), np_,
@@ -59,19 +64,20 @@ void CellNewton::update_rest(double gamma) {
 
 void CellNewton::solve_cap_rest(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   // (I - gamma H K)^-1 = L M^-1 L^-1; s and t kept for rest_gamma_kw().
-  rest_s_ = b;
-  detail::lower_solve(np_, la_.data(), rest_s_.data());
+  rest_s_.resize(np_);
+  detail::square_product(np_, la_inv_.data(), b.data(), rest_s_.data());
   rest_t_ = rest_s_;
   detail::lower_solve(np_, cap_chol_.data(), rest_t_.data());
   detail::lower_transpose_solve(np_, cap_chol_.data(), rest_t_.data());
   x.resize(np_);
-  detail::lower_product(np_, la_.data(), rest_t_.data(), x.data());
+  detail::square_product(np_, la_.data(), rest_t_.data(), x.data());
 }
 
 const Eigen::VectorXd& CellNewton::rest_gamma_kw() const {
   rest_s_ -= rest_t_;
-  detail::lower_transpose_solve(np_, la_.data(), rest_s_.data());
-  return rest_s_;
+  rest_kw_.resize(np_);
+  detail::square_product(np_, la_inv_t_.data(), rest_s_.data(), rest_kw_.data());
+  return rest_kw_;
 }
 
 }  // namespace modaltyre::transient

@@ -56,7 +56,7 @@ class CellNewton {
   void update_rest(double gamma);
   void solve_cap_rest(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// gamma K w after solve_cap_rest()'s w = L t, t = M^-1 s, s = L^-1 b: gamma L^T K L t =
-  /// (M - I) t = s - t, so gamma K w = L^-T (s - t), one triangular solve, and the semismooth
+  /// (M - I) t = s - t, so gamma K w = L^-T (s - t), one product with L^-T, and the semismooth
   /// update need not change K (update_active_set()).
   const Eigen::VectorXd& rest_gamma_kw() const;
   void solve_d(double* x) const;
@@ -107,10 +107,10 @@ class CellNewton {
   double dq_gamma_ = 0, dq_Omega_ = 0, dq_dOmega_ = 0;
   bool rest_ok_ = false;  ///< factor_dq() made la_ and z_span_ (rest_basis())
   bool rest_ = false;     ///< the current capacitance factor is M's Cholesky factor
-  /// A's Cholesky factor L and its transpose, Z = L^T T~^T over the span, M's factor, and
-  /// update_rest()'s columns of the switched sections (Zc, gamma diag(dw) Zc^T).
-  Eigen::MatrixXd la_, la_t_, z_span_, cap_chol_, rest_work_, zc_, wz_;
-  mutable Eigen::VectorXd rest_s_, rest_t_;
+  /// A's Cholesky factor L, its transpose, L^-1 and L^-T, Z = L^T T~^T over the span, M's factor,
+  /// and update_rest()'s columns of the switched sections (Zc, gamma diag(dw) Zc^T).
+  Eigen::MatrixXd la_, la_t_, la_inv_, la_inv_t_, z_span_, cap_chol_, rest_work_, zc_, wz_;
+  mutable Eigen::VectorXd rest_s_, rest_t_, rest_kw_;
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
   Eigen::MatrixXd CqT_, CrT_, DQ_, H_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_, Y_, TtR_, RR_;
