@@ -54,6 +54,7 @@ MODALTYRE_BODY void divide(N_Vector x, N_Vector y, N_Vector z) {
 MODALTYRE_BODY void scale(realtype c, N_Vector x, N_Vector z) {
   const double* xp = data(x);
   double* zp = data(z);
+  if (c == 1.0 && xp == zp) return;  // an array onto itself (cvode_klu.cc's solve in place)
   for (Index i = 0, n = length(z); i < n; ++i) zp[i] = c * xp[i];
 }
 

@@ -200,6 +200,112 @@ TEST(CellKernels, LuFactorIsPartialPivotingWithOneFusedMultiplyAddPerEntry) {
   EXPECT_FALSE(lu_factor(2, singular.data(), lu.data(), rows.data()));
 }
 
+TEST(CellKernels, CholeskyFactorIsTheStatedColumnSweepsToTheBit) {
+  std::mt19937 rng(47);
+  // Sizes around the AVX2 path's blocks of 4 and 16 rows.
+  for (int n : {1, 2, 3, 4, 5, 7, 16, 17, 20, 36, 37, 41, 70}) {
+    // A = B B^T + I: symmetric positive definite, entries of mixed magnitude.
+    const std::vector<double> B = random_values(rng, n * n);
+    std::vector<double> a(n * n, 0.0);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        double s = i == j ? 1.0 : 0.0;
+        for (int k = 0; k < n; ++k) s += B[i * n + k] * B[j * n + k];
+        a[j * n + i] = s;
+      }
+    std::vector<double> l(n * n, 0.0), want(n * n, 0.0);
+    ASSERT_TRUE(cholesky_factor(n, a.data(), l.data())) << n;
+    for (int j = 0; j < n; ++j) {
+      for (int i = j; i < n; ++i) {
+        double c = a[j * n + i];
+        for (int p = 0; p < j; ++p) c = std::fma(-want[p * n + i], want[p * n + j], c);
+        want[j * n + i] = c;
+      }
+      const double d = std::sqrt(want[j * n + j]);
+      want[j * n + j] = d;
+      for (int i = j + 1; i < n; ++i) want[j * n + i] /= d;
+    }
+    for (int j = 0; j < n; ++j)
+      for (int i = j; i < n; ++i) ASSERT_EQ(want[j * n + i], l[j * n + i]) << n << " " << i << j;
+    // L L^T = A.
+    double worst = 0, scale = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j <= i; ++j) {
+        double s = 0;
+        for (int p = 0; p <= j; ++p) s += l[p * n + i] * l[p * n + j];
+        worst = std::max(worst, std::abs(s - a[j * n + i]));
+        scale = std::max(scale, std::abs(a[j * n + i]));
+      }
+    EXPECT_LT(worst, 1e-13 * n * scale) << n;
+  }
+  const std::vector<double> indefinite = {1, 2, 2, 1};
+  std::vector<double> l(4);
+  EXPECT_FALSE(cholesky_factor(2, indefinite.data(), l.data()));
+}
+
+TEST(CellKernels, LowerTriangularSolvesAreTheirStatedOperationsToTheBit) {
+  std::mt19937 rng(48);
+  for (int n : {1, 2, 3, 4, 5, 8, 16, 17, 21, 37, 42}) {
+    std::vector<double> l = random_values(rng, n * n);
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < j; ++i) l[j * n + i] = 0;  // lower triangle only
+      l[j * n + j] = 1.0 + std::abs(l[j * n + j]);
+    }
+    const std::vector<double> b = random_values(rng, n);
+    // x <- L^-1 x by columns.
+    std::vector<double> want = b, got = b;
+    for (int p = 0; p < n; ++p) {
+      want[p] /= l[p * n + p];
+      for (int i = p + 1; i < n; ++i) want[i] = std::fma(-l[p * n + i], want[p], want[i]);
+    }
+    lower_solve(n, l.data(), got.data());
+    for (int i = 0; i < n; ++i) ASSERT_EQ(want[i], got[i]) << "L^-1, n " << n << " row " << i;
+    // x <- L^-T x by rows from the last, the dot products in four lanes.
+    want = b, got = b;
+    for (int i = n - 1; i >= 0; --i) {
+      const int m = n - i - 1, m4 = m / 4 * 4;
+      double s[4] = {0, 0, 0, 0};
+      for (int k = 0; k < m4; ++k)
+        s[k % 4] = std::fma(l[i * n + i + 1 + k], want[i + 1 + k], s[k % 4]);
+      double d = (s[0] + s[1]) + (s[2] + s[3]);
+      for (int k = m4; k < m; ++k) d = std::fma(l[i * n + i + 1 + k], want[i + 1 + k], d);
+      want[i] = (want[i] - d) / l[i * n + i];
+    }
+    lower_transpose_solve(n, l.data(), got.data());
+    for (int i = 0; i < n; ++i) ASSERT_EQ(want[i], got[i]) << "L^-T, n " << n << " row " << i;
+    // y = L x.
+    std::vector<double> y(n);
+    square_product(n, l.data(), b.data(), y.data());
+    for (int i = 0; i < n; ++i) {
+      double s = 0;
+      for (int p = 0; p < n; ++p) s = std::fma(-l[p * n + i], -b[p], s);
+      ASSERT_EQ(s, y[i]) << "L x, n " << n << " row " << i;
+    }
+  }
+}
+
+TEST(CellKernels, BandLockstep8IsTheScalarRecurrenceToTheBit) {
+  std::mt19937 rng(50);
+  for (int len : {2, 3, 4, 9, 40}) {
+    std::vector<std::vector<double>> y0, d;
+    for (int l = 0; l < 8; ++l)
+      y0.push_back(random_values(rng, len)), d.push_back(random_values(rng, len));
+    const double s1 = -0.37, s2 = 0.093;
+    auto want = y0, got = y0;
+    double* ye[8];
+    const double* de[8];
+    for (int l = 0; l < 8; ++l) {
+      double* e = want[l].data() + len - 1;
+      for (int t = 2; t < len; ++t)
+        e[-t] = (e[-t] - s1 * e[1 - t] - s2 * e[2 - t]) * d[l][len - 1 - t];
+      ye[l] = got[l].data() + len - 1, de[l] = d[l].data() + len - 1;
+    }
+    band_lockstep8(2, len, ye, de, s1, s2);
+    for (int l = 0; l < 8; ++l)
+      for (int k = 0; k < len; ++k) ASSERT_EQ(want[l][k], got[l][k]) << len << " " << l << " " << k;
+  }
+}
+
 TEST(CellKernels, LuFactorTakesTheFirstOfTiedPivots) {
   // Small integers: columns with several entries of the same largest magnitude (either sign),
   // where the pivot must be the first of them, as the stated search takes it (the AVX2 path

@@ -80,6 +80,18 @@ void pair_dots_scalar(int n, const double* a, const double* b, const double* x, 
   out[1] = tail(n8, n, b, x, d, y, combine(sb));
 }
 
+/// sum_k a[k] b[k], k < n: four partial sums (k mod 4) by fused multiply-adds, added as
+/// (s0 + s1) + (s2 + s3), then the last n % 4 terms in order (lower_transpose_solve()).
+double lane_dot_scalar(int n, const double* a, const double* b) {
+  double s[4] = {0, 0, 0, 0};
+  const int n4 = n / 4 * 4;
+  for (int k = 0; k < n4; k += 4)
+    for (int l = 0; l < 4; ++l) s[l] = std::fma(a[k + l], b[k + l], s[l]);
+  double r = (s[0] + s[1]) + (s[2] + s[3]);
+  for (int k = n4; k < n; ++k) r = std::fma(a[k], b[k], r);
+  return r;
+}
+
 #ifdef MODALTYRE_CELL_KERNELS_AVX2
 __attribute__((target("avx2,fma"))) double combine_avx2(__m256d lo, __m256d hi) {
   alignas(32) double l[4];
@@ -219,6 +231,76 @@ __attribute__((target("avx2,fma"))) bool lu_factor_avx2(int n, const double* a, 
   for (int i = 1; i < n; ++i)
     for (int j = 0; j < i; ++j) lu[i * n + j] = lc[j * n + i];
   return true;
+}
+
+/// cholesky_factor()'s columns: column j from the diagonal down swept by the columns p < j of L
+/// (fnmadd_sweep(): 16 entries in registers across the whole sum), then scaled by its root.
+__attribute__((target("avx2,fma"))) bool cholesky_factor_avx2(int n, const double* a, double* l) {
+  for (int j = 0; j < n; ++j) {
+    double* c = l + j * n + j;
+    std::copy(a + j * n + j, a + (j + 1) * n, c);
+    fnmadd_sweep(n - j, j, l + j, n, l + j, n, c);
+    if (!(c[0] > 0 && std::isfinite(c[0]))) return false;
+    const double d = std::sqrt(c[0]);
+    c[0] = d;
+    for (int i = 1; i < n - j; ++i) c[i] /= d;
+  }
+  return true;
+}
+
+__attribute__((target("avx2,fma"))) double lane_dot_avx2(int n, const double* a, const double* b) {
+  __m256d s = _mm256_setzero_pd();
+  const int n4 = n / 4 * 4;
+  for (int k = 0; k < n4; k += 4)
+    s = _mm256_fmadd_pd(_mm256_loadu_pd(a + k), _mm256_loadu_pd(b + k), s);
+  alignas(32) double l[4];
+  _mm256_store_pd(l, s);
+  double r = (l[0] + l[1]) + (l[2] + l[3]);
+  for (int k = n4; k < n; ++k) r = std::fma(a[k], b[k], r);
+  return r;
+}
+
+/// The entries p_l[o] of four lanes as one vector.
+__attribute__((target("avx2"))) inline __m256d at(const double* const* p, int o) {
+  return _mm256_setr_pd(p[0][o], p[1][o], p[2][o], p[3][o]);
+}
+
+/// Stores the four lanes of v to p_l[o].
+__attribute__((target("avx2"))) inline void put(__m256d v, double* const* p, int o) {
+  const __m128d lo = _mm256_castpd256_pd128(v), hi = _mm256_extractf128_pd(v, 1);
+  _mm_storel_pd(p[0] + o, lo);
+  _mm_storeh_pd(p[1] + o, lo);
+  _mm_storel_pd(p[2] + o, hi);
+  _mm_storeh_pd(p[3] + o, hi);
+}
+
+/// band_lockstep8()'s steps, the lanes as two vectors of four (no fused multiply-add: the
+/// scalar expression's roundings), y_k+1 and y_k+2 carried in registers from step to step.
+__attribute__((target("avx2"))) void band_lockstep8_avx2(int t0, int t1, double* const* y,
+                                                         const double* const* d, double s1,
+                                                         double s2) {
+  const __m256d v1 = _mm256_set1_pd(s1), v2 = _mm256_set1_pd(s2);
+  __m256d a1 = at(y, 1 - t0), a2 = at(y, 2 - t0), b1 = at(y + 4, 1 - t0), b2 = at(y + 4, 2 - t0);
+  for (int t = t0; t < t1; ++t) {
+    const __m256d a = _mm256_mul_pd(
+        _mm256_sub_pd(_mm256_sub_pd(at(y, -t), _mm256_mul_pd(v1, a1)), _mm256_mul_pd(v2, a2)),
+        at(d, -t));
+    const __m256d b = _mm256_mul_pd(
+        _mm256_sub_pd(_mm256_sub_pd(at(y + 4, -t), _mm256_mul_pd(v1, b1)), _mm256_mul_pd(v2, b2)),
+        at(d + 4, -t));
+    put(a, y, -t);
+    put(b, y + 4, -t);
+    a2 = a1, a1 = a, b2 = b1, b1 = b;
+  }
+}
+
+/// lower_solve()'s columns: x_i = fma(-L_ip, x_p, x_i) below each solved x_p.
+__attribute__((target("avx2,fma"))) void lower_solve_avx2(int n, const double* l, double* x) {
+  for (int p = 0; p < n; ++p) {
+    const double v = x[p] / l[p * n + p];
+    x[p] = v;
+    fnmadd_sweep(n - p - 1, 1, l + p * n + p + 1, n, &v, 1, x + p + 1);
+  }
 }
 
 __attribute__((target("avx2"))) int sign_mismatches_avx2(int n, const double* a, const double* b,
@@ -423,6 +505,69 @@ bool lu_factor(int n, const double* a, double* lu, int* rows) {
     }
   }
   return true;
+}
+
+bool cholesky_factor(int n, const double* a, double* l) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2_fma()) return cholesky_factor_avx2(n, a, l);
+#endif
+  for (int j = 0; j < n; ++j) {
+    double* c = l + j * n + j;
+    std::copy(a + j * n + j, a + (j + 1) * n, c);
+    for (int p = 0; p < j; ++p) {
+      const double* x = l + p * n + j;
+      const double y = x[0];
+      for (int i = 0; i < n - j; ++i) c[i] = std::fma(-x[i], y, c[i]);
+    }
+    if (!(c[0] > 0 && std::isfinite(c[0]))) return false;
+    const double d = std::sqrt(c[0]);
+    c[0] = d;
+    for (int i = 1; i < n - j; ++i) c[i] /= d;
+  }
+  return true;
+}
+
+void lower_solve(int n, const double* l, double* x) {
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2_fma()) return lower_solve_avx2(n, l, x);
+#endif
+  for (int p = 0; p < n; ++p) {
+    const double v = x[p] / l[p * n + p];
+    x[p] = v;
+    for (int i = p + 1; i < n; ++i) x[i] = std::fma(-l[p * n + i], v, x[i]);
+  }
+}
+
+void lower_transpose_solve(int n, const double* l, double* x) {
+  double (*dot)(int, const double*, const double*) = lane_dot_scalar;
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2_fma()) dot = lane_dot_avx2;
+#endif
+  for (int i = n - 1; i >= 0; --i)
+    x[i] = (x[i] - dot(n - i - 1, l + i * n + i + 1, x + i + 1)) / l[i * n + i];
+}
+
+void square_product(int n, const double* a, const double* x, double* y) {
+  thread_local std::vector<double> negated;
+  negated.resize(n);
+  for (int p = 0; p < n; ++p) negated[p] = -x[p];
+  for (int i = 0; i < n; ++i) y[i] = 0;
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2_fma()) return fnmadd_sweep(n, n, a, n, negated.data(), 1, y);
+#endif
+  for (int i = 0; i < n; ++i)
+    for (int p = 0; p < n; ++p) y[i] = std::fma(-a[p * n + i], negated[p], y[i]);
+}
+
+void band_lockstep8(int t0, int t1, double* const* y, const double* const* d, double s1,
+                    double s2) {
+  if (t1 <= t0) return;
+#ifdef MODALTYRE_CELL_KERNELS_AVX2
+  if (avx2()) return band_lockstep8_avx2(t0, t1, y, d, s1, s2);
+#endif
+  for (int t = t0; t < t1; ++t)
+    for (int l = 0; l < 8; ++l)
+      y[l][-t] = (y[l][-t] - s1 * y[l][1 - t] - s2 * y[l][2 - t]) * d[l][-t];
 }
 
 void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,

@@ -24,6 +24,13 @@ void pair_dots(int n, const double* a, const double* b, const double* x, const d
 void band_row(int n, bool with_t, double a, const double* t, const double* y1, const double* y2,
               double s1, double s2, double d, double* y, double* r, double w, double gamma);
 
+/// CellNewton::solve_ee()'s lockstep of eight classes' back substitutions along their bands:
+/// for t = t0 .. t1 - 1, for each lane l < 8, y_l[-t] = ((y_l[-t] - s1 y_l[1 - t]) - s2 y_l[2 - t])
+/// d_l[-t] (t0 >= 2 or the entries at 1 - t0 and 2 - t0 readable), exactly these operations (no
+/// fused multiply-add): the AVX2 path runs the lanes as two vectors with y_l[1 - t], y_l[2 - t]
+/// carried in registers, the same bits.
+void band_lockstep8(int t0, int t1, double* const* y, const double* const* d, double s1, double s2);
+
 /// LU with partial pivoting of the column-major n x n matrix a into the row-major lu (unit L
 /// below the diagonal, U on and above it; CellNewton's and ContactNewton's capacitance matrices,
 /// row_lu_factor()): the steps on a's row-major copy are, at step k, the first row i >= k with
@@ -34,6 +41,25 @@ void band_row(int n, bool with_t, double a, const double* t, const double* y1, c
 /// Crout's arrangement (column k of L and row k of U from the final factors, in registers, and a
 /// read through the permutation instead of copied and swapped), the same bits.
 bool lu_factor(int n, const double* a, double* lu, int* rows);
+
+/// The Cholesky factor L (lower, column-major, n x n; entries above the diagonal not written) of
+/// the symmetric positive definite column-major a (its lower triangle read): column j at rows
+/// i >= j is a_ij swept as c = fma(-L_ip, L_jp, c) for p = 0 .. j - 1 in order, then L_jj =
+/// sqrt(c_jj) and L_ij = c_ij / L_jj; the same bits on the AVX2 + FMA path (16 rows of a column
+/// in registers) and the portable one (std::fma). False at a pivot that is not positive and
+/// finite (CellNewton's capacitance matrix at rest, cell_newton_rest.cc).
+bool cholesky_factor(int n, const double* a, double* l);
+/// For cholesky_factor()'s L, the same bits on both paths (serial chains along the rows):
+/// x <- L^-1 x by columns: x_p = x_p / L_pp, then x_i = fma(-L_ip, x_p, x_i) for i > p;
+/// x <- L^-T x by rows from the last: x_i = (x_i - d) / L_ii, d = sum_{p > i} L_pi x_p as four
+/// partial sums (p - i - 1 mod 4) of fused multiply-adds, added (s0 + s1) + (s2 + s3), then the
+/// last terms in order;
+void lower_solve(int n, const double* l, double* x);
+void lower_transpose_solve(int n, const double* l, double* x);
+/// y = A x for the column-major n x n a as y_i = fma(-A_ip, -x_p, y_i) from y_i = 0 over every
+/// p < n in order (zeros of a triangular a included), the same bits on both paths (16 rows in
+/// registers across the sum on AVX2).
+void square_product(int n, const double* a, const double* x, double* y);
 
 /// Appends to `out` every k < n where (a[k] > 0) != (b[k] > 0), in increasing order (the cells
 /// whose side of the contact kink differs between the iterate's forces a and the matrix's

@@ -63,6 +63,9 @@ CellNewton::CellNewton(const CellModel& cm, const CellSystem& system)
   std::stable_sort(lane_order_.begin(), lane_order_.end(), [&](int a, int b) {
     return system.ranges()[a].size() > system.ranges()[b].size();
   });
+  int longest = 0;
+  for (int c : lane_order_) longest = std::max(longest, system.ranges()[c].size());
+  pad_.assign(longest + 2, 0.0);
   eta_.resize(np_);
   eta0_.resize(np_);
   phi_.resize(np_);
@@ -80,7 +83,9 @@ bool CellNewton::setup(double t, const double* y, double gamma, bool jacobian_ok
     dOmega_ = sys_.spin_rate(t);
   }
   factor(gamma);
-  return cap_lu_.allFinite() && (cap_lu_.diagonal().array() != 0).all() && ee_d_inv_.allFinite();
+  const bool cap_ok = rest_ ? cap_chol_.diagonal().allFinite()
+                            : cap_lu_.allFinite() && (cap_lu_.diagonal().array() != 0).all();
+  return cap_ok && ee_d_inv_.allFinite();
 }
 
 void CellNewton::factor(double gamma) {
@@ -195,6 +200,10 @@ void CellNewton::factor(double gamma) {
     factor_dq(gamma);
   }
   slot_coefficients();
+  // At rest with more than one class: the symmetric form's Cholesky factor (cell_newton_rest.cc;
+  // cap_rest() false, M's eigenvalues being >= 1, is not seen: the LU below then).
+  rest_ = semismooth_ && rest_ok_ && at_rest && cap_rest(gamma);
+  if (rest_) return;
   // The capacitance matrix in the 2D solver's order of operations (contact_newton.cc): a flat
   // crown's one class then repeats the 2D transient's arithmetic (FlatCrown test; a
   // rounding-level change here moved its 0.3 s hold's end load by 0.9 %).
@@ -262,9 +271,12 @@ void CellNewton::factor_dq(double gamma) {
     detail::small_gemm(np_, static_cast<int>(TspanT_.cols()), np_, H_.data(), np_, TspanT_.data(),
                        np_, HT_.data(), np_);
   }
+  // At rest (no spin: uncoupled modal blocks, H symmetric) the symmetric form's basis.
+  rest_ok_ = semismooth_ && Omega_ == 0 && dOmega_ == 0 && rest_basis();
 }
 
 void CellNewton::solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  if (rest_) return solve_cap_rest(b, x);
   row_lu_solve(cap_lu_, cap_perm_, b, x);
 }
 
@@ -279,7 +291,7 @@ void CellNewton::solve_d(double* x) const {
   x[M_.z_index()] += d_zw_ * x[M_.z_index() + 1];
 }
 
-void CellNewton::solve_ee(double* y) const {
+void CellNewton::solve_ee(double* y, bool span_only) const {
   if (ee_s1_ == 0 && ee_s2_ == 0) {
     Eigen::Map<Eigen::VectorXd>(y, ne_).array() *= ee_d_inv_.array();
     return;
@@ -299,14 +311,18 @@ void CellNewton::solve_ee(double* y) const {
     const int lanes = static_cast<int>(std::min<std::size_t>(kLanes, lane_order_.size() - g));
     double* yc[kLanes];
     const double* dc[kLanes];
-    int n[kLanes];
+    int n[kLanes], m[kLanes];  // the class's slots, and how many from its end are computed
     int nmin = 1 << 30;
     for (int l = 0; l < lanes; ++l) {
       const int c = lane_order_[g + l];
-      n[l] = sys_.ranges()[c].size();
+      const UnitRange& r = sys_.ranges()[c];
+      n[l] = r.size();
       yc[l] = y + sys_.offset(c);
       dc[l] = dinv + sys_.offset(c);
-      nmin = std::min(nmin, n[l]);
+      // Span only: down to the class's first slot in the sections [s0, s0 + ns) (the slots
+      // below are not computed; the upwind band carries nothing from them upwards).
+      m[l] = span_only ? std::max(0, std::min(r.size(), r.hi + 1 - s0_)) : n[l];
+      nmin = std::min(nmin, m[l]);
     }
 
     // Steps t = 0, 1 from each end (the band's boundary), then t = 2 .. nmin - 1 in lockstep,
@@ -317,19 +333,12 @@ void CellNewton::solve_ee(double* y) const {
     double* ye[kLanes];
     const double* de[kLanes];
     for (int l = 0; l < lanes; ++l) ye[l] = yc[l] + n[l] - 1, de[l] = dc[l] + n[l] - 1;
-    if (lanes == kLanes) {
-      for (int t = head; t < nmin; ++t)
-        for (int l = 0; l < kLanes; ++l)
-          ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
-    } else {
-      // A last group of fewer classes in lockstep too (one class at a time, the 6 classes left
-      // of 30 were the cleat's longest chain).
-      for (int t = head; t < nmin; ++t)
-        for (int l = 0; l < lanes; ++l)
-          ye[l][-t] = (ye[l][-t] - s1 * ye[l][1 - t] - s2 * ye[l][2 - t]) * de[l][-t];
-    }
+    // A last group of fewer classes runs with idle lanes on zeros (pad_: zeros stay zeros).
+    static_assert(kLanes == 8, "band_lockstep8() runs eight lanes");
+    for (int l = lanes; l < kLanes; ++l) ye[l] = pad_.data() + pad_.size() - 1, de[l] = ye[l];
+    detail::band_lockstep8(head, nmin, ye, de, s1, s2);  // cell_kernels.h
     for (int l = 0; l < lanes; ++l)
-      for (int t = nmin; t < n[l]; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
+      for (int t = nmin; t < m[l]; ++t) one(yc[l], dc[l], n[l], n[l] - 1 - t);
   }
 }
 
@@ -354,7 +363,7 @@ void CellNewton::solve(double* x) {
   if (ne_ > 0 && ns_ > 0) {
     if (!at_rest) {
       work_e_ = Eigen::Map<Eigen::VectorXd>(xe, ne_);
-      solve_ee(work_e_.data());
+      solve_ee(work_e_.data(), /*span_only=*/true);  // read by the gather below only
     }
     work_s_.setZero(ns_);
     // Over each class's slots within the sections [s0, s0 + ns) (mu kd = 0 where not active).
@@ -381,16 +390,24 @@ void CellNewton::solve(double* x) {
   solvers::detail::dense_product(np_, np_, H_.data(), np_, phi_, prod_);
   eta_ = eta0_ + prod_;
   solve_cap(eta_, w_);
-  solvers::detail::dense_product(np_, np_, K_.data(), np_, w_, prod_);
-  phi_ += gamma_ * prod_;
+  if (rest_) {
+    phi_ += rest_gamma_kw();  // gamma K w from the capacitance solve (cell_newton_rest.cc)
+  } else {
+    solvers::detail::dense_product(np_, np_, K_.data(), np_, w_, prod_);
+    phi_ += gamma_ * prod_;
+  }
   column_product(DQ_, phi_, xx, true);
   if (ne_ > 0) {
     if (ns_ > 0) {
       // x_E = M_EE^-1 (b_E - M_EX x_X), M_EX = -gamma diag(kd / c') T~ P.
-      solvers::detail::dense_product(np_, np_, H_.data(), np_, phi_, prod_);
-      eta_ = eta0_ + prod_;
+      // P x_X = eta0 + H phi, which is the capacitance solve's w (w = eta0 + H phi1 + gamma H K
+      // w): at rest taken as such, otherwise recomputed (the bits of the 2D solver's order).
+      if (!rest_) {
+        solvers::detail::dense_product(np_, np_, H_.data(), np_, phi_, prod_);
+        eta_ = eta0_ + prod_;
+      }
       work_s_.resize(ns_);
-      column_product(Tt_, eta_, work_s_);  // T~_i P x_X per section
+      column_product(Tt_, rest_ ? w_ : eta_, work_s_);  // T~_i P x_X per section
       for (int c = 0; c < nc; ++c) {
         const UnitRange& r = sys_.ranges()[c];
         const int o = sys_.offset(c), k0 = std::max(0, s0_ - r.lo),

@@ -109,17 +109,24 @@ void CellNewton::update_active_set() {
       dw_[nchg++] = {i, dw};
   }
   dw_.resize(nchg);
-  // T~_i^T of the changed sections from the span's columns (constructor).
   const int span_lo = sys_.sections().lo;
-  Tc_.resize(np_, nchg);
-  W_.resize(nchg, np_);
-  for (int a = 0; a < nchg; ++a) Tc_.col(a) = TspanT_.col(dw_[a].first - span_lo);
-  for (int b = 0; b < np_; ++b)
-    for (int a = 0; a < nchg; ++a) W_(a, b) = dw_[a].second * Tc_(b, a);
-  detail::small_gemm(np_, np_, nchg, Tc_.data(), np_, W_.data(), nchg, K_.data(), np_, true);
-  HTc_.resize(np_, nchg);
-  for (int a = 0; a < nchg; ++a) HTc_.col(a) = -gamma * HT_.col(dw_[a].first - span_lo);
-  detail::small_gemm(np_, np_, nchg, HTc_.data(), np_, W_.data(), nchg, cap_mat_.data(), np_, true);
+  if (rest_) {
+    // M, the symmetric form's matrix, which also gives solve() its K w (cell_newton_rest.cc):
+    // K itself is left at the setup's.
+    update_rest(gamma);
+  } else {
+    // T~_i^T of the changed sections from the span's columns (constructor).
+    Tc_.resize(np_, nchg);
+    W_.resize(nchg, np_);
+    for (int a = 0; a < nchg; ++a) Tc_.col(a) = TspanT_.col(dw_[a].first - span_lo);
+    for (int b = 0; b < np_; ++b)
+      for (int a = 0; a < nchg; ++a) W_(a, b) = dw_[a].second * Tc_(b, a);
+    detail::small_gemm(np_, np_, nchg, Tc_.data(), np_, W_.data(), nchg, K_.data(), np_, true);
+    HTc_.resize(np_, nchg);
+    for (int a = 0; a < nchg; ++a) HTc_.col(a) = -gamma * HT_.col(dw_[a].first - span_lo);
+    detail::small_gemm(np_, np_, nchg, HTc_.data(), np_, W_.data(), nchg, cap_mat_.data(), np_,
+                       true);
+  }
   // The span of sections with an active cell (solve() reads T~ over it) only grows here.
   int lo = ns_ > 0 ? s0_ : M.m, hi = ns_ > 0 ? s0_ + ns_ - 1 : -1;
   for (const auto& [i, dw] : dw_) lo = std::min(lo, i), hi = std::max(hi, i);
@@ -128,7 +135,9 @@ void CellNewton::update_active_set() {
     ns_ = hi - lo + 1;
     Tt_ = TspanT_.middleCols(s0_ - span_lo, ns_).transpose();
   }
-  if (!lu_cap()) factor(gamma);  // the whole factorisation at the current contact set
+  const bool factored =
+      rest_ ? detail::cholesky_factor(np_, cap_mat_.data(), cap_chol_.data()) : lu_cap();
+  if (!factored) factor(gamma);  // the whole factorisation at the current contact set
 }
 
 }  // namespace modaltyre::transient

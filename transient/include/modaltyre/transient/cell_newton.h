@@ -19,6 +19,8 @@ class CellNewton {
   CellNewton(const CellModel& cm, const CellSystem& system);
   bool setup(double t, const double* y, double gamma, bool jacobian_ok);
   void solve(double* x);
+  /// Whether the current factorisation is the symmetric form at rest (cell_newton_rest.cc).
+  bool symmetric_at_rest() const { return rest_; }
 
  private:
   void factor(double gamma);
@@ -41,10 +43,28 @@ class CellNewton {
   /// solve()'s per-slot factors mu_c kd and gamma kd / c' (0 where kd = 0), all or slot k.
   void slot_coefficients();
   void slot_coefficient(int k);
+  /// At rest (no spin, more than one class) H = -A with A symmetric positive definite (the
+  /// modes' and residual orders' blocks uncoupled): with A = L L^T the capacitance matrix is
+  /// similar to the symmetric positive definite M = L^T (I - gamma H K) L^-T = I + gamma L^T K L
+  /// (K = sum_i w_i T~_i^T T~_i, w_i >= 0), factored by Cholesky's n^3 / 6 without pivoting
+  /// instead of the LU's n^3 / 3 (cell_newton_rest.cc). rest_basis(): L and Z = L^T T~^T over
+  /// the span (factor_dq()), false where A is not positive definite; cap_rest(): M and its
+  /// factor; update_rest(): M's change by the switched sections; solve_cap_rest(): x = L M^-1
+  /// L^-1 b.
+  bool rest_basis();
+  bool cap_rest(double gamma);
+  void update_rest(double gamma);
+  void solve_cap_rest(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+  /// gamma K w after solve_cap_rest()'s w = L t, t = M^-1 s, s = L^-1 b: gamma L^T K L t =
+  /// (M - I) t = s - t, so gamma K w = L^-T (s - t), one product with L^-T, and the semismooth
+  /// update need not change K (update_active_set()).
+  const Eigen::VectorXd& rest_gamma_kw() const;
   void solve_d(double* x) const;
   void solve_cap(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
   /// y <- M_EE^-1 y over the tread states (per class, back substitution along its band).
-  void solve_ee(double* y) const;
+  /// span_only: rolling, each class's slots from its end down to the first in the sections
+  /// [s0_, s0_ + ns_) only (the rest of y left as it was).
+  void solve_ee(double* y, bool span_only = false) const;
 
   const CellModel& cm_;
   const TransientModel& M_;
@@ -66,10 +86,11 @@ class CellNewton {
   /// solve_ee(): classes with tread states, longest range first, run kLanes at a time.
   static constexpr int kLanes = 8;
   std::vector<int> lane_order_;
-  int s0_ = 0, ns_ = 0;    ///< sections with an active cell: [s0_, s0_ + ns_)
-  Eigen::MatrixXd Tt_;     ///< T~ rows of those sections (ns x np)
-  Eigen::VectorXd w_sec_;  ///< sum_c mu_c kd_ic per section (ns)
-  Eigen::MatrixXd K_, cap_mat_;
+  mutable std::vector<double> pad_;  ///< solve_ee()'s idle lanes (zeros, as long as a class)
+  int s0_ = 0, ns_ = 0;              ///< sections with an active cell: [s0_, s0_ + ns_)
+  Eigen::MatrixXd Tt_;               ///< T~ rows of those sections (ns x np)
+  Eigen::VectorXd w_sec_;            ///< sum_c mu_c kd_ic per section (ns)
+  Eigen::MatrixXd K_, cap_mat_;      ///< K: at rest (rest_) the setup's, M carries the updates
   bool dq_ready_ = false;
   bool semismooth_ = false;
   Eigen::VectorXd kc_slot_;      ///< per slot: contact spring
@@ -84,6 +105,12 @@ class CellNewton {
   std::vector<int> changed_, rowperm_, kf_, kl_;
   std::vector<std::pair<int, double>> dw_;
   double dq_gamma_ = 0, dq_Omega_ = 0, dq_dOmega_ = 0;
+  bool rest_ok_ = false;  ///< factor_dq() made la_ and z_span_ (rest_basis())
+  bool rest_ = false;     ///< the current capacitance factor is M's Cholesky factor
+  /// A's Cholesky factor L, its transpose, L^-1 and L^-T, Z = L^T T~^T over the span, M's factor,
+  /// and update_rest()'s columns of the switched sections (Zc, gamma diag(dw) Zc^T).
+  Eigen::MatrixXd la_, la_t_, la_inv_, la_inv_t_, z_span_, cap_chol_, rest_work_, zc_, wz_;
+  mutable Eigen::VectorXd rest_s_, rest_t_, rest_kw_;
   Eigen::PartialPivLU<Eigen::MatrixXd> cap_;
   Eigen::MatrixXd CqT_, CrT_, DQ_, H_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cap_lu_, Y_, TtR_, RR_;
