@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
@@ -16,7 +17,7 @@ namespace {
 using modaltyre_test::CliFixture;
 using modaltyre_test::CliRun;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
+using modaltyre_test::kSrc;
 
 class BandText : public CliFixture {};
 

@@ -10,19 +10,19 @@
 #include <tuple>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-const std::string kTable3 =
-    std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kTable3;
 
 class ConditionsCli : public modaltyre_test::CliFixture {
  protected:
   // A coarse mesh with tread relaxation (seed 001 eq. (10)) on: the hold time acts.
   modaltyre_test::CliRun footprint(std::vector<std::string> extra, bool json = true) {
-    std::vector<std::string> args{"footprint", kConfig,
+    std::vector<std::string> args{"footprint", kConfig2d,
                                   "--load",    "4000",
                                   "--set",     "contact.unit_length_mm=2",
                                   "--set",     "effects.tread_relaxation.enabled=true"};
@@ -75,11 +75,11 @@ TEST_F(ConditionsCli, LoadAndHorizontalForceComeFromTheirOptions) {
 }
 
 TEST_F(ConditionsCli, ValidateAppliesAConditionTheFileDoesNotGive) {
-  const auto r = run({"validate", kConfig, kTable3, "--set", "contact.unit_length_mm=2", "--set",
+  const auto r = run({"validate", kConfig2d, kTable3, "--set", "contact.unit_length_mm=2", "--set",
                       "effects.tread_relaxation.enabled=true", "--set", "hold_s=60"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("conditions: hold_s=60"), std::string::npos) << r.out;
-  const auto j = run({"validate", kConfig, kTable3, "--json", "--set", "contact.unit_length_mm=2",
+  const auto j = run({"validate", kConfig2d, kTable3, "--json", "--set", "contact.unit_length_mm=2",
                       "--set", "effects.tread_relaxation.enabled=true", "--set", "hold_s=60"});
   ASSERT_EQ(j.exit_code, 0) << j.err;
   const auto doc = nlohmann::json::parse(j.out);
@@ -90,20 +90,20 @@ TEST_F(ConditionsCli, ValidateAppliesAConditionTheFileDoesNotGive) {
 TEST_F(ConditionsCli, ValidateRefusesAConditionTheFileGivesAsAColumn) {
   const auto csv = (dir_ / "held.csv").string();
   std::ofstream(csv) << "load_N,hold_s,sinking_mm\n2131,0,8\n3261,0,12\n";
-  const auto r = run({"validate", kConfig, csv, "--set", "hold_s=60"});
+  const auto r = run({"validate", kConfig2d, csv, "--set", "hold_s=60"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("hold_s column"), std::string::npos) << r.err;
 }
 
 TEST_F(ConditionsCli, TransientRefusesAConditionItsScenarioHasNot) {
-  const auto r = run({"transient", kConfig, "--scenario", "rolling", "--set", "hold_s=60"});
+  const auto r = run({"transient", kConfig2d, "--scenario", "rolling", "--set", "hold_s=60"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("scenario rolling takes load_N, speed_kmh"), std::string::npos) << r.err;
-  const auto s = run({"transient", kConfig, "--scenario", "load-hold", "--set", "surface=soil"});
+  const auto s = run({"transient", kConfig2d, "--scenario", "load-hold", "--set", "surface=soil"});
   EXPECT_EQ(s.exit_code, 2);
   EXPECT_NE(s.err.find("surface"), std::string::npos) << s.err;
   // load-hold's hold_s is its scenario key, checked by the config reader (at most 1e6 s there).
-  const auto h = run({"transient", kConfig, "--scenario", "load-hold", "--set", "hold_s=5e6"});
+  const auto h = run({"transient", kConfig2d, "--scenario", "load-hold", "--set", "hold_s=5e6"});
   EXPECT_EQ(h.exit_code, 2);
   EXPECT_NE(h.err.find("transient.load_hold.hold_s"), std::string::npos) << h.err;
 }
@@ -138,21 +138,21 @@ TEST_P(RepeatedSetCli, KeyTwiceIsRefusedNamingBothValues) {
 
 INSTANTIATE_TEST_SUITE_P(
     Commands, RepeatedSetCli,
-    ::testing::Values(Repeated{"Footprint", {"footprint", kConfig}},
-                      Repeated{"Validate", {"validate", kConfig, kTable3}},
-                      Repeated{"Transient", {"transient", kConfig, "--scenario", "load-hold"}},
+    ::testing::Values(Repeated{"Footprint", {"footprint", kConfig2d}},
+                      Repeated{"Validate", {"validate", kConfig2d, kTable3}},
+                      Repeated{"Transient", {"transient", kConfig2d, "--scenario", "load-hold"}},
                       Repeated{"Sweep", {"sweep", "no_such_sweep.yaml"}},
-                      Repeated{"TirExport", {"tir", "export", kConfig, "--output", "x.tir"}},
+                      Repeated{"TirExport", {"tir", "export", kConfig2d, "--output", "x.tir"}},
                       Repeated{"TirCompare",
-                               {"tir", "compare", kConfig,
+                               {"tir", "compare", kConfig2d,
                                 std::string(MODALTYRE_SOURCE_DIR) +
                                     "/tests/data/tir/chrono_generic_mf61.tir"}},
-                      Repeated{"Discover", {"discover", kConfig, kTable3}}),
+                      Repeated{"Discover", {"discover", kConfig2d, kTable3}}),
     [](const ::testing::TestParamInfo<Repeated>& info) { return info.param.name; });
 
 // transient maps hold_s onto its scenario's key: both given is the same key twice.
 TEST_F(ConditionsCli, TransientConditionAndItsScenarioKeyTogetherAreRefused) {
-  const auto r = run({"transient", kConfig, "--scenario", "load-hold", "--set", "hold_s=60",
+  const auto r = run({"transient", kConfig2d, "--scenario", "load-hold", "--set", "hold_s=60",
                       "--set", "transient.load_hold.hold_s=10"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("transient.load_hold.hold_s: given twice ('10' and '60')"),

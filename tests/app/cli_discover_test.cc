@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
@@ -24,9 +25,9 @@ namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 using modaltyre_test::slurp;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-const std::string kTable3 =
-    std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kLeteSandYaml;
+using modaltyre_test::kTable3;
 
 class DiscoverCli : public modaltyre_test::CliFixture {
  protected:
@@ -52,7 +53,7 @@ class DiscoverCli : public modaltyre_test::CliFixture {
 
   /// discover on `measured` with the fast settings, then `extra`.
   CliRun discover(const std::string& measured, const std::vector<std::string>& extra = {}) {
-    std::vector<std::string> args{"discover", kConfig,         measured, "--unit-length-mm",
+    std::vector<std::string> args{"discover", kConfig2d,       measured, "--unit-length-mm",
                                   "4",        "--max-effects", "1",      "--threads",
                                   "2"};
     args.insert(args.end(), extra.begin(), extra.end());
@@ -113,12 +114,13 @@ TEST_F(DiscoverCli, FewerThanFourRowsExitsTwo) {
 TEST_F(DiscoverCli, TooManyUnitsExitsTwoAndWritesNothing) {
   const std::string p = write(table3(5));
   const std::string cfg = (dir_ / "out.yaml").string();
-  const CliRun r = run({"discover", kConfig, p, "--unit-length-mm", "0.001", "--out-config", cfg});
+  const CliRun r =
+      run({"discover", kConfig2d, p, "--unit-length-mm", "0.001", "--out-config", cfg});
   expect_input_error(r, {"--unit-length-mm", "at most 20000"});
   expect_nothing_written();
   // Outside the option's range at all, and not a number: usage errors.
   for (const char* bad : {"-1", "51", "nan", "four"}) {
-    const CliRun u = run({"discover", kConfig, p, "--unit-length-mm", bad});
+    const CliRun u = run({"discover", kConfig2d, p, "--unit-length-mm", bad});
     EXPECT_EQ(u.exit_code, 2) << bad << ": " << u.err;
     EXPECT_NE(u.err.find("--unit-length-mm"), std::string::npos) << bad << ": " << u.err;
     EXPECT_TRUE(u.out.empty()) << bad;
@@ -261,7 +263,6 @@ TEST_F(DiscoverCli, JsonOnASmallDataSetAndTheAugmentedConfigRuns) {
 
 // ---- traction rows (docs/discover.md, "Traction rows") --------------------------------------
 
-const std::string kLete = std::string(MODALTYRE_SOURCE_DIR) + "/configs/soils/lete_sand.yaml";
 // One load's curve on LETE sand as `traction` gives it on the 2D variant (no flexing loss).
 const std::string kCurve =
     "load_N,slip,drawbar_pull_N,soil_sinkage_mm,torque_Nm,speed_kmh\n"
@@ -272,12 +273,13 @@ TEST_F(DiscoverCli, HostileTractionRowsExit2NamingFileLineAndColumn) {
   const std::string ground = "--ground";
   // Traction columns mixed wrongly: a footprint observable in a row with a slip.
   std::string p = write("load_N,sinking_mm,slip,drawbar_pull_N\n3000,,0.1,600\n3000,15,0.2,900\n");
-  expect_input_error(discover(p, {ground, kLete}), {p + ":3: sinking_mm: ", "traction row"});
+  expect_input_error(discover(p, {ground, kLeteSandYaml}),
+                     {p + ":3: sinking_mm: ", "traction row"});
   // Slip in per cent, NaN in a pull.
   p = write("load_N,slip,drawbar_pull_N\n3000,0.1,600\n3000,20,900\n");
-  expect_input_error(discover(p, {ground, kLete}), {p + ":3: slip: ", "[-1, 1]"});
+  expect_input_error(discover(p, {ground, kLeteSandYaml}), {p + ":3: slip: ", "[-1, 1]"});
   p = write("load_N,slip,drawbar_pull_N\n3000,0.1,600\n3000,0.2,nan\n");
-  expect_input_error(discover(p, {ground, kLete}),
+  expect_input_error(discover(p, {ground, kLeteSandYaml}),
                      {p + ":3: drawbar_pull_N: ", "not a finite number"});
   // Traction rows with no soil to roll on (the 2D config has none) name the key.
   p = write(kCurve);
@@ -288,7 +290,7 @@ TEST_F(DiscoverCli, HostileTractionRowsExit2NamingFileLineAndColumn) {
 TEST_F(DiscoverCli, TractionCurvePlotsPullAndSinkageAgainstSlip) {
   const std::string p = write(kCurve);
   const std::string png = (dir_ / "curve.png").string();
-  const CliRun r = discover(p, {"--ground", kLete, "--plot", png, "--json"});
+  const CliRun r = discover(p, {"--ground", kLeteSandYaml, "--plot", png, "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_GT(j["traction_cases"].get<long>(), 0);

@@ -9,19 +9,20 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
 using modaltyre_test::CliFixture;
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
+using modaltyre_test::kSrc;
 
 class DiscoverUncertainty : public CliFixture {};
 
 // The bundled hammer CSV with the shapes of some modes scaled (amplitude^2 by factor).
 std::string scaled_hammer(const std::map<int, double>& factor) {
-  std::istringstream in(modaltyre_test::slurp(kSource + "/configs/data/sf350_hammer_12pt.csv"));
+  std::istringstream in(modaltyre_test::slurp(kSrc + "/configs/data/sf350_hammer_12pt.csv"));
   std::ostringstream out;
   out.precision(12);
   std::string line;
@@ -48,14 +49,14 @@ TEST_F(DiscoverUncertainty, AGapWithinTheModelsUncertaintyIsNotNamed) {
   const auto hammer = dir_ / "hammer_moved.csv";
   std::ofstream(hammer) << scaled_hammer({{4, 1.08}, {6, 1.05}, {8, 0.94}});
   const auto spec = dir_ / "moved.yaml";
-  std::ofstream(spec) << "base: " << kSource << "/configs/sf350_2d_table3.yaml\n"
+  std::ofstream(spec) << "base: " << kSrc << "/configs/sf350_2d_table3.yaml\n"
                       << "set:\n  modal.hammer_csv: " << hammer.string() << "\n"
                       << "grid:\n  load_N: [1500, 2500, 3500, 4500, 5500, 6500, 7500, 8500, "
                          "9500]\noutput: moved.csv\n";
   const auto data = dir_ / "moved.csv";
   const auto sweep = run({"sweep", spec.string(), "--output", data.string()});
   ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
-  const std::string config = kSource + "/configs/sf350_2d_table3.yaml";
+  const std::string config = kSrc + "/configs/sf350_2d_table3.yaml";
   const auto plain = run({"discover", config, data.string(), "--json"});
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   const auto p = nlohmann::json::parse(plain.out);

@@ -6,11 +6,13 @@
 #include <set>
 #include <string>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kConfig3d;
 
 class EffectsCli : public modaltyre_test::CliFixture {
  protected:
@@ -23,7 +25,7 @@ class EffectsCli : public modaltyre_test::CliFixture {
   // A coarse mesh: only the config reader is under test here, not the solve.
   modaltyre_test::CliRun footprint_with(const std::vector<std::string>& sets) {
     std::vector<std::string> args{
-        "footprint", kConfig, "--load", "4000", "--json", "--set", "contact.unit_length_mm=2"};
+        "footprint", kConfig2d, "--load", "4000", "--json", "--set", "contact.unit_length_mm=2"};
     for (const auto& s : sets) {
       args.push_back("--set");
       args.push_back(s);
@@ -134,12 +136,12 @@ bool soil_option(const nlohmann::json& e) {
 TEST_F(EffectsCli, EverySoilSwitchIsAcceptedByTractionOnItsSoilAtItsDefaults) {
   const nlohmann::json all = catalogue();
   const std::string soils = std::string(MODALTYRE_SOURCE_DIR) + "/configs/soils/";
-  std::vector<std::string> bekker{"traction", kConfig, "--ground",       soils + "lete_sand.yaml",
-                                  "--load",   "3000",  "--slip",         "0.2",
-                                  "--json",   "--set", "tyre.rigid=true"};
+  std::vector<std::string> bekker{"traction", kConfig2d, "--ground",       soils + "lete_sand.yaml",
+                                  "--load",   "3000",    "--slip",         "0.2",
+                                  "--json",   "--set",   "tyre.rigid=true"};
   // Without --ground the `ground.*` sets go to the tyre config: a Kelvin-Voigt soil there.
-  std::vector<std::string> kv{"traction", kConfig,  "--load",       "3000", "--slip",
-                              "0.2",      "--json", "--speed-km-h", "5"};
+  std::vector<std::string> kv{"traction", kConfig2d, "--load",       "3000", "--slip",
+                              "0.2",      "--json",  "--speed-km-h", "5"};
   for (const char* k :
        {"tyre.rigid=true", "ground.model=kelvin_voigt", "ground.kelvin_voigt.E2_MPa=2",
         "ground.kelvin_voigt.layer_mm=200", "ground.kelvin_voigt.cohesion_kPa=1",
@@ -207,8 +209,6 @@ TEST_F(EffectsCli, OutOfRangeValueExitsTwoNamingTheKey) {
 
 namespace {
 
-const std::string k3dConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
-
 class EffectsWith3dPatchCli : public modaltyre_test::CliFixture {};
 
 // Each effect states what it acts on and whether the 3D patch takes it; the refused ones are
@@ -230,7 +230,7 @@ TEST_F(EffectsWith3dPatchCli, CatalogueStatesWhichEffectsComposeAndRefusedOnesEx
   // superseded by its crown.
   EXPECT_EQ(refused, (std::set<std::string>{"contact_width"}));
   for (const auto& name : refused) {
-    const auto f = run({"footprint", k3dConfig, "--load", "4000", "--set",
+    const auto f = run({"footprint", kConfig3d, "--load", "4000", "--set",
                         "contact.unit_length_mm=2", "--set", "effects." + name + ".enabled=true"});
     EXPECT_EQ(f.exit_code, 2) << name;
     EXPECT_NE(f.err.find("effects." + name + ".enabled"), std::string::npos) << f.err;

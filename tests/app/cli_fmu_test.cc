@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
@@ -12,7 +13,7 @@ namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 using modaltyre_test::slurp;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
+using modaltyre_test::kSrc;
 
 class CliFmu : public modaltyre_test::CliFixture {
  protected:

@@ -8,19 +8,19 @@
 #include <sstream>
 #include <string>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
-const std::string k3d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kTable3;
 const std::string k2d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_fig5.yaml";
-const std::string kTable3 =
-    std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
 
 class Footprint3dCli : public modaltyre_test::CliFixture {};
 
 TEST_F(Footprint3dCli, TextTablePrintsTheWidthGrowingWithLoadInsideTheTread) {
-  const auto r = run({"footprint", k3d, "--load", "2131", "--load", "8321"});
+  const auto r = run({"footprint", kConfig3d, "--load", "2131", "--load", "8321"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::istringstream in(r.out);
   std::string line;
@@ -43,7 +43,7 @@ TEST_F(Footprint3dCli, TextTablePrintsTheWidthGrowingWithLoadInsideTheTread) {
 
 // The map is the cell pressures: integrated over the cells it carries the load, symmetric in y.
 TEST_F(Footprint3dCli, JsonCarriesWidthAndAMapThatCarriesTheLoad) {
-  const auto r = run({"footprint", k3d, "--load", "3261", "--load", "7322", "--json"});
+  const auto r = run({"footprint", kConfig3d, "--load", "3261", "--load", "7322", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["model"]["patch"], "3d");
@@ -80,7 +80,7 @@ TEST_F(Footprint3dCli, JsonCarriesWidthAndAMapThatCarriesTheLoad) {
 
 TEST_F(Footprint3dCli, MapCsvHasOneLinePerCellOfEachCaseAndMatchesTheJson) {
   const auto csv = (dir_ / "map.csv").string();
-  const auto r = run({"footprint", k3d, "--load", "5478", "--json", "--map-csv", csv});
+  const auto r = run({"footprint", kConfig3d, "--load", "5478", "--json", "--map-csv", csv});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   const auto& m = j["cases"][0]["map"];
@@ -106,7 +106,7 @@ TEST_F(Footprint3dCli, MapCsvHasOneLinePerCellOfEachCaseAndMatchesTheJson) {
 // in that cell under the +-1 sigma perturbations); cells out of contact have none.
 TEST_F(Footprint3dCli, MapCsvCarriesTheBandAsTwoMaps) {
   const auto csv = (dir_ / "map_band.csv").string();
-  const auto r = run({"footprint", k3d, "--load", "5478", "--json", "--map-csv", csv,
+  const auto r = run({"footprint", kConfig3d, "--load", "5478", "--json", "--map-csv", csv,
                       "--uncertainty", "--uncertainty-method", "linear"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -138,18 +138,19 @@ TEST_F(Footprint3dCli, MapCsvIsRefusedWithExitTwoOnA2dConfigOrABadPath) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("footprint_3d"), std::string::npos) << r.err;
   EXPECT_FALSE(modaltyre_test::fs::exists(dir_ / "m.csv"));
-  r = run({"footprint", k3d, "--load", "5000", "--map-csv", (dir_ / "no" / "m.csv").string()});
+  r = run(
+      {"footprint", kConfig3d, "--load", "5000", "--map-csv", (dir_ / "no" / "m.csv").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--map-csv"), std::string::npos) << r.err;
   EXPECT_TRUE(r.out.empty());
-  r = run({"footprint", k3d, "--load", "5000", "--map-csv", dir_.string()});
+  r = run({"footprint", kConfig3d, "--load", "5000", "--map-csv", dir_.string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("directory"), std::string::npos) << r.err;
 }
 
 TEST_F(Footprint3dCli, PlotDrawsTheFootprintImageWithContourAndCentreLine) {
   const auto svg = (dir_ / "fp.svg").string();
-  const auto r = run({"footprint", k3d, "--load", "2131", "--load", "8321", "--plot", svg});
+  const auto r = run({"footprint", kConfig3d, "--load", "2131", "--load", "8321", "--plot", svg});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string text = modaltyre_test::slurp(svg);
   EXPECT_NE(text.find("</svg>"), std::string::npos);
@@ -160,7 +161,7 @@ TEST_F(Footprint3dCli, PlotDrawsTheFootprintImageWithContourAndCentreLine) {
 }
 
 TEST_F(Footprint3dCli, HorizontalForceIsRefusedWithExitTwo) {
-  const auto r = run({"footprint", k3d, "--load", "5000", "--fx", "500"});
+  const auto r = run({"footprint", kConfig3d, "--load", "5000", "--fx", "500"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--fx"), std::string::npos) << r.err;
 }
@@ -168,7 +169,7 @@ TEST_F(Footprint3dCli, HorizontalForceIsRefusedWithExitTwo) {
 // The config's declared calibration (compliance scale and crown radius on sinking and width of
 // rows 1 and 6) reproduces its stated values; the width of rows 2-5 is a prediction.
 TEST_F(Footprint3dCli, ValidateComparesAndCalibratesOnMeasuredWidth) {
-  const auto r = run({"validate", k3d, kTable3, "--json", "--set", "modal.compliance_scale=1",
+  const auto r = run({"validate", kConfig3d, kTable3, "--json", "--set", "modal.compliance_scale=1",
                       "--set", "footprint_3d.crown.radius_mm=800"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -187,7 +188,7 @@ TEST_F(Footprint3dCli, ValidateComparesAndCalibratesOnMeasuredWidth) {
 }
 
 TEST_F(Footprint3dCli, ValidateRefusesAFourthCalibratedKey) {
-  const auto r = run({"validate", k3d, kTable3, "--set",
+  const auto r = run({"validate", kConfig3d, kTable3, "--set",
                       "validation.calibrate=[modal.compliance_scale, footprint_3d.crown.radius_mm, "
                       "tread.modulus_MPa, tread.thickness_mm]"});
   EXPECT_EQ(r.exit_code, 2);
@@ -200,8 +201,8 @@ TEST_F(Footprint3dCli, ValidateRefusesAFourthCalibratedKey) {
 // patch takes, not the mesh (the 1 mm default tries every candidate for ~60 s of CPU, too long
 // under the sanitizers).
 TEST_F(Footprint3dCli, DiscoverOnTable3RefitsTheCrownAndOffersNoRefusedEffect) {
-  const auto r = run({"discover", k3d, kTable3, "--json", "--max-effects", "1", "--unit-length-mm",
-                      "4", "--set", "footprint_3d.lateral_cell_mm=10"});
+  const auto r = run({"discover", kConfig3d, kTable3, "--json", "--max-effects", "1",
+                      "--unit-length-mm", "4", "--set", "footprint_3d.lateral_cell_mm=10"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["baseline_parameters"].contains("footprint_3d.crown.radius_mm"));
@@ -221,7 +222,7 @@ TEST_F(Footprint3dCli, DiscoverOnTable3RefitsTheCrownAndOffersNoRefusedEffect) {
 TEST_F(Footprint3dCli, TransientRunsThe3dPatchWithWidthAndMaps) {
   const auto map = (dir_ / "tmap.csv").string();
   const auto r =
-      run({"transient", k3d, "--scenario", "free-vibration", "--json", "--set",
+      run({"transient", kConfig3d, "--scenario", "free-vibration", "--json", "--set",
            "contact.unit_length_mm=2", "--set", "footprint_3d.lateral_cell_mm=7.5", "--set",
            "transient.free_vibration.duration_s=0.06", "--map-times", "0,0.05", "--map-csv", map});
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -7,18 +7,18 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-const std::string kTable3 =
-    std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kTable3;
 
 class FootprintCli : public modaltyre_test::CliFixture {};
 
 TEST_F(FootprintCli, JsonHasTheDocumentedShapeAndUnitForcesBalanceTheLoad) {
-  const auto r = run({"footprint", kConfig, "--load", "2131", "--load", "8321", "--json"});
+  const auto r = run({"footprint", kConfig2d, "--load", "2131", "--load", "8321", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["cases"].size(), 2u);
@@ -40,23 +40,24 @@ TEST_F(FootprintCli, JsonHasTheDocumentedShapeAndUnitForcesBalanceTheLoad) {
 }
 
 TEST_F(FootprintCli, NonConvergenceExitsOneNamingTheLoadCase) {
-  const auto r = run({"footprint", kConfig, "--load", "5478", "--set", "solver.max_iterations=1"});
+  const auto r =
+      run({"footprint", kConfig2d, "--load", "5478", "--set", "solver.max_iterations=1"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("5478"), std::string::npos) << r.err;
   EXPECT_TRUE(r.out.empty()) << "no unconverged numbers may be printed";
 }
 
 TEST_F(FootprintCli, ImpossibleLoadsExitTwo) {
-  auto r = run({"footprint", kConfig, "--load", "0"});
+  auto r = run({"footprint", kConfig2d, "--load", "0"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--load"), std::string::npos) << r.err;
-  r = run({"footprint", kConfig, "--load", "5000", "--fx", "1e7"});
+  r = run({"footprint", kConfig2d, "--load", "5000", "--fx", "1e7"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--fx"), std::string::npos) << r.err;
 }
 
 TEST_F(FootprintCli, ValidateJsonNamesCalibrationAndPredictedRows) {
-  const auto r = run({"validate", kConfig, kTable3, "--json"});
+  const auto r = run({"validate", kConfig2d, kTable3, "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["rows"].size(), 6u);
@@ -71,14 +72,14 @@ TEST_F(FootprintCli, ValidateJsonNamesCalibrationAndPredictedRows) {
 // Issue 16: `--set validation.calibrate=[]` calibrates nothing, so no row is a calibration row
 // and every row counts (the config's calibration_rows name rows only for calibrated keys).
 TEST_F(FootprintCli, ValidateWithoutCalibrationCountsEveryRow) {
-  auto r = run({"validate", kConfig, kTable3, "--json", "--set", "validation.calibrate=[]"});
+  auto r = run({"validate", kConfig2d, kTable3, "--json", "--set", "validation.calibrate=[]"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["rows"].size(), 6u);
   for (const auto& row : j["rows"]) EXPECT_FALSE(row["calibration"].get<bool>()) << row;
   EXPECT_EQ(j["predicted_rows"]["sinking_mm"], 6);
   EXPECT_TRUE(j["calibration"]["rows"].empty());
-  r = run({"validate", kConfig, kTable3, "--set", "validation.calibrate=[]"});
+  r = run({"validate", kConfig2d, kTable3, "--set", "validation.calibrate=[]"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("No calibration: every row is a prediction."), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("calibration "), std::string::npos) << r.out;
@@ -89,7 +90,7 @@ TEST_F(FootprintCli, ValidateWithoutCalibrationCountsEveryRow) {
 // Issue 16 item 6: a footprint outside the model's validity range is computed but flagged: a
 // warning on stderr and "valid": false with the reason in JSON, in footprint and validate.
 TEST_F(FootprintCli, OutsideTheValidityRangeIsFlaggedNotAnOrdinaryResult) {
-  auto r = run({"footprint", kConfig, "--load", "5478", "--load", "30000", "--json", "--set",
+  auto r = run({"footprint", kConfig2d, "--load", "5478", "--load", "30000", "--json", "--set",
                 "contact.unit_length_mm=2"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
@@ -106,13 +107,13 @@ TEST_F(FootprintCli, OutsideTheValidityRangeIsFlaggedNotAnOrdinaryResult) {
             std::string::npos)
       << r.err;
   // The table too warns on stderr.
-  r = run({"footprint", kConfig, "--load", "30000", "--set", "contact.unit_length_mm=2"});
+  r = run({"footprint", kConfig2d, "--load", "30000", "--set", "contact.unit_length_mm=2"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("not a prediction"), std::string::npos) << r.err;
 
   const std::string rows = (dir_ / "rows.csv").string();
   std::ofstream(rows) << "load_N,sinking_mm\n3000,12\n30000,80\n";
-  r = run({"validate", kConfig, rows, "--json", "--set", "contact.unit_length_mm=2", "--set",
+  r = run({"validate", kConfig2d, rows, "--json", "--set", "contact.unit_length_mm=2", "--set",
            "validation.calibrate=[]", "--set", "validation.calibration_rows=[]"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   j = nlohmann::json::parse(r.out);
@@ -122,7 +123,7 @@ TEST_F(FootprintCli, OutsideTheValidityRangeIsFlaggedNotAnOrdinaryResult) {
   EXPECT_NE(r.err.find("warning: row 2 (load 30000 N) is outside the model's validity range"),
             std::string::npos)
       << r.err;
-  r = run({"validate", kConfig, rows, "--set", "contact.unit_length_mm=2", "--set",
+  r = run({"validate", kConfig2d, rows, "--set", "contact.unit_length_mm=2", "--set",
            "validation.calibrate=[]", "--set", "validation.calibration_rows=[]"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("outside the validity range"), std::string::npos) << r.out;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "../support/hammer_lines.h"
 #include "cli_runner.h"
 
@@ -16,7 +17,7 @@ namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 using modaltyre_test::slurp;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
+using modaltyre_test::kSrc;
 
 class CliCareless : public modaltyre_test::CliFixture {
  protected:

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "../support/hammer_lines.h"
 #include "cli_runner.h"
 
@@ -22,8 +23,8 @@ namespace {
 namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSrc + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kSrc;
 
 class CliHostile : public modaltyre_test::CliFixture {
  protected:
@@ -59,14 +60,14 @@ TEST_F(CliHostile, ValidateNonUtf8File) {
                               "load_N,sinking_mm,length_mm\n"
                               "2131,8,86\n"
                               "3261,12\xB0,112\n");
-  expect_input_error(run_limited({"validate", kConfig, p}),
+  expect_input_error(run_limited({"validate", kConfig2d, p}),
                      {p + ":3: sinking_mm: ", "'12\\xB0' is not a finite number", "not UTF-8"});
 }
 
 TEST_F(CliHostile, ValidateNamedPipeDoesNotHang) {
   const std::string fifo = (dir_ / "measured.csv").string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  expect_input_error(run_limited({"validate", kConfig, fifo}), {fifo, "not a regular file"});
+  expect_input_error(run_limited({"validate", kConfig2d, fifo}), {fifo, "not a regular file"});
 }
 
 TEST_F(CliHostile, FitModesHeaderOnly) {
@@ -92,14 +93,14 @@ TEST_F(CliHostile, ValidateReadsASweepStyleQuotedCsv) {
     s += line + (header ? ",status,message\n" : ",ok,\"converged, \"\"measured\"\"\"\n");
   }
   const std::string p = write("sweep_style.csv", s);
-  const CliRun r = run_limited({"validate", kConfig, p});
+  const CliRun r = run_limited({"validate", kConfig2d, p});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("8321"), std::string::npos) << r.out;
 }
 
 // Issue 16 item 2: a key twice (here tread.modulus_MPa) used to keep the first value, exit 0.
 TEST_F(CliHostile, FootprintConfigWithAKeyTwice) {
-  std::string text = modaltyre_test::slurp(kConfig);
+  std::string text = modaltyre_test::slurp(kConfig2d);
   const std::string line = "  modulus_MPa: 0.99096\n";
   const auto at = text.find(line);
   ASSERT_NE(at, std::string::npos);
@@ -122,7 +123,7 @@ TEST_F(CliHostile, AliasBombsAreRefused) {
   const std::string p = write("bomb.yaml", bomb);
   expect_input_error(run_limited({"footprint", p}), {p + ":2: a1: ", "aliases"});
   expect_input_error(run_limited({"sweep", p}), {p + ":2: a1: ", "aliases"});
-  expect_input_error(run_limited({"footprint", kConfig, "--set", "modal.x=[&a [1], *a]"}),
+  expect_input_error(run_limited({"footprint", kConfig2d, "--set", "modal.x=[&a [1], *a]"}),
                      {"--set: modal.x: ", "aliases"});
 }
 
@@ -131,13 +132,11 @@ TEST_F(CliHostile, SweepSpecThatIsADevice) {
   expect_input_error(run_limited({"sweep", "/dev/zero"}), {"/dev/zero: ", "not a regular file"});
 }
 
-}  // namespace
-
 // Issue 16 item 2: "tread.modulus_MPa: 5" at the top of a config used to pass as the nested key
 // that was read (its value ignored, exit 0); a key set twice in a sweep's set: through a
 // dotted and a nested spelling kept one of them.
 TEST_F(CliHostile, DottedKeyInAConfigAndTwiceInASweepSet) {
-  const std::string text = modaltyre_test::slurp(kConfig);
+  const std::string text = modaltyre_test::slurp(kConfig2d);
   const int lines = static_cast<int>(std::count(text.begin(), text.end(), '\n'));
   std::string cfg = text;
   const std::string hammer = "hammer_csv: data/";
@@ -146,7 +145,7 @@ TEST_F(CliHostile, DottedKeyInAConfigAndTwiceInASweepSet) {
   expect_input_error(run_limited({"footprint", p}),
                      {p + ":" + std::to_string(lines + 1) + ": tread.modulus_MPa: ",
                       "a key with '.' is not read in a config file"});
-  const std::string s = write("sweep.yaml", "base: " + kConfig +
+  const std::string s = write("sweep.yaml", "base: " + kConfig2d +
                                                 "\nset:\n  tread.modulus_MPa: 3\n"
                                                 "  tread: {modulus_MPa: 4}\n"
                                                 "grid:\n  load_N: [3000]\noutput: x.csv\n");
@@ -158,7 +157,7 @@ TEST_F(CliHostile, DottedKeyInAConfigAndTwiceInASweepSet) {
 // so is the help text (the audit found --help and --version exiting 0 there).
 TEST_F(CliHostile, StdoutOnAFullDiskIsAnError) {
   const std::vector<std::string> commands = {
-      " footprint " + modaltyre_test::quote(kConfig) + " --load 3000", " --help",
+      " footprint " + modaltyre_test::quote(kConfig2d) + " --load 3000", " --help",
       " footprint --help", " --version"};
   for (const std::string& args : commands) {
     const std::string cmd = modaltyre_test::quote(MODALTYRE_CLI) + args + " >/dev/full 2>" +
@@ -176,20 +175,20 @@ TEST_F(CliHostile, StdoutOnAFullDiskIsAnError) {
 // Issue 16 item 3: step counts and sizes from options are bounded with a message naming the
 // option and the bound (each ran for minutes or until out of memory).
 TEST_F(CliHostile, TransientOutputStepAndSampleCountAreBounded) {
-  expect_input_error(run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+  expect_input_error(run_limited({"transient", kConfig2d, "--scenario", "load-hold", "--set",
                                   "transient.output_step_ms=1e-308"}),
                      {"--set: transient.output_step_ms: ", "out of range [0.001, "});
   // 1 us over the 121 s hold: 1.21e8 samples.
   expect_input_error(
-      run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+      run_limited({"transient", kConfig2d, "--scenario", "load-hold", "--set",
                    "transient.output_step_ms=0.001"}),
       {"transient.output_step_ms: ", "1.21e+08 samples; at most 1e+06", "at least 0.121 ms"});
   expect_input_error(
-      run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+      run_limited({"transient", kConfig2d, "--scenario", "load-hold", "--set",
                    "transient.load_hold.hold_s=1e6", "--set", "transient.output_step_ms=2"}),
       {"transient.output_step_ms: ", "5e+08 samples; at most 1e+06"});
   // The chosen grid (output_step_ms: auto) coarsens to at most 1e6 samples and says so.
-  const auto r = run_limited({"transient", kConfig, "--scenario", "load-hold", "--set",
+  const auto r = run_limited({"transient", kConfig2d, "--scenario", "load-hold", "--set",
                               "transient.load_hold.hold_s=1e6", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -231,14 +230,14 @@ TEST_F(CliHostile, HammerFilesWithManyPointsAreFitted) {
 // range, in every command (README, "Input ranges"), not failed computations or results.
 TEST_F(CliHostile, ExtremeNumbersAreInputErrorsWithTheirRange) {
   const std::string rh = kSrc + "/tests/data/rheology/";
-  expect_input_error(run_limited({"footprint", kConfig, "--load", "1e308"}),
+  expect_input_error(run_limited({"footprint", kConfig2d, "--load", "1e308"}),
                      {"--load", "1e308 is outside [1e-6, 1e7] N"});
-  expect_input_error(run_limited({"footprint", kConfig, "--load", "nan"}),
+  expect_input_error(run_limited({"footprint", kConfig2d, "--load", "nan"}),
                      {"--load", "is not a finite number"});
-  expect_input_error(run_limited({"footprint", kConfig, "--load", "5000", "--fx", "-1e308"}),
+  expect_input_error(run_limited({"footprint", kConfig2d, "--load", "5000", "--fx", "-1e308"}),
                      {"--fx", "-1e308 is outside [-1e7, 1e7] N"});
   expect_input_error(
-      run_limited({"footprint", kConfig, "--set", "tyre.inflation_pressure_kPa=1e308"}),
+      run_limited({"footprint", kConfig2d, "--set", "tyre.inflation_pressure_kPa=1e308"}),
       {"tyre.inflation_pressure_kPa", "out of range"});
   expect_input_error(run_limited({"identify", "load-deflection", rh + "load_deflection.csv",
                                   "--r0-mm", "294.8", "--pressure-kPa", "1e308"}),
@@ -258,7 +257,7 @@ TEST_F(CliHostile, ExtremeNumbersAreInputErrorsWithTheirRange) {
   expect_input_error(run_limited({"identify", "b-factors", "--r0-mm", "1e308"}),
                      {"--r0-mm", "outside (0, 5000] mm"});
   expect_input_error(
-      run_limited({"discover", kConfig, kSrc + "/configs/data/sf350_footprint_table3.csv",
+      run_limited({"discover", kConfig2d, kSrc + "/configs/data/sf350_footprint_table3.csv",
                    "--unit-length-mm", "1e308"}),
       {"--unit-length-mm"});
 
@@ -269,12 +268,12 @@ TEST_F(CliHostile, ExtremeNumbersAreInputErrorsWithTheirRange) {
   for (const auto& l : lines) text += l + "\n";
   const std::string hammer = write("hammer.csv", text);
   expect_input_error(run_limited({"fit-modes", hammer}), {hammer, ":2", "freq_hz", "(0, 1e5] Hz"});
-  expect_input_error(run_limited({"footprint", kConfig, "--set", "modal.hammer_csv=" + hammer}),
+  expect_input_error(run_limited({"footprint", kConfig2d, "--set", "modal.hammer_csv=" + hammer}),
                      {hammer, ":2", "freq_hz", "(0, 1e5] Hz"});
 
   // Measured rows: a hold time of 1e308 s.
   const std::string held = write("held.csv", "load_N,hold_s,sinking_mm\n2000,0,8\n3000,1e308,12\n");
-  expect_input_error(run_limited({"validate", kConfig, held}),
+  expect_input_error(run_limited({"validate", kConfig2d, held}),
                      {held, ":3", "hold_s", "[0, 1e7] s"});
 }
 
@@ -284,7 +283,7 @@ TEST_F(CliHostile, ExtremeNumbersAreInputErrorsWithTheirRange) {
 // a config's hammer file that is a device or missing, and a sweep's base: that is a device, were
 // named without the config's line and key (or as "not found").
 TEST_F(CliHostile, TinyAndOutOfRangeNumbersAreInputErrors) {
-  const std::string sweep = write("tiny.yaml", "base: " + kConfig +
+  const std::string sweep = write("tiny.yaml", "base: " + kConfig2d +
                                                    "\ngrid:\n  load_N: [2000, 1e-300]\n"
                                                    "output: o.csv\n");
   expect_input_error(run_limited({"footprint", kSrc + "/configs/sf350.yaml", "--load", "1e-300"}),
@@ -302,7 +301,7 @@ TEST_F(CliHostile, TinyAndOutOfRangeNumbersAreInputErrors) {
 }
 
 TEST_F(CliHostile, ANonFileThatTheConfigNamesIsRefusedAtItsKey) {
-  std::ifstream in(kConfig);
+  std::ifstream in(kConfig2d);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto at = text.find("hammer_csv: ");
   ASSERT_NE(at, std::string::npos);
@@ -331,10 +330,12 @@ TEST_F(CliHostile, SpeedsBeyondTheCriticalSpeedAreRefusedWithTheReason) {
                    "transient.rolling.speed_km_h=350", "--set", "transient.rolling.duration_s=1.5",
                    "--set", "transient.rolling.ramp_s=0.5"}),
       {"transient.rolling.speed_km_h: ", "beyond the carcass's critical speed 262.9 km/h"});
-  expect_input_error(run_limited({"transient", kConfig, "--scenario", "rolling", "--set",
+  expect_input_error(run_limited({"transient", kConfig2d, "--scenario", "rolling", "--set",
                                   "transient.rolling.speed_km_h=500"}),
                      {"transient.rolling.speed_km_h: ", "critical speed"});
-  expect_input_error(run_limited({"transient", kConfig, "--scenario", "cleat", "--set",
+  expect_input_error(run_limited({"transient", kConfig2d, "--scenario", "cleat", "--set",
                                   "transient.cleat.speed_km_h=1000"}),
                      {"transient.cleat.speed_km_h: ", "critical speed"});
 }
+
+}  // namespace

@@ -6,15 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kPlates = kSource + "/tests/data/soil/plate_sinkage.csv";
-const std::string kShear = kSource + "/tests/data/soil/shear.csv";
-const std::string kConfig2d = kSource + "/configs/sf350_2d_table3.yaml";
-const std::string kLete = kSource + "/configs/soils/lete_sand.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kLeteSandYaml;
+using modaltyre_test::kSrc;
+const std::string kPlates = kSrc + "/tests/data/soil/plate_sinkage.csv";
+const std::string kShear = kSrc + "/tests/data/soil/shear.csv";
 
 class IdentifyGroundCli : public modaltyre_test::CliFixture {
  protected:
@@ -53,7 +54,7 @@ TEST_F(IdentifyGroundCli, PlantedPlateAndShearDataGiveThePlantedSoilsTractionCur
   EXPECT_NE(b.out.find("soil file: " + soil), std::string::npos) << b.out;
   const nlohmann::json identified = curve({"--ground", soil});
   const nlohmann::json planted =
-      curve({"--ground", kLete, "--set", "ground.bekker.unloading.k0=2e4", "--set",
+      curve({"--ground", kLeteSandYaml, "--set", "ground.bekker.unloading.k0=2e4", "--set",
              "ground.bekker.unloading.Au=2e6"});
   ASSERT_EQ(identified["cases"].size(), 4u);
   for (std::size_t k = 0; k < 4; ++k) {
@@ -77,7 +78,7 @@ TEST_F(IdentifyGroundCli, WhatASoilFileCannotTakeIsRefused) {
   EXPECT_EQ(ld.exit_code, 2);
   EXPECT_NE(ld.err.find("--write-ground"), std::string::npos) << ld.err;
   // --into-ground without a file to write, and over its own input.
-  const auto half = run({"identify", "bevameter", kPlates, "--into-ground", kLete});
+  const auto half = run({"identify", "bevameter", kPlates, "--into-ground", kLeteSandYaml});
   EXPECT_EQ(half.exit_code, 2);
   EXPECT_NE(half.err.find("--write-ground"), std::string::npos) << half.err;
   const std::string base = (dir_ / "base.yaml").string();

@@ -1,12 +1,12 @@
 // `modaltyre init` as a user runs it (issue 36's interface): init then footprint on the written
 // config; --json says what was decided; bad input exits 2 naming the option; the config never
 // replaces the hammer data it names.
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
@@ -15,8 +15,7 @@ namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 using modaltyre_test::slurp;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kHammer = kSrc + "/configs/data/sf350_hammer_12pt.csv";
+using modaltyre_test::kHammer12pt;
 // Seed 001 Table 2's radial family without orders (init proposes them).
 const std::string kFrequencies =
     "133.580,135.528,155.739,156.657,180.092,182.454,207.977,210.787,238.917,241.519,274.594";
@@ -25,15 +24,16 @@ class CliInit : public modaltyre_test::CliFixture {};
 
 TEST_F(CliInit, InitThenFootprintRunsWithoutCalibration) {
   const std::string out = (dir_ / "tyre.yaml").string();
-  const CliRun init = run({"init", "--size", "195/60R14", "--test-pressure-kPa", "230",
-                           "--pressure-kPa", "230", "--frequencies", kFrequencies, "--output", out});
+  const CliRun init =
+      run({"init", "--size", "195/60R14", "--test-pressure-kPa", "230", "--pressure-kPa", "230",
+           "--frequencies", kFrequencies, "--output", out});
   ASSERT_EQ(init.exit_code, 0) << init.err;
   EXPECT_NE(slurp(out).find("frequencies_hz"), std::string::npos);
   const CliRun fp = run({"footprint", out, "--load", "4000", "--json"});
   ASSERT_EQ(fp.exit_code, 0) << fp.err;
   const auto j = nlohmann::json::parse(fp.out);
   const double sinking = j["cases"][0]["sinking_mm"];
-  EXPECT_GT(sinking, 5);   // a passenger tyre at 4 kN sinks 10-20 mm
+  EXPECT_GT(sinking, 5);  // a passenger tyre at 4 kN sinks 10-20 mm
   EXPECT_LT(sinking, 40);
 }
 
@@ -52,8 +52,8 @@ TEST_F(CliInit, JsonSaysOrdersAlternativesMassAndTension) {
 }
 
 TEST_F(CliInit, BadInputExitsTwoNamingTheOption) {
-  const CliRun size = run({"init", "--size", "195-60R14", "--test-pressure-kPa", "230",
-                           "--frequencies", kFrequencies});
+  const CliRun size = run(
+      {"init", "--size", "195-60R14", "--test-pressure-kPa", "230", "--frequencies", kFrequencies});
   EXPECT_EQ(size.exit_code, 2);
   EXPECT_NE(size.err.find("--size"), std::string::npos) << size.err;
   const CliRun orders = run({"init", "--size", "195/60R14", "--test-pressure-kPa", "230",
@@ -66,7 +66,7 @@ TEST_F(CliInit, BadInputExitsTwoNamingTheOption) {
 
 TEST_F(CliInit, ConfigNeverReplacesTheHammerData) {
   const std::string hammer = (dir_ / "h.csv").string();
-  fs::copy_file(kHammer, hammer);
+  fs::copy_file(kHammer12pt, hammer);
   const std::string before = slurp(hammer);
   const CliRun r = run({"init", "--size", "195/60R14", "--test-pressure-kPa", "230", "--hammer",
                         hammer, "--output", hammer});

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
@@ -18,9 +19,8 @@ namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 using modaltyre_test::quote;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSrc + "/configs/sf350_2d_table3.yaml";
-const std::string kHammer = kSrc + "/configs/data/sf350_hammer_12pt.csv";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kHammer12pt;
 
 class CliOutputSafety : public modaltyre_test::CliFixture {
  protected:
@@ -48,7 +48,7 @@ TEST_F(CliOutputSafety, PlotPathWithShellSyntaxRunsNothing) {
   // The name holds no '/', so a shell would create the marker in the working folder.
   const std::string marker = "modaltyre_pwned_" + std::to_string(::getpid());
   const std::string plot = (dir_ / ("a$(touch " + marker + ")`touch " + marker + "`.svg")).string();
-  const CliRun r = run({"footprint", kConfig, "--plot", plot});
+  const CliRun r = run({"footprint", kConfig2d, "--plot", plot});
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_FALSE(fs::exists(marker));
   EXPECT_FALSE(fs::exists(dir_ / marker));
@@ -59,8 +59,8 @@ TEST_F(CliOutputSafety, PlotPathWithShellSyntaxRunsNothing) {
 // or temporary file is left (footprint and fit-modes; every command plots through one path).
 TEST_F(CliOutputSafety, FullDiskLeavesNoHalfWrittenPlot) {
   for (const auto& args : std::vector<std::vector<std::string>>{
-           {"footprint", kConfig, "--plot", (dir_ / "fp.svg").string()},
-           {"fit-modes", kHammer, "--plot", (dir_ / "modes.svg").string()}}) {
+           {"footprint", kConfig2d, "--plot", (dir_ / "fp.svg").string()},
+           {"fit-modes", kHammer12pt, "--plot", (dir_ / "modes.svg").string()}}) {
     const CliRun r = run_with_file_limit(8, args);
     EXPECT_NE(r.exit_code, 0) << args[0];
     EXPECT_NE(r.err.find(args.back()), std::string::npos) << r.err;
@@ -73,7 +73,7 @@ TEST_F(CliOutputSafety, FullDiskLeavesNoHalfWrittenPlot) {
 TEST_F(CliOutputSafety, PlotOntoADirectoryLeavesNothing) {
   const fs::path d = dir_ / "plots.svg";
   fs::create_directories(d);
-  const CliRun r = run({"footprint", kConfig, "--plot", d.string()});
+  const CliRun r = run({"footprint", kConfig2d, "--plot", d.string()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_empty(d));
@@ -83,7 +83,7 @@ TEST_F(CliOutputSafety, PlotOntoADirectoryLeavesNothing) {
 // never replaced by a regular file.
 TEST_F(CliOutputSafety, OutputToDevStdoutIsWrittenThrough) {
   const fs::path spec = dir_ / "one.yaml", out = dir_ / "piped.csv";
-  std::ofstream(spec) << "base: " << kConfig << "\ngrid:\n  load_N: [3000]\noutput: x.csv\n";
+  std::ofstream(spec) << "base: " << kConfig2d << "\ngrid:\n  load_N: [3000]\noutput: x.csv\n";
   const std::string cmd = quote(MODALTYRE_CLI) + " sweep " + quote(spec.string()) +
                           " --output /dev/stdout 2>/dev/null | cat > " + quote(out.string());
   ASSERT_EQ(std::system(("bash -o pipefail -c " + quote(cmd)).c_str()), 0);
@@ -93,7 +93,7 @@ TEST_F(CliOutputSafety, OutputToDevStdoutIsWrittenThrough) {
 }
 
 TEST_F(CliOutputSafety, UnknownCommandIsNamedWithTheList) {
-  const CliRun r = run({"foo", kConfig});
+  const CliRun r = run({"foo", kConfig2d});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("unknown command 'foo'"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("footprint"), std::string::npos) << r.err;

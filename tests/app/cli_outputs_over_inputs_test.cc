@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
@@ -18,7 +19,7 @@ namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 using modaltyre_test::slurp;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
+using modaltyre_test::kSrc;
 
 class CliOutputsOverInputs : public modaltyre_test::CliFixture {
  protected:

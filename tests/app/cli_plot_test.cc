@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
@@ -21,9 +22,9 @@ namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 using modaltyre_test::quote;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSrc + "/configs/sf350_2d_table3.yaml";
-const std::string kTable3 = kSrc + "/configs/data/sf350_footprint_table3.csv";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kSrc;
+using modaltyre_test::kTable3;
 
 struct Panel {
   std::string title, ylabel;
@@ -81,7 +82,7 @@ class PlotCli : public modaltyre_test::CliFixture {
 // panel of its own (issue 44: a dead panel whose axis zoomed the noise into a signal) but named
 // with its value in the first title, which names the tyre and the scenario's load.
 TEST_F(PlotCli, TransientConstantsAreNamedNotDrawn) {
-  const auto panels = plot({"transient", kConfig, "--scenario", "load-hold", "--set",
+  const auto panels = plot({"transient", kConfig2d, "--scenario", "load-hold", "--set",
                             "transient.load_hold.hold_s=1", "--plot", (dir_ / "t.svg").string()});
   ASSERT_EQ(panels.size(), 3u);  // load, sinking, contact length
   for (const Panel& p : panels)
@@ -123,7 +124,7 @@ TEST_F(PlotCli, FitModesPanelsAreSymmetricAboutZero) {
 }
 
 TEST_F(PlotCli, ValidateDrawsWidthWhenItIsMeasured) {
-  auto panels = plot({"validate", kConfig, kTable3, "--plot", (dir_ / "v.svg").string()});
+  auto panels = plot({"validate", kConfig2d, kTable3, "--plot", (dir_ / "v.svg").string()});
   ASSERT_EQ(panels.size(), 3u);
   EXPECT_EQ(panels[2].title,
             "SF-350 195/60R14 at 230 kPa (2D, Table 3 fitted): contact width "
@@ -131,7 +132,7 @@ TEST_F(PlotCli, ValidateDrawsWidthWhenItIsMeasured) {
   EXPECT_EQ(panels[2].ylabel, "contact width [mm]");
   const std::string no_width = (dir_ / "no_width.csv").string();
   std::ofstream(no_width) << "load_N,sinking_mm,length_mm\n2131,8,86\n5478,20,117\n8321,29,135\n";
-  panels = plot({"validate", kConfig, no_width, "--set", "validation.calibrate=[]", "--plot",
+  panels = plot({"validate", kConfig2d, no_width, "--set", "validation.calibrate=[]", "--plot",
                  (dir_ / "v2.svg").string()});
   ASSERT_EQ(panels.size(), 2u);
   for (const auto& p : panels) EXPECT_EQ(p.title.find("width"), std::string::npos) << p.title;
@@ -144,7 +145,7 @@ TEST_F(PlotCli, ValidateDrawsTheModelAtTheConditionsStatedWithSet) {
   // The first data block of the script: the model's sinking curve (load kN, sinking mm).
   auto model_curve = [&](const std::vector<std::string>& extra) {
     std::vector<std::string> args = {"validate",
-                                     kConfig,
+                                     kConfig2d,
                                      kTable3,
                                      "--set",
                                      "validation.calibrate=[]",
@@ -190,7 +191,7 @@ TEST_F(PlotCli, DiscoverPanelsLabelThePercentAxisAndSkipAnAllZeroObservable) {
   std::ofstream(data) << "load_N,sinking_mm,width_mm\n2131,8,130\n3261,12,130\n5478,20,130\n"
                          "6502,23,130\n7322,26,130\n8321,29,130\n";
   CliRun r;
-  const auto panels = plot({"discover", kConfig, data, "--plot", (dir_ / "d.svg").string()}, &r);
+  const auto panels = plot({"discover", kConfig2d, data, "--plot", (dir_ / "d.svg").string()}, &r);
   ASSERT_EQ(panels.size(), 1u);
   EXPECT_EQ(panels[0].title.rfind("sinking: ", 0), 0u) << panels[0].title;
   EXPECT_EQ(panels[0].title.find("[mm]"), std::string::npos) << panels[0].title;
@@ -230,7 +231,7 @@ TEST_F(HonestPlots, LegendsAreOutsideTheData) {
   };
   plot({"validate", kSrc + "/configs/sf350.yaml", kTable3, "--plot", (dir_ / "v.svg").string()});
   outside("validate");
-  plot({"footprint", kConfig, "--plot", (dir_ / "f.svg").string()});
+  plot({"footprint", kConfig2d, "--plot", (dir_ / "f.svg").string()});
   outside("footprint 2D");
   plot({"footprint", kSrc + "/configs/sf350.yaml", "--load", "2131", "--load", "8321", "--plot",
         (dir_ / "f3.svg").string()});
@@ -264,7 +265,7 @@ TEST_F(HonestPlots, DiscoverResidualsArePointsNotASawtooth) {
   const std::string data = (dir_ / "grid.csv").string();
   std::ofstream(data) << "load_N,hold_s,sinking_mm\n3000,0,11\n6000,0,21\n3000,60,12\n"
                          "6000,60,22.5\n3000,600,12.5\n6000,600,23.5\n";
-  plot({"discover", kConfig, data, "--plot", (dir_ / "d.svg").string()});
+  plot({"discover", kConfig2d, data, "--plot", (dir_ / "d.svg").string()});
   const std::string s = script();
   EXPECT_EQ(s.find("with linespoints"), std::string::npos) << s.substr(s.find("plot $"));
   EXPECT_NE(s.find("with points"), std::string::npos);
@@ -288,7 +289,7 @@ TEST_F(HonestPlots, TirCompareSaysTheLawIsScaled) {
 TEST_F(HonestPlots, StaticLoopFitStaysAtOrAboveZeroLoad) {
   const std::string rheo = kSrc + "/tests/data/rheology/";
   plot({"identify", "free-vibration", rheo + "free_vibration.csv", "--mass-kg", "350",
-        "--section-height-mm", "117", "--static", rheo + "static_loop.csv", "--config", kConfig,
+        "--section-height-mm", "117", "--static", rheo + "static_loop.csv", "--config", kConfig2d,
         "--plot", (dir_ / "s.svg").string()});
   // The static panel's data blocks: the last two (fitted loading, unloading).
   std::istringstream in(script());
@@ -315,7 +316,8 @@ TEST_F(HonestPlots, StaticLoopFitStaysAtOrAboveZeroLoad) {
 
 // Issue 44 item 4: a footprint plot's titles name the tyre, the ground and the load(s).
 TEST_F(HonestPlots, FootprintTitlesNameTheTyreTheGroundAndTheLoad) {
-  auto titles = plot({"footprint", kConfig, "--load", "3000", "--plot", (dir_ / "f.svg").string()});
+  auto titles =
+      plot({"footprint", kConfig2d, "--load", "3000", "--plot", (dir_ / "f.svg").string()});
   ASSERT_EQ(titles.size(), 1u);
   EXPECT_EQ(titles[0].title,
             "SF-350 195/60R14 at 230 kPa (2D, Table 3 fitted) on the rigid road, 3.00 kN: contact "
@@ -333,8 +335,8 @@ TEST_F(HonestPlots, FootprintTitlesNameTheTyreTheGroundAndTheLoad) {
 // Issue 44 item 2: validate --uncertainty draws the model's band at the rows as two lines, its
 // 2.5 and 97.5 % points in load order, equal to the JSON's p025 and p975.
 TEST_F(HonestPlots, ValidateDrawsTheJsonsBandAsTwoLines) {
-  const std::vector<std::string> args = {"validate",      kConfig, kTable3,
-                                         "--uncertainty", "--set", "contact.unit_length_mm=2"};
+  const std::vector<std::string> args = {"validate",      kConfig2d, kTable3,
+                                         "--uncertainty", "--set",   "contact.unit_length_mm=2"};
   auto with_plot = args;
   with_plot.insert(with_plot.end(), {"--plot", (dir_ / "v.svg").string()});
   plot(with_plot);
@@ -375,8 +377,6 @@ TEST_F(HonestPlots, ValidateDrawsTheJsonsBandAsTwoLines) {
   }
 }
 
-}  // namespace
-
 // Issue 48 item 7 and issue 44 item 4: the soil plots a soil-bin engineer reads.
 class SoilPlots : public HonestPlots {
  protected:
@@ -391,9 +391,10 @@ class SoilPlots : public HonestPlots {
 };
 
 TEST_F(SoilPlots, TractionNamesTyreSoilAndLoadAndMarksTheTowedAndSelfPropelledPoints) {
-  const auto panels = plot({"traction", kConfig, "--ground", kSrc + "/configs/soils/lete_sand.yaml",
-                            "--load", "3000", "--slip", "-0.1", "0", "0.1", "0.3", "--set",
-                            "contact.unit_length_mm=2", "--plot", (dir_ / "dp.svg").string()});
+  const auto panels =
+      plot({"traction", kConfig2d, "--ground", kSrc + "/configs/soils/lete_sand.yaml", "--load",
+            "3000", "--slip", "-0.1", "0", "0.1", "0.3", "--set", "contact.unit_length_mm=2",
+            "--plot", (dir_ / "dp.svg").string()});
   ASSERT_EQ(panels.size(), 3u);
   EXPECT_NE(panels[0].title.find("SF-350"), std::string::npos) << panels[0].title;
   EXPECT_NE(panels[0].title.find("LETE sand"), std::string::npos) << panels[0].title;
@@ -441,3 +442,5 @@ TEST_F(SoilPlots, EachShearDataSetSharesItsColourWithItsOwnFit) {
         << s;
   EXPECT_NE(colour_of("sigma = 20.0 kPa"), colour_of("fit, 40.0 kPa"));
 }
+
+}  // namespace

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
@@ -18,9 +19,9 @@ namespace {
 namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kConfig2d = kSrc + "/configs/sf350_2d_table3.yaml";
-const std::string kConfig3d = kSrc + "/configs/sf350.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kSrc;
 const std::string kTir = kSrc + "/tests/data/tir/mfswift62_mm_kN.tir";
 
 class CliRefusals : public modaltyre_test::CliFixture {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
@@ -14,9 +15,8 @@ namespace {
 namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSrc + "/configs/sf350_2d_table3.yaml";
-const std::string kLete = kSrc + "/configs/soils/lete_sand.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kLeteSandYaml;
 const std::string kBekkerKeys = "    n: 0.79\n    k_c: 102\n    k_phi: 5301\n";
 
 class SoilHostile : public modaltyre_test::CliFixture {
@@ -37,37 +37,38 @@ class SoilHostile : public modaltyre_test::CliFixture {
 
 TEST_F(SoilHostile, ASoilFileWithoutModelIsNotTheRoad) {
   const std::string f = write("nomodel.yaml", "ground:\n  bekker:\n" + kBekkerKeys);
-  expect_input_error(run({"footprint", kConfig, "--ground", f, "--load", "3000"}),
+  expect_input_error(run({"footprint", kConfig2d, "--ground", f, "--load", "3000"}),
                      {"nomodel.yaml:3", "ground.bekker.n", "without ground.model"});
 }
 
 TEST_F(SoilHostile, ARigidModelWithABekkerBlockIsRefused) {
   const std::string f = write("rigid.yaml", "ground:\n  model: rigid\n  bekker:\n" + kBekkerKeys);
-  expect_input_error(run({"footprint", kConfig, "--ground", f, "--load", "3000"}),
+  expect_input_error(run({"footprint", kConfig2d, "--ground", f, "--load", "3000"}),
                      {"rigid.yaml:4", "ground.bekker.n", "ground.model is rigid"});
 }
 
 TEST_F(SoilHostile, SwitchingABekkerFileToKelvinVoigtIsRefused) {
-  expect_input_error(run({"footprint", kConfig, "--ground", kLete, "--load", "3000", "--set",
-                          "ground.model=kelvin_voigt"}),
+  expect_input_error(run({"footprint", kConfig2d, "--ground", kLeteSandYaml, "--load", "3000",
+                          "--set", "ground.model=kelvin_voigt"}),
                      {"lete_sand.yaml", "ground.bekker", "ground.model is kelvin_voigt"});
 }
 
 TEST_F(SoilHostile, ABekkerKeyOnAConfigWithoutAGroundIsNotDropped) {
-  expect_input_error(run({"footprint", kConfig, "--load", "3000", "--set", "ground.bekker.n=0.8"}),
-                     {"--set", "ground.bekker", "without ground.model"});
+  expect_input_error(
+      run({"footprint", kConfig2d, "--load", "3000", "--set", "ground.bekker.n=0.8"}),
+      {"--set", "ground.bekker", "without ground.model"});
 }
 
 TEST_F(SoilHostile, AHorizontalForceOnASoilIsAnInputError) {
   expect_input_error(
-      run({"footprint", kConfig, "--ground", kLete, "--load", "3000", "--fx", "500"}),
+      run({"footprint", kConfig2d, "--ground", kLeteSandYaml, "--load", "3000", "--fx", "500"}),
       {"--fx", "ground.model: bekker", "traction"});
 }
 
 TEST_F(SoilHostile, TractionNeedsTheSoilsShearStated) {
   const std::string f =
       write("noshear.yaml", "ground:\n  model: bekker\n  bekker:\n" + kBekkerKeys);
-  expect_input_error(run({"traction", kConfig, "--ground", f, "--load", "3000", "--slip", "0.1"}),
+  expect_input_error(run({"traction", kConfig2d, "--ground", f, "--load", "3000", "--slip", "0.1"}),
                      {"noshear.yaml", "ground.bekker.cohesion_kPa", "identify shear"});
 }
 

@@ -8,11 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
-const std::string kRateCliConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+using modaltyre_test::kConfig3d;
 
 class SoilRateCli : public modaltyre_test::CliFixture {
  protected:
@@ -34,9 +35,8 @@ class SoilRateCli : public modaltyre_test::CliFixture {
     return path;
   }
   modaltyre_test::CliRun traction(const std::string& eta2) {
-    return run({"traction", kRateCliConfig, "--ground", kv_soil(), "--load", "3000", "--slip",
-                "0.1", "--speed-km-h", "5", "--set", "ground.kelvin_voigt.eta2_kPa_s=" + eta2,
-                "--json",
+    return run({"traction", kConfig3d, "--ground", kv_soil(), "--load", "3000", "--slip", "0.1",
+                "--speed-km-h", "5", "--set", "ground.kelvin_voigt.eta2_kPa_s=" + eta2, "--json",
                 // coarse: 2 mm sections, 10 mm columns
                 "--set", "contact.unit_length_mm=2", "--set", "footprint_3d.lateral_cell_mm=10"});
   }

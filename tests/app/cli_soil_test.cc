@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kConfig2d = kSource + "/configs/sf350_2d_table3.yaml";
-const std::string kConfig3d = kSource + "/configs/sf350.yaml";
-const std::string kLete = kSource + "/configs/soils/lete_sand.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kLeteSandYaml;
 const std::vector<std::string> kCoarse = {"--set", "contact.unit_length_mm=5", "--set",
                                           "contact.window_mm=300"};
 
@@ -51,9 +51,9 @@ TEST_F(SoilCli, TheFootprintHeaderNamesTheSoil) {
 // same document), ground.* overrides go to the soil file, tyre.rigid may follow it; a rigid
 // tyre on the road is refused naming tyre.rigid.
 TEST_F(SoilCli, FootprintTakesTheSoilFileAsItsGround) {
-  std::vector<std::string> by_file{"footprint", kConfig2d, "--load",
-                                   "3000",      "--json",  "--ground",
-                                   kLete,       "--set",   "ground.bekker.n=0.8"};
+  std::vector<std::string> by_file{"footprint",   kConfig2d, "--load",
+                                   "3000",        "--json",  "--ground",
+                                   kLeteSandYaml, "--set",   "ground.bekker.n=0.8"};
   std::vector<std::string> by_set{"footprint",
                                   kConfig2d,
                                   "--load",
@@ -82,8 +82,8 @@ TEST_F(SoilCli, FootprintTakesTheSoilFileAsItsGround) {
   EXPECT_EQ(cf["sinking_mm"], cs["sinking_mm"]);
   EXPECT_EQ(cf["contact_length_mm"], cs["contact_length_mm"]);
 
-  const auto rigid = run({"footprint", kConfig2d, "--load", "3000", "--ground", kLete, "--set",
-                          "tyre.rigid=true", "--json"});
+  const auto rigid = run({"footprint", kConfig2d, "--load", "3000", "--ground", kLeteSandYaml,
+                          "--set", "tyre.rigid=true", "--json"});
   ASSERT_EQ(rigid.exit_code, 0) << rigid.err;
   EXPECT_EQ(nlohmann::json::parse(rigid.out)["cases"][0]["tyre_deflection_mm"], 0.0);
 
@@ -93,7 +93,7 @@ TEST_F(SoilCli, FootprintTakesTheSoilFileAsItsGround) {
 }
 
 TEST_F(SoilCli, TransientOntoTheSoilGivesItsColumns) {
-  const auto r = transient({"--scenario", "load-hold", "--ground", kLete, "--json", "--csv",
+  const auto r = transient({"--scenario", "load-hold", "--ground", kLeteSandYaml, "--json", "--csv",
                             (dir_ / "lh.csv").string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -111,7 +111,7 @@ TEST_F(SoilCli, TheDefault3dConfigRunsOntoTheSoil) {
   // The 3D patch's transient on the soil (docs/soil.md section 8.3): the soil's columns beside
   // the 3D ones (coarse mesh: 5 mm sections, 15 mm columns).
   const auto r =
-      run({"transient", kConfig3d, "--scenario", "load-hold", "--ground", kLete, "--set",
+      run({"transient", kConfig3d, "--scenario", "load-hold", "--ground", kLeteSandYaml, "--set",
            "transient.load_hold.hold_s=0.2", "--set", "transient.load_hold.ramp_rate_N_s=20000",
            "--set", "contact.unit_length_mm=5", "--set", "footprint_3d.lateral_cell_mm=15",
            "--json", "--csv", (dir_ / "lh3d.csv").string()});
@@ -137,16 +137,16 @@ TEST_F(SoilCli, WhatTheTransientOnSoilDoesNotModelIsRefused) {
   EXPECT_EQ(a.exit_code, 2);
   EXPECT_NE(a.err.find("ground.model"), std::string::npos) << a.err;
   // The cleat (a rigid obstacle on the road).
-  const auto b = transient({"--scenario", "cleat", "--ground", kLete});
+  const auto b = transient({"--scenario", "cleat", "--ground", kLeteSandYaml});
   EXPECT_EQ(b.exit_code, 2);
   EXPECT_NE(b.err.find("ground.model"), std::string::npos) << b.err;
   // The cleat on the 3D patch (its soil transient runs load-hold, free vibration, rolling).
-  const auto c = run({"transient", kConfig3d, "--scenario", "cleat", "--ground", kLete});
+  const auto c = run({"transient", kConfig3d, "--scenario", "cleat", "--ground", kLeteSandYaml});
   EXPECT_EQ(c.exit_code, 2);
   EXPECT_NE(c.err.find("ground.model"), std::string::npos) << c.err;
   // A soil key the file does not know.
-  const auto d = transient(
-      {"--scenario", "load-hold", "--ground", kLete, "--set", "ground.bekker.no_such_key=1"});
+  const auto d = transient({"--scenario", "load-hold", "--ground", kLeteSandYaml, "--set",
+                            "ground.bekker.no_such_key=1"});
   EXPECT_EQ(d.exit_code, 2);
   EXPECT_NE(d.err.find("no_such_key"), std::string::npos) << d.err;
 }

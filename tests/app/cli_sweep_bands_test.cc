@@ -4,13 +4,14 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
 using modaltyre_test::CliFixture;
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
+using modaltyre_test::kSrc;
 constexpr double kPrinted = 1e-9;  // %.10g in the CSV, round_sig in the JSON
 
 class SweepBands : public CliFixture {};
@@ -30,10 +31,10 @@ std::vector<std::string> cells(const std::string& line) {
 
 TEST_F(SweepBands, CasesCarryFootprintsStdAndReadBackAsNoise) {
   const auto csv = dir_ / "loads.csv";
-  const auto sweep = run({"sweep", kSource + "/configs/sweeps/table3_loads.yaml", "--uncertainty",
+  const auto sweep = run({"sweep", kSrc + "/configs/sweeps/table3_loads.yaml", "--uncertainty",
                           "--output", csv.string(), "--threads", "2"});
   ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
-  const auto fp = run({"footprint", kSource + "/configs/sf350_2d_table3.yaml", "--uncertainty",
+  const auto fp = run({"footprint", kSrc + "/configs/sf350_2d_table3.yaml", "--uncertainty",
                        "--json", "--uncertainty-method", "auto"});
   ASSERT_EQ(fp.exit_code, 0) << fp.err;
   const auto j = nlohmann::json::parse(fp.out);
@@ -59,7 +60,7 @@ TEST_F(SweepBands, CasesCarryFootprintsStdAndReadBackAsNoise) {
   EXPECT_EQ(row, j["cases"].size());
   // Read back as measured data, the std columns as the rows' noise (the values are the model's
   // own, so every row lies inside its band).
-  const auto v = run({"validate", kSource + "/configs/sf350_2d_table3.yaml", csv.string(),
+  const auto v = run({"validate", kSrc + "/configs/sf350_2d_table3.yaml", csv.string(),
                       "--uncertainty", "--json", "--set", "validation.calibrate=[]"});
   ASSERT_EQ(v.exit_code, 0) << v.err;
   // Parsed into a named value: a range-for over a temporary's member dangles before C++23.

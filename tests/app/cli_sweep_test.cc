@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
@@ -24,15 +25,15 @@ namespace fs = std::filesystem;
 using modaltyre_test::CliRun;
 using modaltyre_test::slurp;
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kBase = kSource + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kSrc;
 
 class SweepCli : public modaltyre_test::CliFixture {
  protected:
   /// Writes a sweep file whose base is the shipped SF-350 config.
   std::string sweep(const std::string& body, const std::string& name = "s.yaml") {
     const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << "base: " << kBase << "\n" << body;
+    std::ofstream(p, std::ios::binary) << "base: " << kConfig2d << "\n" << body;
     return p.string();
   }
 
@@ -45,11 +46,10 @@ class SweepCli : public modaltyre_test::CliFixture {
     EXPECT_NE(r.err.find(needle), std::string::npos) << "expected '" << needle << "' in\n" << r.err;
     EXPECT_EQ(r.err.find("sweep: "), std::string::npos) << "computed before failing:\n" << r.err;
   }
-
 };
 
 TEST_F(SweepCli, OneAndTwoThreadsWriteByteIdenticalCsv) {
-  const std::string grid = kSource + "/configs/sweeps/modulus_load_grid.yaml";
+  const std::string grid = kSrc + "/configs/sweeps/modulus_load_grid.yaml";
   const std::string a = (dir_ / "a.csv").string(), b = (dir_ / "b.csv").string();
   const CliRun r1 = run({"sweep", grid, "--threads", "1", "--output", a});
   const CliRun r2 = run({"sweep", grid, "--threads", "2", "--output", b, "--json"});
@@ -82,9 +82,11 @@ TEST_F(SweepCli, OneAndTwoThreadsWriteByteIdenticalCsv) {
 
 TEST_F(SweepCli, OutputIsRelativeToTheSweepFileAndSetOverridesApply) {
   fs::create_directories(dir_ / "sub");
-  const std::string path = sweep("grid:\n  load_N: [4000, 6000]\noutput: out/r.csv\n", "sub/s.yaml");
+  const std::string path =
+      sweep("grid:\n  load_N: [4000, 6000]\noutput: out/r.csv\n", "sub/s.yaml");
   fs::create_directories(dir_ / "sub" / "out");
-  const CliRun r = run({"sweep", path, "--set", "tread.modulus_MPa=9", "--set", "horizontal_force_N=200"});
+  const CliRun r =
+      run({"sweep", path, "--set", "tread.modulus_MPa=9", "--set", "horizontal_force_N=200"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string csv = slurp(dir_ / "sub" / "out" / "r.csv");
   // A condition from --set is a column (before the grid's), a config key is not.
@@ -112,8 +114,8 @@ TEST_F(SweepCli, AFailedCaseIsARowAndTheSweepStillSucceeds) {
 
 TEST_F(SweepCli, AllCasesFailedExitsOneButKeepsTheRows) {
   const std::string out = (dir_ / "r.csv").string();
-  const std::string path =
-      sweep("set:\n  solver.max_iterations: 1\ngrid:\n  load_N: [4000, 7000]\noutput: " + out + "\n");
+  const std::string path = sweep(
+      "set:\n  solver.max_iterations: 1\ngrid:\n  load_N: [4000, 7000]\noutput: " + out + "\n");
   const CliRun r = run({"sweep", path});
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("all 2 cases failed"), std::string::npos) << r.err;
@@ -162,12 +164,14 @@ TEST_F(SweepCli, AnEffectAndConditionColumnsReachTheCsv) {
   const std::string out = (dir_ / "r.csv").string();
   const std::string path = sweep(
       "set:\n  effects.tread_relaxation.enabled: true\n  branch: load\n"
-      "grid:\n  hold_s: [0, 600]\n  load_N: [4000]\noutput: " + out + "\n");
+      "grid:\n  hold_s: [0, 600]\n  load_N: [4000]\noutput: " +
+      out + "\n");
   const CliRun r = run({"sweep", path, "--threads", "2"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string csv = slurp(out);
   EXPECT_EQ(csv.substr(0, csv.find(',', csv.find(',', csv.find(',') + 1) + 1)),
-            "branch,hold_s,load_N") << csv;
+            "branch,hold_s,load_N")
+      << csv;
   // The held load creeps: the 600 s row sinks further than the 0 s one.
   const auto sinking = [&](const std::string& prefix) {
     const auto at = csv.find("\n" + prefix);
@@ -181,8 +185,8 @@ TEST_F(SweepCli, OutputIntoAMissingFolderFailsBeforeComputing) {
   // 2000 cases would take seconds; the check must come first.
   std::string loads;
   for (int i = 1; i <= 2000; ++i) loads += (i > 1 ? ", " : "") + std::to_string(1000 + i);
-  const std::string path =
-      sweep("grid:\n  load_N: [" + loads + "]\noutput: " + (dir_ / "missing" / "r.csv").string() + "\n");
+  const std::string path = sweep("grid:\n  load_N: [" + loads +
+                                 "]\noutput: " + (dir_ / "missing" / "r.csv").string() + "\n");
   const auto t0 = std::chrono::steady_clock::now();
   const CliRun r = run({"sweep", path});
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -196,7 +200,8 @@ TEST_F(SweepCli, OutputIntoAMissingFolderFailsBeforeComputing) {
 TEST_F(SweepCli, AFailingSweepLeavesAnExistingOutputUntouched) {
   const fs::path out = dir_ / "r.csv";
   std::ofstream(out) << "previous results\n";
-  const std::string path = sweep("grid:\n  load_N: [1000]\n  tread.bogus: [1]\noutput: " + out.string() + "\n");
+  const std::string path =
+      sweep("grid:\n  load_N: [1000]\n  tread.bogus: [1]\noutput: " + out.string() + "\n");
   const CliRun r = run({"sweep", path});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(slurp(out), "previous results\n");

@@ -7,20 +7,20 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kConfig2d = kSource + "/configs/sf350_2d_table3.yaml";
-const std::string kConfig3d = kSource + "/configs/sf350.yaml";
-const std::string kLete = kSource + "/configs/soils/lete_sand.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kLeteSandYaml;
 
 class Traction3dCli : public modaltyre_test::CliFixture {
  protected:
   nlohmann::json traction(std::vector<std::string> extra) {
-    std::vector<std::string> a{"traction", kConfig3d, "--ground", kLete, "--load", "3000", "--slip",
-                               "0.1", "0.3", "--json",
+    std::vector<std::string> a{"traction", kConfig3d, "--ground", kLeteSandYaml, "--load", "3000",
+                               "--slip", "0.1", "0.3", "--json",
                                // coarse: 2 mm sections, 10 mm columns (15 columns, 8 classes)
                                "--set", "contact.unit_length_mm=2", "--set",
                                "footprint_3d.lateral_cell_mm=10"};
@@ -52,12 +52,12 @@ TEST_F(Traction3dCli, A3DConfigRollsOnTheThreeDPatchUnlessAskedForItsTwoDPatch) 
 }
 
 TEST_F(Traction3dCli, ThePatchOption3dNeedsA3DConfig) {
-  const auto r = run({"traction", kConfig2d, "--ground", kLete, "--load", "3000", "--slip", "0.1",
-                      "--patch", "3d"});
+  const auto r = run({"traction", kConfig2d, "--ground", kLeteSandYaml, "--load", "3000", "--slip",
+                      "0.1", "--patch", "3d"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("footprint_3d"), std::string::npos) << r.err;
-  const auto bad = run({"traction", kConfig3d, "--ground", kLete, "--load", "3000", "--slip", "0.1",
-                        "--patch", "4d"});
+  const auto bad = run({"traction", kConfig3d, "--ground", kLeteSandYaml, "--load", "3000",
+                        "--slip", "0.1", "--patch", "4d"});
   EXPECT_EQ(bad.exit_code, 2);
 }
 

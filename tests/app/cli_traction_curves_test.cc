@@ -7,13 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kConfig2d = kSource + "/configs/sf350_2d_table3.yaml";
-const std::string kSoils = kSource + "/configs/soils/";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kSrc;
+const std::string kSoils = kSrc + "/configs/soils/";
 
 class TractionCurvesCli : public modaltyre_test::CliFixture {
  protected:

@@ -4,14 +4,14 @@
 // zero width.
 #include <nlohmann/json.hpp>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
 using modaltyre_test::CliFixture;
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string k2d = kSource + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 // The load-hold ends within 1e-4 of the footprint (docs/transient.md); its band's std, a
 // difference of two such ends, agrees to 1 %.
 constexpr double kBandRel = 0.01;
@@ -19,11 +19,11 @@ constexpr double kBandRel = 0.01;
 class TransientBands : public CliFixture {};
 
 TEST_F(TransientBands, LoadHoldEndCarriesTheFootprintsBand) {
-  const auto t = run({"transient", k2d, "--scenario", "load-hold", "--uncertainty",
+  const auto t = run({"transient", kConfig2d, "--scenario", "load-hold", "--uncertainty",
                       "--uncertainty-method", "linear", "--json"});
   ASSERT_EQ(t.exit_code, 0) << t.err;
-  const auto f = run({"footprint", k2d, "--load", "4000", "--uncertainty", "--uncertainty-method",
-                      "linear", "--json"});
+  const auto f = run({"footprint", kConfig2d, "--load", "4000", "--uncertainty",
+                      "--uncertainty-method", "linear", "--json"});
   ASSERT_EQ(f.exit_code, 0) << f.err;
   const auto tj = nlohmann::json::parse(t.out), fj = nlohmann::json::parse(f.out);
   EXPECT_EQ(tj["uncertainty_method"], "linear");
@@ -38,7 +38,7 @@ TEST_F(TransientBands, LoadHoldEndCarriesTheFootprintsBand) {
 }
 
 TEST_F(TransientBands, RollingResistanceHasABandAndNoInputsNoWidth) {
-  const auto r = run({"transient", k2d, "--scenario", "rolling", "--uncertainty",
+  const auto r = run({"transient", kConfig2d, "--scenario", "rolling", "--uncertainty",
                       "--uncertainty-method", "linear", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);

@@ -4,15 +4,15 @@
 // stated noise of 10 model sigma: only the second is outside.
 #include <nlohmann/json.hpp>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
 using modaltyre_test::CliFixture;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-const std::string kTable3 =
-    std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kTable3;
 // Far outside a 95 % band (1.96 sigma) and far inside once 10 sigma of noise is added.
 constexpr double kShiftSigma = 6.0, kNoiseSigma = 10.0;
 
@@ -20,7 +20,7 @@ class ValidateBands : public CliFixture {};
 
 TEST_F(ValidateBands, MarksTheRowsOutsideTheBandWidenedByTheirNoise) {
   // Every row a prediction (no calibration): the band is the hammer shapes' noise only.
-  const auto first = run({"validate", kConfig, kTable3, "--uncertainty", "--json", "--set",
+  const auto first = run({"validate", kConfig2d, kTable3, "--uncertainty", "--json", "--set",
                           "validation.calibrate=[]"});
   ASSERT_EQ(first.exit_code, 0) << first.err;
   const auto j = nlohmann::json::parse(first.out);
@@ -39,7 +39,7 @@ TEST_F(ValidateBands, MarksTheRowsOutsideTheBandWidenedByTheirNoise) {
   }
   const auto planted = dir_ / "planted.csv";
   std::ofstream(planted) << csv.str();
-  const auto second = run({"validate", kConfig, planted.string(), "--uncertainty", "--json",
+  const auto second = run({"validate", kConfig2d, planted.string(), "--uncertainty", "--json",
                            "--set", "validation.calibrate=[]"});
   ASSERT_EQ(second.exit_code, 0) << second.err;
   const auto k = nlohmann::json::parse(second.out);
@@ -48,8 +48,8 @@ TEST_F(ValidateBands, MarksTheRowsOutsideTheBandWidenedByTheirNoise) {
   EXPECT_TRUE(k["rows"][2]["outside_band"].empty()) << k["rows"][2];
   // The table prints the measured noise as value +- 2 sigma, the band as value [p025, p975],
   // and the mark.
-  const auto table = run(
-      {"validate", kConfig, planted.string(), "--uncertainty", "--set", "validation.calibrate=[]"});
+  const auto table = run({"validate", kConfig2d, planted.string(), "--uncertainty", "--set",
+                          "validation.calibrate=[]"});
   ASSERT_EQ(table.exit_code, 0) << table.err;
   EXPECT_NE(table.out.find("+-"), std::string::npos) << table.out;
   EXPECT_NE(table.out.find("outside"), std::string::npos) << table.out;
@@ -58,7 +58,7 @@ TEST_F(ValidateBands, MarksTheRowsOutsideTheBandWidenedByTheirNoise) {
 TEST_F(ValidateBands, AStdWithoutItsMeasurementIsRefused) {
   const auto csv = dir_ / "bad.csv";
   std::ofstream(csv) << "load_N,sinking_mm,length_std_mm\n2131,8,1\n";
-  const auto r = run({"validate", kConfig, csv.string()});
+  const auto r = run({"validate", kConfig2d, csv.string()});
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.err.find("length_std_mm"), std::string::npos) << r.err;
 }

@@ -8,13 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "cli_runner.h"
 
 namespace {
 
-const std::string kWrCliSource = MODALTYRE_SOURCE_DIR;
-const std::string kWrCliConfig = kWrCliSource + "/configs/sf350.yaml";
-const std::string kWrCliLete = kWrCliSource + "/configs/soils/lete_sand.yaml";
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kLeteSandYaml;
+using modaltyre_test::kSrc;
 
 class WongReeceFlexibleCli : public modaltyre_test::CliFixture {
  protected:
@@ -22,7 +23,7 @@ class WongReeceFlexibleCli : public modaltyre_test::CliFixture {
   // option; coarse: 2 mm sections, 10 mm columns.
   nlohmann::json rolled(const std::string& patch, bool wong_reece) {
     const auto r =
-        run({"traction", kWrCliConfig, "--ground", kWrCliLete, "--load", "3000", "--slip", "0.1",
+        run({"traction", kConfig3d, "--ground", kLeteSandYaml, "--load", "3000", "--slip", "0.1",
              "0.3", "--json", "--patch", patch, "--set", "contact.unit_length_mm=2", "--set",
              "footprint_3d.lateral_cell_mm=10", "--set",
              std::string("ground.bekker.wong_reece.enabled=") + (wong_reece ? "true" : "false")});
@@ -50,7 +51,7 @@ TEST_F(WongReeceFlexibleCli, TheDefaultTyreTakesWongReecesStressOnBothPatches) {
 }
 
 TEST_F(WongReeceFlexibleCli, ABadCoefficientIsRefusedNamingItsKey) {
-  const auto r = run({"traction", kWrCliConfig, "--ground", kWrCliLete, "--load", "3000", "--slip",
+  const auto r = run({"traction", kConfig3d, "--ground", kLeteSandYaml, "--load", "3000", "--slip",
                       "0.1", "--set", "ground.bekker.wong_reece.enabled=true", "--set",
                       "ground.bekker.wong_reece.c2=1.5"});
   EXPECT_EQ(r.exit_code, 2);
@@ -64,9 +65,9 @@ TEST_F(WongReeceFlexibleCli, ABadCoefficientIsRefusedNamingItsKey) {
 // cell's depth settles there).
 TEST_F(WongReeceFlexibleCli, ACaseRolledWithAShorterReachSaysSo) {
   const std::vector<std::string> args = {"traction",
-                                         kWrCliSource + "/configs/sf350_2d_table3.yaml",
+                                         kSrc + "/configs/sf350_2d_table3.yaml",
                                          "--ground",
-                                         kWrCliLete,
+                                         kLeteSandYaml,
                                          "--load",
                                          "2500",
                                          "--slip",

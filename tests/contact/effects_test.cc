@@ -13,13 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/predictor.h"
 
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 const std::string kCoarseMesh = "contact.unit_length_mm=2";
 constexpr double kLoad_N = 4000;
 
@@ -34,7 +35,7 @@ constexpr double kEquilibrium = 1e-9;
 TyreConfig config_with(const std::vector<std::string>& overrides = {}) {
   std::vector<std::string> all{kCoarseMesh};
   all.insert(all.end(), overrides.begin(), overrides.end());
-  return load_tyre_config(kConfig, all);
+  return load_tyre_config(kConfig2d, all);
 }
 
 // One model for every test: building it (hammer data, mode identification, kernels) is the

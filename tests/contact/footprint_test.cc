@@ -7,23 +7,24 @@
 #include <cmath>
 #include <string>
 
+#include "../support/data_paths.h"
 #include "modaltyre/modal/hammer_data.h"
 
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 const std::string kFig5 = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_fig5.yaml";
 
 // Sum of forces and symmetry are exact up to rounding in direct solves.
-constexpr double kEquilibrium = 1e-9;
+constexpr double kFootprintEquilibrium = 1e-9;
 constexpr double kSymmetry = 1e-9;
 // The mesh-convergence requirement: doubling n changes sinking and length < 0.5 %.
 constexpr double kMeshChange = 0.005;
 
 TyreModel model_with(const std::vector<std::string>& overrides) {
-  return build_tyre_model(load_tyre_config(kConfig, overrides));
+  return build_tyre_model(load_tyre_config(kConfig2d, overrides));
 }
 
 TEST(Footprint, EquilibriumAndComplementarityAtEveryTable3Load) {
@@ -36,7 +37,7 @@ TEST(Footprint, EquilibriumAndComplementarityAtEveryTable3Load) {
       sum += u.fz_N;
       EXPECT_GE(u.fz_N, 0.0);  // no tension
     }
-    EXPECT_NEAR(sum, F, kEquilibrium * F);
+    EXPECT_NEAR(sum, F, kFootprintEquilibrium * F);
     EXPECT_LT(r.complementarity_residual, 1e-9);
     for (double h : r.contour_height_m) EXPECT_GE(h, 0.0);  // no penetration
   }
@@ -58,8 +59,8 @@ TEST(Footprint, HorizontalForceShiftsThePatchAndKeepsEquilibrium) {
   ASSERT_TRUE(r.ok()) << r.message;
   double fz = 0, fx = 0, moment = 0;
   for (const auto& u : r.units) fz += u.fz_N, fx += u.fx_N, moment += u.fz_N * u.x_m;
-  EXPECT_NEAR(fz, 5478, kEquilibrium * 5478);
-  EXPECT_NEAR(fx, 800, kEquilibrium * 5478);
+  EXPECT_NEAR(fz, 5478, kFootprintEquilibrium * 5478);
+  EXPECT_NEAR(fx, 800, kFootprintEquilibrium * 5478);
   EXPECT_GT(std::abs(moment / fz), 1e-5);  // the pressure centre moves off the centre
 }
 

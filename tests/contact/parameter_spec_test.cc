@@ -11,14 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/effects.h"
 
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig2d = MODALTYRE_SOURCE_DIR "/configs/sf350_2d_table3.yaml";
-const std::string kConfig3d = MODALTYRE_SOURCE_DIR "/configs/sf350.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kConfig3d;
 
 // A value inside a search range: its geometric mean when positive, else its midpoint.
 double inside(const SearchRange& r) {

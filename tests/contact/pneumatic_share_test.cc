@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/errors.h"
 #include "patch3d_fixture.h"
@@ -21,7 +22,7 @@
 namespace modaltyre::contact::testing {
 namespace {
 
-const std::string kConfig2d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 
 Prediction predict_at(const TyreModel& model, const TyreConfig& c, double load_N,
                       double pressure_kPa) {

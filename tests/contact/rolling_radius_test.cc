@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../../contact/src/traction_kinematics.h"
+#include "../support/data_paths.h"
 #include "modaltyre/contact/traction.h"
 #include "modaltyre/contact/traction_curve.h"
 
@@ -18,8 +19,8 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig2d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-const std::string kConfig3d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kConfig3d;
 
 TEST(ContourSlip, OnTheRigidWheelsCircleItIsWongsShearDisplacement) {
   // j(theta) = R [(theta1 - theta) - rho (sin theta1 - sin theta)], marched over chords of the

@@ -11,21 +11,22 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/traction.h"
 #include "modaltyre/core/errors.h"
 
 namespace modaltyre::contact {
 namespace {
 
-const std::string kSoilFxSrc = MODALTYRE_SOURCE_DIR;
-const std::string kSoilFxConfig = kSoilFxSrc + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kSrc;
 const std::vector<EffectId> kSoilFx = {EffectId::slip_sinkage, EffectId::wong_reece_stress,
                                        EffectId::bulldozing, EffectId::soil_unloading};
 
 // The 2D SF-350 at 2 mm units on a soil file with `--set ground...` overrides.
 TyreConfig soilfx_config(const std::string& soil, const std::vector<std::string>& sets = {}) {
-  TyreConfig c = load_tyre_config(kSoilFxConfig, {"contact.unit_length_mm=2"});
-  c.ground = ground::load_ground_file(kSoilFxSrc + "/configs/soils/" + soil, sets);
+  TyreConfig c = load_tyre_config(kConfig2d, {"contact.unit_length_mm=2"});
+  c.ground = ground::load_ground_file(kSrc + "/configs/soils/" + soil, sets);
   return c;
 }
 
@@ -73,14 +74,14 @@ TEST(SoilEffects, AreOptionsOfGroundOffInEveryBundledSoilAndRefusedOnARoad) {
   EXPECT_EQ(effect_info(EffectId::wong_reece_stress).regime, ConditionId::slip);
   EXPECT_EQ(effect_info(EffectId::bulldozing).regime, ConditionId::load_N);
   EXPECT_EQ(effect_info(EffectId::soil_unloading).regime, ConditionId::load_N);
-  for (const auto& f : std::filesystem::directory_iterator(kSoilFxSrc + "/configs/soils")) {
-    TyreConfig c = load_tyre_config(kSoilFxConfig);
+  for (const auto& f : std::filesystem::directory_iterator(kSrc + "/configs/soils")) {
+    TyreConfig c = load_tyre_config(kConfig2d);
     c.ground = ground::load_ground_file(f.path().string());
     for (EffectId id : kSoilFx)
       EXPECT_FALSE(effect_enabled(c, id)) << f.path() << " " << effect_info(id).name;
   }
   // The default tyre on its rigid road: every soil effect refused, naming the road.
-  const TyreConfig road = load_tyre_config(kSoilFxSrc + "/configs/sf350.yaml");
+  const TyreConfig road = load_tyre_config(kSrc + "/configs/sf350.yaml");
   for (EffectId id : kSoilFx) {
     EXPECT_NE(effect_refusal(road, id).find("rigid road"), std::string::npos)
         << effect_refusal(road, id);
@@ -88,8 +89,8 @@ TEST(SoilEffects, AreOptionsOfGroundOffInEveryBundledSoilAndRefusedOnARoad) {
   }
   // A Kelvin-Voigt soil is not a Bekker soil.
   TyreConfig kv =
-      load_tyre_config(kSoilFxConfig, {"ground.model=kelvin_voigt", "ground.kelvin_voigt.E2_MPa=2",
-                                       "ground.kelvin_voigt.layer_mm=200"});
+      load_tyre_config(kConfig2d, {"ground.model=kelvin_voigt", "ground.kelvin_voigt.E2_MPa=2",
+                                   "ground.kelvin_voigt.layer_mm=200"});
   EXPECT_NE(effect_refusal(kv, EffectId::slip_sinkage).find("kelvin_voigt soil"),
             std::string::npos);
   // Wong and Reece's distribution is a candidate of the rigid wheel and of the flexible tyre
@@ -191,7 +192,7 @@ TEST(SoilEffects, EachMovesTheTractionOutputsItListsAndNoOther) {
 // 3.2) and the flexible tyre (9.1). Off (eta2 = 0) and standing (V = 0) are the elastic law bit
 // for bit; on at 5 km/h it moves every output it lists; refused on a Bekker soil.
 // The 2D SF-350 (or the default 3D config, 10 mm columns) at 2 mm units on section 3.2's soil.
-TyreConfig soilfx_kelvin_voigt(const std::string& config = kSoilFxConfig) {
+TyreConfig soilfx_kelvin_voigt(const std::string& config = kConfig2d) {
   std::vector<std::string> sets = {"contact.unit_length_mm=2",
                                    "ground.model=kelvin_voigt",
                                    "ground.kelvin_voigt.E2_MPa=2",
@@ -201,7 +202,7 @@ TyreConfig soilfx_kelvin_voigt(const std::string& config = kSoilFxConfig) {
                                    "ground.kelvin_voigt.friction_angle_deg=30",
                                    "ground.kelvin_voigt.shear_modulus_K_mm=25"};
   // (on the 2D config a footprint_3d key would make it a 3D one)
-  if (config != kSoilFxConfig) sets.push_back("footprint_3d.lateral_cell_mm=10");
+  if (config != kConfig2d) sets.push_back("footprint_3d.lateral_cell_mm=10");
   return load_tyre_config(config, sets);
 }
 
@@ -247,7 +248,7 @@ TEST(SoilEffects, SoilViscosityActsThroughTheSpeedOnTheFlexibleTyre) {
   const TyreConfig two_d = soilfx_kelvin_voigt();
   ASSERT_FALSE(two_d.footprint_3d.has_value());
   soilfx_viscosity_moves_its_outputs(two_d, false);
-  const TyreConfig three_d = soilfx_kelvin_voigt(kSoilFxSrc + "/configs/sf350.yaml");
+  const TyreConfig three_d = soilfx_kelvin_voigt(kSrc + "/configs/sf350.yaml");
   ASSERT_TRUE(three_d.footprint_3d.has_value());  // the default tyre's 3D patch
   soilfx_viscosity_moves_its_outputs(three_d, false);
 }

@@ -11,15 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/traction.h"
 #include "modaltyre/ground/kelvin_voigt_soil.h"
 
 namespace modaltyre::contact {
 namespace {
 
-const std::string kRateSrc = MODALTYRE_SOURCE_DIR;
-const std::string kRate2d = kRateSrc + "/configs/sf350_2d_table3.yaml";
-const std::string kRate3d = kRateSrc + "/configs/sf350.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kConfig3d;
 
 // Section 3.2's soil: E2 2 MPa over H 200 mm, k_E as given; frictionless unless `shear`.
 std::vector<std::string> rate_soil(double k_E, double eta2_kPa_s, bool shear = false) {
@@ -111,10 +111,11 @@ TEST(SoilRateTerm, TheUnitLawIsTheRelaxationOverAGroundPointsPassage) {
 // path: the same result bit for bit, on the 2D patch and the 3D patch (the JSON of `traction`
 // was also compared byte for byte with the code before the rate term).
 TEST(RollingOnAViscousSoil, OffIsTheElasticRollingBitForBit) {
-  for (const std::string& config : {kRate2d, kRate3d}) {
+  for (const std::string& config : {kConfig2d, kConfig3d}) {
     const std::vector<std::string> mesh = {"contact.unit_length_mm=2",
                                            "footprint_3d.lateral_cell_mm=10"};
-    const std::vector<std::string> m = config == kRate2d ? std::vector<std::string>{mesh[0]} : mesh;
+    const std::vector<std::string> m =
+        config == kConfig2d ? std::vector<std::string>{mesh[0]} : mesh;
     const auto elastic = rate_roll(config, rate_plus(m, rate_soil(0.7, 0, true)), 5, {0.0, 0.2});
     const auto standing = rate_roll(config, rate_plus(m, rate_soil(0.7, 50, true)), 0, {0.0, 0.2});
     const auto still = rate_roll(config, rate_plus(m, rate_soil(0.7, 0, true)), 0, {0.0, 0.2});
@@ -138,10 +139,10 @@ TEST(RollingOnAViscousSoil, AVeryStiffTyreRollsAsTheRigidWheel) {
   for (double k_E : {1.0, 0.7}) {
     const auto soil = rate_soil(k_E, 50);
     const TractionResult wheel =
-        rate_roll(kRate2d, rate_plus({"contact.unit_length_mm=1"}, soil), 5, {0.0}, true)[0];
+        rate_roll(kConfig2d, rate_plus({"contact.unit_length_mm=1"}, soil), 5, {0.0}, true)[0];
     std::vector<double> Rc;
     for (const char* u : {"contact.unit_length_mm=1", "contact.unit_length_mm=0.5"}) {
-      const TractionResult t = rate_roll(kRate2d, rate_plus(rate_plus(stiff, {u}), soil), 5)[0];
+      const TractionResult t = rate_roll(kConfig2d, rate_plus(rate_plus(stiff, {u}), soil), 5)[0];
       EXPECT_NEAR(t.soil_sinkage_m, wheel.soil_sinkage_m, 1e-3 * wheel.soil_sinkage_m) << u;
       EXPECT_NEAR(t.exit_angle_rad, wheel.exit_angle_rad, 0.2 * M_PI / 180) << u;
       Rc.push_back(t.compaction_resistance_N);
@@ -162,7 +163,7 @@ TEST(RollingOnAViscousSoil, TheRateTermConvergesWithTheUnitLength) {
   std::vector<double> Rc, z;
   for (const char* u :
        {"contact.unit_length_mm=2", "contact.unit_length_mm=1", "contact.unit_length_mm=0.5"}) {
-    const TractionResult t = rate_roll(kRate2d, rate_plus({u}, rate_soil(0.7, 50)), 5)[0];
+    const TractionResult t = rate_roll(kConfig2d, rate_plus({u}, rate_soil(0.7, 50)), 5)[0];
     Rc.push_back(t.compaction_resistance_N);
     z.push_back(t.soil_sinkage_m);
   }
@@ -181,7 +182,7 @@ TEST(RollingOnAViscousSoil, TheRateTermConvergesWithTheUnitLength) {
 // growth slowing as the soil stiffens).
 TEST(RollingOnAViscousSoil, TheSoilStiffensAndResistsMoreWithSpeedAndViscosity) {
   auto at = [&](double eta2, double V, const char* unit = "contact.unit_length_mm=1") {
-    return rate_roll(kRate2d, rate_plus({unit}, rate_soil(0.7, eta2, true)), V, {0.1})[0];
+    return rate_roll(kConfig2d, rate_plus({unit}, rate_soil(0.7, eta2, true)), V, {0.1})[0];
   };
   const TractionResult v1 = at(50, 1), v5 = at(50, 5), v20 = at(50, 20);
   EXPECT_GT(v1.soil_sinkage_m, v5.soil_sinkage_m);

@@ -5,17 +5,18 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/traction.h"
 
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 
 // LETE sand from its soil file with the slip sinkage's keys set as `--set` would.
 std::vector<TractionResult> lete_curve(const std::vector<std::string>& soil_sets) {
-  TyreConfig c = load_tyre_config(kConfig, {"contact.unit_length_mm=2"});
+  TyreConfig c = load_tyre_config(kConfig2d, {"contact.unit_length_mm=2"});
   c.ground = modaltyre::ground::load_ground_file(
       std::string(MODALTYRE_SOURCE_DIR) + "/configs/soils/lete_sand.yaml", soil_sets);
   const TyreModel m = build_tyre_model(c);

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
+#include "../support/lete_sand.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/contact/traction.h"
 #include "modaltyre/core/errors.h"
@@ -16,14 +18,10 @@ namespace {
 using namespace modaltyre::contact;
 namespace gr = modaltyre::ground;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-const std::vector<std::string> kLete = {"ground.model=bekker",
-                                        "ground.bekker.n=0.79",
-                                        "ground.bekker.k_c=102",
-                                        "ground.bekker.k_phi=5301",
-                                        "ground.bekker.cohesion_kPa=1.3",
-                                        "ground.bekker.friction_angle_deg=31.1",
-                                        "ground.bekker.shear_modulus_K_mm=12"};
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kLeteBekkerShear;
+using modaltyre_test::plus;
 // A tyre a thousand times stiffer than the SF-350 (carcass and tread): its contour is the
 // undeformed circle to ~0.1 % of the soil's sinkage.
 const std::vector<std::string> kStiffTyre = {"modal.compliance_scale=0.001",
@@ -31,12 +29,7 @@ const std::vector<std::string> kStiffTyre = {"modal.compliance_scale=0.001",
 
 TyreModel model_with(std::vector<std::string> overrides, double unit_mm) {
   overrides.push_back("contact.unit_length_mm=" + std::to_string(unit_mm));
-  return build_tyre_model(load_tyre_config(kConfig, overrides));
-}
-
-std::vector<std::string> plus(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
+  return build_tyre_model(load_tyre_config(kConfig2d, overrides));
 }
 
 Prediction footprint(const TyreModel& m, double load_N) {
@@ -91,7 +84,7 @@ TEST(TyreOnSoil, AnElasticKelvinVoigtGroundIsTheSoilComplianceEffect) {
 // sand against the rigid-wheel integral (ground/rigid_wheel.h) of the same radius and width.
 TEST(TyreOnSoil, AStiffTyreSinksAsTheRigidWheel) {
   constexpr double kDiscretisation = 0.01;  // 1 mm units on a ~180 mm contact, tyre 0.1 %
-  const TyreModel m = model_with(plus(kLete, kStiffTyre), 1);
+  const TyreModel m = model_with(plus(kLeteBekkerShear, kStiffTyre), 1);
   const gr::RigidWheel wheel{m.config.outer_radius_m, m.config.tread.width_m};
   for (double load : {2000.0, 5000.0}) {
     const Prediction p = footprint(m, load);
@@ -104,7 +97,7 @@ TEST(TyreOnSoil, AStiffTyreSinksAsTheRigidWheel) {
 
 // Done-when: the flexible tyre sinks less than the rigid wheel and deflects.
 TEST(TyreOnSoil, TheFlexibleTyreSinksLessThanTheRigidWheelAndDeflects) {
-  const TyreModel m = model_with(kLete, 2);
+  const TyreModel m = model_with(kLeteBekkerShear, 2);
   const gr::RigidWheel wheel{m.config.outer_radius_m, m.config.tread.width_m};
   for (double load : {2000.0, 5000.0}) {
     const Prediction p = footprint(m, load);
@@ -141,7 +134,7 @@ TEST(TyreOnSoil, RollingOnAnElasticFrictionlessSoilDissipatesNothing) {
 // The rolling tyre on LETE sand against the rigid wheel of its outer radius: the flexible tyre
 // sinks less, resists less, and its rut is its sinkage (rigid-plastic soil).
 TEST(TyreOnSoil, TheRollingTyreSinksAndResistsLessThanTheRigidWheel) {
-  const TyreModel m = model_with(kLete, 1);
+  const TyreModel m = model_with(kLeteBekkerShear, 1);
   TractionOptions rigid;
   rigid.rigid = true;
   for (double s : {0.0, 0.2}) {
@@ -159,7 +152,7 @@ TEST(TyreOnSoil, TheRollingTyreSinksAndResistsLessThanTheRigidWheel) {
 // Done-when: drawbar pull rises monotonically with slip; a second pass adds less sinkage than the
 // first; the rut is no deeper than the sinkage.
 TEST(TyreOnSoil, DrawbarPullRisesWithSlipAndASecondPassSinksLess) {
-  const TyreModel m = model_with(kLete, 2);
+  const TyreModel m = model_with(kLeteBekkerShear, 2);
   TractionOptions o;
   o.passes = 2;
   std::vector<TractionCase> cases;
@@ -188,17 +181,15 @@ namespace {
 using namespace modaltyre::contact;
 namespace gr = modaltyre::ground;
 
-const std::string kDefault = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
-
 // The 3D patch (the default config) on soil: a very stiff soil is the rigid road (the issue's
 // 0.5 %), and on LETE sand the tyre deflects and sinks less than the rigid wheel of its radius
 // and tread width.
 TEST(TyreOnSoil3D, AVeryStiffSoilReproducesTheRigidRoadFootprint) {
   constexpr double kStiffSoilLimit = 0.005;
-  const TyreConfig road_config = load_tyre_config(kDefault);
+  const TyreConfig road_config = load_tyre_config(kConfig3d);
   const TyreConfig soil_config =
-      load_tyre_config(kDefault, {"ground.model=bekker", "ground.bekker.n=1", "ground.bekker.k_c=0",
-                                  "ground.bekker.k_phi=1e9"});
+      load_tyre_config(kConfig3d, {"ground.model=bekker", "ground.bekker.n=1",
+                                   "ground.bekker.k_c=0", "ground.bekker.k_phi=1e9"});
   const TyreModel road = build_tyre_model(road_config), soil = build_tyre_model(soil_config);
   const Prediction a = predict(road, road_config.default_conditions(4000));
   const Prediction b = predict(soil, soil_config.default_conditions(4000));
@@ -214,8 +205,8 @@ TEST(TyreOnSoil3D, AVeryStiffSoilReproducesTheRigidRoadFootprint) {
 
 TEST(TyreOnSoil3D, TheDefaultTyreSinksLessThanTheRigidWheelAndDeflects) {
   const TyreConfig c =
-      load_tyre_config(kDefault, {"ground.model=bekker", "ground.bekker.n=0.79",
-                                  "ground.bekker.k_c=102", "ground.bekker.k_phi=5301"});
+      load_tyre_config(kConfig3d, {"ground.model=bekker", "ground.bekker.n=0.79",
+                                   "ground.bekker.k_c=102", "ground.bekker.k_phi=5301"});
   const TyreModel m = build_tyre_model(c);
   const Prediction p = predict(m, c.default_conditions(4000));
   ASSERT_TRUE(p.ok()) << p.message;
@@ -227,7 +218,7 @@ TEST(TyreOnSoil3D, TheDefaultTyreSinksLessThanTheRigidWheelAndDeflects) {
   EXPECT_NEAR(p.tyre_deflection_mm + p.soil_sinkage_mm, p.sinking_mm, 1e-9);
   EXPECT_LT(p.footprint.equilibrium_residual, 1e-9);
   // The soil spreads the load: a longer, lower-pressure footprint than on the road.
-  const TyreModel road = build_tyre_model(load_tyre_config(kDefault));
+  const TyreModel road = build_tyre_model(load_tyre_config(kConfig3d));
   const Prediction q = predict(road, road.config.default_conditions(4000));
   EXPECT_GT(p.length_mm, q.length_mm);
 }

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
+#include "../support/lete_sand.h"
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/contact/traction.h"
 
@@ -14,19 +16,9 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kDefault = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
-const std::vector<std::string> kLete = {"ground.model=bekker",
-                                        "ground.bekker.n=0.79",
-                                        "ground.bekker.k_c=102",
-                                        "ground.bekker.k_phi=5301",
-                                        "ground.bekker.cohesion_kPa=1.3",
-                                        "ground.bekker.friction_angle_deg=31.1",
-                                        "ground.bekker.shear_modulus_K_mm=12"};
-
-std::vector<std::string> plus(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kLeteBekkerShear;
+using modaltyre_test::plus;
 
 // The 3D config's 2D patch: its tread width as the contact width, no footprint_3d.
 TyreConfig two_d(TyreConfig c) {
@@ -42,7 +34,8 @@ TyreConfig two_d(TyreConfig c) {
 TEST(Traction3D, AFlatCrownRollsAsThe2DPatchOfTheSameWidth) {
   constexpr double kSame = 0.005;  // the brief's 0.5 %
   const TyreConfig c3 = load_tyre_config(
-      kDefault, plus(kLete, {"footprint_3d.crown.shape=flat", "contact.unit_length_mm=1"}));
+      kConfig3d,
+      plus(kLeteBekkerShear, {"footprint_3d.crown.shape=flat", "contact.unit_length_mm=1"}));
   const TyreModel m3 = build_tyre_model(c3), m2 = build_tyre_model(two_d(c3));
   std::vector<TractionCase> cases;
   for (double s : {0.0, 0.1, 0.3}) cases.push_back({3000, s});
@@ -73,11 +66,11 @@ TEST(Traction3D, AVeryStiffSoilRollsOnTheRoadsFootprint) {
   constexpr double kStiffSoilLimit = 0.005;
   const std::vector<std::string> mesh = {"contact.unit_length_mm=1",
                                          "footprint_3d.lateral_cell_mm=5"};
-  const TyreConfig road = load_tyre_config(kDefault, mesh);
+  const TyreConfig road = load_tyre_config(kConfig3d, mesh);
   const TyreConfig soil = load_tyre_config(
-      kDefault, plus(mesh, {"ground.model=bekker", "ground.bekker.n=1", "ground.bekker.k_c=0",
-                            "ground.bekker.k_phi=1e9", "ground.bekker.cohesion_kPa=0",
-                            "ground.bekker.friction_angle_deg=0"}));
+      kConfig3d, plus(mesh, {"ground.model=bekker", "ground.bekker.n=1", "ground.bekker.k_c=0",
+                             "ground.bekker.k_phi=1e9", "ground.bekker.cohesion_kPa=0",
+                             "ground.bekker.friction_angle_deg=0"}));
   const TyreModel mr = build_tyre_model(road), ms = build_tyre_model(soil);
   const Patch3d patch(mr, *road.footprint_3d);
   const Patch3dResult p = patch.solve(4000);
@@ -96,7 +89,8 @@ TEST(Traction3D, AVeryStiffSoilRollsOnTheRoadsFootprint) {
 // less sinkage than the first; the crown's columns sink unequally (the centre deepest).
 TEST(Traction3D, DrawbarPullRisesWithSlipAndTheRutIsNoDeeperThanTheSinkage) {
   const TyreConfig c = load_tyre_config(
-      kDefault, plus(kLete, {"contact.unit_length_mm=2", "footprint_3d.lateral_cell_mm=10"}));
+      kConfig3d,
+      plus(kLeteBekkerShear, {"contact.unit_length_mm=2", "footprint_3d.lateral_cell_mm=10"}));
   const TyreModel m = build_tyre_model(c);
   TractionOptions o;
   o.passes = 2;

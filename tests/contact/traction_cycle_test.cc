@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/traction.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/contact/tyre_model.h"
@@ -21,7 +22,7 @@ namespace {
 
 using detail::CycleGuard;
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
+using modaltyre_test::kSrc;
 
 Eigen::VectorXd vec(double a, double b) { return (Eigen::VectorXd(2) << a, b).finished(); }
 
@@ -90,9 +91,9 @@ TEST(RollingCycle, TheGuardNeverTakesACreepADampedOscillationOrAWobbleForACycle)
 // cycled (docs/soil.md section 10). Its rear unit rides on the rut's rigid floor and leaves it.
 TyreConfig stiff_tyre_on_lete_sand() {
   TyreConfig c = load_tyre_config(
-      kSource + "/configs/sf350_2d_table3.yaml",
+      kSrc + "/configs/sf350_2d_table3.yaml",
       {"contact.unit_length_mm=4", "modal.compliance_scale=0.05", "tread.modulus_MPa=100"});
-  c.ground = ground::load_ground_file(kSource + "/configs/soils/lete_sand.yaml", {});
+  c.ground = ground::load_ground_file(kSrc + "/configs/soils/lete_sand.yaml", {});
   return c;
 }
 

@@ -13,6 +13,7 @@
 #include <ostream>
 #include <string>
 
+#include "../support/data_paths.h"
 #include "modaltyre/core/errors.h"
 
 namespace {
@@ -20,9 +21,9 @@ namespace {
 using modaltyre::InputError;
 using modaltyre::contact::load_tyre_config;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string k3d = kSrc + "/configs/sf350.yaml";
-const std::string k2d = kSrc + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kSrc;
 
 struct Bound {
   std::string name;    // test name
@@ -64,37 +65,39 @@ TEST_P(PhysicalLowerBound, TheBoundItselfIsAccepted) {
 INSTANTIATE_TEST_SUITE_P(
     Keys, PhysicalLowerBound,
     ::testing::Values(
-        Bound{"TreadWidth", k3d, "footprint_3d.tread_width_mm", "20", "[20, 2000]"},
-        Bound{"LateralBeltBending", k3d, "footprint_3d.lateral_belt.bending_stiffness_Nm", "0.18",
-              "[0.18, 1e+12]"},
-        Bound{"TanDelta", k2d, "tread.tan_delta", "0.01", "0 (an elastic tread)"},
-        Bound{"HubMass", k2d, "transient.hub_mass_kg", "0.1", "[0.1, 100000]"},
-        Bound{"TreadReferenceFrequency", k2d, "transient.tread_reference_frequency_hz", "0.001",
-              "[0.001, 10000]"},
-        Bound{"LoadHoldLoad", k2d, "transient.load_hold.load_N", "10", "[10, 1e+07]"},
-        Bound{"FreeVibrationLoad", k2d, "transient.free_vibration.load_N", "10", "[10, 1e+07]"},
-        Bound{"FreeVibrationInitialLoad", k2d, "transient.free_vibration.initial_load_N", "10",
+        Bound{"TreadWidth", kConfig3d, "footprint_3d.tread_width_mm", "20", "[20, 2000]"},
+        Bound{"LateralBeltBending", kConfig3d, "footprint_3d.lateral_belt.bending_stiffness_Nm",
+              "0.18", "[0.18, 1e+12]"},
+        Bound{"TanDelta", kConfig2d, "tread.tan_delta", "0.01", "0 (an elastic tread)"},
+        Bound{"HubMass", kConfig2d, "transient.hub_mass_kg", "0.1", "[0.1, 100000]"},
+        Bound{"TreadReferenceFrequency", kConfig2d, "transient.tread_reference_frequency_hz",
+              "0.001", "[0.001, 10000]"},
+        Bound{"LoadHoldLoad", kConfig2d, "transient.load_hold.load_N", "10", "[10, 1e+07]"},
+        Bound{"FreeVibrationLoad", kConfig2d, "transient.free_vibration.load_N", "10",
               "[10, 1e+07]"},
-        Bound{"RollingLoad", k2d, "transient.rolling.load_N", "10", "[10, 1e+07]"},
-        Bound{"CleatLoad", k2d, "transient.cleat.load_N", "10", "[10, 1e+07]"},
+        Bound{"FreeVibrationInitialLoad", kConfig2d, "transient.free_vibration.initial_load_N",
+              "10", "[10, 1e+07]"},
+        Bound{"RollingLoad", kConfig2d, "transient.rolling.load_N", "10", "[10, 1e+07]"},
+        Bound{"CleatLoad", kConfig2d, "transient.cleat.load_N", "10", "[10, 1e+07]"},
         // The output step of sf350_2d_table3.yaml is 2 ms.
-        Bound{"RollingRamp", k2d, "transient.rolling.ramp_s", "0.002",
+        Bound{"RollingRamp", kConfig2d, "transient.rolling.ramp_s", "0.002",
               "0 (a speed step) or at least one output step (transient.output_step_ms) in [0.002"},
-        Bound{"CleatRamp", k2d, "transient.cleat.ramp_s", "0.002",
+        Bound{"CleatRamp", kConfig2d, "transient.cleat.ramp_s", "0.002",
               "0 (a speed step) or at least one output step (transient.output_step_ms) in [0.002"},
         // Four candidate units of 0.5 mm.
-        Bound{"CleatLength", k2d, "transient.cleat.length_mm", "2", "[2, 2000]"}),
+        Bound{"CleatLength", kConfig2d, "transient.cleat.length_mm", "2", "[2, 2000]"}),
     [](const ::testing::TestParamInfo<Bound>& info) { return info.param.name; });
 
 TEST(PhysicalLowerBounds, ZeroStillMeansOffForTheRampsAndTheLossFactor) {
-  EXPECT_EQ(load_tyre_config(k2d, {"transient.rolling.ramp_s=0"}).transient.rolling.ramp_s, 0);
-  EXPECT_EQ(load_tyre_config(k2d, {"transient.cleat.ramp_s=0"}).transient.cleat.ramp_s, 0);
-  EXPECT_EQ(load_tyre_config(k2d, {"tread.tan_delta=0"}).tread.tan_delta, 0);
+  EXPECT_EQ(load_tyre_config(kConfig2d, {"transient.rolling.ramp_s=0"}).transient.rolling.ramp_s,
+            0);
+  EXPECT_EQ(load_tyre_config(kConfig2d, {"transient.cleat.ramp_s=0"}).transient.cleat.ramp_s, 0);
+  EXPECT_EQ(load_tyre_config(kConfig2d, {"tread.tan_delta=0"}).tread.tan_delta, 0);
 }
 
 // In a file the message names the file and the key's line.
 TEST(PhysicalLowerBounds, AFileValueIsNamedAtItsLine) {
-  std::ifstream in(k2d);
+  std::ifstream in(kConfig2d);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string from = "hub_mass_kg: 20";
   const auto at = text.find(from);

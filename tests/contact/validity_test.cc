@@ -7,12 +7,13 @@
 
 #include <cmath>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/predictor.h"
 
 namespace modaltyre::contact {
 namespace {
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 
 TEST(Validity, LimitsAreTwelvePercentOfR0InSinkingAndR0InContactLength) {
   TyreConfig c;
@@ -34,7 +35,7 @@ TEST(Validity, LimitsAreTwelvePercentOfR0InSinkingAndR0InContactLength) {
 }
 
 TEST(Validity, Table3LoadsAreInsideAndThirtyKilonewtonsOutside) {
-  const TyreConfig cfg = load_tyre_config(kConfig, {"contact.unit_length_mm=2"});
+  const TyreConfig cfg = load_tyre_config(kConfig2d, {"contact.unit_length_mm=2"});
   const TyreModel model = build_tyre_model(cfg);
   for (double load : {2131.0, 8321.0}) {
     const Prediction p = predict(model, cfg.default_conditions(load));

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/effects.h"
 #include "modaltyre/contact/ground_contact.h"
 #include "modaltyre/contact/traction.h"
@@ -24,9 +25,9 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kWrSrc = MODALTYRE_SOURCE_DIR;
-const std::string kWr2d = kWrSrc + "/configs/sf350_2d_table3.yaml";
-const std::string kWr3d = kWrSrc + "/configs/sf350.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kSrc;
 using Sets = std::vector<std::string>;
 const Sets kWrOn = {"ground.bekker.wong_reece.enabled=true"};
 // The default tyre coarse: 2 mm sections, 10 mm columns.
@@ -36,7 +37,7 @@ const std::vector<std::string> kWrCoarse3d = {"contact.unit_length_mm=2",
 // A config on LETE sand (configs/soils/lete_sand.yaml) with the soil's overrides `ground`.
 TyreConfig wr_config(const std::string& config, const Sets& sets, const Sets& ground = {}) {
   TyreConfig c = load_tyre_config(config, sets);
-  c.ground = modaltyre::ground::load_ground_file(kWrSrc + "/configs/soils/lete_sand.yaml", ground);
+  c.ground = modaltyre::ground::load_ground_file(kSrc + "/configs/soils/lete_sand.yaml", ground);
   return c;
 }
 
@@ -76,8 +77,8 @@ TEST(WongReeceFlexible, OffAndAnEmptyRearRegionAreTodaysRollingBitForBit) {
       "ground.bekker.wong_reece.enabled=true", "ground.bekker.wong_reece.c1=0",
       "ground.bekker.wong_reece.c2=0", "ground.bekker.wong_reece.c3=0"};
   for (const auto& [config, mesh] :
-       {std::pair{kWr2d, std::vector<std::string>{"contact.unit_length_mm=2"}},
-        std::pair{kWr3d, kWrCoarse3d}}) {
+       {std::pair{kConfig2d, std::vector<std::string>{"contact.unit_length_mm=2"}},
+        std::pair{kConfig3d, kWrCoarse3d}}) {
     SCOPED_TRACE(config);
     const auto base = wr_roll(config, mesh, {}, slips);
     expect_same_bits(base, wr_roll(config, mesh, stated, slips));
@@ -92,7 +93,7 @@ struct WrReference {
 // pyTerramechanics' rigid wheel (R 294.8 mm, width 140 mm, LETE sand, c1 0.43, c2 0.32, c3 0) at
 // a load and slip (tests/data/wong_reece/reference.csv).
 WrReference wr_reference(double load_N, double slip) {
-  std::ifstream in(kWrSrc + "/tests/data/wong_reece/reference.csv");
+  std::ifstream in(kSrc + "/tests/data/wong_reece/reference.csv");
   std::string line;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#' || line[0] == 'l') continue;
@@ -120,7 +121,7 @@ TEST(WongReeceFlexible, AStiffTyreRollsAsTheRigidWheelUnderWongReecesStress) {
   TractionOptions o;
   o.slip_reference = SlipReference::unloaded;  // Wong's slip, the reference's
   const std::vector<double> slips = {0.1, 0.3};
-  const auto r = wr_roll(kWr2d, stiff, kWrOn, slips, o);
+  const auto r = wr_roll(kConfig2d, stiff, kWrOn, slips, o);
   for (std::size_t k = 0; k < r.size(); ++k) {
     const WrReference ref = wr_reference(3000, slips[k]);
     EXPECT_NEAR(r[k].soil_sinkage_m * 1e3, ref.sinkage_mm, kStiffLimit * ref.sinkage_mm);
@@ -134,8 +135,8 @@ TEST(WongReeceFlexible, AStiffTyreRollsAsTheRigidWheelUnderWongReecesStress) {
 // moving back), resists more and pulls less.
 TEST(WongReeceFlexible, TheDefaultTyreSinksMoreWithSlipAndPullsLess) {
   const std::vector<double> slips = {0.05, 0.2, 0.4};
-  const auto front = wr_roll(kWr3d, kWrCoarse3d, {}, slips);
-  const auto wr = wr_roll(kWr3d, kWrCoarse3d, kWrOn, slips);
+  const auto front = wr_roll(kConfig3d, kWrCoarse3d, {}, slips);
+  const auto wr = wr_roll(kConfig3d, kWrCoarse3d, kWrOn, slips);
   for (std::size_t k = 0; k < slips.size(); ++k) {
     EXPECT_GT(wr[k].soil_sinkage_m, 1.2 * front[k].soil_sinkage_m) << slips[k];
     EXPECT_LT(wr[k].drawbar_pull_N, front[k].drawbar_pull_N - 100) << slips[k];
@@ -153,7 +154,7 @@ TEST(WongReeceFlexible, TheDefaultTyreSinksMoreWithSlipAndPullsLess) {
 TEST(WongReeceFlexible, AFlatCrownRollsAsTheTwoDPatchOfTheSameWidth) {
   constexpr double kSame = 0.005;  // the brief's 0.5 %
   TyreConfig c3 =
-      wr_config(kWr3d, {"footprint_3d.crown.shape=flat", "contact.unit_length_mm=1"}, kWrOn);
+      wr_config(kConfig3d, {"footprint_3d.crown.shape=flat", "contact.unit_length_mm=1"}, kWrOn);
   TyreConfig c2 = c3;
   c2.tread.width_m = c2.footprint_3d->tread_width_m;
   c2.footprint_3d.reset();
@@ -187,7 +188,7 @@ TEST(WongReeceFlexible, AFlatCrownRollsAsTheTwoDPatchOfTheSameWidth) {
 // error under a third of the last rear cell's rut's on the same meshes.
 TEST(WongReeceFlexible, TheTwoDPatchConvergesUnderMeshRefinement) {
   auto roll = [](const char* unit, double reach) {
-    TyreConfig c = wr_config(kWr3d, {std::string("contact.unit_length_mm=") + unit}, kWrOn);
+    TyreConfig c = wr_config(kConfig3d, {std::string("contact.unit_length_mm=") + unit}, kWrOn);
     c.tread.width_m = c.footprint_3d->tread_width_m;
     c.footprint_3d.reset();
     TractionOptions o;
@@ -225,9 +226,8 @@ TEST(WongReeceFlexible, TheTwoDPatchConvergesUnderMeshRefinement) {
 TEST(WongReeceFlexible, TheDefaultTyreOnDiscoversMeshRollsAsOnItsOwn) {
   auto roll = [](const char* unit, double reach) {
     TyreConfig c = load_tyre_config(
-        kWr3d, {std::string("contact.unit_length_mm=") + unit, "contact.window_mm=420"});
-    c.ground =
-        modaltyre::ground::load_ground_file(kWrSrc + "/configs/soils/sandy_loam.yaml", kWrOn);
+        kConfig3d, {std::string("contact.unit_length_mm=") + unit, "contact.window_mm=420"});
+    c.ground = modaltyre::ground::load_ground_file(kSrc + "/configs/soils/sandy_loam.yaml", kWrOn);
     TractionOptions o;
     o.wong_reece_exit_reach = reach;
     return steady_traction(build_tyre_model(c), c.ground, {{3500, 0.2}}, o).front();
@@ -256,11 +256,11 @@ TEST(WongReeceFlexible, TheDefaultTyreOnDiscoversMeshRollsAsOnItsOwn) {
 TEST(WongReeceFlexible, ARunThatOrbitsWithTheExtrapolatedRutRollsWithAShorterReach) {
   auto roll = [](const char* unit, double reach) {
     TyreConfig c =
-        load_tyre_config(kWrSrc + "/configs/sf350_2d_table3.yaml",
+        load_tyre_config(kSrc + "/configs/sf350_2d_table3.yaml",
                          {std::string("contact.unit_length_mm=") + unit,
                           "modal.compliance_scale=0.599631", "tread.modulus_MPa=1.11304"});
     c.ground = modaltyre::ground::load_ground_file(
-        kWrSrc + "/configs/soils/lete_sand.yaml",
+        kSrc + "/configs/soils/lete_sand.yaml",
         {"ground.bekker.wong_reece.enabled=true", "ground.bekker.wong_reece.c1=0.457719",
          "ground.bekker.wong_reece.c2=0.266089"});
     TractionOptions o;
@@ -358,7 +358,7 @@ TEST(WongReeceFlexible, TheGroundContactSolvesAFlowingRear) {
 // The effect's switch on the default tyre moves every output it lists (a candidate there:
 // soil_effects.cc).
 TEST(WongReeceFlexible, TheEffectMovesTheDefaultTyresTractionOutputs) {
-  TyreConfig off = wr_config(kWr3d, kWrCoarse3d);
+  TyreConfig off = wr_config(kConfig3d, kWrCoarse3d);
   EXPECT_EQ(effect_refusal(off, EffectId::wong_reece_stress), "");
   TyreConfig on = off;
   enable_effect(on, EffectId::wong_reece_stress);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "modal_test_constants.h"
 #include "modaltyre/modal/hammer_data.h"
 #include "modaltyre/modal/modal_basis.h"
 #include "modaltyre/modal/mode_identification.h"
@@ -17,9 +18,10 @@
 namespace modaltyre::modal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kTwoPi = 2 * kPi;
-constexpr double kMu = 2.5, kR = 0.2948;  // ring of data/README
+using test::kMu;
+using test::kPi;
+using test::kR;
+using test::kTwoPi;
 const double kA2 = 1 / (kPi * kMu * kR);  // mass-normalised |c_r|^2 of a ring mode, k >= 1
 // Sums of <= 1000 terms of either sign, compared with the same sum in another order.
 constexpr double kSumRelTol = 1e-12;
@@ -228,7 +230,7 @@ TEST(CarcassKernel, PeriodicFftKernelsEqualDirectSums) {
   // direct O(terms * lags) sums, static and rolling, at every lag; rounding only.
   constexpr double kFftRoundoff = 1e-11;
   const int n = fft_friendly_size(1000);
-  EXPECT_EQ(n, 1000);  // 2^3 5^3
+  EXPECT_EQ(n, 1000);                        // 2^3 5^3
   EXPECT_EQ(fft_friendly_size(7409), 7500);  // nearest 2^a 3^b 5^c
   const ModalBasis basis = sf350_basis(n / 2);
   for (double speed : {0.0, 15.0}) {

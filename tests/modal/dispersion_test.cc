@@ -11,13 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "modal_test_constants.h"
 #include "modaltyre/modal/hammer_data.h"
 #include "modaltyre/modal/mode_identification.h"
 
 namespace modaltyre::modal {
 namespace {
 
-constexpr double kTwoPi = 6.28318530717958647692;
+using test::kTwoPi;
 // Exact data: a 3-unknown least-squares solve loses a few digits to the k^4 column's scale.
 constexpr double kExactRelTol = 1e-9;
 

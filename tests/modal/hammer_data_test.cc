@@ -14,16 +14,19 @@
 #include <vector>
 
 #include "../support/hammer_lines.h"
+#include "modal_test_constants.h"
 #include "modaltyre/core/errors.h"
 
-namespace modaltyre::modal {
+// The fixture is named like the reader's HammerData: in a namespace of its own, it hides that
+// type here only (not in the modal tests compiled after this file in a unity build).
+namespace modaltyre::modal::hammer_file {
 namespace {
 
 using modaltyre_test::hammer_lines;
 using modaltyre_test::set_field;
 
 namespace fs = std::filesystem;
-constexpr double kPi = 3.14159265358979323846;
+using test::kPi;
 
 class HammerData : public ::testing::Test {
  protected:
@@ -219,4 +222,4 @@ TEST_F(HammerData, NonUtf8Bytes) {
 }
 
 }  // namespace
-}  // namespace modaltyre::modal
+}  // namespace modaltyre::modal::hammer_file

@@ -10,10 +10,12 @@
 #include <random>
 #include <vector>
 
+#include "modal_test_constants.h"
+
 namespace modaltyre::modal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using test::kPi;
 // Noise-free data: the least-squares fit is exact up to rounding of an N <= 24 QR solve.
 constexpr double kExactTol = 1e-12;
 // Gaussian noise sigma per point gives a fitted coefficient error per component of

@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "modal_test_constants.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/modal/hammer_data.h"
 #include "modaltyre/modal/mode_identification.h"
@@ -15,9 +16,10 @@
 namespace modaltyre::modal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kTwoPi = 2 * kPi;
-constexpr double kMu = 2.5, kR = 0.2948;  // ring of data/README
+using test::kMu;
+using test::kPi;
+using test::kR;
+using test::kTwoPi;
 // Rounding only: products and sums of a few doubles.
 constexpr double kRoundTol = 1e-12;
 

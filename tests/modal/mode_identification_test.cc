@@ -14,14 +14,16 @@
 #include <string>
 #include <vector>
 
+#include "modal_test_constants.h"
 #include "modaltyre/modal/hammer_data.h"
 
 namespace modaltyre::modal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using test::kPi;
 // Ring mass normalisation of data/README: a^2 = 1/(pi mu R), 1/(2 pi mu R) for k = 0.
-constexpr double kMu = 2.5, kR = 0.2948;
+using test::kMu;
+using test::kR;
 // Measurement noise of the held-out tyre, as a fraction of the radial amplitude.
 constexpr double kNoise = 0.05;
 // Pair members of one order differ in frequency by this factor (slight non-axisymmetry).

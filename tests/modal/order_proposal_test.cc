@@ -8,12 +8,13 @@
 #include <cmath>
 #include <vector>
 
+#include "modal_test_constants.h"
 #include "modaltyre/modal/ring_model.h"
 
 namespace modaltyre::modal {
 namespace {
 
-constexpr double kTwoPi = 6.28318530717958647692;
+using test::kTwoPi;
 
 // mu 2.8 kg/m, R 0.3 m, T = 200 kPa x 0.15 m x R, EI 1.5 N m^2, k_r 2.2, k_t 0.7 MN/m^2.
 RingCoefficients planted() {

@@ -9,14 +9,15 @@
 #include <cmath>
 #include <vector>
 
+#include "modal_test_constants.h"
 #include "modaltyre/modal/ring_basis.h"
 
 namespace modaltyre::modal {
 namespace {
 
-constexpr double kTwoPi = 6.28318530717958647692;
+using test::kTwoPi;
 // Exact data through a 4-unknown least-squares solve: a few digits lost to column scaling.
-constexpr double kExactRelTol = 1e-8;
+constexpr double kRingExactRelTol = 1e-8;
 
 // A ring with every mechanism: mu 3 kg/m, R 0.3 m, T = 12 kN, EI 1.2 N m^2, k_r 2 MN/m^2,
 // k_t 0.6 MN/m^2 (a passenger tyre's order of magnitude).
@@ -37,7 +38,7 @@ TEST(RingModel, FrequenciesFollowTheEnergies) {
   const RingCoefficients c = p.per_mass();
   for (int n = 1; n <= 12; ++n) {
     const double expected = p.K(n) / (p.mu * (1 + 1.0 / (n * n)));
-    EXPECT_NEAR(c.omega_sq(n), expected, kExactRelTol * expected) << n;
+    EXPECT_NEAR(c.omega_sq(n), expected, kRingExactRelTol * expected) << n;
   }
   // n = 1: the rigid translation, mass 2 pi R mu on the stiffness pi R (k_r + k_t).
   EXPECT_NEAR(c.omega_sq(1), (p.kr + p.kt) / (2 * p.mu), 1e-9 * c.omega_sq(1));
@@ -51,9 +52,9 @@ TEST(RingModel, AnalyticLimitsOfBendingAndTensionAlone) {
     const double n2 = double(n) * n;
     // Soedel: the free inextensible ring, omega^2 = EI n^2 (n^2-1)^2 / (mu R^4 (n^2+1)).
     const double ring = EI * n2 * (n2 - 1) * (n2 - 1) / (mu * std::pow(R, 4) * (n2 + 1));
-    EXPECT_NEAR(bending.omega_sq(n), ring, kExactRelTol * ring) << n;
+    EXPECT_NEAR(bending.omega_sq(n), ring, kRingExactRelTol * ring) << n;
     const double string = T * n2 * (n2 - 1) / (mu * R * R * (n2 + 1));
-    EXPECT_NEAR(tension.omega_sq(n), string, kExactRelTol * string) << n;
+    EXPECT_NEAR(tension.omega_sq(n), string, kRingExactRelTol * string) << n;
   }
   // No stiffness against rigid motion without a foundation.
   EXPECT_EQ(bending.omega_sq(1), 0.0);
@@ -124,7 +125,7 @@ TEST(RingModel, RingBasisStaticComplianceIsIndependentOfTheMassSplit) {
   const ModalBasis basis = build_ring_basis(modes, fit, o);
   for (int n = 1; n <= 20; ++n) {
     const double expected = 1.0 / (M_PI * p.R * p.K(n));
-    EXPECT_NEAR(basis.static_rr(n), expected, kExactRelTol * expected) << n;
+    EXPECT_NEAR(basis.static_rr(n), expected, kRingExactRelTol * expected) << n;
   }
   // The extension's damping is the measured orders' mean.
   for (const auto& t : basis.terms) {

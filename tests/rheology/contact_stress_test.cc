@@ -12,7 +12,8 @@
 namespace modaltyre::rheology {
 namespace {
 
-constexpr double kR0 = 0.2948, kB = 0.13;
+using test::kR0;
+constexpr double kB = 0.13;
 
 StressData profile(double K1, double h, double noise_rel, unsigned seed = 7) {
   test::Noise noise;
@@ -29,7 +30,7 @@ StressData profile(double K1, double h, double noise_rel, unsigned seed = 7) {
   return d;
 }
 
-ContactStressOptions opts() {
+ContactStressOptions stress_opts() {
   ContactStressOptions o;
   o.r0_m = kR0;
   o.tread_width_m = kB;
@@ -38,7 +39,7 @@ ContactStressOptions opts() {
 
 TEST(rheology_ContactStress, RoundTripWithoutNoiseWithin1Percent) {
   const double K1 = 2.5e7, h = 0.018;
-  const auto r = identify_contact_stress(profile(K1, h, 0.0), opts());
+  const auto r = identify_contact_stress(profile(K1, h, 0.0), stress_opts());
   EXPECT_NEAR(r.K1_Pa_per_m / K1, 1.0, 0.01);
   EXPECT_NEAR(r.deflection_m / h, 1.0, 0.01);
   const double phi1 = half_contact_angle(h, kR0);
@@ -49,7 +50,7 @@ TEST(rheology_ContactStress, RoundTripWith2PercentNoiseWithin3Percent) {
   // Stated tolerance: 3 % on K1 and on the deflection with noise of 2 % of the peak stress.
   const double K1 = 2.5e7, h = 0.018;
   for (unsigned seed : {7u, 8u, 9u}) {
-    const auto r = identify_contact_stress(profile(K1, h, 0.02, seed), opts());
+    const auto r = identify_contact_stress(profile(K1, h, 0.02, seed), stress_opts());
     EXPECT_NEAR(r.K1_Pa_per_m / K1, 1.0, 0.03) << seed;
     EXPECT_NEAR(r.deflection_m / h, 1.0, 0.03) << seed;
     EXPECT_GT(r.K1_se, 0.0);
@@ -58,7 +59,7 @@ TEST(rheology_ContactStress, RoundTripWith2PercentNoiseWithin3Percent) {
 
 TEST(rheology_ContactStress, FixedContactLengthFitsK1Only) {
   const double K1 = 2.5e7, h = 0.018;
-  auto o = opts();
+  auto o = stress_opts();
   o.contact_length_m = contact_length(h, kR0);
   const auto r = identify_contact_stress(profile(K1, h, 0.0), o);
   EXPECT_NEAR(r.K1_Pa_per_m / K1, 1.0, 1e-6);
@@ -76,7 +77,8 @@ TEST(rheology_ContactStress, CpEq12EqualsEq7WhenStressFollowsEq11) {
   const double cp_ld = identify_load_deflection(ld, lo).C_P_eq7;
   const double K1 = k1_eq11(K, kR0, kB, p);
   for (double P : {2000.0, 4000.0, 6000.0}) {
-    const auto r = identify_contact_stress(profile(K1, law_deflection(K, P, p), 0.0), opts());
+    const auto r =
+        identify_contact_stress(profile(K1, law_deflection(K, P, p), 0.0), stress_opts());
     EXPECT_NEAR(r.C_P / cp_ld, 1.0, 0.01) << "load " << P;
   }
 }
@@ -94,8 +96,9 @@ TEST(rheology_ContactStress, CpAgreesWithLoadDeflectionMethod) {
   const double cp_ld = identify_load_deflection(ld, lo).C_P_eq7;
   for (double P : {2000.0, 4000.0, 6000.0}) {
     const double h = law_deflection(K, P, p);
-    const double K1 = P / (2 * kB * kR0 * kR0 * arc_stress_load_function(half_contact_angle(h, kR0)));
-    const auto r = identify_contact_stress(profile(K1, h, 0.0), opts());
+    const double K1 =
+        P / (2 * kB * kR0 * kR0 * arc_stress_load_function(half_contact_angle(h, kR0)));
+    const auto r = identify_contact_stress(profile(K1, h, 0.0), stress_opts());
     // Stated tolerance 15 %: the exact eq. (8) K1 varies with load as h^(-1/6) about the
     // B2-averaged eq. (11) value; the same holds for eq. (5) about eq. (7).
     EXPECT_NEAR(r.C_P / cp_ld, 1.0, 0.15) << "load " << P;
@@ -113,18 +116,21 @@ TEST(rheology_ContactStress, CpAgreesWithLoadDeflectionMethod) {
 TEST(rheology_ContactStress, DegenerateInputs) {
   StressData few;
   few.rows = {{0, 1e5, 2}, {0.01, 5e4, 3}};
-  EXPECT_THROW(identify_contact_stress(few, opts()), InputError);
+  EXPECT_THROW(identify_contact_stress(few, stress_opts()), InputError);
   StressData zero;
   zero.rows = {{-0.01, 0, 2}, {0, 0, 3}, {0.01, 0, 4}};
-  EXPECT_THROW(identify_contact_stress(zero, opts()), InputError);
-  EXPECT_THROW(identify_contact_stress(profile(2.5e7, 0.018, 0), ContactStressOptions{}), InputError);
+  EXPECT_THROW(identify_contact_stress(zero, stress_opts()), InputError);
+  EXPECT_THROW(identify_contact_stress(profile(2.5e7, 0.018, 0), ContactStressOptions{}),
+               InputError);
   const auto f = test::temp_file("negs.csv", "x_mm,stress_kPa\n0,100\n10,-5\n");
   EXPECT_THROW(read_contact_stress_csv(f), InputError);
   EXPECT_EQ(test::run_cli("identify contact-stress " + f + " --r0-mm 295 --tread-width-mm 130"), 2);
   const std::string src = MODALTYRE_SOURCE_DIR;
   const std::string ex = src + "/tests/data/rheology/contact_stress.csv";
   EXPECT_EQ(test::run_cli("identify contact-stress " + ex + " --r0-mm 294.8"), 2) << "no B_tr";
-  EXPECT_EQ(test::run_cli("identify contact-stress " + ex + " --config " + src + "/configs/sf350_2d_table3.yaml"), 0);
+  EXPECT_EQ(test::run_cli("identify contact-stress " + ex + " --config " + src +
+                          "/configs/sf350_2d_table3.yaml"),
+            0);
 }
 
 }  // namespace

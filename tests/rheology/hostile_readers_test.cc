@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "../support/hammer_lines.h"
 #include "modaltyre/core/csv.h"
 #include "modaltyre/core/errors.h"
@@ -39,8 +40,9 @@ namespace {
 namespace fs = std::filesystem;
 using Lines = std::vector<std::string>;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
-constexpr double kR0 = 0.2948, kTread = 0.13;  // SF-350 (configs/sf350_2d_table3.yaml)
+using modaltyre_test::kSrc;
+using test::kR0;
+constexpr double kTread = 0.13;  // SF-350 (configs/sf350_2d_table3.yaml)
 
 const contact::TyreConfig& sf350() {
   static const contact::TyreConfig c =

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../app/cli_runner.h"
+#include "../support/data_paths.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/rheology/contact_geometry.h"
 #include "modaltyre/rheology/contact_stress.h"
@@ -30,8 +31,8 @@ namespace {
 using modaltyre_test::CliFixture;
 using modaltyre_test::slurp;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
-const std::string kTyre = kSrc + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kSrc;
 
 ThreeElementOptions tyre_options() { return test::sf350_three_element_options(); }
 
@@ -132,7 +133,7 @@ class rheology_IdentifyIntoConfig : public CliFixture {
   modaltyre_test::CliRun identify_three_element(double noise_rel = 0, unsigned seed = 11) {
     return run({"identify", "free-vibration", file("decay.csv", decay_csv()), "--mass-kg", "350",
                 "--section-height-mm", "117", "--static",
-                file("loop.csv", static_loop_csv(noise_rel, seed)), "--into-config", kTyre,
+                file("loop.csv", static_loop_csv(noise_rel, seed)), "--into-config", kConfig2d,
                 "--out-config", out(), "--json"});
   }
   ConfigSection effect(const ConfigTree& t, const std::string& name) const {
@@ -152,7 +153,7 @@ TEST_F(rheology_IdentifyIntoConfig, ThreeElementWritesDryFrictionForce) {
   EXPECT_FALSE(t.root().section("effects").has("soil_compliance"));
   EXPECT_DOUBLE_EQ(
       t.root().section("tread").number("modulus_MPa", 0, 0, 1e9),
-      ConfigTree::load(kTyre).root().section("tread").number("modulus_MPa", 0, 0, 1e9));
+      ConfigTree::load(kConfig2d).root().section("tread").number("modulus_MPa", 0, 0, 1e9));
   // modal.hammer_csv re-anchored to OUT's folder.
   EXPECT_TRUE(
       std::filesystem::exists(t.resolve_path(t.root().section("modal").text("hammer_csv", ""))));
@@ -209,8 +210,9 @@ TEST_F(rheology_IdentifyIntoConfig, OutConfigRunsFootprintAndDryFrictionShiftsEl
 }
 
 TEST_F(rheology_IdentifyIntoConfig, SoilWritesModulusAndLayer) {
-  const auto r = run({"identify", "soil-rolling", file("soil.csv", soil_csv()), "--r0-mm", "500",
-                      "--tread-width-mm", "300", "--into-config", kTyre, "--out-config", out()});
+  const auto r =
+      run({"identify", "soil-rolling", file("soil.csv", soil_csv()), "--r0-mm", "500",
+           "--tread-width-mm", "300", "--into-config", kConfig2d, "--out-config", out()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const ConfigSection s = effect(ConfigTree::load(out()), "soil_compliance");
   EXPECT_TRUE(s.boolean("enabled", false));
@@ -225,7 +227,7 @@ TEST_F(rheology_IdentifyIntoConfig, SoilWritesModulusAndLayer) {
 TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionOverLoadsAndPressuresWritesBothLaws) {
   const auto r =
       run({"identify", "load-deflection", file("ld.csv", load_deflection_csv({150, 230, 300})),
-           "--into-config", kTyre, "--out-config", out()});
+           "--into-config", kConfig2d, "--out-config", out()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const ConfigTree t = ConfigTree::load(out());
   const ConfigSection ls = effect(t, "load_stiffening"), ip = effect(t, "inflation_pressure");
@@ -242,7 +244,7 @@ TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionOverLoadsAndPressuresWritesBot
 
 TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionAtOnePressureLeavesThePressureLawAlone) {
   const auto r = run({"identify", "load-deflection", file("ld1.csv", load_deflection_csv({230})),
-                      "--into-config", kTyre, "--out-config", out()});
+                      "--into-config", kConfig2d, "--out-config", out()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const ConfigTree t = ConfigTree::load(out());
   EXPECT_TRUE(effect(t, "load_stiffening").boolean("enabled", false));
@@ -271,7 +273,7 @@ TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionSetsTheCarcassLevelSoTheFootpr
   std::vector<double> scales;
   for (double K_Z_mm : {0.13, 0.10}) {
     const auto r = run({"identify", "load-deflection", file("ld.csv", csv_for(K_Z_mm)),
-                        "--into-config", kTyre, "--out-config", out()});
+                        "--into-config", kConfig2d, "--out-config", out()});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("calibrated on all 5 rows"), std::string::npos) << r.out;
     const double scale =
@@ -305,7 +307,7 @@ TEST_F(rheology_IdentifyIntoConfig,
   std::vector<double> scales;
   for (double K1 : {2.5e7, 3.5e7}) {
     const auto r = run({"identify", "contact-stress", file("cs.csv", profile_csv(K1)), "--config",
-                        kTyre, "--into-config", kTyre, "--out-config", out(), "--json"});
+                        kConfig2d, "--into-config", kConfig2d, "--out-config", out(), "--json"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("through K1 and h_Z"), std::string::npos) << r.out;
     const double load_N = json_number(r.out.substr(r.out.find("\"load_eq8\"")), "value");
@@ -325,7 +327,7 @@ TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionStifferThanTheTreadAloneExits2
   for (double P : {2000.0, 4000.0})
     s << P << ",230," << law_deflection(1e-6, P, 230e3) * 1e3 << "\n";
   const auto r = run({"identify", "load-deflection", file("stiff.csv", s.str()), "--into-config",
-                      kTyre, "--out-config", out()});
+                      kConfig2d, "--out-config", out()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("modal.compliance_scale"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("stiffer"), std::string::npos) << r.err;
@@ -333,11 +335,11 @@ TEST_F(rheology_IdentifyIntoConfig, LoadDeflectionStifferThanTheTreadAloneExits2
 }
 
 TEST_F(rheology_IdentifyIntoConfig, MethodsThatDetermineNoEffectRefuseWithExit2) {
-  const auto b = run({"identify", "b-factors", "--into-config", kTyre, "--out-config", out()});
+  const auto b = run({"identify", "b-factors", "--into-config", kConfig2d, "--out-config", out()});
   EXPECT_EQ(b.exit_code, 2);
   EXPECT_NE(b.err.find("uses nothing"), std::string::npos) << b.err;
   const auto fv = run({"identify", "free-vibration", file("decay.csv", decay_csv()), "--mass-kg",
-                       "350", "--into-config", kTyre, "--out-config", out()});
+                       "350", "--into-config", kConfig2d, "--out-config", out()});
   EXPECT_EQ(fv.exit_code, 2);
   EXPECT_NE(fv.err.find("--static"), std::string::npos) << fv.err;
   EXPECT_FALSE(std::filesystem::exists(out()));
@@ -352,7 +354,7 @@ TEST_F(rheology_IdentifyIntoConfig, BadUseExits2NamingTheFileOrOption) {
     a.insert(a.end(), extra.begin(), extra.end());
     return a;
   };
-  const auto no_out = run(args({"--into-config", kTyre}));
+  const auto no_out = run(args({"--into-config", kConfig2d}));
   EXPECT_EQ(no_out.exit_code, 2);
   EXPECT_NE(no_out.err.find("--out-config"), std::string::npos) << no_out.err;
   const auto no_into = run(args({"--out-config", out()}));
@@ -363,7 +365,7 @@ TEST_F(rheology_IdentifyIntoConfig, BadUseExits2NamingTheFileOrOption) {
   EXPECT_EQ(unreadable.exit_code, 2);
   EXPECT_NE(unreadable.err.find(missing), std::string::npos) << unreadable.err;
   // A tyre config with a bad key is named by file and key.
-  const std::string bad = file("bad.yaml", slurp(kTyre) +
+  const std::string bad = file("bad.yaml", slurp(kConfig2d) +
                                                "effects:\n  dry_friction:\n    "
                                                "friction_force_N: -5\n");
   const auto bad_key = run(args({"--into-config", bad, "--out-config", out()}));
@@ -371,10 +373,10 @@ TEST_F(rheology_IdentifyIntoConfig, BadUseExits2NamingTheFileOrOption) {
   EXPECT_NE(bad_key.err.find("effects.dry_friction.friction_force_N"), std::string::npos)
       << bad_key.err;
   // OUT must not be the tyre config itself (a copy: never risk configs/sf350_2d_table3.yaml).
-  const std::string copy = file("copy.yaml", slurp(kTyre));
+  const std::string copy = file("copy.yaml", slurp(kConfig2d));
   const auto self = run(args({"--into-config", copy, "--out-config", copy}));
   EXPECT_EQ(self.exit_code, 2);
-  EXPECT_EQ(slurp(copy), slurp(kTyre));
+  EXPECT_EQ(slurp(copy), slurp(kConfig2d));
   EXPECT_FALSE(std::filesystem::exists(out()));
 }
 
@@ -384,13 +386,13 @@ TEST_F(rheology_IdentifyIntoConfig, WriteConfigAndIntoConfigWriteTheSameFile) {
   const std::string data = kSrc + "/tests/data/rheology/";
   for (const auto& [method, file] : std::vector<std::pair<std::string, std::string>>{
            {"contact-stress", "contact_stress.csv"}, {"load-deflection", "load_deflection.csv"}}) {
-    const auto w = run(
-        {"identify", method, data + file, "--config", kTyre, "--write-config", out(), "--json"});
+    const auto w = run({"identify", method, data + file, "--config", kConfig2d, "--write-config",
+                        out(), "--json"});
     ASSERT_EQ(w.exit_code, 0) << method << ": " << w.err;
     const std::string written = slurp(out());
     std::filesystem::remove(out());
-    const auto o = run(
-        {"identify", method, data + file, "--into-config", kTyre, "--out-config", out(), "--json"});
+    const auto o = run({"identify", method, data + file, "--into-config", kConfig2d, "--out-config",
+                        out(), "--json"});
     ASSERT_EQ(o.exit_code, 0) << method << ": " << o.err;
     EXPECT_EQ(slurp(out()), written) << method;
     EXPECT_EQ(o.out, w.out) << method;
@@ -402,10 +404,10 @@ TEST_F(rheology_IdentifyIntoConfig, WriteConfigAndIntoConfigWriteTheSameFile) {
 TEST_F(rheology_IdentifyIntoConfig, WrittenConfigKeepsCommentsAndValidateKeepsTheIdentifiedLevel) {
   const auto r =
       run({"identify", "load-deflection", kSrc + "/tests/data/rheology/load_deflection.csv",
-           "--into-config", kTyre, "--out-config", out()});
+           "--into-config", kConfig2d, "--out-config", out()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string text = slurp(out());
-  std::istringstream tyre(slurp(kTyre));
+  std::istringstream tyre(slurp(kConfig2d));
   int comments = 0;
   for (std::string line; std::getline(tyre, line);) {
     if (line.find_first_not_of(' ') == std::string::npos ||
@@ -431,8 +433,8 @@ TEST_F(rheology_IdentifyIntoConfig, WrittenConfigKeepsCommentsAndValidateKeepsTh
 // that `footprint F` would refuse; without --config the record is written as before.
 TEST_F(rheology_IdentifyIntoConfig, FreeVibrationWriteConfigWithoutStaticSaysTheLoopIsMissing) {
   const std::string decay = file("decay.csv", decay_csv());
-  const auto r = run({"identify", "free-vibration", decay, "--mass-kg", "350", "--config", kTyre,
-                      "--write-config", out()});
+  const auto r = run({"identify", "free-vibration", decay, "--mass-kg", "350", "--config",
+                      kConfig2d, "--write-config", out()});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--write-config"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("without a static loop"), std::string::npos) << r.err;
@@ -446,7 +448,8 @@ TEST_F(rheology_IdentifyIntoConfig, FreeVibrationWriteConfigWithoutStaticSaysThe
 
 // The soil test's wheel is not the tyre: a tyre config does not give its r0 and B_tr.
 TEST_F(rheology_IdentifyIntoConfig, SoilRollingTakesTheWheelGeometryFromItsOptionsOnly) {
-  const auto r = run({"identify", "soil-rolling", file("soil.csv", soil_csv()), "--config", kTyre});
+  const auto r =
+      run({"identify", "soil-rolling", file("soil.csv", soil_csv()), "--config", kConfig2d});
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("--r0-mm"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("not the test wheel's"), std::string::npos) << r.err;

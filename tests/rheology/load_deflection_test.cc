@@ -13,7 +13,7 @@ namespace modaltyre::rheology {
 namespace {
 
 constexpr double kK = 0.13e-3;  // planted K_Z [m N^-3/4] = 0.13 mm N^-3/4
-constexpr double kR0 = 0.2948;  // SF-350 free radius [m]
+using test::kR0;
 
 LoadDeflectionData synthetic(double noise_rel, unsigned seed = 1) {
   test::Noise noise;

@@ -45,11 +45,14 @@ struct Noise {
   double operator()() { return n(rng); }
 };
 
+/// The SF-350's free radius [m] (configs/sf350_2d_table3.yaml).
+inline constexpr double kR0 = 0.2948;
+
 /// SF-350 geometry as configs/sf350_2d_table3.yaml gives it (r0 294.8 mm, contact width 130 mm),
 /// section height 117 mm, and a 350 kg test mass: the three-element tests' tyre.
 inline ThreeElementOptions sf350_three_element_options() {
   ThreeElementOptions o;
-  o.r0_m = 0.2948;
+  o.r0_m = kR0;
   o.tread_width_m = 0.13;
   o.section_height_m = 0.117;
   o.mass_kg = 350.0;

@@ -12,13 +12,13 @@ namespace {
 
 constexpr double kE2 = 3.0e6, kEta2 = 5.0e4;
 
-SoilOptions opts() { return {0.5, 0.3}; }
+SoilOptions soil_opts() { return {0.5, 0.3}; }
 
 SoilData rows(double noise_rel, unsigned seed = 21) {
   test::Noise noise;
   noise.rng.seed(seed);
   SoilData d;
-  const double deg = M_PI / 180, r0 = opts().r0_m;
+  const double deg = M_PI / 180, r0 = soil_opts().r0_m;
   int line = 2;
   for (double a1 : {12.0, 16.0, 20.0, 24.0})
     for (double V : {0.5, 1.5, 3.0}) {
@@ -30,7 +30,7 @@ SoilData rows(double noise_rel, unsigned seed = 21) {
       r.layer_m = 0.30;
       r.speed_m_s = V;
       r.line = line++;
-      r = soil_forces(r, kE2, kEta2, opts());
+      r = soil_forces(r, kE2, kEta2, soil_opts());
       r.load_N *= 1 + noise_rel * noise();
       r.longitudinal_force_N *= 1 + noise_rel * noise();
       d.rows.push_back(r);
@@ -39,7 +39,7 @@ SoilData rows(double noise_rel, unsigned seed = 21) {
 }
 
 TEST(rheology_Soil, RoundTripWithoutNoiseWithin1Percent) {
-  const auto r = identify_soil(rows(0.0), opts());
+  const auto r = identify_soil(rows(0.0), soil_opts());
   EXPECT_NEAR(r.E2_Pa / kE2, 1.0, 1e-6);
   EXPECT_NEAR(r.eta2_Pa_s / kEta2, 1.0, 1e-6);
   EXPECT_NEAR(r.k_E, r.k_E, 0);  // mean elastic share, reported
@@ -51,7 +51,7 @@ TEST(rheology_Soil, RoundTripWith2PercentNoise) {
   // Stated tolerance: 3 % on E2 and 15 % on eta2 with 2 % noise on both forces over 12 rows
   // (viscous forces are a minor share of P_Z and P_X).
   for (unsigned seed : {21u, 22u, 23u}) {
-    const auto r = identify_soil(rows(0.02, seed), opts());
+    const auto r = identify_soil(rows(0.02, seed), soil_opts());
     EXPECT_NEAR(r.E2_Pa / kE2, 1.0, 0.03) << seed;
     EXPECT_NEAR(r.eta2_Pa_s / kEta2, 1.0, 0.15) << seed;
     EXPECT_GT(r.E2_se, 0.0);
@@ -61,7 +61,7 @@ TEST(rheology_Soil, RoundTripWith2PercentNoise) {
 TEST(rheology_Soil, DegenerateInputs) {
   SoilData one;
   one.rows.push_back(rows(0.0).rows.front());
-  EXPECT_THROW(identify_soil(one, opts()), InputError);
+  EXPECT_THROW(identify_soil(one, soil_opts()), InputError);
   EXPECT_THROW(identify_soil(rows(0.0), SoilOptions{}), InputError);
   const auto f = test::temp_file(
       "soilbad.csv",

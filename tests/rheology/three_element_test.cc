@@ -21,7 +21,8 @@ struct Planted {
   double delta() const { return zeta * wn() * period(); }
 };
 
-DecaySignal decay(const Planted& p, double noise_rel, unsigned seed = 3, double zeta_override = -1) {
+DecaySignal decay(const Planted& p, double noise_rel, unsigned seed = 3,
+                  double zeta_override = -1) {
   test::Noise noise;
   noise.rng.seed(seed);
   DecaySignal s;
@@ -36,11 +37,11 @@ DecaySignal decay(const Planted& p, double noise_rel, unsigned seed = 3, double 
   return s;
 }
 
-ThreeElementOptions opts() { return test::sf350_three_element_options(); }
+ThreeElementOptions element_opts() { return test::sf350_three_element_options(); }
 
 TEST(rheology_FreeVibration, RoundTripWithoutNoiseWithin1Percent) {
   const Planted p;
-  const auto o = opts();
+  const auto o = element_opts();
   const auto r = identify_free_vibration(decay(p, 0.0), nullptr, o);
   EXPECT_NEAR(r.decay.period_s / p.period(), 1.0, 1e-6);
   EXPECT_NEAR(r.decay.log_decrement / p.delta(), 1.0, 1e-6);
@@ -54,7 +55,7 @@ TEST(rheology_FreeVibration, RoundTripWithoutNoiseWithin1Percent) {
 TEST(rheology_FreeVibration, RoundTripWith2PercentNoiseWithin3Percent) {
   // Stated tolerance: 3 % on eta1 (1 % on T) with white noise of 2 % of the first amplitude.
   const Planted p;
-  const auto o = opts();
+  const auto o = element_opts();
   const double eta = eta1_eq22(o.mass_kg, p.delta(), p.period(), contact_length(p.h0, o.r0_m));
   for (unsigned seed : {3u, 4u, 5u}) {
     const auto r = identify_free_vibration(decay(p, 0.02, seed), nullptr, o);
@@ -66,11 +67,11 @@ TEST(rheology_FreeVibration, RoundTripWith2PercentNoiseWithin3Percent) {
 
 TEST(rheology_FreeVibration, NonDecayingSignalIsInputError) {
   const Planted p;
-  EXPECT_THROW(identify_free_vibration(decay(p, 0.0, 3, 0.0), nullptr, opts()), InputError);
+  EXPECT_THROW(identify_free_vibration(decay(p, 0.0, 3, 0.0), nullptr, element_opts()), InputError);
   auto flat = decay(p, 0.0);
   for (auto& y : flat.deflection_m) y = 0.02;
   EXPECT_THROW(fit_free_decay(flat), InputError);
-  auto o = opts();
+  auto o = element_opts();
   o.mass_kg = 0;
   EXPECT_THROW(identify_free_vibration(decay(p, 0.0), nullptr, o), InputError) << "no mass";
 }
@@ -79,7 +80,7 @@ StaticLoop loop(double E1, double chi, double noise_rel, unsigned seed = 11) {
   test::Noise noise;
   noise.rng.seed(seed);
   StaticLoop l;
-  const auto o = opts();
+  const auto o = element_opts();
   for (bool loading : {true, false})
     for (int i = 1; i <= 8; ++i) {
       const double h = 0.004 * i;
@@ -90,7 +91,7 @@ StaticLoop loop(double E1, double chi, double noise_rel, unsigned seed = 11) {
 }
 
 TEST(rheology_StaticLoop, RoundTripWithoutNoiseWithin1Percent) {
-  const auto r = identify_static_loop(loop(1.2e6, 0.02, 0.0), opts());
+  const auto r = identify_static_loop(loop(1.2e6, 0.02, 0.0), element_opts());
   EXPECT_NEAR(r.E1_Pa / 1.2e6, 1.0, 1e-9);
   EXPECT_NEAR(r.chi / 0.02, 1.0, 1e-9);
 }
@@ -99,7 +100,7 @@ TEST(rheology_StaticLoop, RoundTripWith2PercentNoise) {
   // Stated tolerance: 2 % on E1 and 25 % on chi (the friction force is ~10 % of the load, so
   // 2 % load noise is ~20 % of it at a single point; 16 rows average it down).
   for (unsigned seed : {11u, 12u, 13u}) {
-    const auto r = identify_static_loop(loop(1.2e6, 0.02, 0.02, seed), opts());
+    const auto r = identify_static_loop(loop(1.2e6, 0.02, 0.02, seed), element_opts());
     EXPECT_NEAR(r.E1_Pa / 1.2e6, 1.0, 0.02) << seed;
     EXPECT_NEAR(r.chi / 0.02, 1.0, 0.25) << seed;
   }
@@ -110,8 +111,8 @@ TEST(rheology_StaticLoop, NeedsBothBranchesAndGeometry) {
   StaticLoop only_loading;
   for (const auto& r : l.rows)
     if (r.loading) only_loading.rows.push_back(r);
-  EXPECT_THROW(identify_static_loop(only_loading, opts()), InputError);
-  auto o = opts();
+  EXPECT_THROW(identify_static_loop(only_loading, element_opts()), InputError);
+  auto o = element_opts();
   o.section_height_m = 0;
   EXPECT_THROW(identify_static_loop(l, o), InputError);
 }
@@ -120,11 +121,13 @@ TEST(rheology_FreeVibrationCli, ExampleFilesAndDegenerateExit2) {
   const std::string src = MODALTYRE_SOURCE_DIR;
   const std::string d = src + "/tests/data/rheology/";
   const auto out = test::temp_file("fv.json", "");
-  EXPECT_EQ(test::run_cli("identify free-vibration " + d + "free_vibration.csv --config " + src +
-                              "/configs/sf350_2d_table3.yaml --mass-kg 350 --section-height-mm 117 --static " +
-                              d + "static_loop.csv --json",
-                          out),
-            0);
+  EXPECT_EQ(
+      test::run_cli(
+          "identify free-vibration " + d + "free_vibration.csv --config " + src +
+              "/configs/sf350_2d_table3.yaml --mass-kg 350 --section-height-mm 117 --static " + d +
+              "static_loop.csv --json",
+          out),
+      0);
   const std::string j = test::slurp(out);
   for (const char* k : {"\"period_s\"", "\"log_decrement\"", "\"eta1\"", "\"E1\"", "\"chi\""})
     EXPECT_NE(j.find(k), std::string::npos) << k;
@@ -133,7 +136,8 @@ TEST(rheology_FreeVibrationCli, ExampleFilesAndDegenerateExit2) {
   // a pure sine: does not decay
   std::string sine = "t_s,deflection_mm\n";
   for (int i = 0; i < 500; ++i)
-    sine += std::to_string(i * 1e-3) + "," + std::to_string(20 + 5 * std::cos(2 * M_PI * 8 * i * 1e-3)) + "\n";
+    sine += std::to_string(i * 1e-3) + "," +
+            std::to_string(20 + 5 * std::cos(2 * M_PI * 8 * i * 1e-3)) + "\n";
   const auto f = test::temp_file("sine.csv", sine);
   EXPECT_EQ(test::run_cli("identify free-vibration " + f + " --r0-mm 294.8 --mass-kg 350"), 2);
 }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/studies/validation.h"
 
@@ -20,7 +21,7 @@ using namespace modaltyre::contact;
 using namespace modaltyre::studies;
 namespace fs = std::filesystem;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 // The tolerance between the stated standard error and the bootstrap's spread.
 constexpr double kFactor = 1.5;
 // Replicates of the bootstrap: their spread is itself uncertain by about 1 / sqrt(2 (B - 1)),
@@ -56,7 +57,7 @@ class CalibrationCovariance : public ::testing::Test {
       out << "\n";
     }
     out.close();
-    const TyreConfig c = load_tyre_config(kConfig, kCalibrateScale);
+    const TyreConfig c = load_tyre_config(kConfig2d, kCalibrateScale);
     return validate_footprints(c, read_validation_measurements(csv.string(), c));
   }
   fs::path dir_;
@@ -65,7 +66,7 @@ class CalibrationCovariance : public ::testing::Test {
 TEST_F(CalibrationCovariance, StandardErrorMatchesAParametricBootstrap) {
   // "Measured" rows: the model at compliance scale 1.1 with 3 % noise on each value.
   const TyreModel truth = build_tyre_model(load_tyre_config(
-      kConfig,
+      kConfig2d,
       {"contact.unit_length_mm=2", "contact.window_mm=300", "modal.compliance_scale=1.1"}));
   std::mt19937 rng(42);
   std::normal_distribution<double> noise(0.0, 0.03);
@@ -82,8 +83,8 @@ TEST_F(CalibrationCovariance, StandardErrorMatchesAParametricBootstrap) {
   const double sigma = fit.calibration.rms_rel_residual * std::sqrt(4.0 / 3.0);
 
   const TyreModel at_fit = build_tyre_model(
-      load_tyre_config(kConfig, {"contact.unit_length_mm=2", "contact.window_mm=300",
-                                 "modal.compliance_scale=" + std::to_string(value)}));
+      load_tyre_config(kConfig2d, {"contact.unit_length_mm=2", "contact.window_mm=300",
+                                   "modal.compliance_scale=" + std::to_string(value)}));
   std::vector<Prediction> base;
   for (double F : kLoads) base.push_back(predict(at_fit, at_fit.config.default_conditions(F)));
   std::normal_distribution<double> boot(0.0, sigma);
@@ -108,10 +109,11 @@ TEST_F(CalibrationCovariance, NoDegreeOfFreedomIsSaidNotGuessed) {
   // One row, one observable, one scalar: the noise cannot be estimated.
   const fs::path csv = dir_ / "one.csv";
   std::ofstream(csv) << "load_N,sinking_mm\n4000,14\n";
-  const TyreConfig c = load_tyre_config(
-      kConfig, {"contact.unit_length_mm=2", "contact.window_mm=300",
-                "validation.calibrate=[modal.compliance_scale]", "validation.calibration_rows=[1]",
-                "validation.calibration_observables=[sinking_mm]"});
+  const TyreConfig c =
+      load_tyre_config(kConfig2d, {"contact.unit_length_mm=2", "contact.window_mm=300",
+                                   "validation.calibrate=[modal.compliance_scale]",
+                                   "validation.calibration_rows=[1]",
+                                   "validation.calibration_observables=[sinking_mm]"});
   const ValidationReport r = validate_footprints(c, read_validation_measurements(csv.string(), c));
   EXPECT_TRUE(r.calibration.std_errors.empty());
   EXPECT_NE(r.calibration.covariance_note.find("no degree of freedom"), std::string::npos)
@@ -124,7 +126,7 @@ TEST_F(CalibrationCovariance, NoDegreeOfFreedomIsSaidNotGuessed) {
 TEST_F(CalibrationCovariance, StatedNoiseWeighsTheFitAndMatchesItsBootstrap) {
   const std::vector<double> rel = {0.01, 0.05};
   const TyreModel truth = build_tyre_model(load_tyre_config(
-      kConfig,
+      kConfig2d,
       {"contact.unit_length_mm=2", "contact.window_mm=300", "modal.compliance_scale=1.1"}));
   std::vector<Prediction> base;
   for (double F : kLoads) base.push_back(predict(truth, truth.config.default_conditions(F)));
@@ -164,7 +166,7 @@ TEST_F(CalibrationCovariance, StatedNoiseWeighsTheFitAndMatchesItsBootstrap) {
 // one is pulled off by the lengths.
 TEST_F(CalibrationCovariance, ThePreciseObservableGovernsAWeightedFit) {
   const TyreModel truth = build_tyre_model(load_tyre_config(
-      kConfig,
+      kConfig2d,
       {"contact.unit_length_mm=2", "contact.window_mm=300", "modal.compliance_scale=1.1"}));
   std::vector<double> s, l;
   for (double F : kLoads) {

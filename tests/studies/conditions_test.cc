@@ -13,6 +13,8 @@
 #include <set>
 #include <string>
 
+#include "../support/data_paths.h"
+#include "../support/table3_tyre.h"
 #include "modaltyre/contact/operating_conditions.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/core/number_format.h"
@@ -25,14 +27,9 @@ namespace {
 namespace fs = std::filesystem;
 using namespace modaltyre;
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSource + "/configs/sf350_2d_table3.yaml";
-const std::string kSweepName = kSource + "/configs/sweeps/in_memory_test.yaml";
+using modaltyre_test::kSweepName;
 
-const contact::TyreConfig& defaults() {
-  static const contact::TyreConfig c = contact::load_tyre_config(kConfig);
-  return c;
-}
+using modaltyre_test::table3_tyre;
 
 fs::path scratch(const std::string& name) {
   return fs::temp_directory_path() /
@@ -48,7 +45,7 @@ std::string measured(const ConditionInfo& c, const std::string& cell, double* va
   if (c.id != ConditionId::load_N) header += ",load_N", row += ",4000";
   std::ofstream(p) << header << "," << c.name << "\n" << row << "," << cell << "\n";
   try {
-    const auto set = studies::read_measurements(p.string(), defaults());
+    const auto set = studies::read_measurements(p.string(), table3_tyre());
     if (value) *value = contact::condition_value(set.rows.at(0).conditions, c.id);
     fs::remove(p);
     return "";
@@ -97,7 +94,7 @@ TEST(ConditionCatalogue, SlipIsRefusedByFootprintMeasurementsAndSweeps) {
   std::ofstream(p) << "sinking_mm,load_N,slip\n15,4000,0.2\n";
   std::string why;
   try {
-    studies::read_measurements(p.string(), defaults());
+    studies::read_measurements(p.string(), table3_tyre());
   } catch (const InputError& e) {
     why = e.what();
   }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/studies/validation.h"
 
@@ -16,9 +17,8 @@ namespace {
 using namespace modaltyre::contact;
 using namespace modaltyre::studies;
 
-const std::string kDefault = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
-const std::string kTable3 =
-    std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kTable3;
 
 // Least-squares slope of ln y against ln x.
 double log_slope(const std::vector<double>& x, const std::vector<double>& y) {
@@ -44,7 +44,7 @@ std::vector<Prediction> predicted_at(const TyreModel& model, const std::vector<d
 class DefaultConfig : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    config_ = new TyreConfig(load_tyre_config(kDefault));
+    config_ = new TyreConfig(load_tyre_config(kConfig3d));
     model_ = new TyreModel(build_tyre_model(*config_));
   }
   static void TearDownTestSuite() {

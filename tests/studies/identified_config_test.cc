@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "../rheology/rheology_test_support.h"
+#include "../support/data_paths.h"
 #include "modaltyre/core/config_tree.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/rheology/contact_geometry.h"
@@ -24,10 +25,10 @@ namespace {
 namespace rh = modaltyre::rheology;
 namespace fs = std::filesystem;
 
-const std::string kSrc = MODALTYRE_SOURCE_DIR;
+using modaltyre_test::kSrc;
 
-// SF-350 as configs/sf350_2d_table3.yaml, on a 2 mm patch mesh (the mapping does not depend on the mesh;
-// the footprints it runs are 16x cheaper), in a scratch folder with the hammer file absolute.
+// SF-350 as configs/sf350_2d_table3.yaml, on a 2 mm patch mesh (the mapping does not depend on the
+// mesh; the footprints it runs are 16x cheaper), in a scratch folder with the hammer file absolute.
 class studies_IdentifiedConfig : public ::testing::Test {
  protected:
   void SetUp() override {

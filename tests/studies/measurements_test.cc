@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/table3_tyre.h"
 #include "modaltyre/core/errors.h"
 
 namespace {
@@ -21,12 +22,8 @@ using namespace modaltyre::contact;
 using namespace modaltyre::studies;
 using modaltyre::InputError;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
 
-const TyreConfig& defaults() {
-  static const TyreConfig c = load_tyre_config(kConfig);
-  return c;
-}
+using modaltyre_test::table3_tyre;
 
 class Measurements : public ::testing::Test {
  protected:
@@ -46,7 +43,7 @@ class Measurements : public ::testing::Test {
   }
 
   MeasurementSet read(const std::string& content) {
-    return read_measurements(write(content), defaults());
+    return read_measurements(write(content), table3_tyre());
   }
 
   /// `content` must be refused with an InputError at (line, column) whose message names
@@ -55,7 +52,7 @@ class Measurements : public ::testing::Test {
                       const std::string& reason) {
     const std::string path = write(content);
     try {
-      const MeasurementSet s = read_measurements(path, defaults());
+      const MeasurementSet s = read_measurements(path, table3_tyre());
       ADD_FAILURE() << "accepted (" << s.rows.size() << " rows):\n" << content;
     } catch (const InputError& e) {
       const std::string msg = e.what();
@@ -91,7 +88,7 @@ TEST_F(Measurements, ValidFileIsReadWithLinesAndDefaults) {
   EXPECT_EQ(s.observables, (std::vector<std::string>{"sinking_mm", "length_mm", "width_mm"}));
   EXPECT_EQ(s.conditions, (std::vector<std::string>{"load_N"}));
   // Absent condition columns take the config's values.
-  EXPECT_EQ(s.rows[0].conditions.pressure_kPa, defaults().default_conditions(4000).pressure_kPa);
+  EXPECT_EQ(s.rows[0].conditions.pressure_kPa, table3_tyre().default_conditions(4000).pressure_kPa);
   EXPECT_EQ(s.rows[0].conditions.branch, Branch::loading);
 }
 
@@ -100,7 +97,7 @@ TEST_F(Measurements, EmptyFileAndHeaderOnlyAreRefusedNamingTheFile) {
   for (const std::string& content : {std::string(), std::string("# only a comment\n\n")}) {
     const std::string path = write(content);
     try {
-      read_measurements(path, defaults());
+      read_measurements(path, table3_tyre());
       ADD_FAILURE() << "empty file accepted";
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
@@ -109,7 +106,7 @@ TEST_F(Measurements, EmptyFileAndHeaderOnlyAreRefusedNamingTheFile) {
   }
   const std::string path = write(kHeader);
   try {
-    read_measurements(path, defaults());
+    read_measurements(path, table3_tyre());
     ADD_FAILURE() << "header-only file accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
@@ -258,7 +255,7 @@ TEST_F(Measurements, NonUtf8BytesInACell) {
   // Control bytes: the line is named (not a text CSV).
   const std::string path = write(kHeader + kRow + std::string("4000,15\0,110,130\n", 17));
   try {
-    read_measurements(path, defaults());
+    read_measurements(path, table3_tyre());
     ADD_FAILURE() << "NUL byte accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(path + ":3"), std::string::npos) << e.what();
@@ -269,7 +266,7 @@ TEST_F(Measurements, DirectoryOrMissingFileIsRefusedNamingIt) {
   const std::string d = (dir_ / "folder.csv").string();
   fs::create_directories(d);
   try {
-    read_measurements(d, defaults());
+    read_measurements(d, table3_tyre());
     ADD_FAILURE() << "a directory was read";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(d), std::string::npos) << e.what();
@@ -277,7 +274,7 @@ TEST_F(Measurements, DirectoryOrMissingFileIsRefusedNamingIt) {
   }
   const std::string missing = (dir_ / "absent.csv").string();
   try {
-    read_measurements(missing, defaults());
+    read_measurements(missing, table3_tyre());
     ADD_FAILURE() << "a missing file was read";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
@@ -290,7 +287,7 @@ TEST_F(Measurements, PipeIsRefusedNotWaitedOn) {
   const std::string fifo = (dir_ / "pipe.csv").string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   try {
-    read_measurements(fifo, defaults());
+    read_measurements(fifo, table3_tyre());
     ADD_FAILURE() << "a pipe was read";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(fifo), std::string::npos) << e.what();
@@ -301,7 +298,7 @@ TEST_F(Measurements, PipeIsRefusedNotWaitedOn) {
 TEST_F(Measurements, WrongFieldCountNamesTheLine) {
   const std::string path = write(kHeader + kRow + "4000,15,110\n");
   try {
-    read_measurements(path, defaults());
+    read_measurements(path, table3_tyre());
     ADD_FAILURE() << "short row accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().line, 3);
@@ -373,7 +370,7 @@ TEST_F(Measurements, TractionRowsAreReadBesideFootprintRows) {
   EXPECT_EQ(s.traction_rows(), 2);
   EXPECT_EQ(s.footprint_rows(), 1);
   // No speed_kmh column: the flexing loss's speed is the config's rolling speed, as `traction`.
-  EXPECT_DOUBLE_EQ(s.rows[1].conditions.speed_kmh, defaults().transient.rolling.speed_m_s * 3.6);
+  EXPECT_DOUBLE_EQ(s.rows[1].conditions.speed_kmh, table3_tyre().transient.rolling.speed_m_s * 3.6);
 }
 
 TEST_F(Measurements, TractionColumnsMixedWronglyAreRefusedAtLineAndColumn) {

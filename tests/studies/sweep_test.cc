@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/predictor.h"
 #include "modaltyre/core/progress.h"
 #include "modaltyre/studies/measurements.h"
@@ -26,11 +27,11 @@ using modaltyre::InputError;
 using modaltyre::ProgressBar;
 namespace fs = std::filesystem;
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSource + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kSrc;
+using modaltyre_test::kSweepName;
 // A sweep "file" placed (by name only) in configs/sweeps, so that base: ../sf350_2d_table3.yaml
 // resolves.
-const std::string kSweepName = kSource + "/configs/sweeps/in_memory_test.yaml";
 
 SweepSpec spec_of(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
   return parse_sweep_spec(yaml, kSweepName, overrides);
@@ -133,7 +134,7 @@ TEST(Sweep, RowsEqualIndividualFootprintSolves) {
   ASSERT_EQ(rw.failed, 0u);
   for (std::size_t mi = 0; mi < 2; ++mi) {
     const TyreModel model = build_tyre_model(
-        load_tyre_config(kConfig, {mi == 0 ? "tread.modulus_MPa=5" : "tread.modulus_MPa=7"}));
+        load_tyre_config(kConfig2d, {mi == 0 ? "tread.modulus_MPa=5" : "tread.modulus_MPa=7"}));
     for (std::size_t i = 6 * mi; i < 6 * mi + 6; ++i) {
       const auto ref = solve_footprint(model, plan.cases[i].load);
       ASSERT_TRUE(ref.ok());
@@ -232,7 +233,7 @@ TEST(Sweep, ACaseOutsideTheValidityRangeIsMarked) {
   const fs::path path =
       fs::temp_directory_path() / ("modaltyre_valid_" + std::to_string(getpid()) + ".csv");
   std::ofstream(path) << csv;
-  const auto back = read_measurements(path.string(), load_tyre_config(kConfig));
+  const auto back = read_measurements(path.string(), load_tyre_config(kConfig2d));
   fs::remove(path);
   ASSERT_EQ(back.rows.size(), 2u);
   EXPECT_EQ(back.rows[1].conditions.load_N, 30000);
@@ -400,7 +401,7 @@ TEST(SweepEffects, TreadRelaxationCreepsMonotonicallyToTheRelaxedTread) {
       plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [4000]\n")), opt);
   EXPECT_NEAR(s[0], off.rows.at(0).sinking_mm, 1e-9 * s[0]);
   // Fully relaxed (exp(-10000 / 30) = 0): a tread 1.5 times softer, tread.modulus_MPa / 1.5.
-  const double modulus_MPa = load_tyre_config(kConfig).tread.modulus_Pa * 1e-6;
+  const double modulus_MPa = load_tyre_config(kConfig2d).tread.modulus_Pa * 1e-6;
   const auto relaxed =
       run_sweep(plan_sweep(spec_of("base: ../sf350_2d_table3.yaml\ngrid:\n  load_N: [4000]\n",
                                    {"tread.modulus_MPa=" + full_precision(modulus_MPa / 1.5)})),
@@ -448,7 +449,7 @@ TEST(SweepEffects, CsvReadsBackAsMeasuredDataThatThePredictorReproduces) {
   const fs::path csv =
       fs::temp_directory_path() / ("sweep_roundtrip_" + std::to_string(::getpid()) + ".csv");
   { std::ofstream(csv, std::ios::binary) << sweep_csv(plan, res); }
-  const TyreConfig base = load_tyre_config(kConfig);
+  const TyreConfig base = load_tyre_config(kConfig2d);
   const MeasurementSet set = read_measurements(csv.string(), base);
   fs::remove(csv);
   ASSERT_EQ(set.rows.size(), plan.cases.size());
@@ -581,7 +582,7 @@ TEST(Sweep, BadSweepFilesNameFileLineAndKey) {
 
 TEST(Sweep, EveryShippedSweepFileParsesAndPlans) {
   int files = 0;
-  for (const auto& entry : fs::directory_iterator(kSource + "/configs/sweeps")) {
+  for (const auto& entry : fs::directory_iterator(kSrc + "/configs/sweeps")) {
     if (entry.path().extension() != ".yaml") continue;
     ++files;
     SCOPED_TRACE(entry.path().string());
@@ -592,7 +593,7 @@ TEST(Sweep, EveryShippedSweepFileParsesAndPlans) {
     EXPECT_GT(plan.models.size(), 0u);
   }
   EXPECT_GE(files, 2);
-  const auto t3 = plan_sweep(read_sweep_spec(kSource + "/configs/sweeps/table3_loads.yaml"));
+  const auto t3 = plan_sweep(read_sweep_spec(kSrc + "/configs/sweeps/table3_loads.yaml"));
   EXPECT_EQ(t3.cases.size(), 6u);
   EXPECT_EQ(t3.models.size(), 1u);
 }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/studies/sweep.h"
 #include "modaltyre/studies/validation.h"
@@ -22,10 +23,10 @@ using namespace modaltyre::studies;
 using modaltyre::InputError;
 namespace fs = std::filesystem;
 
-const std::string kSource = MODALTYRE_SOURCE_DIR;
-const std::string kConfig = kSource + "/configs/sf350_2d_table3.yaml";
-const std::string kTable3 = kSource + "/configs/data/sf350_footprint_table3.csv";
-const std::string kSweepName = kSource + "/configs/sweeps/in_memory_test.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kSrc;
+using modaltyre_test::kSweepName;
+using modaltyre_test::kTable3;
 // Every row is a prediction (no calibration), so that rows compare the model as configured.
 const std::vector<std::string> kNoCalibration = {"validation.calibrate=[]",
                                                  "validation.calibration_rows=[]"};
@@ -43,7 +44,8 @@ class ValidationEffects : public ::testing::Test {
 
   /// Runs a sweep (YAML body after base:) and writes its CSV; returns the path.
   std::string sweep_csv_file(const std::string& body) {
-    const auto plan = plan_sweep(parse_sweep_spec("base: ../sf350_2d_table3.yaml\n" + body, kSweepName));
+    const auto plan =
+        plan_sweep(parse_sweep_spec("base: ../sf350_2d_table3.yaml\n" + body, kSweepName));
     SweepOptions opt;
     opt.threads = 2;
     const auto res = run_sweep(plan, opt);
@@ -60,7 +62,7 @@ class ValidationEffects : public ::testing::Test {
 };
 
 TEST_F(ValidationEffects, EffectFreeFilesKeepTheirReaderAndResults) {
-  const TyreConfig config = load_tyre_config(kConfig);
+  const TyreConfig config = load_tyre_config(kConfig2d);
   const auto rows = read_validation_measurements(kTable3, config);
   const auto plain = read_measurements(kTable3, config);
   ASSERT_EQ(rows.rows.size(), plain.rows.size());
@@ -69,7 +71,7 @@ TEST_F(ValidationEffects, EffectFreeFilesKeepTheirReaderAndResults) {
     EXPECT_EQ(rows.rows[i].conditions.load_N, plain.rows[i].conditions.load_N);
     EXPECT_EQ(rows.rows[i].value("sinking_mm"), plain.rows[i].value("sinking_mm"));
   }
-  const auto rep = validate_footprints(load_tyre_config(kConfig, kNoCalibration), rows);
+  const auto rep = validate_footprints(load_tyre_config(kConfig2d, kNoCalibration), rows);
   EXPECT_FALSE(rep.with_conditions);
   // The measured width is compared with the config's (the 2D model takes it as an input).
   for (const auto& r : rep.rows) {
@@ -87,10 +89,10 @@ TEST_F(ValidationEffects, SweepOutputValidatesAtItsOwnConditions) {
       "grid:\n  hold_s: [0, 60, 600]\n  load_N: [3000, 6000]\n");
   // The model with the same effect reproduces every row (to the CSV's 10 digits).
   const auto on = with(kNoCalibration, {"effects.tread_relaxation.enabled=true"});
-  const auto rows = read_validation_measurements(csv, load_tyre_config(kConfig, on));
+  const auto rows = read_validation_measurements(csv, load_tyre_config(kConfig2d, on));
   ASSERT_EQ(rows.rows.size(), 6u);
   EXPECT_EQ(rows.rows[5].conditions.hold_s, 600);
-  const auto rep = validate_footprints(load_tyre_config(kConfig, on), rows);
+  const auto rep = validate_footprints(load_tyre_config(kConfig2d, on), rows);
   EXPECT_TRUE(rep.with_conditions);
   for (const auto& r : rep.rows) {
     EXPECT_LT(std::abs(*r.sinking_rel_error), 1e-8) << "row " << r.measured.row;
@@ -99,10 +101,10 @@ TEST_F(ValidationEffects, SweepOutputValidatesAtItsOwnConditions) {
 
   // The effect-free model still reads the conditions but cannot follow them: its error is nil
   // at hold 0 and grows with the hold time (the discrepancy discover looks for).
-  const TyreConfig off_config = load_tyre_config(kConfig, kNoCalibration);
+  const TyreConfig off_config = load_tyre_config(kConfig2d, kNoCalibration);
   const auto off_rows = read_validation_measurements(csv, off_config);
   ASSERT_TRUE(rows_at_own_conditions(off_rows, off_config));  // condition columns in the file
-  const auto off = validate_footprints(load_tyre_config(kConfig, kNoCalibration), off_rows);
+  const auto off = validate_footprints(load_tyre_config(kConfig2d, kNoCalibration), off_rows);
   for (std::size_t load = 0; load < 2; ++load) {
     const double e0 = *off.rows[load].sinking_rel_error;
     const double e60 = *off.rows[2 + load].sinking_rel_error;
@@ -116,11 +118,11 @@ TEST_F(ValidationEffects, SweepOutputValidatesAtItsOwnConditions) {
 TEST_F(ValidationEffects, ContactWidthPredictsAWidthGrowingWithLoad) {
   const auto on = with(kNoCalibration, {"effects.contact_width.enabled=true"});
   // With an effect on, even a file without condition columns is read with the conditions.
-  const TyreConfig config_on = load_tyre_config(kConfig, on);
+  const TyreConfig config_on = load_tyre_config(kConfig2d, on);
   const auto rows = read_validation_measurements(kTable3, config_on);
   ASSERT_TRUE(rows_at_own_conditions(rows, config_on));
   EXPECT_EQ(rows.rows[0].conditions.pressure_kPa, 230);
-  const auto rep = validate_footprints(load_tyre_config(kConfig, on), rows);
+  const auto rep = validate_footprints(load_tyre_config(kConfig2d, on), rows);
   // The crown is pressed in deeper under more load, up to the tread width (max_width_mm 160).
   for (std::size_t i = 1; i < rep.rows.size(); ++i) {
     EXPECT_GE(rep.rows[i].width_mm, rep.rows[i - 1].width_mm);
@@ -139,8 +141,8 @@ TEST_F(ValidationEffects, CalibrationRunsThroughThePredictor) {
   const std::vector<std::string> ov = {"effects.inflation_pressure.enabled=true",
                                        "validation.calibrate=[tread.modulus_MPa]",
                                        "validation.calibration_rows=[1, 4]"};
-  const auto rows = read_validation_measurements(csv, load_tyre_config(kConfig, ov));
-  const auto rep = validate_footprints(load_tyre_config(kConfig, ov), rows);
+  const auto rows = read_validation_measurements(csv, load_tyre_config(kConfig2d, ov));
+  const auto rep = validate_footprints(load_tyre_config(kConfig2d, ov), rows);
   ASSERT_EQ(rep.calibration.values.size(), 1u);
   EXPECT_NEAR(rep.calibration.values[0], 3.0, 1e-3 * 3.0);
   EXPECT_LT(rep.rms_rel_error.at("sinking_mm"), 1e-4);
@@ -152,7 +154,7 @@ TEST_F(ValidationEffects, ConditionColumnsAreCheckedWithFileLineAndColumn) {
   files_.push_back(p);
   std::ofstream(p) << "load_N,branch,sinking_mm\n3000,load,10\n4000,sideways,12\n";
   try {
-    read_validation_measurements(p.string(), load_tyre_config(kConfig));
+    read_validation_measurements(p.string(), load_tyre_config(kConfig2d));
     ADD_FAILURE() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().line, 3) << e.what();
@@ -171,16 +173,16 @@ namespace {
 // issue's target figures; that rule against per-order scaling excludes this config from
 // counting for it, see the config's header).
 TEST(ValidationTable3, RigidBeltConfigMeetsTheFootprintTargetsOnThePredictedRows) {
-  const auto rows = read_validation_measurements(kTable3, load_tyre_config(kConfig));
+  const auto rows = read_validation_measurements(kTable3, load_tyre_config(kConfig2d));
   const auto rep =
-      validate_footprints(load_tyre_config(kSource + "/configs/sf350_rigid_belt.yaml"), rows);
+      validate_footprints(load_tyre_config(kSrc + "/configs/sf350_rigid_belt.yaml"), rows);
   ASSERT_TRUE(rep.calibration.ok());
   EXPECT_EQ(rep.predicted_rows.at("sinking_mm"), 4);
   EXPECT_LE(rep.rms_rel_error.at("sinking_mm"), 0.05);
   EXPECT_LE(rep.rms_rel_error.at("length_mm"), 0.10);
   // And it beats the default carcass, whose belt flattens as the measured orders 2-5 say, on
   // both observables.
-  const auto plain = validate_footprints(load_tyre_config(kConfig, {}), rows);
+  const auto plain = validate_footprints(load_tyre_config(kConfig2d, {}), rows);
   EXPECT_LT(rep.rms_rel_error.at("sinking_mm"), plain.rms_rel_error.at("sinking_mm"));
   EXPECT_LT(rep.rms_rel_error.at("length_mm"), plain.rms_rel_error.at("length_mm"));
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/footprint.h"
 
 namespace {
@@ -14,21 +15,22 @@ namespace {
 using namespace modaltyre::contact;
 using namespace modaltyre::studies;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-const std::string kTable3 =
-    std::string(MODALTYRE_SOURCE_DIR) + "/configs/data/sf350_footprint_table3.csv";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kTable3;
 
 TyreModel model_with(const std::vector<std::string>& overrides) {
-  return build_tyre_model(load_tyre_config(kConfig, overrides));
+  return build_tyre_model(load_tyre_config(kConfig2d, overrides));
 }
 
-MeasurementSet table3() { return read_validation_measurements(kTable3, load_tyre_config(kConfig)); }
+MeasurementSet table3() {
+  return read_validation_measurements(kTable3, load_tyre_config(kConfig2d));
+}
 
 TEST(Validation, Table3DeclaredCalibrationMeetsTheSinkingAndLengthTargets) {
-  // Calibration declared in sf350_2d_table3.yaml: compliance scale and tread modulus on rows 1 and 6;
-  // rows 2-5 are predictions. Issue targets over the predicted rows: sinking RMS <= 5 %,
-  // length RMS <= 10 % (measured: 3.7 % and 7.8 %).
-  const auto rep = validate_footprints(load_tyre_config(kConfig, {}), table3());
+  // Calibration declared in sf350_2d_table3.yaml: compliance scale and tread modulus on rows 1 and
+  // 6; rows 2-5 are predictions. Issue targets over the predicted rows: sinking RMS <= 5 %, length
+  // RMS <= 10 % (measured: 3.7 % and 7.8 %).
+  const auto rep = validate_footprints(load_tyre_config(kConfig2d, {}), table3());
   ASSERT_EQ(rep.calibration.rows, (std::vector<int>{1, 6}));
   ASSERT_EQ(rep.calibration.keys.size(), 2u);
   EXPECT_EQ(rep.predicted_rows.at("sinking_mm"), 4);
@@ -48,7 +50,7 @@ TEST(Validation, CalibratedValueAtTheBoundOfItsRangeIsFlagged) {
   // interior tread modulus not.
   const auto rep = validate_footprints(
       load_tyre_config(
-          kConfig,
+          kConfig2d,
           {"modal.extend_orders=true",
            "validation.calibrate=[modal.extension_bending_s2_rad2_s2, tread.modulus_MPa]"}),
       table3());
@@ -56,7 +58,7 @@ TEST(Validation, CalibratedValueAtTheBoundOfItsRangeIsFlagged) {
   const double s2 = rep.calibration.values[0];
   ASSERT_TRUE(s2 < 1.01e-3 || s2 > 0.99e6) << s2;
   EXPECT_EQ(rep.calibration.at_bound, (std::vector<std::string>{s2 < 1 ? "lower" : "upper", ""}));
-  const auto plain = validate_footprints(load_tyre_config(kConfig, {}), table3());
+  const auto plain = validate_footprints(load_tyre_config(kConfig2d, {}), table3());
   EXPECT_EQ(plain.calibration.at_bound, (std::vector<std::string>{"", ""}));
 }
 
@@ -77,7 +79,7 @@ TEST(Validation, CalibrationRecoversPlantedParameters) {
   MeasurementSet meas;
   meas.loads_only = true;  // rows at the config's conditions
   meas.observables = {"sinking_mm", "length_mm"};
-  const TyreConfig config = load_tyre_config(kConfig);
+  const TyreConfig config = load_tyre_config(kConfig2d);
   int row = 1;
   for (double F : {2500.0, 5000.0, 7500.0}) {
     const auto r = solve_footprint(planted, {F, 0});
@@ -89,8 +91,8 @@ TEST(Validation, CalibrationRecoversPlantedParameters) {
     m.observed["length_mm"] = r.contact_length_m * 1e3;
     meas.rows.push_back(m);
   }
-  const auto rep =
-      validate_footprints(load_tyre_config(kConfig, {"validation.calibration_rows=[1, 3]"}), meas);
+  const auto rep = validate_footprints(
+      load_tyre_config(kConfig2d, {"validation.calibration_rows=[1, 3]"}), meas);
   ASSERT_EQ(rep.calibration.values.size(), 2u);
   // Least-squares stopping tolerance on log-parameters is 1e-6; 1e-3 covers the finite-difference
   // Jacobian and the flat direction of the cost.

@@ -10,6 +10,7 @@
 
 #include <cmath>
 
+#include "../support/data_paths.h"
 #include "dense_lu_check.h"
 #include "modaltyre/transient/cell_model.h"
 #include "modaltyre/transient/cell_system.h"
@@ -20,11 +21,11 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+using modaltyre_test::kConfig3d;
 // The right-hand side is piecewise linear in the state (the contact's kink only), so central
 // differences away from a kink are exact but for rounding: ~1e-8 of the matrix's entries at
 // these steps, and the solve is compared to 1e-6 of the solution.
-constexpr double kSolveTol = 1e-6;
+constexpr double kCellSolveTol = 1e-6;
 
 struct Fixture {
   TyreModel tyre;
@@ -36,8 +37,8 @@ struct Fixture {
 Fixture& fixture() {
   static Fixture* f = [] {
     auto* x = new Fixture{build_tyre_model(load_tyre_config(
-                              kConfig, {"contact.unit_length_mm=4", "contact.window_mm=240",
-                                        "footprint_3d.lateral_cell_mm=15"})),
+                              kConfig3d, {"contact.unit_length_mm=4", "contact.window_mm=240",
+                                          "footprint_3d.lateral_cell_mm=15"})),
                           {},
                           {}};
     x->model = build_transient_model(x->tyre);
@@ -99,11 +100,11 @@ TEST(CellNewton, SolvesNewtonsSystemAtRestLikeADenseLuAfterSemismoothUpdates) {
     const Eigen::MatrixXd A = newton_matrix(sys, t, y, gamma);
     sys.rhs(t, y.data(), ydot.data());  // the iterate whose contact set the update takes
     EXPECT_GT(switched_cells(sys.last_forces(), f0), 4);
-    const Eigen::VectorXd x = expect_solve_near_dense_lu(newton, A, kSolveTol);
+    const Eigen::VectorXd x = expect_solve_near_dense_lu(newton, A, kCellSolveTol);
     // Normwise backward error (the tread rows' entries gamma k / c' are large).
     const double scale =
         A.cwiseAbs().rowwise().sum().maxCoeff() * x.cwiseAbs().maxCoeff() + b.cwiseAbs().maxCoeff();
-    EXPECT_LT((A * x - b).cwiseAbs().maxCoeff(), kSolveTol * scale);
+    EXPECT_LT((A * x - b).cwiseAbs().maxCoeff(), kCellSolveTol * scale);
   }
 }
 
@@ -125,7 +126,7 @@ TEST(CellNewton, SolvesNewtonsSystemRollingLikeADenseLuAtItsContactSet) {
   EXPECT_FALSE(newton.symmetric_at_rest());
   std::vector<double> ydot(n);
   sys.rhs(t, y.data(), ydot.data());
-  expect_solve_near_dense_lu(newton, newton_matrix(sys, t, y, gamma), kSolveTol);
+  expect_solve_near_dense_lu(newton, newton_matrix(sys, t, y, gamma), kCellSolveTol);
 }
 
 }  // namespace

@@ -9,62 +9,51 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
+#include "../support/lete_sand.h"
 #include "decay_metrics.h"
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/transient/cell_soil.h"
 #include "modaltyre/transient/transient.h"
 #include "scenario_print.h"
+#include "transient_models.h"
 
 namespace modaltyre::transient {
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+using modaltyre_test::kConfig3d;
+using modaltyre_test::kLeteBekker;
+using modaltyre_test::plus;
+using test::build;
+using test::Built;
+using test::rel;
 
 // Issue 33/37: the load-hold's end equals the 3D static footprint on the same soil (soil
 // sinkage, sinking, length, width) within 0.5 %.
-constexpr double kStaticTol = 0.005;
+constexpr double kCellSoilStaticTol = 0.005;
 // A very stiff soil (n = 1, k_phi = 1e9 kN/m^3) against the 3D road transient: the soil's share
 // of the sinking is ~1e-3 of the tread's (soil_transient_test.cc); the issue's 0.5 %.
-constexpr double kStiffSoilTol = 0.005;
+constexpr double kCellStiffSoilTol = 0.005;
 // The soil's share of the sinking on that stiff soil: below 1e-3 of it.
 constexpr double kStiffSoilShare = 1e-3;
 // A flat crown's 3D transient equals the 2D transient of the tread width (issue 33's bound): the
 // same equations with the cells of a section merged into one class, on the same soil (the same
 // b, areas in proportion).
-constexpr double kFlatCrownTol = 0.005;
+constexpr double kCellSoilFlatCrownTol = 0.005;
 // Rolling on a soil at three integrator tolerances (1e-5 to 1e-7): the same resistances within
 // 0.3 % (the sweep of soil_contact.h; 6 % apart without it).
 constexpr double kStepSequenceTol = 0.003;
 
-const std::vector<std::string> kLete = {"ground.model=bekker", "ground.bekker.n=0.79",
-                                        "ground.bekker.k_c=102", "ground.bekker.k_phi=5301"};
 const std::vector<std::string> kWongUnloading = {"ground.bekker.unloading.k0=0",
                                                  "ground.bekker.unloading.Au=5e5"};
 
-std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
-std::vector<std::string> coarse(std::vector<std::string> extra = {}) {
-  return join({"contact.unit_length_mm=2", "footprint_3d.lateral_cell_mm=7.5",
+std::vector<std::string> cell_soil_coarse(std::vector<std::string> extra = {}) {
+  return plus({"contact.unit_length_mm=2", "footprint_3d.lateral_cell_mm=7.5",
                "transient.output_step_ms=5"},
               extra);
 }
-
-struct Built {
-  TyreModel tyre;
-  TransientModel model;
-};
-Built build(const TyreConfig& cfg) {
-  Built b{build_tyre_model(cfg), {}};
-  b.model = build_transient_model(b.tyre);
-  return b;
-}
-
-double rel(double a, double b) { return std::abs(a / b - 1.0); }
 
 /// Mean of a sample field over the last `span_s` of a run (the hold's bounce averaged out).
 template <class F>
@@ -82,12 +71,12 @@ TEST(CellSoilTransient, LoadHoldEndsAtThe3dStaticFootprintOnTheSameSoil) {
   // off) keeps the bounce's overshoot, which a rigid-plastic soil keeps, small (docs/soil.md 8).
   for (const bool unloading : {false, true}) {
     SCOPED_TRACE(unloading ? "Wong's unloading" : "rigid-plastic");
-    auto o =
-        join(coarse({"transient.relaxation=false", "transient.load_hold.load_N=4000",
-                     "transient.load_hold.ramp_rate_N_s=1000", "transient.load_hold.hold_s=1.0"}),
-             kLete);
-    if (unloading) o = join(o, kWongUnloading);
-    const Built b = build(load_tyre_config(kConfig, o));
+    auto o = plus(cell_soil_coarse({"transient.relaxation=false", "transient.load_hold.load_N=4000",
+                                    "transient.load_hold.ramp_rate_N_s=1000",
+                                    "transient.load_hold.hold_s=1.0"}),
+                  kLeteBekker);
+    if (unloading) o = plus(o, kWongUnloading);
+    const Built b = build(load_tyre_config(kConfig3d, o));
     const TransientResult r = run_scenario(b.model, Scenario::load_hold);
     ASSERT_TRUE(r.ok()) << r.message;
     ASSERT_TRUE(r.patch_3d && r.on_soil);
@@ -105,10 +94,10 @@ TEST(CellSoilTransient, LoadHoldEndsAtThe3dStaticFootprintOnTheSameSoil) {
     const double sinking = mean([](const TransientSample& x) { return x.sinking_m; });
     const double length = mean([](const TransientSample& x) { return x.contact_length_m; });
     const double width = mean([](const TransientSample& x) { return x.width_m; });
-    EXPECT_LT(rel(sink, s.soil_sinkage_m), kStaticTol) << sink << " " << s.soil_sinkage_m;
-    EXPECT_LT(rel(sinking, s.sinking_m), kStaticTol) << sinking << " " << s.sinking_m;
-    EXPECT_LT(rel(length, s.length_m), kStaticTol) << length << " " << s.length_m;
-    EXPECT_LT(rel(width, s.width_m), kStaticTol) << width << " " << s.width_m;
+    EXPECT_LT(rel(sink, s.soil_sinkage_m), kCellSoilStaticTol) << sink << " " << s.soil_sinkage_m;
+    EXPECT_LT(rel(sinking, s.sinking_m), kCellSoilStaticTol) << sinking << " " << s.sinking_m;
+    EXPECT_LT(rel(length, s.length_m), kCellSoilStaticTol) << length << " " << s.length_m;
+    EXPECT_LT(rel(width, s.width_m), kCellSoilStaticTol) << width << " " << s.width_m;
     RecordProperty(unloading ? "unloading" : "rigid_plastic",
                    std::to_string(sink / s.soil_sinkage_m - 1) + " " +
                        std::to_string(sinking / s.sinking_m - 1) + " " +
@@ -130,14 +119,14 @@ TEST(CellSoilTransient, AVeryStiffSoilReproducesThe3dRoadTransient) {
   // at the end. The hold ends in the bounce (+-130 N at 0.5 s), where the integrator's phase
   // error moves a sample by 0.4 % at the default tolerance 1e-5 (measured on the road run: 4100
   // against 4115 N at 1e-7): both runs at 1e-7 compare the models, not two step sequences.
-  const auto o =
-      coarse({"transient.load_hold.load_N=4000", "transient.load_hold.ramp_rate_N_s=20000",
-              "transient.load_hold.hold_s=0.3", "transient.relative_tolerance=1e-7"});
-  const Built road = build(load_tyre_config(kConfig, o));
+  const auto o = cell_soil_coarse(
+      {"transient.load_hold.load_N=4000", "transient.load_hold.ramp_rate_N_s=20000",
+       "transient.load_hold.hold_s=0.3", "transient.relative_tolerance=1e-7"});
+  const Built road = build(load_tyre_config(kConfig3d, o));
   const Built stiff = build(load_tyre_config(
-      kConfig, join(o, {"ground.model=bekker", "ground.bekker.n=1", "ground.bekker.k_c=0",
-                        "ground.bekker.k_phi=1e9", "ground.bekker.unloading.k0=1e9",
-                        "ground.bekker.unloading.Au=0"})));
+      kConfig3d, plus(o, {"ground.model=bekker", "ground.bekker.n=1", "ground.bekker.k_c=0",
+                          "ground.bekker.k_phi=1e9", "ground.bekker.unloading.k0=1e9",
+                          "ground.bekker.unloading.Au=0"})));
   const TransientResult a = run_scenario(road.model, Scenario::load_hold);
   const TransientResult s = run_scenario(stiff.model, Scenario::load_hold);
   ASSERT_TRUE(a.ok()) << a.message;
@@ -150,25 +139,26 @@ TEST(CellSoilTransient, AVeryStiffSoilReproducesThe3dRoadTransient) {
     worst_sinking = std::max(worst_sinking, std::abs(y.sinking_m - x.sinking_m));
     worst_share = std::max(worst_share, y.soil_sinkage_m);
   }
-  EXPECT_LT(worst_sinking, kStiffSoilTol * sinking_scale);
+  EXPECT_LT(worst_sinking, kCellStiffSoilTol * sinking_scale);
   auto load = [](const TransientSample& x) { return x.load_N; };
-  EXPECT_LT(rel(tail_mean(s, 0.1, load), tail_mean(a, 0.1, load)), kStiffSoilTol);
+  EXPECT_LT(rel(tail_mean(s, 0.1, load), tail_mean(a, 0.1, load)), kCellStiffSoilTol);
   EXPECT_LT(worst_share, kStiffSoilShare * sinking_scale);
   const TransientSample &x = a.samples.back(), &y = s.samples.back();
-  EXPECT_LT(rel(y.load_N, x.load_N), kStiffSoilTol);
-  EXPECT_LT(rel(y.contact_length_m, x.contact_length_m), kStiffSoilTol);
-  EXPECT_LT(rel(y.width_m, x.width_m), kStiffSoilTol);
+  EXPECT_LT(rel(y.load_N, x.load_N), kCellStiffSoilTol);
+  EXPECT_LT(rel(y.contact_length_m, x.contact_length_m), kCellStiffSoilTol);
+  EXPECT_LT(rel(y.width_m, x.width_m), kCellStiffSoilTol);
 }
 
 class FlatCrownOnSoil : public ::testing::TestWithParam<Scenario> {};
 
 TEST_P(FlatCrownOnSoil, Equals2dSoilTransientOfTheTreadWidth) {
   TyreConfig cfg = load_tyre_config(
-      kConfig,
-      join(coarse({"transient.load_hold.hold_s=0.3", "transient.free_vibration.duration_s=0.4",
-                   "transient.rolling.duration_s=1.0", "transient.rolling.ramp_s=0.5",
-                   "transient.rolling.load_N=3000"}),
-           join(kLete, kWongUnloading)));
+      kConfig3d,
+      plus(cell_soil_coarse({"transient.load_hold.hold_s=0.3",
+                             "transient.free_vibration.duration_s=0.4",
+                             "transient.rolling.duration_s=1.0", "transient.rolling.ramp_s=0.5",
+                             "transient.rolling.load_N=3000"}),
+           plus(kLeteBekker, kWongUnloading)));
   // 1 mm sections, as the road's flat-crown test (cell_transient_test.cc): the two patches
   // interpolate the edge with different level functions, the same to O(unit).
   cfg.mesh.unit_length_m = 1e-3;
@@ -187,7 +177,7 @@ TEST_P(FlatCrownOnSoil, Equals2dSoilTransientOfTheTreadWidth) {
   const double span = sc == Scenario::rolling ? 0.4 : 0.2;
   auto both = [&](auto field, const char* name) {
     const double x3 = tail_mean(r3, span, field), x2 = tail_mean(r2, span, field);
-    EXPECT_LT(rel(x3, x2), kFlatCrownTol) << name << ": 3D " << x3 << ", 2D " << x2;
+    EXPECT_LT(rel(x3, x2), kCellSoilFlatCrownTol) << name << ": 3D " << x3 << ", 2D " << x2;
     RecordProperty(name, std::to_string(x3 / x2 - 1));
   };
   both([](const TransientSample& x) { return x.sinking_m; }, "sinking");
@@ -205,14 +195,14 @@ TEST_P(FlatCrownOnSoil, Equals2dSoilTransientOfTheTreadWidth) {
     scale = std::max(scale, std::abs(r2.samples[k].sinking_m));
   }
   if (sc != Scenario::rolling) {
-    EXPECT_LT(worst, kFlatCrownTol * scale);
+    EXPECT_LT(worst, kCellSoilFlatCrownTol * scale);
   }
   RecordProperty("worst_sinking_sample", std::to_string(worst / scale));
   if (sc == Scenario::free_vibration) {
     const BounceDecay d3 = bounce_decay(r3, 6), d2 = bounce_decay(r2, 6);
     ASSERT_GE(d2.peaks, 4);
-    EXPECT_LT(rel(d3.period_s, d2.period_s), kFlatCrownTol);
-    EXPECT_LT(rel(d3.log_decrement, d2.log_decrement), kFlatCrownTol);
+    EXPECT_LT(rel(d3.period_s, d2.period_s), kCellSoilFlatCrownTol);
+    EXPECT_LT(rel(d3.log_decrement, d2.log_decrement), kCellSoilFlatCrownTol);
     RecordProperty("period", std::to_string(d3.period_s / d2.period_s - 1));
     RecordProperty("log_decrement", std::to_string(d3.log_decrement / d2.log_decrement - 1));
   }
@@ -240,9 +230,10 @@ TEST(CellSoilTransient, RollingCompactsTheSoilAndLeavesARutNoDeeperThanTheSinkag
   // the normal forces lean back on the rut's slope (R_c > 0), and the rut is the surface's
   // rebound from the deepest sinkage, so shallower than it.
   const Built b = build(load_tyre_config(
-      kConfig, join(coarse({"transient.rolling.load_N=3000", "transient.rolling.speed_km_h=5",
-                            "transient.rolling.ramp_s=0.5", "transient.rolling.duration_s=1.0"}),
-                    join(kLete, kWongUnloading))));
+      kConfig3d,
+      plus(cell_soil_coarse({"transient.rolling.load_N=3000", "transient.rolling.speed_km_h=5",
+                             "transient.rolling.ramp_s=0.5", "transient.rolling.duration_s=1.0"}),
+           plus(kLeteBekker, kWongUnloading))));
   const TransientResult r = run_scenario(b.model, Scenario::rolling);
   ASSERT_TRUE(r.ok()) << r.message;
   ASSERT_TRUE(r.on_soil);
@@ -258,7 +249,7 @@ TEST(CellSoilTransient, RollingCompactsTheSoilAndLeavesARutNoDeeperThanTheSinkag
 }
 
 TEST(CellSoilTransient, TheCleatOnASoilIsRefusedNamingTheKey) {
-  const Built b = build(load_tyre_config(kConfig, join(coarse(), kLete)));
+  const Built b = build(load_tyre_config(kConfig3d, plus(cell_soil_coarse(), kLeteBekker)));
   try {
     run_scenario(b.model, Scenario::cleat);
     FAIL() << "the cleat on a soil ran";
@@ -280,9 +271,10 @@ TEST(CellSoilTransient, RollingResistanceOnSoilDoesNotDependOnTheStepSequence) {
   double lo_c[2] = {1e300, 1e300}, hi_c[2] = {0, 0}, lo_r[2] = {1e300, 1e300}, hi_r[2] = {0, 0};
   for (const auto& tol : tolerances) {
     const Built b = build(load_tyre_config(
-        kConfig, join(coarse({"transient.rolling.duration_s=1.0", "transient.rolling.ramp_s=0.5",
-                              "transient.rolling.load_N=3000"}),
-                      join(join(kLete, kWongUnloading), tol))));
+        kConfig3d,
+        plus(cell_soil_coarse({"transient.rolling.duration_s=1.0", "transient.rolling.ramp_s=0.5",
+                               "transient.rolling.load_N=3000"}),
+             plus(plus(kLeteBekker, kWongUnloading), tol))));
     for (const int cells : {0, 1}) {
       SCOPED_TRACE(cells ? "3D patch" : "2D patch");
       const TransientResult r = cells ? run_transient_3d(b.model, Scenario::rolling)

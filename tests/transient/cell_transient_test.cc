@@ -9,9 +9,11 @@
 #include <ostream>
 #include <string>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/transient/transient.h"
 #include "scenario_print.h"
+#include "transient_models.h"
 
 namespace modaltyre::transient {
 
@@ -19,13 +21,17 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+using modaltyre_test::kConfig3d;
+using test::build;
+using test::Built;
+using test::coarse_3d;
+using test::rel;
 
 // Issue 33: the load-hold's end equals the 3D static footprint within 0.5 % (sinking, length,
 // width). Measured at the default 0.5 mm / 2.5 mm mesh after a 2 s hold: +0.001 % / +0.004 % /
 // -0.010 %; the remainder is the truncated residual (docs/transient.md section 1) and the
 // bounce's last micrometres.
-constexpr double kStaticTol = 0.005;
+constexpr double kCellStaticTol = 0.005;
 // Issue 33: a flat crown's 3D transient equals the 2D transient of the tread width within 0.5 %
 // (the same equations with the cells of a section merged into one class: the difference is
 // the integration's, the two error tests running over differently sized state vectors).
@@ -34,24 +40,6 @@ constexpr double kFlatCrownTol = 0.005;
 // the integration tolerance (the RMS error test counts the states differently).
 constexpr double kClassTol = 1e-3;
 
-std::vector<std::string> coarse(std::vector<std::string> extra = {}) {
-  std::vector<std::string> o = {"contact.unit_length_mm=2", "footprint_3d.lateral_cell_mm=7.5"};
-  o.insert(o.end(), extra.begin(), extra.end());
-  return o;
-}
-
-struct Built {
-  TyreModel tyre;
-  TransientModel model;
-};
-Built build(TyreConfig cfg) {
-  Built b{build_tyre_model(cfg), {}};
-  b.model = build_transient_model(b.tyre);
-  return b;
-}
-
-double rel(double a, double b) { return std::abs(a / b - 1.0); }
-
 double peak_load(const TransientResult& r) {
   double p = 0;
   for (const auto& s : r.samples) p = std::max(p, s.load_N);
@@ -59,7 +47,7 @@ double peak_load(const TransientResult& r) {
 }
 
 TEST(CellTransient, LoadHoldEndsAtThe3dStaticFootprint) {
-  const Built b = build(load_tyre_config(kConfig, coarse({"transient.load_hold.hold_s=1"})));
+  const Built b = build(load_tyre_config(kConfig3d, coarse_3d({"transient.load_hold.hold_s=1"})));
   const TransientResult r = run_transient_3d(b.model, Scenario::load_hold);
   ASSERT_TRUE(r.ok()) << r.message;
   ASSERT_TRUE(r.patch_3d);
@@ -67,11 +55,11 @@ TEST(CellTransient, LoadHoldEndsAtThe3dStaticFootprint) {
   const Patch3dResult s = patch.solve(b.model.settings.load_hold.load_N);
   ASSERT_TRUE(s.ok()) << s.message;
   const TransientSample& fin = r.samples.back();
-  EXPECT_LT(rel(fin.sinking_m, s.sinking_m), kStaticTol) << fin.sinking_m << " " << s.sinking_m;
-  EXPECT_LT(rel(fin.contact_length_m, s.length_m), kStaticTol)
+  EXPECT_LT(rel(fin.sinking_m, s.sinking_m), kCellStaticTol) << fin.sinking_m << " " << s.sinking_m;
+  EXPECT_LT(rel(fin.contact_length_m, s.length_m), kCellStaticTol)
       << fin.contact_length_m << " " << s.length_m;
-  EXPECT_LT(rel(fin.width_m, s.width_m), kStaticTol) << fin.width_m << " " << s.width_m;
-  EXPECT_LT(rel(fin.load_N, s.load_N), kStaticTol);
+  EXPECT_LT(rel(fin.width_m, s.width_m), kCellStaticTol) << fin.width_m << " " << s.width_m;
+  EXPECT_LT(rel(fin.load_N, s.load_N), kCellStaticTol);
   // The crown lets the cells enter at different times across the width: the width grows with
   // the load during the ramp.
   const TransientSample* early = nullptr;
@@ -88,10 +76,10 @@ TEST_P(FlatCrown, Equals2dTransientOfTheTreadWidth) {
   TyreConfig cfg = load_tyre_config(
       // (One stated output grid for both patches: the chosen one follows each patch's initial
       // contact, output_grid.h.)
-      kConfig,
-      coarse({"transient.output_step_ms=2", "transient.load_hold.hold_s=0.3",
-              "transient.free_vibration.duration_s=0.4", "transient.rolling.duration_s=1.2",
-              "transient.rolling.ramp_s=0.6", "transient.cleat.ramp_s=0.2"}));
+      kConfig3d,
+      coarse_3d({"transient.output_step_ms=2", "transient.load_hold.hold_s=0.3",
+                 "transient.free_vibration.duration_s=0.4", "transient.rolling.duration_s=1.2",
+                 "transient.rolling.ramp_s=0.6", "transient.cleat.ramp_s=0.2"}));
   // 1 mm sections: the two patches interpolate the patch edge with different level functions
   // (the 2D footprint's f C_ii, the 3D patch's tread compression f t_i; the same at the edge to
   // O(unit)): at 2 mm they differ by 0.9 % in the held length, at 1 mm by less than half.
@@ -150,7 +138,7 @@ INSTANTIATE_TEST_SUITE_P(EveryScenario, FlatCrown,
 // equations and initial state. One class per column gives the same run.
 TEST(CellTransient, ColumnClassesEqualThePerCellModel) {
   const Built b = build(load_tyre_config(
-      kConfig, coarse({"transient.rolling.duration_s=0.4", "transient.rolling.ramp_s=0.2"})));
+      kConfig3d, coarse_3d({"transient.rolling.duration_s=0.4", "transient.rolling.ramp_s=0.2"})));
   TransientRunOptions all;
   all.per_column_cells = true;
   const TransientResult merged = run_transient_3d(b.model, Scenario::rolling);
@@ -167,11 +155,11 @@ TEST(CellTransient, ColumnClassesEqualThePerCellModel) {
 // A cleat narrower than the tread loads only the sections' middle columns: a smaller peak than
 // the full-width cleat's, and more than the flat road's load.
 TEST(CellTransient, NarrowCleatLoadsLessThanAFullWidthOne) {
-  const auto base = coarse({"transient.cleat.ramp_s=0.2"});
+  const auto base = coarse_3d({"transient.cleat.ramp_s=0.2"});
   auto narrow = base;
   narrow.push_back("transient.cleat.width_mm=45");
-  const Built full = build(load_tyre_config(kConfig, base));
-  const Built part = build(load_tyre_config(kConfig, narrow));
+  const Built full = build(load_tyre_config(kConfig3d, base));
+  const Built part = build(load_tyre_config(kConfig3d, narrow));
   const TransientResult rf = run_transient_3d(full.model, Scenario::cleat);
   const TransientResult rp = run_transient_3d(part.model, Scenario::cleat);
   ASSERT_TRUE(rf.ok() && rp.ok()) << rf.message << rp.message;

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "../support/data_paths.h"
 #include "dense_lu_check.h"
 #include "modaltyre/transient/transient.h"
 
@@ -15,7 +16,7 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 // The basis reproduces the shapes to its cutoff (transient.contact_basis_cutoff of the largest
 // singular value, which the Frobenius norm bounds) plus rounding; the solver is exact up to
 // rounding, its Woodbury capacitance matrix of order one.
@@ -25,11 +26,11 @@ constexpr double kSolveTol = 1e-9;
 /// `exact_basis`: the contact basis to rounding (cutoff 1e-13), so that the low-rank solver can
 /// be compared with the sparse Jacobian of the shapes themselves; the default cutoff moves the
 /// forces by ~1e-8 (test ContactBasisCutoffMovesNoForce).
-TransientModel model_with(const std::vector<std::string>& extra, bool exact_basis = true) {
+TransientModel newton_model(const std::vector<std::string>& extra, bool exact_basis = true) {
   std::vector<std::string> o = {"contact.unit_length_mm=5", "contact.window_mm=220",
                                 "transient.dynamic_max_order=16"};
   o.insert(o.end(), extra.begin(), extra.end());
-  TyreConfig cfg = load_tyre_config(kConfig, o);
+  TyreConfig cfg = load_tyre_config(kConfig2d, o);
   if (exact_basis) cfg.transient.contact_basis_cutoff = 1e-13;
   return build_transient_model(build_tyre_model(cfg));
 }
@@ -76,7 +77,7 @@ void PrintTo(const Carcass& c, std::ostream* os) { *os << c.name; }
 class ContactNewtonTest : public ::testing::TestWithParam<Carcass> {};
 
 TEST_P(ContactNewtonTest, ContactBasisReproducesTheShapes) {
-  const TransientModel M = model_with(GetParam().overrides, /*exact_basis=*/false);
+  const TransientModel M = newton_model(GetParam().overrides, /*exact_basis=*/false);
   ASSERT_GT(M.rank, 0);
   ASSERT_LE(M.rank, M.nq + M.nr);
   Eigen::MatrixXd B(M.m, M.nq + M.nr), TC(M.m, M.nq + M.nr);
@@ -97,7 +98,7 @@ TEST_P(ContactNewtonTest, ContactBasisCutoffMovesNoForce) {
   std::vector<std::string> o = {"contact.unit_length_mm=5", "contact.window_mm=220",
                                 "transient.dynamic_max_order=16"};
   o.insert(o.end(), GetParam().overrides.begin(), GetParam().overrides.end());
-  TyreConfig cfg = load_tyre_config(kConfig, o);
+  TyreConfig cfg = load_tyre_config(kConfig2d, o);
   const TransientModel cut = build_transient_model(build_tyre_model(cfg));
   cfg.transient.contact_basis_cutoff = 1e-13;
   const TransientModel full = build_transient_model(build_tyre_model(cfg));
@@ -128,7 +129,7 @@ TEST_P(ContactNewtonTest, SolvesNewtonsSystemLikeADenseLu) {
   // a perturbed static state: every block of Newton's matrix is non-trivial.
   std::vector<std::string> o = GetParam().overrides;
   o.push_back("transient.rolling.ramp_s=1");
-  const TransientModel M = model_with(o);
+  const TransientModel M = newton_model(o);
   const ScenarioPlan plan = plan_scenario(M, Scenario::rolling);
   TransientSystem sys(M, plan);
   std::vector<double> y = sys.static_state(4000);
@@ -141,7 +142,7 @@ TEST_P(ContactNewtonTest, SolvesNewtonsSystemAtRestLikeADenseLu) {
   // At rest (free vibration: no advection band, M_EE diagonal, K = T~^T diag(w) T~ symmetric),
   // relaxation on, a perturbed static state with one unit inside the patch lifted off the road
   // by its tread state (a gap in the span of active units, kd = 0 there).
-  const TransientModel M = model_with(GetParam().overrides);
+  const TransientModel M = newton_model(GetParam().overrides);
   const ScenarioPlan plan = plan_scenario(M, Scenario::free_vibration);
   TransientSystem sys(M, plan);
   std::vector<double> y = sys.static_state(4000);
@@ -168,7 +169,7 @@ TEST_P(ContactNewtonTest, SemismoothUpdateSolvesAtTheIteratesContactSet) {
   // matrix by their rank-one terms: the solve is then the exact one at the iterate, also after
   // a second update in a row (the hub pushed down 2 mm, then lifted 2 mm from the setup's
   // state: units enter at the patch ends, then leave).
-  const TransientModel M = model_with(GetParam().overrides);
+  const TransientModel M = newton_model(GetParam().overrides);
   const ScenarioPlan plan = plan_scenario(M, Scenario::free_vibration);
   TransientSystem sys(M, plan);
   const std::vector<double> y0 = sys.static_state(4000);

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "../support/data_paths.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/transient/transient.h"
 
@@ -15,7 +16,7 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 
 // min_k omega_k R / k over the orders >= 1, the rotation and order 0 left out, up to max_order.
 TEST(CriticalSpeed, IsTheLowestPhaseVelocityOfTheTravellingWaves) {
@@ -42,7 +43,7 @@ TEST(CriticalSpeed, IsTheLowestPhaseVelocityOfTheTravellingWaves) {
 // At the critical speed order k's ground-frame stiffness omega_k^2 - (k V / R)^2 vanishes: the
 // model's own dynamic coordinates of that order have it at zero there.
 TEST(CriticalSpeed, TheOrdersGroundFrameStiffnessVanishesThere) {
-  const TransientModel M = build_transient_model(build_tyre_model(load_tyre_config(kConfig, {})));
+  const TransientModel M = build_transient_model(build_tyre_model(load_tyre_config(kConfig2d, {})));
   const modal::CriticalSpeed c = critical_speed_of(M);
   ASSERT_GT(c.order, 0);
   const double R0 = M.tyre.config.outer_radius_m;
@@ -58,12 +59,13 @@ TEST(CriticalSpeed, TheOrdersGroundFrameStiffnessVanishesThere) {
 // Below the critical speed the runs settle, and the contact lengthens and the rolling resistance
 // rises as it approaches (the standing wave); at it the scenario is refused naming the key.
 TEST(CriticalSpeed, RollingRefusedBeyondItAndTheStandingWaveGrowsBelow) {
-  const TransientModel M0 = build_transient_model(build_tyre_model(load_tyre_config(kConfig, {})));
+  const TransientModel M0 =
+      build_transient_model(build_tyre_model(load_tyre_config(kConfig2d, {})));
   const double vcr_kmh = critical_speed_of(M0).speed_km_h();
   auto run = [&](double share) {
     const TransientModel M = build_transient_model(build_tyre_model(load_tyre_config(
-        kConfig, {"transient.rolling.speed_km_h=" + std::to_string(share * vcr_kmh),
-                  "transient.rolling.duration_s=1.2", "transient.rolling.ramp_s=0.6"})));
+        kConfig2d, {"transient.rolling.speed_km_h=" + std::to_string(share * vcr_kmh),
+                    "transient.rolling.duration_s=1.2", "transient.rolling.ramp_s=0.6"})));
     return run_transient(M, Scenario::rolling);
   };
   double length = 0, resistance = 0;

@@ -57,4 +57,14 @@ inline std::pair<double, double> bounce_period_and_decrement(const TransientResu
   return {least_squares_slope(times), -least_squares_slope(logs)};
 }
 
+/// Peaks of the free vibration used for the period and decrement fits of the reference and
+/// tread-window tests (the first eight: later ones are a few um, where the output's 2 ms
+/// sampling limits the parabolic interpolation).
+inline constexpr int kDecayPeaks = 8;
+
+/// Period and logarithmic decrement of the hub bounce over the first kDecayPeaks maxima.
+inline std::pair<double, double> period_and_decrement(const TransientResult& r) {
+  return bounce_period_and_decrement(r, kDecayPeaks);
+}
+
 }  // namespace modaltyre::transient

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <iostream>
 
+#include "../support/data_paths.h"
+#include "../support/lete_sand.h"
 #include "modaltyre/contact/traction.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/transient/soil_contact.h"
@@ -17,31 +19,29 @@ namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
+using modaltyre_test::kLeteBekker;
 
 // The press against the static footprint (issue 46's 1 %): the hub moves at 20 mm/s, slow
 // against the tread's relaxation and with no bounce (the hub is prescribed), so the pressed soil
 // is the static footprint's. Measured: see the test's output.
-constexpr double kPressTol = 0.01;
+constexpr double kDrivenSoilPressTol = 0.01;
 // Rolling at traction's sinking against its load: traction.h settles to 1e-4 of the sinkage
 // profile; the transient's memory moves once per accepted step (the load control's rolling test
 // of soil_transient_test.cc holds 1 %).
-constexpr double kRollingTol = 0.01;
+constexpr double kDrivenSoilRollingTol = 0.01;
 
-const std::vector<std::string> kLete = {"ground.model=bekker", "ground.bekker.n=0.79",
-                                        "ground.bekker.k_c=102", "ground.bekker.k_phi=5301"};
-
-TransientModel model_with(std::vector<std::string> extra) {
+TransientModel soil_model(std::vector<std::string> extra) {
   std::vector<std::string> o = {"contact.unit_length_mm=5", "contact.window_mm=400",
                                 "transient.dynamic_max_order=16", "transient.relaxation=false",
                                 "transient.rolling.load_N=3000"};
-  o.insert(o.end(), kLete.begin(), kLete.end());
+  o.insert(o.end(), kLeteBekker.begin(), kLeteBekker.end());
   o.insert(o.end(), extra.begin(), extra.end());
-  return build_transient_model(build_tyre_model(load_tyre_config(kConfig, o)));
+  return build_transient_model(build_tyre_model(load_tyre_config(kConfig2d, o)));
 }
 
 TEST(DrivenTyreSoil, APressHeldCarriesTheStaticFootprintsLoadOnTheSoil) {
-  const TransientModel M = model_with({});
+  const TransientModel M = soil_model({});
   // The driven tyre's Bekker width: the footprint's at the config's rolling load.
   double b = 0;
   static_soil_contact(M, 3000, 0.0, &b);
@@ -58,8 +58,8 @@ TEST(DrivenTyreSoil, APressHeldCarriesTheStaticFootprintsLoadOnTheSoil) {
   std::cout << "press onto LETE sand to " << s.sinking_m * 1e3 << " mm: F_z " << w.fz_N
             << " N (static footprint 4000 N), soil sinkage " << w.soil_sinkage_m * 1e3
             << " mm (static " << s.soil_depth_m.maxCoeff() * 1e3 << " mm)\n";
-  EXPECT_NEAR(w.fz_N / 4000, 1.0, kPressTol);
-  EXPECT_NEAR(w.soil_sinkage_m / s.soil_depth_m.maxCoeff(), 1.0, kPressTol);
+  EXPECT_NEAR(w.fz_N / 4000, 1.0, kDrivenSoilPressTol);
+  EXPECT_NEAR(w.soil_sinkage_m / s.soil_depth_m.maxCoeff(), 1.0, kDrivenSoilPressTol);
   // Started at the static state itself: its load at once.
   DrivenTyre at(M, opt);
   at.reset(HubState{s.sinking_m, 0, 0});
@@ -69,7 +69,7 @@ TEST(DrivenTyreSoil, APressHeldCarriesTheStaticFootprintsLoadOnTheSoil) {
 TEST(DrivenTyreSoil, RollingAtTractionsSinkingCarriesItsLoadOnceTheRutIsBehind) {
   // Frictionless sand (no shear: the driven tyre has no tangential contact) at 2 km/h.
   const TransientModel M =
-      model_with({"ground.bekker.cohesion_kPa=0", "ground.bekker.friction_angle_deg=0"});
+      soil_model({"ground.bekker.cohesion_kPa=0", "ground.bekker.friction_angle_deg=0"});
   const TractionResult tr = traction_pass(M.tyre, M.tyre.config.ground, {3000, 0.0}, 0);
   ASSERT_TRUE(tr.ok()) << tr.message;
   const double V = 2 / 3.6;
@@ -88,8 +88,8 @@ TEST(DrivenTyreSoil, RollingAtTractionsSinkingCarriesItsLoadOnceTheRutIsBehind) 
             << w.compaction_resistance_N << " N (traction " << tr.motion_resistance_N << " N)\n";
   // Standing at that sinking the rear carries too; rolling it rests on the rut.
   EXPECT_GT(standing, 1.2 * 3000);
-  EXPECT_NEAR(w.fz_N / 3000, 1.0, kRollingTol);
-  EXPECT_NEAR(w.compaction_resistance_N / tr.motion_resistance_N, 1.0, kRollingTol);
+  EXPECT_NEAR(w.fz_N / 3000, 1.0, kDrivenSoilRollingTol);
+  EXPECT_NEAR(w.compaction_resistance_N / tr.motion_resistance_N, 1.0, kDrivenSoilRollingTol);
 
   // A tread window too small for the rolling contact: the step that reaches beyond it is redone
   // with every unit from the soil's memory at its start, and the run is the one with every unit
@@ -110,9 +110,9 @@ TEST(DrivenTyreSoil, RollingAtTractionsSinkingCarriesItsLoadOnceTheRutIsBehind) 
 }
 
 TEST(DrivenTyreSoil, WhatTheSoilTransientRefusesIsRefused) {
-  const TransientModel rigid = model_with({"tyre.rigid=true"});
+  const TransientModel rigid = soil_model({"tyre.rigid=true"});
   EXPECT_THROW(DrivenTyre{rigid}, InputError);
-  const TransientModel plain = model_with({});
+  const TransientModel plain = soil_model({});
   DrivenTyreOptions opt;
   opt.road_profile = [](double, double, double* slope) {
     if (slope) *slope = 0;

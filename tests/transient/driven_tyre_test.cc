@@ -8,16 +8,21 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/contact/patch3d.h"
 #include "modaltyre/transient/transient.h"
+#include "transient_models.h"
 
 namespace modaltyre::transient {
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+using modaltyre_test::kConfig3d;
+using test::Built;
+using test::coarse_3d;
+using test::rel;
 
 // Issue 34's press test: the held hub's load equals the static footprint's load at the sinking
 // within 1 %. Measured after a 0.5 s hold at 12 mm: 0.004 % (2D), 0.02 % (3D): the truncated
@@ -43,18 +48,8 @@ constexpr double kStepwiseTol = 5e-3;
 const std::vector<std::string> kTight = {"transient.relative_tolerance=1e-7",
                                          "transient.tread_tolerance_um=0.01"};
 
-std::vector<std::string> coarse(std::vector<std::string> extra = {}) {
-  std::vector<std::string> o = {"contact.unit_length_mm=2", "footprint_3d.lateral_cell_mm=7.5"};
-  o.insert(o.end(), extra.begin(), extra.end());
-  return o;
-}
-
-struct Built {
-  TyreModel tyre;
-  TransientModel model;
-};
-Built build(std::vector<std::string> extra = {}) {
-  Built b{build_tyre_model(load_tyre_config(kConfig, coarse(std::move(extra)))), {}};
+Built build_coarse(std::vector<std::string> extra = {}) {
+  Built b{build_tyre_model(load_tyre_config(kConfig3d, coarse_3d(std::move(extra)))), {}};
   b.model = build_transient_model(b.tyre);
   return b;
 }
@@ -74,15 +69,13 @@ double static_load_at(const TyreModel& tyre, double d, bool three_d) {
   return 0.5 * (lo + hi);
 }
 
-double rel(double a, double b) { return std::abs(a / b - 1.0); }
-
 class Press : public ::testing::TestWithParam<bool> {};
 
 // The hub pressed from touching to 12 mm in 20 ms and held: the load settles to the static
 // footprint's at 12 mm sinking; a reset at 12 mm starts there.
 TEST_P(Press, SettlesToTheStaticFootprintLoadAtTheSinking) {
   const bool three_d = GetParam();
-  const Built b = build();
+  const Built b = build_coarse();
   DrivenTyreOptions opt;
   opt.force_2d = !three_d;
   opt.max_deflection_m = 0.015;
@@ -117,7 +110,7 @@ class Ramp : public ::testing::TestWithParam<bool> {};
 // A slow prescribed ramp of the deflection reproduces the static load-deflection curve.
 TEST_P(Ramp, ReproducesTheStaticLoadDeflectionCurve) {
   const bool three_d = GetParam();
-  const Built b = build();
+  const Built b = build_coarse();
   const double rate = 0.01, T = 2.0;  // 10 mm/s to 20 mm
   const TransientResult r = run_prescribed(
       b.model,
@@ -144,8 +137,8 @@ INSTANTIATE_TEST_SUITE_P(BothPatches, Ramp, ::testing::Values(false, true));
 // linear interpolation between 2 ms samples (an error (dt^2 / 8) z'' = 25 um at the release)
 // would move the load by kilonewtons.
 TEST(DrivenTyre, ThePrescribedFreeVibrationTrajectoryGivesItsLoad) {
-  const Built b = build({"transient.free_vibration.duration_s=0.2", "transient.output_step_ms=0.1",
-                         kTight[0], kTight[1]});
+  const Built b = build_coarse({"transient.free_vibration.duration_s=0.2",
+                                "transient.output_step_ms=0.1", kTight[0], kTight[1]});
   const TransientResult fv = run_transient_3d(b.model, Scenario::free_vibration);
   ASSERT_TRUE(fv.ok()) << fv.message;
   const double dt = b.model.settings.output_step_s;
@@ -192,7 +185,7 @@ TEST(DrivenTyre, ThePrescribedFreeVibrationTrajectoryGivesItsLoad) {
 // given as a function; two instances interleaved run as one alone; a reset repeats the run
 // exactly.
 TEST(DrivenTyre, StepwiseEqualsTheFunctionAndInstancesAreIndependent) {
-  const Built b = build(kTight);
+  const Built b = build_coarse(kTight);
   auto knot = [](int k) {
     const double t = 1e-3 * k;
     HubState s;

@@ -12,13 +12,14 @@
 #include "modaltyre/transient/driver.h"
 #include "modaltyre/transient/soil_contact.h"
 #include "modaltyre/transient/transient.h"
+#include "transient_models.h"
 
 namespace modaltyre::transient {
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using test::model_with;
 
 // The soil: E2 2 MPa over a 200 mm layer (ground_settings.h's defaults), elastic share 1.
 const std::vector<std::string> kKelvinVoigt = {
@@ -45,10 +46,10 @@ constexpr double kCreepLimitTol = 0.005;
 // sample: the brief's 0.5 %.
 constexpr double kElasticLimitTol = 0.005;
 // The viscous unit force's derivative against a central difference (step 1e-6 of g).
-constexpr double kDerivativeTol = 1e-5;
-constexpr double kRootTol = 1e-10;
+constexpr double kKvDerivativeTol = 1e-5;
+constexpr double kKvRootTol = 1e-10;
 
-std::vector<std::string> coarse(std::vector<std::string> extra = {}) {
+std::vector<std::string> kv_coarse(std::vector<std::string> extra = {}) {
   std::vector<std::string> o = {"contact.unit_length_mm=5", "contact.window_mm=300",
                                 "transient.dynamic_max_order=16", "transient.output_step_ms=5",
                                 "transient.relaxation=false"};
@@ -57,12 +58,8 @@ std::vector<std::string> coarse(std::vector<std::string> extra = {}) {
   return o;
 }
 
-TransientModel model_with(const std::vector<std::string>& overrides) {
-  return build_transient_model(build_tyre_model(load_tyre_config(kConfig, overrides)));
-}
-
 TEST(KelvinVoigtSoil, TheViscousUnitForceIsTheSeriesRootOverTheStep) {
-  const TransientModel M = model_with(coarse({"ground.kelvin_voigt.eta2_kPa_s=50"}));
+  const TransientModel M = model_with(kv_coarse({"ground.kelvin_voigt.eta2_kPa_s=50"}));
   const SoilContact soil(M, M.tyre.config.ground, M.tyre.config.tread.width_m, 0.1);
   EXPECT_NEAR(soil.time_constant_s(), 50e3 / 2e6, 1e-15);
   const int i = M.m / 2;
@@ -78,20 +75,20 @@ TEST(KelvinVoigtSoil, TheViscousUnitForceIsTheSeriesRootOverTheStep) {
           EXPECT_LE(g, w * za + (1 - w) * soil.law().rebound_depth_m(za) + 1e-15);
           continue;
         }
-        EXPECT_NEAR(depth, w * za + (1 - w) * Zel, kRootTol * g);
-        EXPECT_NEAR(f / k + depth, g, kRootTol * g);
+        EXPECT_NEAR(depth, w * za + (1 - w) * Zel, kKvRootTol * g);
+        EXPECT_NEAR(f / k + depth, g, kKvRootTol * g);
         const double h = 1e-6 * g;
         double d1 = 0, z1 = 0;
         const double fp = soil.unit_force(i, g + h, za, &d1, &z1, za, w);
         const double fm = soil.unit_force(i, g - h, za, &d1, &z1, za, w);
-        EXPECT_NEAR(d, (fp - fm) / (2 * h), kDerivativeTol * k);
+        EXPECT_NEAR(d, (fp - fm) / (2 * h), kKvDerivativeTol * k);
       }
     }
   }
 }
 
 TEST(KelvinVoigtSoil, ARigidPunchCreepsWithEta2OverE2) {
-  const TransientModel M = model_with(coarse({"ground.kelvin_voigt.eta2_kPa_s=50"}));
+  const TransientModel M = model_with(kv_coarse({"ground.kelvin_voigt.eta2_kPa_s=50"}));
   SoilContact soil(M, M.tyre.config.ground, M.tyre.config.tread.width_m, 0.1);
   const double tau = soil.time_constant_s(), p = 50e3, z_inf = p * 0.2 / 2e6;
   const int lo = M.m / 2 - 5, n = 11;
@@ -125,8 +122,8 @@ TEST(KelvinVoigtSoil, AHeldLoadCreepsToTheStaticFootprintWithEta2OverE2) {
   // A 4 kN load in 40 ms (a step against tau = 0.5 s), held 2.5 s = 5 tau.
   const double tau = 1000e3 / 2e6;
   const TransientModel M = model_with(
-      coarse({"ground.kelvin_voigt.eta2_kPa_s=1000", "transient.load_hold.load_N=4000",
-              "transient.load_hold.ramp_rate_N_s=100000", "transient.load_hold.hold_s=2.5"}));
+      kv_coarse({"ground.kelvin_voigt.eta2_kPa_s=1000", "transient.load_hold.load_N=4000",
+                 "transient.load_hold.ramp_rate_N_s=100000", "transient.load_hold.hold_s=2.5"}));
   const TransientResult r = run_transient(M, Scenario::load_hold);
   ASSERT_TRUE(r.ok()) << r.message;
   GroundPatchInput in;
@@ -155,8 +152,8 @@ TEST(KelvinVoigtSoil, AHeldLoadCreepsToTheStaticFootprintWithEta2OverE2) {
 
 TEST(KelvinVoigtSoil, Eta2ToZeroIsTheElasticTransient) {
   const auto base =
-      coarse({"transient.load_hold.load_N=4000", "transient.load_hold.ramp_rate_N_s=20000",
-              "transient.load_hold.hold_s=0.3"});
+      kv_coarse({"transient.load_hold.load_N=4000", "transient.load_hold.ramp_rate_N_s=20000",
+                 "transient.load_hold.hold_s=0.3"});
   auto viscous = base;
   viscous.push_back("ground.kelvin_voigt.eta2_kPa_s=0.01");  // tau = 5 us
   const TransientResult a = run_transient(model_with(base), Scenario::load_hold);
@@ -182,10 +179,10 @@ TEST(KelvinVoigtSoil, Eta2ToZeroIsTheElasticTransient) {
 
 double rolling_compaction_resistance_N(double eta2_kPa_s, double speed_km_h) {
   const TransientModel M =
-      model_with(coarse({"ground.kelvin_voigt.eta2_kPa_s=" + std::to_string(eta2_kPa_s),
-                         "transient.rolling.load_N=3000",
-                         "transient.rolling.speed_km_h=" + std::to_string(speed_km_h),
-                         "transient.rolling.ramp_s=0.5", "transient.rolling.duration_s=1.5"}));
+      model_with(kv_coarse({"ground.kelvin_voigt.eta2_kPa_s=" + std::to_string(eta2_kPa_s),
+                            "transient.rolling.load_N=3000",
+                            "transient.rolling.speed_km_h=" + std::to_string(speed_km_h),
+                            "transient.rolling.ramp_s=0.5", "transient.rolling.duration_s=1.5"}));
   const TransientResult r = run_transient(M, Scenario::rolling);
   EXPECT_TRUE(r.ok()) << r.message;
   const double T = r.simulated_s;

@@ -11,16 +11,19 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "../support/data_paths.h"
 #include "decay_metrics.h"
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/transient/transient.h"
+#include "transient_models.h"
 
 namespace modaltyre::transient {
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
+using test::default_model;
 const std::string kReference =
     std::string(MODALTYRE_SOURCE_DIR) + "/tests/data/transient/reference_0p25mm.json";
 
@@ -36,24 +39,11 @@ constexpr double kCleatPeakTol = 0.03;
 constexpr double kCreepTol = 0.005;  // of the static sinking
 // A settled hold ends at the static footprint (the tread relaxes to its static spring).
 constexpr double kRestTol = 1e-5;
-// Peaks of the free vibration used for the period and decrement fits (the first eight: later
-// ones are a few um, where the output's 2 ms sampling limits the parabolic interpolation).
-constexpr int kDecayPeaks = 8;
 
 nlohmann::json reference() {
   std::ifstream in(kReference);
   EXPECT_TRUE(in.good()) << kReference;
   return nlohmann::json::parse(in);
-}
-
-TransientModel default_model() {
-  return build_transient_model(build_tyre_model(load_tyre_config(kConfig, {})));
-}
-
-/// Period and logarithmic decrement of the hub bounce over the first kDecayPeaks maxima
-/// (decay_metrics.h).
-std::pair<double, double> period_and_decrement(const TransientResult& r) {
-  return bounce_period_and_decrement(r, kDecayPeaks);
 }
 
 TEST(TransientReference, FreeVibrationPeriodAndDecrementMatchTheFineMeshReference) {
@@ -71,7 +61,7 @@ TEST(TransientReference, TreadToleranceMovesTheDecayByLessThanHalfTheLimit) {
   const TransientModel loose = default_model();
   ASSERT_DOUBLE_EQ(loose.settings.tread_tolerance_m, 1e-6);
   const TransientModel tight = build_transient_model(
-      build_tyre_model(load_tyre_config(kConfig, {"transient.tread_tolerance_um=0.1"})));
+      build_tyre_model(load_tyre_config(kConfig2d, {"transient.tread_tolerance_um=0.1"})));
   const TransientResult a = run_transient(loose, Scenario::free_vibration);
   const TransientResult b = run_transient(tight, Scenario::free_vibration);
   ASSERT_TRUE(a.ok() && b.ok()) << a.message << b.message;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "../support/lete_sand.h"
 #include "decay_metrics.h"
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/contact/ground_patch.h"
@@ -12,17 +13,20 @@
 #include "modaltyre/core/errors.h"
 #include "modaltyre/transient/soil_contact.h"
 #include "modaltyre/transient/transient.h"
+#include "transient_models.h"
 
 namespace modaltyre::transient {
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kLeteBekker;
+using modaltyre_test::plus;
+using test::model_with;
 
 // Issue 37 part 2: the load-hold's end equals the static footprint on the same soil (soil
 // sinkage, sinking, length) within 0.5 %.
-constexpr double kStaticTol = 0.005;
+constexpr double kSoilStaticTol = 0.005;
 // A very stiff soil (n = 1, k_phi = 1e9 kN/m^3: its spring per 5 mm unit is ~1e3 times the
 // tread's) against the rigid road, sample by sample: the soil's share of the sinking is ~1e-3 of
 // the tread's, 1 um of a 14 mm sinking; 0.5 % is the issue's bound for the footprint.
@@ -39,30 +43,18 @@ constexpr double kRootTol = 1e-10;
 // ~1e-10 of the force).
 constexpr double kDerivativeTol = 1e-5;
 
-const std::vector<std::string> kLete = {"ground.model=bekker", "ground.bekker.n=0.79",
-                                        "ground.bekker.k_c=102", "ground.bekker.k_phi=5301"};
-
-std::vector<std::string> coarse(std::vector<std::string> extra = {}) {
+std::vector<std::string> soil_coarse(std::vector<std::string> extra = {}) {
   std::vector<std::string> o = {"contact.unit_length_mm=5", "contact.window_mm=300",
                                 "transient.dynamic_max_order=16", "transient.output_step_ms=5"};
   o.insert(o.end(), extra.begin(), extra.end());
   return o;
 }
 
-std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
-  a.insert(a.end(), b.begin(), b.end());
-  return a;
-}
-
-TransientModel model_with(const std::vector<std::string>& overrides) {
-  return build_transient_model(build_tyre_model(load_tyre_config(kConfig, overrides)));
-}
-
 TEST(SoilContact, TheUnitForceSolvesTheSpringInSeriesWithTheSoil) {
   // Virgin loading and the memory's branch, rigid-plastic and with Wong's unloading.
   for (const bool unloading : {false, true}) {
     SCOPED_TRACE(unloading ? "Wong's unloading" : "rigid-plastic");
-    auto o = join(coarse(), kLete);
+    auto o = plus(soil_coarse(), kLeteBekker);
     if (unloading) {
       o.push_back("ground.bekker.unloading.k0=0");
       o.push_back("ground.bekker.unloading.Au=5e5");
@@ -104,10 +96,10 @@ TEST(SoilTransient, LoadHoldEndsAtTheStaticFootprintOnTheSameSoil) {
   // slow ramp keeps the overshoot, and with it the memory beyond the static sinkage, small.
   for (const bool unloading : {false, true}) {
     SCOPED_TRACE(unloading ? "Wong's unloading" : "rigid-plastic");
-    auto o =
-        join(coarse({"transient.relaxation=false", "transient.load_hold.load_N=4000",
+    auto o = plus(
+        soil_coarse({"transient.relaxation=false", "transient.load_hold.load_N=4000",
                      "transient.load_hold.ramp_rate_N_s=1000", "transient.load_hold.hold_s=1.0"}),
-             kLete);
+        kLeteBekker);
     if (unloading) {
       o.push_back("ground.bekker.unloading.k0=0");
       o.push_back("ground.bekker.unloading.Au=5e5");
@@ -127,19 +119,19 @@ TEST(SoilTransient, LoadHoldEndsAtTheStaticFootprintOnTheSameSoil) {
     const double sink = mean_over(r, T - 0.2, T, [](auto& x) { return x.sinking_m; });
     const double soil = mean_over(r, T - 0.2, T, [](auto& x) { return x.soil_sinkage_m; });
     const double len = mean_over(r, T - 0.2, T, [](auto& x) { return x.contact_length_m; });
-    EXPECT_NEAR(sink / s.sinking_m, 1.0, kStaticTol);
-    EXPECT_NEAR(soil / s.soil_sinkage_m, 1.0, kStaticTol);
-    EXPECT_NEAR(len / s.contact_length_m, 1.0, kStaticTol);
+    EXPECT_NEAR(sink / s.sinking_m, 1.0, kSoilStaticTol);
+    EXPECT_NEAR(soil / s.soil_sinkage_m, 1.0, kSoilStaticTol);
+    EXPECT_NEAR(len / s.contact_length_m, 1.0, kSoilStaticTol);
   }
 }
 
 TEST(SoilTransient, AVeryStiffSoilReproducesTheRoadTransient) {
   const auto base =
-      coarse({"transient.relaxation=false", "transient.load_hold.load_N=4000",
-              "transient.load_hold.ramp_rate_N_s=20000", "transient.load_hold.hold_s=0.3"});
+      soil_coarse({"transient.relaxation=false", "transient.load_hold.load_N=4000",
+                   "transient.load_hold.ramp_rate_N_s=20000", "transient.load_hold.hold_s=0.3"});
   const TransientModel road = model_with(base);
   const TransientModel stiff =
-      model_with(join(base, {"ground.model=bekker", "ground.bekker.n=1", "ground.bekker.k_c=0",
+      model_with(plus(base, {"ground.model=bekker", "ground.bekker.n=1", "ground.bekker.k_c=0",
                              "ground.bekker.k_phi=1e9"}));
   const TransientResult a = run_transient(road, Scenario::load_hold);
   const TransientResult b = run_transient(stiff, Scenario::load_hold);
@@ -158,11 +150,11 @@ TEST(SoilTransient, AVeryStiffSoilReproducesTheRoadTransient) {
 }
 
 TEST(SoilTransient, SlowRollingOntoTheSoilReachesTractionsSteadyState) {
-  const TransientModel M = model_with(
-      join(coarse({"transient.relaxation=false", "transient.rolling.load_N=3000",
+  const TransientModel M = model_with(plus(
+      soil_coarse({"transient.relaxation=false", "transient.rolling.load_N=3000",
                    "transient.rolling.speed_km_h=2", "transient.rolling.ramp_s=0.5",
                    "transient.rolling.duration_s=2"}),
-           join(kLete, {"ground.bekker.cohesion_kPa=0", "ground.bekker.friction_angle_deg=0"})));
+      plus(kLeteBekker, {"ground.bekker.cohesion_kPa=0", "ground.bekker.friction_angle_deg=0"})));
   const TransientResult r = run_transient(M, Scenario::rolling);
   ASSERT_TRUE(r.ok()) << r.message;
   const TractionResult s = traction_pass(M.tyre, M.tyre.config.ground, {3000, 0.0}, 0);

@@ -7,17 +7,14 @@
 #include <cmath>
 
 #include "modaltyre/transient/transient.h"
+#include "transient_models.h"
 
 namespace modaltyre::transient {
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-
-TransientModel model_with(std::vector<std::string> overrides) {
-  return build_transient_model(build_tyre_model(load_tyre_config(kConfig, overrides)));
-}
+using test::model_with;
 
 /// The extremes of a sampled signal over the output grid.
 template <class F>
@@ -27,7 +24,7 @@ std::pair<double, double> sampled_range(const TransientResult& r, F get) {
   return {lo, hi};
 }
 
-double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
+double rel_diff(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
 // The free vibration's period and decrement do not depend on the output grid, and equal the
 // sampled definition on a grid fine enough (0.1 ms, where it has converged: 0.0004 % apart),
@@ -51,10 +48,10 @@ TEST(StepDecay, FreeVibrationFromTheStepsEqualsAFineGrid) {
   const BounceDecay sampled_fine = sampled_bounce_decay(fine);
   const BounceDecay sampled_coarse = sampled_bounce_decay(coarse);
   // Within 0.05 % of the converged grid (the parabola through three step ends, ~40 a period).
-  EXPECT_LT(rel(a.period_s, sampled_fine.period_s), 5e-4);
-  EXPECT_LT(rel(a.log_decrement, sampled_fine.log_decrement), 5e-4);
+  EXPECT_LT(rel_diff(a.period_s, sampled_fine.period_s), 5e-4);
+  EXPECT_LT(rel_diff(a.log_decrement, sampled_fine.log_decrement), 5e-4);
   // The coarse grid's own reading is off by more than 1 % (what the steps mend).
-  EXPECT_GT(rel(sampled_coarse.log_decrement, sampled_fine.log_decrement), 0.01);
+  EXPECT_GT(rel_diff(sampled_coarse.log_decrement, sampled_fine.log_decrement), 0.01);
   // zeta = delta / sqrt(4 pi^2 + delta^2): a light damping's delta / 2 pi.
   EXPECT_NEAR(a.damping_ratio(), a.log_decrement / (2 * M_PI), 1e-3 * a.damping_ratio());
 }
@@ -86,12 +83,12 @@ TEST(StepExtremes, CleatExtremesBoundTheSamplesAndEqualAVeryFineGrid) {
   EXPECT_EQ(coarse.extremes.longitudinal_force_N.min, fine.extremes.longitudinal_force_N.min);
   const auto [fl0, fl1] = sampled_range(fine, load);
   const auto [fx0, fx1] = sampled_range(fine, fx);
-  EXPECT_LT(rel(coarse.extremes.load_N.max, fl1), 5e-3);
-  EXPECT_LT(rel(coarse.extremes.load_N.min, fl0), 5e-3);
-  EXPECT_LT(rel(coarse.extremes.longitudinal_force_N.min, fx0), 5e-3);
-  EXPECT_LT(rel(coarse.extremes.longitudinal_force_N.max, fx1), 5e-3);
+  EXPECT_LT(rel_diff(coarse.extremes.load_N.max, fl1), 5e-3);
+  EXPECT_LT(rel_diff(coarse.extremes.load_N.min, fl0), 5e-3);
+  EXPECT_LT(rel_diff(coarse.extremes.longitudinal_force_N.min, fx0), 5e-3);
+  EXPECT_LT(rel_diff(coarse.extremes.longitudinal_force_N.max, fx1), 5e-3);
   const auto [cx0, cx1] = sampled_range(coarse, fx);
-  EXPECT_GT(rel(cx0, fx0) + rel(cx1, fx1), 0.01);
+  EXPECT_GT(rel_diff(cx0, fx0) + rel_diff(cx1, fx1), 0.01);
 }
 
 // The chosen grid: 25 samples per hub-bounce period (the estimate bounds the measured bounce's

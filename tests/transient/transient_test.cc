@@ -6,16 +6,19 @@
 
 #include <cmath>
 
+#include "../support/data_paths.h"
 #include "decay_metrics.h"
 #include "modaltyre/contact/footprint.h"
 #include "modaltyre/core/errors.h"
+#include "transient_models.h"
 
 namespace modaltyre::transient {
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
+using test::model_with;
 
 // The truncated residual keeps every unit's own compliance: the diagonal of the at-rest model
 // equals the static kernel's up to rounding of the eigen-decomposition.
@@ -57,15 +60,11 @@ std::vector<std::string> coarse(std::vector<std::string> extra = {}) {
   return o;
 }
 
-TransientModel model_with(const std::vector<std::string>& overrides) {
-  return build_transient_model(build_tyre_model(load_tyre_config(kConfig, overrides)));
-}
-
 /// The contact basis to rounding (cutoff 1e-13), for the tests that compare the basis' forces and
 /// Jacobian with the shapes' own (the default cutoff moves them by ~1e-8, contact_newton_test's
 /// ContactBasisCutoffMovesNoForce).
 TransientModel model_exact_basis(const std::vector<std::string>& overrides) {
-  TyreConfig cfg = load_tyre_config(kConfig, overrides);
+  TyreConfig cfg = load_tyre_config(kConfig2d, overrides);
   cfg.transient.contact_basis_cutoff = 1e-13;
   return build_transient_model(build_tyre_model(cfg));
 }
@@ -457,10 +456,10 @@ TEST(TransientTest, SchurNewtonSolverMatchesKlu) {
 }
 
 TEST(TransientTest, IllPosedScenariosAreInputErrors) {
-  EXPECT_THROW(load_tyre_config(kConfig, coarse({"transient.load_hold.hold_s=-1"})), InputError);
-  EXPECT_THROW(load_tyre_config(kConfig, coarse({"transient.hub_mass_kg=0"})), InputError);
-  EXPECT_THROW(load_tyre_config(kConfig, coarse({"transient.rolling.duration_s=0.5",
-                                                 "transient.rolling.ramp_s=1"})),
+  EXPECT_THROW(load_tyre_config(kConfig2d, coarse({"transient.load_hold.hold_s=-1"})), InputError);
+  EXPECT_THROW(load_tyre_config(kConfig2d, coarse({"transient.hub_mass_kg=0"})), InputError);
+  EXPECT_THROW(load_tyre_config(kConfig2d, coarse({"transient.rolling.duration_s=0.5",
+                                                   "transient.rolling.ramp_s=1"})),
                InputError);
   EXPECT_THROW(parse_scenario("drop-test"), InputError);
   const TransientModel M = model_with(coarse(

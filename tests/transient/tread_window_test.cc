@@ -10,13 +10,14 @@
 
 #include "decay_metrics.h"
 #include "modaltyre/transient/transient.h"
+#include "transient_models.h"
 
 namespace modaltyre::transient {
 namespace {
 
 using namespace modaltyre::contact;
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using test::default_model;
 
 // The range changes which states enter CVODE's RMS norms, not the error test (the driver scales
 // the tolerances by sqrt(all / kept states)), but the step sequence of a run with contact kinks
@@ -24,19 +25,10 @@ const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_
 // sizes), so the two runs agree to the integration error, not to rounding. Measured on the
 // default mesh: period 0.06 %, decrement 0.07 %, rolling resistance 0.01 %, cleat peak 0.07 %
 // apart. Half of issue 21's limits (as for the tread tolerance, reference_test.cc):
-constexpr double kPeriodTol = 0.005;
-constexpr double kDecrementTol = 0.005;
-constexpr double kRollingTol = 0.005;
-constexpr double kCleatPeakTol = 0.015;
-
-TransientModel default_model() {
-  return build_transient_model(build_tyre_model(load_tyre_config(kConfig, {})));
-}
-
-/// Period and decrement over the first 8 maxima, as reference_test.cc.
-std::pair<double, double> period_and_decrement(const TransientResult& r) {
-  return bounce_period_and_decrement(r, 8);
-}
+constexpr double kWindowPeriodTol = 0.005;
+constexpr double kWindowDecrementTol = 0.005;
+constexpr double kWindowRollingTol = 0.005;
+constexpr double kWindowCleatPeakTol = 0.015;
 
 /// Runs a scenario on the touchable units and on all units.
 std::pair<TransientResult, TransientResult> both(const TransientModel& M, Scenario s) {
@@ -83,8 +75,8 @@ TEST(TreadWindow, FreeVibrationOnTheTouchableUnitsIsThatOfAllUnits) {
   expect_fewer_states(M, a, b);
   const auto [period_a, decrement_a] = period_and_decrement(a);
   const auto [period_b, decrement_b] = period_and_decrement(b);
-  EXPECT_NEAR(period_a / period_b, 1.0, kPeriodTol);
-  EXPECT_NEAR(decrement_a / decrement_b, 1.0, kDecrementTol);
+  EXPECT_NEAR(period_a / period_b, 1.0, kWindowPeriodTol);
+  EXPECT_NEAR(decrement_a / decrement_b, 1.0, kWindowDecrementTol);
   // At the end both have settled on the 4000 N footprint.
   EXPECT_NEAR(a.samples.back().load_N / b.samples.back().load_N, 1.0, 0.01);
 }
@@ -94,9 +86,9 @@ TEST(TreadWindow, RollingAndCleatOnTheTouchableUnitsAreThoseOfAllUnits) {
   {
     const auto [a, b] = both(M, Scenario::rolling);
     expect_fewer_states(M, a, b);
-    EXPECT_NEAR(a.rolling_resistance_N / b.rolling_resistance_N, 1.0, kRollingTol);
+    EXPECT_NEAR(a.rolling_resistance_N / b.rolling_resistance_N, 1.0, kWindowRollingTol);
     EXPECT_NEAR(a.samples.back().contact_length_m / b.samples.back().contact_length_m, 1.0,
-                kRollingTol);
+                kWindowRollingTol);
   }
   {
     const auto [a, b] = both(M, Scenario::cleat);
@@ -108,7 +100,7 @@ TEST(TreadWindow, RollingAndCleatOnTheTouchableUnitsAreThoseOfAllUnits) {
       for (const auto& s : r.samples) p = std::max(p, s.load_N);
       return p;
     };
-    EXPECT_NEAR(peak(a) / peak(b), 1.0, kCleatPeakTol);
+    EXPECT_NEAR(peak(a) / peak(b), 1.0, kWindowCleatPeakTol);
   }
 }
 

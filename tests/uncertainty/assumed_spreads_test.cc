@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/uncertainty/propagation.h"
@@ -16,7 +17,7 @@
 namespace modaltyre::uncertainty {
 namespace {
 
-const std::string kConfig3d = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350.yaml";
+using modaltyre_test::kConfig3d;
 constexpr double kZ975 = 1.959963984540054;
 
 TEST(AssumedSpreads, TheTreadWidthMovesBothWidthsLinearly) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/uncertainty/inputs.h"
 
@@ -11,7 +12,7 @@ namespace modaltyre::uncertainty {
 namespace {
 
 constexpr double kRound = 1e-12;  // eigen-decomposition rounding of O(1e-2) variances
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 
 TEST(CalibrationInputs, PrincipalDirectionsRebuildTheCovarianceAndMoveTheKeys) {
   const std::vector<std::string> keys = {"modal.compliance_scale", "tread.modulus_MPa"};
@@ -35,7 +36,7 @@ TEST(CalibrationInputs, PrincipalDirectionsRebuildTheCovarianceAndMoveTheKeys) {
   EXPECT_GE(inputs[0].rel_std, inputs[1].rel_std);  // largest variance first
 
   // Applying x along direction d multiplies key k by exp(x v_dk).
-  auto config = contact::load_tyre_config(kConfig, {});
+  auto config = contact::load_tyre_config(kConfig2d, {});
   const double cs = config.compliance_scale, e = config.tread.modulus_Pa;
   modal::ModeIdentification modes;
   apply(inputs[0], 0.1, config, modes);

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/carcass_source.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/errors.h"
@@ -21,8 +22,8 @@ namespace modaltyre::uncertainty {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
-constexpr double kRound = 1e-9;  // the CSV's printed digits
+using modaltyre_test::kConfig2d;
+constexpr double kPrintedRound = 1e-9;  // the CSV's printed digits
 
 // Noise-free planted ring shapes (planted_ring.h) with stated standard deviations:
 // freq_std_hz = freq_std_rel f, radial_std = tangential_std = shape_std.
@@ -55,15 +56,15 @@ TEST_F(HammerStd, FrequencyAndShapeStdBecomeThePropagationsInputs) {
   const std::string csv = write(hammer_csv(f_rel, shape_std));
   for (const double stated_percent : {0.0, 1.0}) {
     const auto config = contact::load_tyre_config(
-        kConfig, {"modal.hammer_csv=" + csv,
-                  "modal.frequency_std_percent=" + std::to_string(stated_percent)});
+        kConfig2d, {"modal.hammer_csv=" + csv,
+                    "modal.frequency_std_percent=" + std::to_string(stated_percent)});
     const auto modes = contact::config_modes(config);
     int frequencies = 0, amplitudes = 0;
     for (const auto& in : collect_inputs(config, modes)) {
       const auto& m = modes.modes.at(in.mode);
       if (in.kind == InputKind::mode_frequency) {
         ++frequencies;
-        EXPECT_NEAR(in.rel_std, std::hypot(f_rel, stated_percent / 100), kRound) << in.name;
+        EXPECT_NEAR(in.rel_std, std::hypot(f_rel, stated_percent / 100), kPrintedRound) << in.name;
         EXPECT_NE(in.source.find("freq_std_hz"), std::string::npos) << in.source;
       }
       if (in.kind == InputKind::mode_amplitude) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/core/errors.h"
 #include "modaltyre/uncertainty/propagation.h"
@@ -16,14 +17,15 @@
 namespace modaltyre::uncertainty {
 namespace {
 
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 constexpr double kSigma = 0.05;  // tread.modulus_std_percent: 5
 // 2000 samples: the sample std's relative standard error is 1/sqrt(2 m) = 1.6 %; 4 of them.
 constexpr int kSamples = 2000;
 constexpr double kSampledRel = 0.064;
 
 struct PropagateOutputs : ::testing::Test {
-  contact::TyreConfig config = contact::load_tyre_config(kConfig, {"tread.modulus_std_percent=5"});
+  contact::TyreConfig config =
+      contact::load_tyre_config(kConfig2d, {"tread.modulus_std_percent=5"});
   modal::ModeIdentification modes;  // no mode inputs: only the stated modulus is uncertain
   const Evaluator modulus = [](const contact::TyreConfig& c, const modal::ModeIdentification&,
                                const std::string&) {

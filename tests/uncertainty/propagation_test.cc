@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/data_paths.h"
 #include "modaltyre/contact/tyre_config.h"
 #include "modaltyre/modal/hammer_data.h"
 #include "planted_ring.h"
@@ -23,7 +24,7 @@ namespace modaltyre::uncertainty {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kConfig = std::string(MODALTYRE_SOURCE_DIR) + "/configs/sf350_2d_table3.yaml";
+using modaltyre_test::kConfig2d;
 // The tolerance for the reported standard deviation against the replicates' spread.
 constexpr double kStdFactor = 1.5;
 // With 30 replicates the observed coverage of a 95 % band scatters by +-4 %: at least 80 %.
@@ -52,8 +53,8 @@ class Propagation : public ::testing::Test {
     const fs::path csv = dir_ / ("h" + std::to_string(seed) + ".csv");
     std::ofstream(csv) << hammer_csv(sigma, seed);
     const auto config = contact::load_tyre_config(
-        kConfig, {"modal.hammer_csv=" + csv.string(), "contact.unit_length_mm=2",
-                  "contact.window_mm=300", "modal.extension_bending_s2_rad2_s2=80"});
+        kConfig2d, {"modal.hammer_csv=" + csv.string(), "contact.unit_length_mm=2",
+                    "contact.window_mm=300", "modal.extension_bending_s2_rad2_s2=80"});
     PropagationOptions o;
     o.method = method;
     o.threads = threads;
