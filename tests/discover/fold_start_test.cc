@@ -30,16 +30,7 @@ struct Rows {
 
 const Rows& creeping_tread_rows() {
   static const Rows rows = [] {
-    Planted p;
-    p.truth = [](auto& e) {
-      e.tread_relaxation.enabled = true;
-      e.tread_relaxation.creep_ratio = 0.8;
-      e.tread_relaxation.time_constant_s = 40;
-    };
-    const double hold[] = {0, 60};
-    p.rows = grid(
-        {2000, 3200, 4400, 5600, 6800, 8000}, [&](auto& c, int l) { c.hold_s = hold[l]; }, 2);
-    p.seed = 3;
+    const Planted p = creeping_tread();
     TyreConfig c = contact::load_tyre_config(kConfig, {"contact.unit_length_mm=2"});
     contact::TyreModel m = contact::build_tyre_model(c);
     Variant v = make_variant(c, {contact::EffectId::tread_relaxation});

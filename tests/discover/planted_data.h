@@ -114,6 +114,22 @@ inline std::vector<OperatingConditions> grid(
   return rows;
 }
 
+// A creeping tread (creep ratio 0.8, 40 s) hidden in twelve 2D SF-350 footprints: six loads,
+// each standing and held 60 s, seed 3 (fold_start_test.cc, configured_start_test.cc).
+inline Planted creeping_tread() {
+  Planted p;
+  p.truth = [](auto& e) {
+    e.tread_relaxation.enabled = true;
+    e.tread_relaxation.creep_ratio = 0.8;
+    e.tread_relaxation.time_constant_s = 40;
+  };
+  const double hold[] = {0, 60};
+  p.rows = grid(
+      {2000, 3200, 4400, 5600, 6800, 8000}, [&](auto& c, int l) { c.hold_s = hold[l]; }, 2);
+  p.seed = 3;
+  return p;
+}
+
 inline const std::vector<double> kLoads5 = {2000, 3500, 5000, 6500, 8000};
 inline const std::vector<double> kLoads9 = {1500, 2500, 3500, 4500, 5500, 6500, 7500, 8500, 9500};
 
