@@ -83,11 +83,7 @@ class ManyRows : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     Planted p;
-    p.truth = [](auto& e) {
-      e.tread_relaxation.enabled = true;
-      e.tread_relaxation.creep_ratio = 0.8;
-      e.tread_relaxation.time_constant_s = 40;
-    };
+    p.truth = creeping_tread().truth;  // the same creeping tread, on 18 loads
     std::vector<double> loads;
     for (int i = 0; i < 18; ++i) loads.push_back(1800 + 400 * i);
     const double hold[] = {0, 20, 60, 180};
